@@ -1,0 +1,221 @@
+#include "ConfigNode.h"
+
+#include <cmath>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+#include <utility>
+
+#include "tofsim/config/Units.h"
+
+namespace tofsim::config {
+
+namespace {
+FileLoc locOf(const YAML::Node& node, const std::string& file) {
+  const YAML::Mark mark = node.Mark();
+  if (mark.line < 0) return FileLoc{file};
+  return FileLoc{file, mark.line + 1, mark.column + 1};
+}
+}  // namespace
+
+YAML::Node loadYamlFile(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw InputError(FileLoc{path}, "", "cannot open config file");
+  try {
+    return YAML::Load(in);
+  } catch (const YAML::Exception& e) {
+    throw InputError(FileLoc{path, e.mark.line + 1, e.mark.column + 1}, "", e.msg);
+  }
+}
+
+ConfigNode::ConfigNode(YAML::Node node, std::string file)
+    : node_(std::move(node)), shared_(std::make_shared<Shared>()) {
+  shared_->file = std::move(file);
+  if (!node_.IsMap()) fail("the document must be a mapping of keys to values");
+}
+
+ConfigNode::ConfigNode(YAML::Node node, std::string path, std::shared_ptr<Shared> shared)
+    : node_(std::move(node)), path_(std::move(path)), shared_(std::move(shared)) {}
+
+std::string ConfigNode::pathOf(const std::string& key) const {
+  return path_.empty() ? key : path_ + "." + key;
+}
+
+FileLoc ConfigNode::location() const { return locOf(node_, shared_->file); }
+
+FileLoc ConfigNode::locationOf(const std::string& key) const {
+  const YAML::Node value = lookup(key);
+  return value ? locOf(value, shared_->file) : location();
+}
+
+void ConfigNode::fail(const std::string& message) const {
+  throw InputError(location(), path_, message);
+}
+
+void ConfigNode::failKey(const std::string& key, const std::string& message) const {
+  throw InputError(locationOf(key), pathOf(key), message);
+}
+
+YAML::Node ConfigNode::lookup(const std::string& key) const {
+  if (!node_.IsMap()) return YAML::Node(YAML::NodeType::Undefined);
+  // operator[] on a const node never inserts.
+  const YAML::Node& self = node_;
+  return self[key];
+}
+
+bool ConfigNode::has(const std::string& key) const {
+  const YAML::Node value = lookup(key);
+  return value.IsDefined() && !value.IsNull();
+}
+
+void ConfigNode::markUsed(const std::string& key) const { shared_->usedPaths.insert(pathOf(key)); }
+
+ConfigNode ConfigNode::child(const std::string& key) const {
+  if (!node_.IsMap()) fail("expected a mapping");
+  if (!has(key)) throw InputError(location(), pathOf(key), "required key is missing");
+  markUsed(key);
+  return ConfigNode(lookup(key), pathOf(key), shared_);
+}
+
+std::optional<ConfigNode> ConfigNode::optionalChild(const std::string& key) const {
+  if (!has(key)) {
+    if (lookup(key).IsDefined()) markUsed(key);  // "key:" with no value means absent
+    return std::nullopt;
+  }
+  return child(key);
+}
+
+std::vector<ConfigNode> ConfigNode::elements() const {
+  if (!node_.IsSequence()) fail("expected a list");
+  std::vector<ConfigNode> out;
+  for (std::size_t i = 0; i < node_.size(); ++i) {
+    const std::string p = path_ + "[" + std::to_string(i) + "]";
+    shared_->usedPaths.insert(p);
+    out.push_back(ConfigNode(node_[i], p, shared_));
+  }
+  return out;
+}
+
+std::string ConfigNode::asString() const {
+  if (!node_.IsScalar()) fail("expected a single value, not a list or mapping");
+  return node_.Scalar();
+}
+
+double ConfigNode::asDouble() const {
+  const std::string text = asString();
+  try {
+    std::size_t used = 0;
+    const double v = std::stod(text, &used);
+    if (used != text.size()) throw std::invalid_argument("trailing characters");
+    if (!std::isfinite(v)) fail("must be a finite number (got " + text + ")");
+    return v;
+  } catch (const std::logic_error&) {
+    fail("expected a number (got '" + text + "')");
+  }
+}
+
+double ConfigNode::asDuration_s() const {
+  try {
+    return parseDuration_s(asString());
+  } catch (const std::invalid_argument& e) {
+    fail(e.what());
+  }
+}
+
+std::string ConfigNode::getString(const std::string& key, const std::string& fallback) const {
+  return has(key) ? child(key).asString() : (markUsed(key), fallback);
+}
+
+std::string ConfigNode::requireString(const std::string& key) const { return child(key).asString(); }
+
+double ConfigNode::getDouble(const std::string& key, double fallback) const {
+  return has(key) ? child(key).asDouble() : (markUsed(key), fallback);
+}
+
+double ConfigNode::requireDouble(const std::string& key) const { return child(key).asDouble(); }
+
+long long ConfigNode::getInt(const std::string& key, long long fallback) const {
+  if (!has(key)) return fallback;
+  const ConfigNode c = child(key);
+  const std::string text = c.asString();
+  try {
+    std::size_t used = 0;
+    const long long v = std::stoll(text, &used);
+    if (used != text.size()) throw std::invalid_argument("trailing characters");
+    return v;
+  } catch (const std::logic_error&) {
+    c.fail("expected an integer (got '" + text + "')");
+  }
+}
+
+bool ConfigNode::getBool(const std::string& key, bool fallback) const {
+  if (!has(key)) return fallback;
+  const ConfigNode c = child(key);
+  const std::string text = c.asString();
+  if (text == "true" || text == "yes" || text == "on") return true;
+  if (text == "false" || text == "no" || text == "off") return false;
+  c.fail("expected true or false (got '" + text + "')");
+}
+
+std::vector<double> ConfigNode::getDoubles(const std::string& key, std::size_t count,
+                                           const std::vector<double>& fallback) const {
+  if (!has(key)) return fallback;
+  const ConfigNode c = child(key);
+  if (!c.isSequence() || c.yaml().size() != count) {
+    c.fail("expected a list of " + std::to_string(count) + " numbers");
+  }
+  std::vector<double> out;
+  for (const ConfigNode& e : c.elements()) out.push_back(e.asDouble());
+  return out;
+}
+
+namespace {
+template <typename Parse>
+double withUnits(const ConfigNode& node, const std::string& key, double fallback, Parse parse) {
+  if (!node.has(key)) return fallback;
+  const ConfigNode c = node.child(key);
+  try {
+    return parse(c.asString());
+  } catch (const std::invalid_argument& e) {
+    c.fail(e.what());
+  }
+}
+}  // namespace
+
+double ConfigNode::getDuration_s(const std::string& key, double fallback_s) const {
+  return withUnits(*this, key, fallback_s, parseDuration_s);
+}
+double ConfigNode::getLength_m(const std::string& key, double fallback_m) const {
+  return withUnits(*this, key, fallback_m, parseLength_m);
+}
+double ConfigNode::getAngle_deg(const std::string& key, double fallback_deg) const {
+  return withUnits(*this, key, fallback_deg, parseAngle_deg);
+}
+double ConfigNode::getBytes(const std::string& key, double fallback) const {
+  return withUnits(*this, key, fallback, parseBytes);
+}
+double ConfigNode::getFrequency_Hz(const std::string& key, double fallback_Hz) const {
+  return withUnits(*this, key, fallback_Hz, parseFrequency_Hz);
+}
+
+void ConfigNode::collectUnused(const YAML::Node& node, const std::string& path) const {
+  if (node.IsSequence()) {
+    for (std::size_t i = 0; i < node.size(); ++i) {
+      collectUnused(node[i], path + "[" + std::to_string(i) + "]");
+    }
+    return;
+  }
+  if (!node.IsMap()) return;
+  for (const auto& entry : node) {
+    const std::string key = entry.first.as<std::string>();
+    const std::string p = path.empty() ? key : path + "." + key;
+    if (!shared_->usedPaths.count(p)) {
+      throw InputError(locOf(entry.first, shared_->file), p, "unknown key");
+    }
+    collectUnused(entry.second, p);
+  }
+}
+
+void ConfigNode::reportUnusedKeys() const { collectUnused(node_, path_); }
+
+}  // namespace tofsim::config

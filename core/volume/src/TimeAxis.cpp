@@ -1,0 +1,18 @@
+#include "tofsim/volume/TimeAxis.h"
+
+#include <cmath>
+
+#include "tofsim/volume/PhysicalConstants.h"
+
+namespace tofsim {
+
+int32_t TimeAxis::binOf(double t_s) const {
+  const double f = std::floor((t_s - start_s) / bin_width_s);
+  if (!(f >= 0.0) || f >= static_cast<double>(bins)) return -1;
+  return static_cast<int32_t>(f);
+}
+
+double TimeAxis::start_m() const { return start_s * kSpeedOfLight_m_per_s; }
+double TimeAxis::bin_width_m() const { return bin_width_s * kSpeedOfLight_m_per_s; }
+
+}  // namespace tofsim
