@@ -1,0 +1,49 @@
+#pragma once
+// A linked GL program built from shaders embedded at build time (files under
+// shaders/). Variants are made by prepending #defines, never by copying files.
+// Compile and link errors name the shader file and carry the driver's log.
+
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "tofsim/gl/Handle.h"
+
+namespace tofsim::gl {
+
+/// Source of an embedded shader by file name, e.g. "gbuffer.vert".
+/// Throws InputError naming the file when it was not embedded.
+const std::string& embeddedShaderSource(std::string_view fileName);
+
+struct ShaderStage {
+  GLenum type;           ///< GL_VERTEX_SHADER, GL_FRAGMENT_SHADER, GL_COMPUTE_SHADER, ...
+  std::string fileName;  ///< under shaders/
+};
+
+class Program {
+ public:
+  Program() = default;
+  /// `defines`: (NAME, value) pairs inserted after the #version line.
+  Program(const std::vector<ShaderStage>& stages,
+          const std::vector<std::pair<std::string, std::string>>& defines = {});
+
+  GLuint id() const { return handle_.id(); }
+  void use() const { glUseProgram(id()); }
+
+  void set(const char* name, int value) const;
+  void set(const char* name, unsigned value) const;
+  void set(const char* name, float value) const;
+  void set(const char* name, const glm::vec2& value) const;
+  void set(const char* name, const glm::vec3& value) const;
+  void set(const char* name, const glm::ivec2& value) const;
+  void set(const char* name, const glm::mat4& value) const;
+
+ private:
+  GLint location(const char* name) const;
+  Handle<detail::deleteProgram> handle_;
+};
+
+}  // namespace tofsim::gl

@@ -1,0 +1,35 @@
+#pragma once
+// A pinhole camera. Pixel (x, y) with y = 0 at the top of the image looks
+// through the centre of its pixel; all distances are metres in world space.
+
+#include <glm/glm.hpp>
+
+#include <cstdint>
+
+namespace tofsim::render {
+
+struct Camera {
+  glm::vec3 position_world{0.0f};
+  glm::vec3 look_at_world{0.0f, 0.0f, -1.0f};
+  glm::vec3 up_world{0.0f, 1.0f, 0.0f};
+  float fov_y_deg = 40.0f;  ///< full vertical field of view
+  int32_t width = 64;
+  int32_t height = 64;
+
+  glm::vec3 forward() const;
+  glm::vec3 right() const;
+  glm::vec3 up() const;  ///< orthogonalised
+  /// Unit world-space direction through the centre of pixel (x, y).
+  glm::vec3 pixelDirection(int32_t x, int32_t y) const;
+  /// Solid angle (sr) seen by pixel (x, y).
+  double pixelSolidAngle_sr(int32_t x, int32_t y) const;
+  /// Pixel containing the world point, or (-1, -1) when it projects outside
+  /// the image or lies behind the camera.
+  glm::ivec2 project(const glm::vec3& point_world) const;
+
+  glm::mat4 view() const;
+  /// OpenGL projection with rows flipped so that GL row 0 is image row 0 (top).
+  glm::mat4 projection(float near_m, float far_m) const;
+};
+
+}  // namespace tofsim::render

@@ -1,0 +1,26 @@
+#pragma once
+// A point or spot light emitting one impulse at t = 0.
+
+#include <glm/glm.hpp>
+
+namespace tofsim::render {
+
+struct Light {
+  enum class Type { Point, Spot };
+  Type type = Type::Point;
+  glm::vec3 position_world{0.0f};
+  glm::vec3 direction_world{0.0f, 0.0f, -1.0f};  ///< unit; spot lights only
+  /// Spot: full intensity inside cone_half_angle_deg - cone_falloff_deg, a
+  /// smooth (smoothstep) falloff to zero at cone_half_angle_deg.
+  float cone_half_angle_deg = 30.0f;
+  float cone_falloff_deg = 0.0f;
+  /// Radiant intensity per channel (R, G, B), W/sr, of the impulse's energy:
+  /// the transient volume integrates to radiance as if this were a CW source.
+  glm::vec3 intensity_W_per_sr{1.0f};
+
+  /// Fraction of the intensity emitted towards `direction` (unit): 1 for point
+  /// lights, the cone profile for spots.
+  float angularProfile(const glm::vec3& direction) const;
+};
+
+}  // namespace tofsim::render

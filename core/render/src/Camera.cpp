@@ -1,0 +1,62 @@
+#include "tofsim/render/Camera.h"
+
+#include <cmath>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+namespace tofsim::render {
+
+glm::vec3 Camera::forward() const { return glm::normalize(look_at_world - position_world); }
+glm::vec3 Camera::right() const { return glm::normalize(glm::cross(forward(), up_world)); }
+glm::vec3 Camera::up() const { return glm::cross(right(), forward()); }
+
+namespace {
+// Image-plane coordinates at unit distance of pixel (x, y)'s centre.
+glm::dvec2 planePoint(const Camera& c, double x, double y) {
+  const double tanHalf = std::tan(glm::radians(static_cast<double>(c.fov_y_deg)) * 0.5);
+  const double aspect = static_cast<double>(c.width) / c.height;
+  const double u = (2.0 * (x + 0.5) / c.width - 1.0) * tanHalf * aspect;
+  const double v = (1.0 - 2.0 * (y + 0.5) / c.height) * tanHalf;
+  return {u, v};
+}
+}  // namespace
+
+glm::vec3 Camera::pixelDirection(int32_t x, int32_t y) const {
+  const glm::dvec2 p = planePoint(*this, x, y);
+  return glm::normalize(glm::vec3(forward()) + static_cast<float>(p.x) * right() +
+                        static_cast<float>(p.y) * up());
+}
+
+double Camera::pixelSolidAngle_sr(int32_t x, int32_t y) const {
+  // A pixel of area dA on the unit-distance plane subtends dA cos^3(theta).
+  const double tanHalf = std::tan(glm::radians(static_cast<double>(fov_y_deg)) * 0.5);
+  const double pixelSide = 2.0 * tanHalf / height;
+  const glm::dvec2 p = planePoint(*this, x, y);
+  const double r2 = 1.0 + p.x * p.x + p.y * p.y;
+  return pixelSide * pixelSide / (r2 * std::sqrt(r2));
+}
+
+glm::ivec2 Camera::project(const glm::vec3& point) const {
+  const glm::vec3 d = point - position_world;
+  const float z = glm::dot(d, forward());
+  if (z <= 0.0f) return {-1, -1};
+  const double tanHalf = std::tan(glm::radians(static_cast<double>(fov_y_deg)) * 0.5);
+  const double aspect = static_cast<double>(width) / height;
+  const double u = glm::dot(d, right()) / z / (tanHalf * aspect);
+  const double v = glm::dot(d, up()) / z / tanHalf;
+  const int x = static_cast<int>(std::floor((u + 1.0) * 0.5 * width));
+  const int y = static_cast<int>(std::floor((1.0 - v) * 0.5 * height));
+  if (x < 0 || y < 0 || x >= width || y >= height) return {-1, -1};
+  return {x, y};
+}
+
+glm::mat4 Camera::view() const { return glm::lookAt(position_world, look_at_world, up_world); }
+
+glm::mat4 Camera::projection(float near_m, float far_m) const {
+  const float aspect = static_cast<float>(width) / static_cast<float>(height);
+  glm::mat4 p = glm::perspective(glm::radians(fov_y_deg), aspect, near_m, far_m);
+  // Flip clip-space y so framebuffer row 0 holds the top of the image.
+  return glm::scale(glm::mat4(1.0f), glm::vec3(1.0f, -1.0f, 1.0f)) * p;
+}
+
+}  // namespace tofsim::render

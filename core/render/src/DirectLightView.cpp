@@ -1,0 +1,41 @@
+#include "DirectLightView.h"
+
+#include "tofsim/volume/PhysicalConstants.h"
+
+namespace tofsim::render {
+
+DirectLightView directLightView(const RenderJob& job, const std::vector<float>& positions) {
+  DirectLightView view;
+  const Camera& camera = job.camera;
+  const glm::vec3 toCamera = camera.position_world - job.light.position_world;
+  const float d = glm::length(toCamera);
+  if (d <= 1e-6f) return view;  // a light at the camera's pinhole is not seen
+  const glm::ivec2 xy = camera.project(job.light.position_world);
+  if (xy.x < 0) return view;
+  const float profile = job.light.angularProfile(toCamera / d);
+  if (profile <= 0.0f) return view;
+  view.pixel = static_cast<std::size_t>(xy.y) * camera.width + xy.x;
+  const float* p = &positions[view.pixel * 4];
+  if (p[3] != 0.0f && glm::length(glm::vec3(p[0], p[1], p[2]) - camera.position_world) < d) {
+    return view;  // a surface in front of the light hides it
+  }
+  view.visible = true;
+  const double solidAngle = camera.pixelSolidAngle_sr(xy.x, xy.y);
+  view.radiance = job.light.intensity_W_per_sr *
+                  static_cast<float>(profile / (static_cast<double>(d) * d * solidAngle));
+  // Unwarped time is the time at the scene point; the source itself emits at 0.
+  const double path_m = job.settings.camera_unwarp ? 0.0 : job.settings.index_of_refraction * d;
+  view.bin = job.settings.time.binOf(path_m / kSpeedOfLight_m_per_s);
+  return view;
+}
+
+double DirectLightView::addTo(std::size_t firstPixel, std::size_t pixelCount,
+                              const TimeAxis& axis, int channels, float* direct) const {
+  if (!visible || pixel < firstPixel || pixel >= firstPixel + pixelCount) return 0.0;
+  if (bin < 0) return static_cast<double>(radiance.r) + radiance.g + radiance.b;
+  float* out = direct + ((pixel - firstPixel) * axis.bins + bin) * channels;
+  for (int c = 0; c < channels; ++c) out[c] += radiance[c];
+  return 0.0;
+}
+
+}  // namespace tofsim::render

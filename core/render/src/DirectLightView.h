@@ -1,0 +1,28 @@
+#pragma once
+// Light that travels straight from the source into the camera. A point source
+// is a delta in angle, so its radiance is spread over the pixel it projects
+// into: L = I / (d^2 * pixel solid angle), arriving after eta * d / c.
+
+#include <cstddef>
+#include <vector>
+
+#include "tofsim/render/TransientRenderer.h"
+
+namespace tofsim::render {
+
+struct DirectLightView {
+  bool visible = false;
+  std::size_t pixel = 0;  ///< y * width + x
+  int32_t bin = -1;       ///< -1 when outside the time axis
+  glm::vec3 radiance{0.0f};
+
+  /// Adds the term to a segment's direct buffer when the pixel is in it;
+  /// returns the radiance (summed over channels) that fell outside the axis.
+  double addTo(std::size_t firstPixel, std::size_t pixelCount, const TimeAxis& axis, int channels,
+               float* direct) const;
+};
+
+/// `positions`: the G-buffer's RGBA world positions, row 0 at the top.
+DirectLightView directLightView(const RenderJob& job, const std::vector<float>& positions);
+
+}  // namespace tofsim::render

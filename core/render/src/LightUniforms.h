@@ -1,0 +1,11 @@
+#pragma once
+// Sets the light's uniforms declared in shaders/light.glsl.
+
+#include "tofsim/gl/Program.h"
+#include "tofsim/render/Light.h"
+
+namespace tofsim::render {
+
+void setLightUniforms(const gl::Program& program, const Light& light);
+
+}  // namespace tofsim::render

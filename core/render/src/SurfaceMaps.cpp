@@ -1,0 +1,55 @@
+#include "SurfaceMaps.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "GpuScene.h"
+#include "tofsim/gl/Check.h"
+
+namespace tofsim::render {
+
+SurfaceMaps::SurfaceMaps(int width, int height)
+    : position(gl::Texture::create2D(GL_RGBA32F, width, height)),
+      normal(gl::Texture::create2D(GL_RGBA32F, width, height)),
+      albedo(gl::Texture::create2D(GL_RGBA32F, width, height)),
+      depth(gl::Texture::create2D(GL_DEPTH_COMPONENT32F, width, height)),
+      program_({{GL_VERTEX_SHADER, "gbuffer.vert"}, {GL_FRAGMENT_SHADER, "gbuffer.frag"}}) {
+  framebuffer_.attachColor(0, position);
+  framebuffer_.attachColor(1, normal);
+  framebuffer_.attachColor(2, albedo);
+  framebuffer_.attachDepth(depth);
+  framebuffer_.finish("SurfaceMaps framebuffer");
+}
+
+void SurfaceMaps::render(const GpuScene& scene, const glm::mat4& viewProjection,
+                         const glm::vec3& viewpoint_world) {
+  framebuffer_.bind();
+  glViewport(0, 0, position.width(), position.height());
+  const float zero[4] = {0.0f, 0.0f, 0.0f, 0.0f};
+  for (GLint i = 0; i < 3; ++i) glClearNamedFramebufferfv(framebuffer_.id(), GL_COLOR, i, zero);
+  const float one = 1.0f;
+  glClearNamedFramebufferfv(framebuffer_.id(), GL_DEPTH, 0, &one);
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LESS);
+  glDisable(GL_CULL_FACE);  // surfaces are two-sided
+  program_.use();
+  program_.set("uViewProjection", viewProjection);
+  program_.set("uViewpoint_world", viewpoint_world);
+  scene.draw(program_);
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  TOFSIM_GL_CHECK("SurfaceMaps::render");
+}
+
+glm::vec2 depthRange(const glm::vec3& lo, const glm::vec3& hi, const glm::vec3& eye) {
+  float farthest = 0.0f;
+  for (int corner = 0; corner < 8; ++corner) {
+    const glm::vec3 p((corner & 1) ? hi.x : lo.x, (corner & 2) ? hi.y : lo.y,
+                      (corner & 4) ? hi.z : lo.z);
+    farthest = std::max(farthest, glm::length(p - eye));
+  }
+  const float far = std::max(farthest * 1.01f, 1e-3f);
+  // Depth resolution at the far plane is about far^2/near * 6e-8, i.e. 0.06% of far.
+  return {std::max(far * 1e-4f, 1e-5f), far};
+}
+
+}  // namespace tofsim::render

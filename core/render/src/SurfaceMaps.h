@@ -1,0 +1,35 @@
+#pragma once
+// Rasterized surface attributes seen from one viewpoint: world position,
+// facing normal and albedo per texel. The camera's G-buffer and the light's
+// reflective shadow map are both SurfaceMaps.
+
+#include <glm/glm.hpp>
+
+#include "tofsim/gl/Framebuffer.h"
+#include "tofsim/gl/Program.h"
+#include "tofsim/gl/Texture.h"
+
+namespace tofsim::render {
+
+class GpuScene;
+
+struct SurfaceMaps {
+  gl::Texture position;  ///< RGBA32F: xyz world, w = 1 on a surface
+  gl::Texture normal;    ///< RGBA32F
+  gl::Texture albedo;    ///< RGBA32F
+  gl::Texture depth;     ///< DEPTH32F
+
+  SurfaceMaps(int width, int height);
+  /// Rasterizes the scene with `viewProjection` from `viewpoint_world`.
+  void render(const GpuScene& scene, const glm::mat4& viewProjection,
+              const glm::vec3& viewpoint_world);
+
+ private:
+  gl::Framebuffer framebuffer_;
+  gl::Program program_;
+};
+
+/// Near and far planes that enclose the scene's bounds seen from `eye`.
+glm::vec2 depthRange(const glm::vec3& boundsMin, const glm::vec3& boundsMax, const glm::vec3& eye);
+
+}  // namespace tofsim::render

@@ -1,0 +1,161 @@
+#include "tofsim/render/TransientRenderer.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <vector>
+
+#include "DirectLightView.h"
+#include "GpuScene.h"
+#include "LightShadowMap.h"
+#include "LightUniforms.h"
+#include "SegmentPlan.h"
+#include "SurfaceMaps.h"
+#include "tofsim/gl/Buffer.h"
+#include "tofsim/gl/Check.h"
+#include "tofsim/gl/Context.h"
+#include "tofsim/util/Error.h"
+
+namespace tofsim::render {
+
+namespace {
+
+constexpr int kChannels = 3;
+constexpr GLuint kWorkGroupSize = 64;  // local_size_x of the gather shaders
+
+void validateJob(const RenderJob& job, const gl::ContextLimits& limits) {
+  TOFSIM_CHECK(job.scene != nullptr);
+  const Camera& c = job.camera;
+  if (c.width > limits.maxTextureSize || c.height > limits.maxTextureSize) {
+    throw InputError("camera resolution " + std::to_string(c.width) + "x" +
+                     std::to_string(c.height) + " exceeds the GL implementation's texture limit " +
+                     std::to_string(limits.maxTextureSize));
+  }
+  if (job.settings.shadow_map_resolution > limits.maxTextureSize) {
+    throw InputError("render.shadow_map_resolution exceeds the GL texture limit " +
+                     std::to_string(limits.maxTextureSize));
+  }
+}
+
+// Scene bounds grown to hold the camera and the light, for depth ranges.
+void viewBounds(const RenderJob& job, glm::vec3& lo, glm::vec3& hi) {
+  const scene::Bounds b = job.scene->bounds();
+  lo = glm::min(glm::min(b.min, job.camera.position_world), job.light.position_world);
+  hi = glm::max(glm::max(b.max, job.camera.position_world), job.light.position_world);
+}
+
+Image depthFromPositions(const std::vector<float>& positions, const Camera& camera) {
+  Image depth(camera.width, camera.height, 1);
+  for (int32_t y = 0; y < camera.height; ++y) {
+    for (int32_t x = 0; x < camera.width; ++x) {
+      const float* p = &positions[(static_cast<std::size_t>(y) * camera.width + x) * 4];
+      if (p[3] == 0.0f) continue;
+      depth.at(y, x, 0) = glm::length(glm::vec3(p[0], p[1], p[2]) - camera.position_world);
+    }
+  }
+  return depth;
+}
+
+}  // namespace
+
+TransientRenderer::TransientRenderer(gl::Context& context) : context_(context) {}
+
+RenderResult TransientRenderer::render(const RenderJob& job, SegmentSink& sink,
+                                       const ProgressCallback& progress) const {
+  const auto started = std::chrono::steady_clock::now();
+  const gl::ContextLimits& limits = context_.limits();
+  validateJob(job, limits);
+  const Camera& camera = job.camera;
+  const RenderSettings& settings = job.settings;
+  const TimeAxis& axis = settings.time;
+  RenderResult result;
+
+  GpuScene gpuScene(*job.scene);
+  glm::vec3 lo, hi;
+  viewBounds(job, lo, hi);
+
+  SurfaceMaps gbuffer(camera.width, camera.height);
+  const glm::vec2 range = depthRange(lo, hi, camera.position_world);
+  gbuffer.render(gpuScene, camera.projection(range.x, range.y) * camera.view(),
+                 camera.position_world);
+  const std::size_t pixelCount = static_cast<std::size_t>(camera.width) * camera.height;
+  std::vector<float> positions(pixelCount * 4);
+  gbuffer.position.download(GL_RGBA, GL_FLOAT, positions.size() * sizeof(float), positions.data());
+  result.depth_m = depthFromPositions(positions, camera);
+
+  LightShadowMap shadowMap(settings.shadow_map_resolution, job.light.position_world, lo, hi);
+  shadowMap.render(gpuScene);
+
+  gl::Program directGather({{GL_COMPUTE_SHADER, "direct_gather.comp"}});
+  setLightUniforms(directGather, job.light);
+  shadowMap.bind(directGather);
+  directGather.set("uImageWidth", camera.width);
+  directGather.set("uBins", axis.bins);
+  directGather.set("uStart_m", static_cast<float>(axis.start_m()));
+  directGather.set("uBinWidth_m", static_cast<float>(axis.bin_width_m()));
+  directGather.set("uIndexOfRefraction", static_cast<float>(settings.index_of_refraction));
+  directGather.set("uCameraUnwarp", settings.camera_unwarp ? 1 : 0);
+  directGather.set("uCameraPosition_world", camera.position_world);
+
+  const std::size_t fixedBytes = gpuScene.bytes() + pixelCount * 4 * 4 * sizeof(float) +
+                                 shadowMap.bytes();
+  const std::size_t budget = settings.memory_budget_bytes > fixedBytes
+                                 ? settings.memory_budget_bytes - fixedBytes
+                                 : 0;
+  const std::size_t floatsPerPixel = static_cast<std::size_t>(axis.bins) * kChannels;
+  const std::size_t maxDispatchPixels =
+      static_cast<std::size_t>(limits.maxComputeWorkGroupCount[0]) * kWorkGroupSize;
+  const SegmentPlan plan = planSegments(pixelCount, floatsPerPixel, 2, budget,
+                                        limits.maxShaderStorageBlockBytes, maxDispatchPixels);
+  result.segments = plan.segmentCount;
+  result.peakGpuBytes = fixedBytes + plan.bytesPerSegment;
+
+  const std::size_t segmentFloats = plan.pixelsPerSegment * floatsPerPixel;
+  gl::Buffer directBuffer(segmentFloats * sizeof(float));
+  gl::Buffer indirectBuffer(segmentFloats * sizeof(float));
+  gl::Buffer outsideBuffer(plan.pixelsPerSegment * sizeof(float));
+  std::vector<float> direct(segmentFloats), indirect(segmentFloats), outside(plan.pixelsPerSegment);
+
+  const DirectLightView lightView = directLightView(job, positions);
+  for (std::size_t s = 0; s < plan.segmentCount; ++s) {
+    const std::size_t first = s * plan.pixelsPerSegment;
+    const std::size_t count = std::min(plan.pixelsPerSegment, pixelCount - first);
+    const std::size_t floats = count * floatsPerPixel;
+    directBuffer.clear();
+    indirectBuffer.clear();
+    outsideBuffer.clear();
+    directBuffer.bindRange(GL_SHADER_STORAGE_BUFFER, 0, 0, floats * sizeof(float));
+    indirectBuffer.bindRange(GL_SHADER_STORAGE_BUFFER, 1, 0, floats * sizeof(float));
+    outsideBuffer.bindRange(GL_SHADER_STORAGE_BUFFER, 2, 0, count * sizeof(float));
+
+    gbuffer.position.bindUnit(0);
+    gbuffer.normal.bindUnit(1);
+    gbuffer.albedo.bindUnit(2);
+    directGather.use();
+    shadowMap.bind(directGather);
+    directGather.set("uFirstPixel", static_cast<unsigned>(first));
+    directGather.set("uPixelCount", static_cast<unsigned>(count));
+    glDispatchCompute(static_cast<GLuint>((count + kWorkGroupSize - 1) / kWorkGroupSize), 1, 1);
+    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+    TOFSIM_GL_CHECK("direct gather");
+
+    directBuffer.download(0, floats * sizeof(float), direct.data());
+    indirectBuffer.download(0, floats * sizeof(float), indirect.data());
+    outsideBuffer.download(0, count * sizeof(float), outside.data());
+    for (std::size_t i = 0; i < count; ++i) result.energyOutsideAxis += outside[i];
+    result.energyOutsideAxis += lightView.addTo(first, count, axis, kChannels, direct.data());
+
+    Segment segment;
+    segment.firstPixel = first;
+    segment.pixelCount = count;
+    segment.direct = direct.data();
+    segment.indirect = indirect.data();
+    sink.consume(segment);
+    if (progress) progress(s + 1, plan.segmentCount, "segments");
+  }
+  result.seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  return result;
+}
+
+}  // namespace tofsim::render

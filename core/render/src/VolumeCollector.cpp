@@ -1,0 +1,34 @@
+#include <algorithm>
+
+#include "tofsim/render/TransientRenderer.h"
+
+namespace tofsim::render {
+
+namespace {
+std::vector<std::string> channelNames(int32_t channels) {
+  if (channels == 3) return {"R", "G", "B"};
+  std::vector<std::string> names;
+  for (int32_t c = 0; c < channels; ++c) names.push_back("C" + std::to_string(c));
+  return names;
+}
+}  // namespace
+
+VolumeCollector::VolumeCollector(int32_t width, int32_t height, const TimeAxis& axis,
+                                 int32_t channels)
+    : direct(width, height, axis, channelNames(channels)),
+      indirect(width, height, axis, channelNames(channels)) {}
+
+void VolumeCollector::consume(const Segment& segment) {
+  const std::size_t offset = segment.firstPixel * direct.pixelStride();
+  const std::size_t floats = segment.pixelCount * direct.pixelStride();
+  std::copy_n(segment.direct, floats, direct.data() + offset);
+  std::copy_n(segment.indirect, floats, indirect.data() + offset);
+}
+
+TransientVolume VolumeCollector::total() const {
+  TransientVolume sum = direct;
+  for (std::size_t i = 0; i < sum.size(); ++i) sum.data()[i] += indirect.data()[i];
+  return sum;
+}
+
+}  // namespace tofsim::render

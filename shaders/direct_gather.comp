@@ -1,0 +1,60 @@
+#version 450 core
+// Direct transient light: one thread per pixel of the segment. The pixel's
+// surface point x receives the light's impulse after |l - x| and reflects it
+// (Lambertian) to the camera after |x - c|; the radiance lands in the bin of
+// the full optical path eta * (|l - x| + |x - c|), or eta * |l - x| when the
+// camera delay is unwarped. Each bin has this thread as its only writer, so
+// the result does not depend on scheduling.
+layout(local_size_x = 64) in;
+
+#include "light.glsl"
+
+layout(binding = 0) uniform sampler2D uGPosition;
+layout(binding = 1) uniform sampler2D uGNormal;
+layout(binding = 2) uniform sampler2D uGAlbedo;
+
+layout(std430, binding = 0) buffer DirectVolume { float direct[]; };
+layout(std430, binding = 2) buffer OutsideAxis { float outside[]; };
+
+uniform uint uFirstPixel;
+uniform uint uPixelCount;
+uniform int uImageWidth;
+uniform int uBins;
+uniform float uStart_m;
+uniform float uBinWidth_m;
+uniform float uIndexOfRefraction;
+uniform int uCameraUnwarp;
+uniform vec3 uCameraPosition_world;
+
+void main() {
+  uint local = gl_GlobalInvocationID.x;
+  if (local >= uPixelCount) return;
+  uint pixel = uFirstPixel + local;
+  ivec2 xy = ivec2(int(pixel % uint(uImageWidth)), int(pixel / uint(uImageWidth)));
+  vec4 position = texelFetch(uGPosition, xy, 0);
+  if (position.w == 0.0) return;
+  vec3 x = position.xyz;
+  vec3 n = texelFetch(uGNormal, xy, 0).xyz;
+  vec3 albedo = texelFetch(uGAlbedo, xy, 0).rgb;
+
+  vec3 toLight = uLightPosition_world - x;
+  float dLight = length(toLight);
+  vec3 wLight = toLight / dLight;
+  float cosX = dot(n, wLight);
+  if (cosX <= 0.0) return;
+  float profile = spotProfile(-wLight);
+  if (profile <= 0.0 || !visibleFromLight(x, cosX)) return;
+
+  vec3 radiance = albedo / PI * uLightIntensity_W_per_sr * (profile * cosX / (dLight * dLight));
+  float dCamera = uCameraUnwarp != 0 ? 0.0 : length(x - uCameraPosition_world);
+  float path_m = uIndexOfRefraction * (dLight + dCamera);
+  int bin = int(floor((path_m - uStart_m) / uBinWidth_m));
+  if (bin < 0 || bin >= uBins) {
+    outside[local] += radiance.r + radiance.g + radiance.b;
+    return;
+  }
+  uint base = (local * uint(uBins) + uint(bin)) * 3u;
+  direct[base + 0u] = radiance.r;
+  direct[base + 1u] = radiance.g;
+  direct[base + 2u] = radiance.b;
+}

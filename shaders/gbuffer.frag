@@ -1,0 +1,26 @@
+#version 450 core
+// Surface attributes of the first surface seen from a viewpoint (the camera,
+// or the light for the reflective shadow map). Surfaces are two-sided: the
+// normal is turned to face the viewpoint.
+in vec3 vPosition_world;
+in vec3 vNormal_world;
+in vec2 vUv;
+
+uniform vec3 uViewpoint_world;
+uniform vec3 uAlbedoFactor;
+uniform int uHasAlbedoTexture;
+layout(binding = 0) uniform sampler2D uAlbedoTexture;
+
+layout(location = 0) out vec4 outPosition;  // xyz world, w = 1 where a surface was hit
+layout(location = 1) out vec4 outNormal;    // xyz unit world normal facing the viewpoint
+layout(location = 2) out vec4 outAlbedo;    // rgb diffuse albedo
+
+void main() {
+  vec3 n = normalize(vNormal_world);
+  if (dot(n, uViewpoint_world - vPosition_world) < 0.0) n = -n;
+  vec3 albedo = uAlbedoFactor;
+  if (uHasAlbedoTexture != 0) albedo *= texture(uAlbedoTexture, vUv).rgb;
+  outPosition = vec4(vPosition_world, 1.0);
+  outNormal = vec4(n, 0.0);
+  outAlbedo = vec4(albedo, 1.0);
+}

@@ -1,0 +1,32 @@
+#include "AnalyticScenes.h"
+
+#include <cmath>
+
+namespace tofsim::test {
+
+void addQuad(scene::Scene& scene, const glm::vec3& center, const glm::vec3& normal, float size_m,
+             const glm::vec3& albedo) {
+  const glm::vec3 n = glm::normalize(normal);
+  const glm::vec3 helper = std::abs(n.y) < 0.9f ? glm::vec3(0, 1, 0) : glm::vec3(1, 0, 0);
+  const glm::vec3 u = glm::normalize(glm::cross(helper, n)) * (0.5f * size_m);
+  const glm::vec3 v = glm::cross(n, glm::normalize(u)) * (0.5f * size_m);
+  scene::Material material;
+  material.name = "quad" + std::to_string(scene.materials.size());
+  material.albedo = albedo;
+  scene.materials.push_back(material);
+  scene::Mesh mesh;
+  mesh.name = material.name;
+  mesh.positions_world = {center - u - v, center + u - v, center + u + v, center - u + v};
+  mesh.normals_world.assign(4, n);
+  mesh.indices = {0, 1, 2, 0, 2, 3};
+  mesh.material = static_cast<int32_t>(scene.materials.size() - 1);
+  scene.meshes.push_back(mesh);
+}
+
+scene::Scene makePlane(float size_m, const glm::vec3& albedo) {
+  scene::Scene scene;
+  addQuad(scene, glm::vec3(0.0f), glm::vec3(0, 0, 1), size_m, albedo);
+  return scene;
+}
+
+}  // namespace tofsim::test
