@@ -10,11 +10,14 @@
 
 #include "../support/AnalyticScenes.h"
 #include "../support/GlTestContext.h"
+#include "tofsim/capture/VolumeCollector.h"
 #include "tofsim/render/TransientRenderer.h"
 #include "tofsim/volume/PhysicalConstants.h"
 
 namespace tofsim::render {
 namespace {
+
+using namespace capture;
 
 constexpr double kPi = 3.14159265358979323846;
 

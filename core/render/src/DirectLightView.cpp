@@ -6,7 +6,7 @@ namespace tofsim::render {
 
 DirectLightView directLightView(const RenderJob& job, const std::vector<float>& positions) {
   DirectLightView view;
-  const Camera& camera = job.camera;
+  const capture::Camera& camera = job.camera;
   const glm::vec3 toCamera = camera.position_world - job.light.position_world;
   const float d = glm::length(toCamera);
   if (d <= 1e-6f) return view;  // a light at the camera's pinhole is not seen

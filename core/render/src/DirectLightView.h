@@ -10,6 +10,8 @@
 
 namespace tofsim::render {
 
+using capture::RenderJob;
+
 struct DirectLightView {
   bool visible = false;
   std::size_t pixel = 0;  ///< y * width + x

@@ -18,6 +18,8 @@
 
 namespace tofsim::render {
 
+using namespace capture;  // the job description types
+
 namespace {
 
 constexpr int kChannels = 3;

@@ -7,16 +7,8 @@
 // The volume is produced in segments sized by the memory budget and the GL
 // implementation's limits and handed to a SegmentSink as soon as each is done.
 
-#include <cstddef>
-#include <functional>
-#include <string>
-
-#include "tofsim/render/Camera.h"
-#include "tofsim/render/Light.h"
-#include "tofsim/render/RenderSettings.h"
-#include "tofsim/render/SegmentSink.h"
-#include "tofsim/scene/Scene.h"
-#include "tofsim/volume/TransientVolume.h"
+#include "tofsim/capture/RenderJob.h"
+#include "tofsim/capture/SegmentSink.h"
 
 namespace tofsim::gl {
 class Context;
@@ -24,29 +16,10 @@ class Context;
 
 namespace tofsim::render {
 
-struct RenderJob {
-  const scene::Scene* scene = nullptr;
-  Camera camera;
-  Light light;
-  RenderSettings settings;
-};
-
-/// Per-pixel facts of the first surface each pixel sees (ground truth for
-/// sensor studies), and what the render did.
-struct RenderResult {
-  Image depth_m;  ///< camera-to-surface distance, 1 channel; 0 where no surface
-  std::size_t segments = 0;
-  std::size_t vpls = 0;
-  std::size_t vplBatches = 0;
-  std::size_t peakGpuBytes = 0;
-  double seconds = 0.0;
-  /// Radiance that arrived outside the time axis (summed over channels); it is
-  /// in neither the volume nor the steady image.
-  double energyOutsideAxis = 0.0;
-};
-
-/// Called after each unit of work: (done, total, what).
-using ProgressCallback = std::function<void(std::size_t, std::size_t, const std::string&)>;
+using capture::ProgressCallback;
+using capture::RenderJob;
+using capture::RenderResult;
+using capture::SegmentSink;
 
 class TransientRenderer {
  public:
@@ -56,17 +29,6 @@ class TransientRenderer {
 
  private:
   gl::Context& context_;
-};
-
-/// A sink that keeps the whole volume in memory (tests, small renders).
-class VolumeCollector : public SegmentSink {
- public:
-  VolumeCollector(int32_t width, int32_t height, const TimeAxis& axis, int32_t channels);
-  void consume(const Segment& segment) override;
-  TransientVolume direct;
-  TransientVolume indirect;
-  /// direct + indirect, computed in float: total == direct + indirect exactly.
-  TransientVolume total() const;
 };
 
 }  // namespace tofsim::render

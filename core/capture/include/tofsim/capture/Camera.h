@@ -6,7 +6,7 @@
 
 #include <cstdint>
 
-namespace tofsim::render {
+namespace tofsim::capture {
 
 struct Camera {
   glm::vec3 position_world{0.0f};
@@ -32,4 +32,4 @@ struct Camera {
   glm::mat4 projection(float near_m, float far_m) const;
 };
 
-}  // namespace tofsim::render
+}  // namespace tofsim::capture

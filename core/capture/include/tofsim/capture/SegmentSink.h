@@ -7,7 +7,7 @@
 
 #include <cstddef>
 
-namespace tofsim::render {
+namespace tofsim::capture {
 
 struct Segment {
   std::size_t firstPixel = 0;  ///< y * width + x of the first pixel
@@ -22,4 +22,4 @@ class SegmentSink {
   virtual void consume(const Segment& segment) = 0;
 };
 
-}  // namespace tofsim::render
+}  // namespace tofsim::capture

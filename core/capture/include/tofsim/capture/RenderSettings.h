@@ -7,7 +7,7 @@
 
 #include "tofsim/volume/TimeAxis.h"
 
-namespace tofsim::render {
+namespace tofsim::capture {
 
 enum class Visibility { Ism, Exact };
 
@@ -33,4 +33,4 @@ struct RenderSettings {
   IndirectSettings indirect;
 };
 
-}  // namespace tofsim::render
+}  // namespace tofsim::capture

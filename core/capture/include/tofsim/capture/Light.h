@@ -3,7 +3,7 @@
 
 #include <glm/glm.hpp>
 
-namespace tofsim::render {
+namespace tofsim::capture {
 
 struct Light {
   enum class Type { Point, Spot };
@@ -23,4 +23,4 @@ struct Light {
   float angularProfile(const glm::vec3& direction) const;
 };
 
-}  // namespace tofsim::render
+}  // namespace tofsim::capture

@@ -1,10 +1,10 @@
-#include "tofsim/render/Camera.h"
+#include "tofsim/capture/Camera.h"
 
 #include <cmath>
 
 #include <glm/gtc/matrix_transform.hpp>
 
-namespace tofsim::render {
+namespace tofsim::capture {
 
 glm::vec3 Camera::forward() const { return glm::normalize(look_at_world - position_world); }
 glm::vec3 Camera::right() const { return glm::normalize(glm::cross(forward(), up_world)); }
@@ -59,4 +59,4 @@ glm::mat4 Camera::projection(float near_m, float far_m) const {
   return glm::scale(glm::mat4(1.0f), glm::vec3(1.0f, -1.0f, 1.0f)) * p;
 }
 
-}  // namespace tofsim::render
+}  // namespace tofsim::capture

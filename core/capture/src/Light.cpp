@@ -1,9 +1,9 @@
-#include "tofsim/render/Light.h"
+#include "tofsim/capture/Light.h"
 
 #include <algorithm>
 #include <cmath>
 
-namespace tofsim::render {
+namespace tofsim::capture {
 
 float Light::angularProfile(const glm::vec3& direction) const {
   if (type == Type::Point) return 1.0f;
@@ -17,4 +17,4 @@ float Light::angularProfile(const glm::vec3& direction) const {
   return s * s * (3.0f - 2.0f * s);
 }
 
-}  // namespace tofsim::render
+}  // namespace tofsim::capture

@@ -1,22 +1,20 @@
 #include <algorithm>
 
-#include "tofsim/render/TransientRenderer.h"
+#include "tofsim/capture/VolumeCollector.h"
 
-namespace tofsim::render {
+namespace tofsim::capture {
 
-namespace {
-std::vector<std::string> channelNames(int32_t channels) {
+std::vector<std::string> defaultChannelNames(int32_t channels) {
   if (channels == 3) return {"R", "G", "B"};
   std::vector<std::string> names;
   for (int32_t c = 0; c < channels; ++c) names.push_back("C" + std::to_string(c));
   return names;
 }
-}  // namespace
 
 VolumeCollector::VolumeCollector(int32_t width, int32_t height, const TimeAxis& axis,
                                  int32_t channels)
-    : direct(width, height, axis, channelNames(channels)),
-      indirect(width, height, axis, channelNames(channels)) {}
+    : direct(width, height, axis, defaultChannelNames(channels)),
+      indirect(width, height, axis, defaultChannelNames(channels)) {}
 
 void VolumeCollector::consume(const Segment& segment) {
   const std::size_t offset = segment.firstPixel * direct.pixelStride();
@@ -31,4 +29,4 @@ TransientVolume VolumeCollector::total() const {
   return sum;
 }
 
-}  // namespace tofsim::render
+}  // namespace tofsim::capture

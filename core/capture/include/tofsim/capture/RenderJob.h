@@ -1,0 +1,40 @@
+#pragma once
+// What a renderer is asked to do and what it reports back, independent of how
+// it renders (GL transient instant radiosity or the CPU reference).
+
+#include <cstddef>
+#include <functional>
+#include <string>
+
+#include "tofsim/capture/Camera.h"
+#include "tofsim/capture/Light.h"
+#include "tofsim/capture/RenderSettings.h"
+#include "tofsim/scene/Scene.h"
+#include "tofsim/volume/TransientVolume.h"
+
+namespace tofsim::capture {
+
+struct RenderJob {
+  const scene::Scene* scene = nullptr;
+  Camera camera;
+  Light light;
+  RenderSettings settings;
+};
+
+/// Ground truth of the first surface each pixel sees, and what the render did.
+struct RenderResult {
+  Image depth_m;  ///< camera-to-surface distance, 1 channel; 0 where no surface
+  std::size_t segments = 0;
+  std::size_t vpls = 0;
+  std::size_t vplBatches = 0;
+  std::size_t peakGpuBytes = 0;
+  double seconds = 0.0;
+  /// Radiance that arrived outside the time axis (summed over channels); it is
+  /// in neither the volume nor the steady image.
+  double energyOutsideAxis = 0.0;
+};
+
+/// Called after each unit of work: (done, total, what).
+using ProgressCallback = std::function<void(std::size_t, std::size_t, const std::string&)>;
+
+}  // namespace tofsim::capture
