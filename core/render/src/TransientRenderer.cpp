@@ -5,12 +5,12 @@
 #include <cmath>
 #include <vector>
 
-#include "DirectLightView.h"
 #include "GpuScene.h"
 #include "LightShadowMap.h"
 #include "LightUniforms.h"
 #include "SegmentPlan.h"
 #include "SurfaceMaps.h"
+#include "tofsim/capture/DirectLightView.h"
 #include "tofsim/gl/Buffer.h"
 #include "tofsim/gl/Check.h"
 #include "tofsim/gl/Context.h"

@@ -6,11 +6,9 @@
 #include <cstddef>
 #include <vector>
 
-#include "tofsim/render/TransientRenderer.h"
+#include "tofsim/capture/RenderJob.h"
 
-namespace tofsim::render {
-
-using capture::RenderJob;
+namespace tofsim::capture {
 
 struct DirectLightView {
   bool visible = false;
@@ -27,4 +25,4 @@ struct DirectLightView {
 /// `positions`: the G-buffer's RGBA world positions, row 0 at the top.
 DirectLightView directLightView(const RenderJob& job, const std::vector<float>& positions);
 
-}  // namespace tofsim::render
+}  // namespace tofsim::capture

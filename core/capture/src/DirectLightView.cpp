@@ -1,12 +1,12 @@
-#include "DirectLightView.h"
+#include "tofsim/capture/DirectLightView.h"
 
 #include "tofsim/volume/PhysicalConstants.h"
 
-namespace tofsim::render {
+namespace tofsim::capture {
 
 DirectLightView directLightView(const RenderJob& job, const std::vector<float>& positions) {
   DirectLightView view;
-  const capture::Camera& camera = job.camera;
+  const Camera& camera = job.camera;
   const glm::vec3 toCamera = camera.position_world - job.light.position_world;
   const float d = glm::length(toCamera);
   if (d <= 1e-6f) return view;  // a light at the camera's pinhole is not seen
@@ -38,4 +38,4 @@ double DirectLightView::addTo(std::size_t firstPixel, std::size_t pixelCount,
   return 0.0;
 }
 
-}  // namespace tofsim::render
+}  // namespace tofsim::capture
