@@ -28,6 +28,67 @@ YAML::Node loadYamlFile(const std::string& path) {
   }
 }
 
+namespace {
+YAML::Node parseOverrideValue(const std::string& keyPath, const std::string& valueYaml) {
+  try {
+    return YAML::Load(valueYaml);
+  } catch (const YAML::Exception& e) {
+    throw InputError(FileLoc{"--set " + keyPath + "=" + valueYaml}, keyPath, e.msg);
+  }
+}
+
+bool isIndex(const std::string& part) {
+  return !part.empty() && part.find_first_not_of("0123456789") == std::string::npos;
+}
+
+void setAt(YAML::Node node, const std::vector<std::string>& parts, std::size_t i,
+           const YAML::Node& value, const std::string& keyPath) {
+  const std::string& part = parts[i];
+  const bool last = i + 1 == parts.size();
+  if (node.IsSequence() && isIndex(part)) {
+    const std::size_t index = std::stoul(part);
+    if (index >= node.size()) {
+      throw InputError(FileLoc{"--set " + keyPath}, keyPath,
+                       "index " + part + " is past the end of a list of " +
+                           std::to_string(node.size()));
+    }
+    if (last) {
+      node[index] = value;
+    } else {
+      setAt(node[index], parts, i + 1, value, keyPath);
+    }
+    return;
+  }
+  if (!node.IsMap() && !node.IsNull()) {
+    throw InputError(FileLoc{"--set " + keyPath}, keyPath,
+                     "'" + part + "' is set inside a value that is not a mapping");
+  }
+  if (last) {
+    node[part] = value;
+  } else {
+    YAML::Node next = node[part];
+    if (!next.IsDefined() || next.IsNull()) next = YAML::Node(YAML::NodeType::Map);
+    setAt(next, parts, i + 1, value, keyPath);
+    node[part] = next;
+  }
+}
+}  // namespace
+
+void applyOverride(YAML::Node& root, const std::string& keyPath, const std::string& valueYaml) {
+  std::vector<std::string> parts;
+  std::size_t begin = 0;
+  while (true) {
+    const std::size_t dot = keyPath.find('.', begin);
+    parts.push_back(keyPath.substr(begin, dot - begin));
+    if (dot == std::string::npos) break;
+    begin = dot + 1;
+  }
+  for (const std::string& part : parts) {
+    if (part.empty()) throw InputError(FileLoc{"--set " + keyPath}, keyPath, "empty key in path");
+  }
+  setAt(root, parts, 0, parseOverrideValue(keyPath, valueYaml), keyPath);
+}
+
 ConfigNode::ConfigNode(YAML::Node node, std::string file)
     : node_(std::move(node)), shared_(std::make_shared<Shared>()) {
   shared_->file = std::move(file);
@@ -41,11 +102,25 @@ std::string ConfigNode::pathOf(const std::string& key) const {
   return path_.empty() ? key : path_ + "." + key;
 }
 
-FileLoc ConfigNode::location() const { return locOf(node_, shared_->file); }
+void ConfigNode::addOverrideSource(const std::string& keyPath, const std::string& source) const {
+  shared_->overrideSources.emplace_back(keyPath, source);
+}
+
+FileLoc ConfigNode::locate(const YAML::Node& node, const std::string& path) const {
+  for (const auto& [prefix, source] : shared_->overrideSources) {
+    const bool under = path == prefix || (path.size() > prefix.size() &&
+                                          path.compare(0, prefix.size(), prefix) == 0 &&
+                                          (path[prefix.size()] == '.' || path[prefix.size()] == '['));
+    if (under) return FileLoc{source};
+  }
+  return locOf(node, shared_->file);
+}
+
+FileLoc ConfigNode::location() const { return locate(node_, path_); }
 
 FileLoc ConfigNode::locationOf(const std::string& key) const {
   const YAML::Node value = lookup(key);
-  return value ? locOf(value, shared_->file) : location();
+  return value ? locate(value, pathOf(key)) : location();
 }
 
 void ConfigNode::fail(const std::string& message) const {
@@ -210,7 +285,7 @@ void ConfigNode::collectUnused(const YAML::Node& node, const std::string& path) 
     const std::string key = entry.first.as<std::string>();
     const std::string p = path.empty() ? key : path + "." + key;
     if (!shared_->usedPaths.count(p)) {
-      throw InputError(locOf(entry.first, shared_->file), p, "unknown key");
+      throw InputError(locate(entry.first, p), p, "unknown key");
     }
     collectUnused(entry.second, p);
   }

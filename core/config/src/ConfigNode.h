@@ -21,6 +21,11 @@ class ConfigNode {
   /// The root of a document. `file` is used in every error message.
   ConfigNode(YAML::Node node, std::string file);
 
+  /// Records that the value at `keyPath` came from a command-line override, so
+  /// errors under it name `source` (e.g. "--set camera.fov_y=abc") instead of
+  /// a line of the file.
+  void addOverrideSource(const std::string& keyPath, const std::string& source) const;
+
   bool has(const std::string& key) const;
   /// A child mapping/sequence/scalar. Throws a located error when missing.
   ConfigNode child(const std::string& key) const;
@@ -72,7 +77,9 @@ class ConfigNode {
   struct Shared {
     std::string file;
     std::set<std::string> usedPaths;
+    std::vector<std::pair<std::string, std::string>> overrideSources;
   };
+  FileLoc locate(const YAML::Node& node, const std::string& path) const;
   ConfigNode(YAML::Node node, std::string path, std::shared_ptr<Shared> shared);
   YAML::Node lookup(const std::string& key) const;
   void collectUnused(const YAML::Node& node, const std::string& path) const;
@@ -84,5 +91,9 @@ class ConfigNode {
 
 /// Loads a YAML file; syntax errors become InputError with file:line:col.
 YAML::Node loadYamlFile(const std::string& path);
+
+/// Sets the value at a dotted key path ("camera.resolution", "sensors.0.bins")
+/// to `valueYaml` parsed as YAML, creating mappings on the way.
+void applyOverride(YAML::Node& root, const std::string& keyPath, const std::string& valueYaml);
 
 }  // namespace tofsim::config

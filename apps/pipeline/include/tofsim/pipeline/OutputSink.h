@@ -1,0 +1,43 @@
+#pragma once
+// Streams rendered segments to disk as they arrive: transient.npy (direct +
+// indirect) and, when asked, direct.npy and indirect.npy, while accumulating
+// the steady image. Nothing appears under its final name until commit(); an
+// exception or interruption before then leaves only removed temporaries.
+
+#include <filesystem>
+#include <memory>
+#include <optional>
+
+#include "tofsim/capture/SegmentSink.h"
+#include "tofsim/config/RunConfig.h"
+#include "tofsim/io/Npy.h"
+#include "tofsim/volume/TransientVolume.h"
+
+namespace tofsim::pipeline {
+
+class OutputSink : public capture::SegmentSink {
+ public:
+  /// keepInMemory: also collect the total volume (for frames and sensors).
+  OutputSink(const std::filesystem::path& directory, const config::OutputConfig& output,
+             int32_t width, int32_t height, const TimeAxis& axis, bool keepInMemory);
+  void consume(const capture::Segment& segment) override;
+  /// Renames the streamed files into place.
+  void commit();
+
+  /// sum over t of transient.npy, accumulated in double.
+  Image steady() const;
+  /// Only when keepInMemory.
+  const TransientVolume* volume() const { return volume_ ? &*volume_ : nullptr; }
+  const TransientVolume* directVolume() const { return direct_ ? &*direct_ : nullptr; }
+
+ private:
+  int32_t width_, height_;
+  TimeAxis axis_;
+  std::unique_ptr<io::NpyStreamWriter> total_, directFile_, indirectFile_;
+  std::vector<double> steady_;
+  std::vector<float> scratch_;
+  std::optional<TransientVolume> volume_;
+  std::optional<TransientVolume> direct_;
+};
+
+}  // namespace tofsim::pipeline

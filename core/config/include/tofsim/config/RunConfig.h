@@ -1,0 +1,72 @@
+#pragma once
+// A render config as typed structs, every default filled in. Produced by
+// loadRunConfig (the only code that reads YAML); consumed by the pipeline.
+// Key names, units and defaults are documented in configs/README.md.
+
+#include <filesystem>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "tofsim/capture/Camera.h"
+#include "tofsim/capture/Light.h"
+#include "tofsim/capture/RenderSettings.h"
+
+namespace tofsim::config {
+
+struct CameraConfig {
+  /// Name or index of a camera in the scene; empty: use the values below.
+  std::string gltf_camera;
+  capture::Camera camera;  ///< position, look-at, up, fov, resolution
+};
+
+struct LightConfig {
+  capture::Light light;
+  /// Place the light at the camera (plus offset, in the camera frame:
+  /// right, up, forward metres) and aim it along the view direction, as ToF
+  /// illuminators are mounted.
+  bool attach_to_camera = false;
+  glm::vec3 offset_camera_m{0.0f};
+};
+
+enum class RendererKind { InstantRadiosity, Reference };
+
+struct OutputConfig {
+  std::filesystem::path directory = "out";
+  bool transient = true;    ///< transient.npy + transient.json
+  bool steady = true;       ///< steady.exr
+  bool depth = true;        ///< depth.exr
+  bool frames = false;      ///< frames/frame_NNNN.exr, one per time bin
+  bool direct = false;      ///< direct.npy (components: [direct, ...])
+  bool indirect = false;    ///< indirect.npy
+};
+
+struct RunConfig {
+  std::filesystem::path config_file;
+  std::filesystem::path scene_file;  ///< resolved against the config's folder
+  CameraConfig camera;
+  LightConfig light;
+  capture::RenderSettings render;
+  RendererKind renderer = RendererKind::InstantRadiosity;
+  OutputConfig output;
+};
+
+/// One `--set key.path=value` override, applied before validation.
+struct Override {
+  std::string keyPath;  ///< e.g. "camera.resolution" or "sensors.0.bins"
+  std::string value;    ///< YAML text, e.g. "[64, 64]" or "10 ps"
+};
+
+/// Parses "key.path=value"; throws InputError when there is no '='.
+Override parseOverride(const std::string& text);
+
+/// Loads, overrides and validates a config. Errors name the file, line,
+/// column and key (or the --set that caused them).
+RunConfig loadRunConfig(const std::filesystem::path& file, const std::vector<Override>& overrides = {});
+
+/// The effective config as YAML: every key with its value, defaults included.
+std::string effectiveConfigYaml(const RunConfig& config);
+
+}  // namespace tofsim::config

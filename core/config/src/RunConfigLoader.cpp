@@ -1,0 +1,212 @@
+#include <cmath>
+#include <string>
+
+#include "ConfigNode.h"
+#include "tofsim/config/RunConfig.h"
+
+namespace tofsim::config {
+
+namespace {
+
+glm::vec3 vec3Of(const ConfigNode& node, const std::string& key, const glm::vec3& fallback) {
+  const std::vector<double> v = node.getDoubles(key, 3, {fallback.x, fallback.y, fallback.z});
+  return glm::vec3(static_cast<float>(v[0]), static_cast<float>(v[1]), static_cast<float>(v[2]));
+}
+
+long long intInRange(const ConfigNode& node, const std::string& key, long long fallback,
+                     long long lo, long long hi) {
+  const long long v = node.getInt(key, fallback);
+  if (v < lo || v > hi) {
+    node.failKey(key, "must be in [" + std::to_string(lo) + ", " + std::to_string(hi) + "] (got " +
+                          std::to_string(v) + ")");
+  }
+  return v;
+}
+
+void requirePositive(const ConfigNode& node, const std::string& key, double value) {
+  if (!(value > 0.0)) node.failKey(key, "must be > 0 (got " + std::to_string(value) + ")");
+}
+
+void parseCamera(const ConfigNode& node, CameraConfig& out) {
+  out.gltf_camera = node.getString("gltf_camera", "");
+  capture::Camera& c = out.camera;
+  c.position_world = vec3Of(node, "position", c.position_world);
+  c.look_at_world = vec3Of(node, "look_at", c.look_at_world);
+  c.up_world = vec3Of(node, "up", c.up_world);
+  c.fov_y_deg = static_cast<float>(node.getAngle_deg("fov_y", c.fov_y_deg));
+  if (!(c.fov_y_deg > 0.0f && c.fov_y_deg < 180.0f)) {
+    node.failKey("fov_y", "must be in (0, 180) degrees");
+  }
+  const std::vector<double> res = node.getDoubles("resolution", 2, {64.0, 64.0});
+  for (double r : res) {
+    if (r < 1 || r > 16384 || r != std::floor(r)) {
+      node.failKey("resolution", "must be two integers in [1, 16384] (width, height)");
+    }
+  }
+  c.width = static_cast<int32_t>(res[0]);
+  c.height = static_cast<int32_t>(res[1]);
+  if (out.gltf_camera.empty()) {
+    const glm::vec3 forward = c.look_at_world - c.position_world;
+    if (glm::length(forward) <= 0.0f) node.failKey("look_at", "must differ from position");
+    if (glm::length(glm::cross(forward, c.up_world)) <= 1e-6f * glm::length(forward)) {
+      node.failKey("up", "must not be parallel to the view direction");
+    }
+  }
+}
+
+void parseLight(const ConfigNode& node, LightConfig& out) {
+  capture::Light& l = out.light;
+  const std::string type = node.getString("type", "point");
+  if (type == "point") {
+    l.type = capture::Light::Type::Point;
+  } else if (type == "spot") {
+    l.type = capture::Light::Type::Spot;
+  } else {
+    node.failKey("type", "must be point or spot (got '" + type + "')");
+  }
+  out.attach_to_camera = node.getBool("attach_to_camera", false);
+  out.offset_camera_m = vec3Of(node, "offset", out.offset_camera_m);
+  l.position_world = vec3Of(node, "position", l.position_world);
+  l.direction_world = vec3Of(node, "direction", l.direction_world);
+  if (glm::length(l.direction_world) <= 0.0f) node.failKey("direction", "must not be zero");
+  l.direction_world = glm::normalize(l.direction_world);
+  l.cone_half_angle_deg = static_cast<float>(node.getAngle_deg("cone_angle", l.cone_half_angle_deg));
+  if (!(l.cone_half_angle_deg > 0.0f && l.cone_half_angle_deg <= 180.0f)) {
+    node.failKey("cone_angle", "half angle must be in (0, 180] degrees");
+  }
+  l.cone_falloff_deg = static_cast<float>(node.getAngle_deg("cone_falloff", l.cone_falloff_deg));
+  if (!(l.cone_falloff_deg >= 0.0f && l.cone_falloff_deg <= l.cone_half_angle_deg)) {
+    node.failKey("cone_falloff", "must be in [0, cone_angle]");
+  }
+  if (node.has("intensity") && node.child("intensity").isScalar()) {
+    const double i = node.getDouble("intensity", 1.0);
+    l.intensity_W_per_sr = glm::vec3(static_cast<float>(i));
+  } else {
+    l.intensity_W_per_sr = vec3Of(node, "intensity", l.intensity_W_per_sr);
+  }
+  for (int c = 0; c < 3; ++c) {
+    if (!(l.intensity_W_per_sr[c] >= 0.0f)) node.failKey("intensity", "must be >= 0 W/sr");
+  }
+}
+
+void parseTime(const ConfigNode& node, capture::RenderSettings& r) {
+  r.time.start_s = node.getDuration_s("start", 0.0);
+  r.time.bin_width_s = node.getDuration_s("bin_width", 10e-12);
+  requirePositive(node, "bin_width", r.time.bin_width_s);
+  r.time.bins = static_cast<int32_t>(intInRange(node, "bins", 512, 1, 1 << 20));
+  r.index_of_refraction = node.getDouble("index_of_refraction", 1.0);
+  if (!(r.index_of_refraction >= 1.0)) node.failKey("index_of_refraction", "must be >= 1");
+  r.camera_unwarp = node.getBool("camera_unwarp", false);
+}
+
+void parseIndirect(const ConfigNode& node, capture::IndirectSettings& s) {
+  s.enabled = node.getBool("enabled", s.enabled);
+  s.rsm_resolution = static_cast<int32_t>(intInRange(node, "rsm_resolution", s.rsm_resolution, 1, 4096));
+  s.ism_resolution = static_cast<int32_t>(intInRange(node, "ism_resolution", s.ism_resolution, 4, 4096));
+  s.points_per_vpl = static_cast<int32_t>(intInRange(node, "points_per_vpl", s.points_per_vpl, 1, 1 << 24));
+  s.ism_pull_push = node.getBool("ism_pull_push", s.ism_pull_push);
+  const std::string vis = node.getString("visibility", "ism");
+  if (vis == "ism") {
+    s.visibility = capture::Visibility::Ism;
+  } else if (vis == "exact") {
+    s.visibility = capture::Visibility::Exact;
+  } else {
+    node.failKey("visibility", "must be ism or exact (got '" + vis + "')");
+  }
+  s.geometry_term_clamp_per_m2 = node.getDouble("geometry_clamp", s.geometry_term_clamp_per_m2);
+}
+
+void parseRender(const ConfigNode& node, RunConfig& out) {
+  const std::string renderer = node.getString("renderer", "ir");
+  if (renderer == "ir") {
+    out.renderer = RendererKind::InstantRadiosity;
+  } else if (renderer == "reference") {
+    out.renderer = RendererKind::Reference;
+  } else {
+    node.failKey("renderer", "must be ir or reference (got '" + renderer + "')");
+  }
+  capture::RenderSettings& r = out.render;
+  r.seed = static_cast<uint64_t>(intInRange(node, "seed", 1, 0, (1LL << 62)));
+  r.shadow_map_resolution =
+      static_cast<int32_t>(intInRange(node, "shadow_map_resolution", r.shadow_map_resolution, 16, 16384));
+  const double budget = node.getBytes("memory_budget", static_cast<double>(r.memory_budget_bytes));
+  if (!(budget >= 1024.0 * 1024.0)) node.failKey("memory_budget", "must be at least 1 MiB");
+  r.memory_budget_bytes = static_cast<std::size_t>(budget);
+  if (const auto indirect = node.optionalChild("indirect")) parseIndirect(*indirect, r.indirect);
+}
+
+void parseOutput(const ConfigNode& node, OutputConfig& o) {
+  o.directory = node.getString("directory", o.directory.string());
+  o.transient = node.getBool("transient", o.transient);
+  o.steady = node.getBool("steady", o.steady);
+  o.depth = node.getBool("depth", o.depth);
+  o.frames = node.getBool("frames", o.frames);
+  if (const auto components = node.optionalChild("components")) {
+    for (const ConfigNode& c : components->elements()) {
+      const std::string name = c.asString();
+      if (name == "direct") {
+        o.direct = true;
+      } else if (name == "indirect") {
+        o.indirect = true;
+      } else {
+        c.fail("components are direct and indirect (got '" + name + "')");
+      }
+    }
+  }
+}
+
+// "sensors.0.bins" -> "sensors[0].bins", the form ConfigNode paths take.
+std::string nodePath(const std::string& keyPath) {
+  std::string out;
+  std::size_t begin = 0;
+  while (begin <= keyPath.size()) {
+    const std::size_t dot = keyPath.find('.', begin);
+    const std::string part = keyPath.substr(begin, dot == std::string::npos ? dot : dot - begin);
+    const bool index = !part.empty() && part.find_first_not_of("0123456789") == std::string::npos;
+    out += index ? "[" + part + "]" : (out.empty() ? "" : ".") + part;
+    if (dot == std::string::npos) break;
+    begin = dot + 1;
+  }
+  return out;
+}
+
+}  // namespace
+
+Override parseOverride(const std::string& text) {
+  const std::size_t eq = text.find('=');
+  if (eq == std::string::npos || eq == 0) {
+    throw InputError("--set expects key.path=value (got '" + text + "')");
+  }
+  return Override{text.substr(0, eq), text.substr(eq + 1)};
+}
+
+RunConfig loadRunConfig(const std::filesystem::path& file, const std::vector<Override>& overrides) {
+  YAML::Node yaml = loadYamlFile(file.string());
+  if (!yaml.IsMap()) throw InputError(FileLoc{file.string(), 1, 1}, "", "the config must be a mapping");
+  for (const Override& o : overrides) applyOverride(yaml, o.keyPath, o.value);
+  const ConfigNode root(yaml, file.string());
+  for (const Override& o : overrides) {
+    root.addOverrideSource(nodePath(o.keyPath), "--set " + o.keyPath + "=" + o.value);
+  }
+
+  RunConfig config;
+  config.config_file = file;
+  const std::string sceneText = root.requireString("scene");
+  config.scene_file = file.parent_path() / sceneText;
+  if (!std::filesystem::exists(config.scene_file)) {
+    root.failKey("scene", "scene file not found: " + config.scene_file.string());
+  }
+  parseCamera(root.child("camera"), config.camera);
+  parseLight(root.child("light"), config.light);
+  if (const auto time = root.optionalChild("time")) {
+    parseTime(*time, config.render);
+  } else {
+    root.failKey("time", "required key is missing (start, bin_width, bins)");
+  }
+  if (const auto render = root.optionalChild("render")) parseRender(*render, config);
+  if (const auto output = root.optionalChild("output")) parseOutput(*output, config.output);
+  root.reportUnusedKeys();
+  return config;
+}
+
+}  // namespace tofsim::config
