@@ -7,7 +7,7 @@
 #include <fstream>
 #include <limits>
 
-#include "TempDir.h"
+#include "support/TempDir.h"
 #include "tofsim/util/Error.h"
 
 namespace tofsim::io {

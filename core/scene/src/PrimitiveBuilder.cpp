@@ -106,8 +106,7 @@ bool buildPrimitive(const GltfDocument& doc, const PrimitiveRef& ref, const glm:
     if (flip) std::swap(b, c);
     const glm::dvec3 cross = glm::cross(p[b] - p[a], p[c] - p[a]);
     const double len = glm::length(cross);
-    const double scale = std::max(glm::dot(p[b] - p[a], p[b] - p[a]), glm::dot(p[c] - p[a], p[c] - p[a]));
-    if (!(len > 1e-12 * scale) || !std::isfinite(len)) {
+    if (!(len > 0.0) || !std::isfinite(len)) {  // exactly zero area (or overflow)
       ++report.degenerateTriangles;
       continue;
     }
