@@ -104,7 +104,8 @@ std::vector<double> readAccessor(const GltfDocument& doc, int index, const std::
 
   std::vector<double> out;
   if (a.bufferView >= 0) {
-    const std::size_t viewStride = doc.bufferViews.at(a.bufferView).byteStride;
+    const bool viewExists = a.bufferView < static_cast<int>(doc.bufferViews.size());
+    const std::size_t viewStride = viewExists ? doc.bufferViews[a.bufferView].byteStride : 0;
     const std::size_t stride = viewStride ? viewStride : elementBytes;
     const unsigned char* base = reader.span(a.bufferView, a.byteOffset, a.count, stride, elementBytes);
     out.resize(a.count * n);
