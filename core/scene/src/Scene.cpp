@@ -15,9 +15,9 @@ Bounds Scene::bounds() const {
            glm::vec3(std::numeric_limits<float>::lowest())};
   bool any = false;
   for (const Mesh& m : meshes) {
-    for (const glm::vec3& p : m.positions_world) {
-      b.min = glm::min(b.min, p);
-      b.max = glm::max(b.max, p);
+    for (const uint32_t i : m.indices) {
+      b.min = glm::min(b.min, m.positions_world[i]);
+      b.max = glm::max(b.max, m.positions_world[i]);
       any = true;
     }
   }

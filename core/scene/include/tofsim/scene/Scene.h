@@ -60,6 +60,7 @@ struct Scene {
   std::vector<SceneCamera> cameras;
 
   std::size_t triangleCount() const;
+  /// Axis-aligned box of all referenced vertices, metres; zero box when empty.
   Bounds bounds() const;
 };
 

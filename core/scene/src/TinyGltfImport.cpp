@@ -1,0 +1,163 @@
+#include "TinyGltfImport.h"
+
+#include <tiny_gltf.h>
+
+#include <algorithm>
+#include <cctype>
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/quaternion.hpp>
+#include <glm/gtc/type_ptr.hpp>
+#include <utility>
+
+#include "tofsim/util/Error.h"
+
+namespace tofsim::scene::detail {
+
+namespace {
+
+std::string trimmed(std::string s) {
+  while (!s.empty() && std::isspace(static_cast<unsigned char>(s.back()))) s.pop_back();
+  return s;
+}
+
+glm::dmat4 localMatrix(const tinygltf::Node& n) {
+  if (n.matrix.size() == 16) return glm::make_mat4(n.matrix.data());
+  glm::dmat4 m(1.0);
+  if (n.translation.size() == 3) {
+    m = glm::translate(m, glm::dvec3(n.translation[0], n.translation[1], n.translation[2]));
+  }
+  if (n.rotation.size() == 4) {
+    // glTF stores (x, y, z, w); glm's constructor takes (w, x, y, z).
+    m *= glm::mat4_cast(glm::dquat(n.rotation[3], n.rotation[0], n.rotation[1], n.rotation[2]));
+  }
+  if (n.scale.size() == 3) m = glm::scale(m, glm::dvec3(n.scale[0], n.scale[1], n.scale[2]));
+  return m;
+}
+
+Accessor convert(const tinygltf::Accessor& a) {
+  Accessor out;
+  out.bufferView = a.bufferView;
+  out.byteOffset = a.byteOffset;
+  out.componentType = a.componentType;
+  out.components = tinygltf::GetNumComponentsInType(static_cast<uint32_t>(a.type));
+  out.normalized = a.normalized;
+  out.count = a.count;
+  if (a.sparse.isSparse) {
+    out.sparse = Sparse{static_cast<std::size_t>(std::max(a.sparse.count, 0)),
+                        a.sparse.indices.bufferView,
+                        static_cast<std::size_t>(std::max(a.sparse.indices.byteOffset, 0)),
+                        a.sparse.indices.componentType,
+                        a.sparse.values.bufferView,
+                        static_cast<std::size_t>(std::max(a.sparse.values.byteOffset, 0))};
+  }
+  return out;
+}
+
+Primitive convert(const tinygltf::Primitive& p) {
+  Primitive out;
+  out.mode = p.mode < 0 ? kTriangles : p.mode;  // tinygltf uses -1 for "absent"
+  out.indices = p.indices;
+  out.material = p.material;
+  for (const auto& [name, accessor] : p.attributes) {
+    if (name == "POSITION") out.position = accessor;
+    if (name == "NORMAL") out.normal = accessor;
+    if (name.rfind("TEXCOORD_", 0) == 0) {
+      const std::size_t set = std::stoul(name.substr(9));
+      if (set < 16) {
+        if (out.texcoords.size() <= set) out.texcoords.resize(set + 1, -1);
+        out.texcoords[set] = accessor;
+      }
+    }
+  }
+  return out;
+}
+
+MaterialDesc convert(const tinygltf::Model& model, const tinygltf::Material& m) {
+  MaterialDesc out;
+  out.name = m.name;
+  const auto& pbr = m.pbrMetallicRoughness;
+  if (pbr.baseColorFactor.size() == 4) {
+    out.baseColorFactor = {pbr.baseColorFactor[0], pbr.baseColorFactor[1], pbr.baseColorFactor[2],
+                           pbr.baseColorFactor[3]};
+  }
+  const int tex = pbr.baseColorTexture.index;
+  if (tex >= 0 && tex < static_cast<int>(model.textures.size())) {
+    out.baseColorImage = model.textures[tex].source;
+    out.baseColorTexCoord = pbr.baseColorTexture.texCoord;
+  }
+  // The metallic texture is multiplied by the factor, so the factor decides.
+  out.metallic = pbr.metallicFactor > 0.0;
+  out.emissive = m.emissiveTexture.index >= 0 ||
+                 std::any_of(m.emissiveFactor.begin(), m.emissiveFactor.end(),
+                             [](double v) { return v != 0.0; });
+  out.transmissive = m.extensions.count("KHR_materials_transmission") > 0;
+  return out;
+}
+
+}  // namespace
+
+GltfDocument importGltf(const std::filesystem::path& path) {
+  const std::string file = path.string();
+  tinygltf::Model model;
+  tinygltf::TinyGLTF parser;
+  std::string err, warn;
+  std::string ext = path.extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+  const bool ok = ext == ".glb" ? parser.LoadBinaryFromFile(&model, &err, &warn, file)
+                                : parser.LoadASCIIFromFile(&model, &err, &warn, file);
+  if (!ok) throw InputError(FileLoc{file}, "", "cannot load glTF: " + trimmed(err));
+
+  GltfDocument doc;
+  doc.file = file;
+  if (!trimmed(warn).empty()) doc.warnings.push_back(trimmed(warn));
+  for (std::size_t i = 0; i < model.buffers.size(); ++i) {
+    tinygltf::Buffer& b = model.buffers[i];
+    doc.buffers.push_back(std::move(b.data));
+    const bool dataUri = b.uri.rfind("data:", 0) == 0;
+    doc.bufferNames.push_back(b.uri.empty() || dataUri ? "buffer[" + std::to_string(i) + "]"
+                                                       : "buffer[" + std::to_string(i) + "] '" + b.uri + "'");
+  }
+  for (const tinygltf::BufferView& v : model.bufferViews) {
+    doc.bufferViews.push_back({v.buffer, v.byteOffset, v.byteLength, v.byteStride});
+  }
+  for (const tinygltf::Accessor& a : model.accessors) doc.accessors.push_back(convert(a));
+  for (const tinygltf::Mesh& m : model.meshes) {
+    MeshDesc mesh{m.name, {}};
+    for (const tinygltf::Primitive& p : m.primitives) mesh.primitives.push_back(convert(p));
+    doc.meshes.push_back(std::move(mesh));
+  }
+  for (const tinygltf::Node& n : model.nodes) {
+    doc.nodes.push_back({n.name, n.mesh, n.camera, n.children, localMatrix(n)});
+  }
+  for (const tinygltf::Material& m : model.materials) doc.materials.push_back(convert(model, m));
+  for (tinygltf::Image& im : model.images) {
+    doc.images.push_back({im.name.empty() ? im.uri : im.name, im.width, im.height, im.component,
+                          im.bits, std::move(im.image)});
+  }
+  for (const tinygltf::Camera& c : model.cameras) {
+    const bool persp = c.type == "perspective";
+    doc.cameras.push_back({c.name, persp, persp ? c.perspective.yfov : 0.0,
+                           persp ? c.perspective.aspectRatio : 0.0});
+  }
+
+  if (!model.scenes.empty()) {
+    const int s = model.defaultScene >= 0 && model.defaultScene < int(model.scenes.size())
+                      ? model.defaultScene
+                      : 0;
+    doc.rootNodes = model.scenes[s].nodes;
+  } else {
+    // No scene: every node that is nobody's child is a root.
+    std::vector<bool> isChild(model.nodes.size(), false);
+    for (const tinygltf::Node& n : model.nodes) {
+      for (int c : n.children) {
+        if (c >= 0 && c < int(isChild.size())) isChild[c] = true;
+      }
+    }
+    for (std::size_t i = 0; i < isChild.size(); ++i) {
+      if (!isChild[i]) doc.rootNodes.push_back(static_cast<int>(i));
+    }
+  }
+  return doc;
+}
+
+}  // namespace tofsim::scene::detail

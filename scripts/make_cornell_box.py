@@ -1,0 +1,185 @@
+#!/usr/bin/env python3
+"""Writes configs/scenes/cornell_box.gltf: the Cornell box from the published
+measurements, as a self-contained glTF 2.0 file (buffer embedded as base64).
+
+Source: Cornell University Program of Computer Graphics, "Cornell Box Data"
+(https://www.graphics.cornell.edu/online/box/data.html). Vertices there are in
+millimetres; here they are converted to metres.
+
+Handedness: the published frame has +y up and the camera at z = -800 looking
+along +z, and the red wall (x ~ 556) appears on the LEFT of the image. That is
+what a right-handed frame gives (right = forward x up = -x), so the vertices
+are used unchanged; the glTF camera node is turned 180 deg about +y so that
+its -Z looks along world +z, which puts +x on the image's left: red left,
+green right, as in the published photographs. No mirroring, so no winding
+change is needed for that; winding is still set per face below so that the
+counter-clockwise side is the side the explicit normal points to.
+
+Faces: walls, floor and ceiling face into the room (the ceiling is closed: no
+light opening; tofsim uses point/spot lights). The blocks face outward; each
+block also gets a bottom face on the floor so it is a closed solid (invisible,
+but it keeps the blocks watertight). 5 x 2 + 2 x 6 x 2 = 34 triangles.
+
+Standard library only. Usage: python3 scripts/make_cornell_box.py [out.gltf]
+"""
+
+import base64
+import json
+import math
+import os
+import struct
+import sys
+
+MM = 0.001  # metres per millimetre
+
+# Diffuse reflectances (linear RGB), the commonly used values derived from the
+# published spectral measurements.
+MATERIALS = [
+    ("white", (0.725, 0.71, 0.68)),
+    ("red", (0.63, 0.065, 0.05)),
+    ("green", (0.14, 0.45, 0.091)),
+]
+
+ROOM = [  # name, material, quad (mm), normal direction: "in" the room
+    ("floor", "white", [(552.8, 0.0, 0.0), (0.0, 0.0, 0.0), (0.0, 0.0, 559.2), (549.6, 0.0, 559.2)]),
+    ("ceiling", "white", [(556.0, 548.8, 0.0), (556.0, 548.8, 559.2), (0.0, 548.8, 559.2), (0.0, 548.8, 0.0)]),
+    ("back_wall", "white", [(549.6, 0.0, 559.2), (0.0, 0.0, 559.2), (0.0, 548.8, 559.2), (556.0, 548.8, 559.2)]),
+    ("right_wall_green", "green", [(0.0, 0.0, 559.2), (0.0, 0.0, 0.0), (0.0, 548.8, 0.0), (0.0, 548.8, 559.2)]),
+    ("left_wall_red", "red", [(552.8, 0.0, 0.0), (549.6, 0.0, 559.2), (556.0, 548.8, 559.2), (556.0, 548.8, 0.0)]),
+]
+
+SHORT_TOP = [(130.0, 165.0, 65.0), (82.0, 165.0, 225.0), (240.0, 165.0, 272.0), (290.0, 165.0, 114.0)]
+TALL_TOP = [(423.0, 330.0, 247.0), (265.0, 330.0, 296.0), (314.0, 330.0, 456.0), (472.0, 330.0, 406.0)]
+
+# Camera: position (278, 273, -800) mm, looking along +z, up +y; 35 mm focal
+# length, 25 mm x 25 mm film: vertical fov = 2 atan(12.5 / 35) = 39.3 deg.
+CAMERA_POS_MM = (278.0, 273.0, -800.0)
+FOCAL_MM, FILM_MM = 35.0, 25.0
+
+
+def sub(a, b):
+    return tuple(x - y for x, y in zip(a, b))
+
+
+def cross(a, b):
+    return (a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0])
+
+
+def dot(a, b):
+    return sum(x * y for x, y in zip(a, b))
+
+
+def normalize(v):
+    n = math.sqrt(dot(v, v))
+    return tuple(x / n for x in v)
+
+
+def centroid(points):
+    return tuple(sum(p[i] for p in points) / len(points) for i in range(3))
+
+
+def block_faces(top):
+    """Top, four sides and bottom of a block whose top quad is given (mm)."""
+    bottom = [(x, 0.0, z) for (x, _, z) in top]
+    faces = [top, list(reversed(bottom))]
+    for i in range(4):
+        j = (i + 1) % 4
+        faces.append([bottom[i], top[i], top[j], bottom[j]])
+    return faces
+
+
+def triangles(quad, toward):
+    """Two triangles (mm) of a quad, each wound counter-clockwise seen from the
+    side `toward(centroid)` points to, with its own unit face normal (the
+    published quads are not all exactly planar)."""
+    out = []
+    for tri in ((quad[0], quad[1], quad[2]), (quad[0], quad[2], quad[3])):
+        n = cross(sub(tri[1], tri[0]), sub(tri[2], tri[0]))
+        if dot(n, toward(centroid(quad))) < 0:
+            tri = (tri[0], tri[2], tri[1])
+            n = tuple(-x for x in n)
+        out.append((tri, normalize(n)))
+    return out
+
+
+def build_groups():
+    room_center = (278.0, 274.4, 279.6)
+    groups = []  # (name, material, [(tri, normal)])
+    for name, material, quad in ROOM:
+        groups.append((name, material, triangles(quad, lambda c: sub(room_center, c))))
+    for name, top in (("short_block", SHORT_TOP), ("tall_block", TALL_TOP)):
+        center = centroid(top)
+        center = (center[0], center[1] / 2, center[2])
+        tris = []
+        for face in block_faces(top):
+            tris += triangles(face, lambda c, center=center: sub(c, center))
+        groups.append((name, "white", tris))
+    return groups
+
+
+def build_gltf():
+    groups = build_groups()
+    material_index = {name: i for i, (name, _) in enumerate(MATERIALS)}
+    blob = bytearray()
+    gltf = {
+        "asset": {"version": "2.0", "generator": "tofsim scripts/make_cornell_box.py",
+                  "copyright": "Geometry and camera: Cornell University Program of Computer Graphics, Cornell Box data"},
+        "scene": 0,
+        "scenes": [{"name": "cornell_box", "nodes": []}],
+        "nodes": [], "meshes": [], "accessors": [], "bufferViews": [],
+        "materials": [{"name": name, "pbrMetallicRoughness": {
+            "baseColorFactor": [r, g, b, 1.0], "metallicFactor": 0.0, "roughnessFactor": 1.0}}
+            for name, (r, g, b) in MATERIALS],
+    }
+
+    def add_vec3(values):
+        offset = len(blob)
+        for v in values:
+            blob.extend(struct.pack("<3f", *v))
+        gltf["bufferViews"].append({"buffer": 0, "byteOffset": offset, "byteLength": 12 * len(values),
+                                    "target": 34962})
+        accessor = {"bufferView": len(gltf["bufferViews"]) - 1, "componentType": 5126,
+                    "count": len(values), "type": "VEC3"}
+        gltf["accessors"].append(accessor)
+        return len(gltf["accessors"]) - 1, accessor
+
+    for name, material, tris in groups:
+        positions = [tuple(round(c * MM, 6) for c in p) for tri, _ in tris for p in tri]
+        normals = [tuple(round(c, 6) for c in n) for _, n in tris for _ in range(3)]
+        pos_index, pos_accessor = add_vec3(positions)
+        # min/max of the float32 values actually stored, as the spec requires.
+        stored = [struct.unpack("<3f", struct.pack("<3f", *p)) for p in positions]
+        pos_accessor["min"] = [min(p[i] for p in stored) for i in range(3)]
+        pos_accessor["max"] = [max(p[i] for p in stored) for i in range(3)]
+        nrm_index, _ = add_vec3(normals)
+        gltf["meshes"].append({"name": name, "primitives": [{
+            "attributes": {"POSITION": pos_index, "NORMAL": nrm_index},
+            "material": material_index[material], "mode": 4}]})
+        gltf["nodes"].append({"name": name, "mesh": len(gltf["meshes"]) - 1})
+
+    half_film = FILM_MM / 2
+    gltf["cameras"] = [{"name": "cornell_camera", "type": "perspective", "perspective": {
+        "yfov": 2 * math.atan(half_film / FOCAL_MM), "aspectRatio": 1.0, "znear": 0.01, "zfar": 100.0}}]
+    gltf["nodes"].append({"name": "cornell_camera", "camera": 0,
+                          "translation": [c * MM for c in CAMERA_POS_MM],
+                          # 180 deg about +y: the camera's -Z looks along world +z.
+                          "rotation": [0.0, 1.0, 0.0, 0.0]})
+    gltf["scenes"][0]["nodes"] = list(range(len(gltf["nodes"])))
+    gltf["buffers"] = [{"byteLength": len(blob), "uri": "data:application/octet-stream;base64," +
+                        base64.b64encode(bytes(blob)).decode("ascii")}]
+    return gltf
+
+
+def main():
+    here = os.path.dirname(os.path.abspath(__file__))
+    out = sys.argv[1] if len(sys.argv) > 1 else os.path.join(here, "..", "configs", "scenes", "cornell_box.gltf")
+    text = json.dumps(build_gltf(), indent=1) + "\n"
+    tmp = out + ".tmp"
+    with open(tmp, "w", encoding="ascii") as f:
+        f.write(text)
+    os.replace(tmp, out)
+    print("wrote", os.path.normpath(out))
+
+
+if __name__ == "__main__":
+    main()
