@@ -1,0 +1,26 @@
+#pragma once
+// Pictures for people to look at (PNG through OpenCV). Numbers live in .npy
+// and .exr; these are views of them and never the data of record.
+
+#include <filesystem>
+#include <string>
+
+#include "tofsim/volume/TransientVolume.h"
+
+namespace tofsim::imaging {
+
+enum class ToneMap {
+  Global,  ///< linear, scaled so the 99.5th percentile maps to white, then sRGB
+  Log,     ///< log10 over 4 decades below the 99.5th percentile
+};
+
+/// Tone-mapped 8-bit sRGB PNG of a linear RGB (or 1-channel) image.
+void writeToneMappedPng(const std::filesystem::path& path, const Image& image, ToneMap mode);
+
+/// A 1-channel image through a colormap (turbo), with a colour bar labelled
+/// with the value range and `label` (e.g. "depth [m]"). NaN and values where
+/// `mask` is zero are drawn black. lo == hi: range from the data.
+void writeColormappedPng(const std::filesystem::path& path, const Image& image,
+                         const std::string& label, double lo = 0.0, double hi = 0.0);
+
+}  // namespace tofsim::imaging

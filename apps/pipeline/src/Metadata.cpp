@@ -1,0 +1,72 @@
+#include "tofsim/pipeline/Metadata.h"
+
+#include <nlohmann/json.hpp>
+
+#include "tofsim/pipeline/Version.h"
+#include "tofsim/volume/PhysicalConstants.h"
+
+namespace tofsim::pipeline {
+
+namespace {
+nlohmann::json vec(const glm::vec3& v) { return {v.x, v.y, v.z}; }
+}  // namespace
+
+std::string transientMetadataJson(const config::RunConfig& config, const capture::RenderJob& job,
+                                  const capture::RenderResult& result) {
+  const TimeAxis& axis = job.settings.time;
+  const capture::Camera& cam = job.camera;
+  const capture::Light& light = job.light;
+  nlohmann::json j;
+  j["format"] = "tofsim transient volume";
+  j["tofsim_version"] = kVersion;
+  j["files"] = {{"transient", "transient.npy"}, {"steady", "steady.exr"}, {"depth", "depth.exr"}};
+  j["shape"] = {cam.height, cam.width, axis.bins, 3};
+  j["axes"] = {"y", "x", "t", "c"};
+  j["axes_doc"] =
+      "value[y][x][t][c]: row y (0 = top), column x (0 = left), time bin t, channel c; "
+      "float32, C order";
+  j["channels"] = {"R", "G", "B"};
+  j["value_unit"] = "W m^-2 sr^-1";
+  j["value_doc"] =
+      "radiance arriving within the bin for an impulse of the light at t = 0 (the scene's "
+      "impulse response); summing over t gives the steady-state radiance under a continuous "
+      "light of the same intensity";
+  j["time"] = {
+      {"start_s", axis.start_s},
+      {"bin_width_s", axis.bin_width_s},
+      {"bins", axis.bins},
+      {"start_m", axis.start_m()},
+      {"bin_width_m", axis.bin_width_m()},
+      {"bin_doc", "bin t covers [start + t * bin_width, start + (t + 1) * bin_width)"},
+      {"length_doc", "metres are optical path length: c * time, c = 299792458 m/s"},
+      {"index_of_refraction", job.settings.index_of_refraction},
+      {"camera_unwarp", job.settings.camera_unwarp},
+      {"time_origin",
+       job.settings.camera_unwarp
+           ? "emission at the light; the surface -> camera delay is removed (time at the surface)"
+           : "emission at the light; arrival at the camera"},
+  };
+  j["camera"] = {{"position_m", vec(cam.position_world)}, {"look_at_m", vec(cam.look_at_world)},
+                 {"up", vec(cam.up_world)},           {"fov_y_deg", cam.fov_y_deg},
+                 {"width", cam.width},                {"height", cam.height},
+                 {"model", "pinhole, one ray through each pixel centre"}};
+  j["light"] = {{"type", light.type == capture::Light::Type::Spot ? "spot" : "point"},
+                {"position_m", vec(light.position_world)},
+                {"direction", vec(light.direction_world)},
+                {"cone_half_angle_deg", light.cone_half_angle_deg},
+                {"cone_falloff_deg", light.cone_falloff_deg},
+                {"intensity_W_per_sr", vec(light.intensity_W_per_sr)},
+                {"attached_to_camera", config.light.attach_to_camera}};
+  j["renderer"] = config.renderer == config::RendererKind::Reference ? "reference" : "ir";
+  j["seed"] = job.settings.seed;
+  j["scene"] = config.scene_file.filename().string();
+  j["stats"] = {{"seconds", result.seconds},
+                {"segments", result.segments},
+                {"vpls", result.vpls},
+                {"vpl_batches", result.vplBatches},
+                {"peak_gpu_bytes", result.peakGpuBytes},
+                {"energy_outside_time_axis", result.energyOutsideAxis}};
+  return j.dump(2) + "\n";
+}
+
+}  // namespace tofsim::pipeline

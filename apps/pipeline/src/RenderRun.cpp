@@ -1,0 +1,121 @@
+#include "tofsim/pipeline/RenderRun.h"
+
+#include <cstdio>
+
+#include "tofsim/imaging/Pictures.h"
+#include "tofsim/io/Exr.h"
+#include "tofsim/pipeline/Capture.h"
+#include "tofsim/pipeline/Metadata.h"
+#include "tofsim/pipeline/OutputSink.h"
+#include "tofsim/pipeline/Progress.h"
+#include "tofsim/render/TransientRenderer.h"
+#include "tofsim/scene/GltfLoader.h"
+#include "tofsim/util/AtomicFile.h"
+
+namespace tofsim::pipeline {
+
+namespace {
+
+void reportLoad(const scene::LoadReport& report, const Progress& progress) {
+  for (const std::string& w : report.warnings) progress.message("scene: " + w);
+  if (report.skippedPrimitives > 0) {
+    progress.message("scene: skipped " + std::to_string(report.skippedPrimitives) +
+                     " point/line primitives");
+  }
+  if (report.emissiveMaterials + report.transmissiveMaterials > 0) {
+    progress.message("scene: emissive/transmissive materials render as diffuse base colour");
+  }
+}
+
+void writeFrames(const std::filesystem::path& directory, const TransientVolume& volume,
+                 std::vector<std::string>& files) {
+  std::filesystem::create_directories(directory / "frames");
+  for (int32_t t = 0; t < volume.bins(); ++t) {
+    Image frame(volume.width(), volume.height(), volume.channels());
+    for (int32_t y = 0; y < volume.height(); ++y) {
+      for (int32_t x = 0; x < volume.width(); ++x) {
+        for (int32_t c = 0; c < volume.channels(); ++c) frame.at(y, x, c) = volume.at(y, x, t, c);
+      }
+    }
+    char name[64];
+    std::snprintf(name, sizeof name, "frames/frame_%05d.exr", t);
+    io::writeExr(directory / name, frame, volume.channelNames());
+    files.push_back(name);
+  }
+}
+
+}  // namespace
+
+namespace {
+void writeOutputs(const config::RunConfig& config, const capture::RenderJob& job,
+                  const RunOptions& options, Progress& progress, RunSummary& summary);
+}
+
+RunSummary runRender(const config::RunConfig& config, const RunOptions& options) {
+  Progress progress("render", options.quiet);
+  scene::LoadReport report;
+  const scene::Scene scene = scene::loadGltf(config.scene_file, &report);
+  reportLoad(report, progress);
+  const capture::RenderJob job = makeRenderJob(config, scene);
+
+  RunSummary summary;
+  summary.outputDirectory =
+      options.outputDirectory.empty() ? config.output.directory : options.outputDirectory;
+  const std::filesystem::path& dir = summary.outputDirectory;
+  const bool createdDirectory = !std::filesystem::exists(dir);
+  std::filesystem::create_directories(dir);
+  try {
+    writeOutputs(config, job, options, progress, summary);
+  } catch (...) {
+    // Files are renamed into place only when complete, so a failed run leaves
+    // at most what earlier runs wrote; a folder this run made is removed.
+    std::error_code ec;
+    if (createdDirectory && std::filesystem::is_empty(dir, ec)) std::filesystem::remove(dir, ec);
+    throw;
+  }
+  return summary;
+}
+
+namespace {
+void writeOutputs(const config::RunConfig& config, const capture::RenderJob& job,
+                  const RunOptions& options, Progress& progress, RunSummary& summary) {
+  const std::filesystem::path& dir = summary.outputDirectory;
+
+  gl::Context context(options.eglPlatform);
+  summary.device = context.description();
+  progress.message("GL: " + summary.device);
+  const config::OutputConfig& out = config.output;
+  OutputSink sink(dir, out, job.camera.width, job.camera.height, job.settings.time, out.frames);
+  render::TransientRenderer renderer(context);
+  summary.result = renderer.render(job, sink, [&](std::size_t done, std::size_t total,
+                                                  const std::string& what) {
+    progress.update(done, total, what);
+  });
+  sink.commit();
+  if (out.transient) summary.files.push_back("transient.npy");
+  if (out.direct) summary.files.push_back("direct.npy");
+  if (out.indirect) summary.files.push_back("indirect.npy");
+  if (out.steady) {
+    const Image steady = sink.steady();
+    io::writeExr(dir / "steady.exr", steady, {"R", "G", "B"});
+    imaging::writeToneMappedPng(dir / "steady.png", steady, imaging::ToneMap::Global);
+    summary.files.push_back("steady.exr");
+    summary.files.push_back("steady.png");
+  }
+  if (out.depth) {
+    io::writeExr(dir / "depth.exr", summary.result.depth_m, {"Z"});
+    imaging::writeColormappedPng(dir / "depth.png", summary.result.depth_m, "depth [m]");
+    summary.files.push_back("depth.exr");
+    summary.files.push_back("depth.png");
+  }
+  if (out.frames) writeFrames(dir, *sink.volume(), summary.files);
+  if (out.transient) {
+    writeFileAtomically(dir / "transient.json", transientMetadataJson(config, job, summary.result));
+    summary.files.push_back("transient.json");
+  }
+  writeFileAtomically(dir / "config.effective.yaml", config::effectiveConfigYaml(config));
+  summary.files.push_back("config.effective.yaml");
+}
+}  // namespace
+
+}  // namespace tofsim::pipeline
