@@ -1,0 +1,25 @@
+#!/usr/bin/env bash
+# Installs the Debian packages tofsim builds and runs with (as root, or with
+# sudo). Skips apt-get entirely when everything is already there.
+set -euo pipefail
+
+packages=(
+  build-essential cmake ninja-build pkg-config
+  libegl-dev libgl-dev libegl-mesa0 libgl1-mesa-dri  # headless GL: EGL + Mesa llvmpipe
+  libglm-dev libtinygltf-dev nlohmann-json3-dev libyaml-cpp-dev libcli11-dev
+  libopenexr-dev libopencv-dev libgtest-dev
+)
+
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -eq 0 ]; then
+  exit 0
+fi
+echo "install-deps: installing ${missing[*]}" >&2
+SUDO=""
+if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
+export DEBIAN_FRONTEND=noninteractive
+$SUDO apt-get update -qq
+$SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null

@@ -1,0 +1,8 @@
+#!/usr/bin/env bash
+# Sets everything up and runs the main job: renders the default config
+# (configs/cornell_box.yaml) and its sensors into out/.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+bash scripts/install-deps.sh
+bash scripts/build.sh
+./build/apps/cli/tofsim render configs/cornell_box.yaml -o out

@@ -1,0 +1,140 @@
+// Config loading: typed values with units, defaults, overrides, and errors
+// that name the file, line, column and key.
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+
+#include "support/TempDir.h"
+#include "tofsim/config/RunConfig.h"
+#include "tofsim/config/Units.h"
+#include "tofsim/util/Error.h"
+#include "tofsim/volume/PhysicalConstants.h"
+
+namespace tofsim::config {
+namespace {
+
+class RunConfigTest : public test::TempDirTest {
+ protected:
+  std::filesystem::path write(const std::string& yaml) {
+    std::ofstream(dir_ / "scene.gltf") << "{}";
+    const auto path = dir_ / "test.yaml";
+    std::ofstream(path) << yaml;
+    return path;
+  }
+  // The message of the InputError loading `yaml` throws.
+  std::string errorOf(const std::string& yaml, const std::vector<Override>& overrides = {}) {
+    try {
+      loadRunConfig(write(yaml), overrides);
+    } catch (const InputError& e) {
+      return e.what();
+    }
+    ADD_FAILURE() << "no error for:\n" << yaml;
+    return "";
+  }
+};
+
+const char* kValid = R"(scene: scene.gltf
+camera:
+  position: [0, 0, 2]
+  look_at: [0, 0, 0]
+  fov_y: 45 deg
+  resolution: [32, 24]
+light:
+  type: spot
+  position: [0, 1, 2]
+  direction: [0, 0, -1]
+  cone_angle: 0.5 rad
+  intensity: [1, 2, 3]
+time:
+  start: 1 ns
+  bin_width: "0.3 mm"
+  bins: 100
+)";
+
+TEST_F(RunConfigTest, ValidConfigFillsTypedStructsWithUnitsConverted) {
+  const RunConfig c = loadRunConfig(write(kValid));
+  EXPECT_EQ(c.camera.camera.width, 32);
+  EXPECT_EQ(c.camera.camera.height, 24);
+  EXPECT_FLOAT_EQ(c.camera.camera.fov_y_deg, 45.0f);
+  EXPECT_EQ(c.light.light.type, capture::Light::Type::Spot);
+  EXPECT_NEAR(c.light.light.cone_half_angle_deg, 0.5 * 180.0 / M_PI, 1e-4);
+  EXPECT_FLOAT_EQ(c.light.light.intensity_W_per_sr.z, 3.0f);
+  EXPECT_DOUBLE_EQ(c.render.time.start_s, 1e-9);
+  EXPECT_NEAR(c.render.time.bin_width_s, 0.3e-3 / kSpeedOfLight_m_per_s, 1e-24);
+  EXPECT_EQ(c.render.time.bins, 100);
+  EXPECT_EQ(c.output.directory, "out");  // default
+  EXPECT_EQ(c.scene_file, dir_ / "scene.gltf");
+}
+
+TEST_F(RunConfigTest, UnitsParse) {
+  EXPECT_DOUBLE_EQ(parseDuration_s("10 ps"), 10e-12);
+  EXPECT_DOUBLE_EQ(parseDuration_s("3ns"), 3e-9);
+  EXPECT_DOUBLE_EQ(parseDuration_s("0.5 m"), 0.5 / kSpeedOfLight_m_per_s);
+  EXPECT_DOUBLE_EQ(parseLength_m("5 cm"), 0.05);
+  EXPECT_DOUBLE_EQ(parseBytes("2 MiB"), 2.0 * 1024 * 1024);
+  EXPECT_DOUBLE_EQ(parseFrequency_Hz("20 MHz"), 20e6);
+  EXPECT_THROW(parseDuration_s("10 parsecs"), std::invalid_argument);
+  EXPECT_THROW(parseDuration_s("fast"), std::invalid_argument);
+}
+
+TEST_F(RunConfigTest, UnknownKeyNamesFileLineColumnAndKey) {
+  const std::string e = errorOf(std::string(kValid) + "  bin_widht: 3 ps\n");
+  EXPECT_NE(e.find("test.yaml:17:3"), std::string::npos) << e;
+  EXPECT_NE(e.find("time.bin_widht"), std::string::npos) << e;
+  EXPECT_NE(e.find("unknown key"), std::string::npos) << e;
+}
+
+TEST_F(RunConfigTest, WrongTypeNamesLineAndKey) {
+  std::string yaml = kValid;
+  yaml.replace(yaml.find("bins: 100"), 9, "bins: lots");
+  const std::string e = errorOf(yaml);
+  EXPECT_NE(e.find("test.yaml:16:9"), std::string::npos) << e;
+  EXPECT_NE(e.find("time.bins"), std::string::npos) << e;
+  EXPECT_NE(e.find("integer"), std::string::npos) << e;
+}
+
+TEST_F(RunConfigTest, NegativeBinWidthIsRejected) {
+  std::string yaml = kValid;
+  yaml.replace(yaml.find("\"0.3 mm\""), 8, "-3 ps");
+  const std::string e = errorOf(yaml);
+  EXPECT_NE(e.find("test.yaml:15:14"), std::string::npos) << e;
+  EXPECT_NE(e.find("time.bin_width: must be > 0"), std::string::npos) << e;
+}
+
+TEST_F(RunConfigTest, MissingSceneFileIsRejectedWithItsPath) {
+  std::string yaml = kValid;
+  yaml.replace(0, std::string("scene: scene.gltf").size(), "scene: nowhere.gltf");
+  const std::string e = errorOf(yaml);
+  EXPECT_NE(e.find("test.yaml:1:8"), std::string::npos) << e;
+  EXPECT_NE(e.find("nowhere.gltf"), std::string::npos) << e;
+}
+
+TEST_F(RunConfigTest, YamlSyntaxErrorHasALocation) {
+  const std::string e = errorOf("scene: [unclosed\n");
+  EXPECT_NE(e.find("test.yaml:"), std::string::npos) << e;
+}
+
+TEST_F(RunConfigTest, OverridesApplyAndTheirErrorsNameTheOverride) {
+  const RunConfig c = loadRunConfig(write(kValid), {parseOverride("time.bins=7"),
+                                                    parseOverride("camera.resolution=[8, 4]")});
+  EXPECT_EQ(c.render.time.bins, 7);
+  EXPECT_EQ(c.camera.camera.width, 8);
+  const std::string e = errorOf(kValid, {parseOverride("time.bins=-1")});
+  EXPECT_NE(e.find("--set time.bins=-1"), std::string::npos) << e;
+  const std::string unknown = errorOf(kValid, {parseOverride("time.binz=1")});
+  EXPECT_NE(unknown.find("time.binz: unknown key"), std::string::npos) << unknown;
+  EXPECT_THROW(parseOverride("no-equals-sign"), InputError);
+}
+
+TEST_F(RunConfigTest, EffectiveConfigRoundTrips) {
+  const RunConfig c = loadRunConfig(write(kValid));
+  const auto path = dir_ / "effective.yaml";
+  std::ofstream(path) << effectiveConfigYaml(c);
+  const RunConfig again = loadRunConfig(path);
+  EXPECT_EQ(effectiveConfigYaml(again), effectiveConfigYaml(c));
+  EXPECT_DOUBLE_EQ(again.render.time.bin_width_s, c.render.time.bin_width_s);
+}
+
+}  // namespace
+}  // namespace tofsim::config

@@ -1,0 +1,122 @@
+// End-to-end: `tofsim render` on the shipped Cornell box at a small size
+// writes files that load back and agree with each other; bad configs fail
+// with a located one-line error and leave no output directory.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+
+#include "support/TempDir.h"
+#include "tofsim/io/Exr.h"
+#include "tofsim/io/Npy.h"
+
+namespace tofsim {
+namespace {
+
+struct CommandResult {
+  int exitCode;
+  std::string output;
+};
+
+CommandResult run(const std::string& args) {
+  const std::string command = std::string(TOFSIM_CLI) + " " + args + " 2>&1";
+  FILE* pipe = ::popen(command.c_str(), "r");
+  std::string output;
+  char buffer[512];
+  while (std::fgets(buffer, sizeof buffer, pipe)) output += buffer;
+  const int status = ::pclose(pipe);
+  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, output};
+}
+
+const std::string kConfig = std::string(TOFSIM_SOURCE_DIR) + "/configs/cornell_box.yaml";
+const std::string kSmall =
+    " --set camera.resolution=[24,24] --set time.bins=200 --set render.shadow_map_resolution=256"
+    " --set render.indirect.rsm_resolution=8 --set render.indirect.points_per_vpl=200 -q";
+
+class RenderRunGLTest : public test::TempDirTest {};
+
+TEST_F(RenderRunGLTest, TransientSumsToSteadyAndFilesLoad) {
+  const CommandResult r = run("render " + kConfig + " -o " + (dir_ / "out").string() + kSmall);
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  const io::NpyArray transient = io::readNpy(dir_ / "out" / "transient.npy");
+  ASSERT_EQ(transient.shape, (io::NpyShape{24, 24, 200, 3}));
+  std::vector<std::string> channels;
+  const Image steady = io::readExr(dir_ / "out" / "steady.exr", &channels);
+  EXPECT_EQ(channels, (std::vector<std::string>{"R", "G", "B"}));
+  double total = 0.0;
+  for (std::size_t p = 0; p < 24 * 24; ++p) {
+    for (int c = 0; c < 3; ++c) {
+      double sum = 0.0;
+      for (int t = 0; t < 200; ++t) sum += transient.data[(p * 200 + t) * 3 + c];
+      EXPECT_NEAR(sum, steady.data[p * 3 + c], 1e-6 * std::abs(sum) + 1e-12);
+      total += sum;
+    }
+  }
+  EXPECT_GT(total, 0.0);
+  const Image depth = io::readExr(dir_ / "out" / "depth.exr");
+  EXPECT_EQ(depth.channels, 1);
+  // Surfaces lie between the box's open front (0.8 m) and its back corners;
+  // only the outermost pixels look past the walls' front edges (depth 0).
+  std::size_t seen = 0;
+  for (float d : depth.data) {
+    if (d == 0.0f) continue;
+    ++seen;
+    EXPECT_GT(d, 0.79f);
+    EXPECT_LT(d, 1.6f);
+  }
+  EXPECT_GT(seen, depth.data.size() * 8 / 10);
+  for (const char* f : {"transient.json", "config.effective.yaml", "steady.png", "depth.png"}) {
+    EXPECT_TRUE(std::filesystem::exists(dir_ / "out" / f)) << f;
+  }
+  std::ifstream json(dir_ / "out" / "transient.json");
+  std::stringstream text;
+  text << json.rdbuf();
+  EXPECT_NE(text.str().find("\"bin_width_s\""), std::string::npos);
+  EXPECT_NE(text.str().find("\"bin_width_m\""), std::string::npos);
+}
+
+TEST_F(RenderRunGLTest, SameConfigAndSeedGiveTheSameBytes) {
+  ASSERT_EQ(run("render " + kConfig + " -o " + (dir_ / "a").string() + kSmall).exitCode, 0);
+  ASSERT_EQ(run("render " + kConfig + " -o " + (dir_ / "b").string() + kSmall).exitCode, 0);
+  for (const char* f : {"transient.npy", "direct.npy", "indirect.npy"}) {
+    std::ifstream a(dir_ / "a" / f, std::ios::binary), b(dir_ / "b" / f, std::ios::binary);
+    std::stringstream sa, sb;
+    sa << a.rdbuf();
+    sb << b.rdbuf();
+    EXPECT_TRUE(sa.str() == sb.str()) << f;
+    EXPECT_GT(sa.str().size(), 1000u) << f;
+  }
+}
+
+TEST_F(RenderRunGLTest, BadConfigFailsWithLocatedErrorAndNoOutput) {
+  const CommandResult r =
+      run("render " + kConfig + " -o " + (dir_ / "bad").string() + " --set time.bin_width=-1ps");
+  EXPECT_EQ(r.exitCode, 1);
+  EXPECT_NE(r.output.find("time.bin_width"), std::string::npos) << r.output;
+  EXPECT_FALSE(std::filesystem::exists(dir_ / "bad"));
+}
+
+TEST_F(RenderRunGLTest, ValidateChecksWithoutRendering) {
+  const CommandResult ok = run("validate " + kConfig);
+  EXPECT_EQ(ok.exitCode, 0) << ok.output;
+  std::ofstream(dir_ / "typo.yaml") << "scene: " << TOFSIM_SOURCE_DIR
+                                    << "/configs/scenes/cornell_box.gltf\ncamera: {}\nlight: {}\n"
+                                       "time: {bins: 10}\nrendr: {}\n";
+  const CommandResult bad = run("validate " + (dir_ / "typo.yaml").string());
+  EXPECT_EQ(bad.exitCode, 1);
+  EXPECT_NE(bad.output.find("typo.yaml:5:1: rendr: unknown key"), std::string::npos) << bad.output;
+}
+
+TEST_F(RenderRunGLTest, VersionAndHelp) {
+  EXPECT_EQ(run("--version").exitCode, 0);
+  const CommandResult help = run("--help");
+  EXPECT_EQ(help.exitCode, 0);
+  EXPECT_NE(help.output.find("render"), std::string::npos);
+  EXPECT_NE(run("render").exitCode, 0);
+}
+
+}  // namespace
+}  // namespace tofsim
