@@ -77,8 +77,8 @@ SensorOutput makeOutput(const std::string& name, SensorOutput::Kind kind,
 void addImage(std::vector<SensorOutput>& outs, const std::string& name, int32_t H, int32_t W,
               std::vector<float> data, const std::string& unit, const std::string& description,
               const std::string& colormap) {
-  outs.push_back(makeOutput(name, SensorOutput::Kind::Image, {H, W}, std::move(data), unit,
-                            description));
+  outs.push_back(
+      makeOutput(name, SensorOutput::Kind::Image, {H, W}, std::move(data), unit, description));
   SensorOutput png = outs.back();
   png.kind = SensorOutput::Kind::ColorMappedImage;
   png.colormap = colormap;

@@ -122,8 +122,8 @@ std::vector<SensorOutput> runSpad(const TransientVolume& volume, const SpadParam
                           "SPAD depth from the histogram peak (c t / 2)"));
   outputs.push_back(image("spad_depth_coates", H, W, std::move(depthCoates), "m",
                           "SPAD depth from the peak of the Coates-corrected histogram"));
-  outputs.push_back(image("spad_intensity", H, W, std::move(intensity), "counts",
-                          "SPAD total counts per pixel"));
+  outputs.push_back(
+      image("spad_intensity", H, W, std::move(intensity), "counts", "SPAD total counts per pixel"));
   for (std::size_t i = 1; i < 4; ++i) {
     SensorOutput png = outputs[i];
     png.kind = SensorOutput::Kind::ColorMappedImage;

@@ -1,11 +1,10 @@
-#include "tofsim/config/SensorConfig.h"
-
 #include <gtest/gtest.h>
 #include <yaml-cpp/yaml.h>
 
 #include <string>
 
 #include "ConfigNode.h"
+#include "tofsim/config/SensorConfig.h"
 
 namespace tofsim::config {
 namespace {
@@ -91,8 +90,8 @@ TEST(SensorConfigTest, BadValuesGiveLocatedErrors) {
        "sensors[0].time_fwhm", "must be >= 0"},
       {"sensors:\n  - type: spad\n    bins: 0\n", "test.yaml:3:11", "sensors[0].bins",
        "must be an integer in [1"},
-      {"sensors:\n  - type: spad\n    bin_width: 0 ps\n", "test.yaml:3:16",
-       "sensors[0].bin_width", "must be > 0"},
+      {"sensors:\n  - type: spad\n    bin_width: 0 ps\n", "test.yaml:3:16", "sensors[0].bin_width",
+       "must be > 0"},
       {"sensors:\n  - type: spad\n    pulse_fwhm: -1 ns\n", "test.yaml:3:17",
        "sensors[0].pulse_fwhm", "must be >= 0"},
       {"sensors:\n  - type: cwtof\n    frequencies: [20 MHz, 0 MHz]\n", "test.yaml:3:27",

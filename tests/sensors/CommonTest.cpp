@@ -1,11 +1,10 @@
-#include "tofsim/sensors/Common.h"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <numeric>
 
 #include "TestVolumes.h"
+#include "tofsim/sensors/Common.h"
 #include "tofsim/sensors/TimeKernel.h"
 #include "tofsim/util/Error.h"
 

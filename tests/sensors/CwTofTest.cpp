@@ -1,11 +1,10 @@
-#include "tofsim/sensors/CwTof.h"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <complex>
 
 #include "TestVolumes.h"
+#include "tofsim/sensors/CwTof.h"
 #include "tofsim/volume/PhysicalConstants.h"
 
 namespace tofsim::sensors {
@@ -101,7 +100,8 @@ TEST(CwTofTest, BinCorrelationIsTheExactBinAverage) {
       const double t = t0 + (i + 0.5) * (t1 - t0) / n;
       const double th = 2 * M_PI * f * t - phi;
       const double u = th - 2 * M_PI * std::floor(th / (2 * M_PI));
-      sum += wf == Waveform::Sine ? std::cos(th) : (u <= M_PI ? 1 - 2 * u / M_PI : -3 + 2 * u / M_PI);
+      sum +=
+          wf == Waveform::Sine ? std::cos(th) : (u <= M_PI ? 1 - 2 * u / M_PI : -3 + 2 * u / M_PI);
     }
     EXPECT_NEAR(binCorrelation(wf, f, phi, t0, t1), sum / n, 1e-8);
   }
@@ -147,7 +147,8 @@ TEST(CwTofTest, RawNoiseIsShotPlusReadAndReproducible) {
   // Phase step 0 at 20 MHz: all bins within 40 ps of t = 0, correlation ~ 1.
   const int n = 64 * 64;
   double s = 0, s2 = 0, expect = 0;
-  for (int t = 0; t < 4; ++t) expect += 0.5 * 100 * (1 + binCorrelation(Waveform::Sine, 20e6, 0, t * 1e-11, (t + 1) * 1e-11));
+  for (int t = 0; t < 4; ++t)
+    expect += 0.5 * 100 * (1 + binCorrelation(Waveform::Sine, 20e6, 0, t * 1e-11, (t + 1) * 1e-11));
   expect += 0.5 * 100.0;
   for (int i = 0; i < n; ++i) {
     s += raw[i];

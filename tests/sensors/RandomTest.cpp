@@ -1,9 +1,9 @@
-#include "tofsim/sensors/Random.h"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <vector>
+
+#include "tofsim/sensors/Random.h"
 
 namespace tofsim::sensors {
 namespace {

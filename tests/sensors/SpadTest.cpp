@@ -1,5 +1,3 @@
-#include "tofsim/sensors/Spad.h"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -7,6 +5,7 @@
 
 #include "TestVolumes.h"
 #include "tofsim/sensors/Random.h"
+#include "tofsim/sensors/Spad.h"
 #include "tofsim/sensors/TimeKernel.h"
 #include "tofsim/volume/PhysicalConstants.h"
 

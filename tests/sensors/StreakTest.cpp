@@ -1,11 +1,10 @@
-#include "tofsim/sensors/Streak.h"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <numeric>
 
 #include "TestVolumes.h"
+#include "tofsim/sensors/Streak.h"
 #include "tofsim/util/Error.h"
 
 namespace tofsim::sensors {

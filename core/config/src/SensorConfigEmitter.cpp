@@ -23,8 +23,8 @@ std::string exact(double v) {
 /// "100 ps": the largest unit giving a magnitude >= 1, full precision.
 std::string duration(double s) {
   if (s == 0.0) return "0 s";
-  const std::pair<double, const char*> units[] = {
-      {1.0, "s"}, {1e-3, "ms"}, {1e-6, "us"}, {1e-9, "ns"}, {1e-12, "ps"}, {1e-15, "fs"}};
+  const std::pair<double, const char*> units[] = {{1.0, "s"},   {1e-3, "ms"},  {1e-6, "us"},
+                                                  {1e-9, "ns"}, {1e-12, "ps"}, {1e-15, "fs"}};
   for (const auto& [scale, name] : units) {
     if (std::abs(s) >= scale) return exact(s / scale) + " " + name;
   }

@@ -1,11 +1,10 @@
-#include "tofsim/config/SensorConfig.h"
-
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>
 #include <string>
 
 #include "ConfigNode.h"
+#include "tofsim/config/SensorConfig.h"
 #include "tofsim/config/Units.h"
 
 namespace tofsim::config {

@@ -24,8 +24,8 @@ struct ChannelSelection {
 /// With wavelength_m = 0 the volume is taken to count photons already (the
 /// default: every factor 1, one photo-electron per unit).
 struct Radiometry {
-  double source_scale = 1.0;         ///< laser energy per pulse / exposure relative to the render's light
-  double etendue_m2sr = 1.0;         ///< pixel area x aperture solid angle, m^2 sr
+  double source_scale = 1.0;  ///< laser energy per pulse / exposure relative to the render's light
+  double etendue_m2sr = 1.0;  ///< pixel area x aperture solid angle, m^2 sr
   double optics_transmission = 1.0;  ///< lens and filter transmission, [0, 1]
   double quantum_efficiency = 1.0;   ///< photo-electrons per photon, [0, 1]
   double wavelength_m = 0.0;         ///< 0: values already count photons

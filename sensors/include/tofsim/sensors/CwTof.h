@@ -43,16 +43,16 @@ void phaseFromSteps(const double* raw, int32_t steps, double& phase_rad, double&
 /// Depth from wrapped phases at several frequencies: picks the wrap counts that
 /// agree best within [0, maxDepth_m), then averages the per-frequency depths
 /// weighted by f^2. depth = c * phase / (4 pi f) (co-located light and camera).
-double unwrapDepth_m(const std::vector<double>& phases_rad, const std::vector<double>& frequencies_Hz,
-                     double maxDepth_m);
+double unwrapDepth_m(const std::vector<double>& phases_rad,
+                     const std::vector<double>& frequencies_Hz, double maxDepth_m);
 
 /// The range unwrapDepth_m searches for these parameters, m.
 double unwrapRange_m(const CwTofParams& params);
 
 /// Optional inputs for the multipath error outputs.
 struct CwTofReferences {
-  const Image* groundTruthDepth_m = nullptr;      ///< (H, W, 1), metres; <= 0 or NaN = unknown
-  const TransientVolume* directOnly = nullptr;   ///< the direct component of the same render
+  const Image* groundTruthDepth_m = nullptr;    ///< (H, W, 1), metres; <= 0 or NaN = unknown
+  const TransientVolume* directOnly = nullptr;  ///< the direct component of the same render
 };
 
 /// Outputs: "cwtof_raw" Array (F, N, H, W) photo-electrons; "cwtof_depth" and

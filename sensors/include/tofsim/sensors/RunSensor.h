@@ -11,9 +11,9 @@
 namespace tofsim::sensors {
 
 struct SensorInputs {
-  const TransientVolume* volume = nullptr;        ///< required
-  const Image* groundTruthDepth_m = nullptr;      ///< optional (H, W, 1), metres (CW-ToF MPI error)
-  const TransientVolume* directOnly = nullptr;    ///< optional direct component (CW-ToF MPI error)
+  const TransientVolume* volume = nullptr;      ///< required
+  const Image* groundTruthDepth_m = nullptr;    ///< optional (H, W, 1), metres (CW-ToF MPI error)
+  const TransientVolume* directOnly = nullptr;  ///< optional direct component (CW-ToF MPI error)
   uint64_t seed = 0;
 };
 

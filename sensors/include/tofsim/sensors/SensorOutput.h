@@ -17,12 +17,12 @@ struct SensorOutput {
     HistogramPlot,     ///< (series, bins) curves: `<name>.png` line plot, x from axis_*
   };
 
-  std::string name;             ///< file stem, e.g. "spad_counts", "streak_row042"
+  std::string name;  ///< file stem, e.g. "spad_counts", "streak_row042"
   Kind kind = Kind::Array;
-  std::vector<int64_t> shape;   ///< C order
-  std::vector<float> data;      ///< product(shape) values
-  std::string unit;             ///< unit of the values, e.g. "m", "counts", "photo-electrons"
-  std::string description;      ///< one line, usable as a plot title or colour bar label
+  std::vector<int64_t> shape;  ///< C order
+  std::vector<float> data;     ///< product(shape) values
+  std::string unit;            ///< unit of the values, e.g. "m", "counts", "photo-electrons"
+  std::string description;     ///< one line, usable as a plot title or colour bar label
 
   // ColorMappedImage and HistogramPlot only.
   std::string colormap;             ///< "viridis", "inferno", "turbo", ...

@@ -19,18 +19,18 @@ namespace tofsim::sensors {
 enum class SpadMode { Synchronous, FreeRunning };
 
 struct SpadParams {
-  SensorCommon common;              ///< radiometry gives photons at the detector per laser pulse
-  InstrumentBins bins;              ///< TDC bin width, offset and count
+  SensorCommon common;  ///< radiometry gives photons at the detector per laser pulse
+  InstrumentBins bins;  ///< TDC bin width, offset and count
   SpadMode mode = SpadMode::Synchronous;
-  int64_t cycles = 10000;           ///< laser pulses N, >= 1
-  double pulse_fwhm_s = 0.0;        ///< Gaussian laser pulse FWHM, s, centred on t = 0
-  double jitter_fwhm_s = 0.0;       ///< Gaussian timing jitter FWHM, s
-  double jitter_tail_fraction = 0.0;  ///< fraction of detections with an extra exponential delay
-  double jitter_tail_s = 0.0;       ///< time constant of that delay, s
-  double pde = 0.3;                 ///< photon detection efficiency, [0, 1]
-  double ambient_rate_per_s = 0.0;  ///< ambient photons arriving at the pixel, 1/s (PDE applies)
+  int64_t cycles = 10000;              ///< laser pulses N, >= 1
+  double pulse_fwhm_s = 0.0;           ///< Gaussian laser pulse FWHM, s, centred on t = 0
+  double jitter_fwhm_s = 0.0;          ///< Gaussian timing jitter FWHM, s
+  double jitter_tail_fraction = 0.0;   ///< fraction of detections with an extra exponential delay
+  double jitter_tail_s = 0.0;          ///< time constant of that delay, s
+  double pde = 0.3;                    ///< photon detection efficiency, [0, 1]
+  double ambient_rate_per_s = 0.0;     ///< ambient photons arriving at the pixel, 1/s (PDE applies)
   double dark_count_rate_per_s = 0.0;  ///< dark counts, 1/s
-  double dead_time_s = 0.0;         ///< free-running: non-paralysable, rounded to TDC bins
+  double dead_time_s = 0.0;            ///< free-running: non-paralysable, rounded to TDC bins
   std::vector<std::array<int32_t, 2>> plot_pixels;  ///< (x, y) pixels to plot; empty = centre
   std::string colormap = "turbo";
 };
