@@ -1,0 +1,27 @@
+#pragma once
+// The `sensors:` list of a config file, parsed into the sensor models' own
+// parameter structs, and written back with every default filled in. Keys and
+// units: sensors/README.md.
+
+#include <vector>
+
+#include "tofsim/sensors/SensorSpec.h"
+
+namespace YAML {
+class Node;
+}
+
+namespace tofsim::config {
+
+class ConfigNode;
+
+/// Parses a list of mappings, each with `type: streak | spad | cwtof` and that
+/// model's keys. Throws InputError with file:line:col and the key path for bad
+/// values, unknown types and unknown keys.
+std::vector<sensors::SensorSpec> parseSensors(const ConfigNode& sensorsList);
+
+/// The effective configuration (defaults filled in) as a YAML sequence that
+/// parseSensors reads back to the same parameters.
+YAML::Node sensorsToYaml(const std::vector<sensors::SensorSpec>& specs);
+
+}  // namespace tofsim::config

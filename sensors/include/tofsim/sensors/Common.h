@@ -1,0 +1,67 @@
+#pragma once
+// Parameters every sensor model shares: which channel of the volume it sees,
+// the radiometric scale from the volume's values to photo-electrons, and the
+// instrument's own time bins. See sensors/README.md, "Common parameters".
+
+#include <cstdint>
+#include <vector>
+
+#include "tofsim/volume/TimeAxis.h"
+#include "tofsim/volume/TransientVolume.h"
+
+namespace tofsim::sensors {
+
+/// One channel of the volume, or a weighted sum of all of them.
+struct ChannelSelection {
+  int32_t index = 0;            ///< used when `weights` is empty
+  std::vector<double> weights;  ///< empty, or one weight per volume channel
+};
+
+/// Expected photo-electrons per unit of the volume's value (radiance integrated
+/// over a bin, W s / (m^2 sr) for the render's light):
+///   scale = source_scale * etendue_m2sr * optics_transmission * quantum_efficiency
+///           * (wavelength_m > 0 ? wavelength_m / (h c) : 1)
+/// With wavelength_m = 0 the volume is taken to count photons already (the
+/// default: every factor 1, one photo-electron per unit).
+struct Radiometry {
+  double source_scale = 1.0;  ///< laser energy per pulse / exposure relative to the render's light
+  double etendue_m2sr = 1.0;  ///< pixel area x aperture solid angle, m^2 sr
+  double optics_transmission = 1.0;  ///< lens and filter transmission, [0, 1]
+  double quantum_efficiency = 1.0;   ///< photo-electrons per photon, [0, 1]
+  double wavelength_m = 0.0;         ///< 0: values already count photons
+
+  double photoelectronsPerUnit() const;
+};
+
+struct SensorCommon {
+  ChannelSelection channel;
+  Radiometry radiometry;
+};
+
+/// The instrument's time bins: bin k covers [offset_s + k w, offset_s + (k+1) w).
+/// bin_width_s = 0 takes the render's width, offset_s is used as given, and
+/// count = 0 takes as many bins as cover the render's axis end.
+struct InstrumentBins {
+  double bin_width_s = 0.0;
+  double offset_s = 0.0;
+  int32_t count = 0;
+};
+
+/// The concrete axis `bins` describes for a volume with axis `render`.
+TimeAxis resolveBins(const InstrumentBins& bins, const TimeAxis& render);
+
+/// Throws InputError when the selection does not fit the volume's channels.
+void checkChannelSelection(const ChannelSelection& channel, const TransientVolume& volume);
+
+/// Expected photo-electrons per render bin of pixel (y, x): selected channel
+/// times the radiometric scale. `out` gets volume.bins() values.
+void pixelSignal(const TransientVolume& volume, const SensorCommon& common, int32_t y, int32_t x,
+                 std::vector<double>& out);
+
+/// Moves energy from the bins of `from` to those of `to`, each source bin's
+/// energy spread uniformly over its interval and split by overlap. Energy inside
+/// the target range is conserved exactly; energy outside it is dropped.
+void resampleEnergy(const std::vector<double>& in, const TimeAxis& from, const TimeAxis& to,
+                    std::vector<double>& out);
+
+}  // namespace tofsim::sensors

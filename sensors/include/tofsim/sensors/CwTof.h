@@ -1,0 +1,67 @@
+#pragma once
+// Continuous-wave (amplitude-modulated) time of flight: N phase-stepped
+// correlation images per modulation frequency, each bin of the impulse response
+// correlated exactly (averaged over the bin, not sampled at its centre), then
+// phase, amplitude, offset, multi-frequency unwrapping and depth. Model and
+// parameters: sensors/README.md, "Continuous-wave ToF".
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "tofsim/sensors/Common.h"
+#include "tofsim/sensors/SensorOutput.h"
+#include "tofsim/volume/TransientVolume.h"
+
+namespace tofsim::sensors {
+
+enum class Waveform { Sine, Square };
+
+struct CwTofParams {
+  SensorCommon common;  ///< radiometry gives photo-electrons per raw image (one phase step)
+  std::vector<double> frequencies_Hz{20e6};  ///< modulation frequencies, each > 0
+  int32_t phase_steps = 4;                   ///< N >= 3, reference phases 2 pi k / N
+  Waveform waveform = Waveform::Sine;
+  double ambient_e = 0.0;     ///< ambient photo-electrons per raw image and pixel
+  bool shot_noise = true;     ///< Poisson noise on each raw image
+  double read_noise_e = 0.0;  ///< Gaussian read noise per raw image, photo-electrons RMS
+  double max_depth_m = 0.0;   ///< unwrapping range; 0 = c / (2 gcd(frequencies)), capped
+  std::string colormap = "turbo";
+};
+
+/// Mean over [t0_s, t1_s) of the normalised correlation rho(2 pi f t - phase):
+/// cos for Sine; for Square (50% duty illumination against a 50% duty
+/// reference) the triangle wave with rho(0) = 1, rho(pi) = -1.
+double binCorrelation(Waveform waveform, double frequency_Hz, double phase_rad, double t0_s,
+                      double t1_s);
+
+/// Phase in [0, 2 pi) and amplitude from N raw values C_k taken at reference
+/// phases 2 pi k / N: atan2(sum C_k sin, sum C_k cos), (2 / N) |sum C_k e^{i phi_k}|.
+void phaseFromSteps(const double* raw, int32_t steps, double& phase_rad, double& amplitude);
+
+/// Depth from wrapped phases at several frequencies: picks the wrap counts that
+/// agree best within [0, maxDepth_m), then averages the per-frequency depths
+/// weighted by f^2. depth = c * phase / (4 pi f) (co-located light and camera).
+double unwrapDepth_m(const std::vector<double>& phases_rad,
+                     const std::vector<double>& frequencies_Hz, double maxDepth_m);
+
+/// The range unwrapDepth_m searches for these parameters, m.
+double unwrapRange_m(const CwTofParams& params);
+
+/// Optional inputs for the multipath error outputs.
+struct CwTofReferences {
+  const Image* groundTruthDepth_m = nullptr;    ///< (H, W, 1), metres; <= 0 or NaN = unknown
+  const TransientVolume* directOnly = nullptr;  ///< the direct component of the same render
+};
+
+/// Outputs: "cwtof_raw" Array (F, N, H, W) photo-electrons; "cwtof_depth" and
+/// "cwtof_amplitude" (first frequency) Images (H, W) plus ColorMappedImages;
+/// "cwtof_phase" Array (F, H, W) rad; with a ground truth, "cwtof_mpi_error"
+/// (noise-free depth - ground truth), with a direct-only volume,
+/// "cwtof_mpi_error_direct" (noise-free depth - direct-only depth), Images (H, W)
+/// in m plus ColorMappedImages.
+std::vector<SensorOutput> runCwTof(const TransientVolume& volume, const CwTofParams& params,
+                                   uint64_t seed, const CwTofReferences& references = {});
+
+}  // namespace tofsim::sensors

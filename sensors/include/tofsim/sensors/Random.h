@@ -1,0 +1,46 @@
+#pragma once
+// Reproducible random numbers: PCG32 (O'Neill 2014) seeded through SplitMix64,
+// and samplers written on top of it, so that the same seed gives the same bytes
+// on every platform's standard library. Each pixel gets its own stream derived
+// from (seed, stream id), so results do not depend on iteration order.
+
+#include <cstdint>
+
+namespace tofsim::sensors {
+
+uint64_t splitMix64(uint64_t x);
+
+class Rng {
+ public:
+  Rng(uint64_t seed, uint64_t stream);
+
+  uint32_t nextU32();
+  /// Uniform in [0, 1) with 53 random bits.
+  double uniform();
+  /// Standard normal (Box-Muller, both values used).
+  double normal();
+  double normal(double mean, double sigma) { return mean + sigma * normal(); }
+  /// Poisson with the given mean >= 0 (inversion below 12, PTRS above).
+  uint64_t poisson(double mean);
+  /// Binomial(n, p), exact: beta splitting (Knuth) down to small n p, then inversion.
+  uint64_t binomial(uint64_t n, double p);
+  /// Gamma(shape, 1), shape > 0 (Marsaglia-Tsang).
+  double gamma(double shape);
+  /// Beta(a, b) as G_a / (G_a + G_b).
+  double beta(double a, double b);
+
+ private:
+  uint64_t binomialInversion(uint64_t n, double p);
+
+  uint64_t state_ = 0;
+  uint64_t inc_ = 1;
+  double spare_ = 0.0;
+  bool hasSpare_ = false;
+};
+
+/// Stream ids: a model tag in the high bits, the pixel index below.
+inline uint64_t pixelStream(uint32_t tag, uint64_t pixelIndex) {
+  return (static_cast<uint64_t>(tag) << 48) ^ pixelIndex;
+}
+
+}  // namespace tofsim::sensors

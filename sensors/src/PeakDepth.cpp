@@ -1,0 +1,58 @@
+#include "PeakDepth.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <string>
+
+#include "tofsim/util/Error.h"
+#include "tofsim/volume/PhysicalConstants.h"
+
+namespace tofsim::sensors {
+
+double peakDepth_m(const std::vector<double>& histogram, const TimeAxis& axis) {
+  const auto K = static_cast<int32_t>(histogram.size());
+  int32_t best = -1;
+  for (int32_t i = 0; i < K; ++i) {
+    if (histogram[i] > 0.0 && (best < 0 || histogram[i] > histogram[best])) best = i;
+  }
+  if (best < 0) return std::numeric_limits<double>::quiet_NaN();
+  double offset = 0.0;
+  if (best > 0 && best < K - 1) {
+    const double a = histogram[best - 1], b = histogram[best], c = histogram[best + 1];
+    const double denom = a - 2.0 * b + c;
+    if (denom < 0.0) offset = std::clamp(0.5 * (a - c) / denom, -0.5, 0.5);
+  }
+  const double t = axis.start_s + (best + 0.5 + offset) * axis.bin_width_s;
+  return 0.5 * kSpeedOfLight_m_per_s * t;
+}
+
+SensorOutput histogramPlot(const SensorOutput& counts,
+                           const std::vector<std::array<int32_t, 2>>& pixels, const TimeAxis& axis,
+                           int32_t H, int32_t W) {
+  std::vector<std::array<int32_t, 2>> chosen = pixels;
+  if (chosen.empty()) chosen.push_back({W / 2, H / 2});
+  const int32_t K = axis.bins;
+  SensorOutput plot;
+  plot.name = "spad_histograms";
+  plot.kind = SensorOutput::Kind::HistogramPlot;
+  plot.shape = {static_cast<int64_t>(chosen.size()), K};
+  plot.unit = "counts";
+  plot.description = "SPAD histograms of selected pixels";
+  plot.axis_start = axis.start_s * 1e9;
+  plot.axis_step = axis.bin_width_s * 1e9;
+  plot.axis_unit = "ns";
+  for (const auto& [x, y] : chosen) {
+    if (x < 0 || x >= W || y < 0 || y >= H) {
+      throw InputError("spad plot pixel (" + std::to_string(x) + ", " + std::to_string(y) +
+                       ") is outside the " + std::to_string(W) + "x" + std::to_string(H) +
+                       " image");
+    }
+    const float* h = counts.data.data() + (static_cast<std::size_t>(y) * W + x) * K;
+    plot.data.insert(plot.data.end(), h, h + K);
+    plot.labels.push_back("pixel (" + std::to_string(x) + ", " + std::to_string(y) + ")");
+  }
+  return plot;
+}
+
+}  // namespace tofsim::sensors

@@ -1,0 +1,161 @@
+#include "tofsim/sensors/Random.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "tofsim/util/Error.h"
+
+namespace tofsim::sensors {
+
+uint64_t splitMix64(uint64_t x) {
+  x += 0x9E3779B97F4A7C15ull;
+  x = (x ^ (x >> 30)) * 0xBF58476D1CE4E5B9ull;
+  x = (x ^ (x >> 27)) * 0x94D049BB133111EBull;
+  return x ^ (x >> 31);
+}
+
+Rng::Rng(uint64_t seed, uint64_t stream) {
+  inc_ = (splitMix64(stream ^ 0x5851F42D4C957F2Dull) << 1) | 1u;
+  state_ = 0;
+  nextU32();
+  state_ += splitMix64(seed + splitMix64(stream));
+  nextU32();
+}
+
+uint32_t Rng::nextU32() {
+  const uint64_t old = state_;
+  state_ = old * 6364136223846793005ull + inc_;
+  const auto xorshifted = static_cast<uint32_t>(((old >> 18u) ^ old) >> 27u);
+  const auto rot = static_cast<uint32_t>(old >> 59u);
+  return (xorshifted >> rot) | (xorshifted << ((32u - rot) & 31u));
+}
+
+double Rng::uniform() {
+  const uint64_t hi = nextU32() >> 5;  // 27 bits
+  const uint64_t lo = nextU32() >> 6;  // 26 bits
+  return static_cast<double>((hi << 26) | lo) * 0x1.0p-53;
+}
+
+double Rng::normal() {
+  if (hasSpare_) {
+    hasSpare_ = false;
+    return spare_;
+  }
+  const double u1 = 1.0 - uniform();  // (0, 1]
+  const double u2 = uniform();
+  const double r = std::sqrt(-2.0 * std::log(u1));
+  const double a = 2.0 * M_PI * u2;
+  spare_ = r * std::sin(a);
+  hasSpare_ = true;
+  return r * std::cos(a);
+}
+
+uint64_t Rng::poisson(double mean) {
+  TOFSIM_CHECK_MSG(mean >= 0.0 && std::isfinite(mean), "poisson mean " + std::to_string(mean));
+  if (mean == 0.0) return 0;
+  if (mean < 12.0) {
+    // Inversion by sequential search.
+    double p = std::exp(-mean);
+    double u = uniform();
+    uint64_t k = 0;
+    while (u > p) {
+      u -= p;
+      ++k;
+      p *= mean / static_cast<double>(k);
+      if (p <= 0.0) break;  // u lost to rounding in the far tail
+    }
+    return k;
+  }
+  // PTRS: transformed rejection with squeeze (Hormann 1993).
+  const double slam = std::sqrt(mean);
+  const double loglam = std::log(mean);
+  const double b = 0.931 + 2.53 * slam;
+  const double a = -0.059 + 0.02483 * b;
+  const double invalpha = 1.1239 + 1.1328 / (b - 3.4);
+  const double vr = 0.9277 - 3.6224 / (b - 2.0);
+  for (;;) {
+    const double u = uniform() - 0.5;
+    const double v = uniform();
+    const double us = 0.5 - std::fabs(u);
+    const double k = std::floor((2.0 * a / us + b) * u + mean + 0.43);
+    if (us >= 0.07 && v <= vr) return static_cast<uint64_t>(k);
+    if (k < 0.0 || (us < 0.013 && v > us)) continue;
+    if (std::log(v) + std::log(invalpha) - std::log(a / (us * us) + b) <=
+        -mean + k * loglam - std::lgamma(k + 1.0)) {
+      return static_cast<uint64_t>(k);
+    }
+  }
+}
+
+double Rng::gamma(double shape) {
+  TOFSIM_CHECK(shape > 0.0);
+  if (shape < 1.0) {
+    // Gamma(a) = Gamma(a + 1) * U^(1/a).
+    const double u = 1.0 - uniform();
+    return gamma(shape + 1.0) * std::pow(u, 1.0 / shape);
+  }
+  const double d = shape - 1.0 / 3.0;
+  const double c = 1.0 / std::sqrt(9.0 * d);
+  for (;;) {
+    double x = 0.0, v = 0.0;
+    do {
+      x = normal();
+      v = 1.0 + c * x;
+    } while (v <= 0.0);
+    v = v * v * v;
+    const double u = 1.0 - uniform();
+    if (u < 1.0 - 0.0331 * x * x * x * x) return d * v;
+    if (std::log(u) < 0.5 * x * x + d * (1.0 - v + std::log(v))) return d * v;
+  }
+}
+
+double Rng::beta(double a, double b) {
+  const double x = gamma(a);
+  const double y = gamma(b);
+  return x / (x + y);
+}
+
+uint64_t Rng::binomialInversion(uint64_t n, double p) {
+  // p <= 0.5 and n p small, so q^n does not underflow.
+  const double q = 1.0 - p;
+  const double s = p / q;
+  const double a = (static_cast<double>(n) + 1.0) * s;
+  double r = std::pow(q, static_cast<double>(n));
+  double u = uniform();
+  uint64_t x = 0;
+  while (u > r && x < n) {
+    u -= r;
+    ++x;
+    r *= a / static_cast<double>(x) - s;
+    if (r <= 0.0) break;
+  }
+  return x;
+}
+
+uint64_t Rng::binomial(uint64_t n, double p) {
+  TOFSIM_CHECK_MSG(p >= 0.0 && p <= 1.0, "binomial p " + std::to_string(p));
+  uint64_t result = 0;
+  // Knuth (TAOCP 3.4.1): the a-th smallest of n uniforms is Beta(a, n + 1 - a);
+  // the uniforms below it are Binomial(a - 1, p / X) given X >= p, the ones
+  // above it a + Binomial(n - a, (p - X) / (1 - X)) otherwise. Exact.
+  while (n > 64 && static_cast<double>(n) * std::min(p, 1.0 - p) > 16.0) {
+    const uint64_t a = 1 + n / 2;
+    const uint64_t b = n + 1 - a;
+    const double x = beta(static_cast<double>(a), static_cast<double>(b));
+    if (x >= p) {
+      n = a - 1;
+      p = p / x;
+    } else {
+      result += a;
+      n = b - 1;
+      p = (p - x) / (1.0 - x);
+    }
+    p = std::clamp(p, 0.0, 1.0);
+  }
+  if (n == 0 || p <= 0.0) return result;
+  if (p >= 1.0) return result + n;
+  if (p > 0.5) return result + n - binomialInversion(n, 1.0 - p);
+  return result + binomialInversion(n, p);
+}
+
+}  // namespace tofsim::sensors

@@ -1,0 +1,66 @@
+// Per-cycle detection probabilities of the SPAD model and Coates' estimator.
+#include <algorithm>
+#include <cmath>
+
+#include "tofsim/sensors/Spad.h"
+#include "tofsim/util/Error.h"
+
+namespace tofsim::sensors {
+
+namespace {
+constexpr int kMaxSteadyStateSteps = 4'000'000;  // bins simulated to reach the steady state
+constexpr double kSteadyStateTolerance = 1e-13;
+}  // namespace
+
+std::vector<double> firstPhotonProbabilities(const std::vector<double>& flux) {
+  std::vector<double> p(flux.size());
+  double survive = 1.0;  // no detection in earlier bins
+  for (std::size_t i = 0; i < flux.size(); ++i) {
+    const double q = -std::expm1(-flux[i]);
+    p[i] = survive * q;
+    survive *= 1.0 - q;
+  }
+  return p;
+}
+
+std::vector<double> freeRunningProbabilities(const std::vector<double>& flux, int32_t deadBins) {
+  TOFSIM_CHECK(deadBins >= 0 && !flux.empty());
+  const auto K = static_cast<int32_t>(flux.size());
+  std::vector<double> q(flux.size());
+  for (int32_t i = 0; i < K; ++i) q[i] = -std::expm1(-flux[i]);
+  // live: probability that the detector is live at the start of the bin.
+  // ring[n % (deadBins + 1)] holds the detection probability of step n; the
+  // detector that fired at step n - deadBins is live again at step n + 1.
+  std::vector<double> ring(static_cast<std::size_t>(deadBins) + 1, 0.0);
+  std::vector<double> m(flux.size(), 0.0), previous(flux.size(), -1.0);
+  double live = 1.0;
+  int64_t step = 0;
+  const int64_t maxCycles = std::max<int64_t>(8, kMaxSteadyStateSteps / K);
+  for (int64_t cycle = 0; cycle < maxCycles; ++cycle) {
+    for (int32_t i = 0; i < K; ++i, ++step) {
+      m[i] = live * q[i];
+      ring[step % (deadBins + 1)] = m[i];
+      live += ring[(step + 1) % (deadBins + 1)] - m[i];
+      live = std::clamp(live, 0.0, 1.0);
+    }
+    double change = 0.0;
+    for (int32_t i = 0; i < K; ++i) change = std::max(change, std::fabs(m[i] - previous[i]));
+    if (change < kSteadyStateTolerance) break;
+    previous = m;
+  }
+  return m;
+}
+
+std::vector<double> coatesEstimate(const std::vector<double>& counts, int64_t cycles) {
+  std::vector<double> flux(counts.size(), 0.0);
+  double remaining = static_cast<double>(cycles);
+  for (std::size_t i = 0; i < counts.size(); ++i) {
+    if (remaining <= 0.0) break;
+    const double h = counts[i];
+    flux[i] = h >= remaining ? std::log(remaining + 1.0) : -std::log1p(-h / remaining);
+    remaining -= h;
+  }
+  return flux;
+}
+
+}  // namespace tofsim::sensors

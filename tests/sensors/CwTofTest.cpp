@@ -1,0 +1,163 @@
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <complex>
+
+#include "TestVolumes.h"
+#include "tofsim/sensors/CwTof.h"
+#include "tofsim/volume/PhysicalConstants.h"
+
+namespace tofsim::sensors {
+namespace {
+
+using test::makeVolume;
+using test::output;
+constexpr double kC = kSpeedOfLight_m_per_s;
+
+CwTofParams noiseFree(std::vector<double> freqs) {
+  CwTofParams p;
+  p.frequencies_Hz = std::move(freqs);
+  p.shot_noise = false;
+  return p;
+}
+
+/// A 1x1 volume with 10 ps bins whose bin `centre` is centred on the round
+/// trip time of `depth`.
+TransientVolume singleReturn(double depth, int32_t bins, float energy) {
+  const double w = 10e-12, t = 2.0 * depth / kC;
+  TransientVolume v = makeVolume(1, 1, t - 100.5 * w, w, bins);
+  v.at(0, 0, 100, 0) = energy;
+  return v;
+}
+
+TEST(CwTofTest, SingleReturnGivesItsDepth) {
+  for (double depth : {0.3, 3.3, 7.0}) {  // unambiguous range at 20 MHz: 7.49 m
+    const auto outs = runCwTof(singleReturn(depth, 200, 1000.0f), noiseFree({20e6}), 1);
+    EXPECT_NEAR(output(outs, "cwtof_depth").data[0], depth, 1e-3) << depth;
+    // Amplitude: half the energy times the bin average of the phasor (sinc).
+    const double half = M_PI * 20e6 * 10e-12;
+    EXPECT_NEAR(output(outs, "cwtof_amplitude").data[0], 500.0 * std::sin(half) / half, 1e-3);
+  }
+  const auto outs = runCwTof(singleReturn(8.0, 200, 1000.0f), noiseFree({20e6}), 1);
+  EXPECT_NEAR(output(outs, "cwtof_depth").data[0], 8.0 - kC / (2 * 20e6), 1e-3);  // wraps
+}
+
+TEST(CwTofTest, TwoReturnsGiveThePhaseOfThePhasorSum) {
+  const double w = 10e-12, f = 30e6;
+  TransientVolume v = makeVolume(1, 1, 0.0, w, 600);
+  v.at(0, 0, 150, 0) = 700.0f;
+  v.at(0, 0, 420, 0) = 400.0f;
+  const auto outs = runCwTof(v, noiseFree({f}), 1);
+  // Equal-width bins share the sinc factor: the phase is that of the centres' phasors.
+  std::complex<double> sum = 700.0 * std::polar(1.0, 2 * M_PI * f * 150.5 * w) +
+                             400.0 * std::polar(1.0, 2 * M_PI * f * 420.5 * w);
+  double phase = std::arg(sum);
+  if (phase < 0) phase += 2 * M_PI;
+  EXPECT_NEAR(test::array(outs, "cwtof_phase").data[0], phase, 1e-6);
+  EXPECT_NEAR(output(outs, "cwtof_depth").data[0], kC * phase / (4 * M_PI * f), 1e-4);
+}
+
+TEST(CwTofTest, TwoFrequenciesUnwrapBeyondOneFrequencysRange) {
+  CwTofParams p = noiseFree({80e6, 100e6});  // ranges 1.87 m and 1.50 m; together 7.49 m
+  EXPECT_NEAR(unwrapRange_m(p), kC / (2 * 20e6), 1e-9);
+  for (double depth : {0.4, 2.2, 5.1, 7.2}) {
+    const auto outs = runCwTof(singleReturn(depth, 200, 1000.0f), p, 1);
+    EXPECT_NEAR(output(outs, "cwtof_depth").data[0], depth, 1e-3) << depth;
+  }
+  // One frequency alone cannot.
+  const auto single = runCwTof(singleReturn(5.1, 200, 1000.0f), noiseFree({100e6}), 1);
+  EXPECT_GT(std::fabs(output(single, "cwtof_depth").data[0] - 5.1), 1.0);
+}
+
+TEST(CwTofTest, SquareModulationReproducesTheHarmonicsError) {
+  // Four steps on a triangle correlation: for true phase theta in [0, pi/2]
+  // the estimate is atan2(2 theta / pi, 1 - 2 theta / pi).
+  const double f = 20e6;
+  double maxError = 0.0;
+  for (double theta : {0.2, M_PI / 8, 0.6, 1.1, 1.4}) {
+    const double depth = kC * theta / (4 * M_PI * f);
+    CwTofParams p = noiseFree({f});
+    p.waveform = Waveform::Square;
+    const auto outs = runCwTof(singleReturn(depth, 200, 1000.0f), p, 1);
+    const double estimate = std::atan2(2 * theta / M_PI, 1 - 2 * theta / M_PI);
+    const double expected = kC * estimate / (4 * M_PI * f);
+    EXPECT_NEAR(output(outs, "cwtof_depth").data[0], expected, 1e-3) << theta;
+    maxError = std::max(maxError, std::fabs(expected - depth));
+    p.waveform = Waveform::Sine;
+    const auto sine = runCwTof(singleReturn(depth, 200, 1000.0f), p, 1);
+    EXPECT_NEAR(output(sine, "cwtof_depth").data[0], depth, 1e-3) << theta;
+  }
+  EXPECT_GT(maxError, 0.05);  // the wiggling error is several centimetres at 20 MHz
+}
+
+TEST(CwTofTest, BinCorrelationIsTheExactBinAverage) {
+  // Against a fine midpoint sum of the waveform over a wide bin.
+  for (Waveform wf : {Waveform::Sine, Waveform::Square}) {
+    const double f = 50e6, phi = 0.7, t0 = 3.1e-9, t1 = 9.4e-9;  // bin spans 0.3 periods
+    double sum = 0.0;
+    const int n = 200000;
+    for (int i = 0; i < n; ++i) {
+      const double t = t0 + (i + 0.5) * (t1 - t0) / n;
+      const double th = 2 * M_PI * f * t - phi;
+      const double u = th - 2 * M_PI * std::floor(th / (2 * M_PI));
+      sum +=
+          wf == Waveform::Sine ? std::cos(th) : (u <= M_PI ? 1 - 2 * u / M_PI : -3 + 2 * u / M_PI);
+    }
+    EXPECT_NEAR(binCorrelation(wf, f, phi, t0, t1), sum / n, 1e-8);
+  }
+}
+
+TEST(CwTofTest, MultipathErrorAgainstGroundTruthAndDirectComponent) {
+  const double w = 10e-12, f = 20e6;
+  TransientVolume direct = makeVolume(2, 1, 0.0, w, 400);
+  direct.at(0, 0, 200, 0) = 1000.0f;
+  direct.at(0, 1, 200, 0) = 1000.0f;
+  TransientVolume full = direct;
+  full.at(0, 1, 300, 0) = 300.0f;  // pixel 1 has an indirect return
+  Image truth(2, 1, 1);
+  const double d = kC * 200.5 * w / 2;
+  truth.at(0, 0, 0) = static_cast<float>(d);
+  truth.at(0, 1, 0) = static_cast<float>(d);
+  CwTofParams p;
+  p.frequencies_Hz = {f};
+  p.ambient_e = 200.0;  // noisy measurement; the MPI error is noise-free
+  const auto outs = runCwTof(full, p, 3, CwTofReferences{&truth, &direct});
+  const auto& gt = output(outs, "cwtof_mpi_error").data;
+  const auto& dir = output(outs, "cwtof_mpi_error_direct").data;
+  EXPECT_NEAR(gt[0], 0.0, 1e-4);
+  EXPECT_NEAR(dir[0], 0.0, 1e-4);
+  std::complex<double> sum = 1000.0 * std::polar(1.0, 2 * M_PI * f * 200.5 * w) +
+                             300.0 * std::polar(1.0, 2 * M_PI * f * 300.5 * w);
+  const double mpiDepth = kC * std::arg(sum) / (4 * M_PI * f);
+  EXPECT_NEAR(gt[1], mpiDepth - d, 1e-4);
+  EXPECT_NEAR(dir[1], mpiDepth - d, 1e-4);
+  EXPECT_GT(gt[1], 0.02);  // the later, indirect light lengthens the depth (3.5 cm)
+  EXPECT_EQ(test::array(outs, "cwtof_raw").shape, (std::vector<int64_t>{1, 4, 1, 2}));
+}
+
+TEST(CwTofTest, RawNoiseIsShotPlusReadAndReproducible) {
+  TransientVolume v = makeVolume(64, 64, 0.0, 10e-12, 4);
+  for (float& e : v.values()) e = 100.0f;  // 400 e- per pixel
+  CwTofParams p;
+  p.read_noise_e = 3.0;
+  p.ambient_e = 100.0;
+  const auto a = runCwTof(v, p, 8), b = runCwTof(v, p, 8);
+  const auto& raw = test::array(a, "cwtof_raw").data;
+  EXPECT_EQ(raw, test::array(b, "cwtof_raw").data);
+  // Phase step 0 at 20 MHz: all bins within 40 ps of t = 0, correlation ~ 1.
+  const int n = 64 * 64;
+  double s = 0, s2 = 0, expect = 0;
+  for (int t = 0; t < 4; ++t)
+    expect += 0.5 * 100 * (1 + binCorrelation(Waveform::Sine, 20e6, 0, t * 1e-11, (t + 1) * 1e-11));
+  expect += 0.5 * 100.0;
+  for (int i = 0; i < n; ++i) {
+    s += raw[i];
+    s2 += static_cast<double>(raw[i]) * raw[i];
+  }
+  const double mean = s / n, var = (s2 - s * s / n) / (n - 1), ev = expect + 9.0;
+  EXPECT_NEAR(mean, expect, 4.0 * std::sqrt(ev / n));
+  EXPECT_NEAR(var, ev, 4.0 * std::sqrt(2.0 * ev * ev / n));
+}
+
+}  // namespace
+}  // namespace tofsim::sensors
