@@ -2,10 +2,12 @@
 
 #include <algorithm>
 #include <chrono>
+#include <memory>
 #include <cmath>
 #include <vector>
 
 #include "GpuScene.h"
+#include "IndirectLight.h"
 #include "LightShadowMap.h"
 #include "LightUniforms.h"
 #include "SegmentPlan.h"
@@ -58,6 +60,34 @@ Image depthFromPositions(const std::vector<float>& positions, const Camera& came
   return depth;
 }
 
+// Uniforms shared by the direct and indirect gathers: image, time axis, camera.
+void configureGather(const gl::Program& program, const RenderJob& job) {
+  const TimeAxis& axis = job.settings.time;
+  program.set("uImageWidth", job.camera.width);
+  program.set("uBins", axis.bins);
+  program.set("uStart_m", static_cast<float>(axis.start_m()));
+  program.set("uBinWidth_m", static_cast<float>(axis.bin_width_m()));
+  program.set("uIndexOfRefraction", static_cast<float>(job.settings.index_of_refraction));
+  program.set("uCameraUnwarp", job.settings.camera_unwarp ? 1 : 0);
+  program.set("uCameraPosition_world", job.camera.position_world);
+  const glm::vec3 extent = job.scene->bounds().max - job.scene->bounds().min;
+  program.set("uSceneScale_m", std::max(glm::length(extent), 1e-6f));
+  program.set("uGeometryClamp", static_cast<float>(job.settings.indirect.geometry_term_clamp_per_m2));
+}
+
+// VPLs and their visibility structures, or null when indirect light is off
+// or no VPL receives light.
+std::unique_ptr<IndirectLight> makeIndirectLight(const RenderJob& job, const GpuScene& gpuScene,
+                                                 const glm::vec3& lo, const glm::vec3& hi) {
+  const capture::IndirectSettings& s = job.settings.indirect;
+  if (!s.enabled) return nullptr;
+  std::vector<Vpl> vpls = generateVpls(gpuScene, job.light, s.rsm_resolution,
+                                       job.settings.index_of_refraction, lo, hi);
+  if (vpls.empty()) return nullptr;
+  return std::make_unique<IndirectLight>(buildTriangleSoup(*job.scene), std::move(vpls), s,
+                                         job.settings.seed);
+}
+
 }  // namespace
 
 TransientRenderer::TransientRenderer(gl::Context& context) : context_(context) {}
@@ -91,26 +121,34 @@ RenderResult TransientRenderer::render(const RenderJob& job, SegmentSink& sink,
   gl::Program directGather({{GL_COMPUTE_SHADER, "direct_gather.comp"}});
   setLightUniforms(directGather, job.light);
   shadowMap.bind(directGather);
-  directGather.set("uImageWidth", camera.width);
-  directGather.set("uBins", axis.bins);
-  directGather.set("uStart_m", static_cast<float>(axis.start_m()));
-  directGather.set("uBinWidth_m", static_cast<float>(axis.bin_width_m()));
-  directGather.set("uIndexOfRefraction", static_cast<float>(settings.index_of_refraction));
-  directGather.set("uCameraUnwarp", settings.camera_unwarp ? 1 : 0);
-  directGather.set("uCameraPosition_world", camera.position_world);
+  configureGather(directGather, job);
 
-  const std::size_t fixedBytes = gpuScene.bytes() + pixelCount * 4 * 4 * sizeof(float) +
-                                 shadowMap.bytes();
-  const std::size_t budget = settings.memory_budget_bytes > fixedBytes
-                                 ? settings.memory_budget_bytes - fixedBytes
-                                 : 0;
+  std::unique_ptr<IndirectLight> indirectLight = makeIndirectLight(job, gpuScene, lo, hi);
+  std::size_t fixedBytes = gpuScene.bytes() + pixelCount * 4 * 4 * sizeof(float) + shadowMap.bytes();
+  if (indirectLight) fixedBytes += indirectLight->fixedBytes();
+  std::size_t budget = settings.memory_budget_bytes > fixedBytes
+                           ? settings.memory_budget_bytes - fixedBytes
+                           : 0;
+  if (indirectLight) {
+    // ISM batches get what all ISMs need, up to half of what is left; the
+    // volume segments get the rest.
+    const std::size_t allIsms = indirectLight->ismBytesPerVpl() * indirectLight->vplCount();
+    const std::size_t ismBudget = std::min(allIsms, budget / 2);
+    indirectLight->planBatches(ismBudget, limits.maxShaderStorageBlockBytes);
+    budget -= indirectLight->ismBatchBytes();
+    result.vpls = indirectLight->vplCount();
+    result.vplBatches = indirectLight->batchCount();
+    configureGather(indirectLight->gatherProgram(), job);
+  }
   const std::size_t floatsPerPixel = static_cast<std::size_t>(axis.bins) * kChannels;
   const std::size_t maxDispatchPixels =
       static_cast<std::size_t>(limits.maxComputeWorkGroupCount[0]) * kWorkGroupSize;
   const SegmentPlan plan = planSegments(pixelCount, floatsPerPixel, 2, budget,
                                         limits.maxShaderStorageBlockBytes, maxDispatchPixels);
   result.segments = plan.segmentCount;
-  result.peakGpuBytes = fixedBytes + plan.bytesPerSegment;
+  result.peakGpuBytes = settings.memory_budget_bytes - budget + plan.bytesPerSegment;
+  const std::size_t batches = indirectLight ? indirectLight->batchCount() : 0;
+  const std::size_t workUnits = plan.segmentCount * (1 + batches);
 
   const std::size_t segmentFloats = plan.pixelsPerSegment * floatsPerPixel;
   gl::Buffer directBuffer(segmentFloats * sizeof(float));
@@ -138,8 +176,17 @@ RenderResult TransientRenderer::render(const RenderJob& job, SegmentSink& sink,
     directGather.set("uFirstPixel", static_cast<unsigned>(first));
     directGather.set("uPixelCount", static_cast<unsigned>(count));
     glDispatchCompute(static_cast<GLuint>((count + kWorkGroupSize - 1) / kWorkGroupSize), 1, 1);
-    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
     TOFSIM_GL_CHECK("direct gather");
+    std::size_t done = s * (1 + batches) + 1;
+    if (progress) progress(done, workUnits, "segment/VPL-batch passes");
+    for (std::size_t b = 0; b < batches; ++b) {
+      gbuffer.position.bindUnit(0);
+      gbuffer.normal.bindUnit(1);
+      gbuffer.albedo.bindUnit(2);
+      indirectLight->gatherBatch(b, GatherTarget{first, count});
+      if (progress) progress(++done, workUnits, "segment/VPL-batch passes");
+    }
 
     directBuffer.download(0, floats * sizeof(float), direct.data());
     indirectBuffer.download(0, floats * sizeof(float), indirect.data());
@@ -153,7 +200,6 @@ RenderResult TransientRenderer::render(const RenderJob& job, SegmentSink& sink,
     segment.direct = direct.data();
     segment.indirect = indirect.data();
     sink.consume(segment);
-    if (progress) progress(s + 1, plan.segmentCount, "segments");
   }
   result.seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();

@@ -1,0 +1,138 @@
+#include "IndirectLight.h"
+
+#include <algorithm>
+
+#include "tofsim/gl/Check.h"
+#include "tofsim/util/Error.h"
+
+namespace tofsim::render {
+
+namespace {
+
+constexpr GLuint kGroup = 64;
+
+std::vector<std::pair<std::string, std::string>> gatherDefines(const capture::IndirectSettings& s) {
+  if (s.visibility == capture::Visibility::Exact) return {{"EXACT_VISIBILITY", "1"}};
+  return {};
+}
+
+// Dispatches `threads` invocations of a 64-wide kernel as a 2D grid, since
+// one dimension is limited to 65535 groups.
+void dispatchThreads(std::size_t threads) {
+  const std::size_t groups = (threads + kGroup - 1) / kGroup;
+  const std::size_t x = std::min<std::size_t>(groups, 65535);
+  const std::size_t y = (groups + x - 1) / x;
+  glDispatchCompute(static_cast<GLuint>(x), static_cast<GLuint>(y), 1);
+}
+
+}  // namespace
+
+IndirectLight::IndirectLight(const TriangleSoup& soup, std::vector<Vpl> vpls,
+                             const capture::IndirectSettings& settings, uint64_t seed)
+    : settings_(settings),
+      seed_(seed),
+      vplCount_(vpls.size()),
+      triangleCount_(soup.triangleCount()),
+      gather_({{GL_COMPUTE_SHADER, "indirect_gather.comp"}}, gatherDefines(settings)) {
+  TOFSIM_CHECK(!vpls.empty() && triangleCount_ > 0);
+  corners_ = gl::Buffer(soup.corners.size() * sizeof(glm::vec4), soup.corners.data(), 0);
+  areaCdf_ = gl::Buffer(soup.areaCdf.size() * sizeof(float), soup.areaCdf.data(), 0);
+  bvh_ = gl::Buffer(soup.bvh.size() * sizeof(BvhNode), soup.bvh.data(), 0);
+  vplBuffer_ = gl::Buffer(vpls.size() * sizeof(Vpl), vpls.data(), 0);
+  fixedBytes_ = corners_.size() + areaCdf_.size() + bvh_.size() + vplBuffer_.size();
+  if (settings_.visibility == capture::Visibility::Ism) {
+    splat_ = gl::Program({{GL_COMPUTE_SHADER, "ism_splat.comp"}});
+    pull_ = gl::Program({{GL_COMPUTE_SHADER, "ism_pull.comp"}});
+    push_ = gl::Program({{GL_COMPUTE_SHADER, "ism_push.comp"}});
+    for (int size = settings_.ism_resolution;; size = (size + 1) / 2) {
+      levelOffsets_.push_back(floatsPerVpl_);
+      levelSizes_.push_back(size);
+      floatsPerVpl_ += static_cast<std::size_t>(size) * size;
+      if (size == 1 || !settings_.ism_pull_push) break;
+    }
+  }
+  gather_.set("uTriangleCount", static_cast<unsigned>(triangleCount_));
+}
+
+std::size_t IndirectLight::ismBytesPerVpl() const { return floatsPerVpl_ * sizeof(float); }
+
+void IndirectLight::planBatches(std::size_t ismBudgetBytes, std::size_t maxStorageBlockBytes) {
+  if (settings_.visibility == capture::Visibility::Exact) {
+    vplsPerBatch_ = vplCount_;
+    return;
+  }
+  const std::size_t limit = std::min(ismBudgetBytes, maxStorageBlockBytes);
+  if (ismBytesPerVpl() > limit) {
+    throw InputError("one VPL's imperfect shadow map (" + std::to_string(ismBytesPerVpl()) +
+                     " bytes) does not fit the memory left for ISMs (" + std::to_string(limit) +
+                     " bytes); raise render.memory_budget or lower render.indirect.ism_resolution");
+  }
+  vplsPerBatch_ = std::min(vplCount_, limit / ismBytesPerVpl());
+  ism_ = gl::Buffer(vplsPerBatch_ * ismBytesPerVpl());
+}
+
+std::size_t IndirectLight::batchCount() const {
+  return (vplCount_ + vplsPerBatch_ - 1) / vplsPerBatch_;
+}
+
+void IndirectLight::buildIsms(std::size_t firstVpl, std::size_t count) {
+  const GLuint empty = 0x7f800000u;  // +inf: no surface seen in this direction
+  glClearNamedBufferData(ism_.id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &empty);
+  ism_.bindBase(GL_SHADER_STORAGE_BUFFER, 7);
+  const unsigned stride = static_cast<unsigned>(floatsPerVpl_);
+  splat_.use();
+  splat_.set("uFirstVpl", static_cast<unsigned>(firstVpl));
+  splat_.set("uVplCount", static_cast<unsigned>(count));
+  splat_.set("uPointsPerVpl", static_cast<unsigned>(settings_.points_per_vpl));
+  splat_.set("uVplStride", stride);
+  splat_.set("uIsmResolution", settings_.ism_resolution);
+  splat_.set("uSeed", static_cast<unsigned>(seed_ ^ (seed_ >> 32)));
+  splat_.set("uTriangleCount", static_cast<unsigned>(triangleCount_));
+  dispatchThreads(count * static_cast<std::size_t>(settings_.points_per_vpl));
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+  const auto level = [&](const gl::Program& p, std::size_t fine, std::size_t threadsPerVpl) {
+    p.use();
+    p.set("uVplCount", static_cast<unsigned>(count));
+    p.set("uVplStride", stride);
+    p.set("uFineOffset", static_cast<unsigned>(levelOffsets_[fine]));
+    p.set("uFineSize", levelSizes_[fine]);
+    p.set("uCoarseOffset", static_cast<unsigned>(levelOffsets_[fine + 1]));
+    p.set("uCoarseSize", levelSizes_[fine + 1]);
+    dispatchThreads(count * threadsPerVpl);
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+  };
+  for (std::size_t k = 0; k + 1 < levelSizes_.size(); ++k) {
+    level(pull_, k, static_cast<std::size_t>(levelSizes_[k + 1]) * levelSizes_[k + 1]);
+  }
+  for (std::size_t k = levelSizes_.size() - 1; k-- > 0;) {
+    level(push_, k, static_cast<std::size_t>(levelSizes_[k]) * levelSizes_[k]);
+  }
+  TOFSIM_GL_CHECK("ISM build");
+}
+
+void IndirectLight::gatherBatch(std::size_t batch, const GatherTarget& target) {
+  const std::size_t first = batch * vplsPerBatch_;
+  const std::size_t count = std::min(vplsPerBatch_, vplCount_ - first);
+  vplBuffer_.bindBase(GL_SHADER_STORAGE_BUFFER, 3);
+  corners_.bindBase(GL_SHADER_STORAGE_BUFFER, 4);
+  areaCdf_.bindBase(GL_SHADER_STORAGE_BUFFER, 5);
+  bvh_.bindBase(GL_SHADER_STORAGE_BUFFER, 6);
+  if (settings_.visibility == capture::Visibility::Ism) {
+    // Every segment needs every batch; a single batch is built once and kept.
+    if (residentBatch_ != batch) buildIsms(first, count);
+    residentBatch_ = batch;
+    ism_.bindBase(GL_SHADER_STORAGE_BUFFER, 7);
+    gather_.set("uVplStride", static_cast<unsigned>(floatsPerVpl_));
+    gather_.set("uIsmResolution", settings_.ism_resolution);
+  }
+  gather_.use();
+  gather_.set("uFirstVpl", static_cast<unsigned>(first));
+  gather_.set("uVplCount", static_cast<unsigned>(count));
+  gather_.set("uFirstPixel", static_cast<unsigned>(target.firstPixel));
+  gather_.set("uPixelCount", static_cast<unsigned>(target.pixelCount));
+  dispatchThreads(target.pixelCount);
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+  TOFSIM_GL_CHECK("indirect gather");
+}
+
+}  // namespace tofsim::render

@@ -1,0 +1,33 @@
+#pragma once
+// The scene's triangles flattened to world-space corners, ordered for the
+// BVH, with an area CDF so compute shaders can sample points uniformly by
+// area (ISM points) and cast shadow rays (exact visibility).
+
+#include <cstdint>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "tofsim/scene/Scene.h"
+
+namespace tofsim::render {
+
+struct BvhNode {
+  glm::vec4 min;  ///< xyz bounds; w = first triangle (leaf) or right child (inner), as float bits
+  glm::vec4 max;  ///< xyz bounds; w = triangle count (leaf, > 0) or 0 (inner), as float bits
+};
+
+struct TriangleSoup {
+  std::vector<glm::vec4> corners;   ///< 3 per triangle, w = 1
+  std::vector<float> areaCdf;       ///< inclusive prefix sum of areas / total, one per triangle
+  std::vector<BvhNode> bvh;         ///< node 0 is the root; left child of inner node i is i + 1
+  double totalArea_m2 = 0.0;
+
+  std::size_t triangleCount() const { return corners.size() / 3; }
+};
+
+/// Flattens the scene, builds a BVH (binned SAH) and orders the triangles by
+/// leaf. Deterministic: depends only on the scene.
+TriangleSoup buildTriangleSoup(const scene::Scene& scene);
+
+}  // namespace tofsim::render

@@ -1,0 +1,32 @@
+#pragma once
+// Virtual point lights from a reflective shadow map (Dachsbacher and
+// Stamminger 2005) rendered from the light: each RSM texel that sees a lit
+// surface becomes a VPL (Eq. 17). The texel's solid angle Omega gives the
+// flux it receives, Phi = I * profile * Omega; the surface reflects it
+// diffusely, so the VPL is a cosine emitter of intensity
+// albedo * Phi / pi * cos(theta), emitting at t_l = eta * |l - x_l| / c.
+
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "tofsim/capture/Light.h"
+
+namespace tofsim::render {
+
+class GpuScene;
+
+struct Vpl {  // matches struct Vpl in shaders/vpl.glsl (std430)
+  glm::vec4 positionPath;  ///< xyz world, w = optical path light -> VPL, m
+  glm::vec4 normal;        ///< xyz unit, lit side
+  glm::vec4 flux;          ///< rgb albedo * Phi / pi, W/sr
+};
+
+/// Spot lights narrower than 60 degrees (half angle) use one view of side
+/// `rsmResolution` covering the cone; wider spots and point lights use six
+/// cube faces of that side. VPLs are in texel order, faces in +X..-Z order.
+std::vector<Vpl> generateVpls(const GpuScene& scene, const capture::Light& light, int rsmResolution,
+                              double indexOfRefraction, const glm::vec3& boundsMin,
+                              const glm::vec3& boundsMax);
+
+}  // namespace tofsim::render

@@ -1,0 +1,94 @@
+#version 450 core
+// One indirect bounce (Eqs. 6, 7, 15, 17): one thread per pixel loops over the
+// batch's VPLs in index order and adds each contribution to the bin of its
+// full optical path  t_l + eta (|x_l - x| + |x - c|). Being the only writer of
+// its pixel's bins, and adding in a fixed order, makes the sum reproducible
+// bit for bit whatever the batch and segment sizes.
+layout(local_size_x = 64) in;
+
+#include "vpl.glsl"
+#ifdef EXACT_VISIBILITY
+#include "scene_geometry.glsl"
+#else
+layout(std430, binding = 7) readonly buffer Ism { float ism[]; };
+uniform uint uVplStride;
+uniform int uIsmResolution;
+#endif
+
+const float PI = 3.14159265358979323846;
+
+layout(binding = 0) uniform sampler2D uGPosition;
+layout(binding = 1) uniform sampler2D uGNormal;
+layout(binding = 2) uniform sampler2D uGAlbedo;
+
+layout(std430, binding = 1) buffer IndirectVolume { float indirect[]; };
+layout(std430, binding = 2) buffer OutsideAxis { float outside[]; };
+
+uniform uint uFirstPixel;
+uniform uint uPixelCount;
+uniform int uImageWidth;
+uniform int uBins;
+uniform float uStart_m;
+uniform float uBinWidth_m;
+uniform float uIndexOfRefraction;
+uniform int uCameraUnwarp;
+uniform vec3 uCameraPosition_world;
+uniform uint uFirstVpl;
+uniform uint uVplCount;
+uniform float uGeometryClamp;  // <= 0: no clamping
+uniform float uSceneScale_m;
+
+bool visible(uint local, Vpl vpl, vec3 x, vec3 n, vec3 d, float dist) {
+#ifdef EXACT_VISIBILITY
+  float eps = 1e-4 * uSceneScale_m;
+  return !segmentOccluded(vpl.positionPath.xyz + vpl.normal.xyz * eps, x + n * eps);
+#else
+  ivec2 texel = paraboloidTexel(vpl, d, uIsmResolution);
+  float stored = ism[local * uVplStride + uint(texel.y * uIsmResolution + texel.x)];
+  // One texel spans about 4/R radians; points are a sparse sample of the
+  // surfaces, so the bias grows with distance.
+  float bias = dist * (4.0 / float(uIsmResolution)) + 0.01 * uSceneScale_m;
+  return dist - bias <= stored;
+#endif
+}
+
+void main() {
+  uint local = gl_GlobalInvocationID.x;
+  if (local >= uPixelCount) return;
+  uint pixel = uFirstPixel + local;
+  ivec2 xy = ivec2(int(pixel % uint(uImageWidth)), int(pixel / uint(uImageWidth)));
+  vec4 position = texelFetch(uGPosition, xy, 0);
+  if (position.w == 0.0) return;
+  vec3 x = position.xyz;
+  vec3 n = texelFetch(uGNormal, xy, 0).xyz;
+  vec3 brdf = texelFetch(uGAlbedo, xy, 0).rgb / PI;
+  float cameraPath = uCameraUnwarp != 0 ? 0.0 : uIndexOfRefraction * length(x - uCameraPosition_world);
+  uint base = local * uint(uBins);
+  float lost = 0.0;
+  for (uint k = 0u; k < uVplCount; ++k) {
+    Vpl vpl = vpls[uFirstVpl + k];
+    vec3 toX = x - vpl.positionPath.xyz;
+    float dist2 = dot(toX, toX);
+    if (dist2 <= 0.0) continue;
+    float dist = sqrt(dist2);
+    vec3 d = toX / dist;
+    float cosVpl = dot(vpl.normal.xyz, d);
+    float cosX = -dot(n, d);
+    if (cosVpl <= 0.0 || cosX <= 0.0) continue;
+    float g = cosVpl * cosX / dist2;
+    if (uGeometryClamp > 0.0) g = min(g, uGeometryClamp);
+    if (!visible(k, vpl, x, n, d, dist)) continue;
+    vec3 radiance = brdf * vpl.flux.rgb * g;
+    float path_m = vpl.positionPath.w + uIndexOfRefraction * dist + cameraPath;
+    int bin = int(floor((path_m - uStart_m) / uBinWidth_m));
+    if (bin < 0 || bin >= uBins) {
+      lost += radiance.r + radiance.g + radiance.b;
+      continue;
+    }
+    uint i = (base + uint(bin)) * 3u;
+    indirect[i + 0u] += radiance.r;
+    indirect[i + 1u] += radiance.g;
+    indirect[i + 2u] += radiance.b;
+  }
+  outside[local] += lost;
+}
