@@ -30,3 +30,14 @@ scene::Scene makePlane(float size_m, const glm::vec3& albedo) {
 }
 
 }  // namespace tofsim::test
+
+namespace tofsim::test {
+
+scene::Scene makeCorner(const glm::vec3& floorAlbedo, const glm::vec3& wallAlbedo) {
+  scene::Scene scene;
+  addQuad(scene, glm::vec3(0.0f, 0.0f, 1.0f), glm::vec3(0, 1, 0), 2.0f, floorAlbedo);
+  addQuad(scene, glm::vec3(0.0f, 1.0f, 0.0f), glm::vec3(0, 0, 1), 2.0f, wallAlbedo);
+  return scene;
+}
+
+}  // namespace tofsim::test

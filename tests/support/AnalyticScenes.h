@@ -14,4 +14,8 @@ void addQuad(scene::Scene& scene, const glm::vec3& center, const glm::vec3& norm
 /// One diffuse square facing +z at z = 0, `size_m` wide.
 scene::Scene makePlane(float size_m, const glm::vec3& albedo = glm::vec3(0.5f));
 
+/// A corner: floor y = 0 (x in [-1, 1], z in [0, 2]) facing +y and wall z = 0
+/// (x in [-1, 1], y in [0, 2]) facing +z.
+scene::Scene makeCorner(const glm::vec3& floorAlbedo, const glm::vec3& wallAlbedo);
+
 }  // namespace tofsim::test
