@@ -57,7 +57,8 @@ TEST(ReferenceClosedFormTest, PeakLandsInTheBinOfTheRoundTripPath) {
   int checked = 0;
   for (int y = 0; y < s.job.camera.height; ++y) {
     for (int x = 0; x < s.job.camera.width; ++x) {
-      const double r = glm::length(hitOnPlane(s.job.camera, x, y) - glm::dvec3(s.job.camera.position_world));
+      const double r =
+          glm::length(hitOnPlane(s.job.camera, x, y) - glm::dvec3(s.job.camera.position_world));
       const auto expected = unambiguousBin(s.job.settings.time, 2.0 * r);
       if (!expected) continue;
       EXPECT_EQ(peakBin(out.direct, y, x), *expected) << "pixel " << x << "," << y;
@@ -81,7 +82,8 @@ TEST(ReferenceClosedFormTest, SteadyRadianceFollowsCosineOverDistanceSquared) {
       const double r = glm::length(l - p);
       const double cosTheta = (l - p).z / r;
       // The depth the renderer reports is the camera-to-surface distance.
-      EXPECT_NEAR(result.depth_m.at(y, x, 0), glm::length(p - glm::dvec3(s.job.camera.position_world)), 1e-5);
+      EXPECT_NEAR(result.depth_m.at(y, x, 0),
+                  glm::length(p - glm::dvec3(s.job.camera.position_world)), 1e-5);
       for (int c = 0; c < 3; ++c) {
         const double expected = albedo[c] / kPi * intensity[c] * cosTheta / (r * r);
         EXPECT_NEAR(steady.at(y, x, c), expected, 0.01 * expected) << x << "," << y;
@@ -99,7 +101,8 @@ TEST(ReferenceClosedFormTest, CameraUnwarpShiftsPeaksByTheCameraDelay) {
   int checked = 0;
   for (int y = 0; y < s.job.camera.height; ++y) {
     for (int x = 0; x < s.job.camera.width; ++x) {
-      const double r = glm::length(hitOnPlane(s.job.camera, x, y) - glm::dvec3(s.job.camera.position_world));
+      const double r =
+          glm::length(hitOnPlane(s.job.camera, x, y) - glm::dvec3(s.job.camera.position_world));
       const auto expected = unambiguousBin(s.job.settings.time, r);  // light -> surface only
       if (!expected) continue;
       EXPECT_EQ(peakBin(out.direct, y, x), *expected);
@@ -117,7 +120,8 @@ TEST(ReferenceClosedFormTest, IndexOfRefractionStretchesTheOpticalPath) {
   int checked = 0;
   for (int y = 0; y < s.job.camera.height; y += 3) {
     for (int x = 0; x < s.job.camera.width; x += 3) {
-      const double r = glm::length(hitOnPlane(s.job.camera, x, y) - glm::dvec3(s.job.camera.position_world));
+      const double r =
+          glm::length(hitOnPlane(s.job.camera, x, y) - glm::dvec3(s.job.camera.position_world));
       const auto expected = unambiguousBin(s.job.settings.time, 1.33 * 2.0 * r);
       if (!expected) continue;
       EXPECT_EQ(peakBin(out.direct, y, x), *expected);
@@ -136,10 +140,12 @@ TEST(ReferenceClosedFormTest, NoEnergyBeforeTheDirectPath) {
   const TransientVolume total = out.total();
   for (int y = 0; y < s.job.camera.height; ++y) {
     for (int x = 0; x < s.job.camera.width; ++x) {
-      const double r = glm::length(hitOnPlane(s.job.camera, x, y) - glm::dvec3(s.job.camera.position_world));
+      const double r =
+          glm::length(hitOnPlane(s.job.camera, x, y) - glm::dvec3(s.job.camera.position_world));
       const int firstAllowed = s.job.settings.time.binOf((2.0 * r - 1e-6) / kSpeedOfLight_m_per_s);
       for (int t = 0; t < firstAllowed; ++t) {
-        for (int c = 0; c < 3; ++c) ASSERT_EQ(total.at(y, x, t, c), 0.0f) << x << "," << y << " t=" << t;
+        for (int c = 0; c < 3; ++c)
+          ASSERT_EQ(total.at(y, x, t, c), 0.0f) << x << "," << y << " t=" << t;
       }
     }
   }
@@ -149,7 +155,8 @@ TEST(ReferenceClosedFormTest, NoEnergyBeforeTheDirectPath) {
 TEST(ReferenceClosedFormTest, OccluderCastsAnExactShadow) {
   test::PlaneJob s;
   const float occluderZ = 0.75f, occluderSize = 0.6f;
-  test::addQuad(s.scene, glm::vec3(0.0f, 0.0f, occluderZ), glm::vec3(0, 0, 1), occluderSize, glm::vec3(0.5f));
+  test::addQuad(s.scene, glm::vec3(0.0f, 0.0f, occluderZ), glm::vec3(0, 0, 1), occluderSize,
+                glm::vec3(0.5f));
   s.job.camera.position_world = {1.2f, 0.3f, 1.6f};
   s.job.camera.look_at_world = {0.0f, 0.0f, 0.0f};
   s.job.light.position_world = {0.0f, 0.0f, 1.5f};
@@ -187,7 +194,8 @@ TEST(ReferenceClosedFormTest, LightInViewLandsInItsPixelAtItsDistance) {
   const VolumeCollector out = test::renderReference(s.job, directOnly());
   const glm::ivec2 xy = s.job.camera.project(s.job.light.position_world);
   ASSERT_GE(xy.x, 0);
-  const double d = glm::length(glm::dvec3(s.job.light.position_world) - glm::dvec3(s.job.camera.position_world));
+  const double d =
+      glm::length(glm::dvec3(s.job.light.position_world) - glm::dvec3(s.job.camera.position_world));
   const int bin = s.job.settings.time.binOf(d / kSpeedOfLight_m_per_s);
   const double solidAngle = s.job.camera.pixelSolidAngle_sr(xy.x, xy.y);
   for (int c = 0; c < 3; ++c) {

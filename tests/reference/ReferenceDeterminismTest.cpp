@@ -73,10 +73,11 @@ TEST(ReferenceDeterminismTest, ProgressReportsEverySegment) {
   s.job.settings.memory_budget_bytes = 8 * 1000 * 3 * sizeof(float) * 2 * 2;  // two rows
   std::vector<std::size_t> done;
   VolumeCollector sink(8, 8, s.job.settings.time, 3);
-  ReferenceRenderer(threeBounces(2)).render(s.job, sink, [&](std::size_t d, std::size_t total, const std::string&) {
-    EXPECT_EQ(total, 4u);
-    done.push_back(d);
-  });
+  ReferenceRenderer(threeBounces(2))
+      .render(s.job, sink, [&](std::size_t d, std::size_t total, const std::string&) {
+        EXPECT_EQ(total, 4u);
+        done.push_back(d);
+      });
   EXPECT_EQ(done, (std::vector<std::size_t>{1, 2, 3, 4}));
 }
 

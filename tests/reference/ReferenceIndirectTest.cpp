@@ -69,7 +69,8 @@ TEST(ReferenceIndirectTest, NoIndirectEnergyBeforeTheShortestTwoBouncePath) {
 // quadrature over the other plane: rho_x / pi * sum rho_y / pi * I cos_l / d_l^2
 // * cos_x cos_y / r^2 dA.
 glm::dvec3 oneBounceByQuadrature(const test::CornerJob& s, const glm::dvec3& x, bool xOnFloor) {
-  const glm::dvec3 floorAlbedo(s.scene.materials[0].albedo), wallAlbedo(s.scene.materials[1].albedo);
+  const glm::dvec3 floorAlbedo(s.scene.materials[0].albedo),
+      wallAlbedo(s.scene.materials[1].albedo);
   const glm::dvec3 nx = xOnFloor ? glm::dvec3(0, 1, 0) : glm::dvec3(0, 0, 1);
   const glm::dvec3 ny = xOnFloor ? glm::dvec3(0, 0, 1) : glm::dvec3(0, 1, 0);
   const glm::dvec3 l(s.job.light.position_world), intensity(s.job.light.intensity_W_per_sr);

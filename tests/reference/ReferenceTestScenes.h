@@ -34,8 +34,10 @@ struct CornerJob {
   scene::Scene scene;
   capture::RenderJob job;
   explicit CornerJob(int32_t side = 16) {
-    addQuad(scene, glm::vec3(0.0f, 0.0f, 0.0f), glm::vec3(0, 1, 0), 2.0f, glm::vec3(0.7f, 0.6f, 0.5f));
-    addQuad(scene, glm::vec3(0.0f, 1.0f, -1.0f), glm::vec3(0, 0, 1), 2.0f, glm::vec3(0.3f, 0.8f, 0.4f));
+    addQuad(scene, glm::vec3(0.0f, 0.0f, 0.0f), glm::vec3(0, 1, 0), 2.0f,
+            glm::vec3(0.7f, 0.6f, 0.5f));
+    addQuad(scene, glm::vec3(0.0f, 1.0f, -1.0f), glm::vec3(0, 0, 1), 2.0f,
+            glm::vec3(0.3f, 0.8f, 0.4f));
     job.scene = &scene;
     job.camera.position_world = {0.3f, 1.2f, 2.0f};
     job.camera.look_at_world = {0.0f, 0.4f, -0.5f};

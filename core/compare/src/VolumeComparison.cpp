@@ -28,8 +28,9 @@ void requireSameShape(const TransientVolume& a, const TransientVolume& b) {
   if (!nearlyEqual(a.axis().start_s, b.axis().start_s) ||
       !nearlyEqual(a.axis().bin_width_s, b.axis().bin_width_s)) {
     throw InputError("cannot compare volumes with different time axes (start " +
-                     std::to_string(a.axis().start_s) + " s vs " + std::to_string(b.axis().start_s) +
-                     " s, bin width " + std::to_string(a.axis().bin_width_s) + " s vs " +
+                     std::to_string(a.axis().start_s) + " s vs " +
+                     std::to_string(b.axis().start_s) + " s, bin width " +
+                     std::to_string(a.axis().bin_width_s) + " s vs " +
                      std::to_string(b.axis().bin_width_s) + " s)");
   }
 }

@@ -15,10 +15,7 @@ constexpr int kChannels = 3;
 
 PathIntegrator::PathIntegrator(const RayScene& scene, const capture::RenderJob& job,
                                int32_t bounces, int32_t samplesPerPixel)
-    : scene_(scene),
-      job_(job),
-      bounces_(bounces),
-      samplesPerPixel_(samplesPerPixel) {}
+    : scene_(scene), job_(job), bounces_(bounces), samplesPerPixel_(samplesPerPixel) {}
 
 PathIntegrator::Radiance PathIntegrator::lightReflectedAt(const SurfaceHit& hit) const {
   // The GL direct gather's formula: albedo / pi * I * profile * cos / r^2.
@@ -86,8 +83,7 @@ void PathIntegrator::renderPixel(int32_t x, int32_t y, PixelOutput& out,
       const float u2 = rng.nextFloat();
       const glm::vec3 wi = cosineSampleHemisphere(current.normal_world, u1, u2);
       if (glm::dot(wi, current.geometric_world) <= 0.0f) break;  // below the true surface
-      const std::optional<SurfaceHit> next =
-          scene_.intersect(scene_.offsetOrigin(current, wi), wi);
+      const std::optional<SurfaceHit> next = scene_.intersect(scene_.offsetOrigin(current, wi), wi);
       if (!next) break;
       fromCamera_m += glm::length(next->position_world - current.position_world);
       const Radiance reflected = lightReflectedAt(*next);

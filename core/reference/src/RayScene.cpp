@@ -39,12 +39,12 @@ RayScene::RayScene(const scene::Scene& scene, int threads) : scene_(scene) {
     if (mesh.triangleCount() == 0) continue;
     RTCGeometry geometry = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_TRIANGLE);
     // Copies into Embree-owned (padded) buffers; the scene's vectors are not padded.
-    auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(
-        geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float),
-        mesh.positions_world.size()));
-    auto* indices = static_cast<uint32_t*>(rtcSetNewGeometryBuffer(
-        geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(uint32_t),
-        mesh.triangleCount()));
+    auto* vertices = static_cast<float*>(
+        rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
+                                3 * sizeof(float), mesh.positions_world.size()));
+    auto* indices = static_cast<uint32_t*>(
+        rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
+                                3 * sizeof(uint32_t), mesh.triangleCount()));
     throwIfDeviceError(device_, "buffer allocation");
     for (std::size_t i = 0; i < mesh.positions_world.size(); ++i) {
       for (int k = 0; k < 3; ++k) vertices[3 * i + k] = mesh.positions_world[i][k];

@@ -6,7 +6,6 @@
 #include <embree3/rtcore.h>
 
 #include <glm/glm.hpp>
-
 #include <optional>
 
 #include "tofsim/scene/Scene.h"
@@ -16,7 +15,7 @@ namespace tofsim::reference {
 struct SurfaceHit {
   float distance_m = 0.0f;  ///< along the (unit) ray direction
   glm::vec3 position_world{0.0f};
-  glm::vec3 normal_world{0.0f};    ///< interpolated shading normal, facing the ray origin
+  glm::vec3 normal_world{0.0f};     ///< interpolated shading normal, facing the ray origin
   glm::vec3 geometric_world{0.0f};  ///< triangle normal, facing the ray origin
   glm::vec3 albedo{0.0f};
 };

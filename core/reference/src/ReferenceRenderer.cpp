@@ -52,9 +52,11 @@ int32_t threadCount(int32_t requested) {
 int32_t rowsPerSegment(const RenderJob& job, int32_t threads) {
   const std::size_t rowBytes = static_cast<std::size_t>(job.camera.width) * job.settings.time.bins *
                                kChannels * sizeof(float) * 2;
-  const std::size_t byBudget = std::max<std::size_t>(1, job.settings.memory_budget_bytes / rowBytes);
+  const std::size_t byBudget =
+      std::max<std::size_t>(1, job.settings.memory_budget_bytes / rowBytes);
   const std::size_t cap = std::max<std::size_t>(16, static_cast<std::size_t>(threads) * 4);
-  return static_cast<int32_t>(std::min({byBudget, cap, static_cast<std::size_t>(job.camera.height)}));
+  return static_cast<int32_t>(
+      std::min({byBudget, cap, static_cast<std::size_t>(job.camera.height)}));
 }
 
 // The light seen straight by the camera needs the first surface at its pixel
@@ -64,7 +66,8 @@ DirectLightView lightSeenByCamera(const RenderJob& job, const RayScene& scene) {
   const glm::ivec2 xy = camera.project(job.light.position_world);
   std::vector<float> positions(static_cast<std::size_t>(camera.width) * camera.height * 4, 0.0f);
   if (xy.x >= 0) {
-    if (const auto hit = scene.intersect(camera.position_world, camera.pixelDirection(xy.x, xy.y))) {
+    if (const auto hit =
+            scene.intersect(camera.position_world, camera.pixelDirection(xy.x, xy.y))) {
       float* p = &positions[(static_cast<std::size_t>(xy.y) * camera.width + xy.x) * 4];
       p[0] = hit->position_world.x;
       p[1] = hit->position_world.y;

@@ -1,9 +1,8 @@
 #pragma once
 // Direction sampling for diffuse surfaces.
 
-#include <glm/glm.hpp>
-
 #include <cmath>
+#include <glm/glm.hpp>
 
 namespace tofsim::reference {
 

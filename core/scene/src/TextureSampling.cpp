@@ -24,7 +24,8 @@ glm::vec3 sampleBilinear(const Texture& texture, const glm::vec2& uv) {
   const float fs = s - s0, ft = t - t0;
   const auto texel = [&](int i, int j) {
     const std::size_t k = (static_cast<std::size_t>(wrap(j, texture.height)) * texture.width +
-                           static_cast<std::size_t>(wrap(i, texture.width))) * 3;
+                           static_cast<std::size_t>(wrap(i, texture.width))) *
+                          3;
     return glm::vec3(texture.rgb[k], texture.rgb[k + 1], texture.rgb[k + 2]);
   };
   const int i0 = static_cast<int>(s0), j0 = static_cast<int>(t0);
@@ -36,7 +37,8 @@ glm::vec3 sampleBilinear(const Texture& texture, const glm::vec2& uv) {
 glm::vec3 materialAlbedo(const Scene& scene, int32_t material, const glm::vec2& uv) {
   const Material& m = scene.materials.at(static_cast<std::size_t>(material));
   if (m.albedoTexture < 0) return m.albedo;
-  return m.albedo * sampleBilinear(scene.textures.at(static_cast<std::size_t>(m.albedoTexture)), uv);
+  return m.albedo *
+         sampleBilinear(scene.textures.at(static_cast<std::size_t>(m.albedoTexture)), uv);
 }
 
 }  // namespace tofsim::scene

@@ -33,12 +33,12 @@ struct CompareOptions {
 struct VolumeComparison {
   TimeAxis axis;  ///< shared by A and B
   double steadyRelativeL1 = 0.0;
-  double steadyRmse = 0.0;          ///< W / (m^2 sr)
+  double steadyRmse = 0.0;  ///< W / (m^2 sr)
   double transientRelativeL1 = 0.0;
   /// Mean and max of |arrival_A - arrival_B| over pixels where both arrive, s.
   double meanEarliestArrivalDifference_s = 0.0;
   double maxEarliestArrivalDifference_s = 0.0;
-  std::size_t arrivalPixelsCompared = 0;  ///< pixels with an arrival in both
+  std::size_t arrivalPixelsCompared = 0;   ///< pixels with an arrival in both
   std::size_t arrivalPixelsUnmatched = 0;  ///< pixels with an arrival in one only
   /// Per pixel arrival_A - arrival_B (H, W, 1), seconds; 0 where not compared.
   Image earliestArrivalDifference_s;
