@@ -204,6 +204,16 @@ TEST(ReferenceClosedFormTest, LightInViewLandsInItsPixelAtItsDistance) {
   }
 }
 
+TEST(ReferenceClosedFormTest, LightBehindTheSurfaceIsHidden) {
+  test::PlaneJob s;
+  s.job.light.position_world = {0.2f, 0.1f, -0.5f};  // behind the plane, inside the view
+  ASSERT_GE(s.job.camera.project(s.job.light.position_world).x, 0);
+  const VolumeCollector out = test::renderReference(s.job, directOnly());
+  // The plane is lit from behind only: two-sided, but facing the camera it
+  // turns away from the light, so nothing reaches the camera at all.
+  for (float v : out.direct.values()) ASSERT_EQ(v, 0.0f);
+}
+
 TEST(ReferenceClosedFormTest, EnergyOffTheAxisIsCountedNotBinned) {
   test::PlaneJob s;
   const Image full = steadyImage(test::renderReference(s.job, directOnly()).direct);

@@ -59,23 +59,15 @@ int32_t rowsPerSegment(const RenderJob& job, int32_t threads) {
       std::min({byBudget, cap, static_cast<std::size_t>(job.camera.height)}));
 }
 
-// The light seen straight by the camera needs the first surface at its pixel
-// only; DirectLightView reads it from a G-buffer-like position array.
+// The light seen straight by the camera: only the first surface at its pixel
+// matters, traced on demand.
 DirectLightView lightSeenByCamera(const RenderJob& job, const RayScene& scene) {
   const Camera& camera = job.camera;
-  const glm::ivec2 xy = camera.project(job.light.position_world);
-  std::vector<float> positions(static_cast<std::size_t>(camera.width) * camera.height * 4, 0.0f);
-  if (xy.x >= 0) {
-    if (const auto hit =
-            scene.intersect(camera.position_world, camera.pixelDirection(xy.x, xy.y))) {
-      float* p = &positions[(static_cast<std::size_t>(xy.y) * camera.width + xy.x) * 4];
-      p[0] = hit->position_world.x;
-      p[1] = hit->position_world.y;
-      p[2] = hit->position_world.z;
-      p[3] = 1.0f;
-    }
-  }
-  return directLightView(job, positions);
+  return directLightView(job, [&](int32_t x, int32_t y) -> std::optional<glm::vec3> {
+    const auto hit = scene.intersect(camera.position_world, camera.pixelDirection(x, y));
+    if (!hit) return std::nullopt;
+    return hit->position_world;
+  });
 }
 
 }  // namespace
