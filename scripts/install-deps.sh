@@ -8,6 +8,7 @@ packages=(
   libegl-dev libgl-dev libegl-mesa0 libgl1-mesa-dri  # headless GL: EGL + Mesa llvmpipe
   libglm-dev libtinygltf-dev nlohmann-json3-dev libyaml-cpp-dev libcli11-dev
   libopenexr-dev libopencv-dev libgtest-dev
+  libembree-dev                                      # the CPU reference path tracer
 )
 
 missing=()

@@ -5,6 +5,15 @@
 namespace tofsim::capture {
 
 DirectLightView directLightView(const RenderJob& job, const std::vector<float>& positions) {
+  const int32_t width = job.camera.width;
+  return directLightView(job, [&](int32_t x, int32_t y) -> std::optional<glm::vec3> {
+    const float* p = &positions[(static_cast<std::size_t>(y) * width + x) * 4];
+    if (p[3] == 0.0f) return std::nullopt;
+    return glm::vec3(p[0], p[1], p[2]);
+  });
+}
+
+DirectLightView directLightView(const RenderJob& job, const FirstSurface& firstSurface) {
   DirectLightView view;
   const Camera& camera = job.camera;
   const glm::vec3 toCamera = camera.position_world - job.light.position_world;
@@ -15,8 +24,8 @@ DirectLightView directLightView(const RenderJob& job, const std::vector<float>& 
   const float profile = job.light.angularProfile(toCamera / d);
   if (profile <= 0.0f) return view;
   view.pixel = static_cast<std::size_t>(xy.y) * camera.width + xy.x;
-  const float* p = &positions[view.pixel * 4];
-  if (p[3] != 0.0f && glm::length(glm::vec3(p[0], p[1], p[2]) - camera.position_world) < d) {
+  const std::optional<glm::vec3> surface = firstSurface(xy.x, xy.y);
+  if (surface && glm::length(*surface - camera.position_world) < d) {
     return view;  // a surface in front of the light hides it
   }
   view.visible = true;
@@ -29,8 +38,8 @@ DirectLightView directLightView(const RenderJob& job, const std::vector<float>& 
   return view;
 }
 
-double DirectLightView::addTo(std::size_t firstPixel, std::size_t pixelCount,
-                              const TimeAxis& axis, int channels, float* direct) const {
+double DirectLightView::addTo(std::size_t firstPixel, std::size_t pixelCount, const TimeAxis& axis,
+                              int channels, float* direct) const {
   if (!visible || pixel < firstPixel || pixel >= firstPixel + pixelCount) return 0.0;
   if (bin < 0) return static_cast<double>(radiance.r) + radiance.g + radiance.b;
   float* out = direct + ((pixel - firstPixel) * axis.bins + bin) * channels;

@@ -4,6 +4,8 @@
 // into: L = I / (d^2 * pixel solid angle), arriving after eta * d / c.
 
 #include <cstddef>
+#include <functional>
+#include <optional>
 #include <vector>
 
 #include "tofsim/capture/RenderJob.h"
@@ -24,5 +26,10 @@ struct DirectLightView {
 
 /// `positions`: the G-buffer's RGBA world positions, row 0 at the top.
 DirectLightView directLightView(const RenderJob& job, const std::vector<float>& positions);
+
+/// The first surface point seen through pixel (x, y), if any.
+using FirstSurface = std::function<std::optional<glm::vec3>(int32_t x, int32_t y)>;
+/// Same, for renderers without a G-buffer: asks for the light's pixel only.
+DirectLightView directLightView(const RenderJob& job, const FirstSurface& firstSurface);
 
 }  // namespace tofsim::capture

@@ -1,0 +1,52 @@
+#pragma once
+// A CPU transient path tracer: the ground truth the GL renderer is measured
+// against. Same job, result and segment stream as render::TransientRenderer.
+//
+// Estimator (see core/reference/README.md):
+//  - one primary ray through each pixel centre, as the GL G-buffer;
+//  - bounce 1 (direct light) evaluated exactly with a shadow ray: no noise, the
+//    same formula and time binning as the GL direct gather. Goes to Segment::direct,
+//    with the light seen straight by the camera (capture::DirectLightView);
+//  - bounces 2..n: samples_per_pixel cosine-sampled continuations of fixed depth
+//    (no Russian roulette), next-event estimation towards the light at every
+//    vertex, each contribution binned at its full optical path. Segment::indirect.
+// Deterministic: every pixel draws from its own generator seeded with
+// (RenderSettings::seed, pixel index), so the bytes depend neither on the
+// thread count nor on scheduling.
+
+#include <cstdint>
+
+#include "tofsim/capture/RenderJob.h"
+#include "tofsim/capture/SegmentSink.h"
+
+namespace tofsim::reference {
+
+struct ReferenceSettings {
+  /// Surface interactions per path: 1 = direct only, 2 = direct + one indirect
+  /// bounce (the paper's), n = up to n - 1 indirect bounces. >= 1.
+  int32_t bounces = 2;
+  /// Indirect paths per pixel; the direct term needs none. >= 1.
+  int32_t samples_per_pixel = 64;
+  /// Worker threads; 0 = std::thread::hardware_concurrency().
+  int32_t threads = 0;
+};
+
+class ReferenceRenderer {
+ public:
+  explicit ReferenceRenderer(ReferenceSettings settings);
+
+  /// Renders the job and streams the volume to `sink` in row-aligned segments,
+  /// in order. RenderSettings::indirect.enabled = false renders bounce 1 only;
+  /// the other IndirectSettings (VPLs, ISMs) and shadow_map_resolution do not
+  /// apply. memory_budget_bytes bounds the host buffers of one segment.
+  /// Throws InputError for invalid settings.
+  capture::RenderResult render(const capture::RenderJob& job, capture::SegmentSink& sink,
+                               const capture::ProgressCallback& progress = {}) const;
+
+  const ReferenceSettings& settings() const { return settings_; }
+
+ private:
+  ReferenceSettings settings_;
+};
+
+}  // namespace tofsim::reference

@@ -1,0 +1,109 @@
+#include "PathIntegrator.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "Sampling.h"
+#include "tofsim/volume/PhysicalConstants.h"
+
+namespace tofsim::reference {
+
+namespace {
+constexpr double kPi = 3.14159265358979323846;
+constexpr int kChannels = 3;
+}  // namespace
+
+PathIntegrator::PathIntegrator(const RayScene& scene, const capture::RenderJob& job,
+                               int32_t bounces, int32_t samplesPerPixel)
+    : scene_(scene), job_(job), bounces_(bounces), samplesPerPixel_(samplesPerPixel) {}
+
+PathIntegrator::Radiance PathIntegrator::lightReflectedAt(const SurfaceHit& hit) const {
+  // The GL direct gather's formula: albedo / pi * I * profile * cos / r^2.
+  Radiance out;
+  const capture::Light& light = job_.light;
+  const glm::vec3 toLight = light.position_world - hit.position_world;
+  const float d = glm::length(toLight);
+  if (d <= 0.0f) return out;
+  const glm::vec3 w = toLight / d;
+  const float cosX = glm::dot(hit.normal_world, w);
+  if (cosX <= 0.0f) return out;
+  const float profile = light.angularProfile(-w);
+  if (profile <= 0.0f) return out;
+  if (scene_.occluded(scene_.offsetOrigin(hit, w), light.position_world)) return out;
+  const double scale = static_cast<double>(profile) * cosX / (static_cast<double>(d) * d) / kPi;
+  out.value = glm::dvec3(hit.albedo) * glm::dvec3(light.intensity_W_per_sr) * scale;
+  out.path_m = d;
+  out.valid = true;
+  return out;
+}
+
+int32_t PathIntegrator::binOfPath(double path_m) const {
+  const double optical_m = job_.settings.index_of_refraction * path_m;
+  return job_.settings.time.binOf(optical_m / kSpeedOfLight_m_per_s);
+}
+
+void PathIntegrator::renderPixel(int32_t x, int32_t y, PixelOutput& out,
+                                 std::vector<double>& scratch) const {
+  const capture::Camera& camera = job_.camera;
+  const glm::vec3 eye = camera.position_world;
+  const std::optional<SurfaceHit> primary = scene_.intersect(eye, camera.pixelDirection(x, y));
+  if (!primary) return;
+  const SurfaceHit& hit = *primary;
+  const double cameraLeg_m = glm::length(hit.position_world - eye);
+  out.depth_m = static_cast<float>(cameraLeg_m);
+  // Unwarped time is the time at the first surface: drop the surface -> camera leg.
+  const double toCamera_m = job_.settings.camera_unwarp ? 0.0 : cameraLeg_m;
+  const std::size_t floats = static_cast<std::size_t>(job_.settings.time.bins) * kChannels;
+
+  // Bounce 1: exact, no sampling.
+  const Radiance direct = lightReflectedAt(hit);
+  if (direct.valid) {
+    const int32_t b = binOfPath(direct.path_m + toCamera_m);
+    if (b < 0) {
+      out.outsideAxis += direct.value.r + direct.value.g + direct.value.b;
+    } else {
+      float* bin = out.direct + static_cast<std::size_t>(b) * kChannels;
+      for (int c = 0; c < kChannels; ++c) bin[c] = static_cast<float>(direct.value[c]);
+    }
+  }
+  if (bounces_ < 2) return;
+
+  // Bounces 2..n: fixed-depth cosine-sampled paths with next-event estimation.
+  // Lambertian f = albedo / pi and pdf = cos / pi: the throughput gains albedo.
+  scratch.assign(floats, 0.0);
+  double outside = 0.0;
+  Pcg32 rng = Pcg32::forUnit(job_.settings.seed,
+                             static_cast<uint64_t>(y) * static_cast<uint64_t>(camera.width) + x);
+  for (int32_t s = 0; s < samplesPerPixel_; ++s) {
+    SurfaceHit current = hit;
+    glm::dvec3 throughput(hit.albedo);
+    double fromCamera_m = toCamera_m;
+    for (int32_t depth = 2; depth <= bounces_; ++depth) {
+      const float u1 = rng.nextFloat();
+      const float u2 = rng.nextFloat();
+      const glm::vec3 wi = cosineSampleHemisphere(current.normal_world, u1, u2);
+      if (glm::dot(wi, current.geometric_world) <= 0.0f) break;  // below the true surface
+      const std::optional<SurfaceHit> next = scene_.intersect(scene_.offsetOrigin(current, wi), wi);
+      if (!next) break;
+      fromCamera_m += glm::length(next->position_world - current.position_world);
+      const Radiance reflected = lightReflectedAt(*next);
+      if (reflected.valid) {
+        const glm::dvec3 value = throughput * reflected.value;
+        const int32_t b = binOfPath(reflected.path_m + fromCamera_m);
+        if (b < 0) {
+          outside += value.r + value.g + value.b;
+        } else {
+          double* bin = scratch.data() + static_cast<std::size_t>(b) * kChannels;
+          for (int c = 0; c < kChannels; ++c) bin[c] += value[c];
+        }
+      }
+      throughput *= glm::dvec3(next->albedo);
+      current = *next;
+    }
+  }
+  const double norm = 1.0 / samplesPerPixel_;
+  for (std::size_t i = 0; i < floats; ++i) out.indirect[i] = static_cast<float>(scratch[i] * norm);
+  out.outsideAxis += outside * norm;
+}
+
+}  // namespace tofsim::reference

@@ -1,0 +1,49 @@
+#pragma once
+// The per-pixel estimator of the reference renderer. Accumulates one pixel's
+// direct and indirect histograms; knows nothing of threads or segments.
+
+#include <cstdint>
+#include <vector>
+
+#include "RayScene.h"
+#include "tofsim/capture/RenderJob.h"
+#include "tofsim/util/Random.h"
+
+namespace tofsim::reference {
+
+struct PixelOutput {
+  float* direct = nullptr;    ///< T * 3 floats, zeroed by the caller
+  float* indirect = nullptr;  ///< T * 3 floats, zeroed by the caller
+  float depth_m = 0.0f;       ///< camera-to-surface distance; 0 when no surface
+  double outsideAxis = 0.0;   ///< radiance (summed over channels) off the time axis
+};
+
+class PathIntegrator {
+ public:
+  /// bounces >= 1; samplesPerPixel >= 1.
+  PathIntegrator(const RayScene& scene, const capture::RenderJob& job, int32_t bounces,
+                 int32_t samplesPerPixel);
+
+  /// Renders pixel (x, y). `scratch` is reused between calls of one thread.
+  void renderPixel(int32_t x, int32_t y, PixelOutput& out, std::vector<double>& scratch) const;
+
+ private:
+  struct Radiance {
+    glm::dvec3 value{0.0};
+    double path_m = 0.0;  ///< geometric distance light -> surface, metres
+    bool valid = false;
+  };
+  /// Radiance `hit` reflects towards its normal side straight from the light,
+  /// tested with one shadow ray; path_m is the light -> hit distance.
+  Radiance lightReflectedAt(const SurfaceHit& hit) const;
+  /// Time bin of a geometric path length (metres, before the index of
+  /// refraction), -1 when it falls off the axis. Same rule as TimeAxis::binOf.
+  int32_t binOfPath(double path_m) const;
+
+  const RayScene& scene_;
+  const capture::RenderJob& job_;
+  int32_t bounces_;
+  int32_t samplesPerPixel_;
+};
+
+}  // namespace tofsim::reference

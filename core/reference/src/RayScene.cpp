@@ -1,0 +1,141 @@
+#include "RayScene.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <string>
+
+#include "tofsim/scene/TextureSampling.h"
+#include "tofsim/util/Error.h"
+
+namespace tofsim::reference {
+
+namespace {
+
+void throwIfDeviceError(RTCDevice device, const char* what) {
+  const RTCError error = rtcGetDeviceError(device);
+  if (error != RTC_ERROR_NONE) {
+    throw InputError(std::string("embree: ") + what + " failed (error " +
+                     std::to_string(static_cast<int>(error)) + ")");
+  }
+}
+
+glm::vec3 faceTowards(glm::vec3 n, const glm::vec3& towards) {
+  return glm::dot(n, towards) < 0.0f ? -n : n;
+}
+
+}  // namespace
+
+RayScene::RayScene(const scene::Scene& scene, int threads) : scene_(scene) {
+  const std::string config = threads > 0 ? "threads=" + std::to_string(threads) : std::string();
+  device_ = rtcNewDevice(config.c_str());
+  if (device_ == nullptr) throw InputError("embree: cannot create a device");
+  rtcScene_ = rtcNewScene(device_);
+  // Robust: watertight traversal, so rays through shared edges never slip through.
+  rtcSetSceneFlags(rtcScene_, RTC_SCENE_FLAG_ROBUST);
+  rtcSetSceneBuildQuality(rtcScene_, RTC_BUILD_QUALITY_HIGH);
+  for (std::size_t m = 0; m < scene.meshes.size(); ++m) {
+    const scene::Mesh& mesh = scene.meshes[m];
+    if (mesh.triangleCount() == 0) continue;
+    RTCGeometry geometry = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_TRIANGLE);
+    // Copies into Embree-owned (padded) buffers; the scene's vectors are not padded.
+    auto* vertices = static_cast<float*>(
+        rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
+                                3 * sizeof(float), mesh.positions_world.size()));
+    auto* indices = static_cast<uint32_t*>(
+        rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
+                                3 * sizeof(uint32_t), mesh.triangleCount()));
+    throwIfDeviceError(device_, "buffer allocation");
+    for (std::size_t i = 0; i < mesh.positions_world.size(); ++i) {
+      for (int k = 0; k < 3; ++k) vertices[3 * i + k] = mesh.positions_world[i][k];
+    }
+    std::copy_n(mesh.indices.data(), mesh.triangleCount() * 3, indices);
+    rtcCommitGeometry(geometry);
+    rtcAttachGeometryByID(rtcScene_, geometry, static_cast<unsigned>(m));
+    rtcReleaseGeometry(geometry);
+  }
+  rtcCommitScene(rtcScene_);
+  throwIfDeviceError(device_, "BVH build");
+  const scene::Bounds b = scene.bounds();
+  epsilon_m_ = std::max(1e-5f * glm::length(b.max - b.min), 1e-7f);
+}
+
+RayScene::~RayScene() {
+  if (rtcScene_ != nullptr) rtcReleaseScene(rtcScene_);
+  if (device_ != nullptr) rtcReleaseDevice(device_);
+}
+
+std::optional<SurfaceHit> RayScene::intersect(const glm::vec3& origin, const glm::vec3& direction,
+                                              float tNear) const {
+  RTCIntersectContext context;
+  rtcInitIntersectContext(&context);
+  RTCRayHit rh{};
+  rh.ray.org_x = origin.x;
+  rh.ray.org_y = origin.y;
+  rh.ray.org_z = origin.z;
+  rh.ray.dir_x = direction.x;
+  rh.ray.dir_y = direction.y;
+  rh.ray.dir_z = direction.z;
+  rh.ray.tnear = tNear;
+  rh.ray.tfar = std::numeric_limits<float>::infinity();
+  rh.ray.mask = 0xFFFFFFFFu;
+  rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+  rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+  rtcIntersect1(rtcScene_, &context, &rh);
+  if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return std::nullopt;
+
+  const scene::Mesh& mesh = scene_.meshes[rh.hit.geomID];
+  const uint32_t* tri = &mesh.indices[static_cast<std::size_t>(rh.hit.primID) * 3];
+  const float u = rh.hit.u, v = rh.hit.v, w = 1.0f - u - v;
+  SurfaceHit hit;
+  hit.distance_m = rh.ray.tfar;
+  // Barycentric interpolation, like the rasterizer's G-buffer, rather than
+  // origin + t * direction: it lies on the triangle to float precision.
+  const glm::vec3& p0 = mesh.positions_world[tri[0]];
+  const glm::vec3& p1 = mesh.positions_world[tri[1]];
+  const glm::vec3& p2 = mesh.positions_world[tri[2]];
+  hit.position_world = w * p0 + u * p1 + v * p2;
+  const glm::vec3 back = -direction;
+  hit.geometric_world = faceTowards(glm::normalize(glm::cross(p1 - p0, p2 - p0)), back);
+  glm::vec3 n = hit.geometric_world;
+  if (mesh.normals_world.size() == mesh.positions_world.size()) {
+    const glm::vec3 interpolated = w * mesh.normals_world[tri[0]] + u * mesh.normals_world[tri[1]] +
+                                   v * mesh.normals_world[tri[2]];
+    if (glm::dot(interpolated, interpolated) > 0.0f) n = glm::normalize(interpolated);
+  }
+  hit.normal_world = faceTowards(n, back);
+  glm::vec2 uv(0.0f);
+  if (mesh.uvs.size() == mesh.positions_world.size()) {
+    uv = w * mesh.uvs[tri[0]] + u * mesh.uvs[tri[1]] + v * mesh.uvs[tri[2]];
+  }
+  hit.albedo = scene::materialAlbedo(scene_, mesh.material, uv);
+  return hit;
+}
+
+bool RayScene::occluded(const glm::vec3& from, const glm::vec3& to) const {
+  const glm::vec3 d = to - from;
+  const float length = glm::length(d);
+  if (length <= 2.0f * epsilon_m_) return false;
+  RTCIntersectContext context;
+  rtcInitIntersectContext(&context);
+  RTCRay ray{};
+  ray.org_x = from.x;
+  ray.org_y = from.y;
+  ray.org_z = from.z;
+  ray.dir_x = d.x / length;
+  ray.dir_y = d.y / length;
+  ray.dir_z = d.z / length;
+  ray.tnear = 0.0f;
+  // Stop short of the end point so the surface `to` lies on does not count.
+  ray.tfar = length - epsilon_m_;
+  ray.mask = 0xFFFFFFFFu;
+  rtcOccluded1(rtcScene_, &context, &ray);
+  return ray.tfar < 0.0f;  // Embree sets tfar to -inf on a hit
+}
+
+glm::vec3 RayScene::offsetOrigin(const SurfaceHit& hit, const glm::vec3& towards) const {
+  const glm::vec3 n = faceTowards(hit.geometric_world, towards);
+  return hit.position_world + n * epsilon_m_;
+}
+
+}  // namespace tofsim::reference

@@ -1,0 +1,52 @@
+#pragma once
+// The scene's triangles in an Embree BVH, and what the path tracer needs to
+// know about a hit: position, normals facing the incoming ray (surfaces are
+// two-sided, as in the GL renderer) and albedo.
+
+#include <embree3/rtcore.h>
+
+#include <glm/glm.hpp>
+#include <optional>
+
+#include "tofsim/scene/Scene.h"
+
+namespace tofsim::reference {
+
+struct SurfaceHit {
+  float distance_m = 0.0f;  ///< along the (unit) ray direction
+  glm::vec3 position_world{0.0f};
+  glm::vec3 normal_world{0.0f};     ///< interpolated shading normal, facing the ray origin
+  glm::vec3 geometric_world{0.0f};  ///< triangle normal, facing the ray origin
+  glm::vec3 albedo{0.0f};
+};
+
+class RayScene {
+ public:
+  /// threads: Embree's build threads, 0 = all.
+  RayScene(const scene::Scene& scene, int threads);
+  ~RayScene();
+  RayScene(const RayScene&) = delete;
+  RayScene& operator=(const RayScene&) = delete;
+
+  /// Closest hit along origin + t * direction (direction unit), t in (tNear, inf).
+  std::optional<SurfaceHit> intersect(const glm::vec3& origin, const glm::vec3& direction,
+                                      float tNear = 0.0f) const;
+  /// True when something lies strictly between `from` and `to`. `from` should
+  /// already be offset off its surface (see offsetOrigin).
+  bool occluded(const glm::vec3& from, const glm::vec3& to) const;
+
+  /// A ray origin moved off the surface along the geometric normal, on the side
+  /// `towards` points to, far enough to avoid hitting the surface itself.
+  glm::vec3 offsetOrigin(const SurfaceHit& hit, const glm::vec3& towards) const;
+
+  /// A length proportional to the scene's size, for self-intersection epsilons.
+  float epsilon_m() const { return epsilon_m_; }
+
+ private:
+  const scene::Scene& scene_;
+  RTCDevice device_ = nullptr;
+  RTCScene rtcScene_ = nullptr;
+  float epsilon_m_ = 1e-5f;
+};
+
+}  // namespace tofsim::reference

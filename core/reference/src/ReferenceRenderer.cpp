@@ -1,0 +1,149 @@
+#include "tofsim/reference/ReferenceRenderer.h"
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "PathIntegrator.h"
+#include "RayScene.h"
+#include "tofsim/capture/DirectLightView.h"
+#include "tofsim/util/Error.h"
+
+namespace tofsim::reference {
+
+using namespace capture;  // the job description types
+
+namespace {
+
+constexpr int kChannels = 3;
+
+void validate(const ReferenceSettings& s, const RenderJob& job) {
+  TOFSIM_CHECK(job.scene != nullptr);
+  if (s.bounces < 1) {
+    throw InputError("reference.bounces must be >= 1 (got " + std::to_string(s.bounces) + ")");
+  }
+  if (s.samples_per_pixel < 1) {
+    throw InputError("reference.samples_per_pixel must be >= 1 (got " +
+                     std::to_string(s.samples_per_pixel) + ")");
+  }
+  if (s.threads < 0) {
+    throw InputError("reference.threads must be >= 0 (got " + std::to_string(s.threads) + ")");
+  }
+  if (job.camera.width < 1 || job.camera.height < 1) {
+    throw InputError("camera resolution must be at least 1x1");
+  }
+  const TimeAxis& axis = job.settings.time;
+  if (axis.bins < 1 || !(axis.bin_width_s > 0.0)) {
+    throw InputError("time axis needs bins >= 1 and bin_width > 0");
+  }
+}
+
+int32_t threadCount(int32_t requested) {
+  if (requested > 0) return requested;
+  return static_cast<int32_t>(std::max(1u, std::thread::hardware_concurrency()));
+}
+
+// Rows per segment: as many as the memory budget allows for the two float
+// buffers, at least one; capped at a few rows per thread so progress is
+// reported often and the sink can write while little is held.
+int32_t rowsPerSegment(const RenderJob& job, int32_t threads) {
+  const std::size_t rowBytes = static_cast<std::size_t>(job.camera.width) * job.settings.time.bins *
+                               kChannels * sizeof(float) * 2;
+  const std::size_t byBudget =
+      std::max<std::size_t>(1, job.settings.memory_budget_bytes / rowBytes);
+  const std::size_t cap = std::max<std::size_t>(16, static_cast<std::size_t>(threads) * 4);
+  return static_cast<int32_t>(
+      std::min({byBudget, cap, static_cast<std::size_t>(job.camera.height)}));
+}
+
+// The light seen straight by the camera: only the first surface at its pixel
+// matters, traced on demand.
+DirectLightView lightSeenByCamera(const RenderJob& job, const RayScene& scene) {
+  const Camera& camera = job.camera;
+  return directLightView(job, [&](int32_t x, int32_t y) -> std::optional<glm::vec3> {
+    const auto hit = scene.intersect(camera.position_world, camera.pixelDirection(x, y));
+    if (!hit) return std::nullopt;
+    return hit->position_world;
+  });
+}
+
+}  // namespace
+
+ReferenceRenderer::ReferenceRenderer(ReferenceSettings settings) : settings_(settings) {}
+
+RenderResult ReferenceRenderer::render(const RenderJob& job, SegmentSink& sink,
+                                       const ProgressCallback& progress) const {
+  const auto started = std::chrono::steady_clock::now();
+  validate(settings_, job);
+  const Camera& camera = job.camera;
+  const TimeAxis& axis = job.settings.time;
+  const int32_t threads = threadCount(settings_.threads);
+  const int32_t bounces = job.settings.indirect.enabled ? settings_.bounces : 1;
+
+  const RayScene rayScene(*job.scene, threads);
+  const PathIntegrator integrator(rayScene, job, bounces, settings_.samples_per_pixel);
+  const DirectLightView lightView = lightSeenByCamera(job, rayScene);
+
+  RenderResult result;
+  result.depth_m = Image(camera.width, camera.height, 1);
+  const std::size_t pixelFloats = static_cast<std::size_t>(axis.bins) * kChannels;
+  const int32_t rows = rowsPerSegment(job, threads);
+  const std::size_t segmentCount = static_cast<std::size_t>((camera.height + rows - 1) / rows);
+  std::vector<float> direct(pixelFloats * camera.width * rows);
+  std::vector<float> indirect(direct.size());
+  std::vector<double> outside(static_cast<std::size_t>(camera.width) * rows);
+
+  for (std::size_t s = 0; s < segmentCount; ++s) {
+    const int32_t firstRow = static_cast<int32_t>(s) * rows;
+    const int32_t rowCount = std::min(rows, camera.height - firstRow);
+    const std::size_t pixelCount = static_cast<std::size_t>(rowCount) * camera.width;
+    std::fill_n(direct.begin(), pixelCount * pixelFloats, 0.0f);
+    std::fill_n(indirect.begin(), pixelCount * pixelFloats, 0.0f);
+
+    // Workers take rows dynamically; each pixel writes only its own slots and
+    // draws from its own generator, so the bytes do not depend on scheduling.
+    std::atomic<int32_t> nextRow{0};
+    const auto work = [&] {
+      std::vector<double> scratch;
+      for (int32_t r = nextRow++; r < rowCount; r = nextRow++) {
+        for (int32_t x = 0; x < camera.width; ++x) {
+          const std::size_t local = static_cast<std::size_t>(r) * camera.width + x;
+          PixelOutput out;
+          out.direct = direct.data() + local * pixelFloats;
+          out.indirect = indirect.data() + local * pixelFloats;
+          integrator.renderPixel(x, firstRow + r, out, scratch);
+          result.depth_m.at(firstRow + r, x, 0) = out.depth_m;
+          outside[local] = out.outsideAxis;
+        }
+      }
+    };
+    std::vector<std::thread> pool;
+    const int32_t helpers = std::min(threads, rowCount) - 1;
+    for (int32_t t = 0; t < helpers; ++t) pool.emplace_back(work);
+    work();
+    for (std::thread& t : pool) t.join();
+
+    const std::size_t firstPixel = static_cast<std::size_t>(firstRow) * camera.width;
+    // Summed in pixel order, so the total is independent of the thread count.
+    for (std::size_t i = 0; i < pixelCount; ++i) result.energyOutsideAxis += outside[i];
+    result.energyOutsideAxis +=
+        lightView.addTo(firstPixel, pixelCount, axis, kChannels, direct.data());
+
+    Segment segment;
+    segment.firstPixel = firstPixel;
+    segment.pixelCount = pixelCount;
+    segment.direct = direct.data();
+    segment.indirect = indirect.data();
+    sink.consume(segment);
+    if (progress) progress(s + 1, segmentCount, "segments");
+  }
+  result.segments = segmentCount;
+  result.seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  return result;
+}
+
+}  // namespace tofsim::reference

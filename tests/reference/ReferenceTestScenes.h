@@ -1,0 +1,62 @@
+#pragma once
+// Jobs shared by the reference renderer's tests: the closed-form plane of the
+// GL direct tests and a floor + wall corner for indirect light.
+
+#include "../support/AnalyticScenes.h"
+#include "tofsim/capture/RenderJob.h"
+#include "tofsim/capture/VolumeCollector.h"
+#include "tofsim/reference/ReferenceRenderer.h"
+#include "tofsim/volume/PhysicalConstants.h"
+
+namespace tofsim::test {
+
+/// A 6 m plane at z = 0 seen by a camera 1.5 m away with a point light at the
+/// camera (same as tests/render/DirectRenderGLTest.cpp).
+struct PlaneJob {
+  scene::Scene scene = makePlane(6.0f, glm::vec3(0.5f, 0.4f, 0.3f));
+  capture::RenderJob job;
+  PlaneJob() {
+    job.scene = &scene;
+    job.camera.position_world = {0.0f, 0.0f, 1.5f};
+    job.camera.look_at_world = {0.2f, 0.1f, 0.0f};
+    job.camera.fov_y_deg = 60.0f;
+    job.camera.width = 40;
+    job.camera.height = 30;
+    job.light.position_world = job.camera.position_world;
+    job.light.intensity_W_per_sr = glm::vec3(2.0f, 1.0f, 0.5f);
+    job.settings.time = TimeAxis{2.5 / kSpeedOfLight_m_per_s, 0.002 / kSpeedOfLight_m_per_s, 1200};
+  }
+};
+
+/// A 2 m floor (y = 0, facing +y) meeting a 2 m wall (z = -1, facing +z): the
+/// smallest scene with one-bounce indirect light.
+struct CornerJob {
+  scene::Scene scene;
+  capture::RenderJob job;
+  explicit CornerJob(int32_t side = 16) {
+    addQuad(scene, glm::vec3(0.0f, 0.0f, 0.0f), glm::vec3(0, 1, 0), 2.0f,
+            glm::vec3(0.7f, 0.6f, 0.5f));
+    addQuad(scene, glm::vec3(0.0f, 1.0f, -1.0f), glm::vec3(0, 0, 1), 2.0f,
+            glm::vec3(0.3f, 0.8f, 0.4f));
+    job.scene = &scene;
+    job.camera.position_world = {0.3f, 1.2f, 2.0f};
+    job.camera.look_at_world = {0.0f, 0.4f, -0.5f};
+    job.camera.fov_y_deg = 55.0f;
+    job.camera.width = side;
+    job.camera.height = side;
+    job.light.position_world = {0.5f, 1.5f, 0.5f};
+    job.light.intensity_W_per_sr = glm::vec3(3.0f);
+    job.settings.time = TimeAxis{0.0, 0.01 / kSpeedOfLight_m_per_s, 1000};
+  }
+};
+
+inline capture::VolumeCollector renderReference(const capture::RenderJob& job,
+                                                const reference::ReferenceSettings& settings,
+                                                capture::RenderResult* result = nullptr) {
+  capture::VolumeCollector collector(job.camera.width, job.camera.height, job.settings.time, 3);
+  const capture::RenderResult r = reference::ReferenceRenderer(settings).render(job, collector);
+  if (result != nullptr) *result = r;
+  return collector;
+}
+
+}  // namespace tofsim::test

@@ -1,0 +1,50 @@
+// The CPU albedo lookup follows GL_LINEAR + GL_REPEAT with glTF's top-left uv
+// origin, like the GL G-buffer.
+
+#include <gtest/gtest.h>
+
+#include "tofsim/scene/TextureSampling.h"
+
+namespace tofsim::scene {
+namespace {
+
+// 2 x 2 texture, red channel = 1, 2 (top row), 3, 4 (bottom row).
+Texture twoByTwo() {
+  Texture t;
+  t.width = 2;
+  t.height = 2;
+  t.rgb = {1, 0, 0, 2, 0, 0, 3, 0, 0, 4, 0, 0};
+  return t;
+}
+
+TEST(TextureSamplingTest, TexelCentresReturnTexels) {
+  const Texture t = twoByTwo();
+  EXPECT_FLOAT_EQ(sampleBilinear(t, {0.25f, 0.25f}).r, 1.0f);
+  EXPECT_FLOAT_EQ(sampleBilinear(t, {0.75f, 0.25f}).r, 2.0f);
+  EXPECT_FLOAT_EQ(sampleBilinear(t, {0.25f, 0.75f}).r, 3.0f);
+  EXPECT_FLOAT_EQ(sampleBilinear(t, {0.75f, 0.75f}).r, 4.0f);
+}
+
+TEST(TextureSamplingTest, InterpolatesBetweenCentresAndWraps) {
+  const Texture t = twoByTwo();
+  EXPECT_FLOAT_EQ(sampleBilinear(t, {0.5f, 0.5f}).r, 2.5f);
+  EXPECT_FLOAT_EQ(sampleBilinear(t, {0.5f, 0.25f}).r, 1.5f);
+  // u = 0: halfway between the last column (wrapped) and the first.
+  EXPECT_FLOAT_EQ(sampleBilinear(t, {0.0f, 0.25f}).r, 1.5f);
+  EXPECT_FLOAT_EQ(sampleBilinear(t, {1.25f, -0.75f}).r, 1.0f);
+}
+
+TEST(TextureSamplingTest, MaterialAlbedoMultipliesFactorAndTexture) {
+  Scene scene;
+  scene.textures.push_back(twoByTwo());
+  Material plain;
+  plain.albedo = glm::vec3(0.5f, 0.25f, 1.0f);
+  Material textured = plain;
+  textured.albedoTexture = 0;
+  scene.materials = {plain, textured};
+  EXPECT_EQ(materialAlbedo(scene, 0, {0.75f, 0.75f}), glm::vec3(0.5f, 0.25f, 1.0f));
+  EXPECT_EQ(materialAlbedo(scene, 1, {0.75f, 0.75f}), glm::vec3(2.0f, 0.0f, 0.0f));
+}
+
+}  // namespace
+}  // namespace tofsim::scene
