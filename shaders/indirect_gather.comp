@@ -33,18 +33,27 @@ uniform float uBinWidth_m;
 uniform float uIndexOfRefraction;
 uniform int uCameraUnwarp;
 uniform vec3 uCameraPosition_world;
-uniform uint uFirstVpl;
-uniform uint uVplCount;
+uniform uint uFirstVpl;     // first VPL of this dispatch
+uniform uint uVplCount;     // VPLs in this dispatch
+uniform uint uIsmFirstVpl;  // first VPL whose ISM is at the start of the ISM buffer
 uniform float uGeometryClamp;  // <= 0: no clamping
 uniform float uSceneScale_m;
 
-bool visible(uint local, Vpl vpl, vec3 x, vec3 n, vec3 d, float dist) {
+// llvmpipe stops every loop of an invocation after 65535 iterations in total
+// (its infinite-loop guard), silently, and counts loop entries too. The
+// renderer sizes dispatches to stay well below; an invocation that still
+// comes within a factor of two raises this flag so the render fails loudly
+// instead of losing light.
+const uint kLoopTripLimit = 30000u;
+layout(std430, binding = 0) buffer LoopGuard { uint loopLimitHit; };
+
+bool visible(uint ismIndex, Vpl vpl, vec3 x, vec3 n, vec3 d, float dist, inout uint iterations) {
 #ifdef EXACT_VISIBILITY
   float eps = 1e-4 * uSceneScale_m;
-  return !segmentOccluded(vpl.positionPath.xyz + vpl.normal.xyz * eps, x + n * eps);
+  return !segmentOccluded(vpl.positionPath.xyz + vpl.normal.xyz * eps, x + n * eps, iterations);
 #else
   ivec2 texel = paraboloidTexel(vpl, d, uIsmResolution);
-  float stored = ism[local * uVplStride + uint(texel.y * uIsmResolution + texel.x)];
+  float stored = ism[ismIndex * uVplStride + uint(texel.y * uIsmResolution + texel.x)];
   // One texel spans about 4/R radians; points are a sparse sample of the
   // surfaces, so the bias grows with distance.
   float bias = dist * (4.0 / float(uIsmResolution)) + 0.01 * uSceneScale_m;
@@ -65,7 +74,9 @@ void main() {
   float cameraPath = uCameraUnwarp != 0 ? 0.0 : uIndexOfRefraction * length(x - uCameraPosition_world);
   uint base = local * uint(uBins);
   float lost = 0.0;
+  uint iterations = 0u;
   for (uint k = 0u; k < uVplCount; ++k) {
+    ++iterations;
     Vpl vpl = vpls[uFirstVpl + k];
     vec3 toX = x - vpl.positionPath.xyz;
     float dist2 = dot(toX, toX);
@@ -77,7 +88,7 @@ void main() {
     if (cosVpl <= 0.0 || cosX <= 0.0) continue;
     float g = cosVpl * cosX / dist2;
     if (uGeometryClamp > 0.0) g = min(g, uGeometryClamp);
-    if (!visible(k, vpl, x, n, d, dist)) continue;
+    if (!visible(uFirstVpl - uIsmFirstVpl + k, vpl, x, n, d, dist, iterations)) continue;
     vec3 radiance = brdf * vpl.flux.rgb * g;
     float path_m = vpl.positionPath.w + uIndexOfRefraction * dist + cameraPath;
     int bin = int(floor((path_m - uStart_m) / uBinWidth_m));
@@ -91,4 +102,5 @@ void main() {
     indirect[i + 2u] += radiance.b;
   }
   outside[local] += lost;
+  if (iterations >= kLoopTripLimit) atomicOr(loopLimitHit, 1u);
 }

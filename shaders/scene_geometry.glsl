@@ -48,7 +48,8 @@ bool hitsTriangle(uint tri, vec3 origin, vec3 dir, float tMin, float tMax) {
 
 // True when a triangle blocks the open segment from -> to (its ends excluded
 // by a small relative margin so the surfaces at either end do not count).
-bool segmentOccluded(vec3 from, vec3 to) {
+// `iterations` counts loop trips (see kLoopTripLimit in indirect_gather.comp).
+bool segmentOccluded(vec3 from, vec3 to, inout uint iterations) {
   vec3 dir = to - from;
   vec3 invDir = 1.0 / dir;
   const float margin = 1e-4;
@@ -56,12 +57,14 @@ bool segmentOccluded(vec3 from, vec3 to) {
   int top = 0;
   uint node = 0u;
   while (true) {
+    ++iterations;
     BvhNode n = bvh[node];
     if (hitsBox(n.lo.xyz, n.hi.xyz, from, invDir, 1.0)) {
       uint count = floatBitsToUint(n.hi.w);
       if (count > 0u) {
         uint first = floatBitsToUint(n.lo.w);
         for (uint i = first; i < first + count; ++i) {
+          ++iterations;
           if (hitsTriangle(i, from, dir, margin, 1.0 - margin)) return true;
         }
       } else {

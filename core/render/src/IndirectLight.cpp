@@ -10,6 +10,12 @@ namespace tofsim::render {
 namespace {
 
 constexpr GLuint kGroup = 64;
+// Loop trips one gather invocation may make per dispatch: llvmpipe silently
+// ends every loop of an invocation after 65535 iterations in total (loop
+// entries count too, so its count runs ahead of ours), so dispatches are sized
+// to a third of that, with the shader's own guard (30000) as a check.
+// Measured on the Cornell box: light went missing above ~45000 of our trips.
+constexpr std::size_t kTripsPerDispatch = 20000;
 
 std::vector<std::pair<std::string, std::string>> gatherDefines(const capture::IndirectSettings& s) {
   if (s.visibility == capture::Visibility::Exact) return {{"EXACT_VISIBILITY", "1"}};
@@ -33,12 +39,17 @@ IndirectLight::IndirectLight(const TriangleSoup& soup, std::vector<Vpl> vpls,
       seed_(seed),
       vplCount_(vpls.size()),
       triangleCount_(soup.triangleCount()),
+      // A shadow ray visits about two nodes per level and a few leaves.
+      tripsPerShadowRay_(std::min<std::size_t>(soup.bvh.size() + soup.triangleCount(),
+                                               4 * static_cast<std::size_t>(soup.bvhDepth) + 16)),
       gather_({{GL_COMPUTE_SHADER, "indirect_gather.comp"}}, gatherDefines(settings)) {
   TOFSIM_CHECK(!vpls.empty() && triangleCount_ > 0);
   corners_ = gl::Buffer(soup.corners.size() * sizeof(glm::vec4), soup.corners.data(), 0);
   areaCdf_ = gl::Buffer(soup.areaCdf.size() * sizeof(float), soup.areaCdf.data(), 0);
   bvh_ = gl::Buffer(soup.bvh.size() * sizeof(BvhNode), soup.bvh.data(), 0);
   vplBuffer_ = gl::Buffer(vpls.size() * sizeof(Vpl), vpls.data(), 0);
+  loopGuard_ = gl::Buffer(sizeof(GLuint));
+  loopGuard_.clear();
   fixedBytes_ = corners_.size() + areaCdf_.size() + bvh_.size() + vplBuffer_.size();
   if (settings_.visibility == capture::Visibility::Ism) {
     splat_ = gl::Program({{GL_COMPUTE_SHADER, "ism_splat.comp"}});
@@ -69,6 +80,12 @@ void IndirectLight::planBatches(std::size_t ismBudgetBytes, std::size_t maxStora
   }
   vplsPerBatch_ = std::min(vplCount_, limit / ismBytesPerVpl());
   ism_ = gl::Buffer(vplsPerBatch_ * ismBytesPerVpl());
+}
+
+std::size_t IndirectLight::vplsPerDispatch() const {
+  const std::size_t tripsPerVpl =
+      1 + (settings_.visibility == capture::Visibility::Exact ? tripsPerShadowRay_ : 0);
+  return std::max<std::size_t>(1, kTripsPerDispatch / tripsPerVpl);
 }
 
 std::size_t IndirectLight::batchCount() const {
@@ -125,13 +142,27 @@ void IndirectLight::gatherBatch(std::size_t batch, const GatherTarget& target) {
     gather_.set("uVplStride", static_cast<unsigned>(floatsPerVpl_));
     gather_.set("uIsmResolution", settings_.ism_resolution);
   }
+  loopGuard_.bindBase(GL_SHADER_STORAGE_BUFFER, 0);
   gather_.use();
-  gather_.set("uFirstVpl", static_cast<unsigned>(first));
-  gather_.set("uVplCount", static_cast<unsigned>(count));
+  gather_.set("uIsmFirstVpl", static_cast<unsigned>(first));
   gather_.set("uFirstPixel", static_cast<unsigned>(target.firstPixel));
   gather_.set("uPixelCount", static_cast<unsigned>(target.pixelCount));
-  dispatchThreads(target.pixelCount);
-  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+  // Sub-dispatches in VPL order keep each pixel's additions in index order.
+  for (std::size_t done = 0; done < count;) {
+    const std::size_t n = std::min(vplsPerDispatch(), count - done);
+    gather_.set("uFirstVpl", static_cast<unsigned>(first + done));
+    gather_.set("uVplCount", static_cast<unsigned>(n));
+    dispatchThreads(target.pixelCount);
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+    done += n;
+  }
+  GLuint loopLimitHit = 0;
+  loopGuard_.download(0, sizeof loopLimitHit, &loopLimitHit);
+  if (loopLimitHit != 0) {
+    throw InputError("a gather invocation came near the GL implementation's loop-trip limit "
+                     "(llvmpipe: 65535), so light could be lost; use visibility: ism or a "
+                     "smaller scene for exact visibility");
+  }
   TOFSIM_GL_CHECK("indirect gather");
 }
 

@@ -44,18 +44,21 @@ class IndirectLight {
 
  private:
   void buildIsms(std::size_t firstVpl, std::size_t count);
+  /// VPLs one gather dispatch may loop over (see kLoopTripLimit in the shader).
+  std::size_t vplsPerDispatch() const;
 
   capture::IndirectSettings settings_;
   uint64_t seed_;
   std::size_t vplCount_ = 0;
   std::size_t triangleCount_ = 0;
+  std::size_t tripsPerShadowRay_ = 0;
   std::size_t fixedBytes_ = 0;
   std::size_t vplsPerBatch_ = 0;
   std::size_t residentBatch_ = static_cast<std::size_t>(-1);
   std::vector<std::size_t> levelOffsets_;
   std::vector<int> levelSizes_;
   std::size_t floatsPerVpl_ = 0;
-  gl::Buffer corners_, areaCdf_, bvh_, vplBuffer_, ism_;
+  gl::Buffer corners_, areaCdf_, bvh_, vplBuffer_, ism_, loopGuard_;
   gl::Program splat_, pull_, push_, gather_;
 };
 

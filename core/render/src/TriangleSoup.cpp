@@ -46,13 +46,15 @@ class BvhBuilder {
  public:
   explicit BvhBuilder(std::vector<Triangle>& tris) : tris_(tris) {}
   std::vector<BvhNode> build() {
-    if (!tris_.empty()) buildNode(0, tris_.size());
+    if (!tris_.empty()) buildNode(0, tris_.size(), 1);
     return std::move(nodes_);
   }
+  int depth() const { return depth_; }
 
  private:
   // Builds the subtree over tris_[begin, end) and returns its node index.
-  std::size_t buildNode(std::size_t begin, std::size_t end) {
+  std::size_t buildNode(std::size_t begin, std::size_t end, int depth) {
+    depth_ = std::max(depth_, depth);
     Box bounds, centroids;
     for (std::size_t i = begin; i < end; ++i) {
       bounds.grow(tris_[i].box);
@@ -66,8 +68,8 @@ class BvhBuilder {
       nodes_[index].max.w = bitsAsFloat(static_cast<uint32_t>(end - begin));
       return index;
     }
-    buildNode(begin, mid);
-    const std::size_t right = buildNode(mid, end);
+    buildNode(begin, mid, depth + 1);
+    const std::size_t right = buildNode(mid, end, depth + 1);
     nodes_[index].min.w = bitsAsFloat(static_cast<uint32_t>(right));
     nodes_[index].max.w = bitsAsFloat(0u);
     return index;
@@ -121,6 +123,7 @@ class BvhBuilder {
 
   std::vector<Triangle>& tris_;
   std::vector<BvhNode> nodes_;
+  int depth_ = 0;
 };
 
 }  // namespace
@@ -139,7 +142,9 @@ TriangleSoup buildTriangleSoup(const scene::Scene& scene) {
     }
   }
   TriangleSoup soup;
-  soup.bvh = BvhBuilder(tris).build();
+  BvhBuilder builder(tris);
+  soup.bvh = builder.build();
+  soup.bvhDepth = builder.depth();
   std::vector<double> areas;
   for (const Triangle& t : tris) {
     for (const glm::vec3& p : t.p) soup.corners.emplace_back(p, 1.0f);

@@ -22,6 +22,7 @@ struct TriangleSoup {
   std::vector<float> areaCdf;       ///< inclusive prefix sum of areas / total, one per triangle
   std::vector<BvhNode> bvh;         ///< node 0 is the root; left child of inner node i is i + 1
   double totalArea_m2 = 0.0;
+  int bvhDepth = 0;                 ///< levels from the root to the deepest leaf
 
   std::size_t triangleCount() const { return corners.size() / 3; }
 };
