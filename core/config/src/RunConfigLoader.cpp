@@ -3,6 +3,7 @@
 
 #include "ConfigNode.h"
 #include "tofsim/config/RunConfig.h"
+#include "tofsim/config/SensorConfig.h"
 
 namespace tofsim::config {
 
@@ -155,6 +156,27 @@ void parseOutput(const ConfigNode& node, OutputConfig& o) {
   }
 }
 
+// Sensor names become folder names (OUTDIR/sensors/<name>/): keep them plain
+// and unique, so two sensors never write into the same place.
+void checkSensorNames(const ConfigNode& list, const std::vector<sensors::SensorSpec>& specs) {
+  const std::vector<ConfigNode> elements = list.elements();
+  for (std::size_t i = 0; i < specs.size(); ++i) {
+    const std::string& name = specs[i].name;
+    const bool plain = !name.empty() && name != "." && name != ".." &&
+                       name.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ"
+                                              "0123456789_.-") == std::string::npos;
+    if (!plain) {
+      elements[i].failKey("name", "must be letters, digits, '_', '-' or '.' (got '" + name + "')");
+    }
+    for (std::size_t j = 0; j < i; ++j) {
+      if (specs[j].name == name) {
+        elements[i].failKey("name", "sensor name '" + name + "' is already used by sensors[" +
+                                        std::to_string(j) + "]; give each sensor its own `name`");
+      }
+    }
+  }
+}
+
 // "sensors.0.bins" -> "sensors[0].bins", the form ConfigNode paths take.
 std::string nodePath(const std::string& keyPath) {
   std::string out;
@@ -205,6 +227,13 @@ RunConfig loadRunConfig(const std::filesystem::path& file, const std::vector<Ove
   }
   if (const auto render = root.optionalChild("render")) parseRender(*render, config);
   if (const auto output = root.optionalChild("output")) parseOutput(*output, config.output);
+  if (const auto list = root.optionalChild("sensors")) {
+    // parseSensors reports unknown keys inside each sensor itself; the keys it
+    // read are shared with `root`, so the check below neither repeats nor
+    // misses them.
+    config.sensors = parseSensors(*list);
+    checkSensorNames(*list, config.sensors);
+  }
   root.reportUnusedKeys();
   return config;
 }
