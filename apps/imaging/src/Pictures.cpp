@@ -37,20 +37,31 @@ unsigned char srgb8(double linear) {
   return static_cast<unsigned char>(std::lround(s * 255.0));
 }
 
-// The range of the finite values, ignoring the extreme 0.1 % at each end so a
-// few hot pixels (shot noise, a specular glint) do not wash out the picture.
+// The range of the finite values, ignoring the extreme 0.5 % at each end (as
+// the tone map's 99.5th percentile white), and tightened to Tukey's outer
+// fences (quartiles -+ 3 IQR) when those are narrower: a few outliers (hot
+// pixels, a glint) or a minority of wild ones (pixels with no signal, whose
+// CW-ToF depth is noise over the whole unambiguous range) then do not
+// squeeze the rest of the picture into one colour. Mostly-dark pictures (a
+// quarter of the pixels at the minimum, e.g. a streak image, whose signal is
+// the sparse bright part) keep the percentile range.
 std::pair<double, double> robustRange(const std::vector<float>& data) {
-  std::vector<float> finite;
-  finite.reserve(data.size());
-  for (float v : data) {
-    if (std::isfinite(v)) finite.push_back(v);
+  std::vector<float> v;
+  v.reserve(data.size());
+  for (float x : data) {
+    if (std::isfinite(x)) v.push_back(x);
   }
-  if (finite.empty()) return {0.0, 1.0};
-  const std::size_t k = finite.size() / 1000;
-  std::nth_element(finite.begin(), finite.begin() + static_cast<long>(k), finite.end());
-  const double lo = finite[k];
-  std::nth_element(finite.begin(), finite.end() - 1 - static_cast<long>(k), finite.end());
-  const double hi = finite[finite.size() - 1 - k];
+  if (v.empty()) return {0.0, 1.0};
+  std::sort(v.begin(), v.end());
+  const auto at = [&](double q) {
+    return static_cast<double>(v[std::min(v.size() - 1, static_cast<std::size_t>(q * v.size()))]);
+  };
+  double lo = at(0.005), hi = at(0.995);
+  const double q1 = at(0.25), q3 = at(0.75);
+  if (q1 > v.front() && q3 > q1) {
+    lo = std::max(lo, q1 - 3.0 * (q3 - q1));
+    hi = std::min(hi, q3 + 3.0 * (q3 - q1));
+  }
   return {lo, hi > lo ? hi : lo + 1.0};
 }
 
@@ -98,17 +109,22 @@ void writeColormappedPng(const std::filesystem::path& path, const Image& image,
   const int w = image.width * scale, h = image.height * scale;
   cv::resize(colored, big, cv::Size(w, h), 0, 0, cv::INTER_NEAREST);
 
-  // Layout: title band on top, image on the left, colour bar with five ticks.
-  const int pad = 10, titleH = 28, barW = 20, barH = std::max(h, 160);
+  // Layout: title on top (wrapped to the picture's width), image on the
+  // left, colour bar with five ticks on the right.
+  const int pad = 10, barW = 20, barH = std::max(h, 160);
   int tickW = 0;
   for (int k = 0; k <= 4; ++k) {
     tickW = std::max(tickW, detail::textSize(shortNumber(lo + (hi - lo) * k / 4)).width);
   }
   const int barX = pad + w + 12;
-  const int width = std::max(barX + barW + 8 + tickW + pad, detail::textSize(label).width + 2 * pad);
+  const int width = std::max(barX + barW + 8 + tickW + pad, 320);
+  const std::vector<std::string> title = detail::wrapText(label, width - 2 * pad);
+  const int lineH = 18, titleH = 10 + lineH * static_cast<int>(title.size());
   cv::Mat canvas(titleH + barH + pad, width, CV_8UC3, cv::Scalar(255, 255, 255));
   big.copyTo(canvas(cv::Rect(pad, titleH, w, h)));
-  drawText(canvas, label, {pad, titleH - 9});
+  for (std::size_t i = 0; i < title.size(); ++i) {
+    drawText(canvas, title[i], {pad, 20 + lineH * static_cast<int>(i)});
+  }
   cv::Mat ramp(barH, 1, CV_8UC1), rampColored, rampWide;
   for (int i = 0; i < barH; ++i) {
     ramp.at<unsigned char>(i, 0) = static_cast<unsigned char>(255 - 255 * i / std::max(1, barH - 1));

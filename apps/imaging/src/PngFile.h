@@ -4,6 +4,7 @@
 
 #include <filesystem>
 #include <string>
+#include <vector>
 
 #include <opencv2/core.hpp>
 
@@ -25,5 +26,9 @@ std::string shortNumber(double value);
 void drawText(cv::Mat& canvas, const std::string& text, cv::Point origin, double scale = 0.45);
 /// Width and height in pixels of drawText's rendering.
 cv::Size textSize(const std::string& text, double scale = 0.45);
+
+/// `text` broken at spaces into lines no wider than maxWidth pixels (a
+/// single word wider than that gets a line of its own).
+std::vector<std::string> wrapText(const std::string& text, int maxWidth, double scale = 0.45);
 
 }  // namespace tofsim::imaging::detail

@@ -21,8 +21,9 @@ void writeToneMappedPng(const std::filesystem::path& path, const Image& image, T
 /// with a colour bar whose ticks give the values. `colormap` is a matplotlib
 /// name mapped to OpenCV's COLORMAP_* (viridis, inferno, magma, plasma,
 /// turbo, jet, hot, ...); unknown names give turbo. Non-finite values are
-/// drawn black. lo == hi: the range of the data without its extreme 0.1 % at
-/// each end; values outside the range are clamped.
+/// drawn black. lo == hi: a robust range of the data (its 0.5th to 99.5th
+/// percentile, narrowed to the quartiles -+ 3 IQR unless a quarter of the
+/// pixels sit at the minimum); values outside the range are clamped.
 void writeColormappedPng(const std::filesystem::path& path, const Image& image,
                          const std::string& label, const std::string& colormap = "turbo",
                          double lo = 0.0, double hi = 0.0);
