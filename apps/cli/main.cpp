@@ -50,8 +50,7 @@ int runSenseCommand(const std::string& configPath, const std::string& volumeDir,
   options.quiet = quiet;
   const pipeline::SenseSummary summary = pipeline::runSense(config, options);
   if (!quiet) {
-    std::fprintf(stderr, "sense: %.2f s; wrote %zu file(s) to %s
-", summary.seconds,
+    std::fprintf(stderr, "sense: %.2f s; wrote %zu file(s) to %s\n", summary.seconds,
                  summary.files.size(), (summary.outputDirectory / "sensors").string().c_str());
   }
   return 0;
