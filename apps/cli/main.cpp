@@ -3,7 +3,6 @@
 //   0 success, 1 bad input or environment (one line on stderr), 2 usage.
 
 #include <CLI/CLI.hpp>
-
 #include <cstdio>
 #include <string>
 #include <vector>
@@ -25,7 +24,8 @@ std::vector<config::Override> parseOverrides(const std::vector<std::string>& set
 }
 
 int runRenderCommand(const std::string& configPath, const std::string& outputDir,
-                     const std::vector<std::string>& sets, bool quiet, const std::string& platform) {
+                     const std::vector<std::string>& sets, bool quiet,
+                     const std::string& platform) {
   const config::RunConfig config = config::loadRunConfig(configPath, parseOverrides(sets));
   pipeline::RunOptions options;
   options.outputDirectory = outputDir;
@@ -42,7 +42,8 @@ int runRenderCommand(const std::string& configPath, const std::string& outputDir
 }
 
 int runSenseCommand(const std::string& configPath, const std::string& volumeDir,
-                    const std::string& outputDir, const std::vector<std::string>& sets, bool quiet) {
+                    const std::string& outputDir, const std::vector<std::string>& sets,
+                    bool quiet) {
   const config::RunConfig config = config::loadRunConfig(configPath, parseOverrides(sets));
   pipeline::SenseOptions options;
   options.volumeDirectory = volumeDir;

@@ -117,8 +117,8 @@ TEST_F(RunConfigTest, YamlSyntaxErrorHasALocation) {
 }
 
 TEST_F(RunConfigTest, OverridesApplyAndTheirErrorsNameTheOverride) {
-  const RunConfig c = loadRunConfig(write(kValid), {parseOverride("time.bins=7"),
-                                                    parseOverride("camera.resolution=[8, 4]")});
+  const RunConfig c = loadRunConfig(
+      write(kValid), {parseOverride("time.bins=7"), parseOverride("camera.resolution=[8, 4]")});
   EXPECT_EQ(c.render.time.bins, 7);
   EXPECT_EQ(c.camera.camera.width, 8);
   const std::string e = errorOf(kValid, {parseOverride("time.bins=-1")});
@@ -169,10 +169,12 @@ TEST_F(RunConfigTest, SensorErrorsAreLocated) {
       errorOf(std::string(kValid) + kSensors, {parseOverride("sensors.0.pulse_fwhm=-1ps")});
   EXPECT_NE(negative.find("--set sensors.0.pulse_fwhm=-1ps"), std::string::npos) << negative;
   EXPECT_NE(negative.find("sensors[0].pulse_fwhm"), std::string::npos) << negative;
-  const std::string twice = errorOf(std::string(kValid) + kSensors, {parseOverride("sensors.1.name=spad")});
+  const std::string twice =
+      errorOf(std::string(kValid) + kSensors, {parseOverride("sensors.1.name=spad")});
   EXPECT_NE(twice.find("sensors[1].name"), std::string::npos) << twice;
   EXPECT_NE(twice.find("already used"), std::string::npos) << twice;
-  const std::string path = errorOf(std::string(kValid) + kSensors, {parseOverride("sensors.1.name=a/b")});
+  const std::string path =
+      errorOf(std::string(kValid) + kSensors, {parseOverride("sensors.1.name=a/b")});
   EXPECT_NE(path.find("sensors[1].name"), std::string::npos) << path;
 }
 

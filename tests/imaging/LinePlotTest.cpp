@@ -4,7 +4,6 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-
 #include <opencv2/imgcodecs.hpp>
 
 #include "support/TempDir.h"
@@ -33,7 +32,8 @@ TEST_F(ImagingTest, LinePlotHasRequestedSizeAndCurves) {
   imaging::LinePlot plot;
   for (int s = 0; s < 3; ++s) {
     std::vector<float> curve;
-    for (int i = 0; i < 200; ++i) curve.push_back(100.0f * std::exp(-0.5f * std::pow((i - 50 - 40 * s) / 8.0f, 2.0f)));
+    for (int i = 0; i < 200; ++i)
+      curve.push_back(100.0f * std::exp(-0.5f * std::pow((i - 50 - 40 * s) / 8.0f, 2.0f)));
     plot.series.push_back(curve);
     plot.labels.push_back("pixel " + std::to_string(s));
   }

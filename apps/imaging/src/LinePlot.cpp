@@ -2,9 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <vector>
-
 #include <opencv2/imgproc.hpp>
+#include <vector>
 
 #include "PngFile.h"
 #include "tofsim/util/Error.h"
@@ -37,8 +36,8 @@ std::vector<double> niceTicks(double lo, double hi, int wanted) {
 }
 
 // Tableau-10 colours, as BGR: distinguishable, and readable on white.
-const cv::Scalar kColors[] = {{180, 119, 31}, {14, 127, 255}, {44, 160, 44}, {40, 39, 214},
-                              {189, 103, 148}, {75, 86, 140}, {194, 119, 227}, {127, 127, 127},
+const cv::Scalar kColors[] = {{180, 119, 31},  {14, 127, 255}, {44, 160, 44},   {40, 39, 214},
+                              {189, 103, 148}, {75, 86, 140},  {194, 119, 227}, {127, 127, 127},
                               {34, 189, 188},  {207, 190, 23}};
 
 }  // namespace
@@ -59,7 +58,8 @@ void writeLinePlotPng(const std::filesystem::path& path, const LinePlot& plot) {
   }
   if (!(yHi > yLo)) yHi = yLo + 1.0;
   yHi += 0.05 * (yHi - yLo);  // headroom so the peak does not touch the frame
-  const double xLo = plot.x0, xHi = plot.x0 + plot.dx * static_cast<double>(std::max<std::size_t>(bins, 1));
+  const double xLo = plot.x0,
+               xHi = plot.x0 + plot.dx * static_cast<double>(std::max<std::size_t>(bins, 1));
 
   const std::vector<double> yTicks = niceTicks(yLo, yHi, 6);
   int yTickW = 0;
@@ -125,12 +125,12 @@ void writeLinePlotPng(const std::filesystem::path& path, const LinePlot& plot) {
 
   drawText(canvas, plot.title, {area.x, 22}, 0.5);
   const std::string xLabel = plot.xUnit.empty() ? "x" : "[" + plot.xUnit + "]";
-  drawText(canvas, xLabel, {area.x + area.width / 2 - textSize(xLabel, 0.45).width / 2,
-                            plot.height_px - 10});
+  drawText(canvas, xLabel,
+           {area.x + area.width / 2 - textSize(xLabel, 0.45).width / 2, plot.height_px - 10});
   // The y label sits above the axis rather than rotated beside it: OpenCV
   // draws no rotated text.
-  drawText(canvas, plot.yLabel, {std::max(2, area.x - textSize(plot.yLabel, 0.4).width / 2), top - 4},
-           0.4);
+  drawText(canvas, plot.yLabel,
+           {std::max(2, area.x - textSize(plot.yLabel, 0.4).width / 2), top - 4}, 0.4);
   detail::savePng(path, canvas);
 }
 

@@ -3,12 +3,11 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
 #include <tuple>
 #include <utility>
 #include <vector>
-
-#include <opencv2/imgcodecs.hpp>
-#include <opencv2/imgproc.hpp>
 
 #include "PngFile.h"
 #include "tofsim/util/Error.h"
@@ -127,7 +126,8 @@ void writeColormappedPng(const std::filesystem::path& path, const Image& image,
   }
   cv::Mat ramp(barH, 1, CV_8UC1), rampColored, rampWide;
   for (int i = 0; i < barH; ++i) {
-    ramp.at<unsigned char>(i, 0) = static_cast<unsigned char>(255 - 255 * i / std::max(1, barH - 1));
+    ramp.at<unsigned char>(i, 0) =
+        static_cast<unsigned char>(255 - 255 * i / std::max(1, barH - 1));
   }
   cv::applyColorMap(ramp, rampColored, code);
   cv::resize(rampColored, rampWide, cv::Size(barW, barH), 0, 0, cv::INTER_NEAREST);

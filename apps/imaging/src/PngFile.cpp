@@ -2,11 +2,10 @@
 
 #include <cstdio>
 #include <map>
-#include <string_view>
-#include <vector>
-
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
+#include <string_view>
+#include <vector>
 
 #include "tofsim/util/AtomicFile.h"
 #include "tofsim/util/Error.h"
@@ -24,17 +23,17 @@ void savePng(const std::filesystem::path& path, const cv::Mat& bgr) {
 
 int colormapCode(const std::string& name) {
   static const std::map<std::string, int> codes = {
-      {"autumn", cv::COLORMAP_AUTUMN},   {"bone", cv::COLORMAP_BONE},
-      {"jet", cv::COLORMAP_JET},         {"winter", cv::COLORMAP_WINTER},
-      {"rainbow", cv::COLORMAP_RAINBOW}, {"ocean", cv::COLORMAP_OCEAN},
-      {"summer", cv::COLORMAP_SUMMER},   {"spring", cv::COLORMAP_SPRING},
-      {"cool", cv::COLORMAP_COOL},       {"hsv", cv::COLORMAP_HSV},
-      {"pink", cv::COLORMAP_PINK},       {"hot", cv::COLORMAP_HOT},
-      {"parula", cv::COLORMAP_PARULA},   {"magma", cv::COLORMAP_MAGMA},
-      {"inferno", cv::COLORMAP_INFERNO}, {"plasma", cv::COLORMAP_PLASMA},
-      {"viridis", cv::COLORMAP_VIRIDIS}, {"cividis", cv::COLORMAP_CIVIDIS},
+      {"autumn", cv::COLORMAP_AUTUMN},     {"bone", cv::COLORMAP_BONE},
+      {"jet", cv::COLORMAP_JET},           {"winter", cv::COLORMAP_WINTER},
+      {"rainbow", cv::COLORMAP_RAINBOW},   {"ocean", cv::COLORMAP_OCEAN},
+      {"summer", cv::COLORMAP_SUMMER},     {"spring", cv::COLORMAP_SPRING},
+      {"cool", cv::COLORMAP_COOL},         {"hsv", cv::COLORMAP_HSV},
+      {"pink", cv::COLORMAP_PINK},         {"hot", cv::COLORMAP_HOT},
+      {"parula", cv::COLORMAP_PARULA},     {"magma", cv::COLORMAP_MAGMA},
+      {"inferno", cv::COLORMAP_INFERNO},   {"plasma", cv::COLORMAP_PLASMA},
+      {"viridis", cv::COLORMAP_VIRIDIS},   {"cividis", cv::COLORMAP_CIVIDIS},
       {"twilight", cv::COLORMAP_TWILIGHT}, {"twilight_shifted", cv::COLORMAP_TWILIGHT_SHIFTED},
-      {"turbo", cv::COLORMAP_TURBO},     {"deepgreen", cv::COLORMAP_DEEPGREEN},
+      {"turbo", cv::COLORMAP_TURBO},       {"deepgreen", cv::COLORMAP_DEEPGREEN},
   };
   const auto it = codes.find(name);
   return it == codes.end() ? cv::COLORMAP_TURBO : it->second;

@@ -3,10 +3,9 @@
 // picture writers share.
 
 #include <filesystem>
+#include <opencv2/core.hpp>
 #include <string>
 #include <vector>
-
-#include <opencv2/core.hpp>
 
 namespace tofsim::imaging::detail {
 

@@ -93,10 +93,10 @@ void writeOutputs(const config::RunConfig& config, const capture::RenderJob& job
   OutputSink sink(dir, out, job.camera.width, job.camera.height, job.settings.time,
                   out.frames || sensing, sensing && out.direct);
   render::TransientRenderer renderer(context);
-  summary.result = renderer.render(job, sink, [&](std::size_t done, std::size_t total,
-                                                  const std::string& what) {
-    progress.update(done, total, what);
-  });
+  summary.result =
+      renderer.render(job, sink, [&](std::size_t done, std::size_t total, const std::string& what) {
+        progress.update(done, total, what);
+      });
   sink.commit();
   if (out.transient) summary.files.push_back("transient.npy");
   if (out.direct) summary.files.push_back("direct.npy");

@@ -1,10 +1,9 @@
 #include "tofsim/pipeline/SavedVolume.h"
 
 #include <fstream>
+#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
-
-#include <nlohmann/json.hpp>
 
 #include "tofsim/io/Exr.h"
 #include "tofsim/io/Npy.h"

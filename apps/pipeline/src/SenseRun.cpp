@@ -24,8 +24,9 @@ void noteDifferences(const config::RunConfig& config, const TransientVolume& vol
   const TimeAxis& axis = config.render.time;
   if (cam.width != volume.width() || cam.height != volume.height() || axis.bins != volume.bins() ||
       axis.start_s != volume.axis().start_s || axis.bin_width_s != volume.axis().bin_width_s) {
-    progress.message("note: the saved volume's size or time axis differs from the config's; "
-                     "the sensors use the volume's");
+    progress.message(
+        "note: the saved volume's size or time axis differs from the config's; "
+        "the sensors use the volume's");
   }
 }
 
@@ -50,9 +51,9 @@ std::vector<std::string> runConfiguredSensors(const config::RunConfig& config,
       outputs = sensors::runSensor(spec, inputs);
     } catch (const InputError& e) {
       // The sensor library does not know the config; say which entry failed.
-      throw InputError(FileLoc{config.config_file.string()}, "sensors[" + std::to_string(i) + "]",
-                       "sensor '" + spec.name + "' (" + sensors::sensorTypeName(spec.params) +
-                           "): " + e.what());
+      throw InputError(
+          FileLoc{config.config_file.string()}, "sensors[" + std::to_string(i) + "]",
+          "sensor '" + spec.name + "' (" + sensors::sensorTypeName(spec.params) + "): " + e.what());
     }
     const std::filesystem::path relative = std::filesystem::path("sensors") / spec.name;
     for (const std::string& f : writeSensorOutputs(outputDirectory / relative, outputs)) {

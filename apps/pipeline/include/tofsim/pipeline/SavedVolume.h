@@ -10,9 +10,9 @@
 namespace tofsim::pipeline {
 
 struct SavedVolume {
-  TransientVolume volume;                    ///< transient.npy, axis from transient.json
-  std::optional<TransientVolume> directOnly; ///< direct.npy, when the render wrote it
-  std::optional<Image> depth_m;              ///< depth.exr, when the render wrote it
+  TransientVolume volume;                     ///< transient.npy, axis from transient.json
+  std::optional<TransientVolume> directOnly;  ///< direct.npy, when the render wrote it
+  std::optional<Image> depth_m;               ///< depth.exr, when the render wrote it
 };
 
 /// Throws InputError naming the file when transient.npy or transient.json is
