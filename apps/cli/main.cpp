@@ -3,13 +3,13 @@
 //   0 success, 1 bad input or environment (one line on stderr), 2 usage.
 
 #include <CLI/CLI.hpp>
-
 #include <cstdio>
 #include <string>
 #include <vector>
 
 #include "tofsim/config/RunConfig.h"
 #include "tofsim/pipeline/RenderRun.h"
+#include "tofsim/pipeline/SenseRun.h"
 #include "tofsim/pipeline/Version.h"
 #include "tofsim/util/Error.h"
 
@@ -24,7 +24,8 @@ std::vector<config::Override> parseOverrides(const std::vector<std::string>& set
 }
 
 int runRenderCommand(const std::string& configPath, const std::string& outputDir,
-                     const std::vector<std::string>& sets, bool quiet, const std::string& platform) {
+                     const std::vector<std::string>& sets, bool quiet,
+                     const std::string& platform) {
   const config::RunConfig config = config::loadRunConfig(configPath, parseOverrides(sets));
   pipeline::RunOptions options;
   options.outputDirectory = outputDir;
@@ -36,6 +37,22 @@ int runRenderCommand(const std::string& configPath, const std::string& outputDir
     std::fprintf(stderr, "render: %.2f s, %zu segment(s); wrote %zu file(s) to %s\n",
                  summary.result.seconds, summary.result.segments, summary.files.size(),
                  summary.outputDirectory.string().c_str());
+  }
+  return 0;
+}
+
+int runSenseCommand(const std::string& configPath, const std::string& volumeDir,
+                    const std::string& outputDir, const std::vector<std::string>& sets,
+                    bool quiet) {
+  const config::RunConfig config = config::loadRunConfig(configPath, parseOverrides(sets));
+  pipeline::SenseOptions options;
+  options.volumeDirectory = volumeDir;
+  options.outputDirectory = outputDir;
+  options.quiet = quiet;
+  const pipeline::SenseSummary summary = pipeline::runSense(config, options);
+  if (!quiet) {
+    std::fprintf(stderr, "sense: %.2f s; wrote %zu file(s) to %s\n", summary.seconds,
+                 summary.files.size(), (summary.outputDirectory / "sensors").string().c_str());
   }
   return 0;
 }
@@ -53,7 +70,7 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", std::string("tofsim ") + tofsim::pipeline::kVersion);
   app.require_subcommand(1);
 
-  std::string configPath, outputDir, platform;
+  std::string configPath, outputDir, platform, volumeDir;
   std::vector<std::string> sets;
   bool quiet = false;
 
@@ -64,6 +81,15 @@ int main(int argc, char** argv) {
   render->add_flag("-q,--quiet", quiet, "No progress output");
   render->add_option("--egl-platform", platform,
                      "auto | surfaceless | device (default: $TOFSIM_EGL_PLATFORM or auto)");
+
+  CLI::App* sense = app.add_subcommand(
+      "sense", "Run a config's sensors on a saved render (uses only sensors: and render.seed)");
+  sense->add_option("config", configPath, "YAML config file")->required();
+  sense->add_option("--volume", volumeDir, "Folder of a render: transient.npy + transient.json")
+      ->required();
+  sense->add_option("-o,--output", outputDir, "Output directory (default: the --volume folder)");
+  sense->add_option("--set", sets, "Override a config key: key.path=value (repeatable)");
+  sense->add_flag("-q,--quiet", quiet, "No progress output");
 
   CLI::App* validate = app.add_subcommand("validate", "Check a config without rendering");
   validate->add_option("config", configPath, "YAML config file")->required();
@@ -76,6 +102,7 @@ int main(int argc, char** argv) {
   }
   try {
     if (render->parsed()) return runRenderCommand(configPath, outputDir, sets, quiet, platform);
+    if (sense->parsed()) return runSenseCommand(configPath, volumeDir, outputDir, sets, quiet);
     if (validate->parsed()) return runValidateCommand(configPath, sets);
   } catch (const tofsim::InputError& e) {
     std::fprintf(stderr, "tofsim: error: %s\n", e.what());

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <fstream>
+#include <variant>
 
 #include "support/TempDir.h"
 #include "tofsim/config/RunConfig.h"
@@ -116,8 +117,8 @@ TEST_F(RunConfigTest, YamlSyntaxErrorHasALocation) {
 }
 
 TEST_F(RunConfigTest, OverridesApplyAndTheirErrorsNameTheOverride) {
-  const RunConfig c = loadRunConfig(write(kValid), {parseOverride("time.bins=7"),
-                                                    parseOverride("camera.resolution=[8, 4]")});
+  const RunConfig c = loadRunConfig(
+      write(kValid), {parseOverride("time.bins=7"), parseOverride("camera.resolution=[8, 4]")});
   EXPECT_EQ(c.render.time.bins, 7);
   EXPECT_EQ(c.camera.camera.width, 8);
   const std::string e = errorOf(kValid, {parseOverride("time.bins=-1")});
@@ -134,6 +135,47 @@ TEST_F(RunConfigTest, EffectiveConfigRoundTrips) {
   const RunConfig again = loadRunConfig(path);
   EXPECT_EQ(effectiveConfigYaml(again), effectiveConfigYaml(c));
   EXPECT_DOUBLE_EQ(again.render.time.bin_width_s, c.render.time.bin_width_s);
+}
+
+const char* kSensors = R"(sensors:
+  - type: spad
+    cycles: 500
+    pulse_fwhm: 80 ps
+  - type: cwtof
+    name: tof
+    frequencies: [20 MHz, 100 MHz]
+)";
+
+TEST_F(RunConfigTest, SensorsAreParsedAndWrittenBack) {
+  const RunConfig c = loadRunConfig(write(std::string(kValid) + kSensors));
+  ASSERT_EQ(c.sensors.size(), 2u);
+  EXPECT_EQ(c.sensors[0].name, "spad");
+  EXPECT_EQ(std::get<sensors::SpadParams>(c.sensors[0].params).cycles, 500);
+  EXPECT_EQ(c.sensors[1].name, "tof");
+  EXPECT_EQ(std::get<sensors::CwTofParams>(c.sensors[1].params).frequencies_Hz.size(), 2u);
+  const auto path = dir_ / "effective.yaml";
+  std::ofstream(path) << effectiveConfigYaml(c);
+  const RunConfig again = loadRunConfig(path);
+  EXPECT_EQ(effectiveConfigYaml(again), effectiveConfigYaml(c));
+  EXPECT_DOUBLE_EQ(std::get<sensors::SpadParams>(again.sensors[0].params).pulse_fwhm_s, 80e-12);
+  EXPECT_TRUE(loadRunConfig(write(kValid)).sensors.empty());
+}
+
+TEST_F(RunConfigTest, SensorErrorsAreLocated) {
+  const std::string typo = errorOf(std::string(kValid) + kSensors + "    pulse_fwhn: 1 ps\n");
+  EXPECT_NE(typo.find("test.yaml:24:5"), std::string::npos) << typo;
+  EXPECT_NE(typo.find("sensors[1].pulse_fwhn: unknown key"), std::string::npos) << typo;
+  const std::string negative =
+      errorOf(std::string(kValid) + kSensors, {parseOverride("sensors.0.pulse_fwhm=-1ps")});
+  EXPECT_NE(negative.find("--set sensors.0.pulse_fwhm=-1ps"), std::string::npos) << negative;
+  EXPECT_NE(negative.find("sensors[0].pulse_fwhm"), std::string::npos) << negative;
+  const std::string twice =
+      errorOf(std::string(kValid) + kSensors, {parseOverride("sensors.1.name=spad")});
+  EXPECT_NE(twice.find("sensors[1].name"), std::string::npos) << twice;
+  EXPECT_NE(twice.find("already used"), std::string::npos) << twice;
+  const std::string path =
+      errorOf(std::string(kValid) + kSensors, {parseOverride("sensors.1.name=a/b")});
+  EXPECT_NE(path.find("sensors[1].name"), std::string::npos) << path;
 }
 
 }  // namespace

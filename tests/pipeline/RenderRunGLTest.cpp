@@ -9,6 +9,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "pipeline/CliRun.h"
 #include "support/TempDir.h"
 #include "tofsim/io/Exr.h"
 #include "tofsim/io/Npy.h"
@@ -16,25 +17,15 @@
 namespace tofsim {
 namespace {
 
-struct CommandResult {
-  int exitCode;
-  std::string output;
-};
+using test::CommandResult;
 
-CommandResult run(const std::string& args) {
-  const std::string command = std::string(TOFSIM_CLI) + " " + args + " 2>&1";
-  FILE* pipe = ::popen(command.c_str(), "r");
-  std::string output;
-  char buffer[512];
-  while (std::fgets(buffer, sizeof buffer, pipe)) output += buffer;
-  const int status = ::pclose(pipe);
-  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, output};
-}
+CommandResult run(const std::string& args) { return test::runCli(args); }
 
-const std::string kConfig = std::string(TOFSIM_SOURCE_DIR) + "/configs/cornell_box.yaml";
+const std::string kConfig = test::kCornellConfig;
 const std::string kSmall =
     " --set camera.resolution=[24,24] --set time.bins=200 --set render.shadow_map_resolution=256"
-    " --set render.indirect.rsm_resolution=8 --set render.indirect.points_per_vpl=200 -q";
+    " --set render.indirect.rsm_resolution=8 --set render.indirect.points_per_vpl=200 -q"
+    " --set sensors=[]";  // the sensors have their own tests (SenseGLTest.cpp)
 
 class RenderRunGLTest : public test::TempDirTest {};
 

@@ -3,15 +3,20 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <vector>
-
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
+#include <tuple>
+#include <utility>
+#include <vector>
 
-#include "tofsim/util/AtomicFile.h"
+#include "PngFile.h"
 #include "tofsim/util/Error.h"
 
 namespace tofsim::imaging {
+
+using detail::drawText;
+using detail::savePng;
+using detail::shortNumber;
 
 namespace {
 
@@ -31,13 +36,32 @@ unsigned char srgb8(double linear) {
   return static_cast<unsigned char>(std::lround(s * 255.0));
 }
 
-// PNG bytes encoded in memory, then written atomically.
-void savePng(const std::filesystem::path& path, const cv::Mat& bgr) {
-  std::vector<unsigned char> bytes;
-  if (!cv::imencode(".png", bgr, bytes)) {
-    throw InputError(FileLoc{path.string()}, "", "PNG encoding failed");
+// The range of the finite values, ignoring the extreme 0.5 % at each end (as
+// the tone map's 99.5th percentile white), and tightened to Tukey's outer
+// fences (quartiles -+ 3 IQR) when those are narrower: a few outliers (hot
+// pixels, a glint) or a minority of wild ones (pixels with no signal, whose
+// CW-ToF depth is noise over the whole unambiguous range) then do not
+// squeeze the rest of the picture into one colour. Mostly-dark pictures (a
+// quarter of the pixels at the minimum, e.g. a streak image, whose signal is
+// the sparse bright part) keep the percentile range.
+std::pair<double, double> robustRange(const std::vector<float>& data) {
+  std::vector<float> v;
+  v.reserve(data.size());
+  for (float x : data) {
+    if (std::isfinite(x)) v.push_back(x);
   }
-  writeFileAtomically(path, std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()));
+  if (v.empty()) return {0.0, 1.0};
+  std::sort(v.begin(), v.end());
+  const auto at = [&](double q) {
+    return static_cast<double>(v[std::min(v.size() - 1, static_cast<std::size_t>(q * v.size()))]);
+  };
+  double lo = at(0.005), hi = at(0.995);
+  const double q1 = at(0.25), q3 = at(0.75);
+  if (q1 > v.front() && q3 > q1) {
+    lo = std::max(lo, q1 - 3.0 * (q3 - q1));
+    hi = std::min(hi, q3 + 3.0 * (q3 - q1));
+  }
+  return {lo, hi > lo ? hi : lo + 1.0};
 }
 
 }  // namespace
@@ -60,56 +84,60 @@ void writeToneMappedPng(const std::filesystem::path& path, const Image& image, T
 }
 
 void writeColormappedPng(const std::filesystem::path& path, const Image& image,
-                         const std::string& label, double lo, double hi) {
+                         const std::string& label, const std::string& colormap, double lo,
+                         double hi) {
   TOFSIM_CHECK(image.channels == 1);
-  if (lo == hi) {
-    lo = INFINITY;
-    hi = -INFINITY;
-    for (float v : image.data) {
-      if (std::isfinite(v)) {
-        lo = std::min(lo, static_cast<double>(v));
-        hi = std::max(hi, static_cast<double>(v));
-      }
-    }
-    if (!(hi > lo)) hi = lo + 1.0;
-  }
-  // Upscale small images so the labels stay readable.
-  const int scale = std::max(1, 256 / std::max(image.width, image.height));
-  const int w = image.width * scale, h = image.height * scale;
-  const int bar = 24, margin = 90;
+  if (lo == hi) std::tie(lo, hi) = robustRange(image.data);
+  const int code = detail::colormapCode(colormap);
   cv::Mat gray(image.height, image.width, CV_8UC1);
-  cv::Mat valid(image.height, image.width, CV_8UC1);
+  cv::Mat invalid(image.height, image.width, CV_8UC1);
   for (int32_t y = 0; y < image.height; ++y) {
     for (int32_t x = 0; x < image.width; ++x) {
       const double v = image.at(y, x, 0);
-      valid.at<unsigned char>(y, x) = std::isfinite(v) ? 255 : 0;
-      gray.at<unsigned char>(y, x) =
-          static_cast<unsigned char>(std::lround(std::clamp((v - lo) / (hi - lo), 0.0, 1.0) * 255.0));
+      invalid.at<unsigned char>(y, x) = std::isfinite(v) ? 0 : 255;
+      gray.at<unsigned char>(y, x) = static_cast<unsigned char>(
+          std::lround(std::clamp((v - lo) / (hi - lo), 0.0, 1.0) * 255.0));
     }
   }
-  cv::Mat colored;
-  cv::applyColorMap(gray, colored, cv::COLORMAP_TURBO);
-  colored.setTo(cv::Scalar(0, 0, 0), valid == 0);
-  cv::Mat big;
+  cv::Mat colored, big;
+  cv::applyColorMap(gray, colored, code);
+  colored.setTo(cv::Scalar(0, 0, 0), invalid);
+  // Upscale small images (whole pixels, no smoothing) so they and the labels
+  // stay readable.
+  const int scale = std::max(1, 256 / std::max(image.width, image.height));
+  const int w = image.width * scale, h = image.height * scale;
   cv::resize(colored, big, cv::Size(w, h), 0, 0, cv::INTER_NEAREST);
-  cv::Mat canvas(std::max(h, 120), w + bar + margin + 10, CV_8UC3, cv::Scalar(255, 255, 255));
-  big.copyTo(canvas(cv::Rect(0, 0, w, h)));
-  cv::Mat ramp(canvas.rows - 40, 1, CV_8UC1);
-  for (int i = 0; i < ramp.rows; ++i) {
-    ramp.at<unsigned char>(i, 0) = static_cast<unsigned char>(255 - 255 * i / std::max(1, ramp.rows - 1));
+
+  // Layout: title on top (wrapped to the picture's width), image on the
+  // left, colour bar with five ticks on the right.
+  const int pad = 10, barW = 20, barH = std::max(h, 160);
+  int tickW = 0;
+  for (int k = 0; k <= 4; ++k) {
+    tickW = std::max(tickW, detail::textSize(shortNumber(lo + (hi - lo) * k / 4)).width);
   }
-  cv::Mat rampColored, rampWide;
-  cv::applyColorMap(ramp, rampColored, cv::COLORMAP_TURBO);
-  cv::resize(rampColored, rampWide, cv::Size(bar, ramp.rows), 0, 0, cv::INTER_NEAREST);
-  rampWide.copyTo(canvas(cv::Rect(w + 6, 20, bar, ramp.rows)));
-  char text[64];
-  std::snprintf(text, sizeof text, "%.4g", hi);
-  cv::putText(canvas, text, {w + bar + 10, 30}, cv::FONT_HERSHEY_SIMPLEX, 0.4, {0, 0, 0}, 1, cv::LINE_AA);
-  std::snprintf(text, sizeof text, "%.4g", lo);
-  cv::putText(canvas, text, {w + bar + 10, canvas.rows - 22}, cv::FONT_HERSHEY_SIMPLEX, 0.4, {0, 0, 0}, 1,
-              cv::LINE_AA);
-  cv::putText(canvas, label, {w + 4, canvas.rows - 6}, cv::FONT_HERSHEY_SIMPLEX, 0.4, {0, 0, 0}, 1,
-              cv::LINE_AA);
+  const int barX = pad + w + 12;
+  const int width = std::max(barX + barW + 8 + tickW + pad, 320);
+  const std::vector<std::string> title = detail::wrapText(label, width - 2 * pad);
+  const int lineH = 18, titleH = 10 + lineH * static_cast<int>(title.size());
+  cv::Mat canvas(titleH + barH + pad, width, CV_8UC3, cv::Scalar(255, 255, 255));
+  big.copyTo(canvas(cv::Rect(pad, titleH, w, h)));
+  for (std::size_t i = 0; i < title.size(); ++i) {
+    drawText(canvas, title[i], {pad, 20 + lineH * static_cast<int>(i)});
+  }
+  cv::Mat ramp(barH, 1, CV_8UC1), rampColored, rampWide;
+  for (int i = 0; i < barH; ++i) {
+    ramp.at<unsigned char>(i, 0) =
+        static_cast<unsigned char>(255 - 255 * i / std::max(1, barH - 1));
+  }
+  cv::applyColorMap(ramp, rampColored, code);
+  cv::resize(rampColored, rampWide, cv::Size(barW, barH), 0, 0, cv::INTER_NEAREST);
+  rampWide.copyTo(canvas(cv::Rect(barX, titleH, barW, barH)));
+  cv::rectangle(canvas, cv::Rect(barX, titleH, barW, barH), {0, 0, 0}, 1);
+  for (int k = 0; k <= 4; ++k) {
+    const int y = titleH + (barH - 1) - (barH - 1) * k / 4;
+    cv::line(canvas, {barX + barW, y}, {barX + barW + 4, y}, {0, 0, 0}, 1);
+    drawText(canvas, shortNumber(lo + (hi - lo) * k / 4), {barX + barW + 7, y + 5});
+  }
   savePng(path, canvas);
 }
 

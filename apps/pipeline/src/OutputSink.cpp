@@ -11,9 +11,11 @@ constexpr int32_t kChannels = 3;
 }
 
 OutputSink::OutputSink(const std::filesystem::path& directory, const config::OutputConfig& output,
-                       int32_t width, int32_t height, const TimeAxis& axis, bool keepInMemory)
+                       int32_t width, int32_t height, const TimeAxis& axis, bool keepInMemory,
+                       bool keepDirectInMemory)
     : width_(width), height_(height), axis_(axis) {
-  const io::NpyShape shape = {height, width, axis.bins, kChannels};
+  const io::NpyShape shape = {static_cast<std::size_t>(height), static_cast<std::size_t>(width),
+                              static_cast<std::size_t>(axis.bins), kChannels};
   if (output.transient) {
     total_ = std::make_unique<io::NpyStreamWriter>(directory / "transient.npy", shape);
   }
@@ -24,8 +26,8 @@ OutputSink::OutputSink(const std::filesystem::path& directory, const config::Out
     indirectFile_ = std::make_unique<io::NpyStreamWriter>(directory / "indirect.npy", shape);
   }
   steady_.assign(static_cast<std::size_t>(width) * height * kChannels, 0.0);
-  if (keepInMemory) {
-    volume_.emplace(width, height, axis, capture::defaultChannelNames(kChannels));
+  if (keepInMemory) volume_.emplace(width, height, axis, capture::defaultChannelNames(kChannels));
+  if (keepDirectInMemory) {
     direct_.emplace(width, height, axis, capture::defaultChannelNames(kChannels));
   }
 }
@@ -46,11 +48,9 @@ void OutputSink::consume(const capture::Segment& segment) {
       for (int32_t c = 0; c < kChannels; ++c) out[c] += in[t * kChannels + c];
     }
   }
-  if (volume_) {
-    const std::size_t offset = segment.firstPixel * pixelFloats;
-    std::copy_n(scratch_.data(), floats, volume_->data() + offset);
-    std::copy_n(segment.direct, floats, direct_->data() + offset);
-  }
+  const std::size_t offset = segment.firstPixel * pixelFloats;
+  if (volume_) std::copy_n(scratch_.data(), floats, volume_->data() + offset);
+  if (direct_) std::copy_n(segment.direct, floats, direct_->data() + offset);
 }
 
 void OutputSink::commit() {

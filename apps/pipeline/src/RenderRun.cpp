@@ -8,6 +8,7 @@
 #include "tofsim/pipeline/Metadata.h"
 #include "tofsim/pipeline/OutputSink.h"
 #include "tofsim/pipeline/Progress.h"
+#include "tofsim/pipeline/SenseRun.h"
 #include "tofsim/render/TransientRenderer.h"
 #include "tofsim/scene/GltfLoader.h"
 #include "tofsim/util/AtomicFile.h"
@@ -85,12 +86,17 @@ void writeOutputs(const config::RunConfig& config, const capture::RenderJob& job
   summary.device = context.description();
   progress.message("GL: " + summary.device);
   const config::OutputConfig& out = config.output;
-  OutputSink sink(dir, out, job.camera.width, job.camera.height, job.settings.time, out.frames);
+  // The sensors see what the render saves (the total volume, plus the direct
+  // component and the depth when the output writes them), so `tofsim sense`
+  // on the saved folder reproduces their outputs byte for byte.
+  const bool sensing = !config.sensors.empty();
+  OutputSink sink(dir, out, job.camera.width, job.camera.height, job.settings.time,
+                  out.frames || sensing, sensing && out.direct);
   render::TransientRenderer renderer(context);
-  summary.result = renderer.render(job, sink, [&](std::size_t done, std::size_t total,
-                                                  const std::string& what) {
-    progress.update(done, total, what);
-  });
+  summary.result =
+      renderer.render(job, sink, [&](std::size_t done, std::size_t total, const std::string& what) {
+        progress.update(done, total, what);
+      });
   sink.commit();
   if (out.transient) summary.files.push_back("transient.npy");
   if (out.direct) summary.files.push_back("direct.npy");
@@ -104,7 +110,7 @@ void writeOutputs(const config::RunConfig& config, const capture::RenderJob& job
   }
   if (out.depth) {
     io::writeExr(dir / "depth.exr", summary.result.depth_m, {"Z"});
-    imaging::writeColormappedPng(dir / "depth.png", summary.result.depth_m, "depth [m]");
+    imaging::writeColormappedPng(dir / "depth.png", summary.result.depth_m, "depth [m]", "turbo");
     summary.files.push_back("depth.exr");
     summary.files.push_back("depth.png");
   }
@@ -112,6 +118,15 @@ void writeOutputs(const config::RunConfig& config, const capture::RenderJob& job
   if (out.transient) {
     writeFileAtomically(dir / "transient.json", transientMetadataJson(config, job, summary.result));
     summary.files.push_back("transient.json");
+  }
+  if (sensing) {
+    SensorVolumes volumes;
+    volumes.volume = sink.volume();
+    volumes.directOnly = sink.directVolume();
+    volumes.depth_m = out.depth ? &summary.result.depth_m : nullptr;
+    for (std::string& f : runConfiguredSensors(config, volumes, dir, progress)) {
+      summary.files.push_back(std::move(f));
+    }
   }
   writeFileAtomically(dir / "config.effective.yaml", config::effectiveConfigYaml(config));
   summary.files.push_back("config.effective.yaml");

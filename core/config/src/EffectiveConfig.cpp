@@ -6,6 +6,7 @@
 #include <cstdio>
 
 #include "tofsim/config/RunConfig.h"
+#include "tofsim/config/SensorConfig.h"
 
 namespace tofsim::config {
 
@@ -105,6 +106,7 @@ std::string effectiveConfigYaml(const RunConfig& config) {
   root["time"] = time;
   root["render"] = renderNode(config);
   root["output"] = outputNode(config.output);
+  root["sensors"] = sensorsToYaml(config.sensors);
   YAML::Emitter out;
   out << root;
   return std::string("# Effective tofsim config: every key with its value, defaults included.\n") +

@@ -3,6 +3,7 @@
 
 #include "ConfigNode.h"
 #include "tofsim/config/RunConfig.h"
+#include "tofsim/config/SensorConfig.h"
 
 namespace tofsim::config {
 
@@ -70,7 +71,8 @@ void parseLight(const ConfigNode& node, LightConfig& out) {
   l.direction_world = vec3Of(node, "direction", l.direction_world);
   if (glm::length(l.direction_world) <= 0.0f) node.failKey("direction", "must not be zero");
   l.direction_world = glm::normalize(l.direction_world);
-  l.cone_half_angle_deg = static_cast<float>(node.getAngle_deg("cone_angle", l.cone_half_angle_deg));
+  l.cone_half_angle_deg =
+      static_cast<float>(node.getAngle_deg("cone_angle", l.cone_half_angle_deg));
   if (!(l.cone_half_angle_deg > 0.0f && l.cone_half_angle_deg <= 180.0f)) {
     node.failKey("cone_angle", "half angle must be in (0, 180] degrees");
   }
@@ -101,9 +103,12 @@ void parseTime(const ConfigNode& node, capture::RenderSettings& r) {
 
 void parseIndirect(const ConfigNode& node, capture::IndirectSettings& s) {
   s.enabled = node.getBool("enabled", s.enabled);
-  s.rsm_resolution = static_cast<int32_t>(intInRange(node, "rsm_resolution", s.rsm_resolution, 1, 4096));
-  s.ism_resolution = static_cast<int32_t>(intInRange(node, "ism_resolution", s.ism_resolution, 4, 4096));
-  s.points_per_vpl = static_cast<int32_t>(intInRange(node, "points_per_vpl", s.points_per_vpl, 1, 1 << 24));
+  s.rsm_resolution =
+      static_cast<int32_t>(intInRange(node, "rsm_resolution", s.rsm_resolution, 1, 4096));
+  s.ism_resolution =
+      static_cast<int32_t>(intInRange(node, "ism_resolution", s.ism_resolution, 4, 4096));
+  s.points_per_vpl =
+      static_cast<int32_t>(intInRange(node, "points_per_vpl", s.points_per_vpl, 1, 1 << 24));
   s.ism_pull_push = node.getBool("ism_pull_push", s.ism_pull_push);
   const std::string vis = node.getString("visibility", "ism");
   if (vis == "ism") {
@@ -127,8 +132,8 @@ void parseRender(const ConfigNode& node, RunConfig& out) {
   }
   capture::RenderSettings& r = out.render;
   r.seed = static_cast<uint64_t>(intInRange(node, "seed", 1, 0, (1LL << 62)));
-  r.shadow_map_resolution =
-      static_cast<int32_t>(intInRange(node, "shadow_map_resolution", r.shadow_map_resolution, 16, 16384));
+  r.shadow_map_resolution = static_cast<int32_t>(
+      intInRange(node, "shadow_map_resolution", r.shadow_map_resolution, 16, 16384));
   const double budget = node.getBytes("memory_budget", static_cast<double>(r.memory_budget_bytes));
   if (!(budget >= 1024.0 * 1024.0)) node.failKey("memory_budget", "must be at least 1 MiB");
   r.memory_budget_bytes = static_cast<std::size_t>(budget);
@@ -150,6 +155,28 @@ void parseOutput(const ConfigNode& node, OutputConfig& o) {
         o.indirect = true;
       } else {
         c.fail("components are direct and indirect (got '" + name + "')");
+      }
+    }
+  }
+}
+
+// Sensor names become folder names (OUTDIR/sensors/<name>/): keep them plain
+// and unique, so two sensors never write into the same place.
+void checkSensorNames(const ConfigNode& list, const std::vector<sensors::SensorSpec>& specs) {
+  const std::vector<ConfigNode> elements = list.elements();
+  for (std::size_t i = 0; i < specs.size(); ++i) {
+    const std::string& name = specs[i].name;
+    const bool plain = !name.empty() && name != "." && name != ".." &&
+                       name.find_first_not_of(
+                           "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ"
+                           "0123456789_.-") == std::string::npos;
+    if (!plain) {
+      elements[i].failKey("name", "must be letters, digits, '_', '-' or '.' (got '" + name + "')");
+    }
+    for (std::size_t j = 0; j < i; ++j) {
+      if (specs[j].name == name) {
+        elements[i].failKey("name", "sensor name '" + name + "' is already used by sensors[" +
+                                        std::to_string(j) + "]; give each sensor its own `name`");
       }
     }
   }
@@ -182,7 +209,8 @@ Override parseOverride(const std::string& text) {
 
 RunConfig loadRunConfig(const std::filesystem::path& file, const std::vector<Override>& overrides) {
   YAML::Node yaml = loadYamlFile(file.string());
-  if (!yaml.IsMap()) throw InputError(FileLoc{file.string(), 1, 1}, "", "the config must be a mapping");
+  if (!yaml.IsMap())
+    throw InputError(FileLoc{file.string(), 1, 1}, "", "the config must be a mapping");
   for (const Override& o : overrides) applyOverride(yaml, o.keyPath, o.value);
   const ConfigNode root(yaml, file.string());
   for (const Override& o : overrides) {
@@ -205,6 +233,13 @@ RunConfig loadRunConfig(const std::filesystem::path& file, const std::vector<Ove
   }
   if (const auto render = root.optionalChild("render")) parseRender(*render, config);
   if (const auto output = root.optionalChild("output")) parseOutput(*output, config.output);
+  if (const auto list = root.optionalChild("sensors")) {
+    // parseSensors reports unknown keys inside each sensor itself; the keys it
+    // read are shared with `root`, so the check below neither repeats nor
+    // misses them.
+    config.sensors = parseSensors(*list);
+    checkSensorNames(*list, config.sensors);
+  }
   root.reportUnusedKeys();
   return config;
 }

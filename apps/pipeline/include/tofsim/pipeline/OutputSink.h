@@ -17,16 +17,18 @@ namespace tofsim::pipeline {
 
 class OutputSink : public capture::SegmentSink {
  public:
-  /// keepInMemory: also collect the total volume (for frames and sensors).
+  /// keepInMemory: also collect the total volume (for frames and sensors);
+  /// keepDirectInMemory: also the direct component (for the sensors).
   OutputSink(const std::filesystem::path& directory, const config::OutputConfig& output,
-             int32_t width, int32_t height, const TimeAxis& axis, bool keepInMemory);
+             int32_t width, int32_t height, const TimeAxis& axis, bool keepInMemory,
+             bool keepDirectInMemory = false);
   void consume(const capture::Segment& segment) override;
   /// Renames the streamed files into place.
   void commit();
 
   /// sum over t of transient.npy, accumulated in double.
   Image steady() const;
-  /// Only when keepInMemory.
+  /// Only when keepInMemory (volume) or keepDirectInMemory (directVolume).
   const TransientVolume* volume() const { return volume_ ? &*volume_ : nullptr; }
   const TransientVolume* directVolume() const { return direct_ ? &*direct_ : nullptr; }
 

@@ -13,6 +13,7 @@
 #include "tofsim/capture/Camera.h"
 #include "tofsim/capture/Light.h"
 #include "tofsim/capture/RenderSettings.h"
+#include "tofsim/sensors/SensorSpec.h"
 
 namespace tofsim::config {
 
@@ -51,6 +52,10 @@ struct RunConfig {
   capture::RenderSettings render;
   RendererKind renderer = RendererKind::InstantRadiosity;
   OutputConfig output;
+  /// The `sensors:` list (sensors/README.md). Run after a render on the kept
+  /// volume, and by `tofsim sense` on a saved one, with seed render.seed.
+  /// Names are unique and usable as folder names.
+  std::vector<sensors::SensorSpec> sensors;
 };
 
 /// One `--set key.path=value` override, applied before validation.

@@ -1,0 +1,33 @@
+#pragma once
+// Private to the imaging module: PNG encoding and the drawing helpers the
+// picture writers share.
+
+#include <filesystem>
+#include <opencv2/core.hpp>
+#include <string>
+#include <vector>
+
+namespace tofsim::imaging::detail {
+
+/// Encodes `bgr` as PNG in memory, then writes it atomically (the file
+/// appears under its name only when complete).
+void savePng(const std::filesystem::path& path, const cv::Mat& bgr);
+
+/// OpenCV's COLORMAP_* for a matplotlib-style name; unknown names give turbo,
+/// so a misspelt colormap still produces a readable picture.
+int colormapCode(const std::string& name);
+
+/// "%.4g" of a value, for tick and colour-bar labels.
+std::string shortNumber(double value);
+
+/// Text in the Hershey simplex font, black, anti-aliased; `origin` is the
+/// baseline's left end.
+void drawText(cv::Mat& canvas, const std::string& text, cv::Point origin, double scale = 0.45);
+/// Width and height in pixels of drawText's rendering.
+cv::Size textSize(const std::string& text, double scale = 0.45);
+
+/// `text` broken at spaces into lines no wider than maxWidth pixels (a
+/// single word wider than that gets a line of its own).
+std::vector<std::string> wrapText(const std::string& text, int maxWidth, double scale = 0.45);
+
+}  // namespace tofsim::imaging::detail

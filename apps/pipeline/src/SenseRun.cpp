@@ -1,0 +1,91 @@
+#include "tofsim/pipeline/SenseRun.h"
+
+#include <chrono>
+#include <cstdio>
+
+#include "tofsim/pipeline/SavedVolume.h"
+#include "tofsim/pipeline/SensorWriter.h"
+#include "tofsim/sensors/RunSensor.h"
+#include "tofsim/util/Error.h"
+
+namespace tofsim::pipeline {
+
+namespace {
+
+double secondsSince(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+// The config says what it expects; the saved volume decides. A mismatch is
+// legitimate (a volume rendered with other --set values) but worth a note.
+void noteDifferences(const config::RunConfig& config, const TransientVolume& volume,
+                     const Progress& progress) {
+  const capture::Camera& cam = config.camera.camera;
+  const TimeAxis& axis = config.render.time;
+  if (cam.width != volume.width() || cam.height != volume.height() || axis.bins != volume.bins() ||
+      axis.start_s != volume.axis().start_s || axis.bin_width_s != volume.axis().bin_width_s) {
+    progress.message(
+        "note: the saved volume's size or time axis differs from the config's; "
+        "the sensors use the volume's");
+  }
+}
+
+}  // namespace
+
+std::vector<std::string> runConfiguredSensors(const config::RunConfig& config,
+                                              const SensorVolumes& volumes,
+                                              const std::filesystem::path& outputDirectory,
+                                              const Progress& progress) {
+  TOFSIM_CHECK(volumes.volume != nullptr);
+  std::vector<std::string> files;
+  for (std::size_t i = 0; i < config.sensors.size(); ++i) {
+    const sensors::SensorSpec& spec = config.sensors[i];
+    const auto start = std::chrono::steady_clock::now();
+    sensors::SensorInputs inputs;
+    inputs.volume = volumes.volume;
+    inputs.directOnly = volumes.directOnly;
+    inputs.groundTruthDepth_m = volumes.depth_m;
+    inputs.seed = config.render.seed;
+    std::vector<sensors::SensorOutput> outputs;
+    try {
+      outputs = sensors::runSensor(spec, inputs);
+    } catch (const InputError& e) {
+      // The sensor library does not know the config; say which entry failed.
+      throw InputError(
+          FileLoc{config.config_file.string()}, "sensors[" + std::to_string(i) + "]",
+          "sensor '" + spec.name + "' (" + sensors::sensorTypeName(spec.params) + "): " + e.what());
+    }
+    const std::filesystem::path relative = std::filesystem::path("sensors") / spec.name;
+    for (const std::string& f : writeSensorOutputs(outputDirectory / relative, outputs)) {
+      files.push_back((relative / f).string());
+    }
+    char line[160];
+    std::snprintf(line, sizeof line, "sensor '%s' (%s): %zu outputs in %.2f s", spec.name.c_str(),
+                  sensors::sensorTypeName(spec.params), outputs.size(), secondsSince(start));
+    progress.message(line);
+  }
+  return files;
+}
+
+SenseSummary runSense(const config::RunConfig& config, const SenseOptions& options) {
+  if (config.sensors.empty()) {
+    throw InputError(FileLoc{config.config_file.string()}, "sensors",
+                     "the config lists no sensors: nothing to simulate");
+  }
+  const auto start = std::chrono::steady_clock::now();
+  Progress progress("sense", options.quiet);
+  const SavedVolume saved = loadSavedVolume(options.volumeDirectory);
+  noteDifferences(config, saved.volume, progress);
+  SenseSummary summary;
+  summary.outputDirectory =
+      options.outputDirectory.empty() ? options.volumeDirectory : options.outputDirectory;
+  SensorVolumes volumes;
+  volumes.volume = &saved.volume;
+  volumes.directOnly = saved.directOnly ? &*saved.directOnly : nullptr;
+  volumes.depth_m = saved.depth_m ? &*saved.depth_m : nullptr;
+  summary.files = runConfiguredSensors(config, volumes, summary.outputDirectory, progress);
+  summary.seconds = secondsSince(start);
+  return summary;
+}
+
+}  // namespace tofsim::pipeline
