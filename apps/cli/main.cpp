@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "tofsim/config/RunConfig.h"
+#include "tofsim/pipeline/CompareRun.h"
 #include "tofsim/pipeline/RenderRun.h"
 #include "tofsim/pipeline/SenseRun.h"
 #include "tofsim/pipeline/Version.h"
@@ -25,8 +26,11 @@ std::vector<config::Override> parseOverrides(const std::vector<std::string>& set
 
 int runRenderCommand(const std::string& configPath, const std::string& outputDir,
                      const std::vector<std::string>& sets, bool quiet,
-                     const std::string& platform) {
-  const config::RunConfig config = config::loadRunConfig(configPath, parseOverrides(sets));
+                     const std::string& platform, const std::string& renderer) {
+  std::vector<config::Override> overrides = parseOverrides(sets);
+  // --renderer is a documented shorthand for --set render.renderer=...
+  if (!renderer.empty()) overrides.push_back({"render.renderer", renderer});
+  const config::RunConfig config = config::loadRunConfig(configPath, overrides);
   pipeline::RunOptions options;
   options.outputDirectory = outputDir;
   options.quiet = quiet;
@@ -57,6 +61,15 @@ int runSenseCommand(const std::string& configPath, const std::string& volumeDir,
   return 0;
 }
 
+int runCompareCommand(const std::string& a, const std::string& b, const std::string& outputDir) {
+  const std::filesystem::path out = outputDir.empty() ? std::filesystem::path(a) : std::filesystem::path(outputDir);
+  const pipeline::CompareSummary summary = pipeline::runCompare(a, b, out);
+  std::printf("A (under test): %s\nB (reference):  %s\n%s\n", a.c_str(), b.c_str(),
+              compare::summaryTable(summary.comparison).c_str());
+  std::fprintf(stderr, "compare: wrote %zu file(s) to %s\n", summary.files.size(), out.string().c_str());
+  return 0;
+}
+
 int runValidateCommand(const std::string& configPath, const std::vector<std::string>& sets) {
   config::loadRunConfig(configPath, parseOverrides(sets));
   std::printf("%s: ok\n", configPath.c_str());
@@ -70,7 +83,7 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", std::string("tofsim ") + tofsim::pipeline::kVersion);
   app.require_subcommand(1);
 
-  std::string configPath, outputDir, platform, volumeDir;
+  std::string configPath, outputDir, platform, volumeDir, renderer, dirA, dirB;
   std::vector<std::string> sets;
   bool quiet = false;
 
@@ -81,6 +94,8 @@ int main(int argc, char** argv) {
   render->add_flag("-q,--quiet", quiet, "No progress output");
   render->add_option("--egl-platform", platform,
                      "auto | surfaceless | device (default: $TOFSIM_EGL_PLATFORM or auto)");
+  render->add_option("--renderer", renderer, "ir | reference (same as --set render.renderer=...)")
+      ->check(CLI::IsMember({"ir", "reference"}));
 
   CLI::App* sense = app.add_subcommand(
       "sense", "Run a config's sensors on a saved render (uses only sensors: and render.seed)");
@@ -90,6 +105,12 @@ int main(int argc, char** argv) {
   sense->add_option("-o,--output", outputDir, "Output directory (default: the --volume folder)");
   sense->add_option("--set", sets, "Override a config key: key.path=value (repeatable)");
   sense->add_flag("-q,--quiet", quiet, "No progress output");
+
+  CLI::App* compareCommand = app.add_subcommand(
+      "compare", "Error metrics of render A against reference B (two output directories)");
+  compareCommand->add_option("a", dirA, "Output directory under test")->required();
+  compareCommand->add_option("b", dirB, "Output directory of the reference")->required();
+  compareCommand->add_option("-o,--output", outputDir, "Where to write the comparison files (default: A)");
 
   CLI::App* validate = app.add_subcommand("validate", "Check a config without rendering");
   validate->add_option("config", configPath, "YAML config file")->required();
@@ -101,7 +122,10 @@ int main(int argc, char** argv) {
     return app.exit(e) == 0 ? 0 : 2;
   }
   try {
-    if (render->parsed()) return runRenderCommand(configPath, outputDir, sets, quiet, platform);
+    if (render->parsed()) {
+      return runRenderCommand(configPath, outputDir, sets, quiet, platform, renderer);
+    }
+    if (compareCommand->parsed()) return runCompareCommand(dirA, dirB, outputDir);
     if (sense->parsed()) return runSenseCommand(configPath, volumeDir, outputDir, sets, quiet);
     if (validate->parsed()) return runValidateCommand(configPath, sets);
   } catch (const tofsim::InputError& e) {

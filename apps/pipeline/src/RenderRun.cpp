@@ -9,6 +9,7 @@
 #include "tofsim/pipeline/OutputSink.h"
 #include "tofsim/pipeline/Progress.h"
 #include "tofsim/pipeline/SenseRun.h"
+#include "tofsim/reference/ReferenceRenderer.h"
 #include "tofsim/render/TransientRenderer.h"
 #include "tofsim/scene/GltfLoader.h"
 #include "tofsim/util/AtomicFile.h"
@@ -78,13 +79,28 @@ RunSummary runRender(const config::RunConfig& config, const RunOptions& options)
 }
 
 namespace {
+// Renders with the configured renderer: transient instant radiosity on GL, or
+// the CPU reference path tracer (which needs no GL context).
+capture::RenderResult renderVolume(const config::RunConfig& config, const capture::RenderJob& job,
+                                   const RunOptions& options, capture::SegmentSink& sink,
+                                   const capture::ProgressCallback& progress, std::string& device) {
+  if (config.renderer == config::RendererKind::Reference) {
+    reference::ReferenceSettings settings;
+    settings.bounces = config.reference.bounces;
+    settings.samples_per_pixel = config.reference.samples_per_pixel;
+    settings.threads = config.reference.threads;
+    device = "CPU reference path tracer";
+    return reference::ReferenceRenderer(settings).render(job, sink, progress);
+  }
+  gl::Context context(options.eglPlatform);
+  device = context.description();
+  return render::TransientRenderer(context).render(job, sink, progress);
+}
+
 void writeOutputs(const config::RunConfig& config, const capture::RenderJob& job,
                   const RunOptions& options, Progress& progress, RunSummary& summary) {
   const std::filesystem::path& dir = summary.outputDirectory;
 
-  gl::Context context(options.eglPlatform);
-  summary.device = context.description();
-  progress.message("GL: " + summary.device);
   const config::OutputConfig& out = config.output;
   // The sensors see what the render saves (the total volume, plus the direct
   // component and the depth when the output writes them), so `tofsim sense`
@@ -92,11 +108,12 @@ void writeOutputs(const config::RunConfig& config, const capture::RenderJob& job
   const bool sensing = !config.sensors.empty();
   OutputSink sink(dir, out, job.camera.width, job.camera.height, job.settings.time,
                   out.frames || sensing, sensing && out.direct);
-  render::TransientRenderer renderer(context);
-  summary.result =
-      renderer.render(job, sink, [&](std::size_t done, std::size_t total, const std::string& what) {
-        progress.update(done, total, what);
-      });
+  const capture::ProgressCallback onProgress = [&](std::size_t done, std::size_t total,
+                                                    const std::string& what) {
+    progress.update(done, total, what);
+  };
+  summary.result = renderVolume(config, job, options, sink, onProgress, summary.device);
+  progress.message("device: " + summary.device);
   sink.commit();
   if (out.transient) summary.files.push_back("transient.npy");
   if (out.direct) summary.files.push_back("direct.npy");

@@ -72,6 +72,11 @@ YAML::Node renderNode(const RunConfig& config) {
   i["visibility"] = r.indirect.visibility == capture::Visibility::Exact ? "exact" : "ism";
   i["geometry_clamp"] = r.indirect.geometry_term_clamp_per_m2;
   n["indirect"] = i;
+  YAML::Node ref;
+  ref["bounces"] = config.reference.bounces;
+  ref["samples_per_pixel"] = config.reference.samples_per_pixel;
+  ref["threads"] = config.reference.threads;
+  n["reference"] = ref;
   return n;
 }
 

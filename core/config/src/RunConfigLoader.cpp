@@ -138,6 +138,13 @@ void parseRender(const ConfigNode& node, RunConfig& out) {
   if (!(budget >= 1024.0 * 1024.0)) node.failKey("memory_budget", "must be at least 1 MiB");
   r.memory_budget_bytes = static_cast<std::size_t>(budget);
   if (const auto indirect = node.optionalChild("indirect")) parseIndirect(*indirect, r.indirect);
+  if (const auto reference = node.optionalChild("reference")) {
+    ReferenceConfig& ref = out.reference;
+    ref.bounces = static_cast<int32_t>(intInRange(*reference, "bounces", ref.bounces, 1, 64));
+    ref.samples_per_pixel =
+        static_cast<int32_t>(intInRange(*reference, "samples_per_pixel", ref.samples_per_pixel, 1, 1 << 24));
+    ref.threads = static_cast<int32_t>(intInRange(*reference, "threads", ref.threads, 0, 4096));
+  }
 }
 
 void parseOutput(const ConfigNode& node, OutputConfig& o) {

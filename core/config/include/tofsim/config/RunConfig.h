@@ -34,6 +34,13 @@ struct LightConfig {
 
 enum class RendererKind { InstantRadiosity, Reference };
 
+/// render.reference: the CPU path tracer's settings (core/reference).
+struct ReferenceConfig {
+  int32_t bounces = 2;              ///< 1 direct only, 2 direct + one indirect, n
+  int32_t samples_per_pixel = 64;   ///< indirect paths per pixel
+  int32_t threads = 0;              ///< 0: all hardware threads
+};
+
 struct OutputConfig {
   std::filesystem::path directory = "out";
   bool transient = true;    ///< transient.npy + transient.json
@@ -51,6 +58,7 @@ struct RunConfig {
   LightConfig light;
   capture::RenderSettings render;
   RendererKind renderer = RendererKind::InstantRadiosity;
+  ReferenceConfig reference;
   OutputConfig output;
   /// The `sensors:` list (sensors/README.md). Run after a render on the kept
   /// volume, and by `tofsim sense` on a saved one, with seed render.seed.
