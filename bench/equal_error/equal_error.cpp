@@ -1,0 +1,138 @@
+// Equal-error benchmark (issue 4): on the Cornell box, how long the CPU
+// reference path tracer needs to reach the error of a transient instant
+// radiosity render, both measured against a long-converged reference, all in
+// one run on one machine. Usage: equal_error SCENE.gltf [resolution]
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "tofsim/capture/VolumeCollector.h"
+#include "tofsim/compare/VolumeComparison.h"
+#include "tofsim/gl/Context.h"
+#include "tofsim/reference/ReferenceRenderer.h"
+#include "tofsim/render/TransientRenderer.h"
+#include "tofsim/scene/GltfLoader.h"
+#include "tofsim/volume/PhysicalConstants.h"
+
+namespace {
+
+using namespace tofsim;
+
+capture::RenderJob cornellJob(const scene::Scene& scene, int resolution) {
+  capture::RenderJob job;
+  job.scene = &scene;
+  job.camera.position_world = {0.278f, 0.273f, -0.8f};
+  job.camera.look_at_world = {0.278f, 0.273f, 0.0f};
+  job.camera.fov_y_deg = 39.3f;
+  job.camera.width = job.camera.height = resolution;
+  job.light.type = capture::Light::Type::Spot;
+  job.light.position_world = {0.328f, 0.273f, -0.8f};
+  job.light.direction_world = {0.0f, 0.0f, 1.0f};
+  job.light.cone_half_angle_deg = 28.0f;
+  job.settings.time = TimeAxis{1.5 / kSpeedOfLight_m_per_s, 0.01 / kSpeedOfLight_m_per_s, 200};
+  job.settings.shadow_map_resolution = 1024;
+  return job;
+}
+
+struct Measured {
+  double seconds;
+  compare::VolumeComparison error;
+};
+
+template <typename Render>
+Measured measure(const capture::RenderJob& job, const TransientVolume& truth, Render render) {
+  capture::VolumeCollector out(job.camera.width, job.camera.height, job.settings.time, 3);
+  const auto start = std::chrono::steady_clock::now();
+  render(out);
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return {seconds, compare::compareVolumes(out.total(), truth)};
+}
+
+Measured referenceRun(const capture::RenderJob& job, const TransientVolume& truth, int spp) {
+  reference::ReferenceSettings s;
+  s.samples_per_pixel = spp;
+  return measure(job, truth, [&](capture::VolumeCollector& out) {
+    reference::ReferenceRenderer(s).render(job, out);
+  });
+}
+
+// Reference time at which its transient error equals `target`, interpolated
+// on the log-log line between the two sample counts that bracket it.
+double timeAtError(const std::vector<std::pair<double, double>>& timeError, double target) {
+  for (std::size_t i = 1; i < timeError.size(); ++i) {
+    const auto [t0, e0] = timeError[i - 1];
+    const auto [t1, e1] = timeError[i];
+    if (e1 <= target && e0 >= target) {
+      const double f = std::log(e0 / target) / std::log(e0 / e1);
+      return std::exp(std::log(t0) + f * (std::log(t1) - std::log(t0)));
+    }
+  }
+  return NAN;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  if (argc < 2) {
+    std::fprintf(stderr, "usage: equal_error SCENE.gltf [resolution]\n");
+    return 2;
+  }
+  const int resolution = argc > 2 ? std::atoi(argv[2]) : 64;
+  const scene::Scene scene = scene::loadGltf(argv[1]);
+  const capture::RenderJob job = cornellJob(scene, resolution);
+  gl::Context context;
+  std::printf("device: %s; reference: Embree, %u threads\n", context.description().c_str(),
+              std::thread::hardware_concurrency());
+
+  // Ground truth: 2 bounces (the transport IR simulates), many paths, seed 99.
+  capture::RenderJob truthJob = job;
+  truthJob.settings.seed = 99;
+  reference::ReferenceSettings truthSettings;
+  truthSettings.samples_per_pixel = 16384;
+  capture::VolumeCollector truthOut(resolution, resolution, job.settings.time, 3);
+  const auto t0 = std::chrono::steady_clock::now();
+  reference::ReferenceRenderer(truthSettings).render(truthJob, truthOut);
+  const double truthSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  const TransientVolume truth = truthOut.total();
+  std::printf("ground truth: reference, %d paths/pixel, %.1f s\n\n", truthSettings.samples_per_pixel,
+              truthSeconds);
+
+  std::printf("| renderer | setting | seconds | steady rel. L1 | transient rel. L1 |\n|---|---|---|---|---|\n");
+  struct IrCase { const char* name; capture::Visibility visibility; double clamp; int rsm; };
+  std::vector<std::pair<std::string, Measured>> irRuns;
+  for (const IrCase& c : {IrCase{"IR, ISM 32^2, clamp 100", capture::Visibility::Ism, 100.0, 32},
+                          IrCase{"IR, ISM 32^2, clamp 100", capture::Visibility::Ism, 100.0, 64},
+                          IrCase{"IR, exact, no clamp", capture::Visibility::Exact, 0.0, 32},
+                          IrCase{"IR, exact, no clamp", capture::Visibility::Exact, 0.0, 64}}) {
+    capture::RenderJob irJob = job;
+    irJob.settings.indirect.visibility = c.visibility;
+    irJob.settings.indirect.geometry_term_clamp_per_m2 = c.clamp;
+    irJob.settings.indirect.rsm_resolution = c.rsm;
+    render::TransientRenderer renderer(context);
+    const Measured m = measure(irJob, truth, [&](capture::VolumeCollector& out) { renderer.render(irJob, out); });
+    const std::string setting = std::string(c.name) + ", RSM " + std::to_string(c.rsm) + "^2";
+    std::printf("| IR | %s | %.2f | %.4f | %.4f |\n", setting.c_str(), m.seconds,
+                m.error.steadyRelativeL1, m.error.transientRelativeL1);
+    irRuns.emplace_back(setting, m);
+  }
+  std::vector<std::pair<double, double>> timeError;
+  for (int spp = 1; spp <= 4096; spp *= 2) {
+    const Measured m = referenceRun(job, truth, spp);
+    std::printf("| reference | %d paths/pixel | %.2f | %.4f | %.4f |\n", spp, m.seconds,
+                m.error.steadyRelativeL1, m.error.transientRelativeL1);
+    timeError.emplace_back(m.seconds, m.error.transientRelativeL1);
+  }
+  std::printf("\n| IR setting | IR seconds | reference seconds at equal transient error | speed-up |\n|---|---|---|---|\n");
+  for (const auto& [setting, m] : irRuns) {
+    const double t = timeAtError(timeError, m.error.transientRelativeL1);
+    std::printf("| %s | %.2f | %s | %s |\n", setting.c_str(), m.seconds,
+                std::isnan(t) ? "outside the measured range" : std::to_string(t).c_str(),
+                std::isnan(t) ? "-" : std::to_string(t / m.seconds).c_str());
+  }
+  return 0;
+}
