@@ -16,6 +16,7 @@
 #include "tofsim/gl/Context.h"
 #include "tofsim/reference/ReferenceRenderer.h"
 #include "tofsim/render/TransientRenderer.h"
+#include "support/TestJobs.h"  // the Cornell box job shared with the tests
 #include "tofsim/scene/GltfLoader.h"
 #include "tofsim/volume/PhysicalConstants.h"
 
@@ -24,17 +25,7 @@ namespace {
 using namespace tofsim;
 
 capture::RenderJob cornellJob(const scene::Scene& scene, int resolution) {
-  capture::RenderJob job;
-  job.scene = &scene;
-  job.camera.position_world = {0.278f, 0.273f, -0.8f};
-  job.camera.look_at_world = {0.278f, 0.273f, 0.0f};
-  job.camera.fov_y_deg = 39.3f;
-  job.camera.width = job.camera.height = resolution;
-  job.light.type = capture::Light::Type::Spot;
-  job.light.position_world = {0.328f, 0.273f, -0.8f};
-  job.light.direction_world = {0.0f, 0.0f, 1.0f};
-  job.light.cone_half_angle_deg = 28.0f;
-  job.settings.time = TimeAxis{1.5 / kSpeedOfLight_m_per_s, 0.01 / kSpeedOfLight_m_per_s, 200};
+  capture::RenderJob job = test::cornellBoxJob(scene, resolution, 200, 0.01);
   job.settings.shadow_map_resolution = 1024;
   return job;
 }

@@ -14,6 +14,7 @@
 #include "tofsim/capture/SegmentSink.h"
 #include "tofsim/gl/Context.h"
 #include "tofsim/render/TransientRenderer.h"
+#include "support/TestJobs.h"  // the Cornell box job shared with the tests
 #include "tofsim/scene/GltfLoader.h"
 #include "tofsim/volume/PhysicalConstants.h"
 
@@ -33,17 +34,8 @@ struct Case {
   int bins, rsm, ism, points;
 };
 
-capture::RenderJob baseJob(const scene::Scene& scene, int resolution) {
-  capture::RenderJob job;
-  job.scene = &scene;
-  job.camera.position_world = {0.278f, 0.273f, -0.8f};
-  job.camera.look_at_world = {0.278f, 0.273f, 0.0f};
-  job.camera.fov_y_deg = 39.3f;
-  job.camera.width = job.camera.height = resolution;
-  job.light.type = capture::Light::Type::Spot;
-  job.light.position_world = {0.328f, 0.273f, -0.8f};
-  job.light.direction_world = {0.0f, 0.0f, 1.0f};
-  job.light.cone_half_angle_deg = 28.0f;
+capture::RenderJob baseJob(const scene::Scene& scene, int resolution, int bins) {
+  capture::RenderJob job = test::cornellBoxJob(scene, resolution, bins, 2.0 / bins);
   job.settings.shadow_map_resolution = 1024;
   job.settings.memory_budget_bytes = std::size_t{1} << 30;
   return job;
@@ -81,8 +73,7 @@ int main(int argc, char** argv) {
               "VPL-pixel gathers/s | peak GPU MiB |\n");
   std::printf("|---|---|---|---|---|---|---|---|---|---|---|\n");
   for (const Case& c : cases) {
-    capture::RenderJob job = baseJob(scene, resolution);
-    job.settings.time = TimeAxis{1.5 / kSpeedOfLight_m_per_s, 2.0 / kSpeedOfLight_m_per_s / c.bins, c.bins};
+    capture::RenderJob job = baseJob(scene, resolution, c.bins);
     job.settings.indirect.rsm_resolution = c.rsm;
     job.settings.indirect.ism_resolution = c.ism;
     job.settings.indirect.points_per_vpl = c.points;

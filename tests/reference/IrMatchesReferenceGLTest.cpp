@@ -8,6 +8,7 @@
 #include <cstdio>
 
 #include "support/GlTestContext.h"
+#include "support/TestJobs.h"
 #include "tofsim/capture/VolumeCollector.h"
 #include "tofsim/compare/VolumeComparison.h"
 #include "tofsim/reference/ReferenceRenderer.h"
@@ -21,19 +22,9 @@ namespace {
 using namespace capture;
 
 RenderJob cornellJob(const scene::Scene& scene) {
-  RenderJob job;
-  job.scene = &scene;
-  job.camera.position_world = {0.278f, 0.273f, -0.8f};
-  job.camera.look_at_world = {0.278f, 0.273f, 0.0f};
-  job.camera.fov_y_deg = 39.3f;
-  job.camera.width = job.camera.height = 24;
-  job.light.type = Light::Type::Spot;
-  job.light.position_world = {0.328f, 0.273f, -0.8f};
-  job.light.direction_world = {0.0f, 0.0f, 1.0f};
-  job.light.cone_half_angle_deg = 28.0f;
   // 3 cm bins: coarse enough that the VPLs' discrete emission times (the
   // paper's temporal banding) average out within a bin.
-  job.settings.time = TimeAxis{1.5 / kSpeedOfLight_m_per_s, 0.03 / kSpeedOfLight_m_per_s, 80};
+  RenderJob job = test::cornellBoxJob(scene, 24, 80, 0.03);
   job.settings.shadow_map_resolution = 1024;
   job.settings.indirect.rsm_resolution = 64;
   job.settings.indirect.visibility = Visibility::Exact;

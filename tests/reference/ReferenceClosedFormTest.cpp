@@ -8,10 +8,15 @@
 #include <cmath>
 #include <optional>
 
-#include "ReferenceTestScenes.h"
+#include "RenderReference.h"
+#include "support/ClosedForm.h"
 
 namespace tofsim::reference {
 namespace {
+
+using test::hitOnPlane;
+using test::peakBin;
+using test::unambiguousBin;
 
 using namespace capture;
 
@@ -24,32 +29,8 @@ ReferenceSettings directOnly() {
   return s;
 }
 
-glm::dvec3 hitOnPlane(const Camera& camera, int x, int y, double z0 = 0.0) {
-  const glm::dvec3 o(camera.position_world);
-  const glm::dvec3 d(camera.pixelDirection(x, y));
-  return o + d * ((z0 - o.z) / d.z);
-}
 
-int peakBin(const TransientVolume& v, int y, int x, int c = 0) {
-  int best = -1;
-  float bestValue = 0.0f;
-  for (int t = 0; t < v.bins(); ++t) {
-    if (v.at(y, x, t, c) > bestValue) {
-      bestValue = v.at(y, x, t, c);
-      best = t;
-    }
-  }
-  return best;
-}
 
-// The bin of an optical path, or nullopt within 2% of a bin edge, where float
-// rounding of the hit point may pick either side.
-std::optional<int> unambiguousBin(const TimeAxis& axis, double path_m) {
-  const double f = (path_m / kSpeedOfLight_m_per_s - axis.start_s) / axis.bin_width_s;
-  const double frac = f - std::floor(f);
-  if (frac < 0.02 || frac > 0.98) return std::nullopt;
-  return static_cast<int>(std::floor(f));
-}
 
 TEST(ReferenceClosedFormTest, PeakLandsInTheBinOfTheRoundTripPath) {
   test::PlaneJob s;

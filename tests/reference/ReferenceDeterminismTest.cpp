@@ -5,7 +5,8 @@
 
 #include <cstring>
 
-#include "ReferenceTestScenes.h"
+#include "RenderReference.h"
+#include "support/ClosedForm.h"
 #include "tofsim/util/Error.h"
 
 namespace tofsim::reference {

@@ -6,7 +6,8 @@
 
 #include <cmath>
 
-#include "ReferenceTestScenes.h"
+#include "RenderReference.h"
+#include "support/ClosedForm.h"
 
 namespace tofsim::reference {
 namespace {

@@ -13,7 +13,8 @@
 #include <cstdlib>
 
 #include "../support/GlTestContext.h"
-#include "ReferenceTestScenes.h"
+#include "RenderReference.h"
+#include "support/ClosedForm.h"
 #include "tofsim/compare/VolumeComparison.h"
 #include "tofsim/render/TransientRenderer.h"
 

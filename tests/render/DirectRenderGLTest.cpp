@@ -8,8 +8,9 @@
 #include <cstring>
 #include <optional>
 
-#include "../support/AnalyticScenes.h"
-#include "../support/GlTestContext.h"
+#include "support/ClosedForm.h"
+#include "support/GlTestContext.h"
+#include "support/TestJobs.h"
 #include "tofsim/capture/VolumeCollector.h"
 #include "tofsim/render/TransientRenderer.h"
 #include "tofsim/volume/PhysicalConstants.h"
@@ -18,26 +19,13 @@ namespace tofsim::render {
 namespace {
 
 using namespace capture;
+using test::hitOnPlane;
+using test::peakBin;
+using test::unambiguousBin;
 
 constexpr double kPi = 3.14159265358979323846;
 
-struct PlaneSetup {
-  scene::Scene scene = test::makePlane(6.0f, glm::vec3(0.5f, 0.4f, 0.3f));
-  RenderJob job;
-  PlaneSetup() {
-    job.scene = &scene;
-    job.camera.position_world = {0.0f, 0.0f, 1.5f};
-    job.camera.look_at_world = {0.2f, 0.1f, 0.0f};
-    job.camera.up_world = {0.0f, 1.0f, 0.0f};
-    job.camera.fov_y_deg = 60.0f;
-    job.camera.width = 40;
-    job.camera.height = 30;
-    job.light.position_world = job.camera.position_world;
-    job.light.intensity_W_per_sr = glm::vec3(2.0f, 1.0f, 0.5f);
-    job.settings.time = TimeAxis{2.5 / kSpeedOfLight_m_per_s, 0.002 / kSpeedOfLight_m_per_s, 1200};
-    job.settings.indirect.enabled = false;
-  }
-};
+using PlaneSetup = test::PlaneJob;
 
 VolumeCollector renderJob(const RenderJob& job) {
   VolumeCollector collector(job.camera.width, job.camera.height, job.settings.time, 3);
@@ -46,33 +34,8 @@ VolumeCollector renderJob(const RenderJob& job) {
   return collector;
 }
 
-// Intersection of the camera ray through pixel (x, y) with the plane z = z0.
-glm::dvec3 hitOnPlane(const Camera& camera, int x, int y, double z0 = 0.0) {
-  const glm::dvec3 o(camera.position_world);
-  const glm::dvec3 d(camera.pixelDirection(x, y));
-  return o + d * ((z0 - o.z) / d.z);
-}
 
-int peakBin(const TransientVolume& v, int y, int x, int c = 0) {
-  int best = -1;
-  float bestValue = 0.0f;
-  for (int t = 0; t < v.bins(); ++t) {
-    if (v.at(y, x, t, c) > bestValue) {
-      bestValue = v.at(y, x, t, c);
-      best = t;
-    }
-  }
-  return best;
-}
 
-// The bin of an optical path, or nullopt when it lies within 2% of a bin edge
-// (float rounding in the shader may then pick either side).
-std::optional<int> unambiguousBin(const TimeAxis& axis, double path_m) {
-  const double f = (path_m / kSpeedOfLight_m_per_s - axis.start_s) / axis.bin_width_s;
-  const double frac = f - std::floor(f);
-  if (frac < 0.02 || frac > 0.98) return std::nullopt;
-  return static_cast<int>(std::floor(f));
-}
 
 TEST(DirectRenderGLTest, PeakLandsInTheBinOfTheRoundTripPath) {
   PlaneSetup s;

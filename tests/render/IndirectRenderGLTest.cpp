@@ -8,6 +8,8 @@
 #include <cstring>
 
 #include "support/AnalyticScenes.h"
+#include "support/ClosedForm.h"
+#include "support/TestJobs.h"
 #include "support/GlTestContext.h"
 #include "tofsim/capture/VolumeCollector.h"
 #include "tofsim/render/TransientRenderer.h"
@@ -18,6 +20,7 @@ namespace tofsim::render {
 namespace {
 
 using namespace capture;
+using test::relativeL1;
 constexpr double kPi = 3.14159265358979323846;
 
 struct CornerSetup {
@@ -125,14 +128,6 @@ TEST(IndirectRenderGLTest, NoIndirectEnergyBeforeTheShortestWallPath) {
   EXPECT_GT(checked, 100);
 }
 
-double relativeL1(const Image& a, const Image& b) {
-  double diff = 0.0, norm = 0.0;
-  for (std::size_t i = 0; i < a.data.size(); ++i) {
-    diff += std::abs(a.data[i] - b.data[i]);
-    norm += std::abs(b.data[i]);
-  }
-  return diff / norm;
-}
 
 TEST(IndirectRenderGLTest, SteadyIndirectConvergesAsTheVplCountGrows) {
   CornerSetup s;
@@ -179,17 +174,7 @@ TEST(IndirectRenderGLTest, ComponentsAndBytesDoNotDependOnTheMemoryBudget) {
 
 TEST(IndirectRenderGLTest, ImperfectShadowMapsAgreeWithExactVisibilityOnTheCornellBox) {
   const scene::Scene scene = scene::loadGltf(TOFSIM_SOURCE_DIR "/configs/scenes/cornell_box.gltf");
-  RenderJob job;
-  job.scene = &scene;
-  job.camera.position_world = {0.278f, 0.273f, -0.8f};
-  job.camera.look_at_world = {0.278f, 0.273f, 0.0f};
-  job.camera.fov_y_deg = 39.3f;
-  job.camera.width = job.camera.height = 32;
-  job.light.type = Light::Type::Spot;
-  job.light.position_world = {0.328f, 0.273f, -0.8f};
-  job.light.direction_world = {0.0f, 0.0f, 1.0f};
-  job.light.cone_half_angle_deg = 28.0f;
-  job.settings.time = TimeAxis{1.5 / kSpeedOfLight_m_per_s, 0.01 / kSpeedOfLight_m_per_s, 300};
+  RenderJob job = test::cornellBoxJob(scene, 32, 300, 0.01);
   job.settings.shadow_map_resolution = 512;
   job.settings.indirect.rsm_resolution = 24;
   job.settings.indirect.ism_resolution = 32;

@@ -1,11 +1,10 @@
 #pragma once
-// Jobs shared by the reference renderer's tests: the closed-form plane of the
-// GL direct tests and a floor + wall corner for indirect light.
+// Render jobs shared by the tests and benchmarks: the closed-form plane, a
+// floor + wall corner for indirect light, and the Cornell box seen by a ToF
+// camera with its light at the lens.
 
-#include "../support/AnalyticScenes.h"
+#include "support/AnalyticScenes.h"
 #include "tofsim/capture/RenderJob.h"
-#include "tofsim/capture/VolumeCollector.h"
-#include "tofsim/reference/ReferenceRenderer.h"
 #include "tofsim/volume/PhysicalConstants.h"
 
 namespace tofsim::test {
@@ -50,13 +49,24 @@ struct CornerJob {
   }
 };
 
-inline capture::VolumeCollector renderReference(const capture::RenderJob& job,
-                                                const reference::ReferenceSettings& settings,
-                                                capture::RenderResult* result = nullptr) {
-  capture::VolumeCollector collector(job.camera.width, job.camera.height, job.settings.time, 3);
-  const capture::RenderResult r = reference::ReferenceRenderer(settings).render(job, collector);
-  if (result != nullptr) *result = r;
-  return collector;
+/// The published Cornell camera (0.278, 0.273, -0.8) m, 39.3 degrees, with a
+/// 28-degree spot light 5 cm to its right aimed into the box, as a ToF
+/// illuminator. `bins` of `binWidth_m` optical path from 1.5 m.
+inline capture::RenderJob cornellBoxJob(const scene::Scene& scene, int32_t resolution, int32_t bins,
+                                        double binWidth_m) {
+  capture::RenderJob job;
+  job.scene = &scene;
+  job.camera.position_world = {0.278f, 0.273f, -0.8f};
+  job.camera.look_at_world = {0.278f, 0.273f, 0.0f};
+  job.camera.fov_y_deg = 39.3f;
+  job.camera.width = job.camera.height = resolution;
+  job.light.type = capture::Light::Type::Spot;
+  job.light.position_world = {0.328f, 0.273f, -0.8f};
+  job.light.direction_world = {0.0f, 0.0f, 1.0f};
+  job.light.cone_half_angle_deg = 28.0f;
+  job.settings.time =
+      TimeAxis{1.5 / kSpeedOfLight_m_per_s, binWidth_m / kSpeedOfLight_m_per_s, bins};
+  return job;
 }
 
 }  // namespace tofsim::test
