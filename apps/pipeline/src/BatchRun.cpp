@@ -129,7 +129,7 @@ BatchSummary runBatch(const BatchOptions& options) {
     if (runIsComplete(r.directory, options.verify, &why)) {
       r.status = BatchRunStatus::Skipped;
     } else if (options.dryRun) {
-      for (const config::Override& o : run.overrides) r.message += o.keyPath + "=" + o.value + " ";
+      for (const config::Override& o : run.varied) r.message += o.keyPath + "=" + o.value + "  ";
     } else {
       pending.push_back(summary.runs.size());
     }
@@ -187,7 +187,7 @@ std::string formatBatchSummary(const BatchSummary& summary, bool dryRun) {
   std::string out;
   char line[1024];
   std::snprintf(line, sizeof line, "%-*s  %-7s  %8s  %s\n", static_cast<int>(width), "run",
-                "status", "seconds", dryRun ? "overrides" : "output");
+                "status", "seconds", dryRun ? "varied keys (pending runs)" : "output");
   out += line;
   std::size_t counts[4] = {0, 0, 0, 0};
   for (const BatchRunResult& r : summary.runs) {

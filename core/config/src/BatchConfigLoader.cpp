@@ -135,11 +135,11 @@ BatchConfig loadBatchConfig(const std::filesystem::path& file, const std::vector
   const ConfigNode root(yaml, file.string());
   BatchConfig batch;
   batch.batch_file = file;
-  batch.base_config = file.parent_path() / root.requireString("base");
+  batch.base_config = (file.parent_path() / root.requireString("base")).lexically_normal();
   if (!std::filesystem::exists(batch.base_config)) {
     root.failKey("base", "base config not found: " + batch.base_config.string());
   }
-  batch.output_root = file.parent_path() / root.getString("output", "out/batch");
+  batch.output_root = (file.parent_path() / root.getString("output", "out/batch")).lexically_normal();
   std::vector<Override> common;
   if (const auto set = root.optionalChild("set")) common = setOf(*set);
 
