@@ -83,12 +83,12 @@ TEST_F(BatchCliGLTest, ResumeRedoesOnlyTheRunWithoutManifest) {
 }
 
 TEST_F(BatchCliGLTest, ShardsPartitionTheRunsExactly) {
-  const std::string batch = writeBatch(
-      "sweep:\n  product:\n    render.seed: [1, 2, 3, 4]\n    time.bins: [30, 40]\n");
+  const std::string batch =
+      writeBatch("sweep:\n  product:\n    render.seed: [1, 2, 3, 4]\n    time.bins: [30, 40]\n");
   std::multiset<std::string> seen;
   for (int k = 1; k <= 3; ++k) {
-    const CommandResult r = runCli("batch " + batch + " --dry-run --shard " +
-                                   std::to_string(k) + "/3");
+    const CommandResult r =
+        runCli("batch " + batch + " --dry-run --shard " + std::to_string(k) + "/3");
     ASSERT_EQ(r.exitCode, 0) << r.output;
     for (int i = 0; i < 8; ++i) {
       char prefix[16];
@@ -133,7 +133,8 @@ TEST_F(BatchCliGLTest, FailingRunIsReportedAndTheOthersComplete) {
 }
 
 TEST_F(BatchCliGLTest, InvalidRunConfigStopsTheBatchBeforeRendering) {
-  const std::string batch = writeBatch("runs:\n  - name: a\n  - name: b\n    set: {time.bins: 0}\n");
+  const std::string batch =
+      writeBatch("runs:\n  - name: a\n  - name: b\n    set: {time.bins: 0}\n");
   const CommandResult r = runCli("batch " + batch + " -q");
   EXPECT_EQ(r.exitCode, 1) << r.output;
   EXPECT_NE(r.output.find("run b:"), std::string::npos) << r.output;

@@ -52,8 +52,10 @@ sweep:
   ASSERT_EQ(b.runs.size(), 2u * 3u * 2u);
   EXPECT_EQ(b.output_root, dir_ / "sweep");
   // First product key slowest, the zip group fastest.
-  EXPECT_EQ(b.runs[0].name, "run0000_offset-0.05,0,0_jitter_fwhm-30ps_resolution-16,16_bin_width-10ps");
-  EXPECT_EQ(b.runs[1].name, "run0001_offset-0.05,0,0_jitter_fwhm-30ps_resolution-32,32_bin_width-20ps");
+  EXPECT_EQ(b.runs[0].name,
+            "run0000_offset-0.05,0,0_jitter_fwhm-30ps_resolution-16,16_bin_width-10ps");
+  EXPECT_EQ(b.runs[1].name,
+            "run0001_offset-0.05,0,0_jitter_fwhm-30ps_resolution-32,32_bin_width-20ps");
   EXPECT_EQ(b.runs[2].varied[1].value, "80 ps");
   EXPECT_EQ(b.runs[6].varied[0].value, "[0.1, 0, 0]");
   // `set` first, then the sweep values.
@@ -66,8 +68,7 @@ sweep:
 }
 
 TEST_F(BatchConfigTest, ZipAloneAndExplicitRunsAndCliOverrides) {
-  const BatchConfig b = loadBatchConfig(
-      write(R"(
+  const BatchConfig b = loadBatchConfig(write(R"(
 sweep:
   zip:
     time.bins: [100, 200, 300]
@@ -77,7 +78,7 @@ runs:
     set: {render.seed: 7}
   - set: {sensors: [{type: spad, bins: 10}]}
 )"),
-      {config::Override{"camera.resolution", "[16,16]"}});
+                                        {config::Override{"camera.resolution", "[16,16]"}});
   ASSERT_EQ(b.runs.size(), 5u);
   EXPECT_EQ(b.runs[2].name, "run0002_bins-300_seed-3");
   EXPECT_EQ(b.runs[3].name, "baseline");
@@ -109,8 +110,9 @@ TEST_F(BatchConfigTest, LocatedErrors) {
 }
 
 TEST_F(BatchConfigTest, ValidationNamesTheRun) {
-  const BatchConfig b = loadBatchConfig(write("runs:\n  - name: ok\n  - name: bad\n"
-                                              "    set: {time.bins: -3}\n"));
+  const BatchConfig b =
+      loadBatchConfig(write("runs:\n  - name: ok\n  - name: bad\n"
+                            "    set: {time.bins: -3}\n"));
   try {
     config::validateBatch(b);
     FAIL() << "no error";

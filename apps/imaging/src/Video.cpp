@@ -48,8 +48,8 @@ cv::Mat frameOf(const TransientVolume& volume, int32_t t, double white, ToneMap 
     for (int32_t x = 0; x < volume.width(); ++x) {
       for (int c = 0; c < 3; ++c) {
         const double v = volume.at(y, x, t, channels >= 3 ? c : 0);
-        const double mapped = mode == ToneMap::Log ? (v > 0.0 ? 1.0 + std::log10(v / white) / 4.0 : 0.0)
-                                                   : v / white;
+        const double mapped =
+            mode == ToneMap::Log ? (v > 0.0 ? 1.0 + std::log10(v / white) / 4.0 : 0.0) : v / white;
         small.at<cv::Vec3b>(y, x)[2 - c] = srgb8(mapped);  // OpenCV stores BGR
       }
     }
@@ -94,7 +94,8 @@ void writeTransientVideo(const std::filesystem::path& mp4Path, const TransientVo
                 cv::Size(size.width, size.height), true);
   }
   if (!mp4Path.empty() && !writer.isOpened()) {
-    throw InputError(mp4Path.string() + ": OpenCV cannot write MP4 (fourcc mp4v); is its FFmpeg "
+    throw InputError(mp4Path.string() +
+                     ": OpenCV cannot write MP4 (fourcc mp4v); is its FFmpeg "
                      "video I/O backend installed (libopencv-videoio)?");
   }
   if (!pngDirectory.empty()) std::filesystem::create_directories(pngDirectory);

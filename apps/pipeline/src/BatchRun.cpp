@@ -78,10 +78,14 @@ std::string exitText(int status) {
 
 const char* statusName(BatchRunStatus s) {
   switch (s) {
-    case BatchRunStatus::Done: return "done";
-    case BatchRunStatus::Skipped: return "skipped";
-    case BatchRunStatus::Failed: return "failed";
-    case BatchRunStatus::Pending: return "pending";
+    case BatchRunStatus::Done:
+      return "done";
+    case BatchRunStatus::Skipped:
+      return "skipped";
+    case BatchRunStatus::Failed:
+      return "failed";
+    case BatchRunStatus::Pending:
+      return "pending";
   }
   return "?";
 }
@@ -148,8 +152,8 @@ BatchSummary runBatch(const BatchOptions& options) {
       // Whatever an interrupted earlier attempt left is not trusted.
       fs::remove_all(r.directory);
       fs::create_directories(r.directory);
-      const pid_t pid = spawnRender(options.executable, base, batch.runs[r.index].overrides,
-                                    r.directory);
+      const pid_t pid =
+          spawnRender(options.executable, base, batch.runs[r.index].overrides, r.directory);
       running[pid] = Child{slot, Clock::now()};
     }
     int status = 0;
@@ -202,8 +206,7 @@ std::string formatBatchSummary(const BatchSummary& summary, bool dryRun) {
   std::snprintf(line, sizeof line,
                 "batch: %zu of %zu run(s) in this shard: %zu done, %zu skipped, %zu failed, %zu "
                 "pending\n",
-                summary.runs.size(), summary.totalRuns, counts[0], counts[1], counts[2],
-                counts[3]);
+                summary.runs.size(), summary.totalRuns, counts[0], counts[1], counts[2], counts[3]);
   out += line;
   return out;
 }

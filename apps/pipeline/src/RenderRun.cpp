@@ -52,11 +52,12 @@ void writeVideo(const std::filesystem::path& dir, const config::OutputConfig& ou
                 std::vector<std::string>& files) {
   imaging::VideoOptions options;
   options.toneMap = out.video_tone_map == config::VideoToneMap::Log ? imaging::ToneMap::Log
-                                                                     : imaging::ToneMap::Global;
+                                                                    : imaging::ToneMap::Global;
   options.stride = out.video_stride;
   options.fps = out.video_fps;
-  progress.message("video: " + std::to_string(imaging::videoFrameCount(volume.bins(), out.video_stride)) +
-                   " frame(s)");
+  progress.message(
+      "video: " + std::to_string(imaging::videoFrameCount(volume.bins(), out.video_stride)) +
+      " frame(s)");
   imaging::writeTransientVideo(out.video ? dir / "transient.mp4" : std::filesystem::path(), volume,
                                options, out.frame_pngs ? dir / "frames" : std::filesystem::path());
   if (out.video) files.push_back("transient.mp4");

@@ -40,16 +40,18 @@ std::string describeScene(const std::filesystem::path& sceneFile) {
   out += format("meshes: %zu, triangles: %zu\n", s.meshes.size(), s.triangleCount());
   for (std::size_t i = 0; i < s.meshes.size(); ++i) {
     const scene::Mesh& m = s.meshes[i];
-    const std::string material = m.material >= 0 && m.material < static_cast<int>(s.materials.size())
-                                     ? s.materials[m.material].name
-                                     : "?";
+    const std::string material =
+        m.material >= 0 && m.material < static_cast<int>(s.materials.size())
+            ? s.materials[m.material].name
+            : "?";
     out += format("  [%zu] %-24s %8zu triangles  material %s%s\n", i, m.name.c_str(),
                   m.triangleCount(), material.c_str(), m.uvs.empty() ? "" : "  (uv)");
   }
   const scene::Bounds b = s.bounds();
   const glm::vec3 size = b.max - b.min;
-  out += format("bounds (m): min [%.4g, %.4g, %.4g]  max [%.4g, %.4g, %.4g]  size [%.4g, %.4g, %.4g]\n",
-                b.min.x, b.min.y, b.min.z, b.max.x, b.max.y, b.max.z, size.x, size.y, size.z);
+  out += format(
+      "bounds (m): min [%.4g, %.4g, %.4g]  max [%.4g, %.4g, %.4g]  size [%.4g, %.4g, %.4g]\n",
+      b.min.x, b.min.y, b.min.z, b.max.x, b.max.y, b.max.z, size.x, size.y, size.z);
   out += format("materials: %zu\n", s.materials.size());
   for (std::size_t i = 0; i < s.materials.size(); ++i) {
     const scene::Material& m = s.materials[i];
@@ -60,9 +62,10 @@ std::string describeScene(const std::filesystem::path& sceneFile) {
   out += format("cameras: %zu\n", s.cameras.size());
   for (std::size_t i = 0; i < s.cameras.size(); ++i) {
     const scene::SceneCamera& c = s.cameras[i];
-    out += format("  [%zu] %-24s position [%.4g, %.4g, %.4g] m  forward [%.3f, %.3f, %.3f]  fov_y %.4g deg\n",
-                  i, c.name.c_str(), c.position_world.x, c.position_world.y, c.position_world.z,
-                  c.forward_world.x, c.forward_world.y, c.forward_world.z, c.fov_y_deg);
+    out += format(
+        "  [%zu] %-24s position [%.4g, %.4g, %.4g] m  forward [%.3f, %.3f, %.3f]  fov_y %.4g deg\n",
+        i, c.name.c_str(), c.position_world.x, c.position_world.y, c.position_world.z,
+        c.forward_world.x, c.forward_world.y, c.forward_world.z, c.fov_y_deg);
   }
   return out + reportText(report);
 }

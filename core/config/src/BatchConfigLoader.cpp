@@ -20,8 +20,8 @@ namespace tofsim::config {
 namespace {
 
 struct Axis {
-  std::vector<std::string> keys;                    // one key, or the zipped keys
-  std::vector<std::vector<std::string>> values;     // values[position][key]
+  std::vector<std::string> keys;                 // one key, or the zipped keys
+  std::vector<std::vector<std::string>> values;  // values[position][key]
 };
 
 std::string flowText(const YAML::Node& node) {
@@ -123,15 +123,17 @@ std::string runName(std::size_t index, const std::vector<Override>& varied) {
 
 bool plainName(const std::string& name) {
   return !name.empty() && name != "." && name != ".." && name != "base" &&
-         name.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ"
-                                "0123456789_.,+-") == std::string::npos;
+         name.find_first_not_of(
+             "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ"
+             "0123456789_.,+-") == std::string::npos;
 }
 
 }  // namespace
 
 BatchConfig loadBatchConfig(const std::filesystem::path& file, const std::vector<Override>& extra) {
   const YAML::Node yaml = loadYamlFile(file.string());
-  if (!yaml.IsMap()) throw InputError(FileLoc{file.string(), 1, 1}, "", "a batch must be a mapping");
+  if (!yaml.IsMap())
+    throw InputError(FileLoc{file.string(), 1, 1}, "", "a batch must be a mapping");
   const ConfigNode root(yaml, file.string());
   BatchConfig batch;
   batch.batch_file = file;
@@ -139,7 +141,8 @@ BatchConfig loadBatchConfig(const std::filesystem::path& file, const std::vector
   if (!std::filesystem::exists(batch.base_config)) {
     root.failKey("base", "base config not found: " + batch.base_config.string());
   }
-  batch.output_root = (file.parent_path() / root.getString("output", "out/batch")).lexically_normal();
+  batch.output_root =
+      (file.parent_path() / root.getString("output", "out/batch")).lexically_normal();
   std::vector<Override> common;
   if (const auto set = root.optionalChild("set")) common = setOf(*set);
 
@@ -176,8 +179,8 @@ BatchConfig loadBatchConfig(const std::filesystem::path& file, const std::vector
       run.index = batch.runs.size();
       run.name = entry.getString("name", runName(run.index, {}));
       if (!plainName(run.name)) {
-        entry.failKey("name", "must be letters, digits, '_', '-', '.', ',' or '+' (got '" +
-                                  run.name + "')");
+        entry.failKey(
+            "name", "must be letters, digits, '_', '-', '.', ',' or '+' (got '" + run.name + "')");
       }
       if (seen.count(run.name)) entry.failKey("name", "run name '" + run.name + "' is used twice");
       seen[run.name] = run.index;
@@ -194,7 +197,8 @@ BatchConfig loadBatchConfig(const std::filesystem::path& file, const std::vector
     run.overrides = common;
     batch.runs.push_back(std::move(run));
   }
-  for (BatchRun& run : batch.runs) run.overrides.insert(run.overrides.end(), extra.begin(), extra.end());
+  for (BatchRun& run : batch.runs)
+    run.overrides.insert(run.overrides.end(), extra.begin(), extra.end());
   root.reportUnusedKeys();
   return batch;
 }

@@ -156,7 +156,8 @@ void parseOutput(const ConfigNode& node, OutputConfig& o) {
   } else {
     node.failKey("video_tone_map", "must be global or log (got '" + toneMap + "')");
   }
-  o.video_stride = static_cast<int32_t>(intInRange(node, "video_stride", o.video_stride, 1, 1 << 20));
+  o.video_stride =
+      static_cast<int32_t>(intInRange(node, "video_stride", o.video_stride, 1, 1 << 20));
   o.video_fps = node.getDouble("video_fps", o.video_fps);
   requirePositive(node, "video_fps", o.video_fps);
   if (const auto components = node.optionalChild("components")) {

@@ -37,10 +37,9 @@ FrameSize videoFrameSize(int32_t imageWidth, int32_t imageHeight);
 /// Number of frames for `bins` time bins: ceil(bins / stride).
 int32_t videoFrameCount(int32_t bins, int32_t stride);
 
-/// Writes the video atomically (an empty mp4Path: only the PNGs) (to "<stem>.tmp.mp4", renamed when complete).
-/// With `pngDirectory` not empty, also writes each frame as
-/// pngDirectory/frame_NNNNN.png (NNNNN = the time bin). Throws InputError when
-/// OpenCV cannot encode MP4.
+/// Writes the video atomically (an empty mp4Path: only the PNGs) (to "<stem>.tmp.mp4", renamed when
+/// complete). With `pngDirectory` not empty, also writes each frame as pngDirectory/frame_NNNNN.png
+/// (NNNNN = the time bin). Throws InputError when OpenCV cannot encode MP4.
 void writeTransientVideo(const std::filesystem::path& mp4Path, const TransientVolume& volume,
                          const VideoOptions& options,
                          const std::filesystem::path& pngDirectory = {});

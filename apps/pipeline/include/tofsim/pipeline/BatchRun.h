@@ -43,8 +43,8 @@ struct BatchRunResult {
 };
 
 struct BatchSummary {
-  std::size_t totalRuns = 0;          ///< in the whole batch, all shards
-  std::vector<BatchRunResult> runs;   ///< this shard's, in expansion order
+  std::size_t totalRuns = 0;         ///< in the whole batch, all shards
+  std::vector<BatchRunResult> runs;  ///< this shard's, in expansion order
   bool anyFailed() const;
 };
 

@@ -13,10 +13,10 @@
 namespace tofsim::config {
 
 struct BatchRun {
-  std::size_t index = 0;             ///< position in expansion order (shards use it)
-  std::string name;                  ///< unique, filesystem-safe: the run's folder name
-  std::vector<Override> overrides;   ///< applied to the base config, in order
-  std::vector<Override> varied;      ///< the sweep values alone (for listings)
+  std::size_t index = 0;            ///< position in expansion order (shards use it)
+  std::string name;                 ///< unique, filesystem-safe: the run's folder name
+  std::vector<Override> overrides;  ///< applied to the base config, in order
+  std::vector<Override> varied;     ///< the sweep values alone (for listings)
 };
 
 struct BatchConfig {
