@@ -8,8 +8,10 @@
 #include <vector>
 
 #include "tofsim/config/RunConfig.h"
+#include "tofsim/pipeline/BatchRun.h"
 #include "tofsim/pipeline/CompareRun.h"
 #include "tofsim/pipeline/RenderRun.h"
+#include "tofsim/pipeline/SceneInfo.h"
 #include "tofsim/pipeline/SenseRun.h"
 #include "tofsim/pipeline/Version.h"
 #include "tofsim/util/Error.h"
@@ -76,6 +78,26 @@ int runValidateCommand(const std::string& configPath, const std::vector<std::str
   return 0;
 }
 
+int runBatchCommand(const std::string& batchPath, const std::vector<std::string>& sets, int jobs,
+                    const std::string& shard, bool dryRun, bool verify, bool quiet) {
+  pipeline::BatchOptions options;
+  options.batchFile = batchPath;
+  options.overrides = parseOverrides(sets);
+  options.jobs = jobs;
+  if (!shard.empty()) pipeline::parseShard(shard, options.shardIndex, options.shardCount);
+  options.dryRun = dryRun;
+  options.verify = verify;
+  options.quiet = quiet;
+  const pipeline::BatchSummary summary = pipeline::runBatch(options);
+  std::fputs(pipeline::formatBatchSummary(summary, dryRun).c_str(), stdout);
+  return summary.anyFailed() ? 1 : 0;
+}
+
+int runInfoCommand(const std::string& scenePath) {
+  std::fputs(pipeline::describeScene(scenePath).c_str(), stdout);
+  return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -116,6 +138,25 @@ int main(int argc, char** argv) {
   validate->add_option("config", configPath, "YAML config file")->required();
   validate->add_option("--set", sets, "Override a config key: key.path=value (repeatable)");
 
+  CLI::App* batch = app.add_subcommand(
+      "batch", "Run a batch file's runs and sweeps, each into <output>/<run name>/ (resumable)");
+  std::string shard;
+  int jobs = 1;
+  bool dryRun = false, verify = false;
+  batch->add_option("batch", configPath, "Batch YAML file (configs/README.md, Batch files)")
+      ->required();
+  batch->add_option("--set", sets, "Override a config key in every run: key.path=value");
+  batch->add_option("-j,--jobs", jobs, "Runs at once, each a child process (default 1)")
+      ->check(CLI::PositiveNumber);
+  batch->add_option("--shard", shard, "K/N: only runs i with i % N == K-1 (1-based K)");
+  batch->add_flag("--dry-run", dryRun, "List the runs and their status; render nothing");
+  batch->add_flag("--verify", verify, "Skip a run only if its files match their checksums");
+  batch->add_flag("-q,--quiet", quiet, "No progress output (the summary is still printed)");
+
+  CLI::App* info = app.add_subcommand("info", "Describe a glTF scene as tofsim loads it");
+  std::string scenePath;
+  info->add_option("scene", scenePath, "glTF file (.gltf or .glb)")->required();
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -128,6 +169,10 @@ int main(int argc, char** argv) {
     if (compareCommand->parsed()) return runCompareCommand(dirA, dirB, outputDir);
     if (sense->parsed()) return runSenseCommand(configPath, volumeDir, outputDir, sets, quiet);
     if (validate->parsed()) return runValidateCommand(configPath, sets);
+    if (batch->parsed()) {
+      return runBatchCommand(configPath, sets, jobs, shard, dryRun, verify, quiet);
+    }
+    if (info->parsed()) return runInfoCommand(scenePath);
   } catch (const tofsim::InputError& e) {
     std::fprintf(stderr, "tofsim: error: %s\n", e.what());
     return 1;

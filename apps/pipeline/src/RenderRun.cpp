@@ -3,6 +3,7 @@
 #include <cstdio>
 
 #include "tofsim/imaging/Pictures.h"
+#include "tofsim/imaging/Video.h"
 #include "tofsim/io/Exr.h"
 #include "tofsim/pipeline/Capture.h"
 #include "tofsim/pipeline/Metadata.h"
@@ -43,6 +44,30 @@ void writeFrames(const std::filesystem::path& directory, const TransientVolume& 
     std::snprintf(name, sizeof name, "frames/frame_%05d.exr", t);
     io::writeExr(directory / name, frame, volume.channelNames());
     files.push_back(name);
+  }
+}
+
+// transient.mp4 and/or frames/frame_NNNNN.png (the same pictures).
+void writeVideo(const std::filesystem::path& dir, const config::OutputConfig& out,
+                const TransientVolume& volume, const Progress& progress,
+                std::vector<std::string>& files) {
+  imaging::VideoOptions options;
+  options.toneMap = out.video_tone_map == config::VideoToneMap::Log ? imaging::ToneMap::Log
+                                                                    : imaging::ToneMap::Global;
+  options.stride = out.video_stride;
+  options.fps = out.video_fps;
+  progress.message(
+      "video: " + std::to_string(imaging::videoFrameCount(volume.bins(), out.video_stride)) +
+      " frame(s)");
+  imaging::writeTransientVideo(out.video ? dir / "transient.mp4" : std::filesystem::path(), volume,
+                               options, out.frame_pngs ? dir / "frames" : std::filesystem::path());
+  if (out.video) files.push_back("transient.mp4");
+  if (out.frame_pngs) {
+    for (int32_t t = 0; t < volume.bins(); t += out.video_stride) {
+      char name[64];
+      std::snprintf(name, sizeof name, "frames/frame_%05d.png", t);
+      files.push_back(name);
+    }
   }
 }
 
@@ -107,7 +132,7 @@ void writeOutputs(const config::RunConfig& config, const capture::RenderJob& job
   // on the saved folder reproduces their outputs byte for byte.
   const bool sensing = !config.sensors.empty();
   OutputSink sink(dir, out, job.camera.width, job.camera.height, job.settings.time,
-                  out.frames || sensing, sensing && out.direct);
+                  out.frames || out.video || out.frame_pngs || sensing, sensing && out.direct);
   const capture::ProgressCallback onProgress = [&](std::size_t done, std::size_t total,
                                                     const std::string& what) {
     progress.update(done, total, what);
@@ -132,6 +157,7 @@ void writeOutputs(const config::RunConfig& config, const capture::RenderJob& job
     summary.files.push_back("depth.png");
   }
   if (out.frames) writeFrames(dir, *sink.volume(), summary.files);
+  if (out.video || out.frame_pngs) writeVideo(dir, out, *sink.volume(), progress, summary.files);
   if (out.transient) {
     writeFileAtomically(dir / "transient.json", transientMetadataJson(config, job, summary.result));
     summary.files.push_back("transient.json");

@@ -87,6 +87,11 @@ YAML::Node outputNode(const OutputConfig& o) {
   n["steady"] = o.steady;
   n["depth"] = o.depth;
   n["frames"] = o.frames;
+  n["video"] = o.video;
+  n["frame_pngs"] = o.frame_pngs;
+  n["video_tone_map"] = o.video_tone_map == VideoToneMap::Log ? "log" : "global";
+  n["video_stride"] = o.video_stride;
+  n["video_fps"] = o.video_fps;
   YAML::Node components(YAML::NodeType::Sequence);
   if (o.direct) components.push_back("direct");
   if (o.indirect) components.push_back("indirect");

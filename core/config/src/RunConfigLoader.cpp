@@ -153,6 +153,20 @@ void parseOutput(const ConfigNode& node, OutputConfig& o) {
   o.steady = node.getBool("steady", o.steady);
   o.depth = node.getBool("depth", o.depth);
   o.frames = node.getBool("frames", o.frames);
+  o.video = node.getBool("video", o.video);
+  o.frame_pngs = node.getBool("frame_pngs", o.frame_pngs);
+  const std::string toneMap = node.getString("video_tone_map", "global");
+  if (toneMap == "global") {
+    o.video_tone_map = VideoToneMap::Global;
+  } else if (toneMap == "log") {
+    o.video_tone_map = VideoToneMap::Log;
+  } else {
+    node.failKey("video_tone_map", "must be global or log (got '" + toneMap + "')");
+  }
+  o.video_stride =
+      static_cast<int32_t>(intInRange(node, "video_stride", o.video_stride, 1, 1 << 20));
+  o.video_fps = node.getDouble("video_fps", o.video_fps);
+  requirePositive(node, "video_fps", o.video_fps);
   if (const auto components = node.optionalChild("components")) {
     for (const ConfigNode& c : components->elements()) {
       const std::string name = c.asString();

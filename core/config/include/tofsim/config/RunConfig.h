@@ -41,6 +41,9 @@ struct ReferenceConfig {
   int32_t threads = 0;              ///< 0: all hardware threads
 };
 
+/// Tone map of the transient video and frame PNGs (tofsim/imaging/Video.h).
+enum class VideoToneMap { Global, Log };
+
 struct OutputConfig {
   std::filesystem::path directory = "out";
   bool transient = true;    ///< transient.npy + transient.json
@@ -49,6 +52,11 @@ struct OutputConfig {
   bool frames = false;      ///< frames/frame_NNNN.exr, one per time bin
   bool direct = false;      ///< direct.npy (components: [direct, ...])
   bool indirect = false;    ///< indirect.npy
+  bool video = false;       ///< transient.mp4: light in flight, one frame per video_stride bins
+  bool frame_pngs = false;  ///< frames/frame_NNNNN.png: the video's frames as PNG
+  VideoToneMap video_tone_map = VideoToneMap::Global;
+  int32_t video_stride = 1;  ///< bins per video frame, >= 1
+  double video_fps = 30.0;   ///< frames per second of the video, > 0
 };
 
 struct RunConfig {

@@ -1,0 +1,73 @@
+#include "tofsim/pipeline/SceneInfo.h"
+
+#include <cstdio>
+
+#include "tofsim/scene/GltfLoader.h"
+
+namespace tofsim::pipeline {
+
+namespace {
+
+std::string format(const char* fmt, auto... args) {
+  char buffer[512];
+  std::snprintf(buffer, sizeof buffer, fmt, args...);
+  return buffer;
+}
+
+std::string reportText(const scene::LoadReport& r) {
+  std::string out = "loader:\n";
+  const auto count = [&](const char* what, std::size_t n) {
+    if (n > 0) out += format("  %zu %s\n", n, what);
+  };
+  count("point/line primitive(s) skipped", r.skippedPrimitives);
+  count("zero-area triangle(s) dropped", r.degenerateTriangles);
+  count("primitive(s) without normals (flat normals made)", r.flatNormalPrimitives);
+  count("metallic material(s) (rendered as diffuse base colour)", r.metallicMaterials);
+  count("emissive material(s) (emission ignored)", r.emissiveMaterials);
+  count("transmissive material(s) (rendered as diffuse base colour)", r.transmissiveMaterials);
+  count("orthographic camera(s) skipped", r.orthographicCameras);
+  for (const std::string& w : r.warnings) out += "  warning: " + w + "\n";
+  if (out == "loader:\n") out += "  nothing skipped or changed\n";
+  return out;
+}
+
+}  // namespace
+
+std::string describeScene(const std::filesystem::path& sceneFile) {
+  scene::LoadReport report;
+  const scene::Scene s = scene::loadGltf(sceneFile, &report);
+  std::string out = sceneFile.string() + "\n";
+  out += format("meshes: %zu, triangles: %zu\n", s.meshes.size(), s.triangleCount());
+  for (std::size_t i = 0; i < s.meshes.size(); ++i) {
+    const scene::Mesh& m = s.meshes[i];
+    const std::string material =
+        m.material >= 0 && m.material < static_cast<int>(s.materials.size())
+            ? s.materials[m.material].name
+            : "?";
+    out += format("  [%zu] %-24s %8zu triangles  material %s%s\n", i, m.name.c_str(),
+                  m.triangleCount(), material.c_str(), m.uvs.empty() ? "" : "  (uv)");
+  }
+  const scene::Bounds b = s.bounds();
+  const glm::vec3 size = b.max - b.min;
+  out += format(
+      "bounds (m): min [%.4g, %.4g, %.4g]  max [%.4g, %.4g, %.4g]  size [%.4g, %.4g, %.4g]\n",
+      b.min.x, b.min.y, b.min.z, b.max.x, b.max.y, b.max.z, size.x, size.y, size.z);
+  out += format("materials: %zu\n", s.materials.size());
+  for (std::size_t i = 0; i < s.materials.size(); ++i) {
+    const scene::Material& m = s.materials[i];
+    out += format("  [%zu] %-24s albedo [%.3f, %.3f, %.3f]%s\n", i, m.name.c_str(), m.albedo.x,
+                  m.albedo.y, m.albedo.z, m.albedoTexture >= 0 ? " x texture" : "");
+  }
+  out += format("textures: %zu\n", s.textures.size());
+  out += format("cameras: %zu\n", s.cameras.size());
+  for (std::size_t i = 0; i < s.cameras.size(); ++i) {
+    const scene::SceneCamera& c = s.cameras[i];
+    out += format(
+        "  [%zu] %-24s position [%.4g, %.4g, %.4g] m  forward [%.3f, %.3f, %.3f]  fov_y %.4g deg\n",
+        i, c.name.c_str(), c.position_world.x, c.position_world.y, c.position_world.z,
+        c.forward_world.x, c.forward_world.y, c.forward_world.z, c.fov_y_deg);
+  }
+  return out + reportText(report);
+}
+
+}  // namespace tofsim::pipeline
