@@ -40,14 +40,17 @@ unsigned char srgb8(double linear) {
   return static_cast<unsigned char>(std::lround(s * 255.0));
 }
 
-cv::Mat frameOf(const TransientVolume& volume, int32_t t, double white, ToneMap mode,
-                const FrameSize& size) {
+cv::Mat frameOf(const TransientVolume& volume, int32_t t, int32_t window, double white,
+                ToneMap mode, const FrameSize& size) {
+  const int32_t first = std::max(0, t - (window - 1) / 2);
+  const int32_t last = std::min(volume.bins() - 1, t + window / 2);
   cv::Mat small(volume.height(), volume.width(), CV_8UC3);
   const int32_t channels = volume.channels();
   for (int32_t y = 0; y < volume.height(); ++y) {
     for (int32_t x = 0; x < volume.width(); ++x) {
       for (int c = 0; c < 3; ++c) {
-        const double v = volume.at(y, x, t, channels >= 3 ? c : 0);
+        double v = 0.0;
+        for (int32_t b = first; b <= last; ++b) v += volume.at(y, x, b, channels >= 3 ? c : 0);
         const double mapped =
             mode == ToneMap::Log ? (v > 0.0 ? 1.0 + std::log10(v / white) / 4.0 : 0.0) : v / white;
         small.at<cv::Vec3b>(y, x)[2 - c] = srgb8(mapped);  // OpenCV stores BGR
@@ -81,7 +84,7 @@ int32_t videoFrameCount(int32_t bins, int32_t stride) { return (bins + stride - 
 
 void writeTransientVideo(const std::filesystem::path& mp4Path, const TransientVolume& volume,
                          const VideoOptions& options, const std::filesystem::path& pngDirectory) {
-  TOFSIM_CHECK(options.stride >= 1);
+  TOFSIM_CHECK(options.stride >= 1 && options.window >= 1);
   const FrameSize size = videoFrameSize(volume.width(), volume.height());
   const double white = whiteLevel(volume);
   // OpenCV picks the container from the file name, so the temporary keeps
@@ -101,7 +104,7 @@ void writeTransientVideo(const std::filesystem::path& mp4Path, const TransientVo
   if (!pngDirectory.empty()) std::filesystem::create_directories(pngDirectory);
   try {
     for (int32_t t = 0; t < volume.bins(); t += options.stride) {
-      const cv::Mat frame = frameOf(volume, t, white, options.toneMap, size);
+      const cv::Mat frame = frameOf(volume, t, options.window, white, options.toneMap, size);
       if (writer.isOpened()) writer.write(frame);
       if (!pngDirectory.empty()) {
         char name[32];

@@ -55,6 +55,7 @@ void writeVideo(const std::filesystem::path& dir, const config::OutputConfig& ou
   options.toneMap = out.video_tone_map == config::VideoToneMap::Log ? imaging::ToneMap::Log
                                                                     : imaging::ToneMap::Global;
   options.stride = out.video_stride;
+  options.window = out.video_window;
   options.fps = out.video_fps;
   progress.message(
       "video: " + std::to_string(imaging::videoFrameCount(volume.bins(), out.video_stride)) +

@@ -91,6 +91,7 @@ YAML::Node outputNode(const OutputConfig& o) {
   n["frame_pngs"] = o.frame_pngs;
   n["video_tone_map"] = o.video_tone_map == VideoToneMap::Log ? "log" : "global";
   n["video_stride"] = o.video_stride;
+  n["video_window"] = o.video_window;
   n["video_fps"] = o.video_fps;
   YAML::Node components(YAML::NodeType::Sequence);
   if (o.direct) components.push_back("direct");

@@ -165,6 +165,8 @@ void parseOutput(const ConfigNode& node, OutputConfig& o) {
   }
   o.video_stride =
       static_cast<int32_t>(intInRange(node, "video_stride", o.video_stride, 1, 1 << 20));
+  o.video_window =
+      static_cast<int32_t>(intInRange(node, "video_window", o.video_window, 1, 1 << 20));
   o.video_fps = node.getDouble("video_fps", o.video_fps);
   requirePositive(node, "video_fps", o.video_fps);
   if (const auto components = node.optionalChild("components")) {

@@ -22,6 +22,10 @@ namespace tofsim::imaging {
 struct VideoOptions {
   ToneMap toneMap = ToneMap::Global;
   int32_t stride = 1;  ///< one frame every `stride` bins, >= 1
+  /// Exposure of a frame in bins, >= 1: frame t sums bins
+  /// [t - (window - 1) / 2, t + window / 2], like a gated camera's shutter,
+  /// so a wavefront shows with the width of the window instead of one bin.
+  int32_t window = 1;
   double fps = 30.0;
 };
 

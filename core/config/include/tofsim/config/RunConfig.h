@@ -56,6 +56,7 @@ struct OutputConfig {
   bool frame_pngs = false;  ///< frames/frame_NNNNN.png: the video's frames as PNG
   VideoToneMap video_tone_map = VideoToneMap::Global;
   int32_t video_stride = 1;  ///< bins per video frame, >= 1
+  int32_t video_window = 1;  ///< bins summed into each frame (exposure), >= 1
   double video_fps = 30.0;   ///< frames per second of the video, > 0
 };
 
