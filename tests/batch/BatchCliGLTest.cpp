@@ -113,13 +113,13 @@ TEST_F(BatchCliGLTest, ShardsPartitionTheRunsExactly) {
 }
 
 TEST_F(BatchCliGLTest, FailingRunIsReportedAndTheOthersComplete) {
-  // Valid config, but the streak row lies outside the 16x16 image: fails
-  // while running, after the render.
+  // A valid config whose memory budget cannot hold the light's 1024^2 cube
+  // shadow map: found only when the render plans its GPU memory.
   const std::string batch = writeBatch(
       "runs:\n"
       "  - name: good1\n"
       "  - name: broken\n"
-      "    set: {sensors: [{type: streak, rows: [100], bins: 40}]}\n"
+      "    set: {render.memory_budget: 1 MiB, render.shadow_map_resolution: 1024}\n"
       "  - name: good2\n"
       "    set: {render.seed: 5}\n");
   const CommandResult r = runCli("batch " + batch + " --jobs 2 -q");
@@ -127,7 +127,7 @@ TEST_F(BatchCliGLTest, FailingRunIsReportedAndTheOthersComplete) {
   EXPECT_EQ(statusOf(r.output, "good1"), "done") << r.output;
   EXPECT_EQ(statusOf(r.output, "broken"), "failed") << r.output;
   EXPECT_EQ(statusOf(r.output, "good2"), "done") << r.output;
-  EXPECT_NE(r.output.find("row"), std::string::npos) << r.output;  // the reason, from log.txt
+  EXPECT_NE(r.output.find("memory_budget"), std::string::npos) << r.output;  // the reason, from log.txt
   EXPECT_FALSE(fs::exists(dir_ / "out" / "broken" / "manifest.json"));
   EXPECT_TRUE(fs::exists(dir_ / "out" / "good2" / "manifest.json"));
 }

@@ -178,5 +178,15 @@ TEST_F(RunConfigTest, SensorErrorsAreLocated) {
   EXPECT_NE(path.find("sensors[1].name"), std::string::npos) << path;
 }
 
+TEST_F(RunConfigTest, SensorRowsAndPixelsOutsideTheImageAreRejectedBeforeRendering) {
+  const std::string streak = errorOf(std::string(kValid) + "sensors:\n  - type: streak\n    rows: [30]\n");
+  EXPECT_NE(streak.find("sensors[0].rows: row 30 is outside the image (height 24)"), std::string::npos)
+      << streak;
+  const std::string spad =
+      errorOf(std::string(kValid) + "sensors:\n  - type: spad\n    plot_pixels: [[32, 0]]\n");
+  EXPECT_NE(spad.find("sensors[0].plot_pixels"), std::string::npos) << spad;
+  EXPECT_NE(spad.find("test.yaml:"), std::string::npos) << spad;
+}
+
 }  // namespace
 }  // namespace tofsim::config
