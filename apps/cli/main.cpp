@@ -1,6 +1,7 @@
 // tofsim: the command-line interface. Parses arguments, calls one library
 // function per subcommand and maps errors to exit codes:
-//   0 success, 1 bad input or environment (one line on stderr), 2 usage.
+//   0 success, 1 bad input or environment (one line on stderr), 2 usage,
+//   130 / 143 interrupted by SIGINT / SIGTERM (partial outputs removed).
 
 #include <CLI/CLI.hpp>
 #include <cstdio>
@@ -13,6 +14,7 @@
 #include "tofsim/pipeline/SenseRun.h"
 #include "tofsim/pipeline/Version.h"
 #include "tofsim/util/Error.h"
+#include "tofsim/util/Interrupt.h"
 
 namespace {
 
@@ -121,6 +123,7 @@ int main(int argc, char** argv) {
   } catch (const CLI::ParseError& e) {
     return app.exit(e) == 0 ? 0 : 2;
   }
+  tofsim::installInterruptHandlers();
   try {
     if (render->parsed()) {
       return runRenderCommand(configPath, outputDir, sets, quiet, platform, renderer);
@@ -128,6 +131,9 @@ int main(int argc, char** argv) {
     if (compareCommand->parsed()) return runCompareCommand(dirA, dirB, outputDir);
     if (sense->parsed()) return runSenseCommand(configPath, volumeDir, outputDir, sets, quiet);
     if (validate->parsed()) return runValidateCommand(configPath, sets);
+  } catch (const tofsim::Interrupted& e) {
+    std::fprintf(stderr, "tofsim: %s\n", e.what());
+    return e.exitCode();
   } catch (const tofsim::InputError& e) {
     std::fprintf(stderr, "tofsim: error: %s\n", e.what());
     return 1;
