@@ -135,7 +135,11 @@ void parseRender(const ConfigNode& node, RunConfig& out) {
   r.shadow_map_resolution = static_cast<int32_t>(
       intInRange(node, "shadow_map_resolution", r.shadow_map_resolution, 16, 16384));
   const double budget = node.getBytes("memory_budget", static_cast<double>(r.memory_budget_bytes));
-  if (!(budget >= 1024.0 * 1024.0)) node.failKey("memory_budget", "must be at least 1 MiB");
+  // The upper bound keeps the conversion to size_t defined (found by fuzz_config).
+  constexpr double kMaxBudget = 0x1p50;  // 1 PiB
+  if (!(budget >= 1024.0 * 1024.0 && budget <= kMaxBudget)) {
+    node.failKey("memory_budget", "must be between 1 MiB and 1 PiB");
+  }
   r.memory_budget_bytes = static_cast<std::size_t>(budget);
   if (const auto indirect = node.optionalChild("indirect")) parseIndirect(*indirect, r.indirect);
   if (const auto reference = node.optionalChild("reference")) {
