@@ -14,7 +14,14 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   try {
     tofsim::scene::LoadReport report;
     const tofsim::scene::Scene scene = tofsim::scene::loadGltf(path, &report);
-    // What the renderer relies on: indices in range, finite positions.
+    // What the renderer relies on: indices in range, finite positions and
+    // cameras.
+    for (const tofsim::scene::SceneCamera& c : scene.cameras) {
+      if (!std::isfinite(c.fov_y_deg) || !std::isfinite(c.position_world.x) ||
+          !std::isfinite(c.forward_world.x) || !std::isfinite(c.up_world.x)) {
+        __builtin_trap();
+      }
+    }
     for (const tofsim::scene::Mesh& mesh : scene.meshes) {
       for (const uint32_t i : mesh.indices) {
         if (i >= mesh.positions_world.size()) __builtin_trap();
