@@ -87,6 +87,15 @@ TEST_F(FaultInjectionGLTest, SigtermRemovesPartialOutputsAndExits143) {
   expectInterruptedCleanly(dir_, SIGTERM, 143);
 }
 
+TEST_F(FaultInjectionGLTest, MemoryBudgetTooSmallNamesTheKey) {
+  const test::CommandResult r =
+      test::runCli("render " + test::kCornellConfig + " -o " + (dir_ / "out").string() + kSmall +
+                   " --set render.memory_budget='1 MiB'");
+  EXPECT_EQ(r.exitCode, 1) << r.output;
+  EXPECT_NE(r.output.find("raise render.memory_budget"), std::string::npos) << r.output;
+  EXPECT_FALSE(fs::exists(dir_ / "out"));
+}
+
 // CI machines have no GPU: the EGL device platform is missing, and the error
 // must say so. Skipped where a device platform exists (GPU machines).
 TEST_F(FaultInjectionGLTest, MissingEglDevicePlatformNamesIt) {

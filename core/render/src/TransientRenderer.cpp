@@ -150,6 +150,12 @@ RenderResult TransientRenderer::render(const RenderJob& job, SegmentSink& sink,
   std::unique_ptr<IndirectLight> indirectLight = makeIndirectLight(job, gpuScene, lo, hi);
   std::size_t fixedBytes = gpuScene.bytes() + pixelCount * 4 * 4 * sizeof(float) + shadowMap.bytes();
   if (indirectLight) fixedBytes += indirectLight->fixedBytes();
+  if (fixedBytes >= settings.memory_budget_bytes) {
+    throw InputError("render.memory_budget (" + std::to_string(settings.memory_budget_bytes) +
+                     " bytes) does not exceed what the scene, G-buffer, shadow map and VPLs "
+                     "need (" + std::to_string(fixedBytes) + " bytes) before any volume "
+                     "segment; raise render.memory_budget");
+  }
   std::size_t budget = settings.memory_budget_bytes > fixedBytes
                            ? settings.memory_budget_bytes - fixedBytes
                            : 0;
