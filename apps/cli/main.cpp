@@ -1,6 +1,7 @@
 // tofsim: the command-line interface. Parses arguments, calls one library
 // function per subcommand and maps errors to exit codes:
-//   0 success, 1 bad input or environment (one line on stderr), 2 usage.
+//   0 success, 1 bad input or environment (one line on stderr), 2 usage,
+//   130 / 143 interrupted by SIGINT / SIGTERM (partial outputs removed).
 
 #include <CLI/CLI.hpp>
 #include <cstdio>
@@ -15,6 +16,7 @@
 #include "tofsim/pipeline/SenseRun.h"
 #include "tofsim/pipeline/Version.h"
 #include "tofsim/util/Error.h"
+#include "tofsim/util/Interrupt.h"
 
 namespace {
 
@@ -162,6 +164,7 @@ int main(int argc, char** argv) {
   } catch (const CLI::ParseError& e) {
     return app.exit(e) == 0 ? 0 : 2;
   }
+  tofsim::installInterruptHandlers();
   try {
     if (render->parsed()) {
       return runRenderCommand(configPath, outputDir, sets, quiet, platform, renderer);
@@ -173,6 +176,9 @@ int main(int argc, char** argv) {
       return runBatchCommand(configPath, sets, jobs, shard, dryRun, verify, quiet);
     }
     if (info->parsed()) return runInfoCommand(scenePath);
+  } catch (const tofsim::Interrupted& e) {
+    std::fprintf(stderr, "tofsim: %s\n", e.what());
+    return e.exitCode();
   } catch (const tofsim::InputError& e) {
     std::fprintf(stderr, "tofsim: error: %s\n", e.what());
     return 1;

@@ -1,6 +1,7 @@
 #include "tofsim/pipeline/OutputSink.h"
 
 #include <algorithm>
+#include <cmath>
 
 #include "tofsim/capture/VolumeCollector.h"
 
@@ -8,7 +9,19 @@ namespace tofsim::pipeline {
 
 namespace {
 constexpr int32_t kChannels = 3;
+
+// Replaces NaN and +-inf by 0 in place; returns how many there were.
+std::size_t zeroNonFinite(float* values, std::size_t count) {
+  std::size_t rejected = 0;
+  for (std::size_t i = 0; i < count; ++i) {
+    if (!std::isfinite(values[i])) {
+      values[i] = 0.0f;
+      ++rejected;
+    }
+  }
+  return rejected;
 }
+}  // namespace
 
 OutputSink::OutputSink(const std::filesystem::path& directory, const config::OutputConfig& output,
                        int32_t width, int32_t height, const TimeAxis& axis, bool keepInMemory,
@@ -35,12 +48,17 @@ OutputSink::OutputSink(const std::filesystem::path& directory, const config::Out
 void OutputSink::consume(const capture::Segment& segment) {
   const std::size_t pixelFloats = static_cast<std::size_t>(axis_.bins) * kChannels;
   const std::size_t floats = segment.pixelCount * pixelFloats;
+  directScratch_.assign(segment.direct, segment.direct + floats);
+  indirectScratch_.assign(segment.indirect, segment.indirect + floats);
+  nonFinite_ += zeroNonFinite(directScratch_.data(), floats);
+  nonFinite_ += zeroNonFinite(indirectScratch_.data(), floats);
   scratch_.resize(floats);
   // total = direct + indirect in float, so each component file adds up to it.
-  for (std::size_t i = 0; i < floats; ++i) scratch_[i] = segment.direct[i] + segment.indirect[i];
+  for (std::size_t i = 0; i < floats; ++i) scratch_[i] = directScratch_[i] + indirectScratch_[i];
+  nonFinite_ += zeroNonFinite(scratch_.data(), floats);  // two finite floats can overflow
   if (total_) total_->append(scratch_.data(), floats);
-  if (directFile_) directFile_->append(segment.direct, floats);
-  if (indirectFile_) indirectFile_->append(segment.indirect, floats);
+  if (directFile_) directFile_->append(directScratch_.data(), floats);
+  if (indirectFile_) indirectFile_->append(indirectScratch_.data(), floats);
   for (std::size_t p = 0; p < segment.pixelCount; ++p) {
     double* out = &steady_[(segment.firstPixel + p) * kChannels];
     const float* in = &scratch_[p * pixelFloats];
@@ -50,7 +68,7 @@ void OutputSink::consume(const capture::Segment& segment) {
   }
   const std::size_t offset = segment.firstPixel * pixelFloats;
   if (volume_) std::copy_n(scratch_.data(), floats, volume_->data() + offset);
-  if (direct_) std::copy_n(segment.direct, floats, direct_->data() + offset);
+  if (direct_) std::copy_n(directScratch_.data(), floats, direct_->data() + offset);
 }
 
 void OutputSink::commit() {

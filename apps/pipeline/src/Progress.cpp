@@ -5,6 +5,8 @@
 #include <cstdio>
 #include <utility>
 
+#include "tofsim/util/Interrupt.h"
+
 namespace tofsim::pipeline {
 
 Progress::Progress(std::string task, bool quiet)
@@ -19,6 +21,9 @@ Progress::~Progress() {
 }
 
 void Progress::update(std::size_t done, std::size_t total, const std::string& what) {
+  // Long work reports progress often, so this is where SIGINT/SIGTERM end it
+  // (quiet or not): the exception unwinds through the writers' destructors.
+  throwIfInterrupted();
   if (quiet_ || total == 0) return;
   const auto now = std::chrono::steady_clock::now();
   const bool finished = done >= total;

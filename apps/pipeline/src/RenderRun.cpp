@@ -14,6 +14,8 @@
 #include "tofsim/render/TransientRenderer.h"
 #include "tofsim/scene/GltfLoader.h"
 #include "tofsim/util/AtomicFile.h"
+#include "tofsim/util/Error.h"
+#include "tofsim/util/Interrupt.h"
 
 namespace tofsim::pipeline {
 
@@ -34,6 +36,7 @@ void writeFrames(const std::filesystem::path& directory, const TransientVolume& 
                  std::vector<std::string>& files) {
   std::filesystem::create_directories(directory / "frames");
   for (int32_t t = 0; t < volume.bins(); ++t) {
+    throwIfInterrupted();
     Image frame(volume.width(), volume.height(), volume.channels());
     for (int32_t y = 0; y < volume.height(); ++y) {
       for (int32_t x = 0; x < volume.width(); ++x) {
@@ -75,6 +78,19 @@ void writeVideo(const std::filesystem::path& dir, const config::OutputConfig& ou
 }  // namespace
 
 namespace {
+// Checked before any rendering, so that a bad -o fails in a second with a
+// clear message rather than after the render. Returns whether it was created.
+bool prepareOutputDirectory(const std::filesystem::path& dir) {
+  std::error_code ec;
+  if (std::filesystem::exists(dir, ec) && !std::filesystem::is_directory(dir, ec)) {
+    throw InputError(FileLoc{dir.string()}, "", "output directory exists and is not a directory");
+  }
+  const bool created = !std::filesystem::exists(dir, ec);
+  std::filesystem::create_directories(dir, ec);
+  if (ec) throw InputError(FileLoc{dir.string()}, "", "cannot create output directory: " + ec.message());
+  return created;
+}
+
 void writeOutputs(const config::RunConfig& config, const capture::RenderJob& job,
                   const RunOptions& options, Progress& progress, RunSummary& summary);
 }
@@ -90,10 +106,16 @@ RunSummary runRender(const config::RunConfig& config, const RunOptions& options)
   summary.outputDirectory =
       options.outputDirectory.empty() ? config.output.directory : options.outputDirectory;
   const std::filesystem::path& dir = summary.outputDirectory;
-  const bool createdDirectory = !std::filesystem::exists(dir);
-  std::filesystem::create_directories(dir);
+  const bool createdDirectory = prepareOutputDirectory(dir);
   try {
     writeOutputs(config, job, options, progress, summary);
+  } catch (const Interrupted&) {
+    // An interrupted run leaves no outputs of its own, complete or not, so
+    // the folder never mixes this run's files with an earlier run's.
+    std::error_code ec;
+    for (const std::string& f : summary.files) std::filesystem::remove(dir / f, ec);
+    if (createdDirectory) std::filesystem::remove_all(dir, ec);
+    throw;
   } catch (...) {
     // Files are renamed into place only when complete, so a failed run leaves
     // at most what earlier runs wrote; a folder this run made is removed.
@@ -139,7 +161,14 @@ void writeOutputs(const config::RunConfig& config, const capture::RenderJob& job
     progress.update(done, total, what);
   };
   summary.result = renderVolume(config, job, options, sink, onProgress, summary.device);
+  summary.result.nonFiniteRejected = sink.nonFiniteValues();
   progress.message("device: " + summary.device);
+  if (summary.result.nonFiniteRejected > 0) {
+    // Shown even with -q: the outputs differ from what the renderer produced.
+    std::fprintf(stderr, "tofsim: warning: %zu NaN/infinite volume values written as 0 "
+                 "(transient.json stats.rejected_non_finite_values)\n",
+                 summary.result.nonFiniteRejected);
+  }
   sink.commit();
   if (out.transient) summary.files.push_back("transient.npy");
   if (out.direct) summary.files.push_back("direct.npy");

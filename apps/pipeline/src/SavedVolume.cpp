@@ -1,5 +1,6 @@
 #include "tofsim/pipeline/SavedVolume.h"
 
+#include <cmath>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <string>
@@ -33,13 +34,20 @@ VolumeLayout readLayout(const std::filesystem::path& file) {
     const nlohmann::json& time = j.at("time");
     layout.axis.start_s = time.at("start_s").get<double>();
     layout.axis.bin_width_s = time.at("bin_width_s").get<double>();
-    layout.axis.bins = time.at("bins").get<int32_t>();
+    // Read wide and range-checked below: get<int32_t>() of 1e20 would be an
+    // out-of-range float-to-int conversion (undefined behaviour).
+    const nlohmann::json& bins = time.at("bins");
+    if (!bins.is_number_integer() || bins.get<int64_t>() < 1 || bins.get<int64_t>() > (1 << 24)) {
+      fail(file, "time.bins must be an integer in [1, 16777216]");
+    }
+    layout.axis.bins = static_cast<int32_t>(bins.get<int64_t>());
     if (j.contains("channels")) layout.channels = j.at("channels").get<std::vector<std::string>>();
   } catch (const nlohmann::json::exception& e) {
     fail(file, std::string("not a tofsim transient.json: ") + e.what());
   }
-  if (!(layout.axis.bin_width_s > 0.0) || layout.axis.bins < 1) {
-    fail(file, "time.bin_width_s must be > 0 and time.bins >= 1");
+  if (!(layout.axis.bin_width_s > 0.0) || !std::isfinite(layout.axis.bin_width_s) ||
+      !std::isfinite(layout.axis.start_s)) {
+    fail(file, "time.start_s must be finite and time.bin_width_s finite and > 0");
   }
   return layout;
 }
@@ -52,10 +60,14 @@ std::string shapeText(const io::NpyShape& shape) {
 
 TransientVolume readVolume(const std::filesystem::path& file, const VolumeLayout& layout,
                            const std::filesystem::path& jsonFile) {
-  if (!std::filesystem::exists(file)) fail(file, "not found");
+  std::error_code ec;
+  if (!std::filesystem::exists(file, ec)) fail(file, "not found");
   io::NpyArray array = io::readNpy(file);
   const io::NpyShape& s = array.shape;
-  if (s.size() != 4 || s[2] != static_cast<std::size_t>(layout.axis.bins) ||
+  // Every axis at least 1 and H, W, C within int32 (TransientVolume's sizes).
+  const auto badDimension = [](std::size_t d) { return d < 1 || d > (std::size_t{1} << 30); };
+  if (s.size() != 4 || badDimension(s[0]) || badDimension(s[1]) || badDimension(s[3]) ||
+      s[2] != static_cast<std::size_t>(layout.axis.bins) ||
       (!layout.channels.empty() && s[3] != layout.channels.size())) {
     fail(file, "shape " + shapeText(s) + " does not match " + jsonFile.filename().string() +
                    " (expected (H, W, " + std::to_string(layout.axis.bins) + ", " +
@@ -76,7 +88,8 @@ SavedVolume loadSavedVolume(const std::filesystem::path& directory) {
   const VolumeLayout layout = readLayout(json);
   SavedVolume saved{readVolume(directory / "transient.npy", layout, json), {}, {}};
   const int32_t W = saved.volume.width(), H = saved.volume.height();
-  if (std::filesystem::exists(directory / "direct.npy")) {
+  std::error_code ec;
+  if (std::filesystem::exists(directory / "direct.npy", ec)) {
     saved.directOnly = readVolume(directory / "direct.npy", layout, json);
     if (saved.directOnly->width() != W || saved.directOnly->height() != H ||
         saved.directOnly->channels() != saved.volume.channels()) {
@@ -84,7 +97,7 @@ SavedVolume loadSavedVolume(const std::filesystem::path& directory) {
     }
   }
   const std::filesystem::path depthFile = directory / "depth.exr";
-  if (std::filesystem::exists(depthFile)) {
+  if (std::filesystem::exists(depthFile, ec)) {
     saved.depth_m = io::readExr(depthFile);
     if (saved.depth_m->channels != 1 || saved.depth_m->width != W || saved.depth_m->height != H) {
       fail(depthFile, "expected one channel of " + std::to_string(W) + "x" + std::to_string(H) +

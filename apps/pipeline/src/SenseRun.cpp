@@ -7,6 +7,7 @@
 #include "tofsim/pipeline/SensorWriter.h"
 #include "tofsim/sensors/RunSensor.h"
 #include "tofsim/util/Error.h"
+#include "tofsim/util/Interrupt.h"
 
 namespace tofsim::pipeline {
 
@@ -39,6 +40,7 @@ std::vector<std::string> runConfiguredSensors(const config::RunConfig& config,
   TOFSIM_CHECK(volumes.volume != nullptr);
   std::vector<std::string> files;
   for (std::size_t i = 0; i < config.sensors.size(); ++i) {
+    throwIfInterrupted();
     const sensors::SensorSpec& spec = config.sensors[i];
     const auto start = std::chrono::steady_clock::now();
     sensors::SensorInputs inputs;

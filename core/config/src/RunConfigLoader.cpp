@@ -135,7 +135,11 @@ void parseRender(const ConfigNode& node, RunConfig& out) {
   r.shadow_map_resolution = static_cast<int32_t>(
       intInRange(node, "shadow_map_resolution", r.shadow_map_resolution, 16, 16384));
   const double budget = node.getBytes("memory_budget", static_cast<double>(r.memory_budget_bytes));
-  if (!(budget >= 1024.0 * 1024.0)) node.failKey("memory_budget", "must be at least 1 MiB");
+  // The upper bound keeps the conversion to size_t defined (found by fuzz_config).
+  constexpr double kMaxBudget = 0x1p50;  // 1 PiB
+  if (!(budget >= 1024.0 * 1024.0 && budget <= kMaxBudget)) {
+    node.failKey("memory_budget", "must be between 1 MiB and 1 PiB");
+  }
   r.memory_budget_bytes = static_cast<std::size_t>(budget);
   if (const auto indirect = node.optionalChild("indirect")) parseIndirect(*indirect, r.indirect);
   if (const auto reference = node.optionalChild("reference")) {
@@ -271,7 +275,10 @@ RunConfig loadRunConfig(const std::filesystem::path& file, const std::vector<Ove
   config.config_file = file;
   const std::string sceneText = root.requireString("scene");
   config.scene_file = file.parent_path() / sceneText;
-  if (!std::filesystem::exists(config.scene_file)) {
+  // The error_code overload: a name the OS rejects (too long, ...) is bad
+  // input, not a std::filesystem_error escaping (found by fuzz_config).
+  std::error_code ec;
+  if (!std::filesystem::exists(config.scene_file, ec)) {
     root.failKey("scene", "scene file not found: " + config.scene_file.string());
   }
   parseCamera(root.child("camera"), config.camera);

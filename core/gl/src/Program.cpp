@@ -76,7 +76,8 @@ Program::Program(const std::vector<ShaderStage>& stages,
   std::vector<Handle<detail::deleteShader>> shaders;
   std::string names;
   for (const ShaderStage& stage : stages) {
-    const std::string source = assemble(stage.fileName, defines, 0);
+    const std::string source =
+        stage.source.empty() ? assemble(stage.fileName, defines, 0) : stage.source;
     Handle<detail::deleteShader> shader(glCreateShader(stage.type));
     const char* text = source.c_str();
     glShaderSource(shader.id(), 1, &text, nullptr);

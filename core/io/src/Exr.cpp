@@ -97,7 +97,8 @@ void writeExr(const std::filesystem::path& path, const Image& image,
 
 Image readExr(const std::filesystem::path& path, std::vector<std::string>* channelNames) {
   const std::string name = path.string();
-  if (!std::filesystem::exists(path)) throw InputError(FileLoc{name}, "", "EXR file not found");
+  std::error_code ec;
+  if (!std::filesystem::exists(path, ec)) throw InputError(FileLoc{name}, "", "EXR file not found");
   try {
     Imf::InputFile in(path.c_str());
     const Imath::Box2i window = in.header().dataWindow();

@@ -15,12 +15,13 @@ SegmentPlan planSegments(std::size_t pixelCount, std::size_t floatsPerPixel, int
   if (pixelVolumeBytes > maxStorageBlockBytes) {
     throw InputError("one pixel's histogram (" + std::to_string(pixelVolumeBytes) +
                      " bytes) exceeds the GL implementation's largest storage block (" +
-                     std::to_string(maxStorageBlockBytes) + " bytes); use fewer time bins");
+                     std::to_string(maxStorageBlockBytes) + " bytes); lower time.bins");
   }
   if (pixelBytes > budgetBytes) {
     throw InputError("render.memory_budget (" + std::to_string(budgetBytes) +
                      " bytes left after the scene and maps) cannot hold one pixel's histogram (" +
-                     std::to_string(pixelBytes) + " bytes)");
+                     std::to_string(pixelBytes) + " bytes); raise render.memory_budget or lower "
+                     "time.bins");
   }
   SegmentPlan plan;
   plan.pixelsPerSegment = std::min({budgetBytes / pixelBytes, maxStorageBlockBytes / pixelVolumeBytes,

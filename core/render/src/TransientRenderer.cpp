@@ -27,17 +27,41 @@ namespace {
 constexpr int kChannels = 3;
 constexpr GLuint kWorkGroupSize = 64;  // local_size_x of the gather shaders
 
+// Everything that can be checked against the GL implementation's limits
+// before any GL work; each message names the config key to change.
 void validateJob(const RenderJob& job, const gl::ContextLimits& limits) {
   TOFSIM_CHECK(job.scene != nullptr);
   const Camera& c = job.camera;
+  const std::string maxTexture = std::to_string(limits.maxTextureSize);
   if (c.width > limits.maxTextureSize || c.height > limits.maxTextureSize) {
-    throw InputError("camera resolution " + std::to_string(c.width) + "x" +
+    throw InputError("camera.resolution " + std::to_string(c.width) + "x" +
                      std::to_string(c.height) + " exceeds the GL implementation's texture limit " +
-                     std::to_string(limits.maxTextureSize));
+                     maxTexture);
   }
   if (job.settings.shadow_map_resolution > limits.maxTextureSize) {
-    throw InputError("render.shadow_map_resolution exceeds the GL texture limit " +
-                     std::to_string(limits.maxTextureSize));
+    throw InputError("render.shadow_map_resolution " +
+                     std::to_string(job.settings.shadow_map_resolution) +
+                     " exceeds the GL texture limit " + maxTexture);
+  }
+  const IndirectSettings& s = job.settings.indirect;
+  if (s.enabled && s.rsm_resolution > limits.maxTextureSize) {
+    throw InputError("render.indirect.rsm_resolution " + std::to_string(s.rsm_resolution) +
+                     " exceeds the GL texture limit " + maxTexture);
+  }
+  // One ISM (without its pull-push pyramid) is one storage block.
+  const std::size_t ismBytes = std::size_t(s.ism_resolution) * s.ism_resolution * sizeof(float);
+  if (s.enabled && ismBytes > limits.maxShaderStorageBlockBytes) {
+    throw InputError("render.indirect.ism_resolution " + std::to_string(s.ism_resolution) +
+                     " needs " + std::to_string(ismBytes) +
+                     " bytes per VPL, over the GL storage-block limit " +
+                     std::to_string(limits.maxShaderStorageBlockBytes));
+  }
+  const std::size_t pixelBytes = std::size_t(job.settings.time.bins) * kChannels * sizeof(float);
+  if (pixelBytes > limits.maxShaderStorageBlockBytes) {
+    throw InputError("time.bins " + std::to_string(job.settings.time.bins) + " x " +
+                     std::to_string(kChannels) + " channels x 4 bytes exceeds the GL " +
+                     "storage-block limit " + std::to_string(limits.maxShaderStorageBlockBytes) +
+                     " bytes; use fewer time bins");
   }
 }
 
@@ -126,6 +150,12 @@ RenderResult TransientRenderer::render(const RenderJob& job, SegmentSink& sink,
   std::unique_ptr<IndirectLight> indirectLight = makeIndirectLight(job, gpuScene, lo, hi);
   std::size_t fixedBytes = gpuScene.bytes() + pixelCount * 4 * 4 * sizeof(float) + shadowMap.bytes();
   if (indirectLight) fixedBytes += indirectLight->fixedBytes();
+  if (fixedBytes >= settings.memory_budget_bytes) {
+    throw InputError("render.memory_budget (" + std::to_string(settings.memory_budget_bytes) +
+                     " bytes) does not exceed what the scene, G-buffer, shadow map and VPLs "
+                     "need (" + std::to_string(fixedBytes) + " bytes) before any volume "
+                     "segment; raise render.memory_budget");
+  }
   std::size_t budget = settings.memory_budget_bytes > fixedBytes
                            ? settings.memory_budget_bytes - fixedBytes
                            : 0;

@@ -118,7 +118,9 @@ std::vector<double> readAccessor(const GltfDocument& doc, int index, const std::
     // No bufferView: zeros, to be replaced by sparse values. Bound the
     // allocation by what a sparse-only accessor can sensibly describe.
     if (!a.sparse) reader.fail("has neither a bufferView nor sparse data");
-    if (a.count > (std::size_t{1} << 28)) reader.fail("is too large");
+    // 2^24 values (128 MiB of doubles): a MAT4 accessor of 2^28 elements
+    // would have asked for 34 GB here (found by fuzzing).
+    if (a.count > (std::size_t{1} << 24) / n) reader.fail("is too large for a sparse-only accessor");
     out.assign(a.count * n, 0.0);
   }
 

@@ -1,5 +1,6 @@
 #include "tofsim/scene/GltfLoader.h"
 
+#include <cmath>
 #include <string>
 
 #include "GltfCameras.h"
@@ -11,6 +12,18 @@
 #include "tofsim/util/Error.h"
 
 namespace tofsim::scene {
+
+namespace {
+// A camera the renderer can use: finite pose, an orthonormal-able frame and
+// a field of view in (0, 180) degrees (aspect 0 means "from the image").
+bool usable(const SceneCamera& c) {
+  const auto finite = [](const glm::vec3& v) {
+    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+  };
+  return finite(c.position_world) && finite(c.forward_world) && finite(c.up_world) &&
+         c.fov_y_deg > 0.0f && c.fov_y_deg < 180.0f && std::isfinite(c.aspect) && c.aspect >= 0.0f;
+}
+}  // namespace
 
 Scene loadGltf(const std::filesystem::path& path, LoadReport* reportOut) {
   std::error_code ec;
@@ -36,6 +49,11 @@ Scene loadGltf(const std::filesystem::path& path, LoadReport* reportOut) {
       const detail::CameraDesc& camera = doc.cameras[node.camera];
       if (camera.perspective) {
         scene.cameras.push_back(detail::convertCamera(camera, instance));
+        if (!usable(scene.cameras.back())) {
+          throw InputError(FileLoc{doc.file}, "node[" + std::to_string(instance.node) + "]",
+                           "camera '" + camera.name + "' has a degenerate transform, or a yfov "
+                           "outside (0, 180) degrees or a negative aspectRatio");
+        }
       } else {
         ++report.orthographicCameras;
       }

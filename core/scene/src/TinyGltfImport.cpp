@@ -61,8 +61,12 @@ Primitive convert(const tinygltf::Primitive& p) {
   for (const auto& [name, accessor] : p.attributes) {
     if (name == "POSITION") out.position = accessor;
     if (name == "NORMAL") out.normal = accessor;
-    if (name.rfind("TEXCOORD_", 0) == 0) {
-      const std::size_t set = std::stoul(name.substr(9));
+    // TEXCOORD_<n>; anything else after the underscore is not a texture
+    // coordinate set (std::stoul would throw on it: a crash found by fuzzing).
+    const std::string suffix = name.rfind("TEXCOORD_", 0) == 0 ? name.substr(9) : "";
+    if (!suffix.empty() && suffix.size() <= 2 &&
+        std::all_of(suffix.begin(), suffix.end(), [](unsigned char c) { return std::isdigit(c); })) {
+      const std::size_t set = std::stoul(suffix);
       if (set < 16) {
         if (out.texcoords.size() <= set) out.texcoords.resize(set + 1, -1);
         out.texcoords[set] = accessor;

@@ -3,6 +3,10 @@
 // indirect) and, when asked, direct.npy and indirect.npy, while accumulating
 // the steady image. Nothing appears under its final name until commit(); an
 // exception or interruption before then leaves only removed temporaries.
+//
+// NaN and infinity never reach the files silently: each value that is not
+// finite (in direct, indirect or their float sum) is written as 0 and counted
+// (nonFiniteValues()), and the run reports the count.
 
 #include <filesystem>
 #include <memory>
@@ -31,13 +35,16 @@ class OutputSink : public capture::SegmentSink {
   /// Only when keepInMemory (volume) or keepDirectInMemory (directVolume).
   const TransientVolume* volume() const { return volume_ ? &*volume_ : nullptr; }
   const TransientVolume* directVolume() const { return direct_ ? &*direct_ : nullptr; }
+  /// How many values were NaN or infinite and replaced by 0 so far.
+  std::size_t nonFiniteValues() const { return nonFinite_; }
 
  private:
   int32_t width_, height_;
   TimeAxis axis_;
   std::unique_ptr<io::NpyStreamWriter> total_, directFile_, indirectFile_;
   std::vector<double> steady_;
-  std::vector<float> scratch_;
+  std::vector<float> scratch_, directScratch_, indirectScratch_;
+  std::size_t nonFinite_ = 0;
   std::optional<TransientVolume> volume_;
   std::optional<TransientVolume> direct_;
 };

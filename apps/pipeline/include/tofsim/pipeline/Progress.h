@@ -13,6 +13,7 @@ class Progress {
  public:
   Progress(std::string task, bool quiet);
   ~Progress();
+  /// Throws tofsim::Interrupted when SIGINT/SIGTERM arrived (util/Interrupt.h).
   void update(std::size_t done, std::size_t total, const std::string& what);
   void message(const std::string& text) const;
 

@@ -32,6 +32,9 @@ struct RenderResult {
   /// Radiance that arrived outside the time axis (summed over channels); it is
   /// in neither the volume nor the steady image.
   double energyOutsideAxis = 0.0;
+  /// Volume values that were NaN or infinite (degenerate geometry, overflow)
+  /// and were written as 0 instead; counted by the output stage.
+  std::size_t nonFiniteRejected = 0;
 };
 
 /// Called after each unit of work: (done, total, what).

@@ -21,6 +21,9 @@ const std::string& embeddedShaderSource(std::string_view fileName);
 struct ShaderStage {
   GLenum type;           ///< GL_VERTEX_SHADER, GL_FRAGMENT_SHADER, GL_COMPUTE_SHADER, ...
   std::string fileName;  ///< under shaders/
+  /// Test hook (a shader that fails to compile on purpose): when non-empty,
+  /// compiled instead of the embedded file; fileName still names it in errors.
+  std::string source = {};
 };
 
 class Program {

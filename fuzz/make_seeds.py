@@ -1,0 +1,66 @@
+#!/usr/bin/env python3
+"""Writes the seed corpora in fuzz/corpus/<target>/: the shipped config and
+scene, plus tiny hand-made inputs that reach each code path (indices, strips,
+sparse accessors, a .glb, a .npy, a saved render). Re-run after changing it."""
+import base64, json, os, shutil, struct
+
+root = os.path.dirname(os.path.abspath(__file__))
+src = os.path.dirname(root)
+
+def out(target, name, data):
+    d = os.path.join(root, "corpus", target)
+    os.makedirs(d, exist_ok=True)
+    with open(os.path.join(d, name), "wb") as f:
+        f.write(data if isinstance(data, bytes) else data.encode())
+
+def npy(shape, values):
+    header = "{'descr': '<f4', 'fortran_order': False, 'shape': (%s), }" % "".join(
+        "%d, " % s for s in shape)
+    header += " " * ((64 - (10 + len(header) + 1) % 64) % 64) + "\n"
+    return b"\x93NUMPY\x01\x00" + struct.pack("<H", len(header)) + header.encode() + struct.pack(
+        "<%df" % len(values), *values)
+
+# config: the shipped demo and a minimal one
+out("fuzz_config", "cornell_box.yaml", open(os.path.join(src, "configs/cornell_box.yaml")).read())
+out("fuzz_config", "minimal.yaml", "scene: scenes/cornell_box.gltf\ncamera:\n  gltf_camera: cornell_camera\n"
+    "  resolution: [8, 8]\nlight:\n  type: point\n  position: [0.3, 0.5, -0.5]\n"
+    "time:\n  bins: 16\n  bin_width: \"1 m\"\nrender:\n  memory_budget: \"64 MiB\"\n"
+    "  indirect:\n    visibility: exact\noutput:\n  components: [direct]\n")
+
+# glTF: the shipped scene, a triangle with indices, a strip with a sparse
+# POSITION accessor, and the triangle as .glb
+out("fuzz_gltf", "cornell_box.gltf", open(os.path.join(src, "configs/scenes/cornell_box.gltf")).read())
+pos = struct.pack("<9f", 0, 0, 0, 1, 0, 0, 0, 1, 0)
+idx = struct.pack("<3H", 0, 1, 2) + b"\0\0"
+buf = pos + idx
+doc = {
+    "asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0]}],
+    "nodes": [{"mesh": 0, "scale": [1, 2, 1]}],
+    "meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "indices": 1, "material": 0}]}],
+    "materials": [{"pbrMetallicRoughness": {"baseColorFactor": [0.5, 0.5, 0.5, 1]}}],
+    "buffers": [{"byteLength": len(buf)}],
+    "bufferViews": [{"buffer": 0, "byteLength": 36}, {"buffer": 0, "byteOffset": 36, "byteLength": 6}],
+    "accessors": [
+        {"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3", "min": [0, 0, 0], "max": [1, 1, 0]},
+        {"bufferView": 1, "componentType": 5123, "count": 3, "type": "SCALAR"}],
+}
+embedded = json.loads(json.dumps(doc))
+embedded["buffers"][0]["uri"] = "data:application/octet-stream;base64," + base64.b64encode(buf).decode()
+out("fuzz_gltf", "triangle.gltf", json.dumps(embedded))
+strip = json.loads(json.dumps(embedded))
+strip["meshes"][0]["primitives"][0]["mode"] = 5
+strip["meshes"][0]["primitives"][0].pop("indices")
+strip["accessors"][0]["sparse"] = {"count": 1, "indices": {"bufferView": 1, "componentType": 5123},
+                                   "values": {"bufferView": 0}}
+out("fuzz_gltf", "strip_sparse.gltf", json.dumps(strip))
+jsonChunk = json.dumps(doc).encode()
+jsonChunk += b" " * ((4 - len(jsonChunk) % 4) % 4)
+binChunk = buf + b"\0" * ((4 - len(buf) % 4) % 4)
+body = struct.pack("<I4s", len(jsonChunk), b"JSON") + jsonChunk + struct.pack("<I4s", len(binChunk), b"BIN\0") + binChunk
+out("fuzz_gltf", "triangle.glb", b"glTF" + struct.pack("<II", 2, 12 + len(body)) + body)
+
+# npy and a saved render (transient.json, NUL, transient.npy)
+out("fuzz_npy", "volume.npy", npy((2, 1, 2, 3), [float(i) for i in range(12)]))
+out("fuzz_npy", "scalar.npy", npy((), [1.5]))
+meta = json.dumps({"time": {"start_s": 5e-9, "bin_width_s": 1e-11, "bins": 2}, "channels": ["R", "G", "B"]})
+out("fuzz_saved_volume", "render", meta.encode() + b"\0" + npy((2, 1, 2, 3), [float(i) for i in range(12)]))

@@ -1,0 +1,91 @@
+// Every input that crashed a fuzz target (fuzz/) is kept in
+// tests/regressions/<loader>/ and loaded here the way the fuzz target loads
+// it: it must now load or be rejected with an InputError, nothing else. Run
+// under the sanitizers (scripts/run-sanitized-tests.sh) this also catches the
+// original undefined behaviour or memory error coming back.
+
+#include <gtest/gtest.h>
+
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "support/TempDir.h"
+#include "tofsim/config/RunConfig.h"
+#include "tofsim/io/Npy.h"
+#include "tofsim/pipeline/SavedVolume.h"
+#include "tofsim/scene/GltfLoader.h"
+#include "tofsim/util/Error.h"
+
+namespace tofsim {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string bytesOf(const fs::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+void writeBytes(const fs::path& file, const std::string& bytes) {
+  std::ofstream(file, std::ios::binary) << bytes;
+}
+
+class FuzzRegressionTest : public test::TempDirTest {
+ protected:
+  // Runs `load` on every file of tests/regressions/<kind>; returns how many.
+  template <typename Load>
+  int forEachInput(const std::string& kind, Load load) {
+    int n = 0;
+    for (const auto& e : fs::directory_iterator(fs::path(TOFSIM_REGRESSIONS_DIR) / kind)) {
+      if (e.path().filename().string().front() == '.') continue;  // .keep
+      SCOPED_TRACE(e.path().string());
+      try {
+        load(bytesOf(e.path()), e.path());
+      } catch (const InputError&) {  // the expected rejection
+      }
+      ++n;
+    }
+    return n;
+  }
+};
+
+TEST_F(FuzzRegressionTest, Configs) {
+  fs::create_directory_symlink(fs::path(TOFSIM_SOURCE_DIR) / "configs" / "scenes", dir_ / "scenes");
+  forEachInput("config", [&](const std::string& bytes, const fs::path&) {
+    writeBytes(dir_ / "input.yaml", bytes);
+    config::loadRunConfig(dir_ / "input.yaml", {});
+  });
+}
+
+TEST_F(FuzzRegressionTest, GltfScenes) {
+  forEachInput("gltf", [&](const std::string& bytes, const fs::path&) {
+    const bool binary = bytes.rfind("glTF", 0) == 0;
+    const fs::path file = dir_ / (binary ? "input.glb" : "input.gltf");
+    writeBytes(file, bytes);
+    scene::loadGltf(file);
+  });
+}
+
+TEST_F(FuzzRegressionTest, NpyFiles) {
+  forEachInput("npy", [&](const std::string& bytes, const fs::path&) {
+    writeBytes(dir_ / "input.npy", bytes);
+    io::readNpy(dir_ / "input.npy");
+  });
+}
+
+// As in fuzz/fuzz_saved_volume.cpp: transient.json, a NUL byte, transient.npy.
+TEST_F(FuzzRegressionTest, SavedVolumes) {
+  forEachInput("saved_volume", [&](const std::string& bytes, const fs::path&) {
+    const std::size_t nul = bytes.find('\0');
+    writeBytes(dir_ / "transient.json", bytes.substr(0, nul));
+    writeBytes(dir_ / "transient.npy", nul == std::string::npos ? "" : bytes.substr(nul + 1));
+    pipeline::loadSavedVolume(dir_);
+  });
+}
+
+}  // namespace
+}  // namespace tofsim
