@@ -17,7 +17,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     const tofsim::pipeline::SavedVolume saved =
         tofsim::pipeline::loadSavedVolume(tofsim::fuzz::workDir());
     const tofsim::TransientVolume& v = saved.volume;
-    if (v.values().size() != static_cast<size_t>(v.width()) * v.height() * v.bins() * v.channels()) {
+    if (v.values().size() !=
+        static_cast<size_t>(v.width()) * v.height() * v.bins() * v.channels()) {
       __builtin_trap();
     }
   } catch (const tofsim::InputError&) {

@@ -43,8 +43,9 @@ class FaultInjectionGLTest : public test::TempDirTest {};
 
 TEST_F(FaultInjectionGLTest, DiskFullGivesClearErrorAndNoPartialFile) {
   const fs::path out = dir_ / "out";
-  const pid_t pid = test::spawnCli("render " + test::kCornellConfig + " -o " + out.string() + kSmall,
-                                   (dir_ / "log").string(), {.maxFileBytes = 256 * 1024});
+  const pid_t pid =
+      test::spawnCli("render " + test::kCornellConfig + " -o " + out.string() + kSmall,
+                     (dir_ / "log").string(), {.maxFileBytes = 256 * 1024});
   const int code = test::waitCli(pid);
   const std::string log = test::fileBytes((dir_ / "log").string());
   EXPECT_EQ(code, 1) << log;
@@ -99,9 +100,9 @@ TEST_F(FaultInjectionGLTest, MemoryBudgetTooSmallNamesTheKey) {
 // CI machines have no GPU: the EGL device platform is missing, and the error
 // must say so. Skipped where a device platform exists (GPU machines).
 TEST_F(FaultInjectionGLTest, MissingEglDevicePlatformNamesIt) {
-  const test::CommandResult r = test::runCli("render " + test::kCornellConfig + " -o " +
-                                             (dir_ / "out").string() + kSmall +
-                                             " --egl-platform device");
+  const test::CommandResult r =
+      test::runCli("render " + test::kCornellConfig + " -o " + (dir_ / "out").string() + kSmall +
+                   " --egl-platform device");
   if (r.exitCode == 0) GTEST_SKIP() << "this machine has an EGL device platform";
   EXPECT_EQ(r.exitCode, 1) << r.output;
   EXPECT_NE(r.output.find("device platform"), std::string::npos) << r.output;

@@ -15,9 +15,12 @@ extern "C" void onSignal(int signalNumber) { gPending.store(signalNumber); }
 
 std::string signalName(int signalNumber) {
   switch (signalNumber) {
-    case SIGINT: return "SIGINT";
-    case SIGTERM: return "SIGTERM";
-    default: return "signal " + std::to_string(signalNumber);
+    case SIGINT:
+      return "SIGINT";
+    case SIGTERM:
+      return "SIGTERM";
+    default:
+      return "signal " + std::to_string(signalNumber);
   }
 }
 }  // namespace
