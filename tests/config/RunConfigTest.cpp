@@ -188,5 +188,14 @@ TEST_F(RunConfigTest, SensorRowsAndPixelsOutsideTheImageAreRejectedBeforeRenderi
   EXPECT_NE(spad.find("test.yaml:"), std::string::npos) << spad;
 }
 
+TEST_F(RunConfigTest, VplCountIsBoundedWithALocatedError) {
+  // A 30-degree spot uses one RSM view; a point light six cube faces.
+  EXPECT_NO_THROW(loadRunConfig(write(kValid), {parseOverride("render.indirect.rsm_resolution=2048")}));
+  const std::string e = errorOf(kValid, {parseOverride("light.type=point"),
+                                         parseOverride("render.indirect.rsm_resolution=2048")});
+  EXPECT_NE(e.find("render.indirect.rsm_resolution: 2048^2 x 6 light view(s) = 25165824 VPLs"),
+            std::string::npos) << e;
+}
+
 }  // namespace
 }  // namespace tofsim::config

@@ -251,6 +251,27 @@ void checkSensorPixels(const ConfigNode& list, const std::vector<sensors::Sensor
   }
 }
 
+// The RSM makes one VPL per texel of each light view: one view for spots up
+// to 60 degrees (half angle), six cube faces otherwise (Vpls.cpp). Bounded so
+// that a typo cannot ask for hours of work or more VPLs than a dispatch can
+// index.
+constexpr long long kMaxVpls = 1LL << 22;
+
+void checkVplCount(const ConfigNode& root, const RunConfig& config) {
+  const capture::Light& light = config.light.light;
+  const long long faces =
+      light.type == capture::Light::Type::Spot && light.cone_half_angle_deg <= 60.0f ? 1 : 6;
+  const long long side = config.render.indirect.rsm_resolution;
+  if (config.render.indirect.enabled && faces * side * side > kMaxVpls) {
+    const ConfigNode render = root.child("render");
+    const ConfigNode indirect = render.child("indirect");
+    indirect.failKey("rsm_resolution",
+                     std::to_string(side) + "^2 x " + std::to_string(faces) + " light view(s) = " +
+                         std::to_string(faces * side * side) + " VPLs, more than the limit of " +
+                         std::to_string(kMaxVpls));
+  }
+}
+
 }  // namespace
 
 Override parseOverride(const std::string& text) {
@@ -289,6 +310,7 @@ RunConfig loadRunConfig(const std::filesystem::path& file, const std::vector<Ove
     root.failKey("time", "required key is missing (start, bin_width, bins)");
   }
   if (const auto render = root.optionalChild("render")) parseRender(*render, config);
+  checkVplCount(root, config);
   if (const auto output = root.optionalChild("output")) parseOutput(*output, config.output);
   if (const auto list = root.optionalChild("sensors")) {
     // parseSensors reports unknown keys inside each sensor itself; the keys it

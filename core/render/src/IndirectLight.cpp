@@ -4,6 +4,7 @@
 
 #include "tofsim/gl/Check.h"
 #include "tofsim/util/Error.h"
+#include "tofsim/util/Interrupt.h"
 
 namespace tofsim::render {
 
@@ -155,6 +156,7 @@ void IndirectLight::gatherBatch(std::size_t batch, const GatherTarget& target) {
     dispatchThreads(target.pixelCount);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
     done += n;
+    throwIfInterrupted();  // Ctrl-C between dispatches, not only between segments
   }
   GLuint loopLimitHit = 0;
   loopGuard_.download(0, sizeof loopLimitHit, &loopLimitHit);

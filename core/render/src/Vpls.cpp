@@ -6,6 +6,7 @@
 
 #include "GpuScene.h"
 #include "SurfaceMaps.h"
+#include "tofsim/util/Interrupt.h"
 
 namespace tofsim::render {
 
@@ -42,6 +43,7 @@ std::vector<Vpl> generateVpls(const GpuScene& scene, const capture::Light& light
   const std::size_t texels = static_cast<std::size_t>(resolution) * resolution;
   std::vector<float> position(texels * 4), normal(texels * 4), albedo(texels * 4);
   for (const RsmView& v : rsmViews(light)) {
+    throwIfInterrupted();
     const glm::mat4 projection =
         glm::perspective(2.0f * v.halfAngle_rad, 1.0f, range.x, range.y);
     rsm.render(scene, projection * v.view, light.position_world);
