@@ -27,7 +27,7 @@ uniform int uCameraUnwarp;
 uniform vec3 uCameraPosition_world;
 
 void main() {
-  uint local = gl_GlobalInvocationID.x;
+  uint local = gl_GlobalInvocationID.y * (gl_NumWorkGroups.x * 64u) + gl_GlobalInvocationID.x;
   if (local >= uPixelCount) return;
   uint pixel = uFirstPixel + local;
   ivec2 xy = ivec2(int(pixel % uint(uImageWidth)), int(pixel / uint(uImageWidth)));

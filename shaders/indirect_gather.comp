@@ -62,7 +62,7 @@ bool visible(uint ismIndex, Vpl vpl, vec3 x, vec3 n, vec3 d, float dist, inout u
 }
 
 void main() {
-  uint local = gl_GlobalInvocationID.x;
+  uint local = gl_GlobalInvocationID.y * (gl_NumWorkGroups.x * 64u) + gl_GlobalInvocationID.x;
   if (local >= uPixelCount) return;
   uint pixel = uFirstPixel + local;
   ivec2 xy = ivec2(int(pixel % uint(uImageWidth)), int(pixel / uint(uImageWidth)));

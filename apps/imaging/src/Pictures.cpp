@@ -20,21 +20,7 @@ using detail::shortNumber;
 
 namespace {
 
-double percentile(std::vector<float> values, double q) {
-  values.erase(std::remove_if(values.begin(), values.end(),
-                              [](float v) { return !(v > 0.0f) || !std::isfinite(v); }),
-               values.end());
-  if (values.empty()) return 1.0;
-  const std::size_t k = std::min(values.size() - 1, static_cast<std::size_t>(q * values.size()));
-  std::nth_element(values.begin(), values.begin() + static_cast<long>(k), values.end());
-  return values[k];
-}
 
-unsigned char srgb8(double linear) {
-  const double v = std::clamp(linear, 0.0, 1.0);
-  const double s = v <= 0.0031308 ? 12.92 * v : 1.055 * std::pow(v, 1.0 / 2.4) - 0.055;
-  return static_cast<unsigned char>(std::lround(s * 255.0));
-}
 
 // The range of the finite values, ignoring the extreme 0.5 % at each end (as
 // the tone map's 99.5th percentile white), and tightened to Tukey's outer
@@ -68,15 +54,13 @@ std::pair<double, double> robustRange(const std::vector<float>& data) {
 
 void writeToneMappedPng(const std::filesystem::path& path, const Image& image, ToneMap mode) {
   TOFSIM_CHECK(image.channels == 1 || image.channels == 3);
-  const double white = percentile(image.data, 0.995);
+  const double white = detail::whiteLevel(image.data.data(), image.data.size());
   cv::Mat out(image.height, image.width, CV_8UC3);
   for (int32_t y = 0; y < image.height; ++y) {
     for (int32_t x = 0; x < image.width; ++x) {
       for (int c = 0; c < 3; ++c) {
         const double v = image.at(y, x, image.channels == 3 ? c : 0);
-        double mapped = v / white;
-        if (mode == ToneMap::Log) mapped = v > 0.0 ? 1.0 + std::log10(v / white) / 4.0 : 0.0;
-        out.at<cv::Vec3b>(y, x)[2 - c] = srgb8(mapped);  // OpenCV stores BGR
+        out.at<cv::Vec3b>(y, x)[2 - c] = detail::toneMapped8(v, white, mode);  // OpenCV: BGR
       }
     }
   }

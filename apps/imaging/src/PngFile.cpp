@@ -1,5 +1,7 @@
 #include "PngFile.h"
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <map>
 #include <opencv2/imgcodecs.hpp>
@@ -11,6 +13,27 @@
 #include "tofsim/util/Error.h"
 
 namespace tofsim::imaging::detail {
+
+double whiteLevel(const float* values, std::size_t count) {
+  const std::size_t step = std::max<std::size_t>(1, count / (std::size_t{1} << 22));
+  std::vector<float> v;
+  for (std::size_t i = 0; i < count; i += step) {
+    if (values[i] > 0.0f && std::isfinite(values[i])) v.push_back(values[i]);
+  }
+  if (v.empty()) return 1.0;
+  const std::size_t k = std::min(v.size() - 1, static_cast<std::size_t>(0.995 * v.size()));
+  std::nth_element(v.begin(), v.begin() + static_cast<long>(k), v.end());
+  return v[k];
+}
+
+unsigned char toneMapped8(double value, double white, ToneMap mode) {
+  const double mapped = mode == ToneMap::Log
+                            ? (value > 0.0 ? 1.0 + std::log10(value / white) / 4.0 : 0.0)
+                            : value / white;
+  const double v = std::clamp(mapped, 0.0, 1.0);
+  const double s = v <= 0.0031308 ? 12.92 * v : 1.055 * std::pow(v, 1.0 / 2.4) - 0.055;
+  return static_cast<unsigned char>(std::lround(s * 255.0));
+}
 
 void savePng(const std::filesystem::path& path, const cv::Mat& bgr) {
   std::vector<unsigned char> bytes;

@@ -7,7 +7,19 @@
 #include <string>
 #include <vector>
 
+#include "tofsim/imaging/Pictures.h"
+
 namespace tofsim::imaging::detail {
+
+/// The 99.5th percentile of the positive finite values among `count` floats
+/// (from at most ~4M evenly spaced samples: exact enough for a display scale,
+/// without copying a whole volume); 1 when there are none. The white point
+/// of both tone maps.
+double whiteLevel(const float* values, std::size_t count);
+
+/// One linear value as an 8-bit sRGB byte under a tone map: Global maps
+/// `white` to 255 linearly, Log maps four decades below `white` to [0, 255].
+unsigned char toneMapped8(double value, double white, ToneMap mode);
 
 /// Encodes `bgr` as PNG in memory, then writes it atomically (the file
 /// appears under its name only when complete).

@@ -17,28 +17,7 @@ namespace {
 constexpr int32_t kMinSide = 256;
 constexpr int32_t kBand = 24;  // pixels below the image for the time stamp
 
-// The 99.5th percentile of the positive finite values, from at most ~4M
-// evenly spaced samples: exact enough for a display scale, and a 128x128x600
-// volume does not need a 100 MB copy.
-double whiteLevel(const TransientVolume& volume) {
-  const std::size_t n = volume.size();
-  const std::size_t step = std::max<std::size_t>(1, n / (std::size_t{1} << 22));
-  std::vector<float> v;
-  for (std::size_t i = 0; i < n; i += step) {
-    const float x = volume.data()[i];
-    if (x > 0.0f && std::isfinite(x)) v.push_back(x);
-  }
-  if (v.empty()) return 1.0;
-  const std::size_t k = std::min(v.size() - 1, static_cast<std::size_t>(0.995 * v.size()));
-  std::nth_element(v.begin(), v.begin() + static_cast<long>(k), v.end());
-  return v[k];
-}
 
-unsigned char srgb8(double linear) {
-  const double v = std::clamp(linear, 0.0, 1.0);
-  const double s = v <= 0.0031308 ? 12.92 * v : 1.055 * std::pow(v, 1.0 / 2.4) - 0.055;
-  return static_cast<unsigned char>(std::lround(s * 255.0));
-}
 
 cv::Mat frameOf(const TransientVolume& volume, int32_t t, int32_t window, double white,
                 ToneMap mode, const FrameSize& size) {
@@ -51,9 +30,7 @@ cv::Mat frameOf(const TransientVolume& volume, int32_t t, int32_t window, double
       for (int c = 0; c < 3; ++c) {
         double v = 0.0;
         for (int32_t b = first; b <= last; ++b) v += volume.at(y, x, b, channels >= 3 ? c : 0);
-        const double mapped =
-            mode == ToneMap::Log ? (v > 0.0 ? 1.0 + std::log10(v / white) / 4.0 : 0.0) : v / white;
-        small.at<cv::Vec3b>(y, x)[2 - c] = srgb8(mapped);  // OpenCV stores BGR
+        small.at<cv::Vec3b>(y, x)[2 - c] = detail::toneMapped8(v, white, mode);  // OpenCV: BGR
       }
     }
   }
@@ -86,7 +63,7 @@ void writeTransientVideo(const std::filesystem::path& mp4Path, const TransientVo
                          const VideoOptions& options, const std::filesystem::path& pngDirectory) {
   TOFSIM_CHECK(options.stride >= 1 && options.window >= 1);
   const FrameSize size = videoFrameSize(volume.width(), volume.height());
-  const double white = whiteLevel(volume);
+  const double white = detail::whiteLevel(volume.data(), volume.size());
   // OpenCV picks the container from the file name, so the temporary keeps
   // the .mp4 extension.
   std::filesystem::path temp = mp4Path;

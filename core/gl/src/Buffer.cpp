@@ -26,9 +26,11 @@ void Buffer::download(std::size_t offset, std::size_t bytes, void* data) const {
   TOFSIM_GL_CHECK("glGetNamedBufferSubData");
 }
 
-void Buffer::clear() {
-  const GLuint zero = 0;
-  glClearNamedBufferData(id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+void Buffer::clear() { fill(0u); }
+
+void Buffer::fill(uint32_t word) {
+  const GLuint value = word;
+  glClearNamedBufferData(id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &value);
   TOFSIM_GL_CHECK("glClearNamedBufferData");
 }
 

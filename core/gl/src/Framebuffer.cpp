@@ -2,6 +2,7 @@
 
 #include <string>
 
+#include "tofsim/gl/Buffer.h"
 #include "tofsim/gl/Check.h"
 #include "tofsim/gl/Texture.h"
 #include "tofsim/util/Error.h"
@@ -47,6 +48,21 @@ VertexArray::VertexArray() {
   GLuint id = 0;
   glCreateVertexArrays(1, &id);
   handle_ = Handle<detail::deleteVertexArray>(id);
+}
+
+void VertexArray::setVertexBuffer(const Buffer& buffer, std::size_t strideBytes) {
+  glVertexArrayVertexBuffer(id(), 0, buffer.id(), 0, static_cast<GLsizei>(strideBytes));
+}
+
+void VertexArray::setElementBuffer(const Buffer& buffer) {
+  glVertexArrayElementBuffer(id(), buffer.id());
+}
+
+void VertexArray::setFloatAttribute(unsigned index, int components, std::size_t offsetBytes) {
+  glEnableVertexArrayAttrib(id(), index);
+  glVertexArrayAttribFormat(id(), index, components, GL_FLOAT, GL_FALSE,
+                            static_cast<GLuint>(offsetBytes));
+  glVertexArrayAttribBinding(id(), index, 0);
 }
 
 }  // namespace tofsim::gl

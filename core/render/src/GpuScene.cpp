@@ -35,18 +35,11 @@ GpuScene::GpuScene(const scene::Scene& scene) : scene_(scene) {
   indices_ = gl::Buffer(indices.size() * sizeof(uint32_t), indices.data(), 0);
   bytes_ = vertices_.size() + indices_.size();
 
-  const GLuint vao = vertexArray_.id();
-  glVertexArrayVertexBuffer(vao, 0, vertices_.id(), 0, sizeof(Vertex));
-  glVertexArrayElementBuffer(vao, indices_.id());
-  const GLuint offsets[3] = {offsetof(Vertex, position), offsetof(Vertex, normal),
-                             offsetof(Vertex, uv)};
-  const GLint sizes[3] = {3, 3, 2};
-  for (GLuint attribute = 0; attribute < 3; ++attribute) {
-    glEnableVertexArrayAttrib(vao, attribute);
-    glVertexArrayAttribFormat(vao, attribute, sizes[attribute], GL_FLOAT, GL_FALSE,
-                              offsets[attribute]);
-    glVertexArrayAttribBinding(vao, attribute, 0);
-  }
+  vertexArray_.setVertexBuffer(vertices_, sizeof(Vertex));
+  vertexArray_.setElementBuffer(indices_);
+  vertexArray_.setFloatAttribute(0, 3, offsetof(Vertex, position));
+  vertexArray_.setFloatAttribute(1, 3, offsetof(Vertex, normal));
+  vertexArray_.setFloatAttribute(2, 2, offsetof(Vertex, uv));
   for (const scene::Texture& texture : scene.textures) {
     gl::Texture t = gl::Texture::create2D(GL_RGB32F, texture.width, texture.height);
     t.upload2D(GL_RGB, GL_FLOAT, texture.rgb.data());

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "tofsim/gl/Check.h"
+#include "tofsim/gl/Compute.h"
 #include "tofsim/util/Error.h"
 #include "tofsim/util/Interrupt.h"
 
@@ -10,7 +11,7 @@ namespace tofsim::render {
 
 namespace {
 
-constexpr GLuint kGroup = 64;
+constexpr uint32_t kGroup = 64;  // local_size_x of the ISM and gather shaders
 // Loop trips one gather invocation may make per dispatch: llvmpipe silently
 // ends every loop of an invocation after 65535 iterations in total (loop
 // entries count too, so its count runs ahead of ours), so dispatches are sized
@@ -23,14 +24,7 @@ std::vector<std::pair<std::string, std::string>> gatherDefines(const capture::In
   return {};
 }
 
-// Dispatches `threads` invocations of a 64-wide kernel as a 2D grid, since
-// one dimension is limited to 65535 groups.
-void dispatchThreads(std::size_t threads) {
-  const std::size_t groups = (threads + kGroup - 1) / kGroup;
-  const std::size_t x = std::min<std::size_t>(groups, 65535);
-  const std::size_t y = (groups + x - 1) / x;
-  glDispatchCompute(static_cast<GLuint>(x), static_cast<GLuint>(y), 1);
-}
+void dispatchThreads(std::size_t threads) { gl::dispatchThreads(threads, kGroup); }
 
 }  // namespace
 
@@ -49,7 +43,7 @@ IndirectLight::IndirectLight(const TriangleSoup& soup, std::vector<Vpl> vpls,
   areaCdf_ = gl::Buffer(soup.areaCdf.size() * sizeof(float), soup.areaCdf.data(), 0);
   bvh_ = gl::Buffer(soup.bvh.size() * sizeof(BvhNode), soup.bvh.data(), 0);
   vplBuffer_ = gl::Buffer(vpls.size() * sizeof(Vpl), vpls.data(), 0);
-  loopGuard_ = gl::Buffer(sizeof(GLuint));
+  loopGuard_ = gl::Buffer(sizeof(uint32_t));
   loopGuard_.clear();
   fixedBytes_ = corners_.size() + areaCdf_.size() + bvh_.size() + vplBuffer_.size();
   if (settings_.visibility == capture::Visibility::Ism) {
@@ -94,8 +88,7 @@ std::size_t IndirectLight::batchCount() const {
 }
 
 void IndirectLight::buildIsms(std::size_t firstVpl, std::size_t count) {
-  const GLuint empty = 0x7f800000u;  // +inf: no surface seen in this direction
-  glClearNamedBufferData(ism_.id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &empty);
+  ism_.fill(0x7f800000u);  // +inf: no surface seen in this direction
   ism_.bindBase(GL_SHADER_STORAGE_BUFFER, 7);
   const unsigned stride = static_cast<unsigned>(floatsPerVpl_);
   splat_.use();
@@ -158,7 +151,7 @@ void IndirectLight::gatherBatch(std::size_t batch, const GatherTarget& target) {
     done += n;
     throwIfInterrupted();  // Ctrl-C between dispatches, not only between segments
   }
-  GLuint loopLimitHit = 0;
+  uint32_t loopLimitHit = 0;
   loopGuard_.download(0, sizeof loopLimitHit, &loopLimitHit);
   if (loopLimitHit != 0) {
     throw InputError("a gather invocation came near the GL implementation's loop-trip limit "

@@ -15,6 +15,7 @@
 #include "tofsim/capture/DirectLightView.h"
 #include "tofsim/gl/Buffer.h"
 #include "tofsim/gl/Check.h"
+#include "tofsim/gl/Compute.h"
 #include "tofsim/gl/Context.h"
 #include "tofsim/util/Error.h"
 
@@ -25,7 +26,7 @@ using namespace capture;  // the job description types
 namespace {
 
 constexpr int kChannels = 3;
-constexpr GLuint kWorkGroupSize = 64;  // local_size_x of the gather shaders
+constexpr uint32_t kWorkGroupSize = 64;  // local_size_x of the gather shaders
 
 // Everything that can be checked against the GL implementation's limits
 // before any GL work; each message names the config key to change.
@@ -205,7 +206,7 @@ RenderResult TransientRenderer::render(const RenderJob& job, SegmentSink& sink,
     shadowMap.bind(directGather);
     directGather.set("uFirstPixel", static_cast<unsigned>(first));
     directGather.set("uPixelCount", static_cast<unsigned>(count));
-    glDispatchCompute(static_cast<GLuint>((count + kWorkGroupSize - 1) / kWorkGroupSize), 1, 1);
+    gl::dispatchThreads(count, kWorkGroupSize);
     glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
     TOFSIM_GL_CHECK("direct gather");
     std::size_t done = s * (1 + batches) + 1;

@@ -2,6 +2,7 @@
 // Immutable-storage GL buffer (glNamedBufferStorage), move-only.
 
 #include <cstddef>
+#include <cstdint>
 
 #include "tofsim/gl/Handle.h"
 
@@ -21,6 +22,8 @@ class Buffer {
   void download(std::size_t offset, std::size_t bytes, void* data) const;
   /// Sets every 32-bit word to zero.
   void clear();
+  /// Sets every 32-bit word to `word` (e.g. the bits of +inf).
+  void fill(uint32_t word);
   void bindBase(GLenum target, GLuint index) const;
   void bindRange(GLenum target, GLuint index, std::size_t offset, std::size_t bytes) const;
 

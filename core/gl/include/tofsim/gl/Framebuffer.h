@@ -2,6 +2,7 @@
 // A framebuffer object with colour attachments and a depth attachment,
 // move-only. Completeness is checked when finished.
 
+#include <cstddef>
 #include <vector>
 
 #include "tofsim/gl/Handle.h"
@@ -28,11 +29,18 @@ class Framebuffer {
   std::vector<GLenum> drawBuffers_;
 };
 
+class Buffer;
+
 class VertexArray {
  public:
   VertexArray();
   GLuint id() const { return handle_.id(); }
   void bind() const { glBindVertexArray(id()); }
+  /// Interleaved vertices from `buffer` at binding 0, `strideBytes` apart.
+  void setVertexBuffer(const Buffer& buffer, std::size_t strideBytes);
+  void setElementBuffer(const Buffer& buffer);
+  /// Float attribute `index` of `components` floats at `offsetBytes` in a vertex.
+  void setFloatAttribute(unsigned index, int components, std::size_t offsetBytes);
 
  private:
   Handle<detail::deleteVertexArray> handle_;
