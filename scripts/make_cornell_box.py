@@ -23,12 +23,10 @@ but it keeps the blocks watertight). 5 x 2 + 2 x 6 x 2 = 34 triangles.
 Standard library only. Usage: python3 scripts/make_cornell_box.py [out.gltf]
 """
 
-import base64
-import json
 import math
-import os
 import struct
-import sys
+
+from gltf_common import embed_buffer, write_gltf
 
 MM = 0.001  # metres per millimetre
 
@@ -165,20 +163,12 @@ def build_gltf():
                           # 180 deg about +y: the camera's -Z looks along world +z.
                           "rotation": [0.0, 1.0, 0.0, 0.0]})
     gltf["scenes"][0]["nodes"] = list(range(len(gltf["nodes"])))
-    gltf["buffers"] = [{"byteLength": len(blob), "uri": "data:application/octet-stream;base64," +
-                        base64.b64encode(bytes(blob)).decode("ascii")}]
+    embed_buffer(gltf, blob)
     return gltf
 
 
 def main():
-    here = os.path.dirname(os.path.abspath(__file__))
-    out = sys.argv[1] if len(sys.argv) > 1 else os.path.join(here, "..", "configs", "scenes", "cornell_box.gltf")
-    text = json.dumps(build_gltf(), indent=1) + "\n"
-    tmp = out + ".tmp"
-    with open(tmp, "w", encoding="ascii") as f:
-        f.write(text)
-    os.replace(tmp, out)
-    print("wrote", os.path.normpath(out))
+    write_gltf(build_gltf(), "cornell_box.gltf")
 
 
 if __name__ == "__main__":

@@ -16,12 +16,10 @@ vertical fov. 6 triangles.
 Standard library only. Usage: python3 scripts/make_corner.py [out.gltf]
 """
 
-import base64
-import json
 import math
-import os
 import struct
-import sys
+
+from gltf_common import embed_buffer, write_gltf
 
 MATERIALS = [("wall_grey", (0.7, 0.7, 0.7)), ("floor_grey", (0.5, 0.5, 0.5))]
 
@@ -104,20 +102,12 @@ def build_gltf():
     gltf["nodes"].append({"name": "corner_camera", "camera": 0, "translation": list(CAMERA_POS),
                           "rotation": look_rotation(sub(CAMERA_TARGET, CAMERA_POS))})
     gltf["scenes"][0]["nodes"] = list(range(len(gltf["nodes"])))
-    gltf["buffers"] = [{"byteLength": len(blob), "uri": "data:application/octet-stream;base64," +
-                        base64.b64encode(bytes(blob)).decode("ascii")}]
+    embed_buffer(gltf, blob)
     return gltf
 
 
 def main():
-    here = os.path.dirname(os.path.abspath(__file__))
-    out = sys.argv[1] if len(sys.argv) > 1 else os.path.join(here, "..", "configs", "scenes", "corner.gltf")
-    text = json.dumps(build_gltf(), indent=1) + "\n"
-    tmp = out + ".tmp"
-    with open(tmp, "w", encoding="ascii") as f:
-        f.write(text)
-    os.replace(tmp, out)
-    print("wrote", os.path.normpath(out))
+    write_gltf(build_gltf(), "corner.gltf")
 
 
 if __name__ == "__main__":
