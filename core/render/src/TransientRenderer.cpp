@@ -157,9 +157,7 @@ RenderResult TransientRenderer::render(const RenderJob& job, SegmentSink& sink,
                      "need (" + std::to_string(fixedBytes) + " bytes) before any volume "
                      "segment; raise render.memory_budget");
   }
-  std::size_t budget = settings.memory_budget_bytes > fixedBytes
-                           ? settings.memory_budget_bytes - fixedBytes
-                           : 0;
+  std::size_t budget = settings.memory_budget_bytes - fixedBytes;  // > 0, checked above
   if (indirectLight) {
     // ISM batches get what all ISMs need, up to half of what is left; the
     // volume segments get the rest.
