@@ -14,7 +14,7 @@ layout(binding = 1) uniform sampler2D uGNormal;
 layout(binding = 2) uniform sampler2D uGAlbedo;
 
 layout(std430, binding = 0) buffer DirectVolume { float direct[]; };
-layout(std430, binding = 2) buffer OutsideAxis { float outside[]; };
+layout(std430, binding = 2) buffer OutsideAxis { float outside[]; };  // [2 * pixel]: before, [2 * pixel + 1]: after
 
 uniform uint uFirstPixel;
 uniform uint uPixelCount;
@@ -50,7 +50,7 @@ void main() {
   float path_m = uIndexOfRefraction * (dLight + dCamera);
   int bin = int(floor((path_m - uStart_m) / uBinWidth_m));
   if (bin < 0 || bin >= uBins) {
-    outside[local] += radiance.r + radiance.g + radiance.b;
+    outside[2u * local + (bin < 0 ? 0u : 1u)] += radiance.r + radiance.g + radiance.b;
     return;
   }
   uint base = (local * uint(uBins) + uint(bin)) * 3u;

@@ -22,7 +22,7 @@ layout(binding = 1) uniform sampler2D uGNormal;
 layout(binding = 2) uniform sampler2D uGAlbedo;
 
 layout(std430, binding = 1) buffer IndirectVolume { float indirect[]; };
-layout(std430, binding = 2) buffer OutsideAxis { float outside[]; };
+layout(std430, binding = 2) buffer OutsideAxis { float outside[]; };  // [2 * pixel]: before, [2 * pixel + 1]: after
 
 uniform uint uFirstPixel;
 uniform uint uPixelCount;
@@ -73,7 +73,8 @@ void main() {
   vec3 brdf = texelFetch(uGAlbedo, xy, 0).rgb / PI;
   float cameraPath = uCameraUnwarp != 0 ? 0.0 : uIndexOfRefraction * length(x - uCameraPosition_world);
   uint base = local * uint(uBins);
-  float lost = 0.0;
+  float lostBefore = 0.0;
+  float lostAfter = 0.0;
   uint iterations = 0u;
   for (uint k = 0u; k < uVplCount; ++k) {
     ++iterations;
@@ -93,7 +94,12 @@ void main() {
     float path_m = vpl.positionPath.w + uIndexOfRefraction * dist + cameraPath;
     int bin = int(floor((path_m - uStart_m) / uBinWidth_m));
     if (bin < 0 || bin >= uBins) {
-      lost += radiance.r + radiance.g + radiance.b;
+      float value = radiance.r + radiance.g + radiance.b;
+      if (bin < 0) {
+        lostBefore += value;
+      } else {
+        lostAfter += value;
+      }
       continue;
     }
     uint i = (base + uint(bin)) * 3u;
@@ -101,6 +107,7 @@ void main() {
     indirect[i + 1u] += radiance.g;
     indirect[i + 2u] += radiance.b;
   }
-  outside[local] += lost;
+  outside[2u * local] += lostBefore;
+  outside[2u * local + 1u] += lostAfter;
   if (iterations >= kLoopTripLimit) atomicOr(loopLimitHit, 1u);
 }

@@ -71,7 +71,7 @@ TEST(ReferenceClosedFormTest, SteadyRadianceFollowsCosineOverDistanceSquared) {
       }
     }
   }
-  EXPECT_EQ(result.energyOutsideAxis, 0.0);
+  EXPECT_EQ(result.offAxis.total(), 0.0);
 }
 
 TEST(ReferenceClosedFormTest, CameraUnwarpShiftsPeaksByTheCameraDelay) {
@@ -205,7 +205,21 @@ TEST(ReferenceClosedFormTest, EnergyOffTheAxisIsCountedNotBinned) {
   RenderResult result;
   const VolumeCollector early = test::renderReference(s.job, directOnly(), &result);
   for (float v : early.direct.values()) ASSERT_EQ(v, 0.0f);
-  EXPECT_NEAR(result.energyOutsideAxis, total, 1e-6 * total);
+  EXPECT_NEAR(result.offAxis.after, total, 1e-6 * total);
+  EXPECT_EQ(result.offAxis.before, 0.0);
+}
+
+TEST(ReferenceClosedFormTest, LightBeforeTheAxisIsCountedApartFromLightAfterIt) {
+  test::PlaneJob s;
+  const Image full = steadyImage(test::renderReference(s.job, directOnly()).direct);
+  double total = 0.0;
+  for (float v : full.data) total += v;
+  // An axis that starts after every return: all of the light is early.
+  s.job.settings.time = TimeAxis{1e-6, 1e-11, 100};
+  RenderResult result;
+  test::renderReference(s.job, directOnly(), &result);
+  EXPECT_NEAR(result.offAxis.before, total, 1e-6 * total);
+  EXPECT_EQ(result.offAxis.after, 0.0);
 }
 
 TEST(ReferenceClosedFormTest, SpotLightProfileMatchesTheLightModel) {

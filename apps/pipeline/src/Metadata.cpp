@@ -65,7 +65,9 @@ std::string transientMetadataJson(const config::RunConfig& config, const capture
                 {"vpls", result.vpls},
                 {"vpl_batches", result.vplBatches},
                 {"peak_gpu_bytes", result.peakGpuBytes},
-                {"energy_outside_time_axis", result.energyOutsideAxis},
+                {"energy_outside_time_axis", result.offAxis.total()},
+                {"energy_before_axis", result.offAxis.before},
+                {"energy_after_axis", result.offAxis.after},
                 {"rejected_non_finite_values", result.nonFiniteRejected}};
   return j.dump(2) + "\n";
 }

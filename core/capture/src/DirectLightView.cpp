@@ -38,13 +38,17 @@ DirectLightView directLightView(const RenderJob& job, const FirstSurface& firstS
   return view;
 }
 
-double DirectLightView::addTo(std::size_t firstPixel, std::size_t pixelCount, const TimeAxis& axis,
+AxisLoss DirectLightView::addTo(std::size_t firstPixel, std::size_t pixelCount, const TimeAxis& axis,
                               int channels, float* direct) const {
-  if (!visible || pixel < firstPixel || pixel >= firstPixel + pixelCount) return 0.0;
-  if (bin < 0) return static_cast<double>(radiance.r) + radiance.g + radiance.b;
+  AxisLoss lost;
+  if (!visible || pixel < firstPixel || pixel >= firstPixel + pixelCount) return lost;
+  if (bin < 0) {
+    lost.add(bin, static_cast<double>(radiance.r) + radiance.g + radiance.b);
+    return lost;
+  }
   float* out = direct + ((pixel - firstPixel) * axis.bins + bin) * channels;
   for (int c = 0; c < channels; ++c) out[c] += radiance[c];
-  return 0.0;
+  return lost;
 }
 
 }  // namespace tofsim::capture

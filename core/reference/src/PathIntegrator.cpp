@@ -60,7 +60,7 @@ void PathIntegrator::renderPixel(int32_t x, int32_t y, PixelOutput& out,
   if (direct.valid) {
     const int32_t b = binOfPath(direct.path_m + toCamera_m);
     if (b < 0) {
-      out.outsideAxis += direct.value.r + direct.value.g + direct.value.b;
+      out.offAxis.add(b, direct.value.r + direct.value.g + direct.value.b);
     } else {
       float* bin = out.direct + static_cast<std::size_t>(b) * kChannels;
       for (int c = 0; c < kChannels; ++c) bin[c] = static_cast<float>(direct.value[c]);
@@ -71,7 +71,7 @@ void PathIntegrator::renderPixel(int32_t x, int32_t y, PixelOutput& out,
   // Bounces 2..n: fixed-depth cosine-sampled paths with next-event estimation.
   // Lambertian f = albedo / pi and pdf = cos / pi: the throughput gains albedo.
   scratch.assign(floats, 0.0);
-  double outside = 0.0;
+  AxisLoss outside;
   Pcg32 rng = Pcg32::forUnit(job_.settings.seed,
                              static_cast<uint64_t>(y) * static_cast<uint64_t>(camera.width) + x);
   for (int32_t s = 0; s < samplesPerPixel_; ++s) {
@@ -91,7 +91,7 @@ void PathIntegrator::renderPixel(int32_t x, int32_t y, PixelOutput& out,
         const glm::dvec3 value = throughput * reflected.value;
         const int32_t b = binOfPath(reflected.path_m + fromCamera_m);
         if (b < 0) {
-          outside += value.r + value.g + value.b;
+          outside.add(b, value.r + value.g + value.b);
         } else {
           double* bin = scratch.data() + static_cast<std::size_t>(b) * kChannels;
           for (int c = 0; c < kChannels; ++c) bin[c] += value[c];
@@ -103,7 +103,8 @@ void PathIntegrator::renderPixel(int32_t x, int32_t y, PixelOutput& out,
   }
   const double norm = 1.0 / samplesPerPixel_;
   for (std::size_t i = 0; i < floats; ++i) out.indirect[i] = static_cast<float>(scratch[i] * norm);
-  out.outsideAxis += outside * norm;
+  out.offAxis.before += outside.before * norm;
+  out.offAxis.after += outside.after * norm;
 }
 
 }  // namespace tofsim::reference

@@ -15,7 +15,7 @@ struct PixelOutput {
   float* direct = nullptr;    ///< T * 3 floats, zeroed by the caller
   float* indirect = nullptr;  ///< T * 3 floats, zeroed by the caller
   float depth_m = 0.0f;       ///< camera-to-surface distance; 0 when no surface
-  double outsideAxis = 0.0;   ///< radiance (summed over channels) off the time axis
+  AxisLoss offAxis;           ///< radiance (summed over channels) off the time axis
 };
 
 class PathIntegrator {

@@ -94,7 +94,7 @@ RenderResult ReferenceRenderer::render(const RenderJob& job, SegmentSink& sink,
   const std::size_t segmentCount = static_cast<std::size_t>((camera.height + rows - 1) / rows);
   std::vector<float> direct(pixelFloats * camera.width * rows);
   std::vector<float> indirect(direct.size());
-  std::vector<double> outside(static_cast<std::size_t>(camera.width) * rows);
+  std::vector<AxisLoss> outside(static_cast<std::size_t>(camera.width) * rows);
 
   for (std::size_t s = 0; s < segmentCount; ++s) {
     const int32_t firstRow = static_cast<int32_t>(s) * rows;
@@ -116,7 +116,7 @@ RenderResult ReferenceRenderer::render(const RenderJob& job, SegmentSink& sink,
           out.indirect = indirect.data() + local * pixelFloats;
           integrator.renderPixel(x, firstRow + r, out, scratch);
           result.depth_m.at(firstRow + r, x, 0) = out.depth_m;
-          outside[local] = out.outsideAxis;
+          outside[local] = out.offAxis;
         }
       }
     };
@@ -128,9 +128,8 @@ RenderResult ReferenceRenderer::render(const RenderJob& job, SegmentSink& sink,
 
     const std::size_t firstPixel = static_cast<std::size_t>(firstRow) * camera.width;
     // Summed in pixel order, so the total is independent of the thread count.
-    for (std::size_t i = 0; i < pixelCount; ++i) result.energyOutsideAxis += outside[i];
-    result.energyOutsideAxis +=
-        lightView.addTo(firstPixel, pixelCount, axis, kChannels, direct.data());
+    for (std::size_t i = 0; i < pixelCount; ++i) result.offAxis += outside[i];
+    result.offAxis += lightView.addTo(firstPixel, pixelCount, axis, kChannels, direct.data());
 
     Segment segment;
     segment.firstPixel = firstPixel;

@@ -182,8 +182,10 @@ RenderResult TransientRenderer::render(const RenderJob& job, SegmentSink& sink,
   const std::size_t segmentFloats = plan.pixelsPerSegment * floatsPerPixel;
   gl::Buffer directBuffer(segmentFloats * sizeof(float));
   gl::Buffer indirectBuffer(segmentFloats * sizeof(float));
-  gl::Buffer outsideBuffer(plan.pixelsPerSegment * sizeof(float));
-  std::vector<float> direct(segmentFloats), indirect(segmentFloats), outside(plan.pixelsPerSegment);
+  // Per pixel: light before the axis, light after it.
+  gl::Buffer outsideBuffer(plan.pixelsPerSegment * 2 * sizeof(float));
+  std::vector<float> direct(segmentFloats), indirect(segmentFloats),
+      outside(plan.pixelsPerSegment * 2);
 
   const DirectLightView lightView = directLightView(job, positions);
   for (std::size_t s = 0; s < plan.segmentCount; ++s) {
@@ -195,7 +197,7 @@ RenderResult TransientRenderer::render(const RenderJob& job, SegmentSink& sink,
     outsideBuffer.clear();
     directBuffer.bindRange(GL_SHADER_STORAGE_BUFFER, 0, 0, floats * sizeof(float));
     indirectBuffer.bindRange(GL_SHADER_STORAGE_BUFFER, 1, 0, floats * sizeof(float));
-    outsideBuffer.bindRange(GL_SHADER_STORAGE_BUFFER, 2, 0, count * sizeof(float));
+    outsideBuffer.bindRange(GL_SHADER_STORAGE_BUFFER, 2, 0, count * 2 * sizeof(float));
 
     gbuffer.position.bindUnit(0);
     gbuffer.normal.bindUnit(1);
@@ -219,9 +221,12 @@ RenderResult TransientRenderer::render(const RenderJob& job, SegmentSink& sink,
 
     directBuffer.download(0, floats * sizeof(float), direct.data());
     indirectBuffer.download(0, floats * sizeof(float), indirect.data());
-    outsideBuffer.download(0, count * sizeof(float), outside.data());
-    for (std::size_t i = 0; i < count; ++i) result.energyOutsideAxis += outside[i];
-    result.energyOutsideAxis += lightView.addTo(first, count, axis, kChannels, direct.data());
+    outsideBuffer.download(0, count * 2 * sizeof(float), outside.data());
+    for (std::size_t i = 0; i < count; ++i) {
+      result.offAxis.before += outside[2 * i];
+      result.offAxis.after += outside[2 * i + 1];
+    }
+    result.offAxis += lightView.addTo(first, count, axis, kChannels, direct.data());
 
     Segment segment;
     segment.firstPixel = first;

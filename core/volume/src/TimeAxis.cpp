@@ -8,7 +8,8 @@ namespace tofsim {
 
 int32_t TimeAxis::binOf(double t_s) const {
   const double f = std::floor((t_s - start_s) / bin_width_s);
-  if (!(f >= 0.0) || f >= static_cast<double>(bins)) return -1;
+  if (f >= static_cast<double>(bins)) return kAfterAxis;
+  if (!(f >= 0.0)) return kBeforeAxis;
   return static_cast<int32_t>(f);
 }
 

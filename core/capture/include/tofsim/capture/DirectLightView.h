@@ -15,12 +15,12 @@ namespace tofsim::capture {
 struct DirectLightView {
   bool visible = false;
   std::size_t pixel = 0;  ///< y * width + x
-  int32_t bin = -1;       ///< -1 when outside the time axis
+  int32_t bin = kBeforeAxis;  ///< TimeAxis::binOf of its arrival (negative: off the axis)
   glm::vec3 radiance{0.0f};
 
   /// Adds the term to a segment's direct buffer when the pixel is in it;
-  /// returns the radiance (summed over channels) that fell outside the axis.
-  double addTo(std::size_t firstPixel, std::size_t pixelCount, const TimeAxis& axis, int channels,
+  /// returns the radiance (summed over channels) that fell off the axis.
+  AxisLoss addTo(std::size_t firstPixel, std::size_t pixelCount, const TimeAxis& axis, int channels,
                float* direct) const;
 };
 

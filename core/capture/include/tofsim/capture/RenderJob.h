@@ -29,9 +29,9 @@ struct RenderResult {
   std::size_t vplBatches = 0;
   std::size_t peakGpuBytes = 0;
   double seconds = 0.0;
-  /// Radiance that arrived outside the time axis (summed over channels); it is
-  /// in neither the volume nor the steady image.
-  double energyOutsideAxis = 0.0;
+  /// Radiance that arrived before the first or after the last bin (summed over
+  /// channels); it is in neither the volume nor the steady image.
+  AxisLoss offAxis;
   /// Volume values that were NaN or infinite (degenerate geometry, overflow)
   /// and were written as 0 instead; counted by the output stage.
   std::size_t nonFiniteRejected = 0;
