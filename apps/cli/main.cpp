@@ -1,10 +1,11 @@
 // tofsim: the command-line interface. Parses arguments, calls one library
 // function per subcommand and maps errors to exit codes:
 //   0 success, 1 bad input or environment (one line on stderr), 2 usage,
-//   130 / 143 interrupted by SIGINT / SIGTERM (partial outputs removed).
+//   130 / 143 interrupted by SIGINT / SIGTERM (earlier results kept unchanged).
 
 #include <CLI/CLI.hpp>
 #include <cstdio>
+#include <new>
 #include <string>
 #include <vector>
 
@@ -181,6 +182,11 @@ int main(int argc, char** argv) {
     return e.exitCode();
   } catch (const tofsim::InputError& e) {
     std::fprintf(stderr, "tofsim: error: %s\n", e.what());
+    return 1;
+  } catch (const std::bad_alloc&) {
+    std::fprintf(stderr,
+                 "tofsim: error: out of memory (the video, frames and sensors hold the whole "
+                 "volume in host memory: lower camera.resolution or time.bins)\n");
     return 1;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "tofsim: error: %s\n", e.what());

@@ -4,10 +4,13 @@
 
 #include <sys/wait.h>
 
+#include <algorithm>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <vector>
 
 namespace tofsim::test {
 
@@ -36,5 +39,28 @@ inline std::string fileBytes(const std::string& path) {
 /// The shipped demo config.
 inline const std::string kCornellConfig =
     std::string(TOFSIM_SOURCE_DIR) + "/configs/cornell_box.yaml";
+
+}  // namespace tofsim::test
+
+namespace tofsim::test {
+
+/// The files under `dir` (relative paths, recursive) that a user sees as
+/// results: dot entries (the folder's lock, staging folders) are skipped.
+inline std::vector<std::string> visibleFiles(const std::filesystem::path& dir) {
+  std::vector<std::string> files;
+  if (!std::filesystem::exists(dir)) return files;
+  for (auto it = std::filesystem::recursive_directory_iterator(dir);
+       it != std::filesystem::recursive_directory_iterator(); ++it) {
+    if (it->path().filename().string().rfind('.', 0) == 0) {
+      if (it->is_directory()) it.disable_recursion_pending();
+      continue;
+    }
+    if (it->is_regular_file()) {
+      files.push_back(std::filesystem::relative(it->path(), dir).generic_string());
+    }
+  }
+  std::sort(files.begin(), files.end());
+  return files;
+}
 
 }  // namespace tofsim::test

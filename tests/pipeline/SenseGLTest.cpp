@@ -76,7 +76,7 @@ TEST_F(SenseGLTest, RenderWritesSensorOutputsAndSenseReproducesThem) {
         << f;
   }
   // Only the sensors' files: sense does not rewrite the render's outputs.
-  EXPECT_EQ(filesUnder(again).size(), rendered.size());
+  EXPECT_EQ(test::visibleFiles(again).size(), rendered.size());
 }
 
 TEST_F(SenseGLTest, BadSensorValueFailsWithLocatedError) {

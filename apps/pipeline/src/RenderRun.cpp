@@ -7,6 +7,7 @@
 #include "tofsim/io/Exr.h"
 #include "tofsim/pipeline/Capture.h"
 #include "tofsim/pipeline/Metadata.h"
+#include "tofsim/pipeline/OutputEstimate.h"
 #include "tofsim/pipeline/OutputSink.h"
 #include "tofsim/pipeline/Progress.h"
 #include "tofsim/pipeline/SenseRun.h"
@@ -16,6 +17,7 @@
 #include "tofsim/util/AtomicFile.h"
 #include "tofsim/util/Error.h"
 #include "tofsim/util/Interrupt.h"
+#include "tofsim/util/StagedFolder.h"
 
 namespace tofsim::pipeline {
 
@@ -78,22 +80,14 @@ void writeVideo(const std::filesystem::path& dir, const config::OutputConfig& ou
 }  // namespace
 
 namespace {
-// Checked before any rendering, so that a bad -o fails in a second with a
-// clear message rather than after the render. Returns whether it was created.
-bool prepareOutputDirectory(const std::filesystem::path& dir) {
-  std::error_code ec;
-  if (std::filesystem::exists(dir, ec) && !std::filesystem::is_directory(dir, ec)) {
-    throw InputError(FileLoc{dir.string()}, "", "output directory exists and is not a directory");
-  }
-  const bool created = !std::filesystem::exists(dir, ec);
-  std::filesystem::create_directories(dir, ec);
-  if (ec) throw InputError(FileLoc{dir.string()}, "", "cannot create output directory: " + ec.message());
-  return created;
-}
-
 void writeOutputs(const config::RunConfig& config, const capture::RenderJob& job,
-                  const RunOptions& options, Progress& progress, RunSummary& summary);
-}
+                  const RunOptions& options, const std::filesystem::path& dir, Progress& progress,
+                  RunSummary& summary);
+
+// A batch's log.txt is written by the batch while this run goes: it belongs to
+// the folder, not to any one set of results.
+bool keepAcrossRenders(const std::string& name) { return name == "log.txt"; }
+}  // namespace
 
 RunSummary runRender(const config::RunConfig& config, const RunOptions& options) {
   Progress progress("render", options.quiet);
@@ -105,23 +99,20 @@ RunSummary runRender(const config::RunConfig& config, const RunOptions& options)
   RunSummary summary;
   summary.outputDirectory =
       options.outputDirectory.empty() ? config.output.directory : options.outputDirectory;
-  const std::filesystem::path& dir = summary.outputDirectory;
-  const bool createdDirectory = prepareOutputDirectory(dir);
-  try {
-    writeOutputs(config, job, options, progress, summary);
-  } catch (const Interrupted&) {
-    // An interrupted run leaves no outputs of its own, complete or not, so
-    // the folder never mixes this run's files with an earlier run's.
-    std::error_code ec;
-    for (const std::string& f : summary.files) std::filesystem::remove(dir / f, ec);
-    if (createdDirectory) std::filesystem::remove_all(dir, ec);
-    throw;
-  } catch (...) {
-    // Files are renamed into place only when complete, so a failed run leaves
-    // at most what earlier runs wrote; a folder this run made is removed.
-    std::error_code ec;
-    if (createdDirectory && std::filesystem::is_empty(dir, ec)) std::filesystem::remove(dir, ec);
-    throw;
+  // Checked and locked before any rendering, so that a bad -o or a second
+  // writer fails in a second. Everything is written into a staging folder
+  // that replaces the earlier results only when complete: an error, Ctrl-C or
+  // kill -9 before that leaves the earlier set untouched.
+  StagedFolder folder(summary.outputDirectory, keepAcrossRenders);
+  checkOutputsFit(estimateOutputs(config), config, folder.staging());
+  writeOutputs(config, job, options, folder.staging(), progress, summary);
+  // A signal that came during the last step still means "stop": the earlier
+  // results stay rather than being replaced by a run the user abandoned.
+  throwIfInterrupted();
+  if (!folder.commit()) {
+    progress.message("note: " + summary.outputDirectory.string() +
+                     " could not be swapped atomically (mount point or file system without "
+                     "RENAME_EXCHANGE); its files were replaced one by one");
   }
   return summary;
 }
@@ -145,10 +136,10 @@ capture::RenderResult renderVolume(const config::RunConfig& config, const captur
   return render::TransientRenderer(context).render(job, sink, progress);
 }
 
+// Writes every output into `dir`, the staging folder.
 void writeOutputs(const config::RunConfig& config, const capture::RenderJob& job,
-                  const RunOptions& options, Progress& progress, RunSummary& summary) {
-  const std::filesystem::path& dir = summary.outputDirectory;
-
+                  const RunOptions& options, const std::filesystem::path& dir, Progress& progress,
+                  RunSummary& summary) {
   const config::OutputConfig& out = config.output;
   // The sensors see what the render saves (the total volume, plus the direct
   // component and the depth when the output writes them), so `tofsim sense`
@@ -157,7 +148,7 @@ void writeOutputs(const config::RunConfig& config, const capture::RenderJob& job
   OutputSink sink(dir, out, job.camera.width, job.camera.height, job.settings.time,
                   out.frames || out.video || out.frame_pngs || sensing, sensing && out.direct);
   const capture::ProgressCallback onProgress = [&](std::size_t done, std::size_t total,
-                                                    const std::string& what) {
+                                                   const std::string& what) {
     progress.update(done, total, what);
   };
   summary.result = renderVolume(config, job, options, sink, onProgress, summary.device);
@@ -165,7 +156,8 @@ void writeOutputs(const config::RunConfig& config, const capture::RenderJob& job
   progress.message("device: " + summary.device);
   if (summary.result.nonFiniteRejected > 0) {
     // Shown even with -q: the outputs differ from what the renderer produced.
-    std::fprintf(stderr, "tofsim: warning: %zu NaN/infinite volume values written as 0 "
+    std::fprintf(stderr,
+                 "tofsim: warning: %zu NaN/infinite volume values written as 0 "
                  "(transient.json stats.rejected_non_finite_values)\n",
                  summary.result.nonFiniteRejected);
   }

@@ -8,6 +8,7 @@
 #include "tofsim/sensors/RunSensor.h"
 #include "tofsim/util/Error.h"
 #include "tofsim/util/Interrupt.h"
+#include "tofsim/util/StagedFolder.h"
 
 namespace tofsim::pipeline {
 
@@ -85,7 +86,16 @@ SenseSummary runSense(const config::RunConfig& config, const SenseOptions& optio
   volumes.volume = &saved.volume;
   volumes.directOnly = saved.directOnly ? &*saved.directOnly : nullptr;
   volumes.depth_m = saved.depth_m ? &*saved.depth_m : nullptr;
-  summary.files = runConfiguredSensors(config, volumes, summary.outputDirectory, progress);
+  // The folder's other files (the render's) stay; its sensors/ is replaced as
+  // a whole, atomically, so sensors no longer configured go and an interrupted
+  // run leaves the earlier sensors/. A batch manifest no longer describes the
+  // folder once its sensors change, so it goes too (the run is redone).
+  StagedFolder folder(summary.outputDirectory, [](const std::string& name) {
+    return name != "sensors" && name != "manifest.json";
+  });
+  summary.files = runConfiguredSensors(config, volumes, folder.staging(), progress);
+  throwIfInterrupted();
+  folder.commit();
   summary.seconds = secondsSince(start);
   return summary;
 }

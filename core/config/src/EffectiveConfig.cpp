@@ -93,6 +93,7 @@ YAML::Node outputNode(const OutputConfig& o) {
   n["video_stride"] = o.video_stride;
   n["video_window"] = o.video_window;
   n["video_fps"] = o.video_fps;
+  n["max_bytes"] = std::to_string(o.max_bytes) + " B";
   YAML::Node components(YAML::NodeType::Sequence);
   if (o.direct) components.push_back("direct");
   if (o.indirect) components.push_back("indirect");

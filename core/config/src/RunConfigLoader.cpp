@@ -173,6 +173,12 @@ void parseOutput(const ConfigNode& node, OutputConfig& o) {
       static_cast<int32_t>(intInRange(node, "video_window", o.video_window, 1, 1 << 20));
   o.video_fps = node.getDouble("video_fps", o.video_fps);
   requirePositive(node, "video_fps", o.video_fps);
+  const double maxBytes = node.getBytes("max_bytes", static_cast<double>(o.max_bytes));
+  constexpr double kMaxOutputBytes = 0x1p60;  // 1 EiB: keeps the conversion defined
+  if (!(maxBytes >= 1.0 && maxBytes <= kMaxOutputBytes)) {
+    node.failKey("max_bytes", "must be between 1 B and 1 EiB");
+  }
+  o.max_bytes = static_cast<std::uintmax_t>(maxBytes);
   if (const auto components = node.optionalChild("components")) {
     for (const ConfigNode& c : components->elements()) {
       const std::string name = c.asString();

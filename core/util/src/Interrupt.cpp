@@ -27,7 +27,7 @@ std::string signalName(int signalNumber) {
 
 Interrupted::Interrupted(int signalNumber)
     : std::runtime_error("interrupted by " + signalName(signalNumber) +
-                         "; partial outputs were removed"),
+                         "; this run's partial outputs were removed, earlier results are unchanged"),
       signal_(signalNumber) {}
 
 void installInterruptHandlers() {

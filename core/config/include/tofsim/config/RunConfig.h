@@ -3,6 +3,7 @@
 // loadRunConfig (the only code that reads YAML); consumed by the pipeline.
 // Key names, units and defaults are documented in configs/README.md.
 
+#include <cstdint>
 #include <filesystem>
 #include <string>
 #include <utility>
@@ -58,6 +59,8 @@ struct OutputConfig {
   int32_t video_stride = 1;  ///< bins per video frame, >= 1
   int32_t video_window = 1;  ///< bins summed into each frame (exposure), >= 1
   double video_fps = 30.0;   ///< frames per second of the video, > 0
+  /// A run whose outputs would exceed this many bytes fails before rendering.
+  std::uintmax_t max_bytes = std::uintmax_t(64) << 30;
 };
 
 struct RunConfig {

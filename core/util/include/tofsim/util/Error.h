@@ -34,16 +34,17 @@ class InputError : public std::runtime_error {
   std::string key_;
 };
 
-[[noreturn]] void checkFailed(const char* expr, const char* file, int line, const std::string& detail);
+[[noreturn]] void checkFailed(const char* expr, const char* file, int line,
+                              const std::string& detail);
 
 }  // namespace tofsim
 
-#define TOFSIM_CHECK(cond)                                              \
-  do {                                                                  \
+#define TOFSIM_CHECK(cond)                                             \
+  do {                                                                 \
     if (!(cond)) ::tofsim::checkFailed(#cond, __FILE__, __LINE__, {}); \
   } while (0)
 
-#define TOFSIM_CHECK_MSG(cond, msg)                                      \
-  do {                                                                   \
+#define TOFSIM_CHECK_MSG(cond, msg)                                       \
+  do {                                                                    \
     if (!(cond)) ::tofsim::checkFailed(#cond, __FILE__, __LINE__, (msg)); \
   } while (0)
