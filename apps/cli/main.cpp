@@ -13,6 +13,7 @@
 #include "tofsim/pipeline/BatchRun.h"
 #include "tofsim/pipeline/CompareRun.h"
 #include "tofsim/pipeline/RenderRun.h"
+#include "tofsim/pipeline/RunContentKey.h"
 #include "tofsim/pipeline/SceneInfo.h"
 #include "tofsim/pipeline/SenseRun.h"
 #include "tofsim/pipeline/Version.h"
@@ -31,7 +32,8 @@ std::vector<config::Override> parseOverrides(const std::vector<std::string>& set
 
 int runRenderCommand(const std::string& configPath, const std::string& outputDir,
                      const std::vector<std::string>& sets, bool quiet,
-                     const std::string& platform, const std::string& renderer) {
+                     const std::string& platform, const std::string& renderer,
+                     const std::string& batchRun) {
   std::vector<config::Override> overrides = parseOverrides(sets);
   // --renderer is a documented shorthand for --set render.renderer=...
   if (!renderer.empty()) overrides.push_back({"render.renderer", renderer});
@@ -41,6 +43,9 @@ int runRenderCommand(const std::string& configPath, const std::string& outputDir
   options.quiet = quiet;
   options.eglPlatform =
       platform.empty() ? gl::eglPlatformFromEnvironment() : gl::parseEglPlatform(platform);
+  // A batch run: the key is computed here, from the config this render
+  // loaded, so the manifest records what was rendered.
+  if (!batchRun.empty()) options.batchManifest = {batchRun, pipeline::runContentKey(config)};
   const pipeline::RunSummary summary = pipeline::runRender(config, options);
   if (!quiet) {
     std::fprintf(stderr, "render: %.2f s, %zu segment(s); wrote %zu file(s) to %s\n",
@@ -92,8 +97,10 @@ int runBatchCommand(const std::string& batchPath, const std::vector<std::string>
   options.verify = verify;
   options.quiet = quiet;
   const pipeline::BatchSummary summary = pipeline::runBatch(options);
+  // The table also after an interrupt: it says which runs are left.
   std::fputs(pipeline::formatBatchSummary(summary, dryRun).c_str(), stdout);
-  return summary.anyFailed() ? 1 : 0;
+  std::fflush(stdout);
+  return summary.exitCode();
 }
 
 int runInfoCommand(const std::string& scenePath) {
@@ -121,6 +128,9 @@ int main(int argc, char** argv) {
                      "auto | surfaceless | device (default: $TOFSIM_EGL_PLATFORM or auto)");
   render->add_option("--renderer", renderer, "ir | reference (same as --set render.renderer=...)")
       ->check(CLI::IsMember({"ir", "reference"}));
+  // Internal, for `tofsim batch`: write the run's manifest.json last.
+  std::string batchRun;
+  render->add_option("--batch-run", batchRun, "Batch run name (internal)")->group("");
 
   CLI::App* sense = app.add_subcommand(
       "sense", "Run a config's sensors on a saved render (uses only sensors: and render.seed)");
@@ -168,7 +178,7 @@ int main(int argc, char** argv) {
   tofsim::installInterruptHandlers();
   try {
     if (render->parsed()) {
-      return runRenderCommand(configPath, outputDir, sets, quiet, platform, renderer);
+      return runRenderCommand(configPath, outputDir, sets, quiet, platform, renderer, batchRun);
     }
     if (compareCommand->parsed()) return runCompareCommand(dirA, dirB, outputDir);
     if (sense->parsed()) return runSenseCommand(configPath, volumeDir, outputDir, sets, quiet);

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -19,8 +20,16 @@ struct CommandResult {
   std::string output;  ///< stdout and stderr together
 };
 
+/// The binary under test: TOFSIM_CLI, or $TOFSIM_TEST_CLI when set (to run
+/// an end-to-end test against another build, e.g. to reproduce a bug on an
+/// older one).
+inline std::string cliPath() {
+  const char* other = std::getenv("TOFSIM_TEST_CLI");
+  return other && *other ? other : TOFSIM_CLI;
+}
+
 inline CommandResult runCli(const std::string& args) {
-  const std::string command = std::string(TOFSIM_CLI) + " " + args + " 2>&1";
+  const std::string command = cliPath() + " " + args + " 2>&1";
   FILE* pipe = ::popen(command.c_str(), "r");
   std::string output;
   char buffer[512];

@@ -1,19 +1,24 @@
 #include "tofsim/pipeline/BatchRun.h"
 
-#include <fcntl.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
+#include <cerrno>
 #include <chrono>
+#include <csignal>
 #include <cstdio>
+#include <cstring>
 #include <deque>
 #include <fstream>
 #include <map>
+#include <thread>
 
+#include "BatchChild.h"
 #include "tofsim/pipeline/Manifest.h"
 #include "tofsim/pipeline/Progress.h"
 #include "tofsim/util/Error.h"
+#include "tofsim/util/Interrupt.h"
 
 namespace tofsim::pipeline {
 
@@ -25,41 +30,9 @@ namespace {
 struct Child {
   std::size_t slot;  // into summary.runs
   Clock::time_point start;
+  RunLock lock;
+  bool signalled = false;  // the batch's interrupt was passed on to it
 };
-
-// fork + exec of `tofsim render`, output to <dir>/log.txt. Returns the pid.
-pid_t spawnRender(const fs::path& exe, const fs::path& baseConfig,
-                  const std::vector<config::Override>& overrides, const fs::path& dir) {
-  std::vector<std::string> args = {exe.string(), "render", baseConfig.string()};
-  for (const config::Override& o : overrides) {
-    args.push_back("--set");
-    args.push_back(o.keyPath + "=" + o.value);
-  }
-  args.push_back("-o");
-  args.push_back(dir.string());
-  std::vector<char*> argv;
-  for (std::string& a : args) argv.push_back(a.data());
-  argv.push_back(nullptr);
-  const std::string log = (dir / kRunLogName).string();
-
-  std::fflush(nullptr);  // or buffered parent output is written twice
-  const pid_t pid = ::fork();
-  if (pid < 0) throw InputError("fork failed for batch run in " + dir.string());
-  if (pid == 0) {
-    // Child: only async-signal-safe calls until exec.
-    const int fd = ::open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-    if (fd >= 0) {
-      ::dup2(fd, STDOUT_FILENO);
-      ::dup2(fd, STDERR_FILENO);
-      ::close(fd);
-    }
-    ::execv(argv[0], argv.data());
-    const char msg[] = "tofsim batch: exec of the tofsim binary failed\n";
-    [[maybe_unused]] const ssize_t n = ::write(STDERR_FILENO, msg, sizeof msg - 1);
-    ::_exit(127);
-  }
-  return pid;
-}
 
 std::string lastLogLine(const fs::path& dir) {
   std::ifstream in(dir / kRunLogName);
@@ -86,8 +59,94 @@ const char* statusName(BatchRunStatus s) {
       return "failed";
     case BatchRunStatus::Pending:
       return "pending";
+    case BatchRunStatus::Interrupted:
+      return "interrupted";
+    case BatchRunStatus::Busy:
+      return "busy";
   }
   return "?";
+}
+
+fs::path lockFile(const BatchRunResult& r) {
+  return r.directory.parent_path() / ("." + r.name + ".lock");
+}
+
+// The content key of every run of the shard; the scene digest once per scene
+// file, as a sweep usually renders one scene many times.
+std::vector<RunContentKey> runKeys(const config::BatchConfig& batch, const fs::path& base,
+                                   const std::vector<BatchRunResult>& runs) {
+  std::map<fs::path, std::string> sceneDigests;
+  std::vector<RunContentKey> keys;
+  for (const BatchRunResult& r : runs) {
+    const config::RunConfig config = config::loadRunConfig(base, batch.runs[r.index].overrides);
+    std::string& scene = sceneDigests[fs::absolute(config.scene_file).lexically_normal()];
+    if (scene.empty()) scene = sceneInputsDigest(config.scene_file);
+    keys.push_back(runContentKey(config, scene));
+  }
+  return keys;
+}
+
+// Takes the run's lock and starts its render; or marks it busy (another batch
+// has it: returns false) or skipped (another batch finished it since it was
+// assessed).
+bool startRun(const BatchOptions& options, const config::BatchConfig& batch, const fs::path& base,
+              std::size_t slot, const RunContentKey& key, BatchRunResult& r,
+              std::map<pid_t, Child>& running) {
+  fs::create_directories(r.directory);
+  std::optional<RunLock> lock = RunLock::tryAcquire(lockFile(r));
+  if (!lock) {
+    r.status = BatchRunStatus::Busy;
+    r.message = "another batch (pid " + RunLock::holder(lockFile(r)) + ") is running it";
+    return false;
+  }
+  r.message.clear();
+  if (assessRun(r.directory, key, options.verify).state == RunState::Done) {
+    r.status = BatchRunStatus::Skipped;
+    return true;
+  }
+  // The folder is not emptied: the render replaces the earlier outputs only
+  // once its own set is complete, and its manifest lists only its own files.
+  RenderChildArgs args{options.executable, base,   batch.runs[r.index].overrides,
+                       r.directory,        r.name, lock->fd()};
+  const pid_t pid = spawnRender(args);
+  running.emplace(pid, Child{slot, Clock::now(), std::move(*lock)});
+  return true;
+}
+
+// Passes the batch's signal on to every child that has not had it. A child
+// whose handler is not armed either already got it (a Ctrl-C goes to the
+// whole process group) or has not installed it yet: asked again next time.
+void forwardInterrupt(int signal, std::map<pid_t, Child>& running) {
+  for (auto& [pid, child] : running) {
+    if (child.signalled || !catchesSignal(pid, signal)) continue;
+    ::kill(pid, signal);
+    child.signalled = true;
+  }
+}
+
+void recordExit(int status, int interruptSignal, const RunContentKey& key, BatchRunResult& r) {
+  if (WIFEXITED(status) && WEXITSTATUS(status) == 0) {
+    const RunAssessment after = assessRun(r.directory, key, false);
+    r.status = after.state == RunState::Done ? BatchRunStatus::Done : BatchRunStatus::Failed;
+    if (after.state != RunState::Done) r.message = "exit code 0 but " + after.text;
+  } else if (interruptSignal != 0) {
+    r.status = BatchRunStatus::Interrupted;
+  } else {
+    r.status = BatchRunStatus::Failed;
+    r.message = exitText(status) + ": " + lastLogLine(r.directory);
+  }
+}
+
+// One reaped child, or none after a short sleep. Polling rather than a
+// blocking waitpid: a signal that arrives just before a blocking call would
+// go unnoticed until some run ends by itself.
+pid_t reapOne(int& status) {
+  const pid_t pid = ::waitpid(-1, &status, WNOHANG);
+  if (pid < 0 && errno != EINTR) {
+    throw InputError(std::string("batch: waitpid failed: ") + std::strerror(errno));
+  }
+  if (pid <= 0) std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  return pid;
 }
 
 }  // namespace
@@ -97,6 +156,14 @@ bool BatchSummary::anyFailed() const {
     if (r.status == BatchRunStatus::Failed) return true;
   }
   return false;
+}
+
+int BatchSummary::exitCode() const {
+  if (interruptSignal != 0) return 128 + interruptSignal;
+  for (const BatchRunResult& r : runs) {
+    if (r.status == BatchRunStatus::Failed || r.status == BatchRunStatus::Busy) return 1;
+  }
+  return 0;
 }
 
 void parseShard(const std::string& text, int& index, int& count) {
@@ -113,101 +180,137 @@ bool inShard(std::size_t index, int shardIndex, int shardCount) {
   return index % static_cast<std::size_t>(shardCount) == static_cast<std::size_t>(shardIndex - 1);
 }
 
+namespace {
+
+void runPending(const BatchOptions& options, const config::BatchConfig& batch, const fs::path& base,
+                const std::vector<RunContentKey>& keys, std::deque<std::size_t> pending,
+                BatchSummary& summary) {
+  Progress progress("batch", options.quiet);
+  std::map<pid_t, Child> running;
+  // Runs another batch is rendering: asked again when this batch has nothing
+  // else to start, so that both batches end with every run done.
+  std::deque<std::size_t> waiting;
+  Clock::time_point retryAt;
+  std::size_t finished = 0;
+  const std::size_t toRun = pending.size();
+  for (;;) {
+    summary.interruptSignal = pendingInterrupt();
+    if (summary.interruptSignal != 0) {
+      pending.clear();  // never started: they stay `pending` (or `busy`)
+      waiting.clear();
+      forwardInterrupt(summary.interruptSignal, running);
+    }
+    if (pending.empty() && Clock::now() >= retryAt) pending.swap(waiting);
+    while (!pending.empty() && running.size() < static_cast<std::size_t>(options.jobs)) {
+      const std::size_t slot = pending.front();
+      pending.pop_front();
+      if (!startRun(options, batch, base, slot, keys[slot], summary.runs[slot], running)) {
+        waiting.push_back(slot);
+        retryAt = Clock::now() + std::chrono::milliseconds(250);
+      }
+    }
+    if (running.empty()) {
+      if (pending.empty() && waiting.empty()) break;
+      std::this_thread::sleep_for(std::chrono::milliseconds(50));
+      continue;
+    }
+    int status = 0;
+    const pid_t pid = reapOne(status);
+    const auto it = running.find(pid);
+    if (it == running.end()) continue;  // nothing yet, or not one of ours
+    BatchRunResult& r = summary.runs[it->second.slot];
+    r.seconds = std::chrono::duration<double>(Clock::now() - it->second.start).count();
+    recordExit(status, pendingInterrupt(), keys[it->second.slot], r);
+    running.erase(it);  // and with it the run's lock
+    char line[256];
+    std::snprintf(line, sizeof line, "[%zu/%zu] %s %s (%.1f s)", ++finished, toRun, r.name.c_str(),
+                  statusName(r.status), r.seconds);
+    progress.message(line);
+  }
+}
+
+}  // namespace
+
 BatchSummary runBatch(const BatchOptions& options) {
   if (options.jobs < 1) throw InputError("--jobs must be >= 1");
   const config::BatchConfig batch = config::loadBatchConfig(options.batchFile, options.overrides);
   config::validateBatch(batch);
   const fs::path base = fs::absolute(batch.base_config);
-  Progress progress("batch", options.quiet);
 
   BatchSummary summary;
   summary.totalRuns = batch.runs.size();
-  std::deque<std::size_t> pending;
   for (const config::BatchRun& run : batch.runs) {
     if (!inShard(run.index, options.shardIndex, options.shardCount)) continue;
     BatchRunResult r;
     r.index = run.index;
     r.name = run.name;
     r.directory = batch.output_root / run.name;
-    std::string why;
-    if (runIsComplete(r.directory, options.verify, &why)) {
-      r.status = BatchRunStatus::Skipped;
-    } else if (options.dryRun) {
-      for (const config::Override& o : run.varied) r.message += o.keyPath + "=" + o.value + "  ";
-    } else {
-      pending.push_back(summary.runs.size());
-    }
+    for (const config::Override& o : run.varied) r.message += o.keyPath + "=" + o.value + "  ";
     summary.runs.push_back(std::move(r));
   }
-  if (options.dryRun) return summary;
-
-  std::map<pid_t, Child> running;
-  std::size_t finished = 0;
-  const std::size_t toRun = pending.size();
-  while (!pending.empty() || !running.empty()) {
-    while (!pending.empty() && running.size() < static_cast<std::size_t>(options.jobs)) {
-      const std::size_t slot = pending.front();
-      pending.pop_front();
-      BatchRunResult& r = summary.runs[slot];
-      // Whatever an interrupted earlier attempt left is not trusted.
-      fs::remove_all(r.directory);
-      fs::create_directories(r.directory);
-      const pid_t pid =
-          spawnRender(options.executable, base, batch.runs[r.index].overrides, r.directory);
-      running[pid] = Child{slot, Clock::now()};
-    }
-    int status = 0;
-    const pid_t pid = ::waitpid(-1, &status, 0);
-    if (pid < 0) throw InputError("batch: waitpid failed");
-    const auto it = running.find(pid);
-    if (it == running.end()) continue;  // not one of ours
-    BatchRunResult& r = summary.runs[it->second.slot];
-    r.seconds = std::chrono::duration<double>(Clock::now() - it->second.start).count();
-    running.erase(it);
-    if (WIFEXITED(status) && WEXITSTATUS(status) == 0) {
-      try {
-        writeManifest(r.directory, r.name);
-        r.status = BatchRunStatus::Done;
-      } catch (const std::exception& e) {
-        r.status = BatchRunStatus::Failed;
-        r.message = std::string("manifest: ") + e.what();
-      }
+  const std::vector<RunContentKey> keys = runKeys(batch, base, summary.runs);
+  std::deque<std::size_t> pending;
+  for (std::size_t i = 0; i < summary.runs.size(); ++i) {
+    BatchRunResult& r = summary.runs[i];
+    const RunAssessment a = assessRun(r.directory, keys[i], options.verify);
+    r.state = a.text;
+    if (a.state == RunState::Done) {
+      r.status = BatchRunStatus::Skipped;
     } else {
-      r.status = BatchRunStatus::Failed;
-      r.message = exitText(status) + ": " + lastLogLine(r.directory);
+      pending.push_back(i);
     }
-    ++finished;
-    char line[256];
-    std::snprintf(line, sizeof line, "[%zu/%zu] %s %s (%.1f s)", finished, toRun, r.name.c_str(),
-                  statusName(r.status), r.seconds);
-    progress.message(line);
+    if (!options.dryRun) r.message.clear();
   }
+  if (!options.dryRun) runPending(options, batch, base, keys, std::move(pending), summary);
   return summary;
 }
 
 std::string formatBatchSummary(const BatchSummary& summary, bool dryRun) {
-  std::size_t width = 3;
-  for (const BatchRunResult& r : summary.runs) width = std::max(width, r.name.size());
+  std::size_t width = 3, statusWidth = std::string("interrupted").size();
+  for (const BatchRunResult& r : summary.runs) {
+    width = std::max(width, r.name.size());
+    if (dryRun) statusWidth = std::max(statusWidth, r.state.size());
+  }
   std::string out;
-  char line[1024];
-  std::snprintf(line, sizeof line, "%-*s  %-7s  %8s  %s\n", static_cast<int>(width), "run",
-                "status", "seconds", dryRun ? "varied keys (pending runs)" : "output");
+  char line[2048];
+  const int w = static_cast<int>(width), sw = static_cast<int>(statusWidth);
+  if (dryRun) {
+    std::snprintf(line, sizeof line, "%-*s  %-*s  %s\n", w, "run", sw, "state", "varied keys");
+  } else {
+    std::snprintf(line, sizeof line, "%-*s  %-*s  %8s  %s\n", w, "run", sw, "status", "seconds",
+                  "output");
+  }
   out += line;
-  std::size_t counts[4] = {0, 0, 0, 0};
+  std::size_t counts[6] = {0, 0, 0, 0, 0, 0};
   for (const BatchRunResult& r : summary.runs) {
     ++counts[static_cast<int>(r.status)];
-    const std::string last =
-        dryRun && r.status == BatchRunStatus::Pending ? r.message : r.directory.string();
-    std::snprintf(line, sizeof line, "%-*s  %-7s  %8.1f  %s\n", static_cast<int>(width),
-                  r.name.c_str(), statusName(r.status), r.seconds, last.c_str());
+    if (dryRun) {
+      std::snprintf(line, sizeof line, "%-*s  %-*s  %s\n", w, r.name.c_str(), sw, r.state.c_str(),
+                    r.message.c_str());
+    } else {
+      std::snprintf(line, sizeof line, "%-*s  %-*s  %8.1f  %s\n", w, r.name.c_str(), sw,
+                    statusName(r.status), r.seconds, r.directory.string().c_str());
+    }
     out += line;
-    if (r.status == BatchRunStatus::Failed) out += "    " + r.message + "\n";
+    if (!dryRun && !r.message.empty()) out += "    " + r.message + "\n";
   }
-  std::snprintf(line, sizeof line,
-                "batch: %zu of %zu run(s) in this shard: %zu done, %zu skipped, %zu failed, %zu "
-                "pending\n",
-                summary.runs.size(), summary.totalRuns, counts[0], counts[1], counts[2], counts[3]);
+  if (dryRun) {
+    std::snprintf(line, sizeof line,
+                  "batch: %zu of %zu run(s) in this shard: %zu done, %zu to run\n",
+                  summary.runs.size(), summary.totalRuns, counts[1], counts[3]);
+  } else {
+    std::snprintf(line, sizeof line,
+                  "batch: %zu of %zu run(s) in this shard: %zu done, %zu skipped, %zu failed, "
+                  "%zu interrupted, %zu busy, %zu pending\n",
+                  summary.runs.size(), summary.totalRuns, counts[0], counts[1], counts[2],
+                  counts[4], counts[5], counts[3]);
+  }
   out += line;
+  if (summary.interruptSignal != 0) {
+    out += std::string("batch: interrupted by ") +
+           (summary.interruptSignal == SIGINT ? "SIGINT" : "SIGTERM") +
+           "; rerun the batch to finish the interrupted and pending runs\n";
+  }
   return out;
 }
 

@@ -6,6 +6,7 @@
 #include "tofsim/imaging/Video.h"
 #include "tofsim/io/Exr.h"
 #include "tofsim/pipeline/Capture.h"
+#include "tofsim/pipeline/Manifest.h"
 #include "tofsim/pipeline/Metadata.h"
 #include "tofsim/pipeline/OutputEstimate.h"
 #include "tofsim/pipeline/OutputSink.h"
@@ -195,6 +196,13 @@ void writeOutputs(const config::RunConfig& config, const capture::RenderJob& job
   }
   writeFileAtomically(dir / "config.effective.yaml", config::effectiveConfigYaml(config));
   summary.files.push_back("config.effective.yaml");
+  if (options.batchManifest) {
+    // Last: it lists the files above with their checksums, so it exists
+    // only once all of them do.
+    writeManifest(dir, options.batchManifest->runName, summary.files,
+                  options.batchManifest->inputs);
+    summary.files.push_back(kManifestName);
+  }
 }
 }  // namespace
 

@@ -1,11 +1,17 @@
 #pragma once
 // `tofsim batch`: runs the expanded runs of a batch file (BatchConfig.h),
-// each in its own folder <output>/<run name>/, skipping complete runs
-// (Manifest.h) and redoing incomplete ones.
+// each in its own folder <output>/<run name>/, skipping runs that are done
+// for their current content key (Manifest.h, RunContentKey.h) and redoing
+// missing, stale and incomplete ones.
 //
 // Each run is a child process: the tofsim executable itself, as
-// `tofsim render <base config> --set ... -o <run dir>`, its stdout and stderr
-// in <run dir>/log.txt. Processes rather than threads because every render
+// `tofsim render <base config> --set ... -o <run dir> --batch-run <name>`,
+// its stdout and stderr in <run dir>/log.txt; the render writes the run's
+// manifest last. The batch holds <output>/.<run name>.lock (flock) while a
+// run is going, so two batches over one output tree never run the same run
+// at once: the second reports it `busy`. SIGINT/SIGTERM: no new run starts,
+// the signal goes on to the running children, the batch waits for them and
+// returns a summary with `interruptSignal` set. Processes rather than threads because every render
 // owns a GL context and large buffers, and because a crash (or a driver
 // abort) in one run must not take the batch down: the parent only counts
 // exit codes. `jobs` children run at once.
@@ -31,7 +37,7 @@ struct BatchOptions {
   std::filesystem::path executable = "/proc/self/exe";  ///< the tofsim binary to run
 };
 
-enum class BatchRunStatus { Done, Skipped, Failed, Pending };
+enum class BatchRunStatus { Done, Skipped, Failed, Pending, Interrupted, Busy };
 
 struct BatchRunResult {
   std::size_t index = 0;
@@ -39,13 +45,18 @@ struct BatchRunResult {
   std::filesystem::path directory;
   BatchRunStatus status = BatchRunStatus::Pending;
   double seconds = 0.0;
-  std::string message;  ///< failed: the last line of log.txt; dry run: the overrides
+  std::string state;  ///< before the batch: assessRun's text ("done", "stale (...)", ...)
+  std::string
+      message;  ///< failed: the last line of log.txt; busy: the holder; dry run: the overrides
 };
 
 struct BatchSummary {
   std::size_t totalRuns = 0;         ///< in the whole batch, all shards
   std::vector<BatchRunResult> runs;  ///< this shard's, in expansion order
+  int interruptSignal = 0;           ///< SIGINT / SIGTERM that stopped the batch, or 0
   bool anyFailed() const;
+  /// 128 + signal when interrupted; else 1 when a run failed or was busy; else 0.
+  int exitCode() const;
 };
 
 /// Parses "K/N" (1 <= K <= N); throws InputError otherwise.
@@ -55,12 +66,14 @@ void parseShard(const std::string& text, int& index, int& count);
 bool inShard(std::size_t index, int shardIndex, int shardCount);
 
 /// Loads and validates the batch (every run's config, before anything runs),
-/// then runs this shard's incomplete runs. Throws InputError for a bad batch
-/// file or an invalid run config; a run that fails while running is reported
-/// in the summary, and the others still run.
+/// then runs this shard's runs that are not done. Throws InputError for a bad
+/// batch file or an invalid run config; a run that fails while running is
+/// reported in the summary, and the others still run. An interrupt is not an
+/// exception here: the summary says which runs it stopped.
 BatchSummary runBatch(const BatchOptions& options);
 
-/// The table printed at the end: run, status, seconds, output folder.
+/// The table printed at the end: run, status, seconds, output folder; for a
+/// dry run: run, state, varied keys.
 std::string formatBatchSummary(const BatchSummary& summary, bool dryRun);
 
 }  // namespace tofsim::pipeline

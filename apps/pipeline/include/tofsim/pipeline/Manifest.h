@@ -1,15 +1,19 @@
 #pragma once
-// manifest.json: the proof that a batch run finished. Written last and
-// atomically, it lists every output file under the run folder with its size
-// and FNV-1a 64 checksum. A run is complete iff its manifest exists, parses
-// and every listed file exists with the listed size (and, when verifying,
-// the listed checksum). A run killed at any moment therefore never looks
-// complete: its manifest is either absent or describes files already whole.
+// manifest.json: the proof that a batch run finished, and of what. The child
+// render writes it as the last file of its output set, atomically: it lists
+// every output file of the run with its size and FNV-1a 64 checksum, and the
+// run's content key (RunContentKey.h) under "inputs". A run is done iff its
+// manifest exists, parses, records the key its config has now, and every
+// listed file exists with the listed size (and, when verifying, the listed
+// checksum). A run killed at any moment therefore never looks done: its
+// manifest is either absent or describes files already whole.
 
 #include <cstdint>
 #include <filesystem>
 #include <string>
 #include <vector>
+
+#include "tofsim/pipeline/RunContentKey.h"
 
 namespace tofsim::pipeline {
 
@@ -23,14 +27,27 @@ struct ManifestEntry {
   std::string fnv1a64;  ///< 16 hex digits
 };
 
-/// Lists every regular file under `directory` (except the manifest and the
-/// log), hashes it and writes manifest.json atomically. Returns the entries.
+/// Hashes `files` (relative to `directory`: the outputs a render wrote) and
+/// writes manifest.json atomically. The log, the manifest itself and any
+/// dot-file (locks, staging folders) are never listed. Returns the entries,
+/// sorted by path.
 std::vector<ManifestEntry> writeManifest(const std::filesystem::path& directory,
-                                         const std::string& runName);
+                                         const std::string& runName,
+                                         const std::vector<std::string>& files,
+                                         const RunContentKey& inputs);
 
-/// True when `directory` holds a complete run (see above). `why` (optional)
-/// receives the reason when it does not.
-bool runIsComplete(const std::filesystem::path& directory, bool verifyChecksums,
-                   std::string* why = nullptr);
+/// Where a run folder stands against the key its config has now.
+enum class RunState { Done, Missing, Stale, Incomplete };
+
+struct RunAssessment {
+  RunState state = RunState::Missing;
+  /// As `--dry-run` prints it: "done", "missing", "stale (config changed)",
+  /// "stale (scene changed)", "stale (version changed)", "stale (no inputs
+  /// recorded)" or "incomplete (<why>)".
+  std::string text;
+};
+
+RunAssessment assessRun(const std::filesystem::path& directory, const RunContentKey& expected,
+                        bool verifyChecksums);
 
 }  // namespace tofsim::pipeline

@@ -3,19 +3,29 @@
 // output directory. The library function behind `tofsim render`.
 
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "tofsim/capture/RenderJob.h"
 #include "tofsim/config/RunConfig.h"
 #include "tofsim/gl/Context.h"
+#include "tofsim/pipeline/RunContentKey.h"
 
 namespace tofsim::pipeline {
+
+/// A render started by `tofsim batch` writes the run's manifest.json
+/// (Manifest.h) as the last file of its output set.
+struct BatchManifestInfo {
+  std::string runName;
+  RunContentKey inputs;
+};
 
 struct RunOptions {
   std::filesystem::path outputDirectory;  ///< empty: the config's output.directory
   bool quiet = false;
   gl::EglPlatform eglPlatform = gl::EglPlatform::Auto;
+  std::optional<BatchManifestInfo> batchManifest;  ///< set by `tofsim render --batch-run`
 };
 
 struct RunSummary {
