@@ -5,6 +5,7 @@
 #include "tofsim/imaging/Pictures.h"
 #include "tofsim/imaging/Video.h"
 #include "tofsim/io/Exr.h"
+#include "tofsim/pipeline/AxisReport.h"
 #include "tofsim/pipeline/Capture.h"
 #include "tofsim/pipeline/Metadata.h"
 #include "tofsim/pipeline/OutputSink.h"
@@ -101,6 +102,7 @@ RunSummary runRender(const config::RunConfig& config, const RunOptions& options)
   const scene::Scene scene = scene::loadGltf(config.scene_file, &report);
   reportLoad(report, progress);
   const capture::RenderJob job = makeRenderJob(config, scene);
+  checkAxisBeforeRender(config, job, false);  // a proven cut fails here under --strict
 
   RunSummary summary;
   summary.outputDirectory =
@@ -169,6 +171,7 @@ void writeOutputs(const config::RunConfig& config, const capture::RenderJob& job
                  "(transient.json stats.rejected_non_finite_values)\n",
                  summary.result.nonFiniteRejected);
   }
+  checkAxisAfterRender(config, job, sink, summary.result);  // throws under --strict
   sink.commit();
   if (out.transient) summary.files.push_back("transient.npy");
   if (out.direct) summary.files.push_back("direct.npy");
