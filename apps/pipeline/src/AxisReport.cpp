@@ -132,7 +132,7 @@ void checkAxisAfterRender(const config::RunConfig& config, const capture::Render
     const capture::ArrivalBounds b = capture::arrivalBounds(job, surfaceVertices(config));
     warnOrThrow(config, "time",
                 sides[0] + (sides.size() > 1 ? " and " + sides[1] : "") +
-                    suggestAxis(axis, b, before, after));
+                    suggestAxis(axis, b, before, after, !(result.onAxisEnergy > 0.0)));
   }
   if (sink.volume() != nullptr) checkSensorWindows(config, *sink.volume());
 }
