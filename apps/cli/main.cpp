@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "tofsim/config/RunConfig.h"
+#include "tofsim/pipeline/AxisReport.h"
 #include "tofsim/pipeline/BatchRun.h"
 #include "tofsim/pipeline/CompareRun.h"
 #include "tofsim/pipeline/RenderRun.h"
@@ -30,11 +31,18 @@ std::vector<config::Override> parseOverrides(const std::vector<std::string>& set
   return overrides;
 }
 
+// --strict is a documented shorthand for --set render.strict=true.
+std::vector<config::Override> parseOverrides(const std::vector<std::string>& sets, bool strict) {
+  std::vector<config::Override> overrides = parseOverrides(sets);
+  if (strict) overrides.push_back({"render.strict", "true"});
+  return overrides;
+}
+
 int runRenderCommand(const std::string& configPath, const std::string& outputDir,
-                     const std::vector<std::string>& sets, bool quiet,
+                     const std::vector<std::string>& sets, bool quiet, bool strict,
                      const std::string& platform, const std::string& renderer,
                      const std::string& batchRun) {
-  std::vector<config::Override> overrides = parseOverrides(sets);
+  std::vector<config::Override> overrides = parseOverrides(sets, strict);
   // --renderer is a documented shorthand for --set render.renderer=...
   if (!renderer.empty()) overrides.push_back({"render.renderer", renderer});
   const config::RunConfig config = config::loadRunConfig(configPath, overrides);
@@ -80,8 +88,10 @@ int runCompareCommand(const std::string& a, const std::string& b, const std::str
   return 0;
 }
 
-int runValidateCommand(const std::string& configPath, const std::vector<std::string>& sets) {
-  config::loadRunConfig(configPath, parseOverrides(sets));
+int runValidateCommand(const std::string& configPath, const std::vector<std::string>& sets,
+                       bool strict) {
+  const config::RunConfig config = config::loadRunConfig(configPath, parseOverrides(sets, strict));
+  pipeline::validateTimeAxis(config);  // warnings and notes on stderr; --strict: a proven cut fails
   std::printf("%s: ok\n", configPath.c_str());
   return 0;
 }
@@ -117,13 +127,16 @@ int main(int argc, char** argv) {
 
   std::string configPath, outputDir, platform, volumeDir, renderer, dirA, dirB;
   std::vector<std::string> sets;
-  bool quiet = false;
+  bool quiet = false, strict = false;
+  const char* strictHelp =
+      "Light cut off by the time axis or a sensor window is an error (= --set render.strict=true)";
 
   CLI::App* render = app.add_subcommand("render", "Render a config's transient volume and outputs");
   render->add_option("config", configPath, "YAML config file")->required();
   render->add_option("-o,--output", outputDir, "Output directory (default: output.directory)");
   render->add_option("--set", sets, "Override a config key: key.path=value (repeatable)");
   render->add_flag("-q,--quiet", quiet, "No progress output");
+  render->add_flag("--strict", strict, strictHelp);
   render->add_option("--egl-platform", platform,
                      "auto | surfaceless | device (default: $TOFSIM_EGL_PLATFORM or auto)");
   render->add_option("--renderer", renderer, "ir | reference (same as --set render.renderer=...)")
@@ -150,6 +163,7 @@ int main(int argc, char** argv) {
   CLI::App* validate = app.add_subcommand("validate", "Check a config without rendering");
   validate->add_option("config", configPath, "YAML config file")->required();
   validate->add_option("--set", sets, "Override a config key: key.path=value (repeatable)");
+  validate->add_flag("--strict", strict, strictHelp);
 
   CLI::App* batch = app.add_subcommand(
       "batch", "Run a batch file's runs and sweeps, each into <output>/<run name>/ (resumable)");
@@ -178,11 +192,12 @@ int main(int argc, char** argv) {
   tofsim::installInterruptHandlers();
   try {
     if (render->parsed()) {
-      return runRenderCommand(configPath, outputDir, sets, quiet, platform, renderer, batchRun);
+      return runRenderCommand(configPath, outputDir, sets, quiet, strict, platform, renderer,
+                              batchRun);
     }
     if (compareCommand->parsed()) return runCompareCommand(dirA, dirB, outputDir);
     if (sense->parsed()) return runSenseCommand(configPath, volumeDir, outputDir, sets, quiet);
-    if (validate->parsed()) return runValidateCommand(configPath, sets);
+    if (validate->parsed()) return runValidateCommand(configPath, sets, strict);
     if (batch->parsed()) {
       return runBatchCommand(configPath, sets, jobs, shard, dryRun, verify, quiet);
     }

@@ -23,7 +23,7 @@ TimeAxis resolveBins(const InstrumentBins& bins, const TimeAxis& render) {
   TOFSIM_CHECK(bins.bin_width_s >= 0.0 && bins.count >= 0 && render.bin_width_s > 0.0);
   TimeAxis axis;
   axis.bin_width_s = bins.bin_width_s > 0.0 ? bins.bin_width_s : render.bin_width_s;
-  axis.start_s = bins.offset_s;
+  axis.start_s = bins.offset_s.value_or(render.start_s);
   if (bins.count > 0) {
     axis.bins = bins.count;
   } else {

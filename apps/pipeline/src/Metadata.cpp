@@ -2,6 +2,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "tofsim/pipeline/AxisReport.h"
 #include "tofsim/pipeline/Version.h"
 #include "tofsim/volume/PhysicalConstants.h"
 
@@ -60,6 +61,7 @@ std::string transientMetadataJson(const config::RunConfig& config, const capture
   j["renderer"] = config.renderer == config::RendererKind::Reference ? "reference" : "ir";
   j["seed"] = job.settings.seed;
   j["scene"] = config.scene_file.filename().string();
+  const AxisLossFractions lost = axisLossFractions(result);
   j["stats"] = {{"seconds", result.seconds},
                 {"segments", result.segments},
                 {"vpls", result.vpls},
@@ -68,6 +70,9 @@ std::string transientMetadataJson(const config::RunConfig& config, const capture
                 {"energy_outside_time_axis", result.offAxis.total()},
                 {"energy_before_axis", result.offAxis.before},
                 {"energy_after_axis", result.offAxis.after},
+                {"energy_on_axis", result.onAxisEnergy},
+                {"fraction_before_axis", lost.before},
+                {"fraction_after_axis", lost.after},
                 {"rejected_non_finite_values", result.nonFiniteRejected}};
   return j.dump(2) + "\n";
 }

@@ -5,6 +5,7 @@
 #include "tofsim/imaging/Pictures.h"
 #include "tofsim/imaging/Video.h"
 #include "tofsim/io/Exr.h"
+#include "tofsim/pipeline/AxisReport.h"
 #include "tofsim/pipeline/Capture.h"
 #include "tofsim/pipeline/Manifest.h"
 #include "tofsim/pipeline/Metadata.h"
@@ -96,6 +97,7 @@ RunSummary runRender(const config::RunConfig& config, const RunOptions& options)
   const scene::Scene scene = scene::loadGltf(config.scene_file, &report);
   reportLoad(report, progress);
   const capture::RenderJob job = makeRenderJob(config, scene);
+  checkAxisBeforeRender(config, job, false);  // a proven cut fails here under --strict
 
   RunSummary summary;
   summary.outputDirectory =
@@ -162,6 +164,7 @@ void writeOutputs(const config::RunConfig& config, const capture::RenderJob& job
                  "(transient.json stats.rejected_non_finite_values)\n",
                  summary.result.nonFiniteRejected);
   }
+  checkAxisAfterRender(config, job, sink, summary.result);  // throws under --strict
   sink.commit();
   if (out.transient) summary.files.push_back("transient.npy");
   if (out.direct) summary.files.push_back("direct.npy");

@@ -3,6 +3,7 @@
 #include <chrono>
 #include <cstdio>
 
+#include "tofsim/pipeline/AxisReport.h"
 #include "tofsim/pipeline/SavedVolume.h"
 #include "tofsim/pipeline/SensorWriter.h"
 #include "tofsim/sensors/RunSensor.h"
@@ -79,6 +80,7 @@ SenseSummary runSense(const config::RunConfig& config, const SenseOptions& optio
   Progress progress("sense", options.quiet);
   const SavedVolume saved = loadSavedVolume(options.volumeDirectory);
   noteDifferences(config, saved.volume, progress);
+  checkSensorWindows(config, saved.volume);  // before any file; throws under --strict
   SenseSummary summary;
   summary.outputDirectory =
       options.outputDirectory.empty() ? options.volumeDirectory : options.outputDirectory;

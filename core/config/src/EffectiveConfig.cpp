@@ -63,6 +63,7 @@ YAML::Node renderNode(const RunConfig& config) {
   n["seed"] = r.seed;
   n["shadow_map_resolution"] = r.shadow_map_resolution;
   n["memory_budget"] = std::to_string(r.memory_budget_bytes) + " B";
+  n["strict"] = config.strict;
   YAML::Node i;
   i["enabled"] = r.indirect.enabled;
   i["rsm_resolution"] = r.indirect.rsm_resolution;

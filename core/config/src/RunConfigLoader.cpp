@@ -130,6 +130,7 @@ void parseRender(const ConfigNode& node, RunConfig& out) {
   } else {
     node.failKey("renderer", "must be ir or reference (got '" + renderer + "')");
   }
+  out.strict = node.getBool("strict", out.strict);
   capture::RenderSettings& r = out.render;
   r.seed = static_cast<uint64_t>(intInRange(node, "seed", 1, 0, (1LL << 62)));
   r.shadow_map_resolution = static_cast<int32_t>(

@@ -52,9 +52,9 @@ void emitCommon(YAML::Node& n, const SensorCommon& c) {
 }
 
 void emitBins(YAML::Node& n, const InstrumentBins& b) {
-  // 0 means "from the render" and is not a valid explicit value: leave it out.
+  // 0 / unset mean "from the render" and are not explicit values: leave them out.
   if (b.bin_width_s > 0.0) n["bin_width"] = duration(b.bin_width_s);
-  n["bin_offset"] = duration(b.offset_s);
+  if (b.offset_s) n["bin_offset"] = duration(*b.offset_s);
   if (b.count > 0) n["bins"] = b.count;
 }
 

@@ -74,7 +74,7 @@ SensorCommon parseCommon(const ConfigNode& n) {
 InstrumentBins parseBins(const ConfigNode& n) {
   InstrumentBins b;
   b.bin_width_s = positive(n, "bin_width", n.getDuration_s("bin_width", b.bin_width_s));
-  b.offset_s = n.getDuration_s("bin_offset", b.offset_s);
+  if (n.has("bin_offset")) b.offset_s = n.getDuration_s("bin_offset", 0.0);
   b.count = static_cast<int32_t>(positiveInt(n, "bins", b.count));
   return b;
 }

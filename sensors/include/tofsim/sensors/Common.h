@@ -4,6 +4,7 @@
 // instrument's own time bins. See sensors/README.md, "Common parameters".
 
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "tofsim/volume/TimeAxis.h"
@@ -39,11 +40,14 @@ struct SensorCommon {
 };
 
 /// The instrument's time bins: bin k covers [offset_s + k w, offset_s + (k+1) w).
-/// bin_width_s = 0 takes the render's width, offset_s is used as given, and
-/// count = 0 takes as many bins as cover the render's axis end.
+/// Unset parts follow the render's axis, so by default the instrument window
+/// is the render's: bin_width_s = 0 takes the render's width, no offset_s
+/// takes the render's start, and count = 0 takes as many bins as cover the
+/// render's axis end. An explicit offset or count wins (and may cut light off;
+/// see windowLossFraction in WindowLoss.h).
 struct InstrumentBins {
   double bin_width_s = 0.0;
-  double offset_s = 0.0;
+  std::optional<double> offset_s;
   int32_t count = 0;
 };
 

@@ -71,6 +71,9 @@ struct RunConfig {
   capture::RenderSettings render;
   RendererKind renderer = RendererKind::InstantRadiosity;
   ReferenceConfig reference;
+  /// render.strict (or --strict): light cut off by the time axis or a sensor
+  /// window is an error, not a warning (apps/pipeline AxisReport.h).
+  bool strict = false;
   OutputConfig output;
   /// The `sensors:` list (sensors/README.md). Run after a render on the kept
   /// volume, and by `tofsim sense` on a saved one, with seed render.seed.

@@ -1,0 +1,69 @@
+#pragma once
+// Light cut off by a time window, said out loud. Before a render the scene's
+// arrival bounds (capture/ArrivalBounds.h) can prove that the time axis misses
+// the light, or show that it may; after a render the light that landed before
+// the first bin or after the last is measured. More than 0.1 % of the total
+// off the axis (or off a sensor's instrument window) is a warning on stderr,
+// shown even with -q, that names the axis that would hold it all; with
+// render.strict (--strict) it is an error instead.
+
+#include <cstdint>
+#include <string>
+
+#include "tofsim/capture/ArrivalBounds.h"
+#include "tofsim/capture/RenderJob.h"
+#include "tofsim/config/RunConfig.h"
+#include "tofsim/pipeline/OutputSink.h"
+#include "tofsim/volume/TransientVolume.h"
+
+namespace tofsim::pipeline {
+
+/// Fraction of the light off the render axis above which a run warns.
+inline constexpr double kWindowLossWarning = 0.001;
+
+/// Surface vertices a path of the configured renderer can have: instant
+/// radiosity 1, or 2 with indirect light; the reference its bounces.
+int32_t surfaceVertices(const config::RunConfig& config);
+
+/// What the arrival bounds say about the render axis, before rendering.
+struct AxisPrediction {
+  enum class Verdict {
+    Holds,   ///< every possible path lies on the axis
+    MayCut,  ///< the axis starts after the shortest or ends before the longest bound
+    Cuts,    ///< proven: the axis ends before the shortest or starts after the longest
+  };
+  Verdict verdict = Verdict::Holds;
+  std::string message;  ///< one line for people; empty when the axis holds
+};
+AxisPrediction predictAxisCut(const config::RunConfig& config, const capture::RenderJob& job);
+
+/// Before anything is written: a proven cut is a warning on stderr, or with
+/// config.strict an InputError; `notes` also prints a possible cut as a note
+/// (`tofsim validate`).
+void checkAxisBeforeRender(const config::RunConfig& config, const capture::RenderJob& job,
+                           bool notes);
+
+/// `tofsim validate`: loads the config's scene and runs checkAxisBeforeRender
+/// with notes.
+void validateTimeAxis(const config::RunConfig& config);
+
+/// Light off the axis as fractions of all the light (binned + off the axis);
+/// 0 when nothing arrived. Needs result.onAxisEnergy.
+struct AxisLossFractions {
+  double before = 0.0;
+  double after = 0.0;
+};
+AxisLossFractions axisLossFractions(const capture::RenderResult& result);
+
+/// After rendering, before the outputs are committed: records the binned
+/// energy in result.onAxisEnergy, warns (config.strict: throws InputError)
+/// when the axis or a sensor window lost more than kWindowLossWarning.
+void checkAxisAfterRender(const config::RunConfig& config, const capture::RenderJob& job,
+                          const OutputSink& sink, capture::RenderResult& result);
+
+/// Each streak or SPAD sensor's instrument window against the volume it will
+/// run on: warns (config.strict: throws InputError) when it drops more than
+/// kWindowLossWarning of the light the sensor sees.
+void checkSensorWindows(const config::RunConfig& config, const TransientVolume& volume);
+
+}  // namespace tofsim::pipeline

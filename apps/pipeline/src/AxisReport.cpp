@@ -1,0 +1,154 @@
+#include "tofsim/pipeline/AxisReport.h"
+
+#include <cmath>
+#include <cstdio>
+#include <vector>
+
+#include "tofsim/pipeline/Capture.h"
+#include "tofsim/scene/GltfLoader.h"
+#include "tofsim/sensors/WindowLoss.h"
+#include "tofsim/util/Error.h"
+
+namespace tofsim::pipeline {
+
+namespace {
+
+constexpr int32_t kMaxBins = 1 << 20;  // time.bins' limit (RunConfigLoader.cpp)
+
+std::string format(const char* pattern, double value) {
+  char text[64];
+  std::snprintf(text, sizeof text, pattern, value);
+  return text;
+}
+std::string ns(double t_s) { return format("%.4g ns", t_s * 1e9); }
+std::string percent(double fraction) { return format("%.3g%%", fraction * 100.0); }
+
+// The axis on the same bin grid that also holds [shortest, longest] on the
+// sides asked for, as the keys to set: "time.start: 4.7 ns, time.bins: 900
+// would hold it all", or "" when the bounds suggest nothing larger. `fit`
+// (an axis that misses all the light) moves the start onto the bounds even
+// when that is later.
+std::string suggestAxis(const TimeAxis& axis, const capture::ArrivalBounds& bounds, bool before,
+                        bool after, bool fit = false) {
+  if (!bounds.any) return "";
+  const double w = axis.bin_width_s;
+  double start = axis.start_s;
+  if (fit || (before && bounds.shortest_s() < start)) {
+    start += std::floor((bounds.shortest_s() - start) / w + 1e-9) * w;
+  }
+  const double end = fit ? bounds.longest_s()
+                         : (after ? std::max(axis.end_s(), bounds.longest_s()) : axis.end_s());
+  const double bins = std::ceil((end - start) / w - 1e-9);
+  std::string keys;
+  if (start != axis.start_s) keys = "time.start: " + ns(start);
+  if (bins != axis.bins) {
+    keys += (keys.empty() ? "" : ", ") + std::string("time.bins: ") + format("%.0f", bins);
+  }
+  if (keys.empty()) return "";
+  std::string text = "; " + keys + " would hold it all";
+  if (bins > kMaxBins) text += " (over the limit of 2^20 bins: widen time.bin_width)";
+  return text;
+}
+
+void warnOrThrow(const config::RunConfig& config, const std::string& key, const std::string& text) {
+  if (config.strict) {
+    throw InputError(FileLoc{config.config_file.string()}, key,
+                     text + " (--strict / render.strict)");
+  }
+  std::fprintf(stderr, "tofsim: warning: %s\n", text.c_str());
+}
+
+double sumOf(const Image& image) {
+  double sum = 0.0;
+  for (float v : image.data) sum += v;
+  return sum;
+}
+
+}  // namespace
+
+int32_t surfaceVertices(const config::RunConfig& config) {
+  if (config.renderer == config::RendererKind::Reference) return config.reference.bounces;
+  return config.render.indirect.enabled ? 2 : 1;
+}
+
+AxisPrediction predictAxisCut(const config::RunConfig& config, const capture::RenderJob& job) {
+  const capture::ArrivalBounds b = capture::arrivalBounds(job, surfaceVertices(config));
+  const TimeAxis& axis = job.settings.time;
+  AxisPrediction p;
+  if (!b.any) return p;
+  const std::string bounds = "the scene's light arrives within " + ns(b.shortest_s()) + " .. " +
+                             ns(b.longest_s()) + " (bounds from its box, may be loose)";
+  if (axis.end_s() <= b.shortest_s() || axis.start_s >= b.longest_s()) {
+    const bool late = axis.end_s() <= b.shortest_s();
+    p.verdict = AxisPrediction::Verdict::Cuts;
+    p.message = std::string("the time axis ") +
+                (late ? "ends at " + ns(axis.end_s()) : "starts at " + ns(axis.start_s)) + " but " +
+                bounds + ": all of it arrives " +
+                (late ? "after the last bin" : "before the first bin") +
+                suggestAxis(axis, b, true, true, true);
+  } else if (axis.start_s > b.shortest_s() || axis.end_s() < b.longest_s()) {
+    p.verdict = AxisPrediction::Verdict::MayCut;
+    p.message = "the time axis " + ns(axis.start_s) + " .. " + ns(axis.end_s()) +
+                " may cut light off: " + bounds +
+                suggestAxis(axis, b, axis.start_s > b.shortest_s(), axis.end_s() < b.longest_s());
+  }
+  return p;
+}
+
+void checkAxisBeforeRender(const config::RunConfig& config, const capture::RenderJob& job,
+                           bool notes) {
+  const AxisPrediction p = predictAxisCut(config, job);
+  if (p.verdict == AxisPrediction::Verdict::Cuts) warnOrThrow(config, "time", p.message);
+  if (p.verdict == AxisPrediction::Verdict::MayCut && notes) {
+    std::fprintf(stderr, "tofsim: note: %s\n", p.message.c_str());
+  }
+}
+
+void validateTimeAxis(const config::RunConfig& config) {
+  const scene::Scene scene = scene::loadGltf(config.scene_file);
+  checkAxisBeforeRender(config, makeRenderJob(config, scene), true);
+}
+
+AxisLossFractions axisLossFractions(const capture::RenderResult& result) {
+  const double total = result.onAxisEnergy + result.offAxis.total();
+  if (!(total > 0.0)) return {};
+  return {result.offAxis.before / total, result.offAxis.after / total};
+}
+
+void checkAxisAfterRender(const config::RunConfig& config, const capture::RenderJob& job,
+                          const OutputSink& sink, capture::RenderResult& result) {
+  result.onAxisEnergy = sumOf(sink.steady());
+  const AxisLossFractions f = axisLossFractions(result);
+  const TimeAxis& axis = job.settings.time;
+  const bool before = f.before > kWindowLossWarning, after = f.after > kWindowLossWarning;
+  if (before || after) {
+    std::vector<std::string> sides;
+    if (after)
+      sides.push_back(percent(f.after) + " of the light arrives after the last bin (" +
+                      ns(axis.end_s()) + ")");
+    if (before)
+      sides.push_back(percent(f.before) + " of the light arrives before the first bin (" +
+                      ns(axis.start_s) + ")");
+    const capture::ArrivalBounds b = capture::arrivalBounds(job, surfaceVertices(config));
+    warnOrThrow(config, "time",
+                sides[0] + (sides.size() > 1 ? " and " + sides[1] : "") +
+                    suggestAxis(axis, b, before, after, !(result.onAxisEnergy > 0.0)));
+  }
+  if (sink.volume() != nullptr) checkSensorWindows(config, *sink.volume());
+}
+
+void checkSensorWindows(const config::RunConfig& config, const TransientVolume& volume) {
+  for (std::size_t i = 0; i < config.sensors.size(); ++i) {
+    const sensors::SensorSpec& spec = config.sensors[i];
+    const double lost = sensors::windowLossFraction(spec.params, volume);
+    if (lost <= kWindowLossWarning) continue;
+    warnOrThrow(config, "sensors[" + std::to_string(i) + "]",
+                "sensor '" + spec.name + "' (" + sensors::sensorTypeName(spec.params) +
+                    "): its instrument window drops " + percent(lost) +
+                    " of the light it is given; without bin_offset and bins it takes the "
+                    "render's time axis (" +
+                    ns(volume.axis().start_s) + " .. " + ns(volume.axis().end_s()) + ")");
+  }
+}
+
+}  // namespace tofsim::pipeline
