@@ -10,6 +10,7 @@
 #include <set>
 #include <sstream>
 
+#include "batch/BatchTestSupport.h"
 #include "pipeline/CliRun.h"
 #include "support/TempDir.h"
 #include "tofsim/imaging/Video.h"
@@ -21,15 +22,7 @@ namespace fs = std::filesystem;
 using test::CommandResult;
 using test::runCli;
 
-// The demo shrunk to a fraction of a second per run, no sensors.
-const char* kTiny =
-    "set:\n"
-    "  camera.resolution: [16, 16]\n"
-    "  time.bins: 40\n"
-    "  render.shadow_map_resolution: 64\n"
-    "  render.indirect.rsm_resolution: 4\n"
-    "  render.indirect.points_per_vpl: 100\n"
-    "  sensors: []\n";
+const char* const kTiny = test::kTinyRunSet;
 
 // The status column of `name`'s row in the summary table, or "" when absent.
 std::string statusOf(const std::string& output, const std::string& name) {
