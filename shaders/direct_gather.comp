@@ -5,16 +5,16 @@
 // the full optical path eta * (|l - x| + |x - c|), or eta * |l - x| when the
 // camera delay is unwarped. Each bin has this thread as its only writer, so
 // the result does not depend on scheduling.
-layout(local_size_x = 64) in;
+layout(local_size_x = TOFSIM_WORK_GROUP_SIZE) in;
 
 #include "light.glsl"
 
-layout(binding = 0) uniform sampler2D uGPosition;
-layout(binding = 1) uniform sampler2D uGNormal;
-layout(binding = 2) uniform sampler2D uGAlbedo;
+layout(binding = TOFSIM_UNIT_G_POSITION) uniform sampler2D uGPosition;
+layout(binding = TOFSIM_UNIT_G_NORMAL) uniform sampler2D uGNormal;
+layout(binding = TOFSIM_UNIT_G_ALBEDO) uniform sampler2D uGAlbedo;
 
-layout(std430, binding = 0) buffer DirectVolume { float direct[]; };
-layout(std430, binding = 2) buffer OutsideAxis { float outside[]; };  // [2 * pixel]: before, [2 * pixel + 1]: after
+layout(std430, binding = TOFSIM_SSBO_DIRECT_VOLUME) buffer DirectVolume { float direct[]; };
+layout(std430, binding = TOFSIM_SSBO_OUTSIDE_AXIS) buffer OutsideAxis { float outside[]; };  // [2 * pixel]: before, [2 * pixel + 1]: after
 
 uniform uint uFirstPixel;
 uniform uint uPixelCount;
@@ -27,7 +27,7 @@ uniform int uCameraUnwarp;
 uniform vec3 uCameraPosition_world;
 
 void main() {
-  uint local = gl_GlobalInvocationID.y * (gl_NumWorkGroups.x * 64u) + gl_GlobalInvocationID.x;
+  uint local = gl_GlobalInvocationID.y * (gl_NumWorkGroups.x * gl_WorkGroupSize.x) + gl_GlobalInvocationID.x;
   if (local >= uPixelCount) return;
   uint pixel = uFirstPixel + local;
   ivec2 xy = ivec2(int(pixel % uint(uImageWidth)), int(pixel / uint(uImageWidth)));
@@ -53,7 +53,7 @@ void main() {
     outside[2u * local + (bin < 0 ? 0u : 1u)] += radiance.r + radiance.g + radiance.b;
     return;
   }
-  uint base = (local * uint(uBins) + uint(bin)) * 3u;
+  uint base = (local * uint(uBins) + uint(bin)) * uint(TOFSIM_CHANNELS);
   direct[base + 0u] = radiance.r;
   direct[base + 1u] = radiance.g;
   direct[base + 2u] = radiance.b;

@@ -6,6 +6,6 @@ in vec2 vUv;
 
 uniform vec3 uViewpoint_world;
 
-layout(location = 0) out float outDistance_m;
+layout(location = TOFSIM_OUT_POSITION) out float outDistance_m;
 
 void main() { outDistance_m = length(vPosition_world - uViewpoint_world); }

@@ -9,11 +9,11 @@ in vec2 vUv;
 uniform vec3 uViewpoint_world;
 uniform vec3 uAlbedoFactor;
 uniform int uHasAlbedoTexture;
-layout(binding = 0) uniform sampler2D uAlbedoTexture;
+layout(binding = TOFSIM_UNIT_ALBEDO_TEXTURE) uniform sampler2D uAlbedoTexture;
 
-layout(location = 0) out vec4 outPosition;  // xyz world, w = 1 where a surface was hit
-layout(location = 1) out vec4 outNormal;    // xyz unit world normal facing the viewpoint
-layout(location = 2) out vec4 outAlbedo;    // rgb diffuse albedo
+layout(location = TOFSIM_OUT_POSITION) out vec4 outPosition;  // xyz world, w = 1 where a surface was hit
+layout(location = TOFSIM_OUT_NORMAL) out vec4 outNormal;    // xyz unit world normal facing the viewpoint
+layout(location = TOFSIM_OUT_ALBEDO) out vec4 outAlbedo;    // rgb diffuse albedo
 
 void main() {
   vec3 n = normalize(vNormal_world);

@@ -1,9 +1,9 @@
 #version 450 core
 // Transforms world-space vertices; shared by the camera G-buffer, the light's
 // shadow map and the reflective shadow map passes.
-layout(location = 0) in vec3 inPosition_world;
-layout(location = 1) in vec3 inNormal_world;
-layout(location = 2) in vec2 inUv;
+layout(location = TOFSIM_ATTRIB_POSITION) in vec3 inPosition_world;
+layout(location = TOFSIM_ATTRIB_NORMAL) in vec3 inNormal_world;
+layout(location = TOFSIM_ATTRIB_UV) in vec2 inUv;
 
 uniform mat4 uViewProjection;
 

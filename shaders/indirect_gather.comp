@@ -4,25 +4,25 @@
 // full optical path  t_l + eta (|x_l - x| + |x - c|). Being the only writer of
 // its pixel's bins, and adding in a fixed order, makes the sum reproducible
 // bit for bit whatever the batch and segment sizes.
-layout(local_size_x = 64) in;
+layout(local_size_x = TOFSIM_WORK_GROUP_SIZE) in;
 
 #include "vpl.glsl"
 #ifdef EXACT_VISIBILITY
 #include "scene_geometry.glsl"
 #else
-layout(std430, binding = 7) readonly buffer Ism { float ism[]; };
+layout(std430, binding = TOFSIM_SSBO_ISM) readonly buffer Ism { float ism[]; };
 uniform uint uVplStride;
 uniform int uIsmResolution;
 #endif
 
 const float PI = 3.14159265358979323846;
 
-layout(binding = 0) uniform sampler2D uGPosition;
-layout(binding = 1) uniform sampler2D uGNormal;
-layout(binding = 2) uniform sampler2D uGAlbedo;
+layout(binding = TOFSIM_UNIT_G_POSITION) uniform sampler2D uGPosition;
+layout(binding = TOFSIM_UNIT_G_NORMAL) uniform sampler2D uGNormal;
+layout(binding = TOFSIM_UNIT_G_ALBEDO) uniform sampler2D uGAlbedo;
 
-layout(std430, binding = 1) buffer IndirectVolume { float indirect[]; };
-layout(std430, binding = 2) buffer OutsideAxis { float outside[]; };  // [2 * pixel]: before, [2 * pixel + 1]: after
+layout(std430, binding = TOFSIM_SSBO_INDIRECT_VOLUME) buffer IndirectVolume { float indirect[]; };
+layout(std430, binding = TOFSIM_SSBO_OUTSIDE_AXIS) buffer OutsideAxis { float outside[]; };  // [2 * pixel]: before, [2 * pixel + 1]: after
 
 uniform uint uFirstPixel;
 uniform uint uPixelCount;
@@ -45,7 +45,7 @@ uniform float uSceneScale_m;
 // comes within a factor of two raises this flag so the render fails loudly
 // instead of losing light.
 const uint kLoopTripLimit = 30000u;
-layout(std430, binding = 0) buffer LoopGuard { uint loopLimitHit; };
+layout(std430, binding = TOFSIM_SSBO_LOOP_GUARD) buffer LoopGuard { uint loopLimitHit; };
 
 bool visible(uint ismIndex, Vpl vpl, vec3 x, vec3 n, vec3 d, float dist, inout uint iterations) {
 #ifdef EXACT_VISIBILITY
@@ -62,7 +62,7 @@ bool visible(uint ismIndex, Vpl vpl, vec3 x, vec3 n, vec3 d, float dist, inout u
 }
 
 void main() {
-  uint local = gl_GlobalInvocationID.y * (gl_NumWorkGroups.x * 64u) + gl_GlobalInvocationID.x;
+  uint local = gl_GlobalInvocationID.y * (gl_NumWorkGroups.x * gl_WorkGroupSize.x) + gl_GlobalInvocationID.x;
   if (local >= uPixelCount) return;
   uint pixel = uFirstPixel + local;
   ivec2 xy = ivec2(int(pixel % uint(uImageWidth)), int(pixel / uint(uImageWidth)));
@@ -102,7 +102,7 @@ void main() {
       }
       continue;
     }
-    uint i = (base + uint(bin)) * 3u;
+    uint i = (base + uint(bin)) * uint(TOFSIM_CHANNELS);
     indirect[i + 0u] += radiance.r;
     indirect[i + 1u] += radiance.g;
     indirect[i + 2u] += radiance.b;

@@ -1,9 +1,9 @@
 #version 450 core
 // Pull step of pull-push hole filling: a texel of the coarser level is the
 // mean of its finer children that hold a depth (empty = +inf).
-layout(local_size_x = 64) in;
+layout(local_size_x = TOFSIM_WORK_GROUP_SIZE) in;
 
-layout(std430, binding = 7) buffer Ism { float ism[]; };
+layout(std430, binding = TOFSIM_SSBO_ISM) buffer Ism { float ism[]; };
 
 uniform uint uVplCount;
 uniform uint uVplStride;
@@ -13,7 +13,7 @@ uniform uint uCoarseOffset;
 uniform int uCoarseSize;
 
 void main() {
-  uint id = gl_GlobalInvocationID.y * (gl_NumWorkGroups.x * 64u) + gl_GlobalInvocationID.x;
+  uint id = gl_GlobalInvocationID.y * (gl_NumWorkGroups.x * gl_WorkGroupSize.x) + gl_GlobalInvocationID.x;
   uint perVpl = uint(uCoarseSize * uCoarseSize);
   if (id >= uVplCount * perVpl) return;
   uint v = id / perVpl, t = id % perVpl;

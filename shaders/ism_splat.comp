@@ -4,13 +4,13 @@
 // into its paraboloid depth map. atomicMin on the distance's bits (positive
 // floats order like unsigned integers) makes the result independent of
 // thread order.
-layout(local_size_x = 64) in;
+layout(local_size_x = TOFSIM_WORK_GROUP_SIZE) in;
 
 #include "random.glsl"
 #include "scene_geometry.glsl"
 #include "vpl.glsl"
 
-layout(std430, binding = 7) buffer Ism { uint ism[]; };
+layout(std430, binding = TOFSIM_SSBO_ISM) buffer Ism { uint ism[]; };
 
 uniform uint uFirstVpl;
 uniform uint uVplCount;
@@ -20,7 +20,7 @@ uniform int uIsmResolution;
 uniform uint uSeed;
 
 void main() {
-  uint id = gl_GlobalInvocationID.y * (gl_NumWorkGroups.x * 64u) + gl_GlobalInvocationID.x;
+  uint id = gl_GlobalInvocationID.y * (gl_NumWorkGroups.x * gl_WorkGroupSize.x) + gl_GlobalInvocationID.x;
   if (id >= uVplCount * uPointsPerVpl) return;
   uint local = id / uPointsPerVpl;
   uint j = id % uPointsPerVpl;

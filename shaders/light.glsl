@@ -11,7 +11,7 @@ uniform float uSpotCosInner;
 
 uniform mat4 uShadowViewProjection[6];
 uniform int uShadowResolution;
-layout(binding = 3) uniform sampler2DArray uShadowMap;
+layout(binding = TOFSIM_UNIT_SHADOW_MAP) uniform sampler2DArray uShadowMap;
 
 float spotProfile(vec3 direction) {
   if (uLightIsSpot == 0) return 1.0;

@@ -1,9 +1,9 @@
 // The scene as a triangle soup in BVH order (TriangleSoup.cpp): uniform
 // sampling by area and any-hit occlusion along a segment.
-layout(std430, binding = 4) readonly buffer Corners { vec4 corners[]; };
-layout(std430, binding = 5) readonly buffer AreaCdf { float areaCdf[]; };
+layout(std430, binding = TOFSIM_SSBO_CORNERS) readonly buffer Corners { vec4 corners[]; };
+layout(std430, binding = TOFSIM_SSBO_AREA_CDF) readonly buffer AreaCdf { float areaCdf[]; };
 struct BvhNode { vec4 lo; vec4 hi; };
-layout(std430, binding = 6) readonly buffer Bvh { BvhNode bvh[]; };
+layout(std430, binding = TOFSIM_SSBO_BVH) readonly buffer Bvh { BvhNode bvh[]; };
 
 uniform uint uTriangleCount;
 

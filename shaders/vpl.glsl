@@ -5,7 +5,7 @@ struct Vpl {
   vec4 normal;        // xyz unit normal on the lit side
   vec4 flux;          // rgb: albedo * flux / pi, W/sr (cosine-weighted intensity)
 };
-layout(std430, binding = 3) readonly buffer Vpls { Vpl vpls[]; };
+layout(std430, binding = TOFSIM_SSBO_VPLS) readonly buffer Vpls { Vpl vpls[]; };
 
 // Orthonormal basis around n (Duff et al. 2017), identical wherever used.
 mat3 basisAround(vec3 n) {

@@ -37,6 +37,7 @@ void writeBytes(const fs::path& file, const std::string& bytes) {
 class FuzzRegressionTest : public test::TempDirTest {
  protected:
   // Runs `load` on every file of tests/regressions/<kind>; returns how many.
+  // Callers assert at least one, so an emptied corpus cannot pass unnoticed.
   template <typename Load>
   int forEachInput(const std::string& kind, Load load) {
     int n = 0;
@@ -55,36 +56,40 @@ class FuzzRegressionTest : public test::TempDirTest {
 
 TEST_F(FuzzRegressionTest, Configs) {
   fs::create_directory_symlink(fs::path(TOFSIM_SOURCE_DIR) / "configs" / "scenes", dir_ / "scenes");
-  forEachInput("config", [&](const std::string& bytes, const fs::path&) {
+  const int inputs = forEachInput("config", [&](const std::string& bytes, const fs::path&) {
     writeBytes(dir_ / "input.yaml", bytes);
     config::loadRunConfig(dir_ / "input.yaml", {});
   });
+  EXPECT_GT(inputs, 0);
 }
 
 TEST_F(FuzzRegressionTest, GltfScenes) {
-  forEachInput("gltf", [&](const std::string& bytes, const fs::path&) {
+  const int inputs = forEachInput("gltf", [&](const std::string& bytes, const fs::path&) {
     const bool binary = bytes.rfind("glTF", 0) == 0;
     const fs::path file = dir_ / (binary ? "input.glb" : "input.gltf");
     writeBytes(file, bytes);
     scene::loadGltf(file);
   });
+  EXPECT_GT(inputs, 0);
 }
 
 TEST_F(FuzzRegressionTest, NpyFiles) {
-  forEachInput("npy", [&](const std::string& bytes, const fs::path&) {
+  const int inputs = forEachInput("npy", [&](const std::string& bytes, const fs::path&) {
     writeBytes(dir_ / "input.npy", bytes);
     io::readNpy(dir_ / "input.npy");
   });
+  EXPECT_GT(inputs, 0);
 }
 
 // As in fuzz/fuzz_saved_volume.cpp: transient.json, a NUL byte, transient.npy.
 TEST_F(FuzzRegressionTest, SavedVolumes) {
-  forEachInput("saved_volume", [&](const std::string& bytes, const fs::path&) {
+  const int inputs = forEachInput("saved_volume", [&](const std::string& bytes, const fs::path&) {
     const std::size_t nul = bytes.find('\0');
     writeBytes(dir_ / "transient.json", bytes.substr(0, nul));
     writeBytes(dir_ / "transient.npy", nul == std::string::npos ? "" : bytes.substr(nul + 1));
     pipeline::loadSavedVolume(dir_);
   });
+  EXPECT_GT(inputs, 0);
 }
 
 }  // namespace

@@ -32,8 +32,7 @@ TEST_F(NonFiniteOutputTest, NonFiniteValuesAreZeroedAndCounted) {
   pipeline::OutputSink sink(dir_, output, W, H, axis, /*keepInMemory=*/true, true);
   capture::Segment segment;
   segment.pixelCount = 2;
-  segment.direct = direct.data();
-  segment.indirect = indirect.data();
+  segment.components = {{capture::kDirect, direct.data()}, {capture::kIndirect, indirect.data()}};
   sink.consume(segment);
   sink.commit();
 

@@ -48,8 +48,10 @@ OutputSink::OutputSink(const std::filesystem::path& directory, const config::Out
 void OutputSink::consume(const capture::Segment& segment) {
   const std::size_t pixelFloats = static_cast<std::size_t>(axis_.bins) * kChannels;
   const std::size_t floats = segment.pixelCount * pixelFloats;
-  directScratch_.assign(segment.direct, segment.direct + floats);
-  indirectScratch_.assign(segment.indirect, segment.indirect + floats);
+  const float* direct = segment.component(capture::kDirect);
+  const float* indirect = segment.component(capture::kIndirect);
+  directScratch_.assign(direct, direct + floats);
+  indirectScratch_.assign(indirect, indirect + floats);
   nonFinite_ += zeroNonFinite(directScratch_.data(), floats);
   nonFinite_ += zeroNonFinite(indirectScratch_.data(), floats);
   scratch_.resize(floats);

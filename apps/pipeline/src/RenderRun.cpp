@@ -12,9 +12,8 @@
 #include "tofsim/pipeline/OutputEstimate.h"
 #include "tofsim/pipeline/OutputSink.h"
 #include "tofsim/pipeline/Progress.h"
+#include "tofsim/pipeline/RendererFactory.h"
 #include "tofsim/pipeline/SenseRun.h"
-#include "tofsim/reference/ReferenceRenderer.h"
-#include "tofsim/render/TransientRenderer.h"
 #include "tofsim/scene/GltfLoader.h"
 #include "tofsim/util/AtomicFile.h"
 #include "tofsim/util/Error.h"
@@ -121,22 +120,13 @@ RunSummary runRender(const config::RunConfig& config, const RunOptions& options)
 }
 
 namespace {
-// Renders with the configured renderer: transient instant radiosity on GL, or
-// the CPU reference path tracer (which needs no GL context).
+// Renders with the configured renderer (see RendererFactory.h).
 capture::RenderResult renderVolume(const config::RunConfig& config, const capture::RenderJob& job,
                                    const RunOptions& options, capture::SegmentSink& sink,
                                    const capture::ProgressCallback& progress, std::string& device) {
-  if (config.renderer == config::RendererKind::Reference) {
-    reference::ReferenceSettings settings;
-    settings.bounces = config.reference.bounces;
-    settings.samples_per_pixel = config.reference.samples_per_pixel;
-    settings.threads = config.reference.threads;
-    device = "CPU reference path tracer";
-    return reference::ReferenceRenderer(settings).render(job, sink, progress);
-  }
-  gl::Context context(options.eglPlatform);
-  device = context.description();
-  return render::TransientRenderer(context).render(job, sink, progress);
+  const std::unique_ptr<capture::Renderer> renderer = makeRenderer(config, options.eglPlatform);
+  device = renderer->description();
+  return renderer->render(job, sink, progress);
 }
 
 // Writes every output into `dir`, the staging folder.

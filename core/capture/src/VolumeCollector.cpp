@@ -1,6 +1,6 @@
-#include <algorithm>
-
 #include "tofsim/capture/VolumeCollector.h"
+
+#include <algorithm>
 
 namespace tofsim::capture {
 
@@ -19,8 +19,8 @@ VolumeCollector::VolumeCollector(int32_t width, int32_t height, const TimeAxis& 
 void VolumeCollector::consume(const Segment& segment) {
   const std::size_t offset = segment.firstPixel * direct.pixelStride();
   const std::size_t floats = segment.pixelCount * direct.pixelStride();
-  std::copy_n(segment.direct, floats, direct.data() + offset);
-  std::copy_n(segment.indirect, floats, indirect.data() + offset);
+  std::copy_n(segment.component(kDirect), floats, direct.data() + offset);
+  std::copy_n(segment.component(kIndirect), floats, indirect.data() + offset);
 }
 
 TransientVolume VolumeCollector::total() const {

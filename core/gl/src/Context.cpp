@@ -51,7 +51,8 @@ EGLDisplay openDeviceDisplay(const char* clientExtensions, std::string& why) {
   if (!hasToken(clientExtensions, "EGL_EXT_platform_device") ||
       !(hasToken(clientExtensions, "EGL_EXT_device_enumeration") ||
         hasToken(clientExtensions, "EGL_EXT_device_base"))) {
-    why = "EGL client extensions EGL_EXT_platform_device and EGL_EXT_device_enumeration are missing";
+    why =
+        "EGL client extensions EGL_EXT_platform_device and EGL_EXT_device_enumeration are missing";
     return EGL_NO_DISPLAY;
   }
   auto queryDevices = eglProc<PFNEGLQUERYDEVICESEXTPROC>("eglQueryDevicesEXT");
@@ -93,13 +94,69 @@ std::string eglErrorText() {
   return buffer;
 }
 
+// Terminates an initialized display on every failure path after
+// eglInitialize; the Context takes it with release() once it is complete.
+class InitializedDisplay {
+ public:
+  explicit InitializedDisplay(EGLDisplay display) : display_(display) {}
+  ~InitializedDisplay() {
+    if (display_ != EGL_NO_DISPLAY) eglTerminate(display_);
+  }
+  InitializedDisplay(const InitializedDisplay&) = delete;
+  InitializedDisplay& operator=(const InitializedDisplay&) = delete;
+  EGLDisplay release() {
+    EGLDisplay d = display_;
+    display_ = EGL_NO_DISPLAY;
+    return d;
+  }
+
+ private:
+  EGLDisplay display_;
+};
+
+// A current OpenGL 4.5 core context on an initialized display.
+EGLContext makeCurrentContext(EGLDisplay display, const std::string& platformName) {
+  if (!eglBindAPI(EGL_OPENGL_API)) throw InputError("eglBindAPI(EGL_OPENGL_API) failed");
+  const EGLint configAttribs[] = {EGL_RENDERABLE_TYPE, EGL_OPENGL_BIT, EGL_NONE};
+  EGLConfig config = nullptr;
+  EGLint configCount = 0;
+  const bool noConfig =
+      hasToken(eglQueryString(display, EGL_EXTENSIONS), "EGL_KHR_no_config_context");
+  if (!noConfig &&
+      (!eglChooseConfig(display, configAttribs, &config, 1, &configCount) || configCount == 0)) {
+    throw InputError("no EGL config supports desktop OpenGL on the " + platformName + " platform");
+  }
+  const EGLint contextAttribs[] = {EGL_CONTEXT_MAJOR_VERSION,
+                                   4,
+                                   EGL_CONTEXT_MINOR_VERSION,
+                                   5,
+                                   EGL_CONTEXT_OPENGL_PROFILE_MASK,
+                                   EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT,
+                                   EGL_NONE};
+  EGLContext context = eglCreateContext(display, noConfig ? EGL_NO_CONFIG_KHR : config,
+                                        EGL_NO_CONTEXT, contextAttribs);
+  if (context == EGL_NO_CONTEXT) {
+    throw InputError("the " + platformName +
+                     " EGL platform cannot create an OpenGL 4.5 core context (" + eglErrorText() +
+                     ")");
+  }
+  if (!eglMakeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, context)) {
+    const std::string err = eglErrorText();
+    eglDestroyContext(display, context);
+    throw InputError("eglMakeCurrent without a surface failed (" + err +
+                     "; EGL_KHR_surfaceless_context is required)");
+  }
+  return context;
+}
+
 }  // namespace
 
 Context::Context(EglPlatform platform) {
   const char* clientExtensions = eglQueryString(EGL_NO_DISPLAY, EGL_EXTENSIONS);
   if (!clientExtensions) {
-    throw InputError("no EGL client extensions: libEGL is missing or has no vendor library "
-                     "(install libegl1 and libegl-mesa0, or the GPU driver's EGL)");
+    throw InputError(
+        "no EGL client extensions: libEGL is missing or has no vendor library "
+        "(install libegl1 and libegl-mesa0, or the GPU driver's EGL)");
   }
   std::string whyDevice, whySurfaceless, platformName;
   EGLDisplay display = EGL_NO_DISPLAY;
@@ -121,39 +178,12 @@ Context::Context(EglPlatform platform) {
   }
   EGLint major = 0, minor = 0;
   if (!eglInitialize(display, &major, &minor)) {
-    throw InputError("eglInitialize failed on the " + platformName + " platform: " + eglErrorText());
+    throw InputError("eglInitialize failed on the " + platformName +
+                     " platform: " + eglErrorText());
   }
-  display_ = display;
-  if (!eglBindAPI(EGL_OPENGL_API)) throw InputError("eglBindAPI(EGL_OPENGL_API) failed");
-
-  const EGLint configAttribs[] = {EGL_RENDERABLE_TYPE, EGL_OPENGL_BIT, EGL_NONE};
-  EGLConfig config = nullptr;
-  EGLint configCount = 0;
-  const bool noConfig = hasToken(eglQueryString(display, EGL_EXTENSIONS), "EGL_KHR_no_config_context");
-  if (!noConfig && (!eglChooseConfig(display, configAttribs, &config, 1, &configCount) || configCount == 0)) {
-    throw InputError("no EGL config supports desktop OpenGL on the " + platformName + " platform");
-  }
-  const EGLint contextAttribs[] = {EGL_CONTEXT_MAJOR_VERSION, 4, EGL_CONTEXT_MINOR_VERSION, 5,
-                                   EGL_CONTEXT_OPENGL_PROFILE_MASK,
-                                   EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT, EGL_NONE};
-  EGLContext context = eglCreateContext(display, noConfig ? EGL_NO_CONFIG_KHR : config,
-                                        EGL_NO_CONTEXT, contextAttribs);
-  if (context == EGL_NO_CONTEXT) {
-    const std::string err = eglErrorText();
-    eglTerminate(display);
-    display_ = nullptr;
-    throw InputError("the " + platformName + " EGL platform cannot create an OpenGL 4.5 core context (" +
-                     err + ")");
-  }
-  context_ = context;
-  if (!eglMakeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, context)) {
-    const std::string err = eglErrorText();
-    eglDestroyContext(display, context);
-    eglTerminate(display);
-    context_ = display_ = nullptr;
-    throw InputError("eglMakeCurrent without a surface failed (" + err +
-                     "; EGL_KHR_surfaceless_context is required)");
-  }
+  InitializedDisplay initialized(display);
+  context_ = makeCurrentContext(display, platformName);
+  display_ = initialized.release();
 
   GLint64 ssbo = 0;
   glGetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &ssbo);
@@ -185,7 +215,8 @@ bool Context::hasExtension(const std::string& name) const {
   GLint count = 0;
   glGetIntegerv(GL_NUM_EXTENSIONS, &count);
   for (GLint i = 0; i < count; ++i) {
-    const auto* ext = reinterpret_cast<const char*>(glGetStringi(GL_EXTENSIONS, static_cast<GLuint>(i)));
+    const auto* ext =
+        reinterpret_cast<const char*>(glGetStringi(GL_EXTENSIONS, static_cast<GLuint>(i)));
     if (ext && name == ext) return true;
   }
   return false;

@@ -1,9 +1,8 @@
 #include "tofsim/gl/Program.h"
 
+#include <glm/gtc/type_ptr.hpp>
 #include <map>
 #include <sstream>
-
-#include <glm/gtc/type_ptr.hpp>
 
 #include "tofsim/gl/Check.h"
 #include "tofsim/util/Error.h"
@@ -30,7 +29,8 @@ namespace {
 // the #version line.
 std::string assemble(std::string_view fileName,
                      const std::vector<std::pair<std::string, std::string>>& defines, int depth) {
-  if (depth > 8) throw InputError("shaders/" + std::string(fileName) + ": #include nested too deep");
+  if (depth > 8)
+    throw InputError("shaders/" + std::string(fileName) + ": #include nested too deep");
   std::istringstream in(embeddedShaderSource(fileName));
   std::string out;
   std::string line;
@@ -99,9 +99,29 @@ Program::Program(const std::vector<ShaderStage>& stages,
   TOFSIM_GL_CHECK("Program link");
 }
 
-GLint Program::location(const char* name) const { return glGetUniformLocation(id(), name); }
+namespace {
+#ifdef NDEBUG
+bool strictUniforms_ = false;
+#else
+bool strictUniforms_ = true;
+#endif
+}  // namespace
 
-void Program::set(const char* name, int value) const { glProgramUniform1i(id(), location(name), value); }
+void Program::setStrictUniforms(bool strict) { strictUniforms_ = strict; }
+bool Program::strictUniforms() { return strictUniforms_; }
+
+GLint Program::location(const char* name) const {
+  const GLint location = glGetUniformLocation(id(), name);
+  if (location < 0 && strictUniforms_) {
+    checkFailed("location >= 0", __FILE__, __LINE__,
+                std::string("uniform ") + name + " is not an active uniform of the program");
+  }
+  return location;
+}
+
+void Program::set(const char* name, int value) const {
+  glProgramUniform1i(id(), location(name), value);
+}
 void Program::set(const char* name, unsigned value) const {
   glProgramUniform1ui(id(), location(name), value);
 }

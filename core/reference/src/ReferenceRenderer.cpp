@@ -10,6 +10,7 @@
 #include "PathIntegrator.h"
 #include "RayScene.h"
 #include "tofsim/capture/DirectLightView.h"
+#include "tofsim/ir/SegmentStream.h"
 #include "tofsim/util/Error.h"
 
 namespace tofsim::reference {
@@ -17,8 +18,6 @@ namespace tofsim::reference {
 using namespace capture;  // the job description types
 
 namespace {
-
-constexpr int kChannels = 3;
 
 void validate(const ReferenceSettings& s, const RenderJob& job) {
   TOFSIM_CHECK(job.scene != nullptr);
@@ -74,6 +73,8 @@ DirectLightView lightSeenByCamera(const RenderJob& job, const RayScene& scene) {
 
 ReferenceRenderer::ReferenceRenderer(ReferenceSettings settings) : settings_(settings) {}
 
+std::string ReferenceRenderer::description() const { return "CPU reference path tracer"; }
+
 RenderResult ReferenceRenderer::render(const RenderJob& job, SegmentSink& sink,
                                        const ProgressCallback& progress) const {
   const auto started = std::chrono::steady_clock::now();
@@ -91,55 +92,44 @@ RenderResult ReferenceRenderer::render(const RenderJob& job, SegmentSink& sink,
   result.depth_m = Image(camera.width, camera.height, 1);
   const std::size_t pixelFloats = static_cast<std::size_t>(axis.bins) * kChannels;
   const int32_t rows = rowsPerSegment(job, threads);
-  const std::size_t segmentCount = static_cast<std::size_t>((camera.height + rows - 1) / rows);
-  std::vector<float> direct(pixelFloats * camera.width * rows);
-  std::vector<float> indirect(direct.size());
+  const ir::SegmentPlan plan = ir::fixedSegments(
+      static_cast<std::size_t>(camera.width) * camera.height,
+      static_cast<std::size_t>(rows) * camera.width, pixelFloats * 2 * sizeof(float));
   std::vector<AxisLoss> outside(static_cast<std::size_t>(camera.width) * rows);
 
-  for (std::size_t s = 0; s < segmentCount; ++s) {
-    const int32_t firstRow = static_cast<int32_t>(s) * rows;
-    const int32_t rowCount = std::min(rows, camera.height - firstRow);
-    const std::size_t pixelCount = static_cast<std::size_t>(rowCount) * camera.width;
-    std::fill_n(direct.begin(), pixelCount * pixelFloats, 0.0f);
-    std::fill_n(indirect.begin(), pixelCount * pixelFloats, 0.0f);
-
-    // Workers take rows dynamically; each pixel writes only its own slots and
-    // draws from its own generator, so the bytes do not depend on scheduling.
-    std::atomic<int32_t> nextRow{0};
-    const auto work = [&] {
-      std::vector<double> scratch;
-      for (int32_t r = nextRow++; r < rowCount; r = nextRow++) {
-        for (int32_t x = 0; x < camera.width; ++x) {
-          const std::size_t local = static_cast<std::size_t>(r) * camera.width + x;
-          PixelOutput out;
-          out.direct = direct.data() + local * pixelFloats;
-          out.indirect = indirect.data() + local * pixelFloats;
-          integrator.renderPixel(x, firstRow + r, out, scratch);
-          result.depth_m.at(firstRow + r, x, 0) = out.depth_m;
-          outside[local] = out.offAxis;
-        }
-      }
-    };
-    std::vector<std::thread> pool;
-    const int32_t helpers = std::min(threads, rowCount) - 1;
-    for (int32_t t = 0; t < helpers; ++t) pool.emplace_back(work);
-    work();
-    for (std::thread& t : pool) t.join();
-
-    const std::size_t firstPixel = static_cast<std::size_t>(firstRow) * camera.width;
-    // Summed in pixel order, so the total is independent of the thread count.
-    for (std::size_t i = 0; i < pixelCount; ++i) result.offAxis += outside[i];
-    result.offAxis += lightView.addTo(firstPixel, pixelCount, axis, kChannels, direct.data());
-
-    Segment segment;
-    segment.firstPixel = firstPixel;
-    segment.pixelCount = pixelCount;
-    segment.direct = direct.data();
-    segment.indirect = indirect.data();
-    sink.consume(segment);
-    if (progress) progress(s + 1, segmentCount, "segments");
-  }
-  result.segments = segmentCount;
+  ir::streamSegments(
+      plan, axis, {kDirect, kIndirect}, lightView, sink, result.offAxis,
+      [&](const ir::SegmentBuffers& segment) {
+        // Segments are whole rows: pixelsPerSegment is a multiple of the width.
+        const int32_t firstRow = static_cast<int32_t>(segment.pixels.first / camera.width);
+        const int32_t rowCount = static_cast<int32_t>(segment.pixels.count / camera.width);
+        // Workers take rows dynamically; each pixel writes only its own slots and
+        // draws from its own generator, so the bytes do not depend on scheduling.
+        std::atomic<int32_t> nextRow{0};
+        const auto work = [&] {
+          std::vector<double> scratch;
+          for (int32_t r = nextRow++; r < rowCount; r = nextRow++) {
+            for (int32_t x = 0; x < camera.width; ++x) {
+              const std::size_t local = static_cast<std::size_t>(r) * camera.width + x;
+              PixelOutput out;
+              out.direct = segment.components[0] + local * pixelFloats;
+              out.indirect = segment.components[1] + local * pixelFloats;
+              integrator.renderPixel(x, firstRow + r, out, scratch);
+              result.depth_m.at(firstRow + r, x, 0) = out.depth_m;
+              outside[local] = out.offAxis;
+            }
+          }
+        };
+        std::vector<std::thread> pool;
+        const int32_t helpers = std::min(threads, rowCount) - 1;
+        for (int32_t t = 0; t < helpers; ++t) pool.emplace_back(work);
+        work();
+        for (std::thread& t : pool) t.join();
+        // Summed in pixel order, so the total is independent of the thread count.
+        for (std::size_t i = 0; i < segment.pixels.count; ++i) result.offAxis += outside[i];
+        if (progress) progress(segment.index + 1, plan.segmentCount, "segments");
+      });
+  result.segments = plan.segmentCount;
   result.seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   return result;

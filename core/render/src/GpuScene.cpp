@@ -1,5 +1,6 @@
 #include "GpuScene.h"
 
+#include "GpuContract.h"
 #include "tofsim/gl/Check.h"
 #include "tofsim/util/Error.h"
 
@@ -37,9 +38,9 @@ GpuScene::GpuScene(const scene::Scene& scene) : scene_(scene) {
 
   vertexArray_.setVertexBuffer(vertices_, sizeof(Vertex));
   vertexArray_.setElementBuffer(indices_);
-  vertexArray_.setFloatAttribute(0, 3, offsetof(Vertex, position));
-  vertexArray_.setFloatAttribute(1, 3, offsetof(Vertex, normal));
-  vertexArray_.setFloatAttribute(2, 2, offsetof(Vertex, uv));
+  vertexArray_.setFloatAttribute(gpu::kPositionAttribute, 3, offsetof(Vertex, position));
+  vertexArray_.setFloatAttribute(gpu::kNormalAttribute, 3, offsetof(Vertex, normal));
+  vertexArray_.setFloatAttribute(gpu::kUvAttribute, 2, offsetof(Vertex, uv));
   for (const scene::Texture& texture : scene.textures) {
     gl::Texture t = gl::Texture::create2D(GL_RGB32F, texture.width, texture.height);
     t.upload2D(GL_RGB, GL_FLOAT, texture.rgb.data());
@@ -51,19 +52,25 @@ GpuScene::GpuScene(const scene::Scene& scene) : scene_(scene) {
   TOFSIM_GL_CHECK("GpuScene upload");
 }
 
-void GpuScene::draw(const gl::Program& program) const {
+void GpuScene::draw(const gl::Program& program, Materials materials) const {
   vertexArray_.bind();
   for (const DrawRange& range : ranges_) {
-    const scene::Material& material = scene_.materials.at(static_cast<std::size_t>(range.material));
-    program.set("uAlbedoFactor", material.albedo);
-    const bool textured = material.albedoTexture >= 0;
-    program.set("uHasAlbedoTexture", textured ? 1 : 0);
-    if (textured) textures_.at(static_cast<std::size_t>(material.albedoTexture)).bindUnit(0);
+    if (materials == Materials::Set) setMaterial(program, range.material);
     glDrawElementsBaseVertex(GL_TRIANGLES, range.indexCount, GL_UNSIGNED_INT,
                              reinterpret_cast<const void*>(range.indexOffsetBytes),
                              range.baseVertex);
   }
   TOFSIM_GL_CHECK("GpuScene::draw");
+}
+
+void GpuScene::setMaterial(const gl::Program& program, int32_t index) const {
+  const scene::Material& material = scene_.materials.at(static_cast<std::size_t>(index));
+  program.set("uAlbedoFactor", material.albedo);
+  const bool textured = material.albedoTexture >= 0;
+  program.set("uHasAlbedoTexture", textured ? 1 : 0);
+  if (textured) {
+    textures_.at(static_cast<std::size_t>(material.albedoTexture)).bindUnit(gpu::kAlbedoTexture);
+  }
 }
 
 }  // namespace tofsim::render

@@ -15,12 +15,15 @@ namespace tofsim::render {
 class GpuScene {
  public:
   explicit GpuScene(const scene::Scene& scene);
-  /// Draws every mesh. When `program` has material uniforms (uAlbedoFactor,
-  /// uHasAlbedoTexture) they are set per mesh.
-  void draw(const gl::Program& program) const;
+  /// Whether a draw sets the material uniforms (uAlbedoFactor,
+  /// uHasAlbedoTexture) and texture per mesh: only programs that declare them.
+  enum class Materials { Set, Skip };
+  /// Draws every mesh.
+  void draw(const gl::Program& program, Materials materials) const;
   std::size_t bytes() const { return bytes_; }
 
  private:
+  void setMaterial(const gl::Program& program, int32_t index) const;
   struct DrawRange {
     GLsizei indexCount = 0;
     std::size_t indexOffsetBytes = 0;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "GpuContract.h"
 #include "tofsim/gl/Check.h"
 #include "tofsim/gl/Compute.h"
 #include "tofsim/util/Error.h"
@@ -11,7 +12,6 @@ namespace tofsim::render {
 
 namespace {
 
-constexpr uint32_t kGroup = 64;  // local_size_x of the ISM and gather shaders
 // Loop trips one gather invocation may make per dispatch: llvmpipe silently
 // ends every loop of an invocation after 65535 iterations in total (loop
 // entries count too, so its count runs ahead of ours), so dispatches are sized
@@ -24,11 +24,11 @@ std::vector<std::pair<std::string, std::string>> gatherDefines(const capture::In
   return {};
 }
 
-void dispatchThreads(std::size_t threads) { gl::dispatchThreads(threads, kGroup); }
+void dispatchThreads(std::size_t threads) { gl::dispatchThreads(threads, gpu::kWorkGroupSize); }
 
 }  // namespace
 
-IndirectLight::IndirectLight(const TriangleSoup& soup, std::vector<Vpl> vpls,
+IndirectLight::IndirectLight(const TriangleSoup& soup, const std::vector<ir::Vpl>& vpls,
                              const capture::IndirectSettings& settings, uint64_t seed)
     : settings_(settings),
       seed_(seed),
@@ -37,19 +37,20 @@ IndirectLight::IndirectLight(const TriangleSoup& soup, std::vector<Vpl> vpls,
       // A shadow ray visits about two nodes per level and a few leaves.
       tripsPerShadowRay_(std::min<std::size_t>(soup.bvh.size() + soup.triangleCount(),
                                                4 * static_cast<std::size_t>(soup.bvhDepth) + 16)),
-      gather_({{GL_COMPUTE_SHADER, "indirect_gather.comp"}}, gatherDefines(settings)) {
+      gather_(gpu::makeProgram({{GL_COMPUTE_SHADER, "indirect_gather.comp"}},
+                               gatherDefines(settings))) {
   TOFSIM_CHECK(!vpls.empty() && triangleCount_ > 0);
   corners_ = gl::Buffer(soup.corners.size() * sizeof(glm::vec4), soup.corners.data(), 0);
   areaCdf_ = gl::Buffer(soup.areaCdf.size() * sizeof(float), soup.areaCdf.data(), 0);
   bvh_ = gl::Buffer(soup.bvh.size() * sizeof(BvhNode), soup.bvh.data(), 0);
-  vplBuffer_ = gl::Buffer(vpls.size() * sizeof(Vpl), vpls.data(), 0);
+  vplBuffer_ = gl::Buffer(vpls.size() * sizeof(ir::Vpl), vpls.data(), 0);
   loopGuard_ = gl::Buffer(sizeof(uint32_t));
   loopGuard_.clear();
   fixedBytes_ = corners_.size() + areaCdf_.size() + bvh_.size() + vplBuffer_.size();
   if (settings_.visibility == capture::Visibility::Ism) {
-    splat_ = gl::Program({{GL_COMPUTE_SHADER, "ism_splat.comp"}});
-    pull_ = gl::Program({{GL_COMPUTE_SHADER, "ism_pull.comp"}});
-    push_ = gl::Program({{GL_COMPUTE_SHADER, "ism_push.comp"}});
+    splat_ = gpu::makeProgram({{GL_COMPUTE_SHADER, "ism_splat.comp"}});
+    pull_ = gpu::makeProgram({{GL_COMPUTE_SHADER, "ism_pull.comp"}});
+    push_ = gpu::makeProgram({{GL_COMPUTE_SHADER, "ism_push.comp"}});
     for (int size = settings_.ism_resolution;; size = (size + 1) / 2) {
       levelOffsets_.push_back(floatsPerVpl_);
       levelSizes_.push_back(size);
@@ -57,24 +58,25 @@ IndirectLight::IndirectLight(const TriangleSoup& soup, std::vector<Vpl> vpls,
       if (size == 1 || !settings_.ism_pull_push) break;
     }
   }
-  gather_.set("uTriangleCount", static_cast<unsigned>(triangleCount_));
+  // No uTriangleCount for the gather: only sampleSurface (the ISM splat)
+  // reads it, so the compiler drops it from the exact variant.
 }
 
 std::size_t IndirectLight::ismBytesPerVpl() const { return floatsPerVpl_ * sizeof(float); }
 
-void IndirectLight::planBatches(std::size_t ismBudgetBytes, std::size_t maxStorageBlockBytes) {
-  if (settings_.visibility == capture::Visibility::Exact) {
-    vplsPerBatch_ = vplCount_;
-    return;
+void IndirectLight::allocate(std::size_t vplsPerBatch) {
+  if (settings_.visibility == capture::Visibility::Ism) {
+    ism_ = gl::Buffer(vplsPerBatch * ismBytesPerVpl());
   }
-  const std::size_t limit = std::min(ismBudgetBytes, maxStorageBlockBytes);
-  if (ismBytesPerVpl() > limit) {
-    throw InputError("one VPL's imperfect shadow map (" + std::to_string(ismBytesPerVpl()) +
-                     " bytes) does not fit the memory left for ISMs (" + std::to_string(limit) +
-                     " bytes); raise render.memory_budget or lower render.indirect.ism_resolution");
-  }
-  vplsPerBatch_ = std::min(vplCount_, limit / ismBytesPerVpl());
-  ism_ = gl::Buffer(vplsPerBatch_ * ismBytesPerVpl());
+}
+
+void IndirectLight::bindSceneBuffers() const {
+  vplBuffer_.bindBase(GL_SHADER_STORAGE_BUFFER, gpu::kVpls);
+  corners_.bindBase(GL_SHADER_STORAGE_BUFFER, gpu::kCorners);
+  areaCdf_.bindBase(GL_SHADER_STORAGE_BUFFER, gpu::kAreaCdf);
+  bvh_.bindBase(GL_SHADER_STORAGE_BUFFER, gpu::kBvh);
+  if (ism_.id() != 0) ism_.bindBase(GL_SHADER_STORAGE_BUFFER, gpu::kIsm);
+  loopGuard_.bindBase(GL_SHADER_STORAGE_BUFFER, gpu::kLoopGuard);
 }
 
 std::size_t IndirectLight::vplsPerDispatch() const {
@@ -83,13 +85,11 @@ std::size_t IndirectLight::vplsPerDispatch() const {
   return std::max<std::size_t>(1, kTripsPerDispatch / tripsPerVpl);
 }
 
-std::size_t IndirectLight::batchCount() const {
-  return (vplCount_ + vplsPerBatch_ - 1) / vplsPerBatch_;
-}
-
-void IndirectLight::buildIsms(std::size_t firstVpl, std::size_t count) {
+void IndirectLight::buildVisibility(std::size_t firstVpl, std::size_t count) {
+  if (settings_.visibility != capture::Visibility::Ism) return;
+  ismFirstVpl_ = firstVpl;
   ism_.fill(0x7f800000u);  // +inf: no surface seen in this direction
-  ism_.bindBase(GL_SHADER_STORAGE_BUFFER, 7);
+  bindSceneBuffers();
   const unsigned stride = static_cast<unsigned>(floatsPerVpl_);
   splat_.use();
   splat_.set("uFirstVpl", static_cast<unsigned>(firstVpl));
@@ -121,32 +121,23 @@ void IndirectLight::buildIsms(std::size_t firstVpl, std::size_t count) {
   TOFSIM_GL_CHECK("ISM build");
 }
 
-void IndirectLight::gatherBatch(std::size_t batch, const GatherTarget& target) {
-  const std::size_t first = batch * vplsPerBatch_;
-  const std::size_t count = std::min(vplsPerBatch_, vplCount_ - first);
-  vplBuffer_.bindBase(GL_SHADER_STORAGE_BUFFER, 3);
-  corners_.bindBase(GL_SHADER_STORAGE_BUFFER, 4);
-  areaCdf_.bindBase(GL_SHADER_STORAGE_BUFFER, 5);
-  bvh_.bindBase(GL_SHADER_STORAGE_BUFFER, 6);
+void IndirectLight::gather(std::size_t first, std::size_t count, std::size_t firstPixel,
+                           std::size_t pixelCount) {
+  bindSceneBuffers();
+  gather_.use();
   if (settings_.visibility == capture::Visibility::Ism) {
-    // Every segment needs every batch; a single batch is built once and kept.
-    if (residentBatch_ != batch) buildIsms(first, count);
-    residentBatch_ = batch;
-    ism_.bindBase(GL_SHADER_STORAGE_BUFFER, 7);
     gather_.set("uVplStride", static_cast<unsigned>(floatsPerVpl_));
     gather_.set("uIsmResolution", settings_.ism_resolution);
+    gather_.set("uIsmFirstVpl", static_cast<unsigned>(ismFirstVpl_));
   }
-  loopGuard_.bindBase(GL_SHADER_STORAGE_BUFFER, 0);
-  gather_.use();
-  gather_.set("uIsmFirstVpl", static_cast<unsigned>(first));
-  gather_.set("uFirstPixel", static_cast<unsigned>(target.firstPixel));
-  gather_.set("uPixelCount", static_cast<unsigned>(target.pixelCount));
+  gather_.set("uFirstPixel", static_cast<unsigned>(firstPixel));
+  gather_.set("uPixelCount", static_cast<unsigned>(pixelCount));
   // Sub-dispatches in VPL order keep each pixel's additions in index order.
   for (std::size_t done = 0; done < count;) {
     const std::size_t n = std::min(vplsPerDispatch(), count - done);
     gather_.set("uFirstVpl", static_cast<unsigned>(first + done));
     gather_.set("uVplCount", static_cast<unsigned>(n));
-    dispatchThreads(target.pixelCount);
+    dispatchThreads(pixelCount);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
     done += n;
     throwIfInterrupted();  // Ctrl-C between dispatches, not only between segments
@@ -154,9 +145,10 @@ void IndirectLight::gatherBatch(std::size_t batch, const GatherTarget& target) {
   uint32_t loopLimitHit = 0;
   loopGuard_.download(0, sizeof loopLimitHit, &loopLimitHit);
   if (loopLimitHit != 0) {
-    throw InputError("a gather invocation came near the GL implementation's loop-trip limit "
-                     "(llvmpipe: 65535), so light could be lost; use visibility: ism or a "
-                     "smaller scene for exact visibility");
+    throw InputError(
+        "a gather invocation came near the GL implementation's loop-trip limit "
+        "(llvmpipe: 65535), so light could be lost; use visibility: ism or a "
+        "smaller scene for exact visibility");
   }
   TOFSIM_GL_CHECK("indirect gather");
 }

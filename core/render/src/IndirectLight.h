@@ -1,28 +1,24 @@
 #pragma once
-// One indirect bounce from VPLs, batched as in Algorithm 1 of the paper: the
-// VPLs are processed in batches whose imperfect shadow maps fit the memory
-// budget; each batch's ISMs are built, gathered into the current segment and
-// dropped. With exact visibility, shadow rays through a BVH replace the ISMs.
+// One indirect bounce from VPLs on GL. The driver (ir::IrRenderer) processes
+// the VPLs in batches whose imperfect shadow maps fit the memory budget
+// (Algorithm 1 of the paper); each batch's ISMs are built here, gathered into
+// the current segment and dropped. With exact visibility, shadow rays through
+// a BVH replace the ISMs.
 
 #include <cstddef>
 #include <vector>
 
 #include "TriangleSoup.h"
-#include "Vpls.h"
 #include "tofsim/capture/RenderSettings.h"
 #include "tofsim/gl/Buffer.h"
 #include "tofsim/gl/Program.h"
+#include "tofsim/ir/IrBackend.h"
 
 namespace tofsim::render {
 
-struct GatherTarget {
-  std::size_t firstPixel = 0;
-  std::size_t pixelCount = 0;
-};
-
 class IndirectLight {
  public:
-  IndirectLight(const TriangleSoup& soup, std::vector<Vpl> vpls,
+  IndirectLight(const TriangleSoup& soup, const std::vector<ir::Vpl>& vpls,
                 const capture::IndirectSettings& settings, uint64_t seed);
 
   std::size_t vplCount() const { return vplCount_; }
@@ -30,20 +26,21 @@ class IndirectLight {
   std::size_t fixedBytes() const { return fixedBytes_; }
   /// GPU bytes of one VPL's ISM with all pull-push levels (0 for exact visibility).
   std::size_t ismBytesPerVpl() const;
-  /// Chooses the batch size from the bytes available for ISMs.
-  void planBatches(std::size_t ismBudgetBytes, std::size_t maxStorageBlockBytes);
-  std::size_t batchCount() const;
-  /// GPU bytes of the ISM buffer for one batch (0 for exact visibility).
-  std::size_t ismBatchBytes() const { return ism_.size(); }
+  /// Room for the ISMs of `vplsPerBatch` VPLs (none for exact visibility).
+  void allocate(std::size_t vplsPerBatch);
 
   /// Sets the gather program's per-render uniforms (time axis, camera...).
   const gl::Program& gatherProgram() const { return gather_; }
-  /// Builds batch b's ISMs (when not already resident) and gathers its VPLs
-  /// into the bound indirect and outside-axis buffers.
-  void gatherBatch(std::size_t batch, const GatherTarget& target);
+  /// Builds the ISMs of VPLs [firstVpl, firstVpl + count) (no-op for exact).
+  void buildVisibility(std::size_t firstVpl, std::size_t count);
+  /// Gathers VPLs [firstVpl, firstVpl + count), whose ISMs were built last,
+  /// into pixels [firstPixel, firstPixel + pixelCount) of the bound indirect
+  /// and outside-axis buffers.
+  void gather(std::size_t firstVpl, std::size_t count, std::size_t firstPixel,
+              std::size_t pixelCount);
 
  private:
-  void buildIsms(std::size_t firstVpl, std::size_t count);
+  void bindSceneBuffers() const;
   /// VPLs one gather dispatch may loop over (see kLoopTripLimit in the shader).
   std::size_t vplsPerDispatch() const;
 
@@ -53,8 +50,7 @@ class IndirectLight {
   std::size_t triangleCount_ = 0;
   std::size_t tripsPerShadowRay_ = 0;
   std::size_t fixedBytes_ = 0;
-  std::size_t vplsPerBatch_ = 0;
-  std::size_t residentBatch_ = static_cast<std::size_t>(-1);
+  std::size_t ismFirstVpl_ = 0;  ///< VPL whose ISM starts the ISM buffer
   std::vector<std::size_t> levelOffsets_;
   std::vector<int> levelSizes_;
   std::size_t floatsPerVpl_ = 0;

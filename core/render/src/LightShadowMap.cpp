@@ -1,9 +1,9 @@
 #include "LightShadowMap.h"
 
+#include <glm/gtc/matrix_transform.hpp>
 #include <string>
 
-#include <glm/gtc/matrix_transform.hpp>
-
+#include "GpuContract.h"
 #include "GpuScene.h"
 #include "SurfaceMaps.h"
 #include "tofsim/gl/Check.h"
@@ -16,9 +16,11 @@ LightShadowMap::LightShadowMap(int resolution, const glm::vec3& light, const glm
       light_world_(light),
       distance_(gl::Texture::create2DArray(GL_R32F, resolution, resolution, 6)),
       depth_(gl::Texture::create2DArray(GL_DEPTH_COMPONENT32F, resolution, resolution, 6)),
-      program_({{GL_VERTEX_SHADER, "gbuffer.vert"}, {GL_FRAGMENT_SHADER, "distance.frag"}}) {
+      program_(gpu::makeProgram(
+          {{GL_VERTEX_SHADER, "gbuffer.vert"}, {GL_FRAGMENT_SHADER, "distance.frag"}})) {
   // Face order +X, -X, +Y, -Y, +Z, -Z matches cubeFace() in light.glsl.
-  const glm::vec3 forward[6] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+  const glm::vec3 forward[6] = {{1, 0, 0},  {-1, 0, 0}, {0, 1, 0},
+                                {0, -1, 0}, {0, 0, 1},  {0, 0, -1}};
   const glm::vec3 up[6] = {{0, -1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}, {0, -1, 0}, {0, -1, 0}};
   const glm::vec2 range = depthRange(lo, hi, light);
   const glm::mat4 projection = glm::perspective(glm::radians(90.0f), 1.0f, range.x, range.y);
@@ -36,7 +38,7 @@ void LightShadowMap::render(const GpuScene& scene) {
   glDisable(GL_CULL_FACE);
   for (int face = 0; face < 6; ++face) {
     gl::Framebuffer framebuffer;
-    framebuffer.attachColor(0, distance_, face);
+    framebuffer.attachColor(gpu::kOutPosition, distance_, face);
     framebuffer.attachDepth(depth_, face);
     framebuffer.finish("light shadow map face");
     framebuffer.bind();
@@ -46,7 +48,7 @@ void LightShadowMap::render(const GpuScene& scene) {
     const float one = 1.0f;
     glClearNamedFramebufferfv(framebuffer.id(), GL_DEPTH, 0, &one);
     program_.set("uViewProjection", viewProjection_[face]);
-    scene.draw(program_);
+    scene.draw(program_, GpuScene::Materials::Skip);  // distance.frag has none
   }
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   TOFSIM_GL_CHECK("LightShadowMap::render");
@@ -58,7 +60,7 @@ void LightShadowMap::bind(const gl::Program& program) const {
     program.set(name.c_str(), viewProjection_[face]);
   }
   program.set("uShadowResolution", resolution_);
-  distance_.bindUnit(3);
+  distance_.bindUnit(gpu::kShadowMap);
 }
 
 std::size_t LightShadowMap::bytes() const {

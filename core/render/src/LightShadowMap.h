@@ -5,7 +5,6 @@
 // visibleFromLight in shaders/light.glsl).
 
 #include <array>
-
 #include <glm/glm.hpp>
 
 #include "tofsim/gl/Framebuffer.h"
@@ -21,7 +20,7 @@ class LightShadowMap {
   LightShadowMap(int resolution, const glm::vec3& light_world, const glm::vec3& boundsMin,
                  const glm::vec3& boundsMax);
   void render(const GpuScene& scene);
-  /// Sets the uShadow* uniforms of light.glsl and binds the map to unit 3.
+  /// Sets the uShadow* uniforms of light.glsl and binds the map to its unit.
   void bind(const gl::Program& program) const;
 
   int resolution() const { return resolution_; }

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "GpuContract.h"
 #include "GpuScene.h"
 #include "tofsim/gl/Check.h"
 
@@ -13,10 +14,11 @@ SurfaceMaps::SurfaceMaps(int width, int height)
       normal(gl::Texture::create2D(GL_RGBA32F, width, height)),
       albedo(gl::Texture::create2D(GL_RGBA32F, width, height)),
       depth(gl::Texture::create2D(GL_DEPTH_COMPONENT32F, width, height)),
-      program_({{GL_VERTEX_SHADER, "gbuffer.vert"}, {GL_FRAGMENT_SHADER, "gbuffer.frag"}}) {
-  framebuffer_.attachColor(0, position);
-  framebuffer_.attachColor(1, normal);
-  framebuffer_.attachColor(2, albedo);
+      program_(gpu::makeProgram(
+          {{GL_VERTEX_SHADER, "gbuffer.vert"}, {GL_FRAGMENT_SHADER, "gbuffer.frag"}})) {
+  framebuffer_.attachColor(gpu::kOutPosition, position);
+  framebuffer_.attachColor(gpu::kOutNormal, normal);
+  framebuffer_.attachColor(gpu::kOutAlbedo, albedo);
   framebuffer_.attachDepth(depth);
   framebuffer_.finish("SurfaceMaps framebuffer");
 }
@@ -35,7 +37,7 @@ void SurfaceMaps::render(const GpuScene& scene, const glm::mat4& viewProjection,
   program_.use();
   program_.set("uViewProjection", viewProjection);
   program_.set("uViewpoint_world", viewpoint_world);
-  scene.draw(program_);
+  scene.draw(program_, GpuScene::Materials::Set);
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   TOFSIM_GL_CHECK("SurfaceMaps::render");
 }

@@ -6,21 +6,17 @@
 // diffusely, so the VPL is a cosine emitter of intensity
 // albedo * Phi / pi * cos(theta), emitting at t_l = eta * |l - x_l| / c.
 
+#include <glm/glm.hpp>
 #include <vector>
 
-#include <glm/glm.hpp>
-
 #include "tofsim/capture/Light.h"
+#include "tofsim/ir/IrBackend.h"
 
 namespace tofsim::render {
 
 class GpuScene;
 
-struct Vpl {  // matches struct Vpl in shaders/vpl.glsl (std430)
-  glm::vec4 positionPath;  ///< xyz world, w = optical path light -> VPL, m
-  glm::vec4 normal;        ///< xyz unit, lit side
-  glm::vec4 flux;          ///< rgb albedo * Phi / pi, W/sr
-};
+using ir::Vpl;  // matches struct Vpl in shaders/vpl.glsl (std430)
 
 /// Spot lights narrower than 60 degrees (half angle) use one view of side
 /// `rsmResolution` covering the cone; wider spots and point lights use six

@@ -3,12 +3,11 @@
 // shaders/). Variants are made by prepending #defines, never by copying files.
 // Compile and link errors name the shader file and carry the driver's log.
 
+#include <glm/glm.hpp>
 #include <string>
 #include <string_view>
 #include <utility>
 #include <vector>
-
-#include <glm/glm.hpp>
 
 #include "tofsim/gl/Handle.h"
 
@@ -35,6 +34,14 @@ class Program {
 
   GLuint id() const { return handle_.id(); }
   void use() const { glUseProgram(id()); }
+
+  /// set() on a uniform the program does not have (never declared, or
+  /// removed by the compiler as unused) is a bug at the call site: with strict
+  /// uniforms it fails a TOFSIM_CHECK naming the uniform; otherwise it is
+  /// ignored, as GL ignores location -1. Strict by default in debug builds
+  /// (NDEBUG undefined); tests turn it on in any build.
+  static void setStrictUniforms(bool strict);
+  static bool strictUniforms();
 
   void set(const char* name, int value) const;
   void set(const char* name, unsigned value) const;

@@ -1,6 +1,6 @@
 #pragma once
 // A CPU transient path tracer: the ground truth the GL renderer is measured
-// against. Same job, result and segment stream as render::TransientRenderer.
+// against. Same job, result and segment stream as the IR renderer (ir::IrRenderer).
 //
 // Estimator (see core/reference/README.md):
 //  - one primary ray through each pixel centre, as the GL G-buffer;
@@ -16,8 +16,7 @@
 
 #include <cstdint>
 
-#include "tofsim/capture/RenderJob.h"
-#include "tofsim/capture/SegmentSink.h"
+#include "tofsim/capture/Renderer.h"
 
 namespace tofsim::reference {
 
@@ -31,17 +30,21 @@ struct ReferenceSettings {
   int32_t threads = 0;
 };
 
-class ReferenceRenderer {
+class ReferenceRenderer : public capture::Renderer {
  public:
   explicit ReferenceRenderer(ReferenceSettings settings);
+
+  /// "CPU reference path tracer".
+  std::string description() const override;
 
   /// Renders the job and streams the volume to `sink` in row-aligned segments,
   /// in order. RenderSettings::indirect.enabled = false renders bounce 1 only;
   /// the other IndirectSettings (VPLs, ISMs) and shadow_map_resolution do not
   /// apply. memory_budget_bytes bounds the host buffers of one segment.
+  /// Segments go through the shared segment loop (ir::streamSegments).
   /// Throws InputError for invalid settings.
   capture::RenderResult render(const capture::RenderJob& job, capture::SegmentSink& sink,
-                               const capture::ProgressCallback& progress = {}) const;
+                               const capture::ProgressCallback& progress = {}) const override;
 
   const ReferenceSettings& settings() const { return settings_; }
 

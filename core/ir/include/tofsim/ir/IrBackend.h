@@ -1,0 +1,95 @@
+#pragma once
+// The narrow interface between the backend-independent transient instant
+// radiosity driver (ir::IrRenderer: validation, memory plan, segment x VPL
+// batch loop, the light seen by the camera) and a device that computes the
+// passes. The GL backend (render::GlBackend) implements it; a CPU backend
+// implements the same and reuses all of the planning.
+//
+// Call order, per render (IrRenderer::render):
+//   limits, prepareSurfaces, generateVpls, setVpls, fixedBytes,
+//   visibilityBytesPerVpl, allocate, then for each segment (increasing pixel
+//   ranges): beginSegment, gatherDirect, for each VPL batch b (increasing):
+//   buildVisibility (only when batch b is not already resident: with one batch
+//   it is built once for the whole render), gatherIndirect; readSegment.
+//
+// What every implementation must guarantee:
+//  - Determinism: the same job gives the same bytes whatever the thread count,
+//    scheduling or the segment / batch plan. Every (pixel, bin) has ONE writer,
+//    which adds contributions in increasing VPL index; batches arrive in
+//    increasing order; off-axis sums are added in pixel order.
+//  - The physics is the shared per-contribution math (geometry term with
+//    clamp, path length, bin of a path, Lambertian direct term, spot profile),
+//    so backends agree.
+//  - gatherDirect / gatherIndirect touch only the current segment's pixels.
+//  - Volumes have capture::kChannels channels; layout pixel-major, then bin,
+//    then channel.
+
+#include <cstddef>
+#include <cstdint>
+#include <glm/glm.hpp>
+#include <string>
+#include <vector>
+
+#include "tofsim/capture/RenderJob.h"
+#include "tofsim/volume/TimeAxis.h"
+
+namespace tofsim::ir {
+
+/// The device's limits the plan and the validation respect.
+struct DeviceLimits {
+  int32_t maxImageSide = 0;  ///< largest G-buffer / RSM / shadow-map side (GL: max texture size)
+  std::size_t maxBufferBytes = 0;    ///< largest single buffer (GL: max storage block); one
+                                     ///< pixel's histogram and one VPL's visibility map must fit
+  std::size_t maxPixelsPerPass = 0;  ///< most pixels one gather call may cover (GL: groups x 64)
+};
+
+/// A virtual point light; layout = struct Vpl in shaders/vpl.glsl (std430).
+struct Vpl {
+  glm::vec4 positionPath;  ///< xyz world, w = optical path light -> VPL, m (eta included)
+  glm::vec4 normal;        ///< xyz unit, lit side
+  glm::vec4 flux;          ///< rgb albedo * Phi / pi, W/sr
+};
+
+class IrBackend {
+ public:
+  virtual ~IrBackend() = default;
+  /// The device, e.g. "llvmpipe (LLVM 15.0.6, 256 bits)" or "CPU (2 threads)".
+  virtual std::string description() const = 0;
+  virtual DeviceLimits limits() const = 0;
+  /// Scene upload, camera G-buffer of every pixel, light shadow map. Returns
+  /// the G-buffer's world positions, RGBA per pixel (w = 1 on a surface, 0
+  /// else), row 0 at the top: the driver derives the depth image and the
+  /// DirectLightView from it. Starts a new render: drops any earlier one's state.
+  virtual std::vector<float> prepareSurfaces(const capture::RenderJob& job) = 0;
+  /// VPLs of the job's light from the reflective shadow map, in texel order
+  /// (faces +X..-Z), empty when indirect light is off or nothing is lit.
+  virtual std::vector<Vpl> generateVpls(const capture::RenderJob& job) = 0;
+  /// Makes all VPLs resident for the gathers (visibility structures are built
+  /// per batch later). An empty list means no indirect light this render.
+  virtual void setVpls(const std::vector<Vpl>& vpls) = 0;
+  /// Bytes held for the whole render (scene, G-buffer, shadow map, VPLs,
+  /// BVH...), for the plan.
+  virtual std::size_t fixedBytes() const = 0;
+  /// Bytes of one VPL's visibility structure (ISM with pull-push levels); 0
+  /// for exact visibility (then every VPL is in one batch).
+  virtual std::size_t visibilityBytesPerVpl() const = 0;
+  /// Room for segments of `pixelsPerSegment` pixels and batches of
+  /// `vplsPerBatch` visibility maps (vplsPerBatch = 0 without VPLs).
+  virtual void allocate(std::size_t pixelsPerSegment, std::size_t vplsPerBatch) = 0;
+  /// Builds the visibility structures of VPLs [firstVpl, firstVpl + count)
+  /// (no-op for exact visibility).
+  virtual void buildVisibility(std::size_t firstVpl, std::size_t count) = 0;
+  /// Zeroes the accumulators of pixels [firstPixel, firstPixel + count).
+  virtual void beginSegment(std::size_t firstPixel, std::size_t count) = 0;
+  virtual void gatherDirect() = 0;
+  /// Adds VPLs [firstVpl, firstVpl + count) (whose visibility was built last)
+  /// into the segment.
+  virtual void gatherIndirect(std::size_t firstVpl, std::size_t count) = 0;
+  /// Copies the segment out: direct and indirect, count * bins * kChannels
+  /// floats each (pixel-major, then bin, then channel), and adds the light
+  /// that fell before / after the axis to `offAxis`, pixel by pixel in pixel
+  /// order (so the double sums do not depend on the segment plan).
+  virtual void readSegment(float* direct, float* indirect, AxisLoss& offAxis) = 0;
+};
+
+}  // namespace tofsim::ir

@@ -1,0 +1,58 @@
+#include "JobValidation.h"
+
+#include <string>
+
+#include "tofsim/capture/SegmentSink.h"
+#include "tofsim/util/Error.h"
+
+namespace tofsim::ir {
+
+using namespace capture;  // the job description types
+
+namespace {
+
+// The sides of the G-buffer, the shadow map and the RSM.
+void validateImageSides(const RenderJob& job, const DeviceLimits& limits) {
+  const Camera& c = job.camera;
+  const std::string maxTexture = std::to_string(limits.maxImageSide);
+  if (c.width > limits.maxImageSide || c.height > limits.maxImageSide) {
+    throw InputError("camera.resolution " + std::to_string(c.width) + "x" +
+                     std::to_string(c.height) + " exceeds the GL implementation's texture limit " +
+                     maxTexture);
+  }
+  if (job.settings.shadow_map_resolution > limits.maxImageSide) {
+    throw InputError("render.shadow_map_resolution " +
+                     std::to_string(job.settings.shadow_map_resolution) +
+                     " exceeds the GL texture limit " + maxTexture);
+  }
+  const IndirectSettings& s = job.settings.indirect;
+  if (s.enabled && s.rsm_resolution > limits.maxImageSide) {
+    throw InputError("render.indirect.rsm_resolution " + std::to_string(s.rsm_resolution) +
+                     " exceeds the GL texture limit " + maxTexture);
+  }
+}
+
+}  // namespace
+
+void validateJob(const RenderJob& job, const DeviceLimits& limits) {
+  TOFSIM_CHECK(job.scene != nullptr);
+  validateImageSides(job, limits);
+  const IndirectSettings& s = job.settings.indirect;
+  // One ISM (without its pull-push pyramid) is one buffer.
+  const std::size_t ismBytes = std::size_t(s.ism_resolution) * s.ism_resolution * sizeof(float);
+  if (s.enabled && ismBytes > limits.maxBufferBytes) {
+    throw InputError("render.indirect.ism_resolution " + std::to_string(s.ism_resolution) +
+                     " needs " + std::to_string(ismBytes) +
+                     " bytes per VPL, over the GL storage-block limit " +
+                     std::to_string(limits.maxBufferBytes));
+  }
+  const std::size_t pixelBytes = std::size_t(job.settings.time.bins) * kChannels * sizeof(float);
+  if (pixelBytes > limits.maxBufferBytes) {
+    throw InputError("time.bins " + std::to_string(job.settings.time.bins) + " x " +
+                     std::to_string(kChannels) + " channels x 4 bytes exceeds the GL " +
+                     "storage-block limit " + std::to_string(limits.maxBufferBytes) +
+                     " bytes; use fewer time bins");
+  }
+}
+
+}  // namespace tofsim::ir

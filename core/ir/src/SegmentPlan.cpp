@@ -1,0 +1,50 @@
+#include "tofsim/ir/SegmentPlan.h"
+
+#include <algorithm>
+#include <string>
+
+#include "tofsim/util/Error.h"
+
+namespace tofsim::ir {
+
+PixelRange SegmentPlan::segment(std::size_t s) const {
+  TOFSIM_CHECK_LT(s, segmentCount);
+  const std::size_t first = s * pixelsPerSegment;
+  return {first, std::min(pixelsPerSegment, pixelCount - first)};
+}
+
+SegmentPlan fixedSegments(std::size_t pixelCount, std::size_t pixelsPerSegment,
+                          std::size_t bytesPerPixel) {
+  TOFSIM_CHECK_GT(pixelsPerSegment, 0u);
+  SegmentPlan plan;
+  plan.pixelCount = pixelCount;
+  plan.pixelsPerSegment = pixelsPerSegment;
+  plan.segmentCount = (pixelCount + pixelsPerSegment - 1) / pixelsPerSegment;
+  plan.bytesPerSegment = pixelsPerSegment * bytesPerPixel;
+  return plan;
+}
+
+SegmentPlan planSegments(std::size_t pixelCount, std::size_t floatsPerPixel, int buffersPerPixel,
+                         std::size_t budgetBytes, std::size_t maxBufferBytes,
+                         std::size_t maxPixelsPerPass) {
+  const std::size_t pixelVolumeBytes = floatsPerPixel * sizeof(float);
+  const std::size_t pixelBytes = pixelVolumeBytes * buffersPerPixel + sizeof(float);
+  // validateJob rejects time.bins whose histogram exceeds the buffer limit,
+  // naming the key; reaching this is a caller's bug.
+  TOFSIM_CHECK_GT(pixelVolumeBytes, 0u);
+  TOFSIM_CHECK_LE(pixelVolumeBytes, maxBufferBytes);
+  TOFSIM_CHECK_GT(pixelCount, 0u);
+  TOFSIM_CHECK_GT(maxPixelsPerPass, 0u);
+  if (pixelBytes > budgetBytes) {
+    throw InputError("render.memory_budget (" + std::to_string(budgetBytes) +
+                     " bytes left after the scene and maps) cannot hold one pixel's histogram (" +
+                     std::to_string(pixelBytes) +
+                     " bytes); raise render.memory_budget or lower "
+                     "time.bins");
+  }
+  const std::size_t pixels = std::min(
+      {budgetBytes / pixelBytes, maxBufferBytes / pixelVolumeBytes, maxPixelsPerPass, pixelCount});
+  return fixedSegments(pixelCount, pixels, pixelBytes);
+}
+
+}  // namespace tofsim::ir

@@ -1,0 +1,49 @@
+#pragma once
+// ir::IrBackend on OpenGL 4.5: the camera's G-buffer and the light's shadow
+// map by rasterization, VPLs from a reflective shadow map, imperfect shadow
+// maps (or BVH shadow rays) for their visibility, and compute-shader gathers
+// with one thread per pixel. The driver (ir::IrRenderer) plans and loops; this
+// class only runs the passes.
+
+#include <memory>
+
+#include "tofsim/ir/IrBackend.h"
+
+namespace tofsim::gl {
+class Context;
+}
+
+namespace tofsim::render {
+
+class GlBackend : public ir::IrBackend {
+ public:
+  /// Renders on `context`, which must outlive the backend.
+  explicit GlBackend(gl::Context& context);
+  /// Renders on a context of its own.
+  explicit GlBackend(std::unique_ptr<gl::Context> context);
+  ~GlBackend() override;
+
+  std::string description() const override;
+  ir::DeviceLimits limits() const override;
+  std::vector<float> prepareSurfaces(const capture::RenderJob& job) override;
+  std::vector<ir::Vpl> generateVpls(const capture::RenderJob& job) override;
+  void setVpls(const std::vector<ir::Vpl>& vpls) override;
+  std::size_t fixedBytes() const override;
+  std::size_t visibilityBytesPerVpl() const override;
+  void allocate(std::size_t pixelsPerSegment, std::size_t vplsPerBatch) override;
+  void buildVisibility(std::size_t firstVpl, std::size_t count) override;
+  void beginSegment(std::size_t firstPixel, std::size_t count) override;
+  void gatherDirect() override;
+  void gatherIndirect(std::size_t firstVpl, std::size_t count) override;
+  void readSegment(float* direct, float* indirect, AxisLoss& offAxis) override;
+
+ private:
+  struct Passes;  // one render's GL objects (GlBackend.cpp)
+  Passes& passes() const;
+
+  std::unique_ptr<gl::Context> ownedContext_;
+  gl::Context& context_;
+  std::unique_ptr<Passes> passes_;
+};
+
+}  // namespace tofsim::render

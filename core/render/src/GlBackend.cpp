@@ -1,0 +1,227 @@
+#include "tofsim/render/GlBackend.h"
+
+#include <algorithm>
+
+#include "GpuContract.h"
+#include "GpuScene.h"
+#include "IndirectLight.h"
+#include "LightShadowMap.h"
+#include "LightUniforms.h"
+#include "SurfaceMaps.h"
+#include "Vpls.h"
+#include "tofsim/gl/Buffer.h"
+#include "tofsim/gl/Check.h"
+#include "tofsim/gl/Compute.h"
+#include "tofsim/gl/Context.h"
+#include "tofsim/util/Error.h"
+
+namespace tofsim::render {
+
+using namespace capture;  // the job description types
+
+namespace {
+
+// Scene bounds grown to hold the camera and the light, for depth ranges.
+struct ViewBounds {
+  explicit ViewBounds(const RenderJob& job) {
+    const scene::Bounds b = job.scene->bounds();
+    lo = glm::min(glm::min(b.min, job.camera.position_world), job.light.position_world);
+    hi = glm::max(glm::max(b.max, job.camera.position_world), job.light.position_world);
+  }
+  glm::vec3 lo, hi;
+};
+
+// Uniforms shared by the direct and indirect gathers: image, time axis, camera.
+void configureGather(const gl::Program& program, const RenderJob& job) {
+  const TimeAxis& axis = job.settings.time;
+  program.set("uImageWidth", job.camera.width);
+  program.set("uBins", axis.bins);
+  program.set("uStart_m", static_cast<float>(axis.start_m()));
+  program.set("uBinWidth_m", static_cast<float>(axis.bin_width_m()));
+  program.set("uIndexOfRefraction", static_cast<float>(job.settings.index_of_refraction));
+  program.set("uCameraUnwarp", job.settings.camera_unwarp ? 1 : 0);
+  program.set("uCameraPosition_world", job.camera.position_world);
+}
+
+// Uniforms of the indirect gather only: scene scale (biases) and the clamp.
+void configureIndirectGather(const gl::Program& program, const RenderJob& job) {
+  configureGather(program, job);
+  const glm::vec3 extent = job.scene->bounds().max - job.scene->bounds().min;
+  program.set("uSceneScale_m", std::max(glm::length(extent), 1e-6f));
+  program.set("uGeometryClamp",
+              static_cast<float>(job.settings.indirect.geometry_term_clamp_per_m2));
+}
+
+}  // namespace
+
+// One render's GL objects, in the order they are made.
+struct GlBackend::Passes {
+  explicit Passes(const RenderJob& renderJob)
+      : job(renderJob),
+        bounds(job),
+        gpuScene(*job.scene),
+        gbuffer(job.camera.width, job.camera.height),
+        shadowMap(job.settings.shadow_map_resolution, job.light.position_world, bounds.lo,
+                  bounds.hi) {}
+
+  std::size_t pixelCount() const {
+    return static_cast<std::size_t>(job.camera.width) * job.camera.height;
+  }
+
+  RenderJob job;
+  ViewBounds bounds;
+  GpuScene gpuScene;
+  SurfaceMaps gbuffer;
+  LightShadowMap shadowMap;
+  gl::Program directGather;
+  std::unique_ptr<IndirectLight> indirectLight;  ///< null without VPLs
+  gl::Buffer directVolume, indirectVolume;
+  gl::Buffer outsideAxis;  ///< per pixel: light before the axis, light after it
+  std::size_t firstPixel = 0, segmentPixels = 0;
+  std::vector<float> outside;
+};
+
+GlBackend::GlBackend(gl::Context& context) : context_(context) {}
+
+GlBackend::GlBackend(std::unique_ptr<gl::Context> context)
+    : ownedContext_(std::move(context)), context_(*ownedContext_) {}
+
+GlBackend::~GlBackend() = default;
+
+GlBackend::Passes& GlBackend::passes() const {
+  TOFSIM_CHECK_MSG(passes_ != nullptr, "prepareSurfaces must come first");
+  return *passes_;
+}
+
+std::string GlBackend::description() const { return context_.description(); }
+
+ir::DeviceLimits GlBackend::limits() const {
+  const gl::ContextLimits& gl = context_.limits();
+  ir::DeviceLimits limits;
+  limits.maxImageSide = gl.maxTextureSize;
+  limits.maxBufferBytes = gl.maxShaderStorageBlockBytes;
+  limits.maxPixelsPerPass =
+      static_cast<std::size_t>(gl.maxComputeWorkGroupCount[0]) * gpu::kWorkGroupSize;
+  return limits;
+}
+
+std::vector<float> GlBackend::prepareSurfaces(const RenderJob& job) {
+  passes_.reset();  // the previous render's GL objects go first
+  passes_ = std::make_unique<Passes>(job);
+  Passes& p = *passes_;
+  const Camera& camera = job.camera;
+  const glm::vec2 range = depthRange(p.bounds.lo, p.bounds.hi, camera.position_world);
+  p.gbuffer.render(p.gpuScene, camera.projection(range.x, range.y) * camera.view(),
+                   camera.position_world);
+  std::vector<float> positions(p.pixelCount() * 4);
+  p.gbuffer.position.download(GL_RGBA, GL_FLOAT, positions.size() * sizeof(float),
+                              positions.data());
+  p.shadowMap.render(p.gpuScene);
+
+  p.directGather = gpu::makeProgram({{GL_COMPUTE_SHADER, "direct_gather.comp"}});
+  setLightUniforms(p.directGather, job.light);
+  p.shadowMap.bind(p.directGather);
+  configureGather(p.directGather, job);
+  return positions;
+}
+
+std::vector<ir::Vpl> GlBackend::generateVpls(const RenderJob& job) {
+  const IndirectSettings& s = job.settings.indirect;
+  if (!s.enabled) return {};
+  const Passes& p = passes();
+  return render::generateVpls(p.gpuScene, job.light, s.rsm_resolution,
+                              job.settings.index_of_refraction, p.bounds.lo, p.bounds.hi);
+}
+
+void GlBackend::setVpls(const std::vector<ir::Vpl>& vpls) {
+  Passes& p = passes();
+  p.indirectLight.reset();
+  if (vpls.empty()) return;
+  p.indirectLight = std::make_unique<IndirectLight>(buildTriangleSoup(*p.job.scene), vpls,
+                                                    p.job.settings.indirect, p.job.settings.seed);
+  configureIndirectGather(p.indirectLight->gatherProgram(), p.job);
+}
+
+std::size_t GlBackend::fixedBytes() const {
+  const Passes& p = passes();
+  // The G-buffer: four RGBA32F-sized targets per pixel.
+  std::size_t bytes =
+      p.gpuScene.bytes() + p.pixelCount() * 4 * 4 * sizeof(float) + p.shadowMap.bytes();
+  if (p.indirectLight) bytes += p.indirectLight->fixedBytes();
+  return bytes;
+}
+
+std::size_t GlBackend::visibilityBytesPerVpl() const {
+  const Passes& p = passes();
+  return p.indirectLight ? p.indirectLight->ismBytesPerVpl() : 0;
+}
+
+void GlBackend::allocate(std::size_t pixelsPerSegment, std::size_t vplsPerBatch) {
+  Passes& p = passes();
+  if (p.indirectLight) p.indirectLight->allocate(vplsPerBatch);
+  const std::size_t floats =
+      pixelsPerSegment * static_cast<std::size_t>(p.job.settings.time.bins) * gpu::kChannels;
+  p.directVolume = gl::Buffer(floats * sizeof(float));
+  p.indirectVolume = gl::Buffer(floats * sizeof(float));
+  p.outsideAxis = gl::Buffer(pixelsPerSegment * 2 * sizeof(float));
+  p.outside.resize(pixelsPerSegment * 2);
+}
+
+void GlBackend::buildVisibility(std::size_t firstVpl, std::size_t count) {
+  Passes& p = passes();
+  TOFSIM_CHECK(p.indirectLight != nullptr);
+  p.indirectLight->buildVisibility(firstVpl, count);
+}
+
+void GlBackend::beginSegment(std::size_t firstPixel, std::size_t count) {
+  Passes& p = passes();
+  p.firstPixel = firstPixel;
+  p.segmentPixels = count;
+  const std::size_t bytes =
+      count * static_cast<std::size_t>(p.job.settings.time.bins) * gpu::kChannels * sizeof(float);
+  p.directVolume.clear();
+  p.indirectVolume.clear();
+  p.outsideAxis.clear();
+  p.directVolume.bindRange(GL_SHADER_STORAGE_BUFFER, gpu::kDirectVolume, 0, bytes);
+  p.indirectVolume.bindRange(GL_SHADER_STORAGE_BUFFER, gpu::kIndirectVolume, 0, bytes);
+  p.outsideAxis.bindRange(GL_SHADER_STORAGE_BUFFER, gpu::kOutsideAxis, 0,
+                          count * 2 * sizeof(float));
+}
+
+void GlBackend::gatherDirect() {
+  Passes& p = passes();
+  p.gbuffer.position.bindUnit(gpu::kGPosition);
+  p.gbuffer.normal.bindUnit(gpu::kGNormal);
+  p.gbuffer.albedo.bindUnit(gpu::kGAlbedo);
+  p.directGather.use();
+  p.shadowMap.bind(p.directGather);
+  p.directGather.set("uFirstPixel", static_cast<unsigned>(p.firstPixel));
+  p.directGather.set("uPixelCount", static_cast<unsigned>(p.segmentPixels));
+  gl::dispatchThreads(p.segmentPixels, gpu::kWorkGroupSize);
+  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
+  TOFSIM_GL_CHECK("direct gather");
+}
+
+void GlBackend::gatherIndirect(std::size_t firstVpl, std::size_t count) {
+  Passes& p = passes();
+  TOFSIM_CHECK(p.indirectLight != nullptr);
+  p.gbuffer.position.bindUnit(gpu::kGPosition);
+  p.gbuffer.normal.bindUnit(gpu::kGNormal);
+  p.gbuffer.albedo.bindUnit(gpu::kGAlbedo);
+  p.indirectLight->gather(firstVpl, count, p.firstPixel, p.segmentPixels);
+}
+
+void GlBackend::readSegment(float* direct, float* indirect, AxisLoss& offAxis) {
+  Passes& p = passes();
+  const std::size_t bytes = p.segmentPixels * static_cast<std::size_t>(p.job.settings.time.bins) *
+                            gpu::kChannels * sizeof(float);
+  p.directVolume.download(0, bytes, direct);
+  p.indirectVolume.download(0, bytes, indirect);
+  p.outsideAxis.download(0, p.segmentPixels * 2 * sizeof(float), p.outside.data());
+  for (std::size_t i = 0; i < p.segmentPixels; ++i) {
+    offAxis.before += p.outside[2 * i];
+    offAxis.after += p.outside[2 * i + 1];
+  }
+}
+
+}  // namespace tofsim::render

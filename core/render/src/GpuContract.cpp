@@ -1,0 +1,40 @@
+#include "GpuContract.h"
+
+namespace tofsim::render::gpu {
+
+std::vector<std::pair<std::string, std::string>> shaderDefines() {
+  const auto n = [](auto value) { return std::to_string(static_cast<long long>(value)); };
+  return {
+      {"TOFSIM_WORK_GROUP_SIZE", n(kWorkGroupSize)},
+      {"TOFSIM_CHANNELS", n(kChannels)},
+      {"TOFSIM_SSBO_DIRECT_VOLUME", n(kDirectVolume)},
+      {"TOFSIM_SSBO_INDIRECT_VOLUME", n(kIndirectVolume)},
+      {"TOFSIM_SSBO_OUTSIDE_AXIS", n(kOutsideAxis)},
+      {"TOFSIM_SSBO_VPLS", n(kVpls)},
+      {"TOFSIM_SSBO_CORNERS", n(kCorners)},
+      {"TOFSIM_SSBO_AREA_CDF", n(kAreaCdf)},
+      {"TOFSIM_SSBO_BVH", n(kBvh)},
+      {"TOFSIM_SSBO_ISM", n(kIsm)},
+      {"TOFSIM_SSBO_LOOP_GUARD", n(kLoopGuard)},
+      {"TOFSIM_UNIT_G_POSITION", n(kGPosition)},
+      {"TOFSIM_UNIT_G_NORMAL", n(kGNormal)},
+      {"TOFSIM_UNIT_G_ALBEDO", n(kGAlbedo)},
+      {"TOFSIM_UNIT_SHADOW_MAP", n(kShadowMap)},
+      {"TOFSIM_UNIT_ALBEDO_TEXTURE", n(kAlbedoTexture)},
+      {"TOFSIM_ATTRIB_POSITION", n(kPositionAttribute)},
+      {"TOFSIM_ATTRIB_NORMAL", n(kNormalAttribute)},
+      {"TOFSIM_ATTRIB_UV", n(kUvAttribute)},
+      {"TOFSIM_OUT_POSITION", n(kOutPosition)},
+      {"TOFSIM_OUT_NORMAL", n(kOutNormal)},
+      {"TOFSIM_OUT_ALBEDO", n(kOutAlbedo)},
+  };
+}
+
+gl::Program makeProgram(const std::vector<gl::ShaderStage>& stages,
+                        const std::vector<std::pair<std::string, std::string>>& extra) {
+  std::vector<std::pair<std::string, std::string>> defines = shaderDefines();
+  defines.insert(defines.end(), extra.begin(), extra.end());
+  return gl::Program(stages, defines);
+}
+
+}  // namespace tofsim::render::gpu

@@ -1,0 +1,62 @@
+#pragma once
+// The one contract between the GL backend's C++ and its shaders: binding
+// points, attribute and output locations, the work-group size and the channel
+// count. Each number is written here only; shaders see it as a #define
+// (TOFSIM_...) that makeProgram hands to the existing shader assembly, so a
+// shader that uses a binding without going through makeProgram fails to
+// compile instead of silently using another number.
+//
+// Each enumeration counts up from 0, so no binding point serves two buffers
+// (or two textures) in any pass.
+
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "tofsim/capture/SegmentSink.h"
+#include "tofsim/gl/Program.h"
+
+namespace tofsim::render::gpu {
+
+/// local_size_x of every compute shader (TOFSIM_WORK_GROUP_SIZE).
+inline constexpr uint32_t kWorkGroupSize = 64;
+/// Channels per bin of the volumes (TOFSIM_CHANNELS).
+inline constexpr int kChannels = capture::kChannels;
+
+/// Shader storage buffer bindings (TOFSIM_SSBO_...).
+enum StorageBinding : GLuint {
+  kDirectVolume,    ///< segment's direct light, written by direct_gather.comp
+  kIndirectVolume,  ///< segment's indirect light, indirect_gather.comp
+  kOutsideAxis,     ///< two floats per pixel: light before / after the axis
+  kVpls,            ///< struct Vpl[] (vpl.glsl)
+  kCorners,         ///< triangle corners in BVH order (scene_geometry.glsl)
+  kAreaCdf,         ///< cumulative triangle areas
+  kBvh,             ///< BVH nodes
+  kIsm,             ///< imperfect shadow maps of the resident batch
+  kLoopGuard,       ///< flag raised near llvmpipe's loop-trip limit
+};
+
+/// Texture units (TOFSIM_UNIT_...).
+enum TextureUnit : GLuint {
+  kGPosition,      ///< camera G-buffer: world position
+  kGNormal,        ///< camera G-buffer: normal
+  kGAlbedo,        ///< camera G-buffer: albedo
+  kShadowMap,      ///< the light's distance cube (light.glsl)
+  kAlbedoTexture,  ///< a material's base-colour texture (gbuffer.frag)
+};
+
+/// Vertex attribute locations of gbuffer.vert (TOFSIM_ATTRIB_...).
+enum VertexAttribute : GLuint { kPositionAttribute, kNormalAttribute, kUvAttribute };
+
+/// Fragment outputs of gbuffer.frag (TOFSIM_OUT_...); distance.frag writes
+/// kOutPosition's location, its only output.
+enum FragmentOutput : int { kOutPosition, kOutNormal, kOutAlbedo };
+
+/// The contract as (TOFSIM_NAME, value) defines.
+std::vector<std::pair<std::string, std::string>> shaderDefines();
+
+/// A program from embedded shaders with the contract's defines, then `extra`.
+gl::Program makeProgram(const std::vector<gl::ShaderStage>& stages,
+                        const std::vector<std::pair<std::string, std::string>>& extra = {});
+
+}  // namespace tofsim::render::gpu
