@@ -9,6 +9,7 @@ packages=(
   libglm-dev libtinygltf-dev nlohmann-json3-dev libyaml-cpp-dev libcli11-dev
   libopenexr-dev libopencv-dev libgtest-dev
   libembree-dev                                      # the CPU reference path tracer
+  python3-dev pybind11-dev python3-numpy python3-pytest  # the Python module and its tests
 )
 
 missing=()

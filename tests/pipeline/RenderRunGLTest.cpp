@@ -59,6 +59,11 @@ TEST_F(RenderRunGLTest, TransientSumsToSteadyAndFilesLoad) {
     EXPECT_LT(d, 1.6f);
   }
   EXPECT_GT(seen, depth.data.size() * 8 / 10);
+  // depth.npy: the same metres as depth.exr, shape (H, W), for readers that
+  // do not see the EXR's channel Z (OpenCV).
+  const io::NpyArray depthNpy = io::readNpy(dir_ / "out" / "depth.npy");
+  EXPECT_EQ(depthNpy.shape, (io::NpyShape{24, 24}));
+  EXPECT_EQ(depthNpy.data, depth.data);
   for (const char* f : {"transient.json", "config.effective.yaml", "steady.png", "depth.png"}) {
     EXPECT_TRUE(std::filesystem::exists(dir_ / "out" / f)) << f;
   }

@@ -71,7 +71,7 @@ OutputEstimate estimateOutputs(const config::RunConfig& config) {
     e.items.push_back(
         {"steady.exr/.png", w * h * (kChannels * 4 + kChannels), "camera.resolution"});
   if (out.depth)
-    e.items.push_back({"depth.exr/.png", w * h * (4 + kChannels), "camera.resolution"});
+    e.items.push_back({"depth.exr/.npy/.png", w * h * (4 + 4 + kChannels), "camera.resolution"});
   for (const sensors::SensorSpec& spec : config.sensors) {
     e.items.push_back({"sensors/" + spec.name, sensorBytes(spec, w, h, axis),
                        "camera.resolution x the sensor's bins"});

@@ -5,6 +5,7 @@
 #include "tofsim/imaging/Pictures.h"
 #include "tofsim/imaging/Video.h"
 #include "tofsim/io/Exr.h"
+#include "tofsim/io/Npy.h"
 #include "tofsim/pipeline/AxisReport.h"
 #include "tofsim/pipeline/Capture.h"
 #include "tofsim/pipeline/Manifest.h"
@@ -168,8 +169,11 @@ void writeOutputs(const config::RunConfig& config, const capture::RenderJob& job
   }
   if (out.depth) {
     io::writeExr(dir / "depth.exr", summary.result.depth_m, {"Z"});
+    io::writeNpy(dir / "depth.npy", {std::size_t(job.camera.height), std::size_t(job.camera.width)},
+                 summary.result.depth_m.data.data());  // for readers that skip channel Z
     imaging::writeColormappedPng(dir / "depth.png", summary.result.depth_m, "depth [m]", "turbo");
     summary.files.push_back("depth.exr");
+    summary.files.push_back("depth.npy");
     summary.files.push_back("depth.png");
   }
   if (out.frames) writeFrames(dir, *sink.volume(), summary.files);

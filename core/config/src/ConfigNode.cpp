@@ -216,11 +216,20 @@ long long ConfigNode::getInt(const std::string& key, long long fallback) const {
   try {
     std::size_t used = 0;
     const long long v = std::stoll(text, &used);
-    if (used != text.size()) throw std::invalid_argument("trailing characters");
-    return v;
+    if (used == text.size()) return v;
   } catch (const std::logic_error&) {
-    c.fail("expected an integer (got '" + text + "')");
   }
+  // An integral float (`cycles: 1e5`, or 100000.0 from a Python dict) is that
+  // integer; 2^63 bounds the conversion, which is exact for integral doubles.
+  try {
+    std::size_t used = 0;
+    const double d = std::stod(text, &used);
+    if (used == text.size() && d == std::floor(d) && std::fabs(d) < 0x1p63) {
+      return static_cast<long long>(d);
+    }
+  } catch (const std::logic_error&) {
+  }
+  c.fail("expected an integer (got '" + text + "')");
 }
 
 bool ConfigNode::getBool(const std::string& key, bool fallback) const {

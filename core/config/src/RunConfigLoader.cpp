@@ -2,6 +2,7 @@
 #include <string>
 
 #include "ConfigNode.h"
+#include "RunConfigYaml.h"
 #include "tofsim/config/RunConfig.h"
 #include "tofsim/config/SensorConfig.h"
 
@@ -290,7 +291,11 @@ Override parseOverride(const std::string& text) {
 }
 
 RunConfig loadRunConfig(const std::filesystem::path& file, const std::vector<Override>& overrides) {
-  YAML::Node yaml = loadYamlFile(file.string());
+  return loadRunConfigYaml(loadYamlFile(file.string()), file, overrides);
+}
+
+RunConfig loadRunConfigYaml(YAML::Node yaml, const std::filesystem::path& file,
+                            const std::vector<Override>& overrides) {
   if (!yaml.IsMap())
     throw InputError(FileLoc{file.string(), 1, 1}, "", "the config must be a mapping");
   for (const Override& o : overrides) applyOverride(yaml, o.keyPath, o.value);

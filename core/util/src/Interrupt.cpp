@@ -45,6 +45,8 @@ void throwIfInterrupted() {
   if (const int s = gPending.load()) throw Interrupted(s);
 }
 
+void setPendingInterrupt(int signalNumber) { gPending.store(signalNumber); }
+
 void setPendingInterruptForTesting(int signalNumber) { gPending.store(signalNumber); }
 
 }  // namespace tofsim

@@ -94,6 +94,11 @@ Override parseOverride(const std::string& text);
 /// column and key (or the --set that caused them).
 RunConfig loadRunConfig(const std::filesystem::path& file, const std::vector<Override>& overrides = {});
 
+/// As loadRunConfig, on YAML (or JSON) text held in memory: `file` names it
+/// in errors and anchors relative paths (the scene) at its folder.
+RunConfig loadRunConfigText(const std::string& yamlText, const std::filesystem::path& file,
+                            const std::vector<Override>& overrides = {});
+
 /// The effective config as YAML: every key with its value, defaults included.
 std::string effectiveConfigYaml(const RunConfig& config);
 

@@ -3,6 +3,7 @@
 // parameter structs, and written back with every default filled in. Keys and
 // units: sensors/README.md.
 
+#include <string>
 #include <vector>
 
 #include "tofsim/sensors/SensorSpec.h"
@@ -19,6 +20,11 @@ class ConfigNode;
 /// model's keys. Throws InputError with file:line:col and the key path for bad
 /// values, unknown types and unknown keys.
 std::vector<sensors::SensorSpec> parseSensors(const ConfigNode& sensorsList);
+
+/// One sensor given as YAML (or JSON) text of a mapping in the format of a
+/// `sensors:` entry. Errors name `file` and the key path
+/// (`sensors[0].<key>`), as parseSensors does.
+sensors::SensorSpec parseSensorText(const std::string& yamlText, const std::string& file);
 
 /// The effective configuration (defaults filled in) as a YAML sequence that
 /// parseSensors reads back to the same parameters.

@@ -29,6 +29,10 @@ void installInterruptHandlers();
 int pendingInterrupt();
 /// Throws Interrupted when a signal arrived.
 void throwIfInterrupted();
+/// Records `signalNumber` as arrived (0 clears). Async-signal-safe: for
+/// handlers installed elsewhere, e.g. the Python module's SIGINT handler for
+/// the duration of a render.
+void setPendingInterrupt(int signalNumber);
 /// Test hook: behaves as if `signalNumber` had arrived (0 clears).
 void setPendingInterruptForTesting(int signalNumber);
 
