@@ -1,0 +1,201 @@
+// _render: a config rendered into NumPy arrays. Without an output folder the
+// volume is collected in memory (capture::VolumeCollector) from the renderer
+// the CLI would use (pipeline::makeRenderer); with one, the CLI's own run
+// (pipeline::runRender) writes the files and the arrays are read back from
+// them. The GIL is released while rendering; Ctrl-C interrupts it.
+
+#include <pybind11/stl.h>
+
+#include <algorithm>
+#include <cmath>
+#include <csignal>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "Arrays.h"
+#include "Bindings.h"
+#include "tofsim/capture/VolumeCollector.h"
+#include "tofsim/io/Npy.h"
+#include "tofsim/pipeline/AxisReport.h"
+#include "tofsim/pipeline/Capture.h"
+#include "tofsim/pipeline/Progress.h"
+#include "tofsim/pipeline/RenderRun.h"
+#include "tofsim/pipeline/RendererFactory.h"
+#include "tofsim/scene/GltfLoader.h"
+#include "tofsim/util/Interrupt.h"
+
+namespace py = pybind11;
+
+namespace tofsim::python {
+
+namespace {
+
+extern "C" void onSigint(int) { setPendingInterrupt(SIGINT); }
+
+// Python's SIGINT handler only sets a flag that Python code polls, and no
+// Python code runs while C++ renders. For the render's duration, a handler
+// that records the signal where the renderers look for it (util/Interrupt.h);
+// Python's handler comes back afterwards. Only on the main thread, which is
+// where Python handles signals.
+class SigintScope {
+ public:
+  explicit SigintScope(bool active) : active_(active) {
+    if (!active_) return;
+    setPendingInterrupt(0);
+    struct sigaction action {};
+    action.sa_handler = onSigint;
+    sigemptyset(&action.sa_mask);
+    sigaction(SIGINT, &action, &previous_);
+  }
+  ~SigintScope() {
+    if (!active_) return;
+    sigaction(SIGINT, &previous_, nullptr);
+    setPendingInterrupt(0);
+  }
+  SigintScope(const SigintScope&) = delete;
+  SigintScope& operator=(const SigintScope&) = delete;
+
+ private:
+  bool active_;
+  struct sigaction previous_ {};
+};
+
+bool onMainThread() {
+  const py::module_ threading = py::module_::import("threading");
+  return threading.attr("main_thread")().is(threading.attr("current_thread")());
+}
+
+// What a render hands back before it becomes Python objects (built without the GIL).
+struct Rendered {
+  std::optional<TransientVolume> transient, direct, indirect;
+  Image steady;
+  capture::RenderResult result;
+  std::string device;
+  std::vector<std::string> files;
+};
+
+// As the output stage does for files: a NaN or infinity never reaches the
+// arrays silently; it becomes 0 and is counted.
+std::size_t zeroNonFinite(TransientVolume& volume) {
+  std::size_t count = 0;
+  for (float& v : volume.values()) {
+    if (!std::isfinite(v)) {
+      v = 0.0f;
+      ++count;
+    }
+  }
+  return count;
+}
+
+Rendered renderInMemory(const config::RunConfig& config, bool quiet) {
+  pipeline::Progress progress("render", quiet);
+  const scene::Scene scene = scene::loadGltf(config.scene_file);
+  const capture::RenderJob job = pipeline::makeRenderJob(config, scene);
+  pipeline::checkAxisBeforeRender(config, job, false);
+  capture::VolumeCollector collector(job.camera.width, job.camera.height, job.settings.time,
+                                     capture::kChannels);
+  const auto renderer = pipeline::makeRenderer(config, gl::eglPlatformFromEnvironment());
+  Rendered r;
+  r.device = renderer->description();
+  // Progress::update throws Interrupted once SIGINT has arrived.
+  r.result = renderer->render(job, collector,
+                              [&](std::size_t done, std::size_t total, const std::string& what) {
+                                progress.update(done, total, what);
+                              });
+  throwIfInterrupted();
+  r.result.nonFiniteRejected = zeroNonFinite(collector.direct) + zeroNonFinite(collector.indirect);
+  r.transient = collector.total();
+  r.steady = steadyImage(*r.transient);
+  r.direct = std::move(collector.direct);
+  r.indirect = std::move(collector.indirect);
+  return r;
+}
+
+std::optional<TransientVolume> readVolume(const std::filesystem::path& file, const TimeAxis& axis) {
+  if (!std::filesystem::exists(file)) return std::nullopt;
+  io::NpyArray a = io::readNpy(file);
+  TransientVolume v(static_cast<int32_t>(a.shape.at(1)), static_cast<int32_t>(a.shape.at(0)), axis,
+                    capture::defaultChannelNames(static_cast<int32_t>(a.shape.at(3))));
+  v.values() = std::move(a.data);
+  return v;
+}
+
+// The CLI's run, then the arrays it wrote. Volumes the config does not write
+// (output.transient: false, no components) come back as None.
+Rendered renderToFolder(const config::RunConfig& config, const std::string& directory, bool quiet) {
+  pipeline::RunOptions options;
+  options.outputDirectory = directory;
+  options.quiet = quiet;
+  pipeline::RunSummary summary = pipeline::runRender(config, options);
+  Rendered r;
+  r.result = std::move(summary.result);
+  r.device = summary.device;
+  r.files = summary.files;
+  const TimeAxis& axis = config.render.time;
+  const auto wrote = [&](const char* name) {
+    return std::find(r.files.begin(), r.files.end(), name) != r.files.end();
+  };
+  const std::filesystem::path dir = summary.outputDirectory;
+  if (wrote("transient.npy")) r.transient = readVolume(dir / "transient.npy", axis);
+  if (wrote("direct.npy")) r.direct = readVolume(dir / "direct.npy", axis);
+  if (wrote("indirect.npy")) r.indirect = readVolume(dir / "indirect.npy", axis);
+  if (r.transient) r.steady = steadyImage(*r.transient);
+  return r;
+}
+
+py::object optionalVolume(std::optional<TransientVolume>& v) {
+  return v ? py::object(volumeArray(std::move(*v))) : py::none();
+}
+
+py::dict toPython(Rendered& r, const TimeAxis& axis) {
+  py::dict d;
+  d["transient"] = optionalVolume(r.transient);
+  d["direct"] = optionalVolume(r.direct);
+  d["indirect"] = optionalVolume(r.indirect);
+  const Image& depth = r.result.depth_m;
+  d["depth"] = ownedArray(std::move(r.result.depth_m.data), {depth.height, depth.width});
+  d["steady"] = r.steady.data.empty()
+                    ? py::object(py::none())
+                    : py::object(ownedArray(std::move(r.steady.data),
+                                            {r.steady.height, r.steady.width, r.steady.channels}));
+  py::dict time;
+  time["start_s"] = axis.start_s;
+  time["bin_width_s"] = axis.bin_width_s;
+  time["bins"] = axis.bins;
+  time["start_m"] = axis.start_m();
+  time["bin_width_m"] = axis.bin_width_m();
+  d["time"] = time;
+  py::dict stats;
+  stats["seconds"] = r.result.seconds;
+  stats["segments"] = r.result.segments;
+  stats["vpls"] = r.result.vpls;
+  stats["off_axis_before"] = r.result.offAxis.before;
+  stats["off_axis_after"] = r.result.offAxis.after;
+  stats["rejected_non_finite_values"] = r.result.nonFiniteRejected;
+  d["stats"] = stats;
+  d["device"] = r.device;
+  d["files"] = r.files;
+  return d;
+}
+
+py::dict render(const config::RunConfig& config, const std::optional<std::string>& outputDir,
+                bool quiet) {
+  const bool mainThread = onMainThread();
+  Rendered r;
+  {
+    py::gil_scoped_release released;
+    SigintScope sigint(mainThread);
+    r = outputDir ? renderToFolder(config, *outputDir, quiet) : renderInMemory(config, quiet);
+  }
+  return toPython(r, config.render.time);
+}
+
+}  // namespace
+
+void bindRender(py::module_& m) {
+  m.def("_render", &render, py::arg("config"), py::arg("output_dir"), py::arg("quiet"));
+}
+
+}  // namespace tofsim::python

@@ -1,0 +1,136 @@
+// _sense: one sensor model (streak, SPAD, CW-ToF; sensors/) on any (H, W, T, C)
+// float32 transient, tofsim's or another renderer's. The sensor comes as JSON
+// text in the config's sensor format and is parsed by core/config's sensor
+// parser, so its validation and defaults are the CLI's.
+
+#include <pybind11/stl.h>
+
+#include <optional>
+#include <string>
+#include <variant>
+
+#include "Arrays.h"
+#include "Bindings.h"
+#include "tofsim/config/SensorConfig.h"
+#include "tofsim/sensors/RunSensor.h"
+
+namespace py = pybind11;
+
+namespace tofsim::python {
+
+namespace {
+
+constexpr const char* kSensorFile = "<sensor>";
+
+// parseSensorText names keys "sensors[0].<key>"; the user wrote "<key>".
+sensors::SensorSpec parseSensor(const std::string& json) {
+  try {
+    return config::parseSensorText(json, kSensorFile);
+  } catch (const InputError& e) {
+    const std::string prefix = "sensors[0]";
+    std::string key = e.key();
+    if (key.compare(0, prefix.size(), prefix) == 0) key.erase(0, prefix.size());
+    if (!key.empty() && key[0] == '.') key.erase(0, 1);
+    throw InputError(FileLoc{kSensorFile}, key, inputErrorMessage(e));
+  }
+}
+
+const char* kindName(sensors::SensorOutput::Kind kind) {
+  switch (kind) {
+    case sensors::SensorOutput::Kind::Array:
+      return "array";
+    case sensors::SensorOutput::Kind::Image:
+      return "image";
+    case sensors::SensorOutput::Kind::ColorMappedImage:
+      return "color_mapped_image";
+    case sensors::SensorOutput::Kind::HistogramPlot:
+      return "histogram_plot";
+  }
+  return "array";
+}
+
+py::dict metadataOf(const sensors::SensorOutput& o) {
+  py::dict d;
+  d["kind"] = kindName(o.kind);
+  d["unit"] = o.unit;
+  d["description"] = o.description;
+  if (o.kind == sensors::SensorOutput::Kind::HistogramPlot) {
+    d["labels"] = o.labels;
+    d["axis_start"] = o.axis_start;
+    d["axis_step"] = o.axis_step;
+    d["axis_unit"] = o.axis_unit;
+  }
+  return d;
+}
+
+// The instrument's time axis of the models that bin in time.
+py::object instrumentAxis(const sensors::SensorSpec& spec, const TimeAxis& render) {
+  const sensors::InstrumentBins* bins = nullptr;
+  if (const auto* s = std::get_if<sensors::SpadParams>(&spec.params)) bins = &s->bins;
+  if (const auto* s = std::get_if<sensors::StreakParams>(&spec.params)) bins = &s->bins;
+  if (!bins) return py::none();
+  const TimeAxis axis = sensors::resolveBins(*bins, render);
+  py::dict d;
+  d["start_s"] = axis.start_s;
+  d["bin_width_s"] = axis.bin_width_s;
+  d["bins"] = axis.bins;
+  return d;
+}
+
+// (outputs: name -> array, metadata: name -> dict, sensor: dict). A colour-
+// mapped image repeats the Image of the same name (it is how the CLI draws
+// it), so only its colour map is kept, in the Image's metadata.
+py::tuple sense(const FloatArray& transient, double start_s, double binWidth_s,
+                const std::string& sensorJson, uint64_t seed,
+                const std::optional<FloatArray>& direct, const std::optional<FloatArray>& depth) {
+  const sensors::SensorSpec spec = parseSensor(sensorJson);
+  const TimeAxis axis{start_s, binWidth_s,
+                      transient.ndim() == 4 ? static_cast<int32_t>(transient.shape(2)) : 0};
+  const TransientVolume volume = volumeFromArray(transient, axis, "transient");
+  std::optional<TransientVolume> directVolume;
+  if (direct) directVolume = volumeFromArray(*direct, axis, "direct");
+  std::optional<Image> depthImage;
+  if (depth) {
+    if (depth->ndim() != 2 || depth->shape(0) != volume.height() ||
+        depth->shape(1) != volume.width()) {
+      throw py::value_error("depth must have shape (H, W) of the transient");
+    }
+    depthImage = Image(volume.width(), volume.height(), 1);
+    std::copy_n(depth->data(), depthImage->data.size(), depthImage->data.data());
+  }
+  sensors::SensorInputs inputs;
+  inputs.volume = &volume;
+  inputs.directOnly = directVolume ? &*directVolume : nullptr;
+  inputs.groundTruthDepth_m = depthImage ? &*depthImage : nullptr;
+  inputs.seed = seed;
+  std::vector<sensors::SensorOutput> outputs;
+  {
+    py::gil_scoped_release released;
+    outputs = sensors::runSensor(spec, inputs);
+  }
+  py::dict arrays, metadata;
+  for (sensors::SensorOutput& o : outputs) {
+    if (o.kind == sensors::SensorOutput::Kind::ColorMappedImage && arrays.contains(o.name)) {
+      metadata[py::str(o.name)]["colormap"] = o.colormap;
+      continue;
+    }
+    metadata[py::str(o.name)] = metadataOf(o);
+    const std::vector<py::ssize_t> shape(o.shape.begin(), o.shape.end());
+    arrays[py::str(o.name)] = ownedArray(std::move(o.data), shape);
+  }
+  py::dict sensor;
+  sensor["name"] = spec.name;
+  sensor["type"] = sensors::sensorTypeName(spec.params);
+  sensor["seed"] = seed;
+  sensor["time"] = instrumentAxis(spec, axis);
+  return py::make_tuple(arrays, metadata, sensor);
+}
+
+}  // namespace
+
+void bindSense(py::module_& m) {
+  m.def("_sense", &sense, py::arg("transient"), py::arg("start_s"), py::arg("bin_width_s"),
+        py::arg("sensor_json"), py::arg("seed"), py::arg("direct"), py::arg("depth"));
+}
+
+}  // namespace tofsim::python

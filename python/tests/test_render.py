@@ -1,0 +1,129 @@
+"""tofsim.render against closed forms, and the arrays' memory."""
+
+import gc
+import os
+import signal
+import threading
+import time
+
+import numpy as np
+import pytest
+
+import tofsim
+from conftest import SOURCE_DIR, pixel_directions
+
+CORNELL = os.path.join(SOURCE_DIR, "configs", "cornell_box.yaml")
+
+
+def expected_bins(config, time_axis):
+    """Round-trip path camera -> plane -> camera (light at the camera) in bins;
+    -1 within 2 % of a bin edge, where float rounding may pick either side."""
+    cam = config["camera"]
+    w, h = cam["resolution"]
+    d = pixel_directions(cam["position"], cam["look_at"], cam["fov_y"], w, h)
+    o = np.asarray(cam["position"], float)
+    t = -o[2] / d[..., 2]
+    r = np.linalg.norm(d * t[..., None], axis=2)
+    f = (2 * r - time_axis.start_m) / time_axis.bin_width_m
+    frac = f - np.floor(f)
+    return np.where((frac < 0.02) | (frac > 0.98), -1, np.floor(f).astype(int))
+
+
+def peak_bins(volume, channel=0):
+    v = volume[..., channel]
+    return np.where(v.max(axis=2) > 0, v.argmax(axis=2), -1)
+
+
+def test_plane_peaks_land_in_the_bin_of_the_round_trip(plane_config):
+    result = tofsim.render(plane_config)
+    assert result.transient.shape == (30, 40, 1200, 3)
+    assert result.transient.dtype == np.float32
+    assert result.depth.shape == (30, 40)
+    assert result.steady.shape == (30, 40, 3)
+    assert result.time.bins == 1200
+    assert result.time.bin_width_m == pytest.approx(0.002)
+    assert result.time.start_m == pytest.approx(2.5)
+    expected = expected_bins(plane_config, result.time)
+    checked = expected >= 0
+    assert checked.sum() > 1000
+    np.testing.assert_array_equal(peak_bins(result.direct)[checked], expected[checked])
+    np.testing.assert_array_equal(result.transient, result.direct + result.indirect)
+    np.testing.assert_allclose(result.steady, result.transient.sum(axis=2, dtype=np.float64),
+                               rtol=1e-6)
+    assert result.files == []
+    assert not os.path.exists(plane_config["output"]["directory"])
+
+
+def test_depth_is_the_distance_to_the_plane(plane_config):
+    result = tofsim.render(plane_config)
+    cam = plane_config["camera"]
+    d = pixel_directions(cam["position"], cam["look_at"], cam["fov_y"], 40, 30)
+    expected = 1.5 / -d[..., 2]
+    np.testing.assert_allclose(result.depth, expected, rtol=1e-4)
+
+
+def test_output_dir_writes_the_cli_files_and_returns_the_same_arrays(plane_config, tmp_path):
+    out = tmp_path / "files"
+    plane_config["output"]["components"] = ["direct", "indirect"]
+    in_memory = tofsim.render(plane_config)
+    written = tofsim.render(plane_config, output_dir=out)
+    for name in ("transient.npy", "direct.npy", "indirect.npy", "depth.exr", "depth.npy",
+                 "steady.exr", "transient.json", "config.effective.yaml"):
+        assert name in written.files
+        assert (out / name).exists(), name
+    np.testing.assert_array_equal(np.load(out / "transient.npy"), written.transient)
+    np.testing.assert_array_equal(written.transient, in_memory.transient)
+    np.testing.assert_array_equal(written.direct, in_memory.direct)
+    np.testing.assert_array_equal(np.load(out / "depth.npy"), in_memory.depth)
+
+
+def test_reference_renderer_by_argument(plane_config):
+    plane_config["camera"]["resolution"] = [8, 6]
+    plane_config["time"]["bins"] = 200
+    plane_config["time"]["bin_width"] = "1 cm"
+    result = tofsim.render(plane_config, renderer="reference")
+    assert "reference" in result.device.lower() or "cpu" in result.device.lower()
+    assert result.transient.shape == (6, 8, 200, 3)
+    assert result.steady.sum() > 0
+
+
+def test_backend_is_a_config_key(plane_config):
+    # render.backend is validated like any key: unknown where the build has none.
+    with pytest.raises(tofsim.ConfigError) as e:
+        tofsim.render(plane_config, backend="no-such-backend")
+    assert e.value.key == "render.backend"
+
+
+def test_arrays_keep_their_memory_after_the_result_is_gone(plane_config):
+    plane_config["camera"]["resolution"] = [8, 6]
+    result = tofsim.render(plane_config)
+    transient, depth = result.transient, result.depth
+    expected = transient.copy()
+    assert transient.base is not None  # a view of memory the array's base owns
+    del result
+    gc.collect()
+    filler = [np.full(transient.shape, 7.0, np.float32) for _ in range(4)]  # reuse freed memory
+    np.testing.assert_array_equal(transient, expected)
+    assert depth.min() > 1.0
+    del filler
+
+
+def test_ctrl_c_interrupts_a_render():
+    # A render that takes minutes: the reference path tracer in the Cornell
+    # box at many paths per pixel, in many segments.
+    config = tofsim.load_config(CORNELL, overrides={
+        "sensors": [], "camera.resolution": [64, 64], "render.memory_budget": "1 MiB",
+        "render.reference": {"samples_per_pixel": 1 << 16, "bounces": 4}})
+    timer = threading.Timer(1.0, os.kill, (os.getpid(), signal.SIGINT))
+    start = time.monotonic()
+    timer.start()
+    try:
+        with pytest.raises(KeyboardInterrupt):
+            tofsim.render(config, renderer="reference")
+    finally:
+        timer.cancel()
+    assert time.monotonic() - start < 60
+    # Python's own handler is back: the next Ctrl-C raises at once.
+    with pytest.raises(KeyboardInterrupt):
+        os.kill(os.getpid(), signal.SIGINT)
+        time.sleep(5)

@@ -1,0 +1,29 @@
+"""tofsim: transient (time-of-flight) rendering and ToF sensor models in Python.
+
+    import tofsim
+    config = tofsim.load_config("configs/cornell_box.yaml", overrides={"time.bins": 300})
+    result = tofsim.render(config)           # NumPy arrays, no files
+    result.transient.shape                   # (H, W, T, C) float32
+    spad = tofsim.sense(result.transient, result.time,
+                        {"type": "spad", "cycles": 10000, "pde": 0.3})
+    spad["spad_counts"].shape                # (H, W, bins)
+
+Configs are validated exactly as by the `tofsim` command (configs/README.md);
+bad input raises ConfigError (a ValueError) with file, line, column and key.
+"""
+
+from ._tofsim import Config, ConfigError
+from ._config import load_config
+from ._render import RenderResult, TimeAxis, render
+from ._sense import SensorResult, sense
+
+__all__ = [
+    "Config",
+    "ConfigError",
+    "RenderResult",
+    "SensorResult",
+    "TimeAxis",
+    "load_config",
+    "render",
+    "sense",
+]

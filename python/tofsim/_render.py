@@ -1,0 +1,77 @@
+"""tofsim.render: a config rendered into NumPy arrays."""
+
+from dataclasses import dataclass
+
+from . import _tofsim
+from ._config import load_config
+
+
+@dataclass(frozen=True)
+class TimeAxis:
+    """Bin i covers arrival times [start_s + i bin_width_s, start_s + (i+1) bin_width_s),
+    measured from the light's emission; *_m are the same as optical path length (c t)."""
+
+    start_s: float
+    bin_width_s: float
+    bins: int
+    start_m: float
+    bin_width_m: float
+
+    def bin_starts_s(self):
+        """Leading edge of every bin, seconds (a NumPy array of `bins` values)."""
+        import numpy
+
+        return self.start_s + self.bin_width_s * numpy.arange(self.bins)
+
+
+@dataclass
+class RenderResult:
+    """What tofsim.render returns. Arrays are float32 NumPy arrays that own
+    their memory; a volume the run did not produce is None.
+
+    transient: (H, W, T, C) radiance per time bin, direct + indirect
+    direct, indirect: (H, W, T, C) the components (transient == direct + indirect)
+    depth: (H, W) camera-to-surface distance, metres; 0 where no surface
+    steady: (H, W, C) transient summed over time
+    time: the TimeAxis of the T bins
+    stats: seconds, segments, vpls, off_axis_before/after, rejected_non_finite_values
+    device: what rendered it (GL renderer string, or the CPU reference)
+    files: written files, relative to output_dir (empty without one)
+    """
+
+    transient: object
+    direct: object
+    indirect: object
+    depth: object
+    steady: object
+    time: TimeAxis
+    stats: dict
+    device: str
+    files: list
+    output_dir: object = None
+
+
+def render(config, renderer=None, backend=None, output_dir=None, quiet=True):
+    """Renders a config (a Config, or anything load_config takes).
+
+    renderer: "ir" or "reference", overriding render.renderer.
+    backend: overrides render.backend (rejected as an unknown key where this
+    build has no such key).
+    output_dir: also write every output of `tofsim render` there (the arrays
+    are then read back from those files: a volume the config does not write
+    is None). Without it nothing is written.
+    quiet: False prints progress and warnings on stderr, as the CLI does.
+
+    The GIL is released while rendering; Ctrl-C raises KeyboardInterrupt
+    (and, with output_dir, leaves earlier results there untouched).
+    """
+    overrides = {}
+    if renderer is not None:
+        overrides["render.renderer"] = renderer
+    if backend is not None:
+        overrides["render.backend"] = backend
+    config = load_config(config, overrides)
+    out = _tofsim._render(config, None if output_dir is None else str(output_dir), quiet)
+    out["time"] = TimeAxis(**out["time"])
+    out["output_dir"] = output_dir
+    return RenderResult(**out)
