@@ -127,3 +127,24 @@ def test_ctrl_c_interrupts_a_render():
     with pytest.raises(KeyboardInterrupt):
         os.kill(os.getpid(), signal.SIGINT)
         time.sleep(5)
+
+
+def test_the_gil_is_released_while_rendering(plane_config):
+    # Python keeps running beside a render: the main thread's longest pause
+    # is much shorter than the render (it would be all of it with the GIL held).
+    done = {}
+
+    def work():
+        start = time.monotonic()
+        tofsim.render(plane_config)
+        done["seconds"] = time.monotonic() - start
+
+    thread = threading.Thread(target=work)
+    last, longest = time.monotonic(), 0.0
+    thread.start()
+    while thread.is_alive():
+        now = time.monotonic()
+        longest, last = max(longest, now - last), now
+    thread.join()
+    assert done["seconds"] > 0.2
+    assert longest < 0.5 * done["seconds"], (longest, done["seconds"])
