@@ -133,10 +133,17 @@ def test_the_gil_is_released_while_rendering(plane_config):
     # Python keeps running beside a render: the main thread's longest pause
     # is much shorter than the render (it would be all of it with the GIL held).
     done = {}
+    # Big enough to take a second or more on any backend, so the pause
+    # measured below is small against it.
+    config = dict(plane_config)
+    config["camera"] = dict(plane_config["camera"], resolution=[256, 192])
+    config["render"] = {"indirect": {"enabled": True, "rsm_resolution": 16,
+                                     "visibility": "exact"},
+                        "shadow_map_resolution": 256}
 
     def work():
         start = time.monotonic()
-        tofsim.render(plane_config)
+        tofsim.render(config)
         done["seconds"] = time.monotonic() - start
 
     thread = threading.Thread(target=work)
