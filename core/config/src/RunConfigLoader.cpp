@@ -99,6 +99,11 @@ void parseTime(const ConfigNode& node, capture::RenderSettings& r) {
   r.index_of_refraction = node.getDouble("index_of_refraction", 1.0);
   if (!(r.index_of_refraction >= 1.0)) node.failKey("index_of_refraction", "must be >= 1");
   r.camera_unwarp = node.getBool("camera_unwarp", false);
+  // The renderers read RenderSettings' own fields; the axis carries the same
+  // two values to the volume and the sensors (depth = (c / eta) t / legs).
+  // Both are set here, from one parse, so they cannot disagree.
+  r.time.index_of_refraction = r.index_of_refraction;
+  r.time.camera_unwarp = r.camera_unwarp;
 }
 
 void parseIndirect(const ConfigNode& node, capture::IndirectSettings& s) {
@@ -146,8 +151,8 @@ void parseRender(const ConfigNode& node, RunConfig& out) {
   if (const auto reference = node.optionalChild("reference")) {
     ReferenceConfig& ref = out.reference;
     ref.bounces = static_cast<int32_t>(intInRange(*reference, "bounces", ref.bounces, 1, 64));
-    ref.samples_per_pixel =
-        static_cast<int32_t>(intInRange(*reference, "samples_per_pixel", ref.samples_per_pixel, 1, 1 << 24));
+    ref.samples_per_pixel = static_cast<int32_t>(
+        intInRange(*reference, "samples_per_pixel", ref.samples_per_pixel, 1, 1 << 24));
     ref.threads = static_cast<int32_t>(intInRange(*reference, "threads", ref.threads, 0, 4096));
   }
 }
@@ -273,9 +278,9 @@ void checkVplCount(const ConfigNode& root, const RunConfig& config) {
     const ConfigNode render = root.child("render");
     const ConfigNode indirect = render.child("indirect");
     indirect.failKey("rsm_resolution",
-                     std::to_string(side) + "^2 x " + std::to_string(faces) + " light view(s) = " +
-                         std::to_string(faces * side * side) + " VPLs, more than the limit of " +
-                         std::to_string(kMaxVpls));
+                     std::to_string(side) + "^2 x " + std::to_string(faces) +
+                         " light view(s) = " + std::to_string(faces * side * side) +
+                         " VPLs, more than the limit of " + std::to_string(kMaxVpls));
   }
 }
 
