@@ -236,33 +236,6 @@ std::string nodePath(const std::string& keyPath) {
   return out;
 }
 
-// Rows and pixels a sensor names must lie in the image, checked here so that
-// the error comes before the render rather than after it.
-void checkSensorPixels(const ConfigNode& list, const std::vector<sensors::SensorSpec>& specs,
-                       const capture::Camera& camera) {
-  const std::vector<ConfigNode> nodes = list.elements();
-  for (std::size_t i = 0; i < specs.size() && i < nodes.size(); ++i) {
-    if (const auto* streak = std::get_if<sensors::StreakParams>(&specs[i].params)) {
-      for (int32_t row : streak->rows) {
-        if (row >= camera.height) {
-          nodes[i].failKey("rows", "row " + std::to_string(row) + " is outside the image (height " +
-                                       std::to_string(camera.height) + ")");
-        }
-      }
-    }
-    if (const auto* spad = std::get_if<sensors::SpadParams>(&specs[i].params)) {
-      for (const auto& xy : spad->plot_pixels) {
-        if (xy[0] < 0 || xy[1] < 0 || xy[0] >= camera.width || xy[1] >= camera.height) {
-          nodes[i].failKey("plot_pixels", "pixel (" + std::to_string(xy[0]) + ", " +
-                                              std::to_string(xy[1]) + ") is outside the " +
-                                              std::to_string(camera.width) + "x" +
-                                              std::to_string(camera.height) + " image");
-        }
-      }
-    }
-  }
-}
-
 // The RSM makes one VPL per texel of each light view: one view for spots up
 // to 60 degrees (half angle), six cube faces otherwise (Vpls.cpp). Bounded so
 // that a typo cannot ask for hours of work or more VPLs than a dispatch can
@@ -330,7 +303,7 @@ RunConfig loadRunConfig(const std::filesystem::path& file, const std::vector<Ove
     // misses them.
     config.sensors = parseSensors(*list);
     checkSensorNames(*list, config.sensors);
-    checkSensorPixels(*list, config.sensors, config.camera.camera);
+    checkSensorsFitImage(*list, config.sensors, config.camera.camera);
   }
   root.reportUnusedKeys();
   return config;

@@ -7,6 +7,7 @@
 #include <string>
 #include <type_traits>
 
+#include "SensorConfigType.h"
 #include "tofsim/config/SensorConfig.h"
 
 namespace tofsim::config {
@@ -58,7 +59,9 @@ void emitBins(YAML::Node& n, const InstrumentBins& b) {
   if (b.count > 0) n["bins"] = b.count;
 }
 
-void emit(YAML::Node& n, const StreakParams& p) {
+}  // namespace
+
+void SensorConfigType<StreakParams>::emit(YAML::Node& n, const StreakParams& p) {
   emitCommon(n, p.common);
   emitBins(n, p.bins);
   if (!p.rows.empty()) {
@@ -73,7 +76,7 @@ void emit(YAML::Node& n, const StreakParams& p) {
   n["colormap"] = p.colormap;
 }
 
-void emit(YAML::Node& n, const SpadParams& p) {
+void SensorConfigType<SpadParams>::emit(YAML::Node& n, const SpadParams& p) {
   emitCommon(n, p.common);
   emitBins(n, p.bins);
   n["mode"] = p.mode == SpadMode::Synchronous ? "synchronous" : "free_running";
@@ -96,7 +99,7 @@ void emit(YAML::Node& n, const SpadParams& p) {
   n["colormap"] = p.colormap;
 }
 
-void emit(YAML::Node& n, const CwTofParams& p) {
+void SensorConfigType<CwTofParams>::emit(YAML::Node& n, const CwTofParams& p) {
   emitCommon(n, p.common);
   for (double f : p.frequencies_Hz) n["frequencies"].push_back(frequency(f));
   n["phase_steps"] = p.phase_steps;
@@ -107,7 +110,6 @@ void emit(YAML::Node& n, const CwTofParams& p) {
   n["max_depth"] = exact(p.max_depth_m) + " m";
   n["colormap"] = p.colormap;
 }
-}  // namespace
 
 YAML::Node sensorsToYaml(const std::vector<SensorSpec>& specs) {
   YAML::Node list(YAML::NodeType::Sequence);
@@ -115,7 +117,8 @@ YAML::Node sensorsToYaml(const std::vector<SensorSpec>& specs) {
     YAML::Node n;
     n["type"] = sensorTypeName(spec.params);
     n["name"] = spec.name;
-    std::visit([&n](const auto& p) { emit(n, p); }, spec.params);
+    std::visit([&n](const auto& p) { SensorConfigType<std::decay_t<decltype(p)>>::emit(n, p); },
+               spec.params);
     list.push_back(n);
   }
   return list;

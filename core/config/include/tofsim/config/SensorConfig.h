@@ -5,6 +5,7 @@
 
 #include <vector>
 
+#include "tofsim/capture/Camera.h"
 #include "tofsim/sensors/SensorSpec.h"
 
 namespace YAML {
@@ -19,6 +20,12 @@ class ConfigNode;
 /// model's keys. Throws InputError with file:line:col and the key path for bad
 /// values, unknown types and unknown keys.
 std::vector<sensors::SensorSpec> parseSensors(const ConfigNode& sensorsList);
+
+/// Rows and pixels the sensors name must lie in the image: a located error
+/// (at sensors[i]) before the render rather than after it.
+void checkSensorsFitImage(const ConfigNode& sensorsList,
+                          const std::vector<sensors::SensorSpec>& specs,
+                          const capture::Camera& camera);
 
 /// The effective configuration (defaults filled in) as a YAML sequence that
 /// parseSensors reads back to the same parameters.
