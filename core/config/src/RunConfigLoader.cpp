@@ -2,6 +2,7 @@
 #include <string>
 
 #include "ConfigNode.h"
+#include "ShortestNumber.h"
 #include "tofsim/config/RunConfig.h"
 #include "tofsim/config/SensorConfig.h"
 
@@ -25,7 +26,7 @@ long long intInRange(const ConfigNode& node, const std::string& key, long long f
 }
 
 void requirePositive(const ConfigNode& node, const std::string& key, double value) {
-  if (!(value > 0.0)) node.failKey(key, "must be > 0 (got " + std::to_string(value) + ")");
+  if (!(value > 0.0)) node.failKey(key, "must be > 0 (got " + shortest(value) + ")");
 }
 
 void parseCamera(const ConfigNode& node, CameraConfig& out) {

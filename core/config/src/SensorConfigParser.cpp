@@ -7,6 +7,7 @@
 
 #include "ConfigNode.h"
 #include "SensorConfigType.h"
+#include "ShortestNumber.h"
 #include "tofsim/config/SensorConfig.h"
 #include "tofsim/config/Units.h"
 
@@ -15,11 +16,7 @@ namespace tofsim::config {
 namespace {
 using namespace tofsim::sensors;
 
-std::string number(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%g", v);
-  return buf;
-}
+std::string number(double v) { return shortest(v); }
 
 double positive(const ConfigNode& n, const std::string& key, double value) {
   if (n.has(key) && !(value > 0.0)) n.failKey(key, "must be > 0 (got " + number(value) + ")");
