@@ -21,7 +21,7 @@ double Radiometry::photoelectronsPerUnit() const {
 
 TimeAxis resolveBins(const InstrumentBins& bins, const TimeAxis& render) {
   TOFSIM_CHECK(bins.bin_width_s >= 0.0 && bins.count >= 0 && render.bin_width_s > 0.0);
-  TimeAxis axis;
+  TimeAxis axis = render;  // the medium and the legs timed are the render's
   axis.bin_width_s = bins.bin_width_s > 0.0 ? bins.bin_width_s : render.bin_width_s;
   axis.start_s = bins.offset_s.value_or(render.start_s);
   if (bins.count > 0) {

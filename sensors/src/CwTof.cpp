@@ -57,7 +57,9 @@ struct Correlator {
                      phases[f], a);
       if (f == 0) amplitude = a;
     }
-    return unwrapDepth_m(phases, p.frequencies_Hz, range);
+    // Delay -> depth in the medium (c / eta), so a scene in water is not
+    // reported as (eta - 1) x depth of multipath error.
+    return unwrapDepth_m(phases, p.frequencies_Hz, range, axis.depthPerSecond_m_per_s());
   }
 };
 
@@ -106,7 +108,7 @@ std::vector<SensorOutput> runCwTof(const TransientVolume& volume, const CwTofPar
                  direct->channels() != volume.channels() || direct->bins() != volume.bins())) {
     throw InputError("cwtof direct-only volume does not match the volume's shape");
   }
-  const double range = unwrapRange_m(p);
+  const double range = unwrapRange_m(p, volume.axis().depthPerSecond_m_per_s());
   const Correlator correlator(p, volume.axis());
   const std::size_t HW = static_cast<std::size_t>(H) * W;
   const float nan = std::numeric_limits<float>::quiet_NaN();

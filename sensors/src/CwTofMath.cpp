@@ -6,7 +6,6 @@
 
 #include "tofsim/sensors/CwTof.h"
 #include "tofsim/util/Error.h"
-#include "tofsim/volume/PhysicalConstants.h"
 
 namespace tofsim::sensors {
 
@@ -59,27 +58,26 @@ void phaseFromSteps(const double* raw, int32_t steps, double& phase_rad, double&
 }
 
 double unwrapDepth_m(const std::vector<double>& phases, const std::vector<double>& freqs,
-                     double maxDepth_m) {
-  TOFSIM_CHECK(!freqs.empty() && phases.size() == freqs.size());
-  const double c = kSpeedOfLight_m_per_s;
+                     double maxDepth_m, double k) {
+  TOFSIM_CHECK(!freqs.empty() && phases.size() == freqs.size() && k > 0.0);
   auto depthOf = [&](std::size_t j, double wraps) {
-    return (phases[j] + kTwoPi * wraps) * c / (2.0 * kTwoPi * freqs[j]);
+    return (phases[j] + kTwoPi * wraps) * k / (kTwoPi * freqs[j]);
   };
   if (freqs.size() == 1) return depthOf(0, 0.0);
   std::size_t base = 0;
   for (std::size_t j = 1; j < freqs.size(); ++j) {
     if (freqs[j] < freqs[base]) base = j;
   }
-  const double baseRange = c / (2.0 * freqs[base]);
+  const double baseRange = k / freqs[base];
   const auto candidates = static_cast<int64_t>(std::ceil(maxDepth_m / baseRange));
   double bestCost = std::numeric_limits<double>::infinity(), bestDepth = 0.0;
   for (int64_t n = 0; n < std::max<int64_t>(1, candidates); ++n) {
     const double d = depthOf(base, static_cast<double>(n));
     double cost = 0.0, sum = 0.0, weights = 0.0;
     for (std::size_t j = 0; j < freqs.size(); ++j) {
-      const double predicted = 2.0 * kTwoPi * freqs[j] * d / c;
+      const double predicted = kTwoPi * freqs[j] * d / k;
       const double residual = wrapPi(phases[j] - predicted);
-      const double dj = d + residual * c / (2.0 * kTwoPi * freqs[j]);
+      const double dj = d + residual * k / (kTwoPi * freqs[j]);
       cost += (dj - d) * (dj - d);
       sum += freqs[j] * freqs[j] * dj;
       weights += freqs[j] * freqs[j];
@@ -92,9 +90,8 @@ double unwrapDepth_m(const std::vector<double>& phases, const std::vector<double
   return bestDepth;
 }
 
-double unwrapRange_m(const CwTofParams& p) {
-  TOFSIM_CHECK(!p.frequencies_Hz.empty());
-  const double c = kSpeedOfLight_m_per_s;
+double unwrapRange_m(const CwTofParams& p, double k) {
+  TOFSIM_CHECK(!p.frequencies_Hz.empty() && k > 0.0);
   double fmin = p.frequencies_Hz[0];
   int64_t g = 0;
   for (double f : p.frequencies_Hz) {
@@ -102,8 +99,8 @@ double unwrapRange_m(const CwTofParams& p) {
     g = std::gcd(g, static_cast<int64_t>(std::llround(f / 1e3)));  // kHz resolution
   }
   if (p.max_depth_m > 0.0) return p.max_depth_m;
-  const double gcdRange = g > 0 ? c / (2.0 * 1e3 * static_cast<double>(g)) : c / (2.0 * fmin);
-  return std::min(gcdRange, kMaxUnwrapPeriods * c / (2.0 * fmin));
+  const double gcdRange = g > 0 ? k / (1e3 * static_cast<double>(g)) : k / fmin;
+  return std::min(gcdRange, kMaxUnwrapPeriods * k / fmin);
 }
 
 }  // namespace tofsim::sensors

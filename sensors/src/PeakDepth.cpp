@@ -6,7 +6,6 @@
 #include <string>
 
 #include "tofsim/util/Error.h"
-#include "tofsim/volume/PhysicalConstants.h"
 
 namespace tofsim::sensors {
 
@@ -24,7 +23,7 @@ double peakDepth_m(const std::vector<double>& histogram, const TimeAxis& axis) {
     if (denom < 0.0) offset = std::clamp(0.5 * (a - c) / denom, -0.5, 0.5);
   }
   const double t = axis.start_s + (best + 0.5 + offset) * axis.bin_width_s;
-  return 0.5 * kSpeedOfLight_m_per_s * t;
+  return axis.depthOf_m(t);
 }
 
 SensorOutput histogramPlot(const SensorOutput& counts,

@@ -10,8 +10,8 @@
 
 namespace tofsim::sensors {
 
-/// c t / 2 for the time t of the histogram's maximum, refined by a parabola
-/// through the maximum and its neighbours. NaN for an empty histogram.
+/// axis.depthOf_m(t) ((c / eta) t / 2) for the time t of the histogram's maximum, refined by a
+/// parabola through the maximum and its neighbours. NaN for an empty histogram.
 double peakDepth_m(const std::vector<double>& histogram, const TimeAxis& axis);
 
 /// HistogramPlot "spad_histograms" of the given (x, y) pixels (centre if none)

@@ -1,3 +1,5 @@
+// The dispatch over SensorParams: each call goes to the model's SensorType<>,
+// with no branch per type to keep in step.
 #include "tofsim/sensors/RunSensor.h"
 
 #include <type_traits>
@@ -6,14 +8,19 @@
 
 namespace tofsim::sensors {
 
+namespace {
+template <typename P>
+using TypeOf = SensorType<std::decay_t<P>>;
+}  // namespace
+
 const char* sensorTypeName(const SensorParams& params) {
+  return std::visit([](const auto& p) -> const char* { return TypeOf<decltype(p)>::name; }, params);
+}
+
+std::uintmax_t sensorOutputBytes(const SensorParams& params, int32_t width, int32_t height,
+                                 const TimeAxis& render) {
   return std::visit(
-      [](const auto& p) -> const char* {
-        using P = std::decay_t<decltype(p)>;
-        if constexpr (std::is_same_v<P, StreakParams>) return "streak";
-        if constexpr (std::is_same_v<P, SpadParams>) return "spad";
-        return "cwtof";
-      },
+      [&](const auto& p) { return TypeOf<decltype(p)>::outputBytes(p, width, height, render); },
       params);
 }
 
@@ -27,17 +34,7 @@ const SensorOutput* findOutput(const std::vector<SensorOutput>& outputs, const s
 
 std::vector<SensorOutput> runSensor(const SensorSpec& spec, const SensorInputs& in) {
   TOFSIM_CHECK(in.volume != nullptr);
-  return std::visit(
-      [&](const auto& p) -> std::vector<SensorOutput> {
-        using P = std::decay_t<decltype(p)>;
-        if constexpr (std::is_same_v<P, StreakParams>) return runStreak(*in.volume, p, in.seed);
-        if constexpr (std::is_same_v<P, SpadParams>) return runSpad(*in.volume, p, in.seed);
-        if constexpr (std::is_same_v<P, CwTofParams>) {
-          return runCwTof(*in.volume, p, in.seed,
-                          CwTofReferences{in.groundTruthDepth_m, in.directOnly});
-        }
-      },
-      spec.params);
+  return std::visit([&](const auto& p) { return TypeOf<decltype(p)>::run(p, in); }, spec.params);
 }
 
 }  // namespace tofsim::sensors

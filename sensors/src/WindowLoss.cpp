@@ -41,8 +41,10 @@ std::vector<double> energyPerBin(const SensorCommon& common, const std::vector<i
   return perBin;
 }
 
-double lossOf(const SensorCommon& common, const InstrumentBins& bins,
-              const std::vector<int32_t>& rows, const TransientVolume& volume) {
+}  // namespace
+
+double instrumentWindowLoss(const SensorCommon& common, const InstrumentBins& bins,
+                            const std::vector<int32_t>& rows, const TransientVolume& volume) {
   if (!selectionFits(common.channel, volume)) return 0.0;
   const std::vector<double> perBin = energyPerBin(common, rows, volume);
   const double total = std::accumulate(perBin.begin(), perBin.end(), 0.0);
@@ -53,16 +55,10 @@ double lossOf(const SensorCommon& common, const InstrumentBins& bins,
   return std::clamp(1.0 - inside / total, 0.0, 1.0);
 }
 
-}  // namespace
-
 double windowLossFraction(const SensorParams& params, const TransientVolume& volume) {
   return std::visit(
-      [&](const auto& p) -> double {
-        using P = std::decay_t<decltype(p)>;
-        if constexpr (std::is_same_v<P, StreakParams>)
-          return lossOf(p.common, p.bins, p.rows, volume);
-        if constexpr (std::is_same_v<P, SpadParams>) return lossOf(p.common, p.bins, {}, volume);
-        return 0.0;
+      [&](const auto& p) {
+        return SensorType<std::decay_t<decltype(p)>>::windowLossFraction(p, volume);
       },
       params);
 }

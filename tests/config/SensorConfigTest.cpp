@@ -4,6 +4,7 @@
 #include <string>
 
 #include "ConfigNode.h"
+#include "SensorConfigType.h"
 #include "tofsim/config/SensorConfig.h"
 
 namespace tofsim::config {
@@ -25,6 +26,15 @@ std::string errorOf(const std::string& text) {
   }
   return "";
 }
+
+// The config side of the descriptors: a parameter struct without parse, emit
+// and checkImage fails the check SensorConfigType.h makes for SensorParams.
+struct UndescribedParams {};
+static_assert(ConfiguredSensor<sensors::StreakParams> && ConfiguredSensor<sensors::SpadParams> &&
+              ConfiguredSensor<sensors::CwTofParams>);
+static_assert(!ConfiguredSensor<UndescribedParams>);
+static_assert(!detail::allConfigured(
+    static_cast<const std::variant<sensors::SpadParams, UndescribedParams>*>(nullptr)));
 
 TEST(SensorConfigTest, ParsesEveryModelWithUnits) {
   const auto specs = parse(R"(sensors:

@@ -79,6 +79,25 @@ TEST_F(SenseGLTest, RenderWritesSensorOutputsAndSenseReproducesThem) {
   EXPECT_EQ(test::visibleFiles(again).size(), rendered.size());
 }
 
+// transient.json carries the medium: `sense` without the --set turns time
+// into depth as the render did (c / 1.33), so the depths come out the same.
+TEST_F(SenseGLTest, SenseTakesTheMediumFromTheSavedVolume) {
+  const auto out = dir_ / "render";
+  const std::string water = " --set time.index_of_refraction=1.33 --set time.bins=300";
+  const CommandResult r =
+      runCli("render " + test::kCornellConfig + " -o " + out.string() + kSmall + water);
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  const auto again = dir_ / "sense";
+  const CommandResult s = runCli("sense " + test::kCornellConfig + " --volume " + out.string() +
+                                 " -o " + again.string() + kSmall + " --set time.bins=300");
+  ASSERT_EQ(s.exitCode, 0) << s.output;
+  for (const char* f : {"cwtof/cwtof_depth.exr", "spad/spad_depth_peak.exr"}) {
+    EXPECT_TRUE(test::fileBytes((out / "sensors" / f).string()) ==
+                test::fileBytes((again / "sensors" / f).string()))
+        << f;
+  }
+}
+
 TEST_F(SenseGLTest, BadSensorValueFailsWithLocatedError) {
   const CommandResult r = runCli("render " + test::kCornellConfig + " -o " +
                                  (dir_ / "bad").string() + " --set sensors.0.pulse_fwhm=-1ps");

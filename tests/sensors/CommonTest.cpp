@@ -7,6 +7,7 @@
 #include "tofsim/sensors/Common.h"
 #include "tofsim/sensors/TimeKernel.h"
 #include "tofsim/util/Error.h"
+#include "tofsim/volume/PhysicalConstants.h"
 
 namespace tofsim::sensors {
 namespace {
@@ -26,6 +27,24 @@ TEST(CommonTest, ResamplingConservesEnergyAndSplitsByOverlap) {
   resampleEnergy(one, from, to, out);
   EXPECT_NEAR(out[14], 5.0 / 10.0, 1e-9);
   EXPECT_NEAR(out[15], 5.0 / 10.0, 1e-9);
+}
+
+// The axis a sensor bins on keeps the render's medium and legs, so depths
+// from the instrument bins mean what depths from the render's bins mean.
+TEST(CommonTest, InstrumentAxisKeepsTheMediumAndTheLegsTimed) {
+  TimeAxis render{0.0, 10e-12, 100};
+  render.index_of_refraction = 1.5;
+  render.camera_unwarp = true;
+  InstrumentBins bins;
+  bins.bin_width_s = 40e-12;
+  const TimeAxis axis = resolveBins(bins, render);
+  EXPECT_EQ(axis.index_of_refraction, 1.5);
+  EXPECT_TRUE(axis.camera_unwarp);
+  EXPECT_EQ(axis.bins, 25);
+  // One leg in a medium of 1.5: depth = (c / 1.5) t.
+  EXPECT_DOUBLE_EQ(axis.depthOf_m(1e-9), kSpeedOfLight_m_per_s / 1.5 * 1e-9);
+  render.camera_unwarp = false;  // two legs: half of that
+  EXPECT_DOUBLE_EQ(render.depthOf_m(1e-9), kSpeedOfLight_m_per_s / 1.5 * 1e-9 / 2);
 }
 
 TEST(CommonTest, WeightedChannelsAndRadiometricScale) {

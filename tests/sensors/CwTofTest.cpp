@@ -59,7 +59,7 @@ TEST(CwTofTest, TwoReturnsGiveThePhaseOfThePhasorSum) {
 
 TEST(CwTofTest, TwoFrequenciesUnwrapBeyondOneFrequencysRange) {
   CwTofParams p = noiseFree({80e6, 100e6});  // ranges 1.87 m and 1.50 m; together 7.49 m
-  EXPECT_NEAR(unwrapRange_m(p), kC / (2 * 20e6), 1e-9);
+  EXPECT_NEAR(unwrapRange_m(p, kC / 2), kC / (2 * 20e6), 1e-9);
   for (double depth : {0.4, 2.2, 5.1, 7.2}) {
     const auto outs = runCwTof(singleReturn(depth, 200, 1000.0f), p, 1);
     EXPECT_NEAR(output(outs, "cwtof_depth").data[0], depth, 1e-3) << depth;
@@ -133,6 +133,48 @@ TEST(CwTofTest, MultipathErrorAgainstGroundTruthAndDirectComponent) {
   EXPECT_NEAR(dir[1], mpiDepth - d, 1e-4);
   EXPECT_GT(gt[1], 0.02);  // the later, indirect light lengthens the depth (3.5 cm)
   EXPECT_EQ(test::array(outs, "cwtof_raw").shape, (std::vector<int64_t>{1, 4, 1, 2}));
+}
+
+// A fronto-parallel plane in water (eta = 1.33), seen by a camera with the
+// light at it: each pixel's only return arrives after eta x the round trip.
+// The depth is measured in the medium, so there is no multipath error, and
+// with camera_unwarp (time at the surface: one leg) neither.
+TEST(CwTofTest, PlaneInAMediumHasNoMultipathError) {
+  const double eta = 1.33, w = 10e-12, f = 20e6, plane_m = 2.0;
+  for (bool unwarp : {false, true}) {
+    const int32_t W = 5, H = 3;
+    TransientVolume v = makeVolume(W, H, 0.0, w, 2000);
+    TimeAxis axis = v.axis();
+    axis.index_of_refraction = eta;
+    axis.camera_unwarp = unwarp;
+    v = TransientVolume(W, H, axis, {"c0"});
+    Image truth(W, H, 1);
+    for (int32_t y = 0; y < H; ++y) {
+      for (int32_t x = 0; x < W; ++x) {
+        // Pixel rays fan out: distance to the plane grows off the centre.
+        const double d = plane_m * std::hypot(1.0, 0.1 * (x - 2), 0.1 * (y - 1));
+        const double t = (unwarp ? 1.0 : 2.0) * eta * d / kC;
+        const int32_t bin = axis.binOf(t);
+        ASSERT_GE(bin, 0);
+        v.at(y, x, bin, 0) = 1000.0f;
+        // The truth the bin's centre stands for (the sensor sees the bin, not t).
+        truth.at(y, x, 0) = static_cast<float>(axis.depthOf_m(axis.binCenter_s(bin)));
+        EXPECT_NEAR(truth.at(y, x, 0), d, 0.5 * w * kC / eta) << x << "," << y;
+      }
+    }
+    CwTofParams p = noiseFree({f});
+    const auto outs = runCwTof(v, p, 1, CwTofReferences{&truth, nullptr});
+    for (float e : output(outs, "cwtof_mpi_error").data) EXPECT_NEAR(e, 0.0, 1e-4) << unwarp;
+    // Depth in the medium: a vacuum reading would be 1.33 x 2 m = 2.66 m.
+    EXPECT_NEAR(output(outs, "cwtof_depth").data[1 * W + 2], plane_m, 0.5 * w * kC / eta);
+  }
+}
+
+TEST(CwTofTest, UnwrapRangeShrinksInAMedium) {
+  TimeAxis water;
+  water.index_of_refraction = 1.33;
+  EXPECT_NEAR(unwrapRange_m(noiseFree({20e6}), water.depthPerSecond_m_per_s()),
+              kC / 1.33 / (2 * 20e6), 1e-9);
 }
 
 TEST(CwTofTest, RawNoiseIsShotPlusReadAndReproducible) {

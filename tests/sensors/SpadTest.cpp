@@ -197,6 +197,21 @@ TEST(SpadTest, FreeRunningProbabilitiesMatchAPerCycleSimulation) {
   EXPECT_LT(m[24], 0.5 * m[20]);  // the pulse's own detections shadow its tail
 }
 
+TEST(SpadTest, DepthInAMediumUsesItsSpeedOfLight) {
+  const double eta = 1.33, depth = 0.1234;  // m, co-located: t = 2 eta d / c
+  TimeAxis axis{0.0, kW, 300};
+  axis.index_of_refraction = eta;
+  TransientVolume v(1, 1, axis, {"c0"});
+  const double t = 2.0 * eta * depth / kSpeedOfLight_m_per_s;
+  v.at(0, 0, axis.binOf(t), 0) = 0.05f;
+  SpadParams p = baseParams(100000);
+  const auto outs = runSpad(v, p, 1);
+  const double binCentre = axis.depthOf_m(axis.binCenter_s(axis.binOf(t)));
+  EXPECT_NEAR(binCentre, depth, 0.5 * kW * kSpeedOfLight_m_per_s / (2 * eta));
+  EXPECT_NEAR(test::output(outs, "spad_depth_peak").data[0], binCentre,
+              kW * kSpeedOfLight_m_per_s / (2 * eta));
+}
+
 TEST(SpadTest, DepthFromPeakAndReproducibility) {
   TransientVolume v = makeVolume(3, 2, 0.0, kW, 300);
   const double depth = 0.1234;  // m, co-located: t = 2 d / c

@@ -40,16 +40,22 @@ std::string transientMetadataJson(const config::RunConfig& config, const capture
       {"bin_width_m", axis.bin_width_m()},
       {"bin_doc", "bin t covers [start + t * bin_width, start + (t + 1) * bin_width)"},
       {"length_doc", "metres are optical path length: c * time, c = 299792458 m/s"},
-      {"index_of_refraction", job.settings.index_of_refraction},
-      {"camera_unwarp", job.settings.camera_unwarp},
+      {"index_of_refraction", axis.index_of_refraction},
+      {"camera_unwarp", axis.camera_unwarp},
+      {"depth_doc", axis.camera_unwarp
+                        ? "depth = (c / index_of_refraction) * time (one leg: light -> surface)"
+                        : "depth = (c / index_of_refraction) * time / 2 (light at the camera)"},
       {"time_origin",
-       job.settings.camera_unwarp
+       axis.camera_unwarp
            ? "emission at the light; the surface -> camera delay is removed (time at the surface)"
            : "emission at the light; arrival at the camera"},
   };
-  j["camera"] = {{"position_m", vec(cam.position_world)}, {"look_at_m", vec(cam.look_at_world)},
-                 {"up", vec(cam.up_world)},           {"fov_y_deg", cam.fov_y_deg},
-                 {"width", cam.width},                {"height", cam.height},
+  j["camera"] = {{"position_m", vec(cam.position_world)},
+                 {"look_at_m", vec(cam.look_at_world)},
+                 {"up", vec(cam.up_world)},
+                 {"fov_y_deg", cam.fov_y_deg},
+                 {"width", cam.width},
+                 {"height", cam.height},
                  {"model", "pinhole, one ray through each pixel centre"}};
   j["light"] = {{"type", light.type == capture::Light::Type::Spot ? "spot" : "point"},
                 {"position_m", vec(light.position_world)},

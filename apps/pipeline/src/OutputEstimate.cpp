@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <cstdio>
-#include <variant>
 
 #include "tofsim/util/Error.h"
 
@@ -16,24 +15,6 @@ constexpr std::uintmax_t kChannels = 3;
 constexpr std::uintmax_t kNpyHeaderBytes = 128;
 // An 8-bit RGB picture as a bound for its PNG, an eighth of that per MP4 frame.
 constexpr std::uintmax_t kMp4Ratio = 8;
-
-std::uintmax_t sensorBytes(const sensors::SensorSpec& spec, std::uintmax_t width,
-                           std::uintmax_t height, const TimeAxis& axis) {
-  const std::uintmax_t pixels = width * height;
-  // A handful of images and pictures beside each sensor's arrays.
-  const std::uintmax_t images = 8 * pixels * (4 + 3);
-  if (const auto* spad = std::get_if<sensors::SpadParams>(&spec.params)) {
-    const std::uintmax_t bins = sensors::resolveBins(spad->bins, axis).bins;
-    return pixels * bins * 4 + images;
-  }
-  if (const auto* streak = std::get_if<sensors::StreakParams>(&spec.params)) {
-    const std::uintmax_t bins = sensors::resolveBins(streak->bins, axis).bins;
-    const std::uintmax_t rows = streak->rows.empty() ? height : streak->rows.size();
-    return rows * width * bins * (4 + 3) + images;
-  }
-  const auto& cw = std::get<sensors::CwTofParams>(spec.params);
-  return cw.frequencies_Hz.size() * 4 * pixels * 4 + images;
-}
 
 }  // namespace
 
@@ -73,7 +54,8 @@ OutputEstimate estimateOutputs(const config::RunConfig& config) {
   if (out.depth)
     e.items.push_back({"depth.exr/.npy/.png", w * h * (4 + 4 + kChannels), "camera.resolution"});
   for (const sensors::SensorSpec& spec : config.sensors) {
-    e.items.push_back({"sensors/" + spec.name, sensorBytes(spec, w, h, axis),
+    e.items.push_back({"sensors/" + spec.name,
+                       sensors::sensorOutputBytes(spec.params, camera.width, camera.height, axis),
                        "camera.resolution x the sensor's bins"});
   }
   return e;

@@ -41,6 +41,10 @@ VolumeLayout readLayout(const std::filesystem::path& file) {
       fail(file, "time.bins must be an integer in [1, 16777216]");
     }
     layout.axis.bins = static_cast<int32_t>(bins.get<int64_t>());
+    // What the times mean as depths, for the sensors (c / eta, one leg or
+    // two). Absent in hand-written files: vacuum, camera leg timed.
+    layout.axis.index_of_refraction = time.value("index_of_refraction", 1.0);
+    layout.axis.camera_unwarp = time.value("camera_unwarp", false);
     if (j.contains("channels")) layout.channels = j.at("channels").get<std::vector<std::string>>();
   } catch (const nlohmann::json::exception& e) {
     fail(file, std::string("not a tofsim transient.json: ") + e.what());
@@ -48,6 +52,10 @@ VolumeLayout readLayout(const std::filesystem::path& file) {
   if (!(layout.axis.bin_width_s > 0.0) || !std::isfinite(layout.axis.bin_width_s) ||
       !std::isfinite(layout.axis.start_s)) {
     fail(file, "time.start_s must be finite and time.bin_width_s finite and > 0");
+  }
+  if (!(layout.axis.index_of_refraction >= 1.0) ||
+      !std::isfinite(layout.axis.index_of_refraction)) {
+    fail(file, "time.index_of_refraction must be finite and >= 1");
   }
   return layout;
 }

@@ -26,7 +26,9 @@ void noteDifferences(const config::RunConfig& config, const TransientVolume& vol
   const capture::Camera& cam = config.camera.camera;
   const TimeAxis& axis = config.render.time;
   if (cam.width != volume.width() || cam.height != volume.height() || axis.bins != volume.bins() ||
-      axis.start_s != volume.axis().start_s || axis.bin_width_s != volume.axis().bin_width_s) {
+      axis.start_s != volume.axis().start_s || axis.bin_width_s != volume.axis().bin_width_s ||
+      axis.index_of_refraction != volume.axis().index_of_refraction ||
+      axis.camera_unwarp != volume.axis().camera_unwarp) {
     progress.message(
         "note: the saved volume's size or time axis differs from the config's; "
         "the sensors use the volume's");

@@ -48,9 +48,9 @@ void setAt(YAML::Node node, const std::vector<std::string>& parts, std::size_t i
   if (node.IsSequence() && isIndex(part)) {
     const std::size_t index = std::stoul(part);
     if (index >= node.size()) {
-      throw InputError(FileLoc{"--set " + keyPath}, keyPath,
-                       "index " + part + " is past the end of a list of " +
-                           std::to_string(node.size()));
+      throw InputError(
+          FileLoc{"--set " + keyPath}, keyPath,
+          "index " + part + " is past the end of a list of " + std::to_string(node.size()));
     }
     if (last) {
       node[index] = value;
@@ -108,9 +108,10 @@ void ConfigNode::addOverrideSource(const std::string& keyPath, const std::string
 
 FileLoc ConfigNode::locate(const YAML::Node& node, const std::string& path) const {
   for (const auto& [prefix, source] : shared_->overrideSources) {
-    const bool under = path == prefix || (path.size() > prefix.size() &&
-                                          path.compare(0, prefix.size(), prefix) == 0 &&
-                                          (path[prefix.size()] == '.' || path[prefix.size()] == '['));
+    const bool under =
+        path == prefix ||
+        (path.size() > prefix.size() && path.compare(0, prefix.size(), prefix) == 0 &&
+         (path[prefix.size()] == '.' || path[prefix.size()] == '['));
     if (under) return FileLoc{source};
   }
   return locOf(node, shared_->file);
@@ -201,7 +202,9 @@ std::string ConfigNode::getString(const std::string& key, const std::string& fal
   return has(key) ? child(key).asString() : (markUsed(key), fallback);
 }
 
-std::string ConfigNode::requireString(const std::string& key) const { return child(key).asString(); }
+std::string ConfigNode::requireString(const std::string& key) const {
+  return child(key).asString();
+}
 
 double ConfigNode::getDouble(const std::string& key, double fallback) const {
   return has(key) ? child(key).asDouble() : (markUsed(key), fallback);

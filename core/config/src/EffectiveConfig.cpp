@@ -3,8 +3,7 @@
 
 #include <yaml-cpp/yaml.h>
 
-#include <cstdio>
-
+#include "ShortestNumber.h"
 #include "tofsim/config/RunConfig.h"
 #include "tofsim/config/SensorConfig.h"
 
@@ -12,17 +11,11 @@ namespace tofsim::config {
 
 namespace {
 
-std::string exact(double value) {
-  char buffer[40];
-  std::snprintf(buffer, sizeof buffer, "%.17g", value);
-  return buffer;
-}
-
-std::string picoseconds(double seconds) { return exact(seconds * 1e12) + " ps"; }
+std::string picoseconds(double seconds) { return withUnit(seconds, 1e-12, "ps", "s"); }
 
 YAML::Node vec(const glm::vec3& v) {
   YAML::Node n(YAML::NodeType::Sequence);
-  for (int i = 0; i < 3; ++i) n.push_back(static_cast<double>(v[i]));
+  for (int i = 0; i < 3; ++i) n.push_back(shortest(v[i]));
   n.SetStyle(YAML::EmitterStyle::Flow);
   return n;
 }
@@ -33,7 +26,7 @@ YAML::Node cameraNode(const CameraConfig& c) {
   n["position"] = vec(c.camera.position_world);
   n["look_at"] = vec(c.camera.look_at_world);
   n["up"] = vec(c.camera.up_world);
-  n["fov_y"] = exact(c.camera.fov_y_deg) + " deg";
+  n["fov_y"] = shortest(c.camera.fov_y_deg) + " deg";
   YAML::Node res(YAML::NodeType::Sequence);
   res.push_back(c.camera.width);
   res.push_back(c.camera.height);
@@ -50,8 +43,8 @@ YAML::Node lightNode(const LightConfig& c) {
   n["offset"] = vec(c.offset_camera_m);
   n["position"] = vec(l.position_world);
   n["direction"] = vec(l.direction_world);
-  n["cone_angle"] = exact(l.cone_half_angle_deg) + " deg";
-  n["cone_falloff"] = exact(l.cone_falloff_deg) + " deg";
+  n["cone_angle"] = shortest(l.cone_half_angle_deg) + " deg";
+  n["cone_falloff"] = shortest(l.cone_falloff_deg) + " deg";
   n["intensity"] = vec(l.intensity_W_per_sr);
   return n;
 }
@@ -71,7 +64,7 @@ YAML::Node renderNode(const RunConfig& config) {
   i["points_per_vpl"] = r.indirect.points_per_vpl;
   i["ism_pull_push"] = r.indirect.ism_pull_push;
   i["visibility"] = r.indirect.visibility == capture::Visibility::Exact ? "exact" : "ism";
-  i["geometry_clamp"] = r.indirect.geometry_term_clamp_per_m2;
+  i["geometry_clamp"] = shortest(r.indirect.geometry_term_clamp_per_m2);
   n["indirect"] = i;
   YAML::Node ref;
   ref["bounces"] = config.reference.bounces;
@@ -93,7 +86,7 @@ YAML::Node outputNode(const OutputConfig& o) {
   n["video_tone_map"] = o.video_tone_map == VideoToneMap::Log ? "log" : "global";
   n["video_stride"] = o.video_stride;
   n["video_window"] = o.video_window;
-  n["video_fps"] = o.video_fps;
+  n["video_fps"] = shortest(o.video_fps);
   n["max_bytes"] = std::to_string(o.max_bytes) + " B";
   YAML::Node components(YAML::NodeType::Sequence);
   if (o.direct) components.push_back("direct");
@@ -114,7 +107,7 @@ std::string effectiveConfigYaml(const RunConfig& config) {
   time["start"] = picoseconds(config.render.time.start_s);
   time["bin_width"] = picoseconds(config.render.time.bin_width_s);
   time["bins"] = config.render.time.bins;
-  time["index_of_refraction"] = config.render.index_of_refraction;
+  time["index_of_refraction"] = shortest(config.render.index_of_refraction);
   time["camera_unwarp"] = config.render.camera_unwarp;
   root["time"] = time;
   root["render"] = renderNode(config);

@@ -3,6 +3,7 @@
 
 #include "ConfigNode.h"
 #include "RunConfigYaml.h"
+#include "ShortestNumber.h"
 #include "tofsim/config/RunConfig.h"
 #include "tofsim/config/SensorConfig.h"
 
@@ -26,7 +27,7 @@ long long intInRange(const ConfigNode& node, const std::string& key, long long f
 }
 
 void requirePositive(const ConfigNode& node, const std::string& key, double value) {
-  if (!(value > 0.0)) node.failKey(key, "must be > 0 (got " + std::to_string(value) + ")");
+  if (!(value > 0.0)) node.failKey(key, "must be > 0 (got " + shortest(value) + ")");
 }
 
 void parseCamera(const ConfigNode& node, CameraConfig& out) {
@@ -100,6 +101,11 @@ void parseTime(const ConfigNode& node, capture::RenderSettings& r) {
   r.index_of_refraction = node.getDouble("index_of_refraction", 1.0);
   if (!(r.index_of_refraction >= 1.0)) node.failKey("index_of_refraction", "must be >= 1");
   r.camera_unwarp = node.getBool("camera_unwarp", false);
+  // The renderers read RenderSettings' own fields; the axis carries the same
+  // two values to the volume and the sensors (depth = (c / eta) t / legs).
+  // Both are set here, from one parse, so they cannot disagree.
+  r.time.index_of_refraction = r.index_of_refraction;
+  r.time.camera_unwarp = r.camera_unwarp;
 }
 
 void parseIndirect(const ConfigNode& node, capture::IndirectSettings& s) {
@@ -147,8 +153,8 @@ void parseRender(const ConfigNode& node, RunConfig& out) {
   if (const auto reference = node.optionalChild("reference")) {
     ReferenceConfig& ref = out.reference;
     ref.bounces = static_cast<int32_t>(intInRange(*reference, "bounces", ref.bounces, 1, 64));
-    ref.samples_per_pixel =
-        static_cast<int32_t>(intInRange(*reference, "samples_per_pixel", ref.samples_per_pixel, 1, 1 << 24));
+    ref.samples_per_pixel = static_cast<int32_t>(
+        intInRange(*reference, "samples_per_pixel", ref.samples_per_pixel, 1, 1 << 24));
     ref.threads = static_cast<int32_t>(intInRange(*reference, "threads", ref.threads, 0, 4096));
   }
 }
@@ -232,33 +238,6 @@ std::string nodePath(const std::string& keyPath) {
   return out;
 }
 
-// Rows and pixels a sensor names must lie in the image, checked here so that
-// the error comes before the render rather than after it.
-void checkSensorPixels(const ConfigNode& list, const std::vector<sensors::SensorSpec>& specs,
-                       const capture::Camera& camera) {
-  const std::vector<ConfigNode> nodes = list.elements();
-  for (std::size_t i = 0; i < specs.size() && i < nodes.size(); ++i) {
-    if (const auto* streak = std::get_if<sensors::StreakParams>(&specs[i].params)) {
-      for (int32_t row : streak->rows) {
-        if (row >= camera.height) {
-          nodes[i].failKey("rows", "row " + std::to_string(row) + " is outside the image (height " +
-                                       std::to_string(camera.height) + ")");
-        }
-      }
-    }
-    if (const auto* spad = std::get_if<sensors::SpadParams>(&specs[i].params)) {
-      for (const auto& xy : spad->plot_pixels) {
-        if (xy[0] < 0 || xy[1] < 0 || xy[0] >= camera.width || xy[1] >= camera.height) {
-          nodes[i].failKey("plot_pixels", "pixel (" + std::to_string(xy[0]) + ", " +
-                                              std::to_string(xy[1]) + ") is outside the " +
-                                              std::to_string(camera.width) + "x" +
-                                              std::to_string(camera.height) + " image");
-        }
-      }
-    }
-  }
-}
-
 // The RSM makes one VPL per texel of each light view: one view for spots up
 // to 60 degrees (half angle), six cube faces otherwise (Vpls.cpp). Bounded so
 // that a typo cannot ask for hours of work or more VPLs than a dispatch can
@@ -274,9 +253,9 @@ void checkVplCount(const ConfigNode& root, const RunConfig& config) {
     const ConfigNode render = root.child("render");
     const ConfigNode indirect = render.child("indirect");
     indirect.failKey("rsm_resolution",
-                     std::to_string(side) + "^2 x " + std::to_string(faces) + " light view(s) = " +
-                         std::to_string(faces * side * side) + " VPLs, more than the limit of " +
-                         std::to_string(kMaxVpls));
+                     std::to_string(side) + "^2 x " + std::to_string(faces) +
+                         " light view(s) = " + std::to_string(faces * side * side) +
+                         " VPLs, more than the limit of " + std::to_string(kMaxVpls));
   }
 }
 
@@ -330,7 +309,7 @@ RunConfig loadRunConfigYaml(YAML::Node yaml, const std::filesystem::path& file,
     // misses them.
     config.sensors = parseSensors(*list);
     checkSensorNames(*list, config.sensors);
-    checkSensorPixels(*list, config.sensors, config.camera.camera);
+    checkSensorsFitImage(*list, config.sensors, config.camera.camera);
   }
   root.reportUnusedKeys();
   return config;

@@ -2,8 +2,12 @@
 #include <cstdio>
 #include <stdexcept>
 #include <string>
+#include <utility>
+#include <variant>
 
 #include "ConfigNode.h"
+#include "SensorConfigType.h"
+#include "ShortestNumber.h"
 #include "tofsim/config/SensorConfig.h"
 #include "tofsim/config/Units.h"
 
@@ -12,11 +16,7 @@ namespace tofsim::config {
 namespace {
 using namespace tofsim::sensors;
 
-std::string number(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%g", v);
-  return buf;
-}
+std::string number(double v) { return shortest(v); }
 
 double positive(const ConfigNode& n, const std::string& key, double value) {
   if (n.has(key) && !(value > 0.0)) n.failKey(key, "must be > 0 (got " + number(value) + ")");
@@ -79,7 +79,10 @@ InstrumentBins parseBins(const ConfigNode& n) {
   return b;
 }
 
-StreakParams parseStreak(const ConfigNode& n) {
+}  // namespace
+
+// --- streak ---------------------------------------------------------------------
+StreakParams SensorConfigType<StreakParams>::parse(const ConfigNode& n) {
   StreakParams p;
   p.common = parseCommon(n);
   p.bins = parseBins(n);
@@ -100,7 +103,18 @@ StreakParams parseStreak(const ConfigNode& n) {
   return p;
 }
 
-SpadParams parseSpad(const ConfigNode& n) {
+void SensorConfigType<StreakParams>::checkImage(const ConfigNode& n, const StreakParams& p,
+                                                const capture::Camera& camera) {
+  for (int32_t row : p.rows) {
+    if (row >= camera.height) {
+      n.failKey("rows", "row " + std::to_string(row) + " is outside the image (height " +
+                            std::to_string(camera.height) + ")");
+    }
+  }
+}
+
+// --- spad -----------------------------------------------------------------------
+SpadParams SensorConfigType<SpadParams>::parse(const ConfigNode& n) {
   SpadParams p;
   p.common = parseCommon(n);
   p.bins = parseBins(n);
@@ -135,7 +149,19 @@ SpadParams parseSpad(const ConfigNode& n) {
   return p;
 }
 
-CwTofParams parseCwTof(const ConfigNode& n) {
+void SensorConfigType<SpadParams>::checkImage(const ConfigNode& n, const SpadParams& p,
+                                              const capture::Camera& camera) {
+  for (const auto& xy : p.plot_pixels) {
+    if (xy[0] < 0 || xy[1] < 0 || xy[0] >= camera.width || xy[1] >= camera.height) {
+      n.failKey("plot_pixels", "pixel (" + std::to_string(xy[0]) + ", " + std::to_string(xy[1]) +
+                                   ") is outside the " + std::to_string(camera.width) + "x" +
+                                   std::to_string(camera.height) + " image");
+    }
+  }
+}
+
+// --- cwtof ----------------------------------------------------------------------
+CwTofParams SensorConfigType<CwTofParams>::parse(const ConfigNode& n) {
   CwTofParams p;
   p.common = parseCommon(n);
   if (auto freqs = n.optionalChild("frequencies")) {
@@ -171,6 +197,34 @@ CwTofParams parseCwTof(const ConfigNode& n) {
   p.colormap = n.getString("colormap", p.colormap);
   return p;
 }
+
+void SensorConfigType<CwTofParams>::checkImage(const ConfigNode&, const CwTofParams&,
+                                               const capture::Camera&) {}  // every pixel, no rows
+
+namespace {
+// The `type:` names in variant order, for the error that lists them.
+template <std::size_t... I>
+std::string knownTypes(std::index_sequence<I...>) {
+  std::string known;
+  ((known +=
+    (I ? ", " : "") + std::string(SensorType<std::variant_alternative_t<I, SensorParams>>::name)),
+   ...);
+  return known;
+}
+
+/// Parses the alternative whose SensorType<>::name is `type`; false for none.
+template <std::size_t I = 0>
+bool parseAs(const std::string& type, const ConfigNode& n, SensorParams& out) {
+  if constexpr (I < std::variant_size_v<SensorParams>) {
+    using P = std::variant_alternative_t<I, SensorParams>;
+    if (type == SensorType<P>::name) {
+      out = SensorConfigType<P>::parse(n);
+      return true;
+    }
+    return parseAs<I + 1>(type, n, out);
+  }
+  return false;
+}
 }  // namespace
 
 std::vector<SensorSpec> parseSensors(const ConfigNode& list) {
@@ -179,20 +233,29 @@ std::vector<SensorSpec> parseSensors(const ConfigNode& list) {
     if (!n.isMap()) n.fail("expected a mapping with a `type` key");
     const std::string type = n.requireString("type");
     SensorSpec spec;
-    if (type == "streak") {
-      spec.params = parseStreak(n);
-    } else if (type == "spad") {
-      spec.params = parseSpad(n);
-    } else if (type == "cwtof") {
-      spec.params = parseCwTof(n);
-    } else {
-      n.failKey("type", "unknown sensor type '" + type + "' (known: streak, spad, cwtof)");
+    if (!parseAs(type, n, spec.params)) {
+      n.failKey("type",
+                "unknown sensor type '" + type + "' (known: " +
+                    knownTypes(std::make_index_sequence<std::variant_size_v<SensorParams>>()) +
+                    ")");
     }
     spec.name = n.getString("name", type);
     n.reportUnusedKeys();
     specs.push_back(std::move(spec));
   }
   return specs;
+}
+
+void checkSensorsFitImage(const ConfigNode& list, const std::vector<SensorSpec>& specs,
+                          const capture::Camera& camera) {
+  const std::vector<ConfigNode> nodes = list.elements();
+  for (std::size_t i = 0; i < specs.size() && i < nodes.size(); ++i) {
+    std::visit(
+        [&](const auto& p) {
+          SensorConfigType<std::decay_t<decltype(p)>>::checkImage(nodes[i], p, camera);
+        },
+        specs[i].params);
+  }
 }
 
 }  // namespace tofsim::config

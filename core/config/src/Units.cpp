@@ -27,10 +27,13 @@ Quantity split(const std::string& text) {
   }
   std::string_view rest(text);
   rest.remove_prefix(consumed);
-  while (!rest.empty() && std::isspace(static_cast<unsigned char>(rest.front()))) rest.remove_prefix(1);
-  while (!rest.empty() && std::isspace(static_cast<unsigned char>(rest.back()))) rest.remove_suffix(1);
+  while (!rest.empty() && std::isspace(static_cast<unsigned char>(rest.front())))
+    rest.remove_prefix(1);
+  while (!rest.empty() && std::isspace(static_cast<unsigned char>(rest.back())))
+    rest.remove_suffix(1);
   q.unit = std::string(rest);
-  if (!std::isfinite(q.value)) throw std::invalid_argument("value must be finite, got '" + text + "'");
+  if (!std::isfinite(q.value))
+    throw std::invalid_argument("value must be finite, got '" + text + "'");
   return q;
 }
 
@@ -55,8 +58,8 @@ const std::map<std::string, double, std::less<>> kLengthUnits = {
 
 double parseDuration_s(const std::string& text) {
   static const std::map<std::string, double, std::less<>> units = [] {
-    std::map<std::string, double, std::less<>> u = {
-        {"s", 1.0}, {"ms", 1e-3}, {"us", 1e-6}, {"ns", 1e-9}, {"ps", 1e-12}, {"fs", 1e-15}};
+    std::map<std::string, double, std::less<>> u = {{"s", 1.0},   {"ms", 1e-3},  {"us", 1e-6},
+                                                    {"ns", 1e-9}, {"ps", 1e-12}, {"fs", 1e-15}};
     // A length is an optical path length; light covers it in length / c.
     for (const auto& [name, metres] : kLengthUnits) u[name] = metres / kSpeedOfLight_m_per_s;
     return u;
@@ -74,9 +77,8 @@ double parseAngle_deg(const std::string& text) {
 
 double parseBytes(const std::string& text) {
   static const std::map<std::string, double, std::less<>> units = {
-      {"B", 1.0},           {"KB", 1e3},          {"MB", 1e6},         {"GB", 1e9},
-      {"KiB", 1024.0},      {"MiB", 1048576.0},   {"GiB", 1073741824.0},
-      {"TiB", 1099511627776.0}};
+      {"B", 1.0},      {"KB", 1e3},        {"MB", 1e6},           {"GB", 1e9},
+      {"KiB", 1024.0}, {"MiB", 1048576.0}, {"GiB", 1073741824.0}, {"TiB", 1099511627776.0}};
   return scaled(text, units, "size");
 }
 

@@ -51,7 +51,8 @@ struct InstrumentBins {
   int32_t count = 0;
 };
 
-/// The concrete axis `bins` describes for a volume with axis `render`.
+/// The concrete axis `bins` describes for a volume with axis `render`; it keeps
+/// the render's index_of_refraction and camera_unwarp.
 TimeAxis resolveBins(const InstrumentBins& bins, const TimeAxis& render);
 
 /// Throws InputError when the selection does not fit the volume's channels.

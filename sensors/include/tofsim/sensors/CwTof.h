@@ -26,7 +26,7 @@ struct CwTofParams {
   double ambient_e = 0.0;     ///< ambient photo-electrons per raw image and pixel
   bool shot_noise = true;     ///< Poisson noise on each raw image
   double read_noise_e = 0.0;  ///< Gaussian read noise per raw image, photo-electrons RMS
-  double max_depth_m = 0.0;   ///< unwrapping range; 0 = c / (2 gcd(frequencies)), capped
+  double max_depth_m = 0.0;   ///< unwrapping range; 0 = (c / eta) / (2 gcd(frequencies)), capped
   std::string colormap = "turbo";
 };
 
@@ -42,12 +42,16 @@ void phaseFromSteps(const double* raw, int32_t steps, double& phase_rad, double&
 
 /// Depth from wrapped phases at several frequencies: picks the wrap counts that
 /// agree best within [0, maxDepth_m), then averages the per-frequency depths
-/// weighted by f^2. depth = c * phase / (4 pi f) (co-located light and camera).
+/// weighted by f^2. depth = k * phase / (2 pi f) with k the metres of depth per
+/// second of delay, TimeAxis::depthPerSecond_m_per_s: (c / eta) / 2 for a
+/// co-located light and camera.
 double unwrapDepth_m(const std::vector<double>& phases_rad,
-                     const std::vector<double>& frequencies_Hz, double maxDepth_m);
+                     const std::vector<double>& frequencies_Hz, double maxDepth_m,
+                     double depthPerSecond_m_per_s);
 
-/// The range unwrapDepth_m searches for these parameters, m.
-double unwrapRange_m(const CwTofParams& params);
+/// The range unwrapDepth_m searches for these parameters, m (max_depth, or
+/// k / gcd(frequencies) capped, k as for unwrapDepth_m).
+double unwrapRange_m(const CwTofParams& params, double depthPerSecond_m_per_s);
 
 /// Optional inputs for the multipath error outputs.
 struct CwTofReferences {

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "tofsim/capture/Camera.h"
 #include "tofsim/sensors/SensorSpec.h"
 
 namespace YAML {
@@ -25,6 +26,12 @@ std::vector<sensors::SensorSpec> parseSensors(const ConfigNode& sensorsList);
 /// `sensors:` entry. Errors name `file` and the key path
 /// (`sensors[0].<key>`), as parseSensors does.
 sensors::SensorSpec parseSensorText(const std::string& yamlText, const std::string& file);
+
+/// Rows and pixels the sensors name must lie in the image: a located error
+/// (at sensors[i]) before the render rather than after it.
+void checkSensorsFitImage(const ConfigNode& sensorsList,
+                          const std::vector<sensors::SensorSpec>& specs,
+                          const capture::Camera& camera);
 
 /// The effective configuration (defaults filled in) as a YAML sequence that
 /// parseSensors reads back to the same parameters.

@@ -1,0 +1,18 @@
+#pragma once
+// What a sensor model is given: the volume and, for the CW-ToF multipath
+// errors, the optional references.
+
+#include <cstdint>
+
+#include "tofsim/volume/TransientVolume.h"  // TransientVolume, Image
+
+namespace tofsim::sensors {
+
+struct SensorInputs {
+  const TransientVolume* volume = nullptr;      ///< required
+  const Image* groundTruthDepth_m = nullptr;    ///< optional (H, W, 1), metres (CW-ToF MPI error)
+  const TransientVolume* directOnly = nullptr;  ///< optional direct component (CW-ToF MPI error)
+  uint64_t seed = 0;
+};
+
+}  // namespace tofsim::sensors

@@ -1,0 +1,139 @@
+// The declared keys (ConfigKeys.h) against the documentation tables and the
+// effective-config writer: a key added to one and not the other fails here.
+
+#include <gtest/gtest.h>
+#include <yaml-cpp/yaml.h>
+
+#include <fstream>
+#include <map>
+#include <regex>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "support/TempDir.h"
+#include "tofsim/config/ConfigKeys.h"
+#include "tofsim/config/RunConfig.h"
+
+namespace tofsim::config {
+namespace {
+
+using Row = std::vector<std::string>;  // path, type column, default, unit, doc
+
+// Rows of every "| key | type | default | unit | meaning |" table, each key
+// prefixed with what the heading above it names (nullptr: not a key table).
+std::vector<Row> readmeRows(const std::string& file,
+                            const std::function<const char*(const std::string&)>& prefixOf) {
+  std::ifstream in(std::string(TOFSIM_SOURCE_DIR) + "/" + file);
+  EXPECT_TRUE(in) << file;
+  const std::regex row(R"(^\| `([^`]+)` \| (.*) \| (.*) \| (.*) \| (.*) \|$)");
+  std::vector<Row> rows;
+  const char* prefix = nullptr;
+  std::string prefixText, line;
+  while (std::getline(in, line)) {
+    if (line.rfind('#', 0) == 0) {
+      prefix = prefixOf(line.substr(line.find_first_not_of("# ")));
+      prefixText = prefix ? prefix : "";
+      continue;
+    }
+    std::smatch m;
+    if (prefix && std::regex_match(line, m, row)) {
+      rows.push_back(
+          {prefixText + (prefixText.empty() ? "" : ".") + m[1].str(), m[2], m[3], m[4], m[5]});
+    }
+  }
+  return rows;
+}
+
+std::vector<Row> declaredRows(std::span<const ConfigKey> keys) {
+  std::vector<Row> rows;
+  for (const ConfigKey& k : keys) {
+    const std::string range = k.range;
+    rows.push_back({k.path, std::string(k.type) + (range.empty() ? "" : " " + range),
+                    k.defaultValue, k.unit, k.doc});
+  }
+  return rows;
+}
+
+void expectSameRows(const std::vector<Row>& readme, const std::vector<Row>& declared,
+                    const std::string& file) {
+  std::map<std::string, Row> byPath;
+  for (const Row& r : declared) byPath[r[0]] = r;
+  std::set<std::string> documented;
+  for (const Row& r : readme) {
+    documented.insert(r[0]);
+    const auto it = byPath.find(r[0]);
+    if (it == byPath.end()) {
+      ADD_FAILURE() << file << " documents `" << r[0] << "`, which ConfigKeys.cpp does not declare";
+    } else {
+      EXPECT_EQ(r, it->second) << file << ": the row of `" << r[0]
+                               << "` differs from ConfigKeys.cpp";
+    }
+  }
+  for (const Row& r : declared) {
+    EXPECT_TRUE(documented.count(r[0])) << "`" << r[0] << "` is declared but not in " << file;
+  }
+}
+
+TEST(ConfigKeysTest, ConfigsReadmeTablesMatchTheDeclaredKeys) {
+  const auto prefixOf = [](const std::string& heading) -> const char* {
+    static std::string name;
+    if (heading == "Top level") return "";
+    const std::smatch m = [&] {
+      std::smatch s;
+      std::regex_match(heading, s, std::regex("^`([a-z_.]+)`$"));
+      return s;
+    }();
+    if (m.empty()) return nullptr;
+    name = m[1];
+    return name.c_str();
+  };
+  expectSameRows(readmeRows("configs/README.md", prefixOf), declaredRows(runConfigKeys()),
+                 "configs/README.md");
+}
+
+TEST(ConfigKeysTest, SensorsReadmeTablesMatchTheDeclaredKeys) {
+  const auto prefixOf = [](const std::string& heading) -> const char* {
+    static const std::map<std::string, const char*> sections = {
+        {"Common parameters (every model)", "common"},
+        {"Instrument bins (streak and SPAD)", "bins"},
+        {"Streak camera", "streak"},
+        {"SPAD", "spad"},
+        {"Continuous-wave ToF", "cwtof"}};
+    const auto it = sections.find(heading);
+    return it == sections.end() ? nullptr : it->second;
+  };
+  expectSameRows(readmeRows("sensors/README.md", prefixOf), declaredRows(sensorConfigKeys()),
+                 "sensors/README.md");
+}
+
+void leafPaths(const YAML::Node& node, const std::string& path, std::set<std::string>& out) {
+  if (node.IsMap()) {
+    out.insert(path);
+    for (const auto& e : node) {
+      leafPaths(e.second, (path.empty() ? "" : path + ".") + e.first.as<std::string>(), out);
+    }
+  } else {
+    out.insert(path);
+  }
+}
+
+class ConfigKeysWriterTest : public test::TempDirTest {};
+
+// The writer emits exactly the declared keys (gltf_camera only when set), so
+// a key the parser gains without a declaration, or the other way, shows here.
+TEST_F(ConfigKeysWriterTest, EffectiveConfigWritesEveryDeclaredKey) {
+  std::ofstream(dir_ / "scene.gltf") << "{}";
+  std::ofstream(dir_ / "c.yaml") << "scene: scene.gltf\ncamera: {gltf_camera: cam}\nlight: {}\n"
+                                    "time: {}\n";
+  const RunConfig c = loadRunConfig(dir_ / "c.yaml");
+  std::set<std::string> written;
+  leafPaths(YAML::Load(effectiveConfigYaml(c)), "", written);
+  written.erase("");
+  std::set<std::string> declared;
+  for (const ConfigKey& k : runConfigKeys()) declared.insert(k.path);
+  EXPECT_EQ(written, declared);
+}
+
+}  // namespace
+}  // namespace tofsim::config
