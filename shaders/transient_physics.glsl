@@ -67,4 +67,29 @@ TOFSIM_PHYSICS_FN int binOfPath(float path_m, float start_m, float binWidth_m) {
   return int(floor((path_m - start_m) / binWidth_m));
 }
 
+
+// Orthonormal basis around n (Duff et al. 2017), columns tangent, bitangent, n.
+TOFSIM_PHYSICS_FN mat3 basisAround(vec3 n) {
+  float s = n.z >= 0.0f ? 1.0f : -1.0f;
+  float a = -1.0f / (s + n.z);
+  float b = n.x * n.y * a;
+  vec3 t = vec3(1.0f + s * n.x * n.x * a, s * b, -s * n.x);
+  vec3 bt = vec3(b, s + n.y * n.y * a, -n.y);
+  return mat3(t, bt, n);
+}
+
+// Texel of unit direction d in the paraboloid map (side `resolution`) of the
+// hemisphere around `normal`; d must lie on the side of the normal.
+TOFSIM_PHYSICS_FN ivec2 paraboloidTexelOf(vec3 normal, vec3 d, int resolution) {
+  vec3 local = transpose(basisAround(normal)) * d;
+  vec2 uv = vec2(local.x, local.y) / (1.0f + max(local.z, 0.0f)) * 0.5f + 0.5f;
+  return clamp(ivec2(uv * float(resolution)), ivec2(0), ivec2(resolution - 1));
+}
+
+// Point of triangle (a, b, c) for two uniform numbers, uniform by area.
+TOFSIM_PHYSICS_FN vec3 pointOnTriangle(vec3 a, vec3 b, vec3 c, float r1, float r2) {
+  float s = sqrt(r1);
+  return a * (1.0f - s) + b * (s * (1.0f - r2)) + c * (s * r2);
+}
+
 #endif

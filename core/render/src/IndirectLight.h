@@ -7,13 +7,16 @@
 #include <cstddef>
 #include <vector>
 
-#include "TriangleSoup.h"
 #include "Vpls.h"
 #include "tofsim/capture/RenderSettings.h"
 #include "tofsim/gl/Buffer.h"
 #include "tofsim/gl/Program.h"
+#include "tofsim/scene/TriangleSoup.h"
 
 namespace tofsim::render {
+
+using scene::BvhNode;
+using scene::TriangleSoup;
 
 struct GatherTarget {
   std::size_t firstPixel = 0;

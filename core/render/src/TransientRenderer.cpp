@@ -109,7 +109,7 @@ std::unique_ptr<IndirectLight> makeIndirectLight(const RenderJob& job, const Gpu
   std::vector<Vpl> vpls = generateVpls(gpuScene, job.light, s.rsm_resolution,
                                        job.settings.index_of_refraction, lo, hi);
   if (vpls.empty()) return nullptr;
-  return std::make_unique<IndirectLight>(buildTriangleSoup(*job.scene), std::move(vpls), s,
+  return std::make_unique<IndirectLight>(scene::buildTriangleSoup(*job.scene), std::move(vpls), s,
                                          job.settings.seed);
 }
 

@@ -8,8 +8,15 @@
 
 namespace tofsim::physics {
 
+using glm::clamp;
 using glm::floor;
+using glm::ivec2;
+using glm::mat3;
+using glm::max;
 using glm::min;
+using glm::sqrt;
+using glm::transpose;
+using glm::vec2;
 using glm::vec3;
 
 #define TOFSIM_PHYSICS_FN inline
