@@ -13,7 +13,8 @@ nlohmann::json vec(const glm::vec3& v) { return {v.x, v.y, v.z}; }
 }  // namespace
 
 std::string transientMetadataJson(const config::RunConfig& config, const capture::RenderJob& job,
-                                  const capture::RenderResult& result) {
+                                  const capture::RenderResult& result, const std::string& backend,
+                                  const std::string& device) {
   const TimeAxis& axis = job.settings.time;
   const capture::Camera& cam = job.camera;
   const capture::Light& light = job.light;
@@ -47,9 +48,12 @@ std::string transientMetadataJson(const config::RunConfig& config, const capture
            ? "emission at the light; the surface -> camera delay is removed (time at the surface)"
            : "emission at the light; arrival at the camera"},
   };
-  j["camera"] = {{"position_m", vec(cam.position_world)}, {"look_at_m", vec(cam.look_at_world)},
-                 {"up", vec(cam.up_world)},           {"fov_y_deg", cam.fov_y_deg},
-                 {"width", cam.width},                {"height", cam.height},
+  j["camera"] = {{"position_m", vec(cam.position_world)},
+                 {"look_at_m", vec(cam.look_at_world)},
+                 {"up", vec(cam.up_world)},
+                 {"fov_y_deg", cam.fov_y_deg},
+                 {"width", cam.width},
+                 {"height", cam.height},
                  {"model", "pinhole, one ray through each pixel centre"}};
   j["light"] = {{"type", light.type == capture::Light::Type::Spot ? "spot" : "point"},
                 {"position_m", vec(light.position_world)},
@@ -59,6 +63,8 @@ std::string transientMetadataJson(const config::RunConfig& config, const capture
                 {"intensity_W_per_sr", vec(light.intensity_W_per_sr)},
                 {"attached_to_camera", config.light.attach_to_camera}};
   j["renderer"] = config.renderer == config::RendererKind::Reference ? "reference" : "ir";
+  j["backend"] = backend;
+  j["device"] = device;
   j["seed"] = job.settings.seed;
   j["scene"] = config.scene_file.filename().string();
   const AxisLossFractions lost = axisLossFractions(result);
