@@ -45,10 +45,10 @@ void main() {
   float profile = spotProfile(-wLight);
   if (profile <= 0.0 || !visibleFromLight(x, cosX)) return;
 
-  vec3 radiance = albedo / PI * uLightIntensity_W_per_sr * (profile * cosX / (dLight * dLight));
+  vec3 radiance = lambertianDirect(albedo, uLightIntensity_W_per_sr, profile, cosX, dLight);
   float dCamera = uCameraUnwarp != 0 ? 0.0 : length(x - uCameraPosition_world);
-  float path_m = uIndexOfRefraction * (dLight + dCamera);
-  int bin = int(floor((path_m - uStart_m) / uBinWidth_m));
+  float path_m = directPathLength(uIndexOfRefraction, dLight, dCamera);
+  int bin = binOfPath(path_m, uStart_m, uBinWidth_m);
   if (bin < 0 || bin >= uBins) {
     outside[2u * local + (bin < 0 ? 0u : 1u)] += radiance.r + radiance.g + radiance.b;
     return;

@@ -6,6 +6,7 @@
 // bit for bit whatever the batch and segment sizes.
 layout(local_size_x = TOFSIM_WORK_GROUP_SIZE) in;
 
+#include "transient_physics.glsl"
 #include "vpl.glsl"
 #ifdef EXACT_VISIBILITY
 #include "scene_geometry.glsl"
@@ -14,8 +15,6 @@ layout(std430, binding = TOFSIM_SSBO_ISM) readonly buffer Ism { float ism[]; };
 uniform uint uVplStride;
 uniform int uIsmResolution;
 #endif
-
-const float PI = 3.14159265358979323846;
 
 layout(binding = TOFSIM_UNIT_G_POSITION) uniform sampler2D uGPosition;
 layout(binding = TOFSIM_UNIT_G_NORMAL) uniform sampler2D uGNormal;
@@ -71,7 +70,8 @@ void main() {
   vec3 x = position.xyz;
   vec3 n = texelFetch(uGNormal, xy, 0).xyz;
   vec3 brdf = texelFetch(uGAlbedo, xy, 0).rgb / PI;
-  float cameraPath = uCameraUnwarp != 0 ? 0.0 : uIndexOfRefraction * length(x - uCameraPosition_world);
+  float cameraPath =
+      cameraPathLength(uCameraUnwarp != 0, uIndexOfRefraction, length(x - uCameraPosition_world));
   uint base = local * uint(uBins);
   float lostBefore = 0.0;
   float lostAfter = 0.0;
@@ -87,12 +87,11 @@ void main() {
     float cosVpl = dot(vpl.normal.xyz, d);
     float cosX = -dot(n, d);
     if (cosVpl <= 0.0 || cosX <= 0.0) continue;
-    float g = cosVpl * cosX / dist2;
-    if (uGeometryClamp > 0.0) g = min(g, uGeometryClamp);
+    float g = geometryTerm(cosVpl, cosX, dist2, uGeometryClamp);
     if (!visible(uFirstVpl - uIsmFirstVpl + k, vpl, x, n, d, dist, iterations)) continue;
     vec3 radiance = brdf * vpl.flux.rgb * g;
-    float path_m = vpl.positionPath.w + uIndexOfRefraction * dist + cameraPath;
-    int bin = int(floor((path_m - uStart_m) / uBinWidth_m));
+    float path_m = vplPathLength(vpl.positionPath.w, uIndexOfRefraction, dist, cameraPath);
+    int bin = binOfPath(path_m, uStart_m, uBinWidth_m);
     if (bin < 0 || bin >= uBins) {
       float value = radiance.r + radiance.g + radiance.b;
       if (bin < 0) {

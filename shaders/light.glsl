@@ -1,6 +1,6 @@
 // The point/spot light and its shadow map (a cube rendered as six layers of a
-// 2D array texture). Keep spotProfile in sync with Light::angularProfile.
-const float PI = 3.14159265358979323846;
+// 2D array texture). The profile's math is spotFalloff in transient_physics.glsl.
+#include "transient_physics.glsl"
 
 uniform vec3 uLightPosition_world;
 uniform vec3 uLightDirection_world;
@@ -15,11 +15,7 @@ layout(binding = TOFSIM_UNIT_SHADOW_MAP) uniform sampler2DArray uShadowMap;
 
 float spotProfile(vec3 direction) {
   if (uLightIsSpot == 0) return 1.0;
-  float c = dot(direction, uLightDirection_world);
-  if (c >= uSpotCosInner) return 1.0;
-  if (c <= uSpotCosOuter) return 0.0;
-  float s = (c - uSpotCosOuter) / (uSpotCosInner - uSpotCosOuter);
-  return s * s * (3.0 - 2.0 * s);
+  return spotFalloff(dot(direction, uLightDirection_world), uSpotCosOuter, uSpotCosInner);
 }
 
 int cubeFace(vec3 d) {

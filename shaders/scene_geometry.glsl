@@ -1,5 +1,6 @@
 // The scene as a triangle soup in BVH order (TriangleSoup.cpp): uniform
 // sampling by area and any-hit occlusion along a segment.
+#include "transient_physics.glsl"
 layout(std430, binding = TOFSIM_SSBO_CORNERS) readonly buffer Corners { vec4 corners[]; };
 layout(std430, binding = TOFSIM_SSBO_AREA_CDF) readonly buffer AreaCdf { float areaCdf[]; };
 struct BvhNode { vec4 lo; vec4 hi; };
@@ -15,9 +16,8 @@ vec3 sampleSurface(float r0, float r1, float r2) {
     uint mid = (lo + hi) / 2u;
     if (areaCdf[mid] > r0) hi = mid; else lo = mid + 1u;
   }
-  float s = sqrt(r1);
-  vec3 a = corners[3u * lo].xyz, b = corners[3u * lo + 1u].xyz, c = corners[3u * lo + 2u].xyz;
-  return a * (1.0 - s) + b * (s * (1.0 - r2)) + c * (s * r2);
+  return pointOnTriangle(corners[3u * lo].xyz, corners[3u * lo + 1u].xyz, corners[3u * lo + 2u].xyz,
+                         r1, r2);
 }
 
 bool hitsBox(vec3 lo, vec3 hi, vec3 origin, vec3 invDir, float tMax) {

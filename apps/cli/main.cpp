@@ -41,10 +41,12 @@ std::vector<config::Override> parseOverrides(const std::vector<std::string>& set
 int runRenderCommand(const std::string& configPath, const std::string& outputDir,
                      const std::vector<std::string>& sets, bool quiet, bool strict,
                      const std::string& platform, const std::string& renderer,
-                     const std::string& batchRun) {
+                     const std::string& backend, const std::string& batchRun) {
   std::vector<config::Override> overrides = parseOverrides(sets, strict);
   // --renderer is a documented shorthand for --set render.renderer=...
   if (!renderer.empty()) overrides.push_back({"render.renderer", renderer});
+  // --backend likewise for --set render.backend=...
+  if (!backend.empty()) overrides.push_back({"render.backend", backend});
   const config::RunConfig config = config::loadRunConfig(configPath, overrides);
   pipeline::RunOptions options;
   options.outputDirectory = outputDir;
@@ -80,11 +82,13 @@ int runSenseCommand(const std::string& configPath, const std::string& volumeDir,
 }
 
 int runCompareCommand(const std::string& a, const std::string& b, const std::string& outputDir) {
-  const std::filesystem::path out = outputDir.empty() ? std::filesystem::path(a) : std::filesystem::path(outputDir);
+  const std::filesystem::path out =
+      outputDir.empty() ? std::filesystem::path(a) : std::filesystem::path(outputDir);
   const pipeline::CompareSummary summary = pipeline::runCompare(a, b, out);
   std::printf("A (under test): %s\nB (reference):  %s\n%s\n", a.c_str(), b.c_str(),
               compare::summaryTable(summary.comparison).c_str());
-  std::fprintf(stderr, "compare: wrote %zu file(s) to %s\n", summary.files.size(), out.string().c_str());
+  std::fprintf(stderr, "compare: wrote %zu file(s) to %s\n", summary.files.size(),
+               out.string().c_str());
   return 0;
 }
 
@@ -125,7 +129,7 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", std::string("tofsim ") + tofsim::pipeline::kVersion);
   app.require_subcommand(1);
 
-  std::string configPath, outputDir, platform, volumeDir, renderer, dirA, dirB;
+  std::string configPath, outputDir, platform, volumeDir, renderer, backend, dirA, dirB;
   std::vector<std::string> sets;
   bool quiet = false, strict = false;
   const char* strictHelp =
@@ -141,6 +145,8 @@ int main(int argc, char** argv) {
                      "auto | surfaceless | device (default: $TOFSIM_EGL_PLATFORM or auto)");
   render->add_option("--renderer", renderer, "ir | reference (same as --set render.renderer=...)")
       ->check(CLI::IsMember({"ir", "reference"}));
+  render->add_option("--backend", backend, "auto | gl | cpu (same as --set render.backend=...)")
+      ->check(CLI::IsMember({"auto", "gl", "cpu"}));
   // Internal, for `tofsim batch`: write the run's manifest.json last.
   std::string batchRun;
   render->add_option("--batch-run", batchRun, "Batch run name (internal)")->group("");
@@ -158,7 +164,8 @@ int main(int argc, char** argv) {
       "compare", "Error metrics of render A against reference B (two output directories)");
   compareCommand->add_option("a", dirA, "Output directory under test")->required();
   compareCommand->add_option("b", dirB, "Output directory of the reference")->required();
-  compareCommand->add_option("-o,--output", outputDir, "Where to write the comparison files (default: A)");
+  compareCommand->add_option("-o,--output", outputDir,
+                             "Where to write the comparison files (default: A)");
 
   CLI::App* validate = app.add_subcommand("validate", "Check a config without rendering");
   validate->add_option("config", configPath, "YAML config file")->required();
@@ -193,7 +200,7 @@ int main(int argc, char** argv) {
   try {
     if (render->parsed()) {
       return runRenderCommand(configPath, outputDir, sets, quiet, strict, platform, renderer,
-                              batchRun);
+                              backend, batchRun);
     }
     if (compareCommand->parsed()) return runCompareCommand(dirA, dirB, outputDir);
     if (sense->parsed()) return runSenseCommand(configPath, volumeDir, outputDir, sets, quiet);

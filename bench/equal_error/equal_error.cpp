@@ -1,7 +1,8 @@
 // Equal-error benchmark (issue 4): on the Cornell box, how long the CPU
 // reference path tracer needs to reach the error of a transient instant
 // radiosity render, both measured against a long-converged reference, all in
-// one run on one machine. Usage: equal_error SCENE.gltf [resolution]
+// one run on one machine. Usage: equal_error SCENE.gltf [resolution] [gl|cpu]
+// (the IR backend, default gl: llvmpipe without a GPU)
 
 #include <chrono>
 #include <cmath>
@@ -15,7 +16,10 @@
 #include "tofsim/compare/VolumeComparison.h"
 #include "tofsim/gl/Context.h"
 #include "tofsim/reference/ReferenceRenderer.h"
-#include "tofsim/render/TransientRenderer.h"
+#include "tofsim/cpu/CpuBackend.h"
+#include "tofsim/ir/IrRenderer.h"
+#include "tofsim/render/GlBackend.h"
+#include <memory>
 #include "support/TestJobs.h"  // the Cornell box job shared with the tests
 #include "tofsim/scene/GltfLoader.h"
 #include "tofsim/volume/PhysicalConstants.h"
@@ -76,8 +80,13 @@ int main(int argc, char** argv) {
   const int resolution = argc > 2 ? std::atoi(argv[2]) : 64;
   const scene::Scene scene = scene::loadGltf(argv[1]);
   const capture::RenderJob job = cornellJob(scene, resolution);
-  gl::Context context;
-  std::printf("device: %s; reference: Embree, %u threads\n", context.description().c_str(),
+  const bool onCpu = argc > 3 && std::string(argv[3]) == "cpu";
+  std::unique_ptr<gl::Context> context = onCpu ? nullptr : std::make_unique<gl::Context>();
+  const auto makeIr = [&] {
+    if (onCpu) return ir::IrRenderer(std::make_unique<cpu::CpuBackend>());
+    return ir::IrRenderer(std::make_unique<render::GlBackend>(*context));
+  };
+  std::printf("IR device: %s; reference: Embree, %u threads\n", makeIr().description().c_str(),
               std::thread::hardware_concurrency());
 
   // Ground truth: 2 bounces (the transport IR simulates), many paths, seed 99.
@@ -104,7 +113,7 @@ int main(int argc, char** argv) {
     irJob.settings.indirect.visibility = c.visibility;
     irJob.settings.indirect.geometry_term_clamp_per_m2 = c.clamp;
     irJob.settings.indirect.rsm_resolution = c.rsm;
-    render::TransientRenderer renderer(context);
+    const ir::IrRenderer renderer = makeIr();
     const Measured m = measure(irJob, truth, [&](capture::VolumeCollector& out) { renderer.render(irJob, out); });
     const std::string setting = std::string(c.name) + ", RSM " + std::to_string(c.rsm) + "^2";
     std::printf("| IR | %s | %.2f | %.4f | %.4f |\n", setting.c_str(), m.seconds,

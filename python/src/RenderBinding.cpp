@@ -96,7 +96,9 @@ Rendered renderInMemory(const config::RunConfig& config, bool quiet) {
   pipeline::checkAxisBeforeRender(config, job, false);
   capture::VolumeCollector collector(job.camera.width, job.camera.height, job.settings.time,
                                      capture::kChannels);
-  const auto renderer = pipeline::makeRenderer(config, gl::eglPlatformFromEnvironment());
+  const pipeline::RendererChoice choice =
+      pipeline::makeRenderer(config, gl::eglPlatformFromEnvironment());
+  const auto& renderer = choice.renderer;
   Rendered r;
   r.device = renderer->description();
   // Progress::update throws Interrupted once SIGINT has arrived.

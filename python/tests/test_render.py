@@ -88,10 +88,20 @@ def test_reference_renderer_by_argument(plane_config):
 
 
 def test_backend_is_a_config_key(plane_config):
-    # render.backend is validated like any key: unknown where the build has none.
+    # render.backend is validated like any key.
     with pytest.raises(tofsim.ConfigError) as e:
         tofsim.render(plane_config, backend="no-such-backend")
     assert e.value.key == "render.backend"
+
+
+def test_both_backends_render_the_same_plane(plane_config):
+    cpu = tofsim.render(plane_config, backend="cpu")
+    gl = tofsim.render(plane_config, backend="gl")
+    # Same peak bins everywhere the plane is lit, the same energy within float rounding.
+    lit = cpu.steady[..., 0] > 0
+    assert lit.sum() > 1000
+    assert (cpu.transient[..., 0].argmax(axis=2)[lit] == gl.transient[..., 0].argmax(axis=2)[lit]).mean() > 0.999
+    assert abs(cpu.steady.sum() / gl.steady.sum() - 1) < 1e-3
 
 
 def test_arrays_keep_their_memory_after_the_result_is_gone(plane_config):

@@ -107,13 +107,14 @@ TEST_F(BatchCliGLTest, ShardsPartitionTheRunsExactly) {
 }
 
 TEST_F(BatchCliGLTest, FailingRunIsReportedAndTheOthersComplete) {
-  // A valid config whose memory budget cannot hold the light's 1024^2 cube
-  // shadow map: found only when the render plans its GPU memory.
+  // A valid config whose memory budget cannot hold the GL backend's 1024^2
+  // cube shadow map: found only when the render plans its GPU memory.
   const std::string batch = writeBatch(
       "runs:\n"
       "  - name: good1\n"
       "  - name: broken\n"
-      "    set: {render.memory_budget: 1 MiB, render.shadow_map_resolution: 1024}\n"
+      "    set: {render.memory_budget: 1 MiB, render.shadow_map_resolution: 1024, "
+      "render.backend: gl}\n"
       "  - name: good2\n"
       "    set: {render.seed: 5}\n");
   const CommandResult r = runCli("batch " + batch + " --jobs 2 -q");

@@ -179,8 +179,10 @@ TEST_F(RunConfigTest, SensorErrorsAreLocated) {
 }
 
 TEST_F(RunConfigTest, SensorRowsAndPixelsOutsideTheImageAreRejectedBeforeRendering) {
-  const std::string streak = errorOf(std::string(kValid) + "sensors:\n  - type: streak\n    rows: [30]\n");
-  EXPECT_NE(streak.find("sensors[0].rows: row 30 is outside the image (height 24)"), std::string::npos)
+  const std::string streak =
+      errorOf(std::string(kValid) + "sensors:\n  - type: streak\n    rows: [30]\n");
+  EXPECT_NE(streak.find("sensors[0].rows: row 30 is outside the image (height 24)"),
+            std::string::npos)
       << streak;
   const std::string spad =
       errorOf(std::string(kValid) + "sensors:\n  - type: spad\n    plot_pixels: [[32, 0]]\n");
@@ -190,11 +192,33 @@ TEST_F(RunConfigTest, SensorRowsAndPixelsOutsideTheImageAreRejectedBeforeRenderi
 
 TEST_F(RunConfigTest, VplCountIsBoundedWithALocatedError) {
   // A 30-degree spot uses one RSM view; a point light six cube faces.
-  EXPECT_NO_THROW(loadRunConfig(write(kValid), {parseOverride("render.indirect.rsm_resolution=2048")}));
+  EXPECT_NO_THROW(
+      loadRunConfig(write(kValid), {parseOverride("render.indirect.rsm_resolution=2048")}));
   const std::string e = errorOf(kValid, {parseOverride("light.type=point"),
                                          parseOverride("render.indirect.rsm_resolution=2048")});
   EXPECT_NE(e.find("render.indirect.rsm_resolution: 2048^2 x 6 light view(s) = 25165824 VPLs"),
-            std::string::npos) << e;
+            std::string::npos)
+      << e;
+}
+
+TEST_F(RunConfigTest, BackendDefaultsToAutoParsesAndRoundTrips) {
+  EXPECT_EQ(loadRunConfig(write(kValid)).backend, IrBackendKind::Auto);
+  for (const auto& [name, kind] :
+       {std::pair{"gl", IrBackendKind::Gl}, std::pair{"cpu", IrBackendKind::Cpu},
+        std::pair{"auto", IrBackendKind::Auto}}) {
+    const RunConfig c =
+        loadRunConfig(write(std::string(kValid) + "render:\n  backend: " + name + "\n"));
+    EXPECT_EQ(c.backend, kind) << name;
+    EXPECT_NE(effectiveConfigYaml(c).find(std::string("backend: ") + name), std::string::npos);
+  }
+}
+
+TEST_F(RunConfigTest, UnknownBackendIsALocatedError) {
+  const std::string e = errorOf(std::string(kValid) + "render:\n  backend: vulkan\n");
+  EXPECT_NE(e.find("test.yaml:18:12"), std::string::npos) << e;
+  EXPECT_NE(e.find("render.backend"), std::string::npos) << e;
+  EXPECT_NE(e.find("auto, gl or cpu"), std::string::npos) << e;
+  EXPECT_NE(e.find("vulkan"), std::string::npos) << e;
 }
 
 }  // namespace

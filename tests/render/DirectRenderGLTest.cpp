@@ -10,9 +10,9 @@
 
 #include "support/ClosedForm.h"
 #include "support/GlTestContext.h"
+#include "support/TestBackends.h"
 #include "support/TestJobs.h"
 #include "tofsim/capture/VolumeCollector.h"
-#include "tofsim/render/TransientRenderer.h"
 #include "tofsim/volume/PhysicalConstants.h"
 
 namespace tofsim::render {
@@ -27,14 +27,17 @@ constexpr double kPi = 3.14159265358979323846;
 
 using PlaneSetup = test::PlaneJob;
 
-VolumeCollector renderJob(const RenderJob& job) {
-  VolumeCollector collector(job.camera.width, job.camera.height, job.settings.time, 3);
-  TransientRenderer renderer(test::glTestContext());
-  renderer.render(job, collector);
-  return collector;
-}
+// Every test runs on the GL and on the CPU backend.
+class DirectRenderGLTest : public test::BackendTest {
+ protected:
+  VolumeCollector renderJob(const RenderJob& job) const {
+    VolumeCollector collector(job.camera.width, job.camera.height, job.settings.time, 3);
+    renderer()->render(job, collector);
+    return collector;
+  }
+};
 
-TEST(DirectRenderGLTest, PeakLandsInTheBinOfTheRoundTripPath) {
+TEST_P(DirectRenderGLTest, PeakLandsInTheBinOfTheRoundTripPath) {
   PlaneSetup s;
   const VolumeCollector out = renderJob(s.job);
   int checked = 0;
@@ -51,7 +54,7 @@ TEST(DirectRenderGLTest, PeakLandsInTheBinOfTheRoundTripPath) {
   EXPECT_GT(checked, 1000);
 }
 
-TEST(DirectRenderGLTest, SteadyRadianceFollowsCosineOverDistanceSquared) {
+TEST_P(DirectRenderGLTest, SteadyRadianceFollowsCosineOverDistanceSquared) {
   PlaneSetup s;
   const VolumeCollector out = renderJob(s.job);
   const Image steady = steadyImage(out.direct);
@@ -80,7 +83,7 @@ TEST(DirectRenderGLTest, SteadyRadianceFollowsCosineOverDistanceSquared) {
   }
 }
 
-TEST(DirectRenderGLTest, CameraUnwarpShiftsPeaksByTheCameraDelay) {
+TEST_P(DirectRenderGLTest, CameraUnwarpShiftsPeaksByTheCameraDelay) {
   PlaneSetup s;
   s.job.settings.time = TimeAxis{1.0 / kSpeedOfLight_m_per_s, 0.002 / kSpeedOfLight_m_per_s, 1200};
   s.job.settings.camera_unwarp = true;
@@ -100,7 +103,7 @@ TEST(DirectRenderGLTest, CameraUnwarpShiftsPeaksByTheCameraDelay) {
   EXPECT_GT(checked, 1000);
 }
 
-TEST(DirectRenderGLTest, NoEnergyBeforeTheDirectPath) {
+TEST_P(DirectRenderGLTest, NoEnergyBeforeTheDirectPath) {
   PlaneSetup s;
   const VolumeCollector out = renderJob(s.job);
   const TransientVolume total = out.total();
@@ -117,7 +120,7 @@ TEST(DirectRenderGLTest, NoEnergyBeforeTheDirectPath) {
   }
 }
 
-TEST(DirectRenderGLTest, OccluderRemovesDirectLightBehindIt) {
+TEST_P(DirectRenderGLTest, OccluderRemovesDirectLightBehindIt) {
   PlaneSetup s;
   const float occluderZ = 0.75f, occluderSize = 0.6f;
   test::addQuad(s.scene, glm::vec3(0.0f, 0.0f, occluderZ), glm::vec3(0, 0, 1), occluderSize,
@@ -154,12 +157,10 @@ TEST(DirectRenderGLTest, OccluderRemovesDirectLightBehindIt) {
   EXPECT_GT(lit, 200);
 }
 
-TEST(DirectRenderGLTest, SameJobGivesIdenticalBytesWhateverTheMemoryBudget) {
+TEST_P(DirectRenderGLTest, SameJobGivesIdenticalBytesWhateverTheMemoryBudget) {
   PlaneSetup s;
   s.job.settings.shadow_map_resolution = 256;
-  const auto render = [&](VolumeCollector& out) {
-    return TransientRenderer(test::glTestContext()).render(s.job, out);
-  };
+  const auto render = [&](VolumeCollector& out) { return renderer()->render(s.job, out); };
   VolumeCollector a(s.job.camera.width, s.job.camera.height, s.job.settings.time, 3);
   EXPECT_EQ(render(a).segments, 1u);
   s.job.settings.memory_budget_bytes = 8 << 20;  // forces many segments
@@ -168,6 +169,8 @@ TEST(DirectRenderGLTest, SameJobGivesIdenticalBytesWhateverTheMemoryBudget) {
   ASSERT_EQ(a.direct.size(), b.direct.size());
   EXPECT_EQ(0, std::memcmp(a.direct.data(), b.direct.data(), a.direct.size() * sizeof(float)));
 }
+
+TOFSIM_ON_BOTH_BACKENDS(DirectRenderGLTest);
 
 }  // namespace
 }  // namespace tofsim::render

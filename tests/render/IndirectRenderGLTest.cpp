@@ -9,10 +9,10 @@
 
 #include "support/AnalyticScenes.h"
 #include "support/ClosedForm.h"
-#include "support/TestJobs.h"
 #include "support/GlTestContext.h"
+#include "support/TestBackends.h"
+#include "support/TestJobs.h"
 #include "tofsim/capture/VolumeCollector.h"
-#include "tofsim/render/TransientRenderer.h"
 #include "tofsim/scene/GltfLoader.h"
 #include "tofsim/volume/PhysicalConstants.h"
 
@@ -43,13 +43,16 @@ struct CornerSetup {
   }
 };
 
-VolumeCollector renderJob(const RenderJob& job, RenderResult* result = nullptr) {
-  VolumeCollector collector(job.camera.width, job.camera.height, job.settings.time, 3);
-  TransientRenderer renderer(test::glTestContext());
-  const RenderResult r = renderer.render(job, collector);
-  if (result) *result = r;
-  return collector;
-}
+// Every test runs on the GL and on the CPU backend.
+class IndirectRenderGLTest : public test::BackendTest {
+ protected:
+  VolumeCollector renderJob(const RenderJob& job, RenderResult* result = nullptr) const {
+    VolumeCollector collector(job.camera.width, job.camera.height, job.settings.time, 3);
+    const RenderResult r = renderer()->render(job, collector);
+    if (result) *result = r;
+    return collector;
+  }
+};
 
 // Floor point seen through pixel (x, y), or nullopt when the ray misses the floor.
 std::optional<glm::dvec3> floorPoint(const Camera& camera, int x, int y) {
@@ -83,7 +86,7 @@ double wallBounce(const CornerSetup& s, const glm::dvec3& x, int c) {
   return rhoFloor / kPi * sum;
 }
 
-TEST(IndirectRenderGLTest, CornerIndirectMatchesNumericalOneBounceIntegral) {
+TEST_P(IndirectRenderGLTest, CornerIndirectMatchesNumericalOneBounceIntegral) {
   CornerSetup s;
   s.job.settings.indirect.rsm_resolution = 64;  // 6 x 64^2 VPLs around the point light
   const VolumeCollector out = renderJob(s.job);
@@ -104,7 +107,7 @@ TEST(IndirectRenderGLTest, CornerIndirectMatchesNumericalOneBounceIntegral) {
   EXPECT_GE(checked, 10);
 }
 
-TEST(IndirectRenderGLTest, NoIndirectEnergyBeforeTheShortestWallPath) {
+TEST_P(IndirectRenderGLTest, NoIndirectEnergyBeforeTheShortestWallPath) {
   CornerSetup s;
   s.job.settings.indirect.visibility = Visibility::Ism;
   const VolumeCollector out = renderJob(s.job);
@@ -120,7 +123,8 @@ TEST(IndirectRenderGLTest, NoIndirectEnergyBeforeTheShortestWallPath) {
       const int firstBin = s.job.settings.time.binOf(shortest / kSpeedOfLight_m_per_s);
       ASSERT_GT(firstBin, 0);
       for (int t = 0; t < firstBin; ++t) {
-        for (int ch = 0; ch < 3; ++ch) ASSERT_EQ(out.indirect.at(y, x, t, ch), 0.0f) << x << "," << y;
+        for (int ch = 0; ch < 3; ++ch)
+          ASSERT_EQ(out.indirect.at(y, x, t, ch), 0.0f) << x << "," << y;
       }
       ++checked;
     }
@@ -128,8 +132,7 @@ TEST(IndirectRenderGLTest, NoIndirectEnergyBeforeTheShortestWallPath) {
   EXPECT_GT(checked, 100);
 }
 
-
-TEST(IndirectRenderGLTest, SteadyIndirectConvergesAsTheVplCountGrows) {
+TEST_P(IndirectRenderGLTest, SteadyIndirectConvergesAsTheVplCountGrows) {
   CornerSetup s;
   s.job.settings.indirect.rsm_resolution = 64;
   const Image reference = steadyImage(renderJob(s.job).indirect);
@@ -145,7 +148,7 @@ TEST(IndirectRenderGLTest, SteadyIndirectConvergesAsTheVplCountGrows) {
   EXPECT_LT(previous, 0.10);
 }
 
-TEST(IndirectRenderGLTest, ComponentsAndBytesDoNotDependOnTheMemoryBudget) {
+TEST_P(IndirectRenderGLTest, ComponentsAndBytesDoNotDependOnTheMemoryBudget) {
   CornerSetup s;
   s.job.settings.indirect.visibility = Visibility::Ism;
   s.job.settings.indirect.ism_resolution = 32;
@@ -162,7 +165,8 @@ TEST(IndirectRenderGLTest, ComponentsAndBytesDoNotDependOnTheMemoryBudget) {
   EXPECT_LE(small.peakGpuBytes, std::size_t{5} << 20);
   ASSERT_EQ(a.indirect.size(), b.indirect.size());
   EXPECT_EQ(0, std::memcmp(a.direct.data(), b.direct.data(), a.direct.size() * sizeof(float)));
-  EXPECT_EQ(0, std::memcmp(a.indirect.data(), b.indirect.data(), a.indirect.size() * sizeof(float)));
+  EXPECT_EQ(0,
+            std::memcmp(a.indirect.data(), b.indirect.data(), a.indirect.size() * sizeof(float)));
   double indirectEnergy = 0.0;
   for (float v : a.indirect.values()) indirectEnergy += v;
   EXPECT_GT(indirectEnergy, 0.0);
@@ -172,7 +176,7 @@ TEST(IndirectRenderGLTest, ComponentsAndBytesDoNotDependOnTheMemoryBudget) {
   }
 }
 
-TEST(IndirectRenderGLTest, ImperfectShadowMapsAgreeWithExactVisibilityOnTheCornellBox) {
+TEST_P(IndirectRenderGLTest, ImperfectShadowMapsAgreeWithExactVisibilityOnTheCornellBox) {
   const scene::Scene scene = scene::loadGltf(TOFSIM_SOURCE_DIR "/configs/scenes/cornell_box.gltf");
   RenderJob job = test::cornellBoxJob(scene, 32, 300, 0.01);
   job.settings.shadow_map_resolution = 512;
@@ -189,6 +193,8 @@ TEST(IndirectRenderGLTest, ImperfectShadowMapsAgreeWithExactVisibilityOnTheCorne
   EXPECT_LT(error, 0.15);
   EXPECT_GT(error, 0.0);  // the approximation does differ
 }
+
+TOFSIM_ON_BOTH_BACKENDS(IndirectRenderGLTest);
 
 }  // namespace
 }  // namespace tofsim::render

@@ -13,7 +13,8 @@ nlohmann::json vec(const glm::vec3& v) { return {v.x, v.y, v.z}; }
 }  // namespace
 
 std::string transientMetadataJson(const config::RunConfig& config, const capture::RenderJob& job,
-                                  const capture::RenderResult& result) {
+                                  const capture::RenderResult& result, const std::string& backend,
+                                  const std::string& device) {
   const TimeAxis& axis = job.settings.time;
   const capture::Camera& cam = job.camera;
   const capture::Light& light = job.light;
@@ -65,6 +66,8 @@ std::string transientMetadataJson(const config::RunConfig& config, const capture
                 {"intensity_W_per_sr", vec(light.intensity_W_per_sr)},
                 {"attached_to_camera", config.light.attach_to_camera}};
   j["renderer"] = config.renderer == config::RendererKind::Reference ? "reference" : "ir";
+  j["backend"] = backend;
+  j["device"] = device;
   j["seed"] = job.settings.seed;
   j["scene"] = config.scene_file.filename().string();
   const AxisLossFractions lost = axisLossFractions(result);

@@ -124,10 +124,11 @@ namespace {
 // Renders with the configured renderer (see RendererFactory.h).
 capture::RenderResult renderVolume(const config::RunConfig& config, const capture::RenderJob& job,
                                    const RunOptions& options, capture::SegmentSink& sink,
-                                   const capture::ProgressCallback& progress, std::string& device) {
-  const std::unique_ptr<capture::Renderer> renderer = makeRenderer(config, options.eglPlatform);
-  device = renderer->description();
-  return renderer->render(job, sink, progress);
+                                   const capture::ProgressCallback& progress, RunSummary& summary) {
+  const RendererChoice choice = makeRenderer(config, options.eglPlatform);
+  summary.backend = choice.backend;
+  summary.device = choice.renderer->description();
+  return choice.renderer->render(job, sink, progress);
 }
 
 // Writes every output into `dir`, the staging folder.
@@ -145,9 +146,9 @@ void writeOutputs(const config::RunConfig& config, const capture::RenderJob& job
                                                    const std::string& what) {
     progress.update(done, total, what);
   };
-  summary.result = renderVolume(config, job, options, sink, onProgress, summary.device);
+  summary.result = renderVolume(config, job, options, sink, onProgress, summary);
   summary.result.nonFiniteRejected = sink.nonFiniteValues();
-  progress.message("device: " + summary.device);
+  progress.message("device: " + summary.device + " (backend " + summary.backend + ")");
   if (summary.result.nonFiniteRejected > 0) {
     // Shown even with -q: the outputs differ from what the renderer produced.
     std::fprintf(stderr,
@@ -179,7 +180,9 @@ void writeOutputs(const config::RunConfig& config, const capture::RenderJob& job
   if (out.frames) writeFrames(dir, *sink.volume(), summary.files);
   if (out.video || out.frame_pngs) writeVideo(dir, out, *sink.volume(), progress, summary.files);
   if (out.transient) {
-    writeFileAtomically(dir / "transient.json", transientMetadataJson(config, job, summary.result));
+    writeFileAtomically(
+        dir / "transient.json",
+        transientMetadataJson(config, job, summary.result, summary.backend, summary.device));
     summary.files.push_back("transient.json");
   }
   if (sensing) {

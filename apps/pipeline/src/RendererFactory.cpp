@@ -1,26 +1,34 @@
 #include "tofsim/pipeline/RendererFactory.h"
 
+#include "tofsim/cpu/CpuBackend.h"
 #include "tofsim/ir/IrRenderer.h"
 #include "tofsim/reference/ReferenceRenderer.h"
 #include "tofsim/render/GlBackend.h"
 
 namespace tofsim::pipeline {
 
-std::unique_ptr<ir::IrBackend> makeIrBackend(const config::RunConfig& /*config*/,
+config::IrBackendKind resolveIrBackend(config::IrBackendKind requested) {
+  if (requested != config::IrBackendKind::Auto) return requested;
+  return gl::hardwareGpuName() ? config::IrBackendKind::Gl : config::IrBackendKind::Cpu;
+}
+
+std::unique_ptr<ir::IrBackend> makeIrBackend(config::IrBackendKind backend,
                                              gl::EglPlatform eglPlatform) {
+  if (backend == config::IrBackendKind::Cpu) return std::make_unique<cpu::CpuBackend>();
   return std::make_unique<render::GlBackend>(std::make_unique<gl::Context>(eglPlatform));
 }
 
-std::unique_ptr<capture::Renderer> makeRenderer(const config::RunConfig& config,
-                                                gl::EglPlatform eglPlatform) {
+RendererChoice makeRenderer(const config::RunConfig& config, gl::EglPlatform eglPlatform) {
   if (config.renderer == config::RendererKind::Reference) {
     reference::ReferenceSettings settings;
     settings.bounces = config.reference.bounces;
     settings.samples_per_pixel = config.reference.samples_per_pixel;
     settings.threads = config.reference.threads;
-    return std::make_unique<reference::ReferenceRenderer>(settings);
+    return {std::make_unique<reference::ReferenceRenderer>(settings), "reference"};
   }
-  return std::make_unique<ir::IrRenderer>(makeIrBackend(config, eglPlatform));
+  const config::IrBackendKind backend = resolveIrBackend(config.backend);
+  return {std::make_unique<ir::IrRenderer>(makeIrBackend(backend, eglPlatform)),
+          config::irBackendName(backend)};
 }
 
 }  // namespace tofsim::pipeline

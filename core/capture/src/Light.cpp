@@ -3,18 +3,18 @@
 #include <algorithm>
 #include <cmath>
 
+#include "tofsim/physics/TransientPhysics.h"
+
 namespace tofsim::capture {
 
 float Light::angularProfile(const glm::vec3& direction) const {
   if (type == Type::Point) return 1.0f;
-  // Keep in sync with spotProfile() in shaders/light.glsl.
+  // The same falloff as spotProfile() in shaders/light.glsl: one copy of the math.
   const float cosAngle = glm::dot(direction, direction_world);
   const float cosOuter = std::cos(glm::radians(cone_half_angle_deg));
-  const float cosInner = std::cos(glm::radians(std::max(0.0f, cone_half_angle_deg - cone_falloff_deg)));
-  if (cosAngle >= cosInner) return 1.0f;
-  if (cosAngle <= cosOuter) return 0.0f;
-  const float s = (cosAngle - cosOuter) / (cosInner - cosOuter);
-  return s * s * (3.0f - 2.0f * s);
+  const float cosInner =
+      std::cos(glm::radians(std::max(0.0f, cone_half_angle_deg - cone_falloff_deg)));
+  return physics::spotFalloff(cosAngle, cosOuter, cosInner);
 }
 
 }  // namespace tofsim::capture

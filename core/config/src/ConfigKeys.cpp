@@ -61,12 +61,19 @@ const ConfigKey kRunConfigKeys[] = {
      "drop the surface -> camera delay (time at the surface)"},
     {"render.renderer", "string", "", "ir", "-",
      "`ir` (instant radiosity) or `reference`"},
+    {"render.backend", "string", "", "auto", "-",
+     "device of `ir`: `gl` (OpenGL 4.5 through EGL: a GPU, or Mesa's llvmpipe), `cpu` (the "
+     "native CPU backend, all cores, needs no EGL), or `auto`: `gl` when the EGL device platform "
+     "offers a hardware GPU (llvmpipe/softpipe do not count), `cpu` otherwise. The choice is "
+     "printed (`device: ...`) and recorded in `transient.json` (`backend`, `device`); "
+     "`--backend` on `render` sets it. Both give the same volume within float rounding "
+     "(tests/cpu)"},
     {"render.seed", "int", "in [0, 2^62]", "1", "-",
      "seed of every random choice: the renderer's and the sensors'"},
     {"render.shadow_map_resolution", "int", "in [16, 16384]", "1024", "pixel",
      "per cube face of the light's shadow map"},
     {"render.memory_budget", "bytes", "in [1 MiB, 1 PiB]", "512 MiB", "B",
-     "GPU memory for volume segments and ISM batches"},
+     "device memory (GPU, or RAM for `backend: cpu`) for volume segments and ISM batches"},
     {"render.strict", "bool", "", "false", "-",
      "light cut off by the time axis or a sensor window (more than 0.1 %) is an error, not a warning; `--strict` on `render` / `validate` sets it (see \"Time windows\")"},
     {"render.indirect", "mapping", "", "defaults", "-",

@@ -53,6 +53,7 @@ YAML::Node renderNode(const RunConfig& config) {
   const capture::RenderSettings& r = config.render;
   YAML::Node n;
   n["renderer"] = config.renderer == RendererKind::Reference ? "reference" : "ir";
+  n["backend"] = irBackendName(config.backend);
   n["seed"] = r.seed;
   n["shadow_map_resolution"] = r.shadow_map_resolution;
   n["memory_budget"] = std::to_string(r.memory_budget_bytes) + " B";

@@ -9,6 +9,18 @@
 
 namespace tofsim::config {
 
+const char* irBackendName(IrBackendKind kind) {
+  switch (kind) {
+    case IrBackendKind::Gl:
+      return "gl";
+    case IrBackendKind::Cpu:
+      return "cpu";
+    case IrBackendKind::Auto:
+      break;
+  }
+  return "auto";
+}
+
 namespace {
 
 glm::vec3 vec3Of(const ConfigNode& node, const std::string& key, const glm::vec3& fallback) {
@@ -128,7 +140,8 @@ void parseIndirect(const ConfigNode& node, capture::IndirectSettings& s) {
   s.geometry_term_clamp_per_m2 = node.getDouble("geometry_clamp", s.geometry_term_clamp_per_m2);
 }
 
-void parseRender(const ConfigNode& node, RunConfig& out) {
+// render.renderer and render.backend.
+void parseRendererChoice(const ConfigNode& node, RunConfig& out) {
   const std::string renderer = node.getString("renderer", "ir");
   if (renderer == "ir") {
     out.renderer = RendererKind::InstantRadiosity;
@@ -137,6 +150,20 @@ void parseRender(const ConfigNode& node, RunConfig& out) {
   } else {
     node.failKey("renderer", "must be ir or reference (got '" + renderer + "')");
   }
+  const std::string backend = node.getString("backend", "auto");
+  if (backend == "auto") {
+    out.backend = IrBackendKind::Auto;
+  } else if (backend == "gl") {
+    out.backend = IrBackendKind::Gl;
+  } else if (backend == "cpu") {
+    out.backend = IrBackendKind::Cpu;
+  } else {
+    node.failKey("backend", "must be auto, gl or cpu (got '" + backend + "')");
+  }
+}
+
+void parseRender(const ConfigNode& node, RunConfig& out) {
+  parseRendererChoice(node, out);
   out.strict = node.getBool("strict", out.strict);
   capture::RenderSettings& r = out.render;
   r.seed = static_cast<uint64_t>(intInRange(node, "seed", 1, 0, (1LL << 62)));

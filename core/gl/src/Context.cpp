@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "EglDevices.h"
 #include "tofsim/gl/GL.h"
 #include "tofsim/util/Error.h"
 
@@ -32,46 +33,23 @@ EglPlatform eglPlatformFromEnvironment() {
 
 namespace {
 
-bool hasToken(const char* list, const char* token) {
-  if (!list) return false;
-  const std::size_t n = std::strlen(token);
-  for (const char* p = std::strstr(list, token); p; p = std::strstr(p + 1, token)) {
-    if ((p == list || p[-1] == ' ') && (p[n] == ' ' || p[n] == '\0')) return true;
-  }
-  return false;
-}
+using detail::eglProc;
+using detail::hasToken;
 
-template <typename Fn>
-Fn eglProc(const char* name) {
-  return reinterpret_cast<Fn>(eglGetProcAddress(name));
-}
-
-// The first EGL device that is not a software rasterizer, or EGL_NO_DISPLAY.
+// A display on the first EGL device that is not a software rasterizer, or
+// EGL_NO_DISPLAY.
 EGLDisplay openDeviceDisplay(const char* clientExtensions, std::string& why) {
-  if (!hasToken(clientExtensions, "EGL_EXT_platform_device") ||
-      !(hasToken(clientExtensions, "EGL_EXT_device_enumeration") ||
-        hasToken(clientExtensions, "EGL_EXT_device_base"))) {
-    why =
-        "EGL client extensions EGL_EXT_platform_device and EGL_EXT_device_enumeration are missing";
-    return EGL_NO_DISPLAY;
-  }
-  auto queryDevices = eglProc<PFNEGLQUERYDEVICESEXTPROC>("eglQueryDevicesEXT");
-  auto queryDeviceString = eglProc<PFNEGLQUERYDEVICESTRINGEXTPROC>("eglQueryDeviceStringEXT");
+  const detail::HardwareDevices hardware = detail::hardwareEglDevices(clientExtensions);
   auto getPlatformDisplay = eglProc<PFNEGLGETPLATFORMDISPLAYEXTPROC>("eglGetPlatformDisplayEXT");
-  EGLint count = 0;
-  if (!queryDevices || !getPlatformDisplay || !queryDevices(0, nullptr, &count) || count == 0) {
-    why = "no EGL device was enumerated (is the GPU driver's EGL vendor library installed?)";
+  if (hardware.devices.empty() || !getPlatformDisplay) {
+    why = hardware.why.empty() ? "eglGetPlatformDisplayEXT is missing" : hardware.why;
     return EGL_NO_DISPLAY;
   }
-  std::vector<EGLDeviceEXT> devices(static_cast<std::size_t>(count));
-  queryDevices(count, devices.data(), &count);
-  for (EGLDeviceEXT device : devices) {
-    const char* ext = queryDeviceString ? queryDeviceString(device, EGL_EXTENSIONS) : nullptr;
-    if (hasToken(ext, "EGL_MESA_device_software")) continue;
+  for (EGLDeviceEXT device : hardware.devices) {
     EGLDisplay display = getPlatformDisplay(EGL_PLATFORM_DEVICE_EXT, device, nullptr);
     if (display != EGL_NO_DISPLAY) return display;
   }
-  why = "only software EGL devices were found";
+  why = "no display could be opened on a hardware EGL device";
   return EGL_NO_DISPLAY;
 }
 
@@ -220,6 +198,14 @@ bool Context::hasExtension(const std::string& name) const {
     if (ext && name == ext) return true;
   }
   return false;
+}
+
+std::optional<std::string> hardwareGpuName() {
+  const char* clientExtensions = eglQueryString(EGL_NO_DISPLAY, EGL_EXTENSIONS);
+  if (!clientExtensions) return std::nullopt;  // no EGL client extensions at all
+  const detail::HardwareDevices hardware = detail::hardwareEglDevices(clientExtensions);
+  if (hardware.devices.empty()) return std::nullopt;
+  return detail::eglDeviceName(hardware.devices.front());
 }
 
 }  // namespace tofsim::gl

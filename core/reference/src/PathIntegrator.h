@@ -5,7 +5,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "RayScene.h"
+#include "tofsim/reference/RayScene.h"
 #include "tofsim/capture/RenderJob.h"
 #include "tofsim/util/Random.h"
 

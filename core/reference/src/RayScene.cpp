@@ -1,4 +1,4 @@
-#include "RayScene.h"
+#include "tofsim/reference/RayScene.h"
 
 #include <algorithm>
 #include <cmath>

@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "PathIntegrator.h"
-#include "RayScene.h"
+#include "tofsim/reference/RayScene.h"
 #include "tofsim/capture/DirectLightView.h"
 #include "tofsim/ir/SegmentStream.h"
 #include "tofsim/util/Error.h"

@@ -137,7 +137,7 @@ void GlBackend::setVpls(const std::vector<ir::Vpl>& vpls) {
   Passes& p = passes();
   p.indirectLight.reset();
   if (vpls.empty()) return;
-  p.indirectLight = std::make_unique<IndirectLight>(buildTriangleSoup(*p.job.scene), vpls,
+  p.indirectLight = std::make_unique<IndirectLight>(scene::buildTriangleSoup(*p.job.scene), vpls,
                                                     p.job.settings.indirect, p.job.settings.seed);
   configureIndirectGather(p.indirectLight->gatherProgram(), p.job);
 }

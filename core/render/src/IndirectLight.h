@@ -8,13 +8,16 @@
 #include <cstddef>
 #include <vector>
 
-#include "TriangleSoup.h"
 #include "tofsim/capture/RenderSettings.h"
 #include "tofsim/gl/Buffer.h"
 #include "tofsim/gl/Program.h"
 #include "tofsim/ir/IrBackend.h"
+#include "tofsim/scene/TriangleSoup.h"
 
 namespace tofsim::render {
+
+using scene::BvhNode;
+using scene::TriangleSoup;
 
 class IndirectLight {
  public:

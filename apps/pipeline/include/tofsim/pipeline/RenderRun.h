@@ -32,7 +32,9 @@ struct RunSummary {
   std::filesystem::path outputDirectory;
   capture::RenderResult result;
   std::vector<std::string> files;  ///< written, relative to outputDirectory
-  std::string device;              ///< the GL renderer's description
+  std::string backend;             ///< "gl" or "cpu" (render.backend, auto decided), or "reference"
+  std::string
+      device;  ///< the renderer's device, e.g. "llvmpipe (LLVM 15...)" or "CPU (2 threads, Embree)"
 };
 
 RunSummary runRender(const config::RunConfig& config, const RunOptions& options);

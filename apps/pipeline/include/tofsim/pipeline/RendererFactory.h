@@ -1,10 +1,11 @@
 #pragma once
 // The one place that turns a config's renderer choice into a capture::Renderer.
 // IR renderers are the backend-independent driver over an ir::IrBackend
-// (makeIrBackend), so another backend (render.backend: cpu) is one more case
-// there.
+// (makeIrBackend): render.backend picks the GL backend (core/render, on an EGL
+// context) or the CPU one (core/cpu, no EGL at all).
 
 #include <memory>
+#include <string>
 
 #include "tofsim/capture/Renderer.h"
 #include "tofsim/config/RunConfig.h"
@@ -13,13 +14,25 @@
 
 namespace tofsim::pipeline {
 
-/// The IR backend the config asks for (today: GL, on a new EGL context).
-std::unique_ptr<ir::IrBackend> makeIrBackend(const config::RunConfig& config,
+/// render.backend with `auto` decided: gl when the EGL device platform offers
+/// a hardware GPU (gl::hardwareGpuName), cpu otherwise (llvmpipe is several
+/// times slower than the CPU backend on the same cores).
+config::IrBackendKind resolveIrBackend(config::IrBackendKind requested);
+
+/// The IR backend `backend` names (not Auto): GL on a new EGL context of
+/// `eglPlatform`, or the CPU backend on every core.
+std::unique_ptr<ir::IrBackend> makeIrBackend(config::IrBackendKind backend,
                                              gl::EglPlatform eglPlatform);
 
-/// render.renderer: ir -> ir::IrRenderer over makeIrBackend; reference -> the
-/// CPU path tracer with render.reference.* (needs no GL context).
-std::unique_ptr<capture::Renderer> makeRenderer(const config::RunConfig& config,
-                                                gl::EglPlatform eglPlatform);
+/// What renders a run, for the log and transient.json.
+struct RendererChoice {
+  std::unique_ptr<capture::Renderer> renderer;
+  std::string backend;  ///< "gl" or "cpu" for IR, "reference" for the path tracer
+};
+
+/// render.renderer: ir -> ir::IrRenderer over makeIrBackend(resolved
+/// render.backend); reference -> the CPU path tracer with render.reference.*
+/// (needs no GL context).
+RendererChoice makeRenderer(const config::RunConfig& config, gl::EglPlatform eglPlatform);
 
 }  // namespace tofsim::pipeline

@@ -5,11 +5,10 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <glm/glm.hpp>
 #include <string>
 #include <utility>
 #include <vector>
-
-#include <glm/glm.hpp>
 
 #include "tofsim/capture/Camera.h"
 #include "tofsim/capture/Light.h"
@@ -35,11 +34,18 @@ struct LightConfig {
 
 enum class RendererKind { InstantRadiosity, Reference };
 
+/// render.backend: the device instant radiosity runs on. Auto: the GL backend
+/// when the EGL device platform offers a hardware GPU, the CPU backend
+/// (core/cpu, needs no EGL) otherwise.
+enum class IrBackendKind { Auto, Gl, Cpu };
+/// "auto", "gl" or "cpu".
+const char* irBackendName(IrBackendKind kind);
+
 /// render.reference: the CPU path tracer's settings (core/reference).
 struct ReferenceConfig {
-  int32_t bounces = 2;              ///< 1 direct only, 2 direct + one indirect, n
-  int32_t samples_per_pixel = 64;   ///< indirect paths per pixel
-  int32_t threads = 0;              ///< 0: all hardware threads
+  int32_t bounces = 2;             ///< 1 direct only, 2 direct + one indirect, n
+  int32_t samples_per_pixel = 64;  ///< indirect paths per pixel
+  int32_t threads = 0;             ///< 0: all hardware threads
 };
 
 /// Tone map of the transient video and frame PNGs (tofsim/imaging/Video.h).
@@ -70,6 +76,7 @@ struct RunConfig {
   LightConfig light;
   capture::RenderSettings render;
   RendererKind renderer = RendererKind::InstantRadiosity;
+  IrBackendKind backend = IrBackendKind::Auto;  ///< render.backend (IR only)
   ReferenceConfig reference;
   /// render.strict (or --strict): light cut off by the time axis or a sensor
   /// window is an error, not a warning (apps/pipeline AxisReport.h).
@@ -92,7 +99,8 @@ Override parseOverride(const std::string& text);
 
 /// Loads, overrides and validates a config. Errors name the file, line,
 /// column and key (or the --set that caused them).
-RunConfig loadRunConfig(const std::filesystem::path& file, const std::vector<Override>& overrides = {});
+RunConfig loadRunConfig(const std::filesystem::path& file,
+                        const std::vector<Override>& overrides = {});
 
 /// As loadRunConfig, on YAML (or JSON) text held in memory: `file` names it
 /// in errors and anchors relative paths (the scene) at its folder.

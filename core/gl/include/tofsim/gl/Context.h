@@ -9,6 +9,7 @@
 // variable (auto | surfaceless | device).
 
 #include <cstddef>
+#include <optional>
 #include <string>
 
 namespace tofsim::gl {
@@ -19,6 +20,12 @@ enum class EglPlatform { Auto, Surfaceless, Device };
 EglPlatform parseEglPlatform(const std::string& name);
 /// The platform named by TOFSIM_EGL_PLATFORM, or Auto when unset.
 EglPlatform eglPlatformFromEnvironment();
+
+/// The name of the first hardware GPU the EGL device platform offers (what
+/// `auto` would open; software devices such as llvmpipe do not count), or
+/// nullopt. Creates no context and never throws: no EGL, no device extension
+/// or no device all give nullopt. Decides render.backend: auto.
+std::optional<std::string> hardwareGpuName();
 
 /// Implementation limits queried once the context exists; batching and
 /// segmenting are planned around them.

@@ -1,4 +1,4 @@
-#include "TriangleSoup.h"
+#include "tofsim/scene/TriangleSoup.h"
 
 #include <algorithm>
 #include <array>
@@ -6,7 +6,7 @@
 #include <limits>
 #include <numeric>
 
-namespace tofsim::render {
+namespace tofsim::scene {
 
 namespace {
 
@@ -81,10 +81,12 @@ class BvhBuilder {
     const std::size_t n = end - begin;
     if (n <= kLeafSize) return begin;
     const glm::vec3 extent = centroids.hi - centroids.lo;
-    const int axis = extent.x >= extent.y && extent.x >= extent.z ? 0 : (extent.y >= extent.z ? 1 : 2);
+    const int axis =
+        extent.x >= extent.y && extent.x >= extent.z ? 0 : (extent.y >= extent.z ? 1 : 2);
     if (extent[axis] <= 0.0f) return begin;
     const auto binOf = [&](const Triangle& t) {
-      const int b = static_cast<int>(kBins * (t.centroid[axis] - centroids.lo[axis]) / extent[axis]);
+      const int b =
+          static_cast<int>(kBins * (t.centroid[axis] - centroids.lo[axis]) / extent[axis]);
       return std::clamp(b, 0, kBins - 1);
     };
     std::array<Box, kBins> boxes;
@@ -128,9 +130,9 @@ class BvhBuilder {
 
 }  // namespace
 
-TriangleSoup buildTriangleSoup(const scene::Scene& scene) {
+TriangleSoup buildTriangleSoup(const Scene& scene) {
   std::vector<Triangle> tris;
-  for (const scene::Mesh& mesh : scene.meshes) {
+  for (const Mesh& mesh : scene.meshes) {
     for (std::size_t i = 0; i + 2 < mesh.indices.size(); i += 3) {
       Triangle t;
       for (int k = 0; k < 3; ++k) {
@@ -148,8 +150,8 @@ TriangleSoup buildTriangleSoup(const scene::Scene& scene) {
   std::vector<double> areas;
   for (const Triangle& t : tris) {
     for (const glm::vec3& p : t.p) soup.corners.emplace_back(p, 1.0f);
-    areas.push_back(0.5 * glm::length(glm::cross(glm::dvec3(t.p[1] - t.p[0]),
-                                                 glm::dvec3(t.p[2] - t.p[0]))));
+    areas.push_back(
+        0.5 * glm::length(glm::cross(glm::dvec3(t.p[1] - t.p[0]), glm::dvec3(t.p[2] - t.p[0]))));
   }
   soup.totalArea_m2 = std::accumulate(areas.begin(), areas.end(), 0.0);
   double running = 0.0;
@@ -161,4 +163,4 @@ TriangleSoup buildTriangleSoup(const scene::Scene& scene) {
   return soup;
 }
 
-}  // namespace tofsim::render
+}  // namespace tofsim::scene

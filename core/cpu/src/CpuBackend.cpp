@@ -1,0 +1,239 @@
+#include "tofsim/cpu/CpuBackend.h"
+
+#include <algorithm>
+#include <cmath>
+#include <thread>
+
+#include "CpuIsm.h"
+#include "GatherKernel.h"
+#include "ParallelFor.h"
+#include "RsmVpls.h"
+#include "SurfaceImage.h"
+#include "VplArrays.h"
+#include "tofsim/capture/SegmentSink.h"
+#include "tofsim/physics/TransientPhysics.h"
+#include "tofsim/reference/RayScene.h"
+#include "tofsim/util/Error.h"
+
+namespace tofsim::cpu {
+
+namespace {
+
+constexpr int kChannels = capture::kChannels;
+constexpr std::size_t kTilePixels = 16;  // pixels per task: their histograms stay in L2
+
+int resolveThreads(int requested) {
+  if (requested > 0) return requested;
+  return static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+}
+
+}  // namespace
+
+CpuBackend::CpuBackend(const CpuBackendOptions& options)
+    : threads_(resolveThreads(options.threads)), indirectVisibility_(options.indirectVisibility) {}
+
+CpuBackend::~CpuBackend() = default;
+
+std::string CpuBackend::description() const {
+  return "CPU (" + std::to_string(threads_) + (threads_ == 1 ? " thread" : " threads") +
+         ", Embree)";
+}
+
+ir::DeviceLimits CpuBackend::limits() const {
+  // Only memory bounds the CPU; these keep index arithmetic far from overflow.
+  return {1 << 16, std::size_t{1} << 40, std::size_t{1} << 32};
+}
+
+std::vector<float> CpuBackend::prepareSurfaces(const capture::RenderJob& job) {
+  TOFSIM_CHECK(job.scene != nullptr);
+  job_ = job;
+  vpls_.reset();  // a new render: nothing of the previous one survives
+  ism_.reset();
+  scene_ = std::make_unique<reference::RayScene>(*job.scene, threads_);
+  surfaces_ = std::make_unique<SurfaceImage>(traceSurfaces(*scene_, job.camera, threads_));
+  const scene::Bounds b = job.scene->bounds();
+  sceneScale_m_ = std::max(glm::length(b.max - b.min), 1e-6f);
+  std::vector<float> positions(surfaces_->size() * 4);
+  for (std::size_t i = 0; i < surfaces_->size(); ++i) {
+    for (int k = 0; k < 4; ++k) positions[i * 4 + k] = surfaces_->position[i][k];
+  }
+  return positions;
+}
+
+std::vector<ir::Vpl> CpuBackend::generateVpls(const capture::RenderJob& job) {
+  TOFSIM_CHECK(scene_ != nullptr);  // prepareSurfaces comes first
+  const capture::IndirectSettings& s = job.settings.indirect;
+  if (!s.enabled) return {};
+  return traceRsmVpls(*scene_, job.light, s.rsm_resolution, job.settings.index_of_refraction,
+                      threads_);
+}
+
+void CpuBackend::setVpls(const std::vector<ir::Vpl>& vpls) {
+  vpls_ = std::make_unique<VplArrays>(vpls);
+  ism_.reset();
+  if (indirectVisibility_ && job_.settings.indirect.visibility == capture::Visibility::Ism &&
+      !vpls.empty()) {
+    ism_ = std::make_unique<CpuIsm>(*job_.scene, vpls, job_.settings.indirect, job_.settings.seed);
+  }
+}
+
+std::size_t CpuBackend::fixedBytes() const {
+  std::size_t bytes =
+      surfaces_ ? surfaces_->size() * (3 * sizeof(glm::vec4) + sizeof(glm::vec3)) : 0;
+  // Embree's BVH and vertex copies: about 100 bytes per triangle (measured order).
+  if (job_.scene != nullptr) bytes += job_.scene->triangleCount() * 100;
+  if (vpls_) bytes += vpls_->bytes();
+  if (ism_) bytes += ism_->fixedBytes();
+  return bytes;
+}
+
+std::size_t CpuBackend::visibilityBytesPerVpl() const { return ism_ ? ism_->bytesPerVpl() : 0; }
+
+void CpuBackend::allocate(std::size_t pixelsPerSegment, std::size_t vplsPerBatch) {
+  pixelsPerSegment_ = pixelsPerSegment;
+  const std::size_t floats = pixelsPerSegment * job_.settings.time.bins * kChannels;
+  direct_.assign(floats, 0.0f);
+  indirect_.assign(floats, 0.0f);
+  outside_.assign(2 * pixelsPerSegment, 0.0f);
+  segmentSurfaces_.resize(pixelsPerSegment);
+  segmentLit_.resize(pixelsPerSegment);
+  if (ism_) ism_->allocate(vplsPerBatch);
+}
+
+void CpuBackend::buildVisibility(std::size_t firstVpl, std::size_t count) {
+  if (ism_) ism_->build(firstVpl, count, threads_);
+}
+
+void CpuBackend::beginSegment(std::size_t firstPixel, std::size_t count) {
+  TOFSIM_CHECK(count <= pixelsPerSegment_);
+  firstPixel_ = firstPixel;
+  pixelCount_ = count;
+  const std::size_t floats = count * job_.settings.time.bins * kChannels;
+  std::fill_n(direct_.begin(), floats, 0.0f);
+  std::fill_n(indirect_.begin(), floats, 0.0f);
+  std::fill_n(outside_.begin(), 2 * count, 0.0f);
+  const capture::RenderSettings& s = job_.settings;
+  const auto eta = static_cast<float>(s.index_of_refraction);
+  for (std::size_t i = 0; i < count; ++i) {
+    const std::size_t p = firstPixel + i;
+    segmentLit_[i] = surfaces_->position[p].w != 0.0f;
+    PixelSurface& surface = segmentSurfaces_[i];
+    surface.x = glm::vec3(surfaces_->position[p]);
+    surface.n = glm::vec3(surfaces_->normal[p]);
+    surface.brdf = glm::vec3(surfaces_->albedo[p]) / physics::PI;
+    surface.cameraPath_m = physics::cameraPathLength(
+        s.camera_unwarp, eta, glm::length(surface.x - job_.camera.position_world));
+  }
+}
+
+void CpuBackend::gatherDirect() {
+  const capture::RenderSettings& s = job_.settings;
+  const capture::Light& light = job_.light;
+  const bool spot = light.type == capture::Light::Type::Spot;
+  // As LightUniforms.cpp hands them to light.glsl.
+  const glm::vec3 axis = glm::normalize(light.direction_world);
+  const float cosOuter = std::cos(glm::radians(light.cone_half_angle_deg));
+  const float cosInner =
+      std::cos(glm::radians(std::max(0.0f, light.cone_half_angle_deg - light.cone_falloff_deg)));
+  const int bins = s.time.bins;
+  const auto start_m = static_cast<float>(s.time.start_m());
+  const auto width_m = static_cast<float>(s.time.bin_width_m());
+  const auto eta = static_cast<float>(s.index_of_refraction);
+  const std::size_t tiles = (pixelCount_ + kTilePixels - 1) / kTilePixels;
+  parallelFor(tiles, threads_, [&](std::size_t tile) {
+    const std::size_t end = std::min(pixelCount_, (tile + 1) * kTilePixels);
+    for (std::size_t i = tile * kTilePixels; i < end; ++i) {
+      if (!segmentLit_[i]) continue;
+      // The steps of direct_gather.comp.
+      const std::size_t p = firstPixel_ + i;
+      const glm::vec3 x = segmentSurfaces_[i].x, n = segmentSurfaces_[i].n;
+      const glm::vec3 toLight = light.position_world - x;
+      const float dLight = glm::length(toLight);
+      const glm::vec3 wLight = toLight / dLight;
+      const float cosX = glm::dot(n, wLight);
+      if (cosX <= 0.0f) continue;
+      const float profile =
+          spot ? physics::spotFalloff(glm::dot(-wLight, axis), cosOuter, cosInner) : 1.0f;
+      if (profile <= 0.0f) continue;
+      const glm::vec3 g = surfaces_->geometric[p];
+      const glm::vec3 offset = (glm::dot(g, toLight) < 0.0f ? -g : g) * scene_->epsilon_m();
+      if (scene_->occluded(x + offset, light.position_world)) continue;
+      const glm::vec3 radiance = physics::lambertianDirect(
+          glm::vec3(surfaces_->albedo[p]), light.intensity_W_per_sr, profile, cosX, dLight);
+      const float dCamera = s.camera_unwarp ? 0.0f : glm::length(x - job_.camera.position_world);
+      const float path_m = physics::directPathLength(eta, dLight, dCamera);
+      const int bin = physics::binOfPath(path_m, start_m, width_m);
+      if (bin < 0 || bin >= bins) {
+        outside_[2 * i + (bin < 0 ? 0 : 1)] += radiance.r + radiance.g + radiance.b;
+        continue;
+      }
+      float* out = &direct_[(i * bins + bin) * kChannels];
+      out[0] = radiance.r, out[1] = radiance.g, out[2] = radiance.b;
+    }
+  });
+}
+
+void CpuBackend::gatherIndirect(std::size_t firstVpl, std::size_t count) {
+  TOFSIM_CHECK(vpls_ != nullptr && firstVpl + count <= vpls_->count);
+  const std::size_t tiles = (pixelCount_ + kTilePixels - 1) / kTilePixels;
+  parallelFor(tiles, threads_, [&](std::size_t tile) { gatherTile(tile, firstVpl, count); });
+}
+
+void CpuBackend::gatherTile(std::size_t tile, std::size_t firstVpl, std::size_t count) {
+  const capture::RenderSettings& s = job_.settings;
+  const int bins = s.time.bins;
+  GatherConstants c;
+  c.start_m = static_cast<float>(s.time.start_m());
+  c.binWidth_m = static_cast<float>(s.time.bin_width_m());
+  c.indexOfRefraction = static_cast<float>(s.index_of_refraction);
+  c.geometryClamp = static_cast<float>(s.indirect.geometry_term_clamp_per_m2);
+  const bool exact = indirectVisibility_ && s.indirect.visibility == capture::Visibility::Exact;
+  const float eps = 1e-4f * sceneScale_m_;  // as indirect_gather.comp's exact visibility
+  const VplArrays& v = *vpls_;
+  VplTerms terms;
+  const std::size_t end = std::min(pixelCount_, (tile + 1) * kTilePixels);
+  for (std::size_t first = firstVpl; first < firstVpl + count; first += kVplBlock) {
+    const std::size_t n = std::min(kVplBlock, firstVpl + count - first);
+    for (std::size_t i = tile * kTilePixels; i < end; ++i) {
+      if (!segmentLit_[i]) continue;
+      const PixelSurface& surface = segmentSurfaces_[i];
+      vplTerms(surface, v, first, n, c, terms);
+      float* histogram = &indirect_[i * bins * kChannels];
+      float& before = outside_[2 * i];
+      float& after = outside_[2 * i + 1];
+      for (std::size_t k = 0; k < n; ++k) {
+        const int32_t bin = terms.bin[k];
+        if (bin == kNoLight) continue;
+        const std::size_t vpl = first + k;
+        if (exact) {
+          const glm::vec3 from = glm::vec3(v.px[vpl], v.py[vpl], v.pz[vpl]) +
+                                 glm::vec3(v.nx[vpl], v.ny[vpl], v.nz[vpl]) * eps;
+          if (scene_->occluded(from, surface.x + surface.n * eps)) continue;
+        } else if (ism_ && !ism_->visible(vpl, glm::vec3(terms.dx[k], terms.dy[k], terms.dz[k]),
+                                          terms.dist[k], sceneScale_m_)) {
+          continue;
+        }
+        if (bin < 0 || bin >= bins) {
+          (bin < 0 ? before : after) += terms.r[k] + terms.g[k] + terms.b[k];
+          continue;
+        }
+        float* out = histogram + static_cast<std::size_t>(bin) * kChannels;
+        out[0] += terms.r[k];
+        out[1] += terms.g[k];
+        out[2] += terms.b[k];
+      }
+    }
+  }
+}
+
+void CpuBackend::readSegment(float* direct, float* indirect, AxisLoss& offAxis) {
+  const std::size_t floats = pixelCount_ * job_.settings.time.bins * kChannels;
+  std::copy_n(direct_.begin(), floats, direct);
+  std::copy_n(indirect_.begin(), floats, indirect);
+  for (std::size_t i = 0; i < pixelCount_; ++i) {
+    offAxis.before += outside_[2 * i];
+    offAxis.after += outside_[2 * i + 1];
+  }
+}
+
+}  // namespace tofsim::cpu

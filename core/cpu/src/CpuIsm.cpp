@@ -1,0 +1,126 @@
+#include "CpuIsm.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "ParallelFor.h"
+#include "tofsim/physics/ShaderRandom.h"
+#include "tofsim/physics/TransientPhysics.h"
+#include "tofsim/util/Error.h"
+
+namespace tofsim::cpu {
+
+namespace {
+constexpr float kEmpty = std::numeric_limits<float>::infinity();
+}  // namespace
+
+CpuIsm::CpuIsm(const scene::Scene& scene, const std::vector<ir::Vpl>& vpls,
+               const capture::IndirectSettings& settings, uint64_t seed)
+    : soup_(scene::buildTriangleSoup(scene)),
+      settings_(settings),
+      seed32_(static_cast<uint32_t>(seed ^ (seed >> 32))) {  // as IndirectLight's uSeed
+  TOFSIM_CHECK(soup_.triangleCount() > 0);
+  for (const ir::Vpl& v : vpls) {
+    vplPosition_.emplace_back(v.positionPath);
+    vplNormal_.emplace_back(v.normal);
+  }
+  // The level layout of IndirectLight: finest first, halving (rounded up) to 1x1.
+  for (int size = settings_.ism_resolution;; size = (size + 1) / 2) {
+    levelOffsets_.push_back(floatsPerVpl_);
+    levelSizes_.push_back(size);
+    floatsPerVpl_ += static_cast<std::size_t>(size) * size;
+    if (size == 1 || !settings_.ism_pull_push) break;
+  }
+}
+
+std::size_t CpuIsm::fixedBytes() const {
+  return soup_.corners.size() * sizeof(glm::vec4) + soup_.areaCdf.size() * sizeof(float) +
+         vplPosition_.size() * 2 * sizeof(glm::vec3);
+}
+
+void CpuIsm::allocate(std::size_t vplsPerBatch) {
+  maps_.assign(vplsPerBatch * floatsPerVpl_, kEmpty);
+}
+
+glm::vec3 CpuIsm::samplePoint(uint32_t h0, uint32_t h1, uint32_t h2) const {
+  // sampleSurface in scene_geometry.glsl: the first triangle whose CDF exceeds r0.
+  const float r0 = physics::unitFloat(h0);
+  const std::size_t tri = std::min<std::size_t>(
+      std::upper_bound(soup_.areaCdf.begin(), soup_.areaCdf.end(), r0) - soup_.areaCdf.begin(),
+      soup_.triangleCount() - 1);
+  const glm::vec4* c = &soup_.corners[3 * tri];
+  return physics::pointOnTriangle(glm::vec3(c[0]), glm::vec3(c[1]), glm::vec3(c[2]),
+                                  physics::unitFloat(h1), physics::unitFloat(h2));
+}
+
+void CpuIsm::splat(std::size_t vpl, float* map) const {
+  const int r = settings_.ism_resolution;
+  const auto index = static_cast<uint32_t>(vpl);
+  for (uint32_t j = 0; j < static_cast<uint32_t>(settings_.points_per_vpl); ++j) {
+    // The steps of ism_splat.comp.
+    const uint32_t h0 = physics::hash3(seed32_, index, j);
+    const uint32_t h1 = physics::pcgHash(h0), h2 = physics::pcgHash(h1);
+    const glm::vec3 d = samplePoint(h0, h1, h2) - vplPosition_[vpl];
+    const float dist = glm::length(d);
+    if (dist < 1e-6f || glm::dot(d, vplNormal_[vpl]) <= 0.0f) continue;
+    const glm::ivec2 t = physics::paraboloidTexelOf(vplNormal_[vpl], d / dist, r);
+    float& texel = map[t.y * r + t.x];
+    texel = std::min(texel, dist);
+  }
+}
+
+void CpuIsm::pullPush(float* map) const {
+  const std::size_t levels = levelSizes_.size();
+  for (std::size_t k = 0; k + 1 < levels; ++k) {  // pull: ism_pull.comp
+    const int fine = levelSizes_[k], coarse = levelSizes_[k + 1];
+    const float* f = map + levelOffsets_[k];
+    float* c = map + levelOffsets_[k + 1];
+    for (int cy = 0; cy < coarse; ++cy) {
+      for (int cx = 0; cx < coarse; ++cx) {
+        float sum = 0.0f;
+        int count = 0;
+        for (int dy = 0; dy < 2; ++dy) {
+          for (int dx = 0; dx < 2; ++dx) {
+            const int fx = 2 * cx + dx, fy = 2 * cy + dy;
+            if (fx >= fine || fy >= fine) continue;
+            const float value = f[fy * fine + fx];
+            if (!std::isinf(value)) sum += value, ++count;
+          }
+        }
+        c[cy * coarse + cx] = count > 0 ? sum / static_cast<float>(count) : kEmpty;
+      }
+    }
+  }
+  for (std::size_t k = levels - 1; k-- > 0;) {  // push: ism_push.comp
+    const int fine = levelSizes_[k], coarse = levelSizes_[k + 1];
+    float* f = map + levelOffsets_[k];
+    const float* c = map + levelOffsets_[k + 1];
+    for (int t = 0; t < fine * fine; ++t) {
+      if (std::isinf(f[t])) f[t] = c[(t / fine / 2) * coarse + (t % fine) / 2];
+    }
+  }
+}
+
+void CpuIsm::build(std::size_t firstVpl, std::size_t count, int threads) {
+  TOFSIM_CHECK(count * floatsPerVpl_ <= maps_.size());
+  firstVpl_ = firstVpl;
+  builtCount_ = count;
+  parallelFor(count, threads, [&](std::size_t i) {
+    float* map = &maps_[i * floatsPerVpl_];
+    std::fill_n(map, floatsPerVpl_, kEmpty);
+    splat(firstVpl + i, map);
+    pullPush(map);
+  });
+}
+
+bool CpuIsm::visible(std::size_t vpl, const glm::vec3& d, float dist, float sceneScale_m) const {
+  // The ISM branch of visible() in indirect_gather.comp.
+  const int r = settings_.ism_resolution;
+  const glm::ivec2 t = physics::paraboloidTexelOf(vplNormal_[vpl], d, r);
+  const float stored = map(vpl)[t.y * r + t.x];
+  const float bias = dist * (4.0f / static_cast<float>(r)) + 0.01f * sceneScale_m;
+  return dist - bias <= stored;
+}
+
+}  // namespace tofsim::cpu

@@ -1,0 +1,52 @@
+#pragma once
+// The indirect gather's inner loops for one pixel and one block of VPLs, in
+// two passes: `vplTerms` evaluates the shared physics for every VPL of the
+// block with no data-dependent control flow (compiled for AVX2 and for the
+// baseline ISA, chosen at load time; the compiler vectorises it, 8 VPLs per
+// instruction with AVX2), then the caller's scalar pass tests visibility and
+// adds each term to its bin in increasing VPL index. Splitting the passes is
+// what lets the arithmetic vectorise: the histogram update is a scatter with
+// conflicts, which SIMD cannot do faster.
+
+#include <climits>
+#include <cstddef>
+#include <cstdint>
+#include <glm/glm.hpp>
+
+#include "VplArrays.h"
+
+namespace tofsim::cpu {
+
+constexpr std::size_t kVplBlock = 256;  ///< VPLs per block: ~10 KiB of VPL data, in L1
+constexpr int32_t kNoLight = INT_MIN;   ///< bin of a VPL that does not light the pixel
+
+/// The camera G-buffer of one pixel, as the gather needs it.
+struct PixelSurface {
+  glm::vec3 x{0.0f};          ///< world position, m
+  glm::vec3 n{0.0f};          ///< unit normal facing the camera
+  glm::vec3 brdf{0.0f};       ///< albedo / pi
+  float cameraPath_m = 0.0f;  ///< eta * |x - c|, or 0 when unwarped
+};
+
+/// What the time axis and the job fix for every contribution.
+struct GatherConstants {
+  float start_m = 0.0f;
+  float binWidth_m = 1.0f;
+  float indexOfRefraction = 1.0f;
+  float geometryClamp = 0.0f;  ///< <= 0: no clamp
+};
+
+/// Per-VPL terms of one block: bin (kNoLight when the VPL does not face the
+/// pixel or vice versa), rgb radiance, and the unit direction and distance
+/// VPL -> x for the visibility test.
+struct VplTerms {
+  alignas(64) int32_t bin[kVplBlock];
+  alignas(64) float r[kVplBlock], g[kVplBlock], b[kVplBlock];
+  alignas(64) float dx[kVplBlock], dy[kVplBlock], dz[kVplBlock], dist[kVplBlock];
+};
+
+/// Fills terms[0, n) for VPLs [first, first + n), n <= kVplBlock.
+void vplTerms(const PixelSurface& s, const VplArrays& v, std::size_t first, std::size_t n,
+              const GatherConstants& c, VplTerms& terms);
+
+}  // namespace tofsim::cpu

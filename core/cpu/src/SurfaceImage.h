@@ -1,0 +1,31 @@
+#pragma once
+// The first surface seen through each pixel (or RSM texel), found by one ray
+// through the pixel's centre: the CPU counterpart of the GL's rasterized
+// SurfaceMaps, with its conventions (world position with w = 1 on a surface
+// and 0 elsewhere, unit normal facing the viewpoint, albedo with textures).
+
+#include <cstdint>
+#include <glm/glm.hpp>
+#include <vector>
+
+#include "tofsim/capture/Camera.h"
+#include "tofsim/reference/RayScene.h"
+
+namespace tofsim::cpu {
+
+struct SurfaceImage {
+  int32_t width = 0;
+  int32_t height = 0;
+  std::vector<glm::vec4> position;   ///< xyz world, w = 1 on a surface, 0 else
+  std::vector<glm::vec4> normal;     ///< xyz unit shading normal facing the viewpoint
+  std::vector<glm::vec4> albedo;     ///< rgb diffuse albedo, a = 1
+  std::vector<glm::vec3> geometric;  ///< triangle normal facing the viewpoint (ray offsets)
+
+  std::size_t size() const { return position.size(); }
+};
+
+/// Camera G-buffer: pixel (x, y), row 0 at the top, through Camera::pixelDirection.
+SurfaceImage traceSurfaces(const reference::RayScene& scene, const capture::Camera& camera,
+                           int threads);
+
+}  // namespace tofsim::cpu

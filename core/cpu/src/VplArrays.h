@@ -1,0 +1,33 @@
+#pragma once
+// VPLs as structure-of-arrays, so the gather's inner loop reads each quantity
+// of consecutive VPLs from consecutive floats (SIMD loads, no gathers).
+
+#include <cstddef>
+#include <vector>
+
+#include "tofsim/ir/IrBackend.h"
+
+namespace tofsim::cpu {
+
+struct VplArrays {
+  std::vector<float> px, py, pz, path;  ///< position (world, m), optical path light -> VPL (m)
+  std::vector<float> nx, ny, nz;        ///< unit normal, lit side
+  std::vector<float> fr, fg, fb;        ///< albedo * Phi / pi, W/sr
+  std::size_t count = 0;
+
+  explicit VplArrays(const std::vector<ir::Vpl>& vpls = {}) : count(vpls.size()) {
+    for (std::vector<float>* a : {&px, &py, &pz, &path, &nx, &ny, &nz, &fr, &fg, &fb}) {
+      a->resize(count);
+    }
+    for (std::size_t k = 0; k < count; ++k) {
+      const ir::Vpl& v = vpls[k];
+      px[k] = v.positionPath.x, py[k] = v.positionPath.y, pz[k] = v.positionPath.z;
+      path[k] = v.positionPath.w;
+      nx[k] = v.normal.x, ny[k] = v.normal.y, nz[k] = v.normal.z;
+      fr[k] = v.flux.r, fg[k] = v.flux.g, fb[k] = v.flux.b;
+    }
+  }
+  std::size_t bytes() const { return count * 10 * sizeof(float); }
+};
+
+}  // namespace tofsim::cpu

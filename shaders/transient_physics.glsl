@@ -1,0 +1,95 @@
+// The per-contribution physics of transient instant radiosity, written once
+// in the common subset of GLSL 4.50 and C++/GLM so the GL and the CPU
+// backends cannot drift: the GL shaders #include this file through the shader
+// assembly (core/gl/src/Program.cpp), C++ through
+// core/physics/include/tofsim/physics/TransientPhysics.h, which maps vec3,
+// floor, min... to GLM.
+//
+// Rules for this file: plain functions of scalars and vec3 only (no
+// uniforms, buffers, out parameters or GLSL-only built-ins), float literals
+// with an f suffix (C++ would otherwise compute in double), and every function prefixed
+// by TOFSIM_PHYSICS_FN (empty in GLSL, `inline` in C++). Keep the order of
+// the arithmetic: the GL volume's bytes depend on it.
+#ifndef TOFSIM_TRANSIENT_PHYSICS_GLSL
+#define TOFSIM_TRANSIENT_PHYSICS_GLSL
+
+#ifndef TOFSIM_PHYSICS_FN
+#define TOFSIM_PHYSICS_FN
+#endif
+
+const float PI = 3.14159265358979323846f;
+
+// Fraction of a spot light's intensity emitted at cosine cosAngle from its
+// axis: 1 inside the inner cone, 0 outside the outer one, smoothstep between.
+TOFSIM_PHYSICS_FN float spotFalloff(float cosAngle, float cosOuter, float cosInner) {
+  if (cosAngle >= cosInner) return 1.0f;
+  if (cosAngle <= cosOuter) return 0.0f;
+  float s = (cosAngle - cosOuter) / (cosInner - cosOuter);
+  return s * s * (3.0f - 2.0f * s);
+}
+
+// Radiance a Lambertian surface of `albedo` at distance dLight from a point
+// light of `intensity` (W/sr) reflects towards any direction, with cosX the
+// cosine at the surface and `profile` the light's angular profile.
+TOFSIM_PHYSICS_FN vec3 lambertianDirect(vec3 albedo, vec3 intensity, float profile, float cosX,
+                                        float dLight) {
+  return albedo / PI * intensity * (profile * cosX / (dLight * dLight));
+}
+
+// Optical path of the direct light: light -> x -> camera, times eta. dCamera
+// is 0 when the camera delay is unwarped.
+TOFSIM_PHYSICS_FN float directPathLength(float eta, float dLight, float dCamera) {
+  return eta * (dLight + dCamera);
+}
+
+// Geometry term cos * cos / d^2 between a VPL and a surface point (1/m^2),
+// clamped to `clampPerM2` when that is positive (it bounds the singularity
+// near the VPL, at the cost of some energy).
+TOFSIM_PHYSICS_FN float geometryTerm(float cosVpl, float cosX, float dist2, float clampPerM2) {
+  float g = cosVpl * cosX / dist2;
+  if (clampPerM2 > 0.0f) g = min(g, clampPerM2);
+  return g;
+}
+
+// Optical path of the camera leg, 0 when the camera delay is unwarped.
+TOFSIM_PHYSICS_FN float cameraPathLength(bool unwarp, float eta, float dCamera) {
+  return unwarp ? 0.0f : eta * dCamera;
+}
+
+// Optical path of a VPL contribution: light -> VPL (vplPath, eta included),
+// VPL -> x over `dist` in the medium, x -> camera (cameraPath, eta included).
+TOFSIM_PHYSICS_FN float vplPathLength(float vplPath, float eta, float dist, float cameraPath) {
+  return vplPath + eta * dist + cameraPath;
+}
+
+// Time bin of an optical path (metres): negative before the axis, >= bins after.
+TOFSIM_PHYSICS_FN int binOfPath(float path_m, float start_m, float binWidth_m) {
+  return int(floor((path_m - start_m) / binWidth_m));
+}
+
+
+// Orthonormal basis around n (Duff et al. 2017), columns tangent, bitangent, n.
+TOFSIM_PHYSICS_FN mat3 basisAround(vec3 n) {
+  float s = n.z >= 0.0f ? 1.0f : -1.0f;
+  float a = -1.0f / (s + n.z);
+  float b = n.x * n.y * a;
+  vec3 t = vec3(1.0f + s * n.x * n.x * a, s * b, -s * n.x);
+  vec3 bt = vec3(b, s + n.y * n.y * a, -n.y);
+  return mat3(t, bt, n);
+}
+
+// Texel of unit direction d in the paraboloid map (side `resolution`) of the
+// hemisphere around `normal`; d must lie on the side of the normal.
+TOFSIM_PHYSICS_FN ivec2 paraboloidTexelOf(vec3 normal, vec3 d, int resolution) {
+  vec3 local = transpose(basisAround(normal)) * d;
+  vec2 uv = vec2(local.x, local.y) / (1.0f + max(local.z, 0.0f)) * 0.5f + 0.5f;
+  return clamp(ivec2(uv * float(resolution)), ivec2(0), ivec2(resolution - 1));
+}
+
+// Point of triangle (a, b, c) for two uniform numbers, uniform by area.
+TOFSIM_PHYSICS_FN vec3 pointOnTriangle(vec3 a, vec3 b, vec3 c, float r1, float r2) {
+  float s = sqrt(r1);
+  return a * (1.0f - s) + b * (s * (1.0f - r2)) + c * (s * r2);
+}
+
+#endif
