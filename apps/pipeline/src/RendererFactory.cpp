@@ -18,6 +18,9 @@ std::unique_ptr<capture::Renderer> makeRenderer(const config::RunConfig& config,
     settings.bounces = config.reference.bounces;
     settings.samples_per_pixel = config.reference.samples_per_pixel;
     settings.threads = config.reference.threads;
+    settings.pixel_filter = config.reference.pixel_filter == config::ReferencePixelFilter::Box
+                                ? reference::PixelFilter::Box
+                                : reference::PixelFilter::Point;
     return std::make_unique<reference::ReferenceRenderer>(settings);
   }
   return std::make_unique<ir::IrRenderer>(makeIrBackend(config, eglPlatform));
