@@ -2,7 +2,7 @@
 // and C++/GLM (the rules of transient_physics.glsl): the GL gathers include
 // this file, C++ includes it through
 // core/physics/include/tofsim/physics/FootprintKernel.h. The construction and
-// its assumptions are in shaders/footprint_kernel.md.
+// its assumptions are in core/physics/footprint_kernel.md.
 //
 // A pixel integrates over its area. Across the pixel the optical path is, to
 // first order, linear in the sub-pixel offset (u, v) in [-1/2, 1/2]^2:

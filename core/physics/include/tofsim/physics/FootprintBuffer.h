@@ -7,7 +7,7 @@
 // Layout: one pixel's difference buffer is bins x 3 doubles, (bin, channel),
 // the volume's order; zeroed before the pixel's first contribution. Doubles
 // because the double prefix sum amplifies an entry's rounding error by the
-// distance to the end of the axis (shaders/footprint_kernel.md).
+// distance to the end of the axis (core/physics/footprint_kernel.md).
 
 #include <cstdint>
 
