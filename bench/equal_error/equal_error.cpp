@@ -50,6 +50,7 @@ Measured measure(const capture::RenderJob& job, const TransientVolume& truth, Re
 
 Measured referenceRun(const capture::RenderJob& job, const TransientVolume& truth, int spp) {
   reference::ReferenceSettings s;
+  s.pixel_filter = reference::PixelFilter::Point;  // IR samples pixel centres (issue 14: box truth)
   s.samples_per_pixel = spp;
   return measure(job, truth, [&](capture::VolumeCollector& out) {
     reference::ReferenceRenderer(s).render(job, out);
@@ -93,6 +94,7 @@ int main(int argc, char** argv) {
   capture::RenderJob truthJob = job;
   truthJob.settings.seed = 99;
   reference::ReferenceSettings truthSettings;
+  truthSettings.pixel_filter = reference::PixelFilter::Point;
   truthSettings.samples_per_pixel = 16384;
   capture::VolumeCollector truthOut(resolution, resolution, job.settings.time, 3);
   const auto t0 = std::chrono::steady_clock::now();

@@ -128,6 +128,18 @@ TEST_F(RunConfigTest, OverridesApplyAndTheirErrorsNameTheOverride) {
   EXPECT_THROW(parseOverride("no-equals-sign"), InputError);
 }
 
+TEST_F(RunConfigTest, ReferencePixelFilterDefaultsToBoxAndRoundTrips) {
+  const RunConfig c = loadRunConfig(write(kValid));
+  EXPECT_EQ(c.reference.pixel_filter, ReferencePixelFilter::Box);
+  EXPECT_NE(effectiveConfigYaml(c).find("pixel_filter: box"), std::string::npos);
+  const RunConfig p =
+      loadRunConfig(write(kValid), {parseOverride("render.reference.pixel_filter=point")});
+  EXPECT_EQ(p.reference.pixel_filter, ReferencePixelFilter::Point);
+  EXPECT_NE(effectiveConfigYaml(p).find("pixel_filter: point"), std::string::npos);
+  const std::string e = errorOf(kValid, {parseOverride("render.reference.pixel_filter=gauss")});
+  EXPECT_NE(e.find("must be box or point"), std::string::npos) << e;
+}
+
 TEST_F(RunConfigTest, EffectiveConfigRoundTrips) {
   const RunConfig c = loadRunConfig(write(kValid));
   const auto path = dir_ / "effective.yaml";

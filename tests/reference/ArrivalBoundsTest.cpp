@@ -69,6 +69,7 @@ TEST(ArrivalBoundsTest, ReferenceLightLiesWithinTheBounds) {
     job.settings.time.bins =
         static_cast<int32_t>(std::ceil((b.longest_s() - b.shortest_s()) / width_s)) + 1;
     reference::ReferenceSettings settings;
+    settings.pixel_filter = reference::PixelFilter::Point;  // compares pixel centres
     settings.bounces = 3;
     settings.samples_per_pixel = 16;
     capture::RenderResult result;

@@ -38,6 +38,7 @@ TEST(IrMatchesReferenceGLTest, CornellBoxSteadyAndTransientAgree) {
   VolumeCollector ir(24, 24, job.settings.time, 3), ref(24, 24, job.settings.time, 3);
   render::TransientRenderer(test::glTestContext()).render(job, ir);
   reference::ReferenceSettings settings;
+  settings.pixel_filter = reference::PixelFilter::Point;  // compares pixel centres
   settings.bounces = 2;
   settings.samples_per_pixel = 1024;
   reference::ReferenceRenderer(settings).render(job, ref);

@@ -24,6 +24,7 @@ constexpr double kPi = 3.14159265358979323846;
 
 ReferenceSettings directOnly() {
   ReferenceSettings s;
+  s.pixel_filter = PixelFilter::Point;  // compares pixel centres
   s.bounces = 1;
   s.threads = 2;
   return s;
@@ -115,6 +116,7 @@ TEST(ReferenceClosedFormTest, IndexOfRefractionStretchesTheOpticalPath) {
 TEST(ReferenceClosedFormTest, NoEnergyBeforeTheDirectPath) {
   test::PlaneJob s;
   ReferenceSettings settings;  // two bounces: a single plane has no indirect light
+  settings.pixel_filter = PixelFilter::Point;  // compares pixel centres
   settings.samples_per_pixel = 4;
   settings.threads = 2;
   const VolumeCollector out = test::renderReference(s.job, settings);

@@ -22,6 +22,7 @@ glm::dvec3 mirror(const glm::dvec3& p, const glm::dvec3& onPlane, const glm::dve
 TEST(ReferenceIndirectTest, NoIndirectEnergyBeforeTheShortestTwoBouncePath) {
   test::CornerJob s(24);
   ReferenceSettings settings;
+  settings.pixel_filter = PixelFilter::Point;  // compares pixel centres
   settings.samples_per_pixel = 64;
   settings.threads = 2;
   RenderResult result;
@@ -99,6 +100,7 @@ glm::dvec3 oneBounceByQuadrature(const test::CornerJob& s, const glm::dvec3& x, 
 TEST(ReferenceIndirectTest, OneBounceMatchesQuadratureOverTheOtherPlane) {
   test::CornerJob s(8);
   ReferenceSettings settings;
+  settings.pixel_filter = PixelFilter::Point;  // compares pixel centres
   settings.samples_per_pixel = 16384;
   settings.threads = 2;
   RenderResult result;
@@ -144,6 +146,7 @@ TEST(ReferenceIndirectTest, ErrorHalvesWhenSamplesGrowFourfold) {
   test::CornerJob s(16);
   s.job.settings.time = TimeAxis{0.0, 0.1 / kSpeedOfLight_m_per_s, 100};
   ReferenceSettings settings;
+  settings.pixel_filter = PixelFilter::Point;  // compares pixel centres
   settings.threads = 2;
   settings.samples_per_pixel = 2048;
   s.job.settings.seed = 1000;

@@ -40,6 +40,7 @@ void expectSameDirectLight(RenderJob job) {
   VolumeCollector gl(job.camera.width, job.camera.height, job.settings.time, 3);
   render::TransientRenderer(test::glTestContext()).render(job, gl);
   ReferenceSettings settings;
+  settings.pixel_filter = PixelFilter::Point;  // compares pixel centres
   settings.bounces = 1;
   settings.threads = 2;
   const VolumeCollector ref = test::renderReference(job, settings);

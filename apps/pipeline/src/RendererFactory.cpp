@@ -24,6 +24,9 @@ RendererChoice makeRenderer(const config::RunConfig& config, gl::EglPlatform egl
     settings.bounces = config.reference.bounces;
     settings.samples_per_pixel = config.reference.samples_per_pixel;
     settings.threads = config.reference.threads;
+    settings.pixel_filter = config.reference.pixel_filter == config::ReferencePixelFilter::Box
+                                ? reference::PixelFilter::Box
+                                : reference::PixelFilter::Point;
     return {std::make_unique<reference::ReferenceRenderer>(settings), "reference"};
   }
   const config::IrBackendKind backend = resolveIrBackend(config.backend);

@@ -27,6 +27,13 @@ glm::vec3 Camera::pixelDirection(int32_t x, int32_t y) const {
                         static_cast<float>(p.y) * up());
 }
 
+glm::vec3 Camera::pixelDirection(int32_t x, int32_t y, glm::vec2 offset) const {
+  const glm::dvec2 p =
+      planePoint(*this, x + static_cast<double>(offset.x), y + static_cast<double>(offset.y));
+  return glm::normalize(glm::vec3(forward()) + static_cast<float>(p.x) * right() +
+                        static_cast<float>(p.y) * up());
+}
+
 double Camera::pixelSolidAngle_sr(int32_t x, int32_t y) const {
   // A pixel of area dA on the unit-distance plane subtends dA cos^3(theta).
   const double tanHalf = std::tan(glm::radians(static_cast<double>(fov_y_deg)) * 0.5);

@@ -71,6 +71,8 @@ YAML::Node renderNode(const RunConfig& config) {
   ref["bounces"] = config.reference.bounces;
   ref["samples_per_pixel"] = config.reference.samples_per_pixel;
   ref["threads"] = config.reference.threads;
+  ref["pixel_filter"] =
+      config.reference.pixel_filter == ReferencePixelFilter::Box ? "box" : "point";
   n["reference"] = ref;
   return n;
 }

@@ -183,6 +183,12 @@ void parseRender(const ConfigNode& node, RunConfig& out) {
     ref.samples_per_pixel = static_cast<int32_t>(
         intInRange(*reference, "samples_per_pixel", ref.samples_per_pixel, 1, 1 << 24));
     ref.threads = static_cast<int32_t>(intInRange(*reference, "threads", ref.threads, 0, 4096));
+    const std::string filter = reference->getString("pixel_filter", "box");
+    if (filter == "box" || filter == "point") {
+      ref.pixel_filter = filter == "box" ? ReferencePixelFilter::Box : ReferencePixelFilter::Point;
+    } else {
+      reference->failKey("pixel_filter", "must be box or point (got '" + filter + "')");
+    }
   }
 }
 

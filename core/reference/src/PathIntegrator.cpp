@@ -14,8 +14,12 @@ constexpr int kChannels = 3;
 }  // namespace
 
 PathIntegrator::PathIntegrator(const RayScene& scene, const capture::RenderJob& job,
-                               int32_t bounces, int32_t samplesPerPixel)
-    : scene_(scene), job_(job), bounces_(bounces), samplesPerPixel_(samplesPerPixel) {}
+                               int32_t bounces, int32_t samplesPerPixel, PixelFilter pixelFilter)
+    : scene_(scene),
+      job_(job),
+      bounces_(bounces),
+      samplesPerPixel_(samplesPerPixel),
+      pixelFilter_(pixelFilter) {}
 
 PathIntegrator::Radiance PathIntegrator::lightReflectedAt(const SurfaceHit& hit) const {
   // The GL direct gather's formula: albedo / pi * I * profile * cos / r^2.
@@ -44,6 +48,45 @@ int32_t PathIntegrator::binOfPath(double path_m) const {
 
 void PathIntegrator::renderPixel(int32_t x, int32_t y, PixelOutput& out,
                                  std::vector<double>& scratch) const {
+  if (pixelFilter_ == PixelFilter::Point) {
+    renderPixelCentre(x, y, out, scratch);
+  } else {
+    renderPixelArea(x, y, out, scratch);
+  }
+}
+
+void PathIntegrator::traceContinuation(const SurfaceHit& hit, double toCamera_m, Pcg32& rng,
+                                       double* histogram, AxisLoss& outside) const {
+  // Lambertian f = albedo / pi and pdf = cos / pi: the throughput gains albedo.
+  SurfaceHit current = hit;
+  glm::dvec3 throughput(hit.albedo);
+  double fromCamera_m = toCamera_m;
+  for (int32_t depth = 2; depth <= bounces_; ++depth) {
+    const float u1 = rng.nextFloat();
+    const float u2 = rng.nextFloat();
+    const glm::vec3 wi = cosineSampleHemisphere(current.normal_world, u1, u2);
+    if (glm::dot(wi, current.geometric_world) <= 0.0f) break;  // below the true surface
+    const std::optional<SurfaceHit> next = scene_.intersect(scene_.offsetOrigin(current, wi), wi);
+    if (!next) break;
+    fromCamera_m += glm::length(next->position_world - current.position_world);
+    const Radiance reflected = lightReflectedAt(*next);
+    if (reflected.valid) {
+      const glm::dvec3 value = throughput * reflected.value;
+      const int32_t b = binOfPath(reflected.path_m + fromCamera_m);
+      if (b < 0) {
+        outside.add(b, value.r + value.g + value.b);
+      } else {
+        double* bin = histogram + static_cast<std::size_t>(b) * kChannels;
+        for (int c = 0; c < kChannels; ++c) bin[c] += value[c];
+      }
+    }
+    throughput *= glm::dvec3(next->albedo);
+    current = *next;
+  }
+}
+
+void PathIntegrator::renderPixelCentre(int32_t x, int32_t y, PixelOutput& out,
+                                       std::vector<double>& scratch) const {
   const capture::Camera& camera = job_.camera;
   const glm::vec3 eye = camera.position_world;
   const std::optional<SurfaceHit> primary = scene_.intersect(eye, camera.pixelDirection(x, y));
@@ -69,40 +112,62 @@ void PathIntegrator::renderPixel(int32_t x, int32_t y, PixelOutput& out,
   if (bounces_ < 2) return;
 
   // Bounces 2..n: fixed-depth cosine-sampled paths with next-event estimation.
-  // Lambertian f = albedo / pi and pdf = cos / pi: the throughput gains albedo.
   scratch.assign(floats, 0.0);
   AxisLoss outside;
   Pcg32 rng = Pcg32::forUnit(job_.settings.seed,
                              static_cast<uint64_t>(y) * static_cast<uint64_t>(camera.width) + x);
   for (int32_t s = 0; s < samplesPerPixel_; ++s) {
-    SurfaceHit current = hit;
-    glm::dvec3 throughput(hit.albedo);
-    double fromCamera_m = toCamera_m;
-    for (int32_t depth = 2; depth <= bounces_; ++depth) {
-      const float u1 = rng.nextFloat();
-      const float u2 = rng.nextFloat();
-      const glm::vec3 wi = cosineSampleHemisphere(current.normal_world, u1, u2);
-      if (glm::dot(wi, current.geometric_world) <= 0.0f) break;  // below the true surface
-      const std::optional<SurfaceHit> next = scene_.intersect(scene_.offsetOrigin(current, wi), wi);
-      if (!next) break;
-      fromCamera_m += glm::length(next->position_world - current.position_world);
-      const Radiance reflected = lightReflectedAt(*next);
-      if (reflected.valid) {
-        const glm::dvec3 value = throughput * reflected.value;
-        const int32_t b = binOfPath(reflected.path_m + fromCamera_m);
-        if (b < 0) {
-          outside.add(b, value.r + value.g + value.b);
-        } else {
-          double* bin = scratch.data() + static_cast<std::size_t>(b) * kChannels;
-          for (int c = 0; c < kChannels; ++c) bin[c] += value[c];
-        }
-      }
-      throughput *= glm::dvec3(next->albedo);
-      current = *next;
-    }
+    traceContinuation(hit, toCamera_m, rng, scratch.data(), outside);
   }
   const double norm = 1.0 / samplesPerPixel_;
   for (std::size_t i = 0; i < floats; ++i) out.indirect[i] = static_cast<float>(scratch[i] * norm);
+  out.offAxis.before += outside.before * norm;
+  out.offAxis.after += outside.after * norm;
+}
+
+void PathIntegrator::addDirect(const SurfaceHit& hit, double toCamera_m, double* histogram,
+                               AxisLoss& outside) const {
+  const Radiance direct = lightReflectedAt(hit);
+  if (!direct.valid) return;
+  const int32_t b = binOfPath(direct.path_m + toCamera_m);
+  if (b < 0) {
+    outside.add(b, direct.value.r + direct.value.g + direct.value.b);
+    return;
+  }
+  double* bin = histogram + static_cast<std::size_t>(b) * kChannels;
+  for (int c = 0; c < kChannels; ++c) bin[c] += direct.value[c];
+}
+
+void PathIntegrator::renderPixelArea(int32_t x, int32_t y, PixelOutput& out,
+                                     std::vector<double>& scratch) const {
+  const capture::Camera& camera = job_.camera;
+  const glm::vec3 eye = camera.position_world;
+  // The depth image stays the centre's, as the G-buffer's.
+  if (const auto centre = scene_.intersect(eye, camera.pixelDirection(x, y))) {
+    out.depth_m = static_cast<float>(glm::length(centre->position_world - eye));
+  }
+  const std::size_t floats = static_cast<std::size_t>(job_.settings.time.bins) * kChannels;
+  scratch.assign(2 * floats, 0.0);
+  double* direct = scratch.data();
+  double* indirect = direct + floats;
+  AxisLoss outside;
+  Pcg32 rng = Pcg32::forUnit(job_.settings.seed,
+                             static_cast<uint64_t>(y) * static_cast<uint64_t>(camera.width) + x);
+  for (int32_t s = 0; s < samplesPerPixel_; ++s) {
+    const glm::vec2 offset = stratifiedPixelOffset(s, samplesPerPixel_, rng);
+    const std::optional<SurfaceHit> hit =
+        scene_.intersect(eye, camera.pixelDirection(x, y, offset));
+    if (!hit) continue;  // a silhouette pixel: this part of it sees nothing
+    const double toCamera_m =
+        job_.settings.camera_unwarp ? 0.0 : glm::length(hit->position_world - eye);
+    addDirect(*hit, toCamera_m, direct, outside);
+    if (bounces_ >= 2) traceContinuation(*hit, toCamera_m, rng, indirect, outside);
+  }
+  const double norm = 1.0 / samplesPerPixel_;
+  for (std::size_t i = 0; i < floats; ++i) {
+    out.direct[i] = static_cast<float>(direct[i] * norm);
+    out.indirect[i] = static_cast<float>(indirect[i] * norm);
+  }
   out.offAxis.before += outside.before * norm;
   out.offAxis.after += outside.after * norm;
 }

@@ -7,6 +7,7 @@
 
 #include "tofsim/reference/RayScene.h"
 #include "tofsim/capture/RenderJob.h"
+#include "tofsim/reference/ReferenceRenderer.h"
 #include "tofsim/util/Random.h"
 
 namespace tofsim::reference {
@@ -22,7 +23,7 @@ class PathIntegrator {
  public:
   /// bounces >= 1; samplesPerPixel >= 1.
   PathIntegrator(const RayScene& scene, const capture::RenderJob& job, int32_t bounces,
-                 int32_t samplesPerPixel);
+                 int32_t samplesPerPixel, PixelFilter pixelFilter);
 
   /// Renders pixel (x, y). `scratch` is reused between calls of one thread.
   void renderPixel(int32_t x, int32_t y, PixelOutput& out, std::vector<double>& scratch) const;
@@ -36,6 +37,17 @@ class PathIntegrator {
   /// Radiance `hit` reflects towards its normal side straight from the light,
   /// tested with one shadow ray; path_m is the light -> hit distance.
   Radiance lightReflectedAt(const SurfaceHit& hit) const;
+  /// Point filter: one primary ray through the pixel centre, direct term exact.
+  void renderPixelCentre(int32_t x, int32_t y, PixelOutput& out,
+                         std::vector<double>& scratch) const;
+  /// Box filter: every path starts at its own stratified sub-pixel point.
+  void renderPixelArea(int32_t x, int32_t y, PixelOutput& out, std::vector<double>& scratch) const;
+  /// Adds the direct light reflected at `hit` (weight 1) to `histogram` (T x 3).
+  void addDirect(const SurfaceHit& hit, double toCamera_m, double* histogram,
+                 AxisLoss& outside) const;
+  /// One path's bounces 2..n from the primary hit, added to `histogram`.
+  void traceContinuation(const SurfaceHit& hit, double toCamera_m, Pcg32& rng, double* histogram,
+                         AxisLoss& outside) const;
   /// Time bin of a geometric path length (metres, before the index of
   /// refraction), -1 when it falls off the axis. Same rule as TimeAxis::binOf.
   int32_t binOfPath(double path_m) const;
@@ -44,6 +56,7 @@ class PathIntegrator {
   const capture::RenderJob& job_;
   int32_t bounces_;
   int32_t samplesPerPixel_;
+  PixelFilter pixelFilter_;
 };
 
 }  // namespace tofsim::reference

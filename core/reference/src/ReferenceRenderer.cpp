@@ -85,7 +85,8 @@ RenderResult ReferenceRenderer::render(const RenderJob& job, SegmentSink& sink,
   const int32_t bounces = job.settings.indirect.enabled ? settings_.bounces : 1;
 
   const RayScene rayScene(*job.scene, threads);
-  const PathIntegrator integrator(rayScene, job, bounces, settings_.samples_per_pixel);
+  const PathIntegrator integrator(rayScene, job, bounces, settings_.samples_per_pixel,
+                                  settings_.pixel_filter);
   const DirectLightView lightView = lightSeenByCamera(job, rayScene);
 
   RenderResult result;

@@ -21,6 +21,9 @@ struct Camera {
   glm::vec3 up() const;  ///< orthogonalised
   /// Unit world-space direction through the centre of pixel (x, y).
   glm::vec3 pixelDirection(int32_t x, int32_t y) const;
+  /// Unit direction through the point `offset` (pixels, in [-1/2, 1/2]^2, +x
+  /// right, +y down) from pixel (x, y)'s centre.
+  glm::vec3 pixelDirection(int32_t x, int32_t y, glm::vec2 offset) const;
   /// Solid angle (sr) seen by pixel (x, y).
   double pixelSolidAngle_sr(int32_t x, int32_t y) const;
   /// Pixel containing the world point, or (-1, -1) when it projects outside

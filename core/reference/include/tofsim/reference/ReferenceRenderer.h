@@ -3,8 +3,11 @@
 // against. Same job, result and segment stream as the IR renderer (ir::IrRenderer).
 //
 // Estimator (see core/reference/README.md):
-//  - one primary ray through each pixel centre, as the GL G-buffer;
-//  - bounce 1 (direct light) evaluated exactly with a shadow ray: no noise, the
+//  - pixel_filter box (default): each path starts at a stratified sub-pixel
+//    point, so a pixel integrates its area; point: one primary ray through each
+//    pixel centre, as the GL G-buffer;
+//  - bounce 1 (direct light) evaluated exactly with a shadow ray at each primary
+//    hit (with point: no noise), the
 //    same formula and time binning as the GL direct gather. Goes to Segment::direct,
 //    with the light seen straight by the camera (capture::DirectLightView);
 //  - bounces 2..n: samples_per_pixel cosine-sampled continuations of fixed depth
@@ -20,12 +23,20 @@
 
 namespace tofsim::reference {
 
+/// What a pixel integrates: its whole area (box) or the ray through its centre
+/// (point, the G-buffer's view: kept for closed-form tests at pixel centres).
+enum class PixelFilter { Box, Point };
+
 struct ReferenceSettings {
   /// Surface interactions per path: 1 = direct only, 2 = direct + one indirect
   /// bounce (the paper's), n = up to n - 1 indirect bounces. >= 1.
   int32_t bounces = 2;
   /// Indirect paths per pixel; the direct term needs none. >= 1.
   int32_t samples_per_pixel = 64;
+  /// Box: every path starts at its own stratified, jittered sub-pixel point, and
+  /// the direct term is averaged over those points too. Point: one ray through
+  /// the pixel centre, the direct term exact there.
+  PixelFilter pixel_filter = PixelFilter::Box;
   /// Worker threads; 0 = std::thread::hardware_concurrency().
   int32_t threads = 0;
 };

@@ -1,0 +1,58 @@
+#pragma once
+// The two buffer passes around the footprint kernel (FootprintKernel.h), as
+// the CPU gather runs them and as the reference the GL passes are tested
+// against: deposit one contribution into a pixel's difference buffer, and the
+// final per-pixel double prefix sum that turns the buffer into bin integrals.
+//
+// Layout: one pixel's difference buffer is bins x 3 doubles, (bin, channel),
+// the volume's order; zeroed before the pixel's first contribution. Doubles
+// because the double prefix sum amplifies an entry's rounding error by the
+// distance to the end of the axis (core/physics/footprint_kernel.md).
+
+#include <cstdint>
+
+#include "tofsim/physics/FootprintKernel.h"
+
+namespace tofsim::physics {
+
+/// Mass of a contribution off the time axis, per unit of energy.
+struct FootprintOffAxis {
+  double before = 0.0;
+  double after = 0.0;
+};
+
+/// Adds a contribution of `energy` (per channel) spread by `kernel` to one
+/// pixel's difference buffer `diff` (bins x 3). Writes at most FOOTPRINT_SLOTS
+/// bins, whatever the kernel's width, each once, in increasing bin order.
+/// Returns the fraction of the energy before and after the axis, which the
+/// caller books as off-axis energy (it is not in the buffer).
+inline FootprintOffAxis depositFootprint(double* diff, int32_t bins, const vec3& kernel,
+                                         const vec3& energy) {
+  for (int slot = 0; slot < FOOTPRINT_SLOTS; ++slot) {
+    const int bin = footprintSlotBin(kernel, slot, bins);
+    if (bin < 0) continue;
+    const double value = footprintSlotValue(kernel, bin);
+    double* entry = diff + static_cast<std::size_t>(bin) * 3;
+    for (int c = 0; c < 3; ++c) entry[c] += value * static_cast<double>(energy[c]);
+  }
+  return {footprintMassBefore(kernel), footprintMassAfter(kernel, bins)};
+}
+
+/// The final pass for one pixel: adds the bin integrals held by `diff`
+/// (bins x 3, as depositFootprint left it) to `histogram` (bins x 3 floats).
+/// Running sums in double, channel by channel, bins in increasing order: the
+/// GL pass must keep this order to give the same bytes.
+inline void integrateFootprint(const double* diff, int32_t bins, float* histogram) {
+  for (int c = 0; c < 3; ++c) {
+    double slope = 0.0;  // first prefix sum: I_k - I_(k-1)
+    double value = 0.0;  // second prefix sum: I_k
+    for (int32_t k = 0; k < bins; ++k) {
+      const std::size_t i = static_cast<std::size_t>(k) * 3 + c;
+      slope += diff[i];
+      value += slope;
+      histogram[i] += static_cast<float>(value);
+    }
+  }
+}
+
+}  // namespace tofsim::physics

@@ -1,0 +1,157 @@
+// The pixel footprint in time, written once in the common subset of GLSL 4.50
+// and C++/GLM (the rules of transient_physics.glsl): the GL gathers include
+// this file, C++ includes it through
+// core/physics/include/tofsim/physics/FootprintKernel.h. The construction and
+// its assumptions are in core/physics/footprint_kernel.md.
+//
+// A pixel integrates over its area. Across the pixel the optical path is, to
+// first order, linear in the sub-pixel offset (u, v) in [-1/2, 1/2]^2:
+// path = p0 + a u + b v. Its distribution is the convolution of two boxes of
+// widths |a| and |b|: a trapezoid (a box when one width is 0, a spike when
+// both are). A contribution is spread over the time bins by that kernel, in
+// closed form, at a cost independent of its width in bins: the deposit writes
+// the kernel's second differences into a per-pixel difference buffer, only
+// near the kernel's four kinks, and one double prefix sum per pixel at the end
+// turns the buffer into exact bin integrals.
+//
+// Units: a kernel is a vec3 in bins of the time axis: x = centre (the path's
+// offset from the axis start, in bins: the same quotient binOfPath floors),
+// y = the wider box width, z = the narrower one (y >= z >= 0). The cumulative
+// distribution and the deposit values are doubles: the double prefix sum
+// amplifies an entry's rounding by the distance to the end of the axis, so
+// entries must be good to far more than float's 24 bits (see the notes).
+#ifndef TOFSIM_FOOTPRINT_KERNEL_GLSL
+#define TOFSIM_FOOTPRINT_KERNEL_GLSL
+
+#ifndef TOFSIM_PHYSICS_FN
+#define TOFSIM_PHYSICS_FN
+#endif
+
+// Difference-buffer entries one contribution writes at most: three per kink.
+const int FOOTPRINT_SLOTS = 12;
+
+// v / |v|, or 0 for the zero vector.
+TOFSIM_PHYSICS_FN vec3 footprintUnitOrZero(vec3 v) {
+  float len = length(v);
+  return len > 0.0f ? v / len : vec3(0.0f);
+}
+
+// Derivative of the surface point x across one pixel step, from the ray
+// differential on the surface's tangent plane. toSurface = x - camera;
+// forward = the camera's unit view axis; dirStep = the change of the camera
+// ray's unnormalised direction (forward + s right + t up) over one pixel step
+// (right * 2 tan(fov_y/2) / height for u, -up * 2 tan(fov_y/2) / height for
+// v); n = the surface normal (either side). Exactly grazing rays are held at a
+// cosine of 1e-6 instead of dividing by zero.
+TOFSIM_PHYSICS_FN vec3 surfaceStepAcrossPixel(vec3 toSurface, vec3 forward, vec3 dirStep, vec3 n) {
+  float t = dot(toSurface, forward);  // the ray parameter of x for that direction
+  float facing = dot(n, toSurface);
+  float least = 1e-6f * length(toSurface);
+  if (abs(facing) < least) facing = facing < 0.0f ? -least : least;
+  return t * (dirStep - toSurface * (dot(n, dirStep) / facing));
+}
+
+// Gradient in x of the optical path eta * (|x - source| + |x - camera|), the
+// camera leg dropped when the camera delay is unwarped. source = the point
+// light for the direct term, the VPL for an indirect one (the VPL's own path
+// t_l is constant across the pixel).
+TOFSIM_PHYSICS_FN vec3 opticalPathGradient(vec3 x, vec3 source, vec3 camera, float eta,
+                                           bool unwarp) {
+  vec3 g = footprintUnitOrZero(x - source);
+  if (!unwarp) g = g + footprintUnitOrZero(x - camera);
+  return eta * g;
+}
+
+// The path's derivatives (a, b) in metres across the pixel: the gradient
+// projected on the surface steps dx/du and dx/dv.
+TOFSIM_PHYSICS_FN vec2 pathStepsAcrossPixel(vec3 gradient, vec3 dxdu, vec3 dxdv) {
+  return vec2(dot(gradient, dxdu), dot(gradient, dxdv));
+}
+
+// The kernel (see the top) of a contribution at optical path path_m with
+// derivatives steps_m across the pixel, on the axis (start_m, binWidth_m).
+TOFSIM_PHYSICS_FN vec3 footprintKernel(float path_m, vec2 steps_m, float start_m,
+                                       float binWidth_m) {
+  float wa = abs(steps_m.x) / binWidth_m;
+  float wb = abs(steps_m.y) / binWidth_m;
+  return vec3((path_m - start_m) / binWidth_m, max(wa, wb), min(wa, wb));
+}
+
+// Position (bins) of kink `knot` (0..3, in increasing order): the trapezoid's
+// start, the end of its rising ramp, the start of its falling ramp, its end.
+TOFSIM_PHYSICS_FN double footprintKnot(vec3 kernel, int knot) {
+  double halfSum = (double(kernel.y) + double(kernel.z)) * double(0.5f);
+  double halfDiff = (double(kernel.y) - double(kernel.z)) * double(0.5f);
+  double offset =
+      knot == 0 ? -halfSum : (knot == 1 ? -halfDiff : (knot == 2 ? halfDiff : halfSum));
+  return double(kernel.x) + offset;
+}
+
+// Fraction of the kernel's mass below x (bins): 0, a quadratic rise, linear,
+// a quadratic approach to 1. A spike (both widths 0) at centre c puts its mass
+// in the bin [floor(c), floor(c) + 1), as point sampling does: F(x) = x > c.
+TOFSIM_PHYSICS_FN double footprintCdf(vec3 kernel, double x) {
+  double zero = double(0.0f);
+  double one = double(1.0f);
+  double wide = double(kernel.y);
+  double narrow = double(kernel.z);
+  double s = x - footprintKnot(kernel, 0);
+  if (s <= zero) return zero;
+  if (s >= wide + narrow) return one;
+  if (s < narrow) return s * s / (double(2.0f) * wide * narrow);  // rising ramp
+  if (s <= wide) return (s - double(0.5f) * narrow) / wide;       // plateau
+  double r = wide + narrow - s;                                   // falling ramp
+  return one - r * r / (double(2.0f) * wide * narrow);
+}
+
+// Mass of the kernel before the axis (bins < 0) and after it (bins >= bins):
+// the energy the caller books as off the axis.
+TOFSIM_PHYSICS_FN double footprintMassBefore(vec3 kernel) {
+  return footprintCdf(kernel, double(0.0f));
+}
+TOFSIM_PHYSICS_FN double footprintMassAfter(vec3 kernel, int bins) {
+  return double(1.0f) - footprintCdf(kernel, double(bins));
+}
+
+// Mass between the axis start and bin edge i, the on-axis cumulative G(i):
+// 0 for i <= 0. Truncating at the start makes bins before the axis hold 0, so
+// the prefix sums can start at bin 0.
+TOFSIM_PHYSICS_FN double footprintMassToEdge(vec3 kernel, int i) {
+  int edge = max(i, 0);
+  return footprintCdf(kernel, double(edge)) - footprintCdf(kernel, double(0.0f));
+}
+
+// Bin of kink `knot`, clamped to [0, bins].
+TOFSIM_PHYSICS_FN int footprintKnotBin(vec3 kernel, int knot, int bins) {
+  double b = clamp(floor(footprintKnot(kernel, knot)), double(0.0f), double(bins));
+  return int(b);
+}
+
+// Difference-buffer bin written by deposit slot `slot` (0 .. FOOTPRINT_SLOTS-1),
+// or -1 when the slot writes nothing. Slot 3 j + o is bin knotBin(j) + o: the
+// second difference D_k = I_k - 2 I_(k-1) + I_(k-2) of the bin integrals I can
+// only be non-zero where a kink lies in bins k-2 .. k (elsewhere the density is
+// linear over the three bins, so their integrals are collinear). A bin already
+// written by the previous kink's slots is skipped, so each bin is written once
+// per contribution, and the bins come in increasing order.
+TOFSIM_PHYSICS_FN int footprintSlotBin(vec3 kernel, int slot, int bins) {
+  if (footprintKnot(kernel, 3) < double(0.0f) || footprintKnot(kernel, 0) >= double(bins)) {
+    return -1;  // wholly off the axis
+  }
+  int knot = slot / 3;
+  int bin = footprintKnotBin(kernel, knot, bins) + (slot - 3 * knot);
+  if (bin >= bins) return -1;
+  if (knot > 0 && bin <= footprintKnotBin(kernel, knot - 1, bins) + 2) return -1;
+  return bin;
+}
+
+// The value a deposit adds at difference-buffer bin k, per unit of energy:
+// D_k = I_k - 2 I_(k-1) + I_(k-2), I_i = G(i + 1) - G(i), so
+// D_k = G(k+1) - 3 G(k) + 3 G(k-1) - G(k-2), all exact.
+TOFSIM_PHYSICS_FN double footprintSlotValue(vec3 kernel, int k) {
+  double three = double(3.0f);
+  return footprintMassToEdge(kernel, k + 1) - three * footprintMassToEdge(kernel, k) +
+         three * footprintMassToEdge(kernel, k - 1) - footprintMassToEdge(kernel, k - 2);
+}
+
+#endif  // TOFSIM_FOOTPRINT_KERNEL_GLSL
