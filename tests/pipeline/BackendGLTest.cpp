@@ -29,15 +29,9 @@ const std::string kNoEgl =
 class BackendGLTest : public test::TempDirTest {
  protected:
   CommandResult render(const std::string& env, const std::string& backend) {
-    const std::string command = env + test::cliPath() + " render " + test::kCornellConfig + " -o " +
-                                (dir_ / backend).string() + kSmall +
-                                (backend.empty() ? "" : " --backend " + backend) + " 2>&1";
-    FILE* pipe = ::popen(command.c_str(), "r");
-    std::string output;
-    char buffer[512];
-    while (std::fgets(buffer, sizeof buffer, pipe)) output += buffer;
-    const int status = ::pclose(pipe);
-    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, output};
+    return test::runCli("render " + test::kCornellConfig + " -o " + (dir_ / backend).string() +
+                            kSmall + (backend.empty() ? "" : " --backend " + backend),
+                        env);
   }
   // transient.json of the run into folder `backend`.
   std::string metadata(const std::string& backend) {

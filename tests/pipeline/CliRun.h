@@ -28,8 +28,9 @@ inline std::string cliPath() {
   return other && *other ? other : TOFSIM_CLI;
 }
 
-inline CommandResult runCli(const std::string& args) {
-  const std::string command = cliPath() + " " + args + " 2>&1";
+/// Runs the CLI with `args`; `environment` ("NAME=value ...") prefixes the command.
+inline CommandResult runCli(const std::string& args, const std::string& environment = "") {
+  const std::string command = environment + " " + cliPath() + " " + args + " 2>&1";
   FILE* pipe = ::popen(command.c_str(), "r");
   std::string output;
   char buffer[512];
