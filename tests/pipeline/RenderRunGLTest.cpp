@@ -13,6 +13,8 @@
 #include "support/TempDir.h"
 #include "tofsim/io/Exr.h"
 #include "tofsim/io/Npy.h"
+#include "tofsim/pipeline/Capture.h"
+#include "tofsim/scene/GltfLoader.h"
 
 namespace tofsim {
 namespace {
@@ -72,6 +74,23 @@ TEST_F(RenderRunGLTest, TransientSumsToSteadyAndFilesLoad) {
   text << json.rdbuf();
   EXPECT_NE(text.str().find("\"bin_width_s\""), std::string::npos);
   EXPECT_NE(text.str().find("\"bin_width_m\""), std::string::npos);
+}
+
+TEST_F(RenderRunGLTest, EffectiveConfigRecordsTheGltfCameraThatWasUsed) {
+  const auto out = dir_ / "out";
+  const CommandResult r = run("render " + kConfig + " -o " + out.string() + kSmall);
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  const config::RunConfig original = config::loadRunConfig(kConfig, {});
+  ASSERT_FALSE(original.camera.gltf_camera.empty()) << "the demo uses its glTF camera";
+  const scene::Scene scene = scene::loadGltf(original.scene_file);
+  const capture::Camera used = pipeline::makeRenderJob(original, scene).camera;
+  const capture::Camera recorded =
+      config::loadRunConfig(out / "config.effective.yaml", {}).camera.camera;
+  EXPECT_NE(original.camera.camera.position_world, used.position_world) << "not the defaults";
+  EXPECT_EQ(recorded.position_world, used.position_world);
+  EXPECT_EQ(recorded.look_at_world, used.look_at_world);
+  EXPECT_EQ(recorded.up_world, used.up_world);
+  EXPECT_EQ(recorded.fov_y_deg, used.fov_y_deg);
 }
 
 TEST_F(RenderRunGLTest, SameConfigAndSeedGiveTheSameBytes) {

@@ -194,7 +194,11 @@ void writeOutputs(const config::RunConfig& config, const capture::RenderJob& job
       summary.files.push_back(std::move(f));
     }
   }
-  writeFileAtomically(dir / "config.effective.yaml", config::effectiveConfigYaml(config));
+  // What was used: a glTF camera's position, view and field of view, not the
+  // config's defaults, so the file reproduces the run without the glTF camera too.
+  config::RunConfig used = config;
+  used.camera.camera = job.camera;
+  writeFileAtomically(dir / "config.effective.yaml", config::effectiveConfigYaml(used));
   summary.files.push_back("config.effective.yaml");
   if (options.batchManifest) {
     // Last: it lists the files above with their checksums, so it exists
