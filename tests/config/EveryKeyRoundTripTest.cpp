@@ -1,0 +1,131 @@
+// The effective config round-trips a config in which EVERY declared run key
+// has a non-default value: a key that the writer dropped, or wrote back as
+// its default, would show here. Which keys there are comes from the
+// declared table (ConfigKeys.h), so a new key without a value in kEveryKey
+// fails the coverage check below.
+
+#include <gtest/gtest.h>
+#include <yaml-cpp/yaml.h>
+
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include "support/TempDir.h"
+#include "tofsim/config/ConfigKeys.h"
+#include "tofsim/config/RunConfig.h"
+
+namespace tofsim::config {
+namespace {
+
+// Required sections, empty: every key at its default.
+const char* kMinimal = "scene: scene.gltf\ncamera: {}\nlight: {}\ntime: {}\n";
+
+const char* kEveryKey = R"(scene: scene.gltf
+camera:
+  gltf_camera: cam
+  position: [0.5, 0.25, 2]
+  look_at: [0.1, 0.2, 0.3]
+  up: [0, 0, 1]
+  fov_y: 33 deg
+  resolution: [40, 30]
+light:
+  type: spot
+  attach_to_camera: true
+  offset: [0.01, 0.02, 0.03]
+  position: [1, 2, 3]
+  direction: [0, -1, 0]
+  cone_angle: 25 deg
+  cone_falloff: 3 deg
+  intensity: [2, 3, 4]
+time:
+  start: 1 ns
+  bin_width: 20 ps
+  bins: 300
+  index_of_refraction: 1.33
+  camera_unwarp: true
+render:
+  renderer: reference
+  backend: cpu
+  seed: 7
+  shadow_map_resolution: 256
+  memory_budget: 100 MiB
+  strict: true
+  indirect:
+    enabled: false
+    rsm_resolution: 8
+    ism_resolution: 16
+    points_per_vpl: 200
+    ism_pull_push: false
+    visibility: exact
+    geometry_clamp: 50
+  reference:
+    bounces: 3
+    samples_per_pixel: 16
+    threads: 2
+    pixel_filter: point
+output:
+  directory: elsewhere
+  transient: false
+  steady: false
+  depth: false
+  frames: true
+  components: [direct, indirect]
+  video: true
+  video_tone_map: log
+  video_stride: 2
+  video_window: 4
+  video_fps: 24
+  max_bytes: 3 GiB
+  frame_pngs: true
+sensors:
+  - type: spad
+)";
+
+// The node at a dotted key path, or an undefined node.
+YAML::Node at(const YAML::Node& root, const std::string& path) {
+  YAML::Node node = YAML::Clone(root);
+  std::stringstream parts(path);
+  std::string part;
+  while (std::getline(parts, part, '.')) {
+    if (!node.IsMap()) return YAML::Node(YAML::NodeType::Undefined);
+    node = node[part];
+  }
+  return node;
+}
+
+std::string text(const YAML::Node& node) {
+  YAML::Emitter out;
+  out << node;
+  return out.c_str();
+}
+
+class EveryKeyRoundTripTest : public test::TempDirTest {
+ protected:
+  RunConfig load(const std::string& yaml, const std::string& name) {
+    std::ofstream(dir_ / "scene.gltf") << "{}";
+    std::ofstream(dir_ / name) << yaml;
+    return loadRunConfig(dir_ / name);
+  }
+};
+
+TEST_F(EveryKeyRoundTripTest, EveryDeclaredKeyIsNonDefaultAndSurvivesTheRoundTrip) {
+  const YAML::Node defaults = YAML::Load(effectiveConfigYaml(load(kMinimal, "minimal.yaml")));
+  const RunConfig every = load(kEveryKey, "every.yaml");
+  const std::string written = effectiveConfigYaml(every);
+  const YAML::Node effective = YAML::Load(written);
+  for (const ConfigKey& key : runConfigKeys()) {
+    const std::string type = key.type;
+    if (type == "mapping" || std::string(key.path) == "sensors") continue;
+    if (std::string(key.defaultValue) == "required") continue;  // no default to differ from
+    const YAML::Node value = at(effective, key.path);
+    ASSERT_TRUE(value.IsDefined()) << key.path << " is not in the effective config";
+    EXPECT_NE(text(value), text(at(defaults, key.path)))
+        << key.path << " has its default value in the test config (give it another)";
+  }
+  const RunConfig again = load(written, "again.yaml");
+  EXPECT_EQ(effectiveConfigYaml(again), written);
+}
+
+}  // namespace
+}  // namespace tofsim::config
