@@ -16,11 +16,11 @@ namespace {
 constexpr std::size_t kHuge = std::size_t(1) << 40;
 
 TEST(SegmentPlanTest, BudgetDividesIntoWholePixels) {
-  // 10 floats per pixel, 2 volumes: 80 bytes + 4 for the off-axis light.
-  const SegmentPlan plan = planSegments(1000, 10, 2, 84 * 64 + 83, kHuge, kHuge);
+  // 10 floats per pixel, 2 volumes: 80 bytes + 8 for the off-axis light.
+  const SegmentPlan plan = planSegments(1000, 10, 2, 88 * 64 + 87, kHuge, kHuge);
   EXPECT_EQ(plan.pixelsPerSegment, 64u);
   EXPECT_EQ(plan.segmentCount, 16u);  // ceil(1000 / 64)
-  EXPECT_EQ(plan.bytesPerSegment, 64u * 84);
+  EXPECT_EQ(plan.bytesPerSegment, 64u * 88);
   EXPECT_EQ(plan.segment(15).first, 960u);
   EXPECT_EQ(plan.segment(15).count, 40u);  // the last one is shorter
 }

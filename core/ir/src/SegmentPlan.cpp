@@ -28,7 +28,8 @@ SegmentPlan planSegments(std::size_t pixelCount, std::size_t floatsPerPixel, int
                          std::size_t budgetBytes, std::size_t maxBufferBytes,
                          std::size_t maxPixelsPerPass) {
   const std::size_t pixelVolumeBytes = floatsPerPixel * sizeof(float);
-  const std::size_t pixelBytes = pixelVolumeBytes * buffersPerPixel + sizeof(float);
+  // Plus the light off the axis: one float before it, one after (AxisLoss).
+  const std::size_t pixelBytes = pixelVolumeBytes * buffersPerPixel + 2 * sizeof(float);
   // validateJob rejects time.bins whose histogram exceeds the buffer limit,
   // naming the key; reaching this is a caller's bug.
   TOFSIM_CHECK_GT(pixelVolumeBytes, 0u);

@@ -28,8 +28,8 @@ SegmentPlan fixedSegments(std::size_t pixelCount, std::size_t pixelsPerSegment,
                           std::size_t bytesPerPixel);
 
 /// `floatsPerPixel`: T * C. `buffersPerPixel`: how many volumes (direct,
-/// indirect) a segment holds; each pixel also costs sizeof(float) for the
-/// light off the axis. One pixel's histogram must fit `maxBufferBytes`
+/// indirect) a segment holds; each pixel also costs two floats for the
+/// light off the axis (before it, after it). One pixel's histogram must fit `maxBufferBytes`
 /// (validated before, by the driver). Throws InputError when the budget cannot
 /// hold one pixel.
 SegmentPlan planSegments(std::size_t pixelCount, std::size_t floatsPerPixel, int buffersPerPixel,
