@@ -42,12 +42,12 @@ render() {
 
 # Check: a tiny render must run on the chosen platform before the long ones.
 if [ -x bin/tofsim ]; then
-  if ! render check 60 --set 'camera.resolution=[16,16]' --set time.bins=16; then
+  if ! render check 20 --set 'camera.resolution=[16,16]' --set time.bins=16; then
     cat "$work/check.log" >&2; echo "run: EGL platform '$platform' does not render" >&2; exit 1
   fi
   device=$(jsonField "$work/check/transient.json" device)
 else
-  device=$(timeout 60 bin/tofsim_cpu_gather 1 8 4 2>&1 | sed -n 's/^GL: //p')
+  device=$(timeout 20 bin/tofsim_cpu_gather 1 8 4 2>&1 | sed -n 's/^GL: //p')
   [ -n "$device" ] || { echo "run: EGL platform '$platform' does not render" >&2; exit 1; }
 fi
 echo "device: $device" >&2
@@ -55,7 +55,7 @@ echo "device: $device" >&2
 # (a) The paper's TABLE configuration (GTX 1060: 131.76 s).
 if [ $quick = 1 ]; then side=64 rsm=16 ism=16 points=500; else side=1024 rsm=256 ism=256 points=24000; fi
 if [ -x bin/tofsim ]; then
-  if render table 150 --set "camera.resolution=[$side,$side]" --set time.bins=250 \
+  if render table 110 --set "camera.resolution=[$side,$side]" --set time.bins=250 \
       --set 'time.bin_width=8 mm' --set render.indirect.rsm_resolution=$rsm \
       --set render.indirect.ism_resolution=$ism --set render.indirect.points_per_vpl=$points \
       --set "render.memory_budget=${GPU_BENCH_BUDGET:-8 GiB}"; then
@@ -63,7 +63,7 @@ if [ -x bin/tofsim ]; then
     row "(a) TABLE ${side}^2, 250 bins, RSM ${rsm}^2, ISM ${ism}^2, ${points} pts/VPL (paper: 131.76 s, GTX 1060)" \
       "$(jsonField "$j" seconds) s render, $(jsonField "$j" vpls) VPLs, $(jsonField "$j" vpl_batches) batches" "$last"
   else
-    row "(a) TABLE configuration" "failed or over 150 s (rc $?): $(tail -c 200 "$work/table.log" | tr '\n|' ' /')" "$last"
+    row "(a) TABLE configuration" "failed or over 110 s (rc $?): $(tail -c 200 "$work/table.log" | tr '\n|' ' /')" "$last"
   fi
   rm -rf "$work/table"
 else
@@ -73,14 +73,14 @@ fi
 # (b) IR against the reference path tracer at equal error, IR on the GL backend.
 res=$([ $quick = 1 ] && echo 16 || echo 64)
 cmd="bin/tofsim_equal_error configs/scenes/cornell_box.gltf $res gl"
-if timeout 90 $cmd >"$work/eq.log" 2>&1; then
+if timeout 45 $cmd >"$work/eq.log" 2>&1; then
   # The last table: | IR setting | IR seconds | reference seconds | speed-up |
   while IFS='|' read -r _ setting irs refs speed _; do
     setting=$(echo $setting)  # trimmed
     row "(b) equal error ${res}^2: ${setting}" "IR ${irs// /} s, reference at equal error ${refs// /} s, speed-up ${speed// /}" "$cmd"
   done < <(awk '/^\| IR setting/{t=1; next} t && /^\| IR/' "$work/eq.log")
 else
-  row "(b) equal error" "failed or over 90 s: $(tail -c 200 "$work/eq.log" | tr '\n|' ' /')" "$cmd"
+  row "(b) equal error" "failed or over 45 s: $(tail -c 200 "$work/eq.log" | tr '\n|' ' /')" "$cmd"
 fi
 
 # (c) Gather pairs per second, CPU (all cores) and GL, through the backend interface.
@@ -88,13 +88,13 @@ threads=$(nproc)
 if [ $quick = 1 ]; then sweep="32:8"; else sweep="128:32 256:32 256:64"; fi
 for c in $sweep; do
   cmd="bin/tofsim_cpu_gather $threads ${c%:*} ${c#*:}"
-  if timeout 60 $cmd >"$work/g.log" 2>&1; then
+  if timeout 20 $cmd >"$work/g.log" 2>&1; then
     while IFS='|' read -r _ vis pairs cpu gl ratio _; do
       row "(c) gathers ${c%:*}^2, RSM ${c#*:}^2, ${vis// /}" \
         "${pairs// /} pairs: cpu ${cpu// /} M/s, gl ${gl// /} M/s, cpu/gl ${ratio// /}" "$cmd"
     done < <(grep -E '^\| (none|exact|ism) ' "$work/g.log")
   else
-    row "(c) gathers ${c%:*}^2" "failed or over 60 s: $(tail -c 200 "$work/g.log" | tr '\n|' ' /')" "$cmd"
+    row "(c) gathers ${c%:*}^2" "failed or over 20 s: $(tail -c 200 "$work/g.log" | tr '\n|' ' /')" "$cmd"
   fi
 done
 
