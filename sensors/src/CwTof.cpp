@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 
 #include "tofsim/sensors/Random.h"
@@ -46,22 +47,31 @@ struct Correlator {
     }
   }
 
-  /// Phases (F) and the first frequency's amplitude from raw values.
-  double depth(const std::vector<double>& raw, std::vector<double>& phases, double& amplitude,
-               double range) const {
+  /// Phases and amplitudes (F) from raw values, and the depth: unwrapped
+  /// over `range` when F >= 2, the wrapped depth of the one frequency else.
+  double depth(const std::vector<double>& raw, std::vector<double>& phases,
+               std::vector<double>& amplitudes, double range) const {
     const auto F = static_cast<int32_t>(p.frequencies_Hz.size());
     phases.resize(F);
+    amplitudes.resize(F);
     for (int32_t f = 0; f < F; ++f) {
-      double a = 0.0;
       phaseFromSteps(raw.data() + static_cast<std::size_t>(f) * p.phase_steps, p.phase_steps,
-                     phases[f], a);
-      if (f == 0) amplitude = a;
+                     phases[f], amplitudes[f]);
     }
     // Delay -> depth in the medium (c / eta), so a scene in water is not
     // reported as (eta - 1) x depth of multipath error.
     return unwrapDepth_m(phases, p.frequencies_Hz, range, axis.depthPerSecond_m_per_s());
   }
+
+  /// The depth one frequency's phase stands for, in [0, k / f).
+  double wrappedDepth(std::size_t f, double phase) const {
+    return axis.depthPerSecond_m_per_s() * phase / (2.0 * M_PI * p.frequencies_Hz[f]);
+  }
 };
+
+/// An error e between two depths measured modulo `range`, folded into
+/// [-range/2, range/2]: a whole number of wraps is ambiguity, not multipath.
+double wrapSigned(double e, double range) { return e - range * std::round(e / range); }
 
 SensorOutput makeOutput(const std::string& name, SensorOutput::Kind kind,
                         std::vector<int64_t> shape, std::vector<float> data,
@@ -86,17 +96,12 @@ void addImage(std::vector<SensorOutput>& outs, const std::string& name, int32_t 
   png.colormap = colormap;
   outs.push_back(std::move(png));
 }
-}  // namespace
-
-std::vector<SensorOutput> runCwTof(const TransientVolume& volume, const CwTofParams& p,
-                                   uint64_t seed, const CwTofReferences& refs) {
+void checkInputs(const TransientVolume& volume, const CwTofParams& p, const CwTofReferences& refs) {
   TOFSIM_CHECK(!p.frequencies_Hz.empty() && p.phase_steps >= 3);
   for (double f : p.frequencies_Hz) TOFSIM_CHECK(f > 0.0);
   TOFSIM_CHECK(p.ambient_e >= 0.0 && p.read_noise_e >= 0.0 && p.max_depth_m >= 0.0);
   checkChannelSelection(p.common.channel, volume);
   const int32_t H = volume.height(), W = volume.width();
-  const auto F = static_cast<int32_t>(p.frequencies_Hz.size());
-  const int32_t N = p.phase_steps;
   const Image* gt = refs.groundTruthDepth_m;
   const TransientVolume* direct = refs.directOnly;
   if (gt && (gt->width != W || gt->height != H || gt->channels < 1)) {
@@ -108,67 +113,177 @@ std::vector<SensorOutput> runCwTof(const TransientVolume& volume, const CwTofPar
                  direct->channels() != volume.channels() || direct->bins() != volume.bins())) {
     throw InputError("cwtof direct-only volume does not match the volume's shape");
   }
-  const double range = unwrapRange_m(p, volume.axis().depthPerSecond_m_per_s());
-  const Correlator correlator(p, volume.axis());
-  const std::size_t HW = static_cast<std::size_t>(H) * W;
-  const float nan = std::numeric_limits<float>::quiet_NaN();
-  std::vector<float> raw(static_cast<std::size_t>(F) * N * HW), phase(F * HW);
-  std::vector<float> depth(HW), amplitude(HW), mpiGt(HW, nan), mpiDirect(HW, nan);
+  for (std::size_t i = 0; i < p.frequencies_Hz.size(); ++i) {
+    for (std::size_t j = 0; j < i; ++j) {
+      if (frequencyLabel(p.frequencies_Hz[i]) == frequencyLabel(p.frequencies_Hz[j])) {
+        throw InputError("cwtof frequencies " + std::to_string(j) + " and " + std::to_string(i) +
+                         " share the output name " + frequencyLabel(p.frequencies_Hz[i]));
+      }
+    }
+  }
+}
 
-  std::vector<double> signal, ideal, noisy, phases;
-  for (int32_t y = 0; y < H; ++y) {
-    for (int32_t x = 0; x < W; ++x) {
-      const std::size_t pixel = static_cast<std::size_t>(y) * W + x;
-      pixelSignal(volume, p.common, y, x, signal);
-      correlator.raw(signal, p.ambient_e, ideal);
-      Rng rng(seed, pixelStream(kCwTofStreamTag, pixel));
-      noisy = ideal;
-      for (double& v : noisy) {
-        if (p.shot_noise) v = static_cast<double>(rng.poisson(std::max(0.0, v)));
-        if (p.read_noise_e > 0.0) v += rng.normal(0.0, p.read_noise_e);
+/// One run of the model: the per-pixel measurement into planes of H x W.
+class CwTofRun {
+ public:
+  CwTofRun(const TransientVolume& volume, const CwTofParams& p, uint64_t seed,
+           const CwTofReferences& refs)
+      : volume_(volume),
+        p_(p),
+        seed_(seed),
+        refs_(refs),
+        correlator_(p, volume.axis()),
+        H_(volume.height()),
+        W_(volume.width()),
+        F_(static_cast<int32_t>(p.frequencies_Hz.size())),
+        HW_(static_cast<std::size_t>(H_) * W_) {
+    const double k = volume.axis().depthPerSecond_m_per_s();
+    unwrapRange_ = unwrapRange_m(p, k);
+    depthRange_ = depthRange_m(p, k);
+    const float nan = std::numeric_limits<float>::quiet_NaN();
+    raw_.resize(static_cast<std::size_t>(F_) * p.phase_steps * HW_);
+    phase_.resize(F_ * HW_);
+    amplitude_.resize(F_ * HW_);
+    wrappedDepth_.resize(F_ * HW_);
+    depth_.resize(HW_);
+    if (refs.groundTruthDepth_m) {
+      mpiGt_.assign(HW_, nan);
+      mpiGtPerFrequency_.assign(F_ * HW_, nan);
+    }
+    if (refs.directOnly) mpiDirect_.assign(HW_, nan);
+  }
+
+  void measure() {
+    for (int32_t y = 0; y < H_; ++y) {
+      for (int32_t x = 0; x < W_; ++x) pixel(y, x);
+    }
+  }
+
+  std::vector<SensorOutput> outputs();
+
+ private:
+  void pixel(int32_t y, int32_t x) {
+    const std::size_t px = static_cast<std::size_t>(y) * W_ + x;
+    pixelSignal(volume_, p_.common, y, x, signal_);
+    correlator_.raw(signal_, p_.ambient_e, ideal_);
+    Rng rng(seed_, pixelStream(kCwTofStreamTag, px));
+    noisy_ = ideal_;
+    for (double& v : noisy_) {
+      if (p_.shot_noise) v = static_cast<double>(rng.poisson(std::max(0.0, v)));
+      if (p_.read_noise_e > 0.0) v += rng.normal(0.0, p_.read_noise_e);
+    }
+    for (std::size_t j = 0; j < noisy_.size(); ++j) raw_[j * HW_ + px] = float(noisy_[j]);
+    depth_[px] = static_cast<float>(correlator_.depth(noisy_, phases_, amps_, unwrapRange_));
+    for (int32_t f = 0; f < F_; ++f) {
+      phase_[f * HW_ + px] = static_cast<float>(phases_[f]);
+      amplitude_[f * HW_ + px] = static_cast<float>(amps_[f]);
+      wrappedDepth_[f * HW_ + px] = static_cast<float>(correlator_.wrappedDepth(f, phases_[f]));
+    }
+    if (refs_.groundTruthDepth_m || refs_.directOnly) multipath(y, x, px);
+  }
+
+  /// The multipath errors of the noise-free measurement, each folded into
+  /// its depth's range so that a phase wrap is not counted.
+  void multipath(int32_t y, int32_t x, std::size_t px) {
+    const double clean = correlator_.depth(ideal_, phases_, amps_, unwrapRange_);
+    const double k = volume_.axis().depthPerSecond_m_per_s();
+    if (const Image* gt = refs_.groundTruthDepth_m) {
+      const float truth = gt->at(y, x, 0);
+      if (std::isfinite(truth) && truth > 0.0f) {
+        mpiGt_[px] = static_cast<float>(wrapSigned(clean - truth, depthRange_));
+        for (int32_t f = 0; f < F_; ++f) {
+          const double e = correlator_.wrappedDepth(f, phases_[f]) - truth;
+          mpiGtPerFrequency_[f * HW_ + px] =
+              static_cast<float>(wrapSigned(e, k / p_.frequencies_Hz[f]));
+        }
       }
-      for (std::size_t j = 0; j < noisy.size(); ++j) {
-        raw[j * HW + pixel] = static_cast<float>(noisy[j]);
-      }
-      double amp = 0.0;
-      depth[pixel] = static_cast<float>(correlator.depth(noisy, phases, amp, range));
-      amplitude[pixel] = static_cast<float>(amp);
-      for (int32_t f = 0; f < F; ++f) phase[f * HW + pixel] = static_cast<float>(phases[f]);
-      if (!gt && !direct) continue;
-      // Multipath error of the noise-free measurement.
-      const double clean = correlator.depth(ideal, phases, amp, range);
-      if (gt) {
-        const float truth = gt->at(y, x, 0);
-        if (std::isfinite(truth) && truth > 0.0f) mpiGt[pixel] = static_cast<float>(clean - truth);
-      }
-      if (direct) {
-        pixelSignal(*direct, p.common, y, x, signal);
-        correlator.raw(signal, 0.0, ideal);
-        const double directDepth = correlator.depth(ideal, phases, amp, range);
-        if (amp > 0.0) mpiDirect[pixel] = static_cast<float>(clean - directDepth);
+    }
+    if (refs_.directOnly) {
+      pixelSignal(*refs_.directOnly, p_.common, y, x, signal_);
+      correlator_.raw(signal_, 0.0, ideal_);
+      const double directDepth = correlator_.depth(ideal_, phases_, amps_, unwrapRange_);
+      if (amps_[0] > 0.0) {
+        mpiDirect_[px] = static_cast<float>(wrapSigned(clean - directDepth, depthRange_));
       }
     }
   }
 
+  std::vector<float> plane(const std::vector<float>& planes, int32_t f) const {
+    return {planes.begin() + f * HW_, planes.begin() + (f + 1) * HW_};
+  }
+
+  const TransientVolume& volume_;
+  const CwTofParams& p_;
+  uint64_t seed_;
+  CwTofReferences refs_;
+  Correlator correlator_;
+  int32_t H_, W_, F_;
+  std::size_t HW_;
+  double unwrapRange_ = 0.0, depthRange_ = 0.0;
+  // (F, N, H, W) raw; (F, H, W) per frequency; (H, W) combined.
+  std::vector<float> raw_, phase_, amplitude_, wrappedDepth_, mpiGtPerFrequency_;
+  std::vector<float> depth_, mpiGt_, mpiDirect_;
+  std::vector<double> signal_, ideal_, noisy_, phases_, amps_;  // per-pixel scratch
+};
+
+std::string metres(double m) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.3f m", m);
+  return text;
+}
+
+std::vector<SensorOutput> CwTofRun::outputs() {
+  const int32_t H = H_, W = W_, N = p_.phase_steps;
+  const std::string& cmap = p_.colormap;
   std::vector<SensorOutput> outs;
-  outs.push_back(makeOutput("cwtof_raw", SensorOutput::Kind::Array, {F, N, H, W}, std::move(raw),
+  outs.push_back(makeOutput("cwtof_raw", SensorOutput::Kind::Array, {F_, N, H, W}, std::move(raw_),
                             "photo-electrons",
                             "CW-ToF raw correlation images (frequency, phase step, y, x)"));
-  outs.push_back(makeOutput("cwtof_phase", SensorOutput::Kind::Array, {F, H, W}, std::move(phase),
-                            "rad", "CW-ToF wrapped phase per frequency, [0, 2 pi)"));
-  addImage(outs, "cwtof_depth", H, W, std::move(depth), "m", "CW-ToF depth (unwrapped)",
-           p.colormap);
-  addImage(outs, "cwtof_amplitude", H, W, std::move(amplitude), "photo-electrons",
-           "CW-ToF amplitude at the first frequency", p.colormap);
-  if (gt) {
-    addImage(outs, "cwtof_mpi_error", H, W, std::move(mpiGt), "m",
-             "CW-ToF depth error against the ground truth (noise-free)", p.colormap);
+  outs.push_back(makeOutput("cwtof_phase", SensorOutput::Kind::Array, {F_, H, W}, phase_, "rad",
+                            "CW-ToF wrapped phase per frequency, [0, 2 pi)"));
+  // "unwrapped" only where unwrapping happened: with one frequency the depth
+  // is that frequency's wrapped depth.
+  const std::string depthTitle = F_ >= 2
+                                     ? "CW-ToF depth (unwrapped, " + std::to_string(F_) +
+                                           " frequencies, range " + metres(depthRange_) + ")"
+                                     : "CW-ToF depth at " + frequencyLabel(p_.frequencies_Hz[0]) +
+                                           " (wrapped, range " + metres(depthRange_) + ")";
+  addImage(outs, "cwtof_depth", H, W, std::move(depth_), "m", depthTitle, cmap);
+  addImage(outs, "cwtof_amplitude", H, W, plane(amplitude_, 0), "photo-electrons",
+           "CW-ToF amplitude at the first frequency", cmap);
+  const double k = volume_.axis().depthPerSecond_m_per_s();
+  for (int32_t f = 0; f < F_; ++f) {
+    const std::string label = frequencyLabel(p_.frequencies_Hz[f]);
+    const std::string at = " at " + label;
+    addImage(outs, "cwtof_phase_" + label, H, W, plane(phase_, f), "rad",
+             "CW-ToF wrapped phase" + at + ", [0, 2 pi)", cmap);
+    addImage(outs, "cwtof_amplitude_" + label, H, W, plane(amplitude_, f), "photo-electrons",
+             "CW-ToF amplitude" + at, cmap);
+    addImage(outs, "cwtof_depth_" + label, H, W, plane(wrappedDepth_, f), "m",
+             "CW-ToF wrapped depth" + at + ", range " + metres(k / p_.frequencies_Hz[f]), cmap);
+    if (refs_.groundTruthDepth_m) {
+      addImage(outs, "cwtof_multipath_error_" + label, H, W, plane(mpiGtPerFrequency_, f), "m",
+               "CW-ToF multipath error" + at + " (noise-free, truth wrapped into range)", cmap);
+    }
   }
-  if (direct) {
-    addImage(outs, "cwtof_mpi_error_direct", H, W, std::move(mpiDirect), "m",
-             "CW-ToF depth error against the direct-only depth (noise-free)", p.colormap);
+  if (refs_.groundTruthDepth_m) {
+    addImage(outs, "cwtof_mpi_error", H, W, std::move(mpiGt_), "m",
+             "CW-ToF depth error against the ground truth (noise-free)", cmap);
+  }
+  if (refs_.directOnly) {
+    addImage(outs, "cwtof_mpi_error_direct", H, W, std::move(mpiDirect_), "m",
+             "CW-ToF depth error against the direct-only depth (noise-free)", cmap);
   }
   return outs;
+}
+}  // namespace
+
+std::vector<SensorOutput> runCwTof(const TransientVolume& volume, const CwTofParams& p,
+                                   uint64_t seed, const CwTofReferences& refs) {
+  checkInputs(volume, p, refs);
+  CwTofRun run(volume, p, seed, refs);
+  run.measure();
+  return run.outputs();
 }
 
 }  // namespace tofsim::sensors

@@ -37,4 +37,10 @@ std::vector<SensorOutput> runSensor(const SensorSpec& spec, const SensorInputs& 
   return std::visit([&](const auto& p) { return TypeOf<decltype(p)>::run(p, in); }, spec.params);
 }
 
+std::vector<std::string> sensorWarnings(const SensorSpec& spec, const SensorInputs& in) {
+  TOFSIM_CHECK(in.volume != nullptr);
+  return std::visit([&](const auto& p) { return TypeOf<decltype(p)>::warnings(p, in); },
+                    spec.params);
+}
+
 }  // namespace tofsim::sensors

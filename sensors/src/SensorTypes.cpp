@@ -17,6 +17,10 @@ std::vector<SensorOutput> SensorType<StreakParams>::run(const StreakParams& p,
                                                         const SensorInputs& in) {
   return runStreak(*in.volume, p, in.seed);
 }
+std::vector<std::string> SensorType<StreakParams>::warnings(const StreakParams&,
+                                                            const SensorInputs&) {
+  return {};
+}
 std::uintmax_t SensorType<StreakParams>::outputBytes(const StreakParams& p, int32_t width,
                                                      int32_t height, const TimeAxis& render) {
   const std::uintmax_t bins = resolveBins(p.bins, render).bins;
@@ -31,6 +35,9 @@ double SensorType<StreakParams>::windowLossFraction(const StreakParams& p,
 // --- spad ----------------------------------------------------------------------
 std::vector<SensorOutput> SensorType<SpadParams>::run(const SpadParams& p, const SensorInputs& in) {
   return runSpad(*in.volume, p, in.seed);
+}
+std::vector<std::string> SensorType<SpadParams>::warnings(const SpadParams&, const SensorInputs&) {
+  return {};
 }
 std::uintmax_t SensorType<SpadParams>::outputBytes(const SpadParams& p, int32_t width,
                                                    int32_t height, const TimeAxis& render) {
@@ -48,10 +55,18 @@ std::vector<SensorOutput> SensorType<CwTofParams>::run(const CwTofParams& p,
                                                        const SensorInputs& in) {
   return runCwTof(*in.volume, p, in.seed, CwTofReferences{in.groundTruthDepth_m, in.directOnly});
 }
+std::vector<std::string> SensorType<CwTofParams>::warnings(const CwTofParams& p,
+                                                           const SensorInputs& in) {
+  return cwtofWarnings(p, in.volume->axis(), in.groundTruthDepth_m);
+}
 std::uintmax_t SensorType<CwTofParams>::outputBytes(const CwTofParams& p, int32_t width,
                                                     int32_t height, const TimeAxis&) {
   const auto pixels = static_cast<std::uintmax_t>(width) * static_cast<std::uintmax_t>(height);
-  return p.frequencies_Hz.size() * 4 * pixels * 4 + imageBytes(width, height);
+  // The raw images and the phase array, then four images with their
+  // pictures per frequency (phase, amplitude, depth, multipath error).
+  const std::uintmax_t F = p.frequencies_Hz.size();
+  const auto steps = static_cast<std::uintmax_t>(p.phase_steps);
+  return F * (steps + 1) * pixels * 4 + F * 4 * pixels * (4 + 3) + imageBytes(width, height);
 }
 double SensorType<CwTofParams>::windowLossFraction(const CwTofParams&, const TransientVolume&) {
   return 0.0;

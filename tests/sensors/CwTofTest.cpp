@@ -5,6 +5,7 @@
 
 #include "TestVolumes.h"
 #include "tofsim/sensors/CwTof.h"
+#include "tofsim/util/Error.h"
 #include "tofsim/volume/PhysicalConstants.h"
 
 namespace tofsim::sensors {
@@ -199,6 +200,71 @@ TEST(CwTofTest, RawNoiseIsShotPlusReadAndReproducible) {
   const double mean = s / n, var = (s2 - s * s / n) / (n - 1), ev = expect + 9.0;
   EXPECT_NEAR(mean, expect, 4.0 * std::sqrt(ev / n));
   EXPECT_NEAR(var, ev, 4.0 * std::sqrt(2.0 * ev * ev / n));
+}
+
+// A fronto-parallel plane at 2.2 m (every pixel's only return there) and its
+// ground truth: beyond the 1.5 m unambiguous range of 100 MHz.
+struct PlaneBeyondRange {
+  TransientVolume volume = singleReturn(2.2, 200, 1000.0f);
+  Image truth{1, 1, 1};
+  PlaneBeyondRange() {
+    // The truth the bin's centre stands for (the sensor sees the bin).
+    truth.at(0, 0, 0) = static_cast<float>(volume.axis().depthOf_m(volume.axis().binCenter_s(100)));
+  }
+};
+
+TEST(CwTofTest, OneFrequencyReportsAPhaseWrapAsAmbiguityNotMultipath) {
+  const PlaneBeyondRange plane;
+  const CwTofParams p = noiseFree({100e6});
+  const double range = kC / (2 * 100e6);  // 1.499 m
+  EXPECT_NEAR(depthRange_m(p, kC / 2), range, 1e-9);
+  const auto outs = runCwTof(plane.volume, p, 1, CwTofReferences{&plane.truth, nullptr});
+  const double truth = plane.truth.at(0, 0, 0);
+  EXPECT_NEAR(output(outs, "cwtof_depth").data[0], truth - range, 1e-3);  // the wrapped depth
+  EXPECT_NEAR(output(outs, "cwtof_depth_100MHz").data[0], truth - range, 1e-3);
+  EXPECT_LT(std::fabs(output(outs, "cwtof_mpi_error").data[0]), 1e-3);  // not -1.5 m
+  EXPECT_LT(std::fabs(output(outs, "cwtof_multipath_error_100MHz").data[0]), 1e-3);
+  // Nothing was unwrapped, so no title says so.
+  for (const SensorOutput& o : outs) {
+    EXPECT_EQ(o.description.find("unwrapped"), std::string::npos) << o.name;
+  }
+  const std::vector<std::string> warnings = cwtofWarnings(p, plane.volume.axis(), &plane.truth);
+  ASSERT_EQ(warnings.size(), 1u);
+  EXPECT_NE(warnings[0].find("1.499 m unambiguous range of 100MHz"), std::string::npos)
+      << warnings[0];
+  // Within range, or without a truth, there is nothing to warn about.
+  EXPECT_TRUE(cwtofWarnings(noiseFree({20e6}), plane.volume.axis(), &plane.truth).empty());
+  EXPECT_TRUE(cwtofWarnings(p, plane.volume.axis(), nullptr).empty());
+}
+
+TEST(CwTofTest, TwoFrequenciesGiveTheUnwrappedAndEachWrappedDepth) {
+  const PlaneBeyondRange plane;
+  const CwTofParams p = noiseFree({80e6, 100e6});  // together 7.49 m
+  const auto outs = runCwTof(plane.volume, p, 1, CwTofReferences{&plane.truth, nullptr});
+  const double truth = plane.truth.at(0, 0, 0);
+  EXPECT_NEAR(output(outs, "cwtof_depth").data[0], truth, 1e-3);
+  EXPECT_NE(output(outs, "cwtof_depth", SensorOutput::Kind::ColorMappedImage)
+                .description.find("unwrapped"),
+            std::string::npos);
+  EXPECT_LT(std::fabs(output(outs, "cwtof_mpi_error").data[0]), 1e-3);
+  for (double f : {80e6, 100e6}) {
+    const std::string label = frequencyLabel(f);
+    const double range = kC / (2 * f);
+    const double wrapped = truth - range * std::floor(truth / range);
+    EXPECT_NEAR(output(outs, "cwtof_depth_" + label).data[0], wrapped, 1e-3) << label;
+    EXPECT_NEAR(output(outs, "cwtof_phase_" + label).data[0], 2 * M_PI * wrapped / range, 1e-3);
+    EXPECT_LT(std::fabs(output(outs, "cwtof_multipath_error_" + label).data[0]), 1e-3);
+    EXPECT_GT(output(outs, "cwtof_amplitude_" + label).data[0], 400.0f);
+    output(outs, "cwtof_depth_" + label, SensorOutput::Kind::ColorMappedImage);
+  }
+  EXPECT_EQ(frequencyLabel(80e6), "80MHz");
+  EXPECT_EQ(frequencyLabel(12.5e6), "12.5MHz");
+  EXPECT_TRUE(cwtofWarnings(p, plane.volume.axis(), &plane.truth).empty());
+}
+
+TEST(CwTofTest, FrequenciesWithTheSameOutputNameAreAnInputError) {
+  EXPECT_THROW(runCwTof(singleReturn(1.0, 200, 1.0f), noiseFree({20e6, 20.0000001e6}), 1),
+               InputError);
 }
 
 }  // namespace

@@ -54,6 +54,11 @@ std::vector<std::string> runConfiguredSensors(const config::RunConfig& config,
     inputs.seed = config.render.seed;
     std::vector<sensors::SensorOutput> outputs;
     try {
+      // Warnings go to stderr even when quiet: they say the outputs mislead.
+      for (const std::string& w : sensors::sensorWarnings(spec, inputs)) {
+        std::fprintf(stderr, "tofsim: warning: sensor '%s' (%s): %s\n", spec.name.c_str(),
+                     sensors::sensorTypeName(spec.params), w.c_str());
+      }
       outputs = sensors::runSensor(spec, inputs);
     } catch (const InputError& e) {
       // The sensor library does not know the config; say which entry failed.

@@ -53,18 +53,35 @@ double unwrapDepth_m(const std::vector<double>& phases_rad,
 /// k / gcd(frequencies) capped, k as for unwrapDepth_m).
 double unwrapRange_m(const CwTofParams& params, double depthPerSecond_m_per_s);
 
+/// The range the `cwtof_depth` output spans, m: one frequency's unambiguous
+/// range k / f when there is one (nothing is unwrapped), else unwrapRange_m.
+double depthRange_m(const CwTofParams& params, double depthPerSecond_m_per_s);
+
+/// The stem suffix that names a frequency's outputs: "20MHz", "12.5MHz" (%g of MHz).
+std::string frequencyLabel(double frequency_Hz);
+
 /// Optional inputs for the multipath error outputs.
 struct CwTofReferences {
   const Image* groundTruthDepth_m = nullptr;    ///< (H, W, 1), metres; <= 0 or NaN = unknown
   const TransientVolume* directOnly = nullptr;  ///< the direct component of the same render
 };
 
-/// Outputs: "cwtof_raw" Array (F, N, H, W) photo-electrons; "cwtof_depth" and
-/// "cwtof_amplitude" (first frequency) Images (H, W) plus ColorMappedImages;
-/// "cwtof_phase" Array (F, H, W) rad; with a ground truth, "cwtof_mpi_error"
-/// (noise-free depth - ground truth), with a direct-only volume,
-/// "cwtof_mpi_error_direct" (noise-free depth - direct-only depth), Images (H, W)
-/// in m plus ColorMappedImages.
+/// Warnings for the person running the sensor: one when the ground-truth
+/// depth reaches beyond depthRange_m (the measured depths wrap there). Empty
+/// without a ground truth.
+std::vector<std::string> cwtofWarnings(const CwTofParams& params, const TimeAxis& axis,
+                                       const Image* groundTruthDepth_m);
+
+/// Outputs (sensors/README.md, "Continuous-wave ToF"): "cwtof_raw" Array
+/// (F, N, H, W) photo-electrons; "cwtof_phase" Array (F, H, W) rad;
+/// "cwtof_depth" (unwrapped when F >= 2, else the one frequency's wrapped
+/// depth) and "cwtof_amplitude" (first frequency) Images (H, W); per frequency
+/// f, "cwtof_phase_<f>", "cwtof_amplitude_<f>" and "cwtof_depth_<f>" (wrapped)
+/// Images; with a ground truth, "cwtof_mpi_error" (noise-free depth - ground
+/// truth) and per frequency "cwtof_multipath_error_<f>"; with a direct-only
+/// volume, "cwtof_mpi_error_direct" (noise-free depth - direct-only depth).
+/// Every error is wrapped into (-R/2, R/2] of its depth's range R, so a phase
+/// wrap never reads as multipath. Every Image comes with a ColorMappedImage.
 std::vector<SensorOutput> runCwTof(const TransientVolume& volume, const CwTofParams& params,
                                    uint64_t seed, const CwTofReferences& references = {});
 

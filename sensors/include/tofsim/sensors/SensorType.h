@@ -8,6 +8,7 @@
 
 #include <concepts>
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "tofsim/sensors/CwTof.h"
@@ -30,6 +31,9 @@ concept SensorModel = requires(const P& p, const SensorInputs& in, const Transie
   { SensorType<P>::name } -> std::convertible_to<const char*>;
   /// Runs the model (throws InputError when the spec does not fit the inputs).
   { SensorType<P>::run(p, in) } -> std::same_as<std::vector<SensorOutput>>;
+  /// What the person running it should know about these inputs (e.g. a scene
+  /// deeper than a CW-ToF's unambiguous range); empty when all is well.
+  { SensorType<P>::warnings(p, in) } -> std::same_as<std::vector<std::string>>;
   /// Upper estimate of the bytes its files take for an image and render axis.
   { SensorType<P>::outputBytes(p, width, height, axis) } -> std::same_as<std::uintmax_t>;
   /// Fraction of the light it is given that its instrument window drops.
@@ -40,6 +44,7 @@ template <>
 struct SensorType<StreakParams> {
   static constexpr const char* name = "streak";
   static std::vector<SensorOutput> run(const StreakParams& p, const SensorInputs& in);
+  static std::vector<std::string> warnings(const StreakParams& p, const SensorInputs& in);
   static std::uintmax_t outputBytes(const StreakParams& p, int32_t width, int32_t height,
                                     const TimeAxis& render);
   static double windowLossFraction(const StreakParams& p, const TransientVolume& volume);
@@ -49,6 +54,7 @@ template <>
 struct SensorType<SpadParams> {
   static constexpr const char* name = "spad";
   static std::vector<SensorOutput> run(const SpadParams& p, const SensorInputs& in);
+  static std::vector<std::string> warnings(const SpadParams& p, const SensorInputs& in);
   static std::uintmax_t outputBytes(const SpadParams& p, int32_t width, int32_t height,
                                     const TimeAxis& render);
   static double windowLossFraction(const SpadParams& p, const TransientVolume& volume);
@@ -58,6 +64,7 @@ template <>
 struct SensorType<CwTofParams> {
   static constexpr const char* name = "cwtof";
   static std::vector<SensorOutput> run(const CwTofParams& p, const SensorInputs& in);
+  static std::vector<std::string> warnings(const CwTofParams& p, const SensorInputs& in);
   static std::uintmax_t outputBytes(const CwTofParams& p, int32_t width, int32_t height,
                                     const TimeAxis& render);
   /// CW-ToF integrates every render bin: it has no window to lose light from.
