@@ -9,6 +9,7 @@
 // Each enumeration counts up from 0, so no binding point serves two buffers
 // (or two textures) in any pass.
 
+#include <cstdint>
 #include <string>
 #include <utility>
 #include <vector>
@@ -24,7 +25,7 @@ inline constexpr uint32_t kWorkGroupSize = 64;
 inline constexpr int kChannels = capture::kChannels;
 
 /// Shader storage buffer bindings (TOFSIM_SSBO_...).
-enum StorageBinding : GLuint {
+enum StorageBinding : uint32_t {
   kDirectVolume,    ///< segment's direct light, written by direct_gather.comp
   kIndirectVolume,  ///< segment's indirect light, indirect_gather.comp
   kOutsideAxis,     ///< two floats per pixel: light before / after the axis
@@ -37,7 +38,7 @@ enum StorageBinding : GLuint {
 };
 
 /// Texture units (TOFSIM_UNIT_...).
-enum TextureUnit : GLuint {
+enum TextureUnit : uint32_t {
   kGPosition,      ///< camera G-buffer: world position
   kGNormal,        ///< camera G-buffer: normal
   kGAlbedo,        ///< camera G-buffer: albedo
@@ -46,7 +47,7 @@ enum TextureUnit : GLuint {
 };
 
 /// Vertex attribute locations of gbuffer.vert (TOFSIM_ATTRIB_...).
-enum VertexAttribute : GLuint { kPositionAttribute, kNormalAttribute, kUvAttribute };
+enum VertexAttribute : uint32_t { kPositionAttribute, kNormalAttribute, kUvAttribute };
 
 /// Fragment outputs of gbuffer.frag (TOFSIM_OUT_...); distance.frag writes
 /// kOutPosition's location, its only output.
