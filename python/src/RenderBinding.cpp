@@ -20,6 +20,7 @@
 #include "tofsim/io/Npy.h"
 #include "tofsim/pipeline/AxisReport.h"
 #include "tofsim/pipeline/Capture.h"
+#include "tofsim/pipeline/OutputSink.h"
 #include "tofsim/pipeline/Progress.h"
 #include "tofsim/pipeline/RenderRun.h"
 #include "tofsim/pipeline/RendererFactory.h"
@@ -79,14 +80,7 @@ struct Rendered {
 // As the output stage does for files: a NaN or infinity never reaches the
 // arrays silently; it becomes 0 and is counted.
 std::size_t zeroNonFinite(TransientVolume& volume) {
-  std::size_t count = 0;
-  for (float& v : volume.values()) {
-    if (!std::isfinite(v)) {
-      v = 0.0f;
-      ++count;
-    }
-  }
-  return count;
+  return pipeline::zeroNonFinite(volume.data(), volume.values().size());
 }
 
 Rendered renderInMemory(const config::RunConfig& config, bool quiet) {

@@ -9,8 +9,8 @@ namespace tofsim::pipeline {
 
 namespace {
 constexpr int32_t kChannels = 3;
+}  // namespace
 
-// Replaces NaN and +-inf by 0 in place; returns how many there were.
 std::size_t zeroNonFinite(float* values, std::size_t count) {
   std::size_t rejected = 0;
   for (std::size_t i = 0; i < count; ++i) {
@@ -21,7 +21,6 @@ std::size_t zeroNonFinite(float* values, std::size_t count) {
   }
   return rejected;
 }
-}  // namespace
 
 OutputSink::OutputSink(const std::filesystem::path& directory, const config::OutputConfig& output,
                        int32_t width, int32_t height, const TimeAxis& axis, bool keepInMemory,

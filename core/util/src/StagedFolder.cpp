@@ -155,13 +155,11 @@ bool StagedFolder::commit() {
     throw InputError(FileLoc{folder_.string()}, "",
                      std::string("cannot carry the earlier files into the new set: ") + e.what());
   }
-  bool atomic = false;
   if (siblingStaging_ && exchange(staging_, folder_)) {
-    atomic = true;
     committed_ = true;
     std::error_code ec;
     fs::remove_all(staging_, ec);  // now the earlier set; a leftover is cleaned by the next writer
-    return atomic;
+    return true;
   }
   if (siblingStaging_ && errno != EINVAL && errno != ENOSYS && errno != ENOTSUP && errno != EXDEV &&
       errno != EBUSY) {
@@ -175,7 +173,7 @@ bool StagedFolder::commit() {
                      std::string("cannot replace the folder's contents: ") + e.what());
   }
   committed_ = true;
-  return atomic;
+  return false;
 }
 
 }  // namespace tofsim

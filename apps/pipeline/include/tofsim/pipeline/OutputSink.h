@@ -19,6 +19,10 @@
 
 namespace tofsim::pipeline {
 
+/// Replaces NaN and +-inf by 0 in place; returns how many there were. The one
+/// rule for every output path (files here, arrays in the Python module).
+std::size_t zeroNonFinite(float* values, std::size_t count);
+
 class OutputSink : public capture::SegmentSink {
  public:
   /// keepInMemory: also collect the total volume (for frames and sensors);
