@@ -7,11 +7,11 @@
 
 #include <optional>
 #include <string>
-#include <variant>
 
 #include "Arrays.h"
 #include "Bindings.h"
 #include "tofsim/config/SensorConfig.h"
+#include "tofsim/pipeline/SensorMetadata.h"
 #include "tofsim/sensors/RunSensor.h"
 
 namespace py = pybind11;
@@ -35,51 +35,11 @@ sensors::SensorSpec parseSensor(const std::string& json) {
   }
 }
 
-const char* kindName(sensors::SensorOutput::Kind kind) {
-  switch (kind) {
-    case sensors::SensorOutput::Kind::Array:
-      return "array";
-    case sensors::SensorOutput::Kind::Image:
-      return "image";
-    case sensors::SensorOutput::Kind::ColorMappedImage:
-      return "color_mapped_image";
-    case sensors::SensorOutput::Kind::HistogramPlot:
-      return "histogram_plot";
-  }
-  return "array";
-}
-
-py::dict metadataOf(const sensors::SensorOutput& o) {
-  py::dict d;
-  d["kind"] = kindName(o.kind);
-  d["unit"] = o.unit;
-  d["description"] = o.description;
-  if (o.kind == sensors::SensorOutput::Kind::HistogramPlot) {
-    d["labels"] = o.labels;
-    d["axis_start"] = o.axis_start;
-    d["axis_step"] = o.axis_step;
-    d["axis_unit"] = o.axis_unit;
-  }
-  return d;
-}
-
-// The instrument's time axis of the models that bin in time.
-py::object instrumentAxis(const sensors::SensorSpec& spec, const TimeAxis& render) {
-  const sensors::InstrumentBins* bins = nullptr;
-  if (const auto* s = std::get_if<sensors::SpadParams>(&spec.params)) bins = &s->bins;
-  if (const auto* s = std::get_if<sensors::StreakParams>(&spec.params)) bins = &s->bins;
-  if (!bins) return py::none();
-  const TimeAxis axis = sensors::resolveBins(*bins, render);
-  py::dict d;
-  d["start_s"] = axis.start_s;
-  d["bin_width_s"] = axis.bin_width_s;
-  d["bins"] = axis.bins;
-  return d;
-}
-
-// (outputs: name -> array, metadata: name -> dict, sensor: dict). A colour-
-// mapped image repeats the Image of the same name (it is how the CLI draws
-// it), so only its colour map is kept, in the Image's metadata.
+// (outputs: name -> array, metadata: name -> JSON text, warnings). The
+// metadata is the CLI's sensors/<name>/<output>.json without its `files`. A
+// colour-mapped image repeats the Image of the same name (it is how the CLI
+// draws it), so it adds no array; a plot with no data of its own (SPAD
+// histograms) adds its plotted numbers.
 py::tuple sense(const FloatArray& transient, double start_s, double binWidth_s,
                 const std::string& sensorJson, uint64_t seed,
                 const std::optional<FloatArray>& direct, const std::optional<FloatArray>& depth) {
@@ -104,26 +64,25 @@ py::tuple sense(const FloatArray& transient, double start_s, double binWidth_s,
   inputs.groundTruthDepth_m = depthImage ? &*depthImage : nullptr;
   inputs.seed = seed;
   std::vector<sensors::SensorOutput> outputs;
+  pipeline::SensorRunInfo run{&spec, axis, seed, {}};
   {
     py::gil_scoped_release released;
+    run.warnings = sensors::sensorWarnings(spec, inputs);
     outputs = sensors::runSensor(spec, inputs);
   }
-  py::dict arrays, metadata;
+  py::dict metadata;
+  for (const pipeline::NamedMetadata& m : pipeline::sensorMetadata(run, outputs, false)) {
+    metadata[py::str(m.name)] = m.json;
+  }
+  py::dict arrays;
   for (sensors::SensorOutput& o : outputs) {
     if (o.kind == sensors::SensorOutput::Kind::ColorMappedImage && arrays.contains(o.name)) {
-      metadata[py::str(o.name)]["colormap"] = o.colormap;
       continue;
     }
-    metadata[py::str(o.name)] = metadataOf(o);
     const std::vector<py::ssize_t> shape(o.shape.begin(), o.shape.end());
     arrays[py::str(o.name)] = ownedArray(std::move(o.data), shape);
   }
-  py::dict sensor;
-  sensor["name"] = spec.name;
-  sensor["type"] = sensors::sensorTypeName(spec.params);
-  sensor["seed"] = seed;
-  sensor["time"] = instrumentAxis(spec, axis);
-  return py::make_tuple(arrays, metadata, sensor);
+  return py::make_tuple(arrays, metadata, run.warnings);
 }
 
 }  // namespace

@@ -78,7 +78,7 @@ def test_outputs_come_with_metadata():
             "spad_histograms"} <= set(result)
     assert result.metadata["spad_counts"]["unit"] == "counts"
     assert result.metadata["spad_depth_peak"]["unit"] == "m"
-    assert result.metadata["spad_depth_peak"]["colormap"] == "turbo"
+    assert result.metadata["spad_depth_peak"]["picture"]["colormap"] == "turbo"
     assert result.sensor["type"] == "spad"
     assert result.sensor["time"] == {"start_s": 0.0, "bin_width_s": 100e-12, "bins": 64}
     # The return is centred on bin 20 of 100 ps (20.5 bins of round trip);
@@ -86,6 +86,42 @@ def test_outputs_come_with_metadata():
     depth = result["spad_depth_coates"]
     assert depth.shape == (2, 2)
     np.testing.assert_allclose(depth, 299792458 * 20.5 * 100e-12 / 2, atol=0.1 * 0.015)
+
+
+def test_metadata_says_each_arrays_axes_time_and_parameters():
+    result = spad_counts(synthetic_flux(), cycles=1e5, seed=5)
+    for name, array in result.items():
+        meta = result.metadata[name]
+        assert tuple(meta["shape"]) == array.shape, name
+        assert len(meta["axes"]) == array.ndim, name
+        assert meta["sensor"]["seed"] == 5
+    counts = result.metadata["spad_counts"]
+    assert counts["axes"] == ["y", "x", "t"]
+    time = counts["time"]
+    assert (time["start_s"], time["bin_width_s"], time["bins"]) == (0.0, 100e-12, 64)
+    assert time["bin_width_m"] == pytest.approx(299792458 * 100e-12)
+    assert counts["sensor"]["parameters"]["cycles"] == 100000
+    assert counts["sensor"]["parameters"]["pde"] == 1.0
+    assert "files" not in counts  # the module writes none
+    assert result.metadata["spad_histograms"]["axes"] == ["pixel", "t"]
+
+
+def test_cwtof_warns_when_the_scene_is_deeper_than_its_range():
+    # A return at 2.2 m seen at 100 MHz (1.5 m unambiguous range).
+    axis = {"start_s": 0.0, "bin_width_s": 10e-12, "bins": 2000}
+    transient = np.zeros((1, 2, 2000, 1), np.float32)
+    transient[:, :, int(2 * 2.2 / 299792458 / 10e-12), 0] = 1e4
+    depth = np.full((1, 2), 2.2, np.float32)
+    sensor = {"type": "cwtof", "frequencies": ["100 MHz"], "shot_noise": False}
+    with pytest.warns(tofsim.SensorWarning, match="unambiguous range"):
+        result = tofsim.sense(transient, axis, sensor, depth=depth)
+    assert len(result.warnings) == 1
+    assert result.metadata["cwtof_depth"]["sensor"]["warnings"] == result.warnings
+    meta = result.metadata["cwtof_depth_100MHz"]
+    assert meta["attributes"]["frequency_Hz"] == 100e6
+    assert meta["attributes"]["range_m"] == pytest.approx(299792458 / 2 / 100e6)
+    assert result.metadata["cwtof_mpi_error"]["signed"]
+    assert result.metadata["cwtof_raw"]["axes"] == ["frequency", "phase_step", "y", "x"]
 
 
 def test_cwtof_on_a_single_return_measures_its_depth():

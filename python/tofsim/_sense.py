@@ -1,5 +1,8 @@
 """tofsim.sense: one sensor model on any transient array."""
 
+import json
+import warnings
+
 from . import _tofsim
 from ._config import to_json
 
@@ -7,16 +10,43 @@ from ._config import to_json
 class SensorResult(dict):
     """Output name -> float32 NumPy array (spad_counts, cwtof_depth, ...), with
 
-    metadata: output name -> {kind, unit, description, colormap, and for
-      histogram plots labels, axis_start, axis_step, axis_unit}
-    sensor: {name, type, seed, time}; time is the instrument's axis
-      {start_s, bin_width_s, bins} for streak and SPAD, else None
+    metadata: output name -> dict, the same as the CLI's
+      sensors/<sensor>/<output>.json (less its "files"): shape, axes (names
+      of the dimensions: y, x, t, frequency, phase_step, pixel), axes_doc,
+      unit, description, signed, attributes (e.g. frequency_Hz, range_m),
+      time (the instrument's axis: start_s, bin_width_s, bins, end_s and the
+      same in metres) where an axis is t, picture (colormap) where the CLI
+      draws one, and sensor (name, type, seed, parameters in SI units,
+      render_time, warnings)
+    sensor: {name, type, seed, parameters, render_time, warnings, time}; time
+      is the instrument's axis {start_s, bin_width_s, bins} for streak and
+      SPAD, else None
+    warnings: what the model says about these inputs (e.g. a scene deeper
+      than a CW-ToF's unambiguous range); each is also issued as a
+      SensorWarning through Python's warnings module
     """
 
-    def __init__(self, arrays, metadata, sensor):
+    def __init__(self, arrays, metadata, sensor, warnings):
         super().__init__(arrays)
         self.metadata = metadata
         self.sensor = sensor
+        self.warnings = warnings
+
+
+class SensorWarning(UserWarning):
+    """A sensor's outputs may mislead for these inputs (see the message)."""
+
+
+def _sensor_info(metadata):
+    first = next(iter(metadata.values()))
+    sensor = dict(first["sensor"])
+    sensor["time"] = None
+    for meta in metadata.values():
+        if "time" in meta:
+            t = meta["time"]
+            sensor["time"] = {k: t[k] for k in ("start_s", "bin_width_s", "bins")}
+            break
+    return sensor
 
 
 def _axis_of(time):
@@ -37,13 +67,19 @@ def sense(transient, time, sensor, seed=0, direct=None, depth=None):
     direct: optional (H, W, T, C) direct component; depth: optional (H, W)
       ground-truth depth in metres (both feed CW-ToF's multipath error).
 
-    Raises ConfigError naming the sensor key for a bad parameter.
+    Raises ConfigError naming the sensor key for a bad parameter; issues a
+    SensorWarning for each of the model's warnings (also in result.warnings).
     """
     start_s, bin_width_s, bins = _axis_of(time)
     shape = getattr(transient, "shape", None)
     if shape is not None and len(shape) == 4 and shape[2] != bins:
         raise ValueError(f"transient has {shape[2]} time bins but time has bins={bins}")
-    arrays, metadata, info = _tofsim._sense(
+    arrays, texts, messages = _tofsim._sense(
         transient, start_s, bin_width_s, to_json(sensor), int(seed), direct, depth
     )
-    return SensorResult(arrays, metadata, info)
+    metadata = {name: json.loads(text) for name, text in texts.items()}
+    info = _sensor_info(metadata)
+    for message in messages:
+        warnings.warn(f"sensor '{info['name']}' ({info['type']}): {message}", SensorWarning,
+                      stacklevel=2)
+    return SensorResult(arrays, metadata, info, list(messages))

@@ -74,23 +74,34 @@ struct Correlator {
 double wrapSigned(double e, double range) { return e - range * std::round(e / range); }
 
 SensorOutput makeOutput(const std::string& name, SensorOutput::Kind kind,
-                        std::vector<int64_t> shape, std::vector<float> data,
-                        const std::string& unit, const std::string& description) {
+                        std::vector<int64_t> shape, std::vector<std::string> axes,
+                        std::vector<float> data, const std::string& unit,
+                        const std::string& description) {
   SensorOutput o;
   o.name = name;
   o.kind = kind;
   o.shape = std::move(shape);
+  o.axes = std::move(axes);
   o.data = std::move(data);
   o.unit = unit;
   o.description = description;
   return o;
 }
 
+/// What an image holds beyond its values: the frequency and depth range it
+/// belongs to, and whether it is a signed error.
+struct ImageMeaning {
+  std::vector<std::pair<std::string, double>> attributes;
+  bool signed_values = false;
+};
+
 void addImage(std::vector<SensorOutput>& outs, const std::string& name, int32_t H, int32_t W,
               std::vector<float> data, const std::string& unit, const std::string& description,
-              const std::string& colormap) {
-  outs.push_back(
-      makeOutput(name, SensorOutput::Kind::Image, {H, W}, std::move(data), unit, description));
+              const std::string& colormap, const ImageMeaning& meaning = {}) {
+  outs.push_back(makeOutput(name, SensorOutput::Kind::Image, {H, W}, {"y", "x"}, std::move(data),
+                            unit, description));
+  outs.back().attributes = meaning.attributes;
+  outs.back().signed_values = meaning.signed_values;
   SensorOutput png = outs.back();
   png.kind = SensorOutput::Kind::ColorMappedImage;
   png.colormap = colormap;
@@ -236,10 +247,12 @@ std::vector<SensorOutput> CwTofRun::outputs() {
   const int32_t H = H_, W = W_, N = p_.phase_steps;
   const std::string& cmap = p_.colormap;
   std::vector<SensorOutput> outs;
-  outs.push_back(makeOutput("cwtof_raw", SensorOutput::Kind::Array, {F_, N, H, W}, std::move(raw_),
+  outs.push_back(makeOutput("cwtof_raw", SensorOutput::Kind::Array, {F_, N, H, W},
+                            {"frequency", "phase_step", "y", "x"}, std::move(raw_),
                             "photo-electrons",
                             "CW-ToF raw correlation images (frequency, phase step, y, x)"));
-  outs.push_back(makeOutput("cwtof_phase", SensorOutput::Kind::Array, {F_, H, W}, phase_, "rad",
+  outs.push_back(makeOutput("cwtof_phase", SensorOutput::Kind::Array, {F_, H, W},
+                            {"frequency", "y", "x"}, phase_, "rad",
                             "CW-ToF wrapped phase per frequency, [0, 2 pi)"));
   // "unwrapped" only where unwrapping happened: with one frequency the depth
   // is that frequency's wrapped depth.
@@ -248,31 +261,37 @@ std::vector<SensorOutput> CwTofRun::outputs() {
                                            " frequencies, range " + metres(depthRange_) + ")"
                                      : "CW-ToF depth at " + frequencyLabel(p_.frequencies_Hz[0]) +
                                            " (wrapped, range " + metres(depthRange_) + ")";
-  addImage(outs, "cwtof_depth", H, W, std::move(depth_), "m", depthTitle, cmap);
+  const ImageMeaning combined{{{"range_m", depthRange_}}, false};
+  const ImageMeaning combinedError{{{"range_m", depthRange_}}, true};
+  addImage(outs, "cwtof_depth", H, W, std::move(depth_), "m", depthTitle, cmap, combined);
   addImage(outs, "cwtof_amplitude", H, W, plane(amplitude_, 0), "photo-electrons",
-           "CW-ToF amplitude at the first frequency", cmap);
+           "CW-ToF amplitude at the first frequency", cmap,
+           {{{"frequency_Hz", p_.frequencies_Hz[0]}}});
   const double k = volume_.axis().depthPerSecond_m_per_s();
   for (int32_t f = 0; f < F_; ++f) {
     const std::string label = frequencyLabel(p_.frequencies_Hz[f]);
     const std::string at = " at " + label;
+    const double fHz = p_.frequencies_Hz[f], range = k / fHz;
+    const ImageMeaning wrapped{{{"frequency_Hz", fHz}, {"range_m", range}}, false};
     addImage(outs, "cwtof_phase_" + label, H, W, plane(phase_, f), "rad",
-             "CW-ToF wrapped phase" + at + ", [0, 2 pi)", cmap);
+             "CW-ToF wrapped phase" + at + ", [0, 2 pi)", cmap, wrapped);
     addImage(outs, "cwtof_amplitude_" + label, H, W, plane(amplitude_, f), "photo-electrons",
-             "CW-ToF amplitude" + at, cmap);
+             "CW-ToF amplitude" + at, cmap, wrapped);
     addImage(outs, "cwtof_depth_" + label, H, W, plane(wrappedDepth_, f), "m",
-             "CW-ToF wrapped depth" + at + ", range " + metres(k / p_.frequencies_Hz[f]), cmap);
+             "CW-ToF wrapped depth" + at + ", range " + metres(range), cmap, wrapped);
     if (refs_.groundTruthDepth_m) {
       addImage(outs, "cwtof_multipath_error_" + label, H, W, plane(mpiGtPerFrequency_, f), "m",
-               "CW-ToF multipath error" + at + " (noise-free, truth wrapped into range)", cmap);
+               "CW-ToF multipath error" + at + " (noise-free, truth wrapped into range)", cmap,
+               {wrapped.attributes, true});
     }
   }
   if (refs_.groundTruthDepth_m) {
     addImage(outs, "cwtof_mpi_error", H, W, std::move(mpiGt_), "m",
-             "CW-ToF depth error against the ground truth (noise-free)", cmap);
+             "CW-ToF depth error against the ground truth (noise-free)", cmap, combinedError);
   }
   if (refs_.directOnly) {
     addImage(outs, "cwtof_mpi_error_direct", H, W, std::move(mpiDirect_), "m",
-             "CW-ToF depth error against the direct-only depth (noise-free)", cmap);
+             "CW-ToF depth error against the direct-only depth (noise-free)", cmap, combinedError);
   }
   return outs;
 }

@@ -36,6 +36,8 @@ SensorOutput histogramPlot(const SensorOutput& counts,
   plot.name = "spad_histograms";
   plot.kind = SensorOutput::Kind::HistogramPlot;
   plot.shape = {static_cast<int64_t>(chosen.size()), K};
+  plot.axes = {"pixel", "t"};
+  plot.time = axis;
   plot.unit = "counts";
   plot.description = "SPAD histograms of selected pixels";
   plot.axis_start = axis.start_s * 1e9;

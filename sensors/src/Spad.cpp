@@ -48,6 +48,7 @@ SensorOutput image(const std::string& name, int32_t H, int32_t W, std::vector<fl
   o.name = name;
   o.kind = SensorOutput::Kind::Image;
   o.shape = {H, W};
+  o.axes = {"y", "x"};
   o.data = std::move(data);
   o.unit = unit;
   o.description = description;
@@ -75,6 +76,8 @@ std::vector<SensorOutput> runSpad(const TransientVolume& volume, const SpadParam
   counts.name = "spad_counts";
   counts.kind = SensorOutput::Kind::Array;
   counts.shape = {H, W, K};
+  counts.axes = {"y", "x", "t"};
+  counts.time = axis;
   counts.unit = "counts";
   counts.description = "SPAD detections per TDC bin over " + std::to_string(p.cycles) +
                        " laser cycles (" +

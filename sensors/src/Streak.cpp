@@ -59,6 +59,9 @@ std::vector<SensorOutput> runStreak(const TransientVolume& volume, const StreakP
     image.name = streakRowName(y);
     image.kind = SensorOutput::Kind::Image;
     image.shape = {T, W};
+    image.axes = {"t", "x"};
+    image.time = axis;
+    image.attributes = {{"row", y}};
     image.unit = "ADU";
     image.description = "streak image of row " + std::to_string(y) + " (rows: time from " +
                         std::to_string(axis.start_s * 1e9) + " ns, step " +

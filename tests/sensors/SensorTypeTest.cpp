@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <set>
 #include <string>
 
@@ -33,10 +34,46 @@ void expectRunsAsItsType(const TransientVolume& volume) {
   in.seed = 1;
   const std::vector<SensorOutput> outs = runSensor(spec, in);
   ASSERT_FALSE(outs.empty());
-  // Every model prefixes its outputs with its type name.
+  // Every model prefixes its outputs with its type name, and says what each
+  // dimension is: one axis name per dimension, a time axis exactly where one
+  // of them is time, and that axis the length of its dimension.
   for (const SensorOutput& o : outs) {
     EXPECT_EQ(o.name.rfind(sensorTypeName(spec.params), 0), 0u) << o.name;
+    ASSERT_EQ(o.axes.size(), o.shape.size()) << o.name;
+    const auto t = std::find(o.axes.begin(), o.axes.end(), "t");
+    ASSERT_EQ(o.time.has_value(), t != o.axes.end()) << o.name;
+    if (o.time) {
+      EXPECT_EQ(o.shape[t - o.axes.begin()], o.time->bins) << o.name;
+    }
+    if (o.kind == SensorOutput::Kind::Image || o.kind == SensorOutput::Kind::ColorMappedImage) {
+      // Images are (y, x), a streak's (t, x): EXR rows and columns.
+      EXPECT_EQ(o.axes.back(), "x") << o.name;
+    }
   }
+}
+
+TEST(SensorTypeTest, CwTofOutputsSayTheirFrequencyRangeAndSign) {
+  const TransientVolume v = test::makeVolume(4, 3, 0.0, 10e-12, 16);
+  Image truth(4, 3, 1);
+  for (float& d : truth.data) d = 1.0f;
+  CwTofParams p;
+  p.frequencies_Hz = {20e6, 100e6};
+  const std::vector<SensorOutput> outs = runCwTof(v, p, 1, CwTofReferences{&truth, nullptr});
+  const auto attribute = [](const SensorOutput& o, const std::string& key) {
+    for (const auto& [k, value] : o.attributes) {
+      if (k == key) return value;
+    }
+    return -1.0;
+  };
+  const double k = v.axis().depthPerSecond_m_per_s();
+  const SensorOutput& d100 = test::output(outs, "cwtof_depth_100MHz");
+  EXPECT_DOUBLE_EQ(attribute(d100, "frequency_Hz"), 100e6);
+  EXPECT_DOUBLE_EQ(attribute(d100, "range_m"), k / 100e6);
+  EXPECT_FALSE(d100.signed_values);
+  EXPECT_TRUE(test::output(outs, "cwtof_mpi_error").signed_values);
+  EXPECT_TRUE(test::output(outs, "cwtof_multipath_error_20MHz").signed_values);
+  EXPECT_EQ(test::array(outs, "cwtof_raw").axes,
+            (std::vector<std::string>{"frequency", "phase_step", "y", "x"}));
 }
 
 TEST(SensorTypeTest, NamesAreUniqueAndDispatchReachesEachModel) {

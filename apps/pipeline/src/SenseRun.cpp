@@ -53,9 +53,11 @@ std::vector<std::string> runConfiguredSensors(const config::RunConfig& config,
     inputs.groundTruthDepth_m = volumes.depth_m;
     inputs.seed = config.render.seed;
     std::vector<sensors::SensorOutput> outputs;
+    SensorRunInfo run{&spec, volumes.volume->axis(), inputs.seed, {}};
     try {
       // Warnings go to stderr even when quiet: they say the outputs mislead.
-      for (const std::string& w : sensors::sensorWarnings(spec, inputs)) {
+      run.warnings = sensors::sensorWarnings(spec, inputs);
+      for (const std::string& w : run.warnings) {
         std::fprintf(stderr, "tofsim: warning: sensor '%s' (%s): %s\n", spec.name.c_str(),
                      sensors::sensorTypeName(spec.params), w.c_str());
       }
@@ -67,7 +69,7 @@ std::vector<std::string> runConfiguredSensors(const config::RunConfig& config,
           "sensor '" + spec.name + "' (" + sensors::sensorTypeName(spec.params) + "): " + e.what());
     }
     const std::filesystem::path relative = std::filesystem::path("sensors") / spec.name;
-    for (const std::string& f : writeSensorOutputs(outputDirectory / relative, outputs)) {
+    for (const std::string& f : writeSensorOutputs(outputDirectory / relative, outputs, run)) {
       files.push_back((relative / f).string());
     }
     char line[160];

@@ -4,6 +4,7 @@
 #include "tofsim/imaging/Pictures.h"
 #include "tofsim/io/Exr.h"
 #include "tofsim/io/Npy.h"
+#include "tofsim/util/AtomicFile.h"
 #include "tofsim/util/Error.h"
 
 namespace tofsim::pipeline {
@@ -56,34 +57,36 @@ imaging::LinePlot asPlot(const SensorOutput& o) {
 }  // namespace
 
 std::vector<std::string> writeSensorOutputs(const std::filesystem::path& directory,
-                                            const std::vector<SensorOutput>& outputs) {
+                                            const std::vector<SensorOutput>& outputs,
+                                            const SensorRunInfo& run) {
   std::filesystem::create_directories(directory);
   std::vector<std::string> files;
   for (const SensorOutput& o : outputs) {
     TOFSIM_CHECK_MSG(static_cast<int64_t>(o.data.size()) == o.elementCount(), o.name);
+    files.push_back(sensorFileName(o));
+    const std::filesystem::path path = directory / files.back();
     switch (o.kind) {
       case SensorOutput::Kind::Array: {
         const io::NpyShape shape(o.shape.begin(), o.shape.end());
-        files.push_back(o.name + ".npy");
-        io::writeNpy(directory / files.back(), shape, o.data.data());
+        io::writeNpy(path, shape, o.data.data());
         break;
       }
       case SensorOutput::Kind::Image: {
         const Image image = asImage(o);
-        files.push_back(o.name + ".exr");
-        io::writeExr(directory / files.back(), image, channelNames(image.channels));
+        io::writeExr(path, image, channelNames(image.channels));
         break;
       }
       case SensorOutput::Kind::ColorMappedImage:
-        files.push_back(o.name + ".png");
-        imaging::writeColormappedPng(directory / files.back(), asImage(o),
-                                     withUnit(o.description, o.unit), o.colormap);
+        imaging::writeColormappedPng(path, asImage(o), withUnit(o.description, o.unit), o.colormap);
         break;
       case SensorOutput::Kind::HistogramPlot:
-        files.push_back(o.name + ".png");
-        imaging::writeLinePlotPng(directory / files.back(), asPlot(o));
+        imaging::writeLinePlotPng(path, asPlot(o));
         break;
     }
+  }
+  for (const NamedMetadata& m : sensorMetadata(run, outputs, true)) {
+    files.push_back(m.name + ".json");
+    writeFileAtomically(directory / files.back(), m.json);
   }
   return files;
 }

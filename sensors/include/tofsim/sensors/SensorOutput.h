@@ -4,8 +4,12 @@
 // kind (see sensors/README.md, "Outputs").
 
 #include <cstdint>
+#include <optional>
 #include <string>
+#include <utility>
 #include <vector>
+
+#include "tofsim/volume/TimeAxis.h"
 
 namespace tofsim::sensors {
 
@@ -23,6 +27,21 @@ struct SensorOutput {
   std::vector<float> data;     ///< product(shape) values
   std::string unit;            ///< unit of the values, e.g. "m", "counts", "photo-electrons"
   std::string description;     ///< one line, usable as a plot title or colour bar label
+
+  // What the numbers mean, for the metadata written beside each file
+  // (sensors/README.md, "Output metadata").
+  /// One name per dimension of `shape`: "y" (image row, 0 = top), "x" (image
+  /// column, 0 = left), "t" (a bin of `time`), "frequency" (index into the
+  /// model's frequencies), "phase_step" (reference phase 2 pi k / N), "pixel"
+  /// (index into `labels`).
+  std::vector<std::string> axes;
+  /// The instrument's time axis, when one of `axes` is "t".
+  std::optional<TimeAxis> time;
+  /// Named numbers that say what the values are, in SI units with the unit in
+  /// the name: {"frequency_Hz", 2e7}, {"range_m", 7.49}, {"row", 12}.
+  std::vector<std::pair<std::string, double>> attributes;
+  /// Signed values centred on 0 (errors): pictures use a diverging colour map.
+  bool signed_values = false;
 
   // ColorMappedImage and HistogramPlot only.
   std::string colormap;             ///< "viridis", "inferno", "turbo", ...

@@ -1,20 +1,22 @@
 #pragma once
 // Writes what a sensor model produced, each output by its kind
 // (sensors/README.md, "Outputs"): Array -> <name>.npy, Image -> <name>.exr,
-// ColorMappedImage and HistogramPlot -> <name>.png. Every file is written
-// atomically.
+// ColorMappedImage and HistogramPlot -> <name>.png; and for every name its
+// metadata, <name>.json (SensorMetadata.h). Every file is written atomically.
 
 #include <filesystem>
 #include <string>
 #include <vector>
 
+#include "tofsim/pipeline/SensorMetadata.h"
 #include "tofsim/sensors/SensorOutput.h"
 
 namespace tofsim::pipeline {
 
-/// Creates `directory` and writes every output into it. Returns the file
-/// names written, in output order.
+/// Creates `directory` and writes every output into it, then the metadata of
+/// each name. Returns the file names written, in that order.
 std::vector<std::string> writeSensorOutputs(const std::filesystem::path& directory,
-                                            const std::vector<sensors::SensorOutput>& outputs);
+                                            const std::vector<sensors::SensorOutput>& outputs,
+                                            const SensorRunInfo& run);
 
 }  // namespace tofsim::pipeline

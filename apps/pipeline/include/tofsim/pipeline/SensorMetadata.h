@@ -1,0 +1,45 @@
+#pragma once
+// The JSON that says how to read a sensor's outputs without guessing
+// (sensors/README.md, "Output metadata"): per output name, the array's shape,
+// dtype and axis names, the unit of its values, the instrument's time axis
+// (start, bin width, bins; in seconds and metres), what the model was given
+// (parameters in SI units, seed, the render's axis) and the warnings of the
+// run. Written as sensors/<sensor>/<output>.json by the CLI and returned with
+// each array by the Python module's tofsim.sense, the same text for both.
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "tofsim/sensors/SensorOutput.h"
+#include "tofsim/sensors/SensorSpec.h"
+#include "tofsim/volume/TimeAxis.h"
+
+namespace tofsim::pipeline {
+
+/// What one sensor run was: the spec, the volume's time axis, the seed and
+/// what sensorWarnings said.
+struct SensorRunInfo {
+  const sensors::SensorSpec* spec = nullptr;
+  TimeAxis render;
+  uint64_t seed = 0;
+  std::vector<std::string> warnings;
+};
+
+/// One document per output name, in output order: an Image and the
+/// ColorMappedImage drawn from it share one. With `files`, each lists the
+/// files written for that name (sensorFileName); the Python module, which
+/// writes none, passes false.
+struct NamedMetadata {
+  std::string name;
+  std::string json;  ///< pretty-printed, ends in a newline
+};
+std::vector<NamedMetadata> sensorMetadata(const SensorRunInfo& run,
+                                          const std::vector<sensors::SensorOutput>& outputs,
+                                          bool files);
+
+/// The file an output is written to: <name>.npy (Array), .exr (Image) or
+/// .png (ColorMappedImage, HistogramPlot).
+std::string sensorFileName(const sensors::SensorOutput& output);
+
+}  // namespace tofsim::pipeline

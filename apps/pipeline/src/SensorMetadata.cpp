@@ -1,0 +1,134 @@
+#include "tofsim/pipeline/SensorMetadata.h"
+
+#include <nlohmann/json.hpp>
+
+#include "SensorParametersJson.h"
+#include "tofsim/pipeline/Version.h"
+#include "tofsim/sensors/RunSensor.h"
+#include "tofsim/util/Error.h"
+
+namespace tofsim::pipeline {
+
+namespace {
+using json = nlohmann::ordered_json;
+using sensors::SensorOutput;
+
+const char* kindName(SensorOutput::Kind kind) {
+  switch (kind) {
+    case SensorOutput::Kind::Array:
+      return "array";
+    case SensorOutput::Kind::Image:
+      return "image";
+    case SensorOutput::Kind::ColorMappedImage:
+      return "color_mapped_image";
+    case SensorOutput::Kind::HistogramPlot:
+      return "histogram_plot";
+  }
+  return "array";
+}
+
+bool isPicture(const SensorOutput& o) {
+  return o.kind == SensorOutput::Kind::ColorMappedImage ||
+         o.kind == SensorOutput::Kind::HistogramPlot;
+}
+
+std::string axisDoc(const std::string& axis) {
+  if (axis == "y") return "image row, 0 = top";
+  if (axis == "x") return "image column, 0 = left";
+  if (axis == "t") return "time bin of `time` (see time.bin_doc)";
+  if (axis == "frequency") return "index into sensor.parameters.frequencies_Hz";
+  if (axis == "phase_step")
+    return "phase step k, reference phase 2 pi k / sensor.parameters.phase_steps";
+  if (axis == "pixel") return "index into `labels` (the pixel each series shows)";
+  TOFSIM_CHECK_MSG(false, "undocumented sensor output axis " + axis);
+  return "";
+}
+
+json sensorJson(const SensorRunInfo& run) {
+  return {{"name", run.spec->name},
+          {"type", sensors::sensorTypeName(run.spec->params)},
+          {"seed", run.seed},
+          {"parameters", sensorParametersJson(run.spec->params, run.render)},
+          {"render_time", timeAxisJson(run.render)},
+          {"warnings", run.warnings}};
+}
+
+// The numbers' description: from the data output, or the picture when the
+// name has no data (a histogram plot).
+json describe(const SensorOutput& o) {
+  TOFSIM_CHECK_MSG(o.axes.size() == o.shape.size(), o.name + ": one axis name per dimension");
+  json j;
+  j["kind"] = kindName(o.kind);
+  j["dtype"] = "float32";
+  j["shape"] = o.shape;
+  j["axes"] = o.axes;
+  json docs = json::object();
+  for (const std::string& a : o.axes) docs[a] = axisDoc(a);
+  j["axes_doc"] = docs;
+  j["order"] = "C (row-major): the last axis varies fastest";
+  j["unit"] = o.unit;
+  j["description"] = o.description;
+  j["signed"] = o.signed_values;
+  j["nan_doc"] = "NaN where the value is undefined (no detection, no ground truth)";
+  if (o.time) j["time"] = timeAxisJson(*o.time);
+  json attributes = json::object();
+  for (const auto& [key, value] : o.attributes) attributes[key] = value;
+  j["attributes"] = attributes;
+  if (o.kind == SensorOutput::Kind::Image) {
+    j["exr_channels"] = o.shape.size() == 2 ? json{"Y"} : json{};
+    j["exr_doc"] = "EXR rows are the first axis, columns the second";
+  }
+  if (!o.labels.empty()) j["labels"] = o.labels;
+  return j;
+}
+
+json pictureJson(const SensorOutput& o) {
+  json j = {{"kind", kindName(o.kind)}};
+  if (!o.colormap.empty()) j["colormap"] = o.colormap;
+  return j;
+}
+}  // namespace
+
+std::string sensorFileName(const SensorOutput& o) {
+  switch (o.kind) {
+    case SensorOutput::Kind::Array:
+      return o.name + ".npy";
+    case SensorOutput::Kind::Image:
+      return o.name + ".exr";
+    case SensorOutput::Kind::ColorMappedImage:
+    case SensorOutput::Kind::HistogramPlot:
+      return o.name + ".png";
+  }
+  return o.name;
+}
+
+std::vector<NamedMetadata> sensorMetadata(const SensorRunInfo& run,
+                                          const std::vector<SensorOutput>& outputs, bool files) {
+  TOFSIM_CHECK(run.spec != nullptr);
+  std::vector<std::string> order;
+  std::vector<json> docs;
+  for (const SensorOutput& o : outputs) {
+    std::size_t i = 0;
+    while (i < order.size() && order[i] != o.name) ++i;
+    if (i == order.size()) {
+      // The first output of a name describes the numbers: the data output
+      // (an Image precedes its ColorMappedImage), or a plot that has none.
+      order.push_back(o.name);
+      json doc = {{"format", "tofsim sensor output"},
+                  {"tofsim_version", kVersion},
+                  {"name", o.name},
+                  {"sensor", sensorJson(run)}};
+      doc.update(describe(o));
+      docs.push_back(std::move(doc));
+    }
+    json& doc = docs[i];
+    if (isPicture(o)) doc["picture"] = pictureJson(o);
+    if (files) doc["files"][isPicture(o) ? "picture" : "data"] = sensorFileName(o);
+  }
+  std::vector<NamedMetadata> result;
+  for (std::size_t i = 0; i < order.size(); ++i)
+    result.push_back({order[i], docs[i].dump(2) + "\n"});
+  return result;
+}
+
+}  // namespace tofsim::pipeline
