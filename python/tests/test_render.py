@@ -77,6 +77,19 @@ def test_output_dir_writes_the_cli_files_and_returns_the_same_arrays(plane_confi
     np.testing.assert_array_equal(np.load(out / "depth.npy"), in_memory.depth)
 
 
+def test_opencv_reads_depth_exr(plane_config, tmp_path):
+    """cv2.imread sees depth.exr's Y channel (it ignores Z). Runs where
+    python3-opencv is installed; the C++ test DepthExrOpenCvTest checks the
+    same OpenCV reader everywhere."""
+    os.environ.setdefault("OPENCV_IO_ENABLE_OPENEXR", "1")  # pip wheels need it
+    cv2 = pytest.importorskip("cv2")
+    out = tmp_path / "files"
+    result = tofsim.render(plane_config, output_dir=out)
+    depth = cv2.imread(str(out / "depth.exr"), cv2.IMREAD_UNCHANGED)
+    assert depth is not None and depth.dtype == np.float32
+    np.testing.assert_array_equal(depth, result.depth)
+
+
 def test_reference_renderer_by_argument(plane_config):
     plane_config["camera"]["resolution"] = [8, 6]
     plane_config["time"]["bins"] = 200

@@ -1,5 +1,3 @@
-#include "tofsim/io/Exr.h"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -8,6 +6,8 @@
 #include <limits>
 
 #include "support/TempDir.h"
+#include "tofsim/io/DepthExr.h"
+#include "tofsim/io/Exr.h"
 #include "tofsim/util/Error.h"
 
 namespace tofsim::io {
@@ -43,6 +43,28 @@ TEST_F(ExrTest, RoundTripThreeChannels) { expectRoundTrip(dir_ / "rgb.exr", {"R"
 TEST_F(ExrTest, RoundTripFourChannels) { expectRoundTrip(dir_ / "rgba.exr", {"R", "G", "B", "A"}); }
 TEST_F(ExrTest, RoundTripKeepsArbitraryOrder) {
   expectRoundTrip(dir_ / "any.exr", {"depth_m", "amplitude", "phase_rad"});
+}
+
+TEST_F(ExrTest, DepthIsWrittenAsYAndZAndReadBackFromEitherForm) {
+  const Image depth = patterned(6, 4, 1);
+  writeDepthExr(dir_ / "depth.exr", depth);
+  std::vector<std::string> names;
+  const Image both = readExr(dir_ / "depth.exr", &names);
+  EXPECT_EQ(names, (std::vector<std::string>{"Y", "Z"}));
+  for (std::size_t i = 0; i < depth.data.size(); ++i) {
+    ASSERT_EQ(both.data[2 * i], depth.data[i]);
+    ASSERT_EQ(both.data[2 * i + 1], depth.data[i]);
+  }
+  EXPECT_EQ(readDepthExr(dir_ / "depth.exr").data, depth.data);
+  // Folders written by older versions hold Z alone; a grey image Y alone.
+  for (const char* name : {"Z", "Y"}) {
+    writeExr(dir_ / "one.exr", depth, {name});
+    const Image back = readDepthExr(dir_ / "one.exr");
+    EXPECT_EQ(back.channels, 1);
+    EXPECT_EQ(back.data, depth.data) << name;
+  }
+  writeExr(dir_ / "rgb.exr", patterned(2, 2, 3), {"R", "G", "B"});
+  EXPECT_THROW(readDepthExr(dir_ / "rgb.exr"), InputError);
 }
 
 TEST_F(ExrTest, LeavesOnlyTheFinalFile) {

@@ -11,6 +11,7 @@
 
 #include "pipeline/CliRun.h"
 #include "support/TempDir.h"
+#include "tofsim/io/DepthExr.h"
 #include "tofsim/io/Exr.h"
 #include "tofsim/io/Npy.h"
 #include "tofsim/pipeline/Capture.h"
@@ -49,8 +50,15 @@ TEST_F(RenderRunGLTest, TransientSumsToSteadyAndFilesLoad) {
     }
   }
   EXPECT_GT(total, 0.0);
-  const Image depth = io::readExr(dir_ / "out" / "depth.exr");
-  EXPECT_EQ(depth.channels, 1);
+  // depth.exr: the metres twice, as Y (OpenCV and image readers) and Z (depth tools).
+  const Image depthYZ = io::readExr(dir_ / "out" / "depth.exr", &channels);
+  EXPECT_EQ(channels, (std::vector<std::string>{"Y", "Z"}));
+  const Image depth = io::readDepthExr(dir_ / "out" / "depth.exr");
+  ASSERT_EQ(depth.channels, 1);
+  for (std::size_t i = 0; i < depth.data.size(); ++i) {
+    ASSERT_EQ(depthYZ.data[2 * i], depth.data[i]);
+    ASSERT_EQ(depthYZ.data[2 * i + 1], depth.data[i]);
+  }
   // Surfaces lie between the box's open front (0.8 m) and its back corners;
   // only the outermost pixels look past the walls' front edges (depth 0).
   std::size_t seen = 0;
@@ -61,8 +69,7 @@ TEST_F(RenderRunGLTest, TransientSumsToSteadyAndFilesLoad) {
     EXPECT_LT(d, 1.6f);
   }
   EXPECT_GT(seen, depth.data.size() * 8 / 10);
-  // depth.npy: the same metres as depth.exr, shape (H, W), for readers that
-  // do not see the EXR's channel Z (OpenCV).
+  // depth.npy: the same metres as depth.exr, shape (H, W), for numpy.load.
   const io::NpyArray depthNpy = io::readNpy(dir_ / "out" / "depth.npy");
   EXPECT_EQ(depthNpy.shape, (io::NpyShape{24, 24}));
   EXPECT_EQ(depthNpy.data, depth.data);

@@ -4,6 +4,7 @@
 
 #include "tofsim/imaging/Pictures.h"
 #include "tofsim/imaging/Video.h"
+#include "tofsim/io/DepthExr.h"
 #include "tofsim/io/Exr.h"
 #include "tofsim/io/Npy.h"
 #include "tofsim/pipeline/AxisReport.h"
@@ -169,9 +170,9 @@ void writeOutputs(const config::RunConfig& config, const capture::RenderJob& job
     summary.files.push_back("steady.png");
   }
   if (out.depth) {
-    io::writeExr(dir / "depth.exr", summary.result.depth_m, {"Z"});
+    io::writeDepthExr(dir / "depth.exr", summary.result.depth_m);  // channels Y and Z
     io::writeNpy(dir / "depth.npy", {std::size_t(job.camera.height), std::size_t(job.camera.width)},
-                 summary.result.depth_m.data.data());  // for readers that skip channel Z
+                 summary.result.depth_m.data.data());
     imaging::writeColormappedPng(dir / "depth.png", summary.result.depth_m, "depth [m]", "turbo");
     summary.files.push_back("depth.exr");
     summary.files.push_back("depth.npy");

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "tofsim/io/DepthExr.h"
 #include "tofsim/io/Exr.h"
 #include "tofsim/io/Npy.h"
 #include "tofsim/util/Error.h"
@@ -106,7 +107,7 @@ SavedVolume loadSavedVolume(const std::filesystem::path& directory) {
   }
   const std::filesystem::path depthFile = directory / "depth.exr";
   if (std::filesystem::exists(depthFile, ec)) {
-    saved.depth_m = io::readExr(depthFile);
+    saved.depth_m = io::readDepthExr(depthFile);
     if (saved.depth_m->channels != 1 || saved.depth_m->width != W || saved.depth_m->height != H) {
       fail(depthFile, "expected one channel of " + std::to_string(W) + "x" + std::to_string(H) +
                           " (got " + std::to_string(saved.depth_m->channels) + " of " +

@@ -110,8 +110,8 @@ const ConfigKey kRunConfigKeys[] = {
     {"output.steady", "bool", "", "true", "-",
      "`steady.exr` + `steady.png` (sum over time)"},
     {"output.depth", "bool", "", "true", "-",
-     "`depth.exr` (channel Z, metres, 0 = no surface), `depth.npy` (float32 (H, W), metres) + "
-     "`depth.png`"},
+     "`depth.exr` (channels Y and Z, the same metres; 0 = no surface), `depth.npy` (float32 (H, W), "
+     "metres) + `depth.png`"},
     {"output.frames", "bool", "", "false", "-",
      "`frames/frame_NNNNN.exr`, one per time bin"},
     {"output.components", "list", "", "[]", "-",
