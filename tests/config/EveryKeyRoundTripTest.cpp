@@ -78,6 +78,7 @@ output:
   video_fps: 24
   max_bytes: 3 GiB
   frame_pngs: true
+  plot_ranges: {depth: [0.5, 3], sensors/spad/spad_depth_peak: [-0.25, 2]}
 sensors:
   - type: spad
 )";

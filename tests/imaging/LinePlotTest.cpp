@@ -65,15 +65,21 @@ TEST_F(ImagingTest, LinePlotOfFlatOrEmptyDataStillWrites) {
   EXPECT_FALSE(cv::imread((dir_ / "empty.png").string()).empty());
 }
 
+imaging::ColorScale named(const char* colormap) {
+  imaging::ColorScale scale;
+  scale.colormap = colormap;
+  return scale;
+}
+
 TEST_F(ImagingTest, ColormappedPngUsesTheNamedColormap) {
   Image ramp(64, 8, 1);
   for (int y = 0; y < 8; ++y) {
     for (int x = 0; x < 64; ++x) ramp.at(y, x, 0) = static_cast<float>(x);
   }
   ramp.at(0, 0, 0) = NAN;
-  imaging::writeColormappedPng(dir_ / "viridis.png", ramp, "ramp [m]", "viridis");
-  imaging::writeColormappedPng(dir_ / "unknown.png", ramp, "ramp [m]", "no-such-map");
-  imaging::writeColormappedPng(dir_ / "turbo.png", ramp, "ramp [m]", "turbo");
+  imaging::writeColormappedPng(dir_ / "viridis.png", ramp, "ramp [m]", named("viridis"));
+  imaging::writeColormappedPng(dir_ / "unknown.png", ramp, "ramp [m]", named("no-such-map"));
+  imaging::writeColormappedPng(dir_ / "turbo.png", ramp, "ramp [m]", named("turbo"));
   const cv::Mat viridis = cv::imread((dir_ / "viridis.png").string());
   const cv::Mat unknown = cv::imread((dir_ / "unknown.png").string());
   const cv::Mat turbo = cv::imread((dir_ / "turbo.png").string());

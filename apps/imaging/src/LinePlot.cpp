@@ -13,27 +13,9 @@ namespace tofsim::imaging {
 namespace {
 
 using detail::drawText;
+using detail::niceTicks;
 using detail::shortNumber;
 using detail::textSize;
-
-// Tick positions covering [lo, hi] at a step of 1, 2 or 5 times a power of
-// ten, about `wanted` of them: the spacing people read without effort.
-std::vector<double> niceTicks(double lo, double hi, int wanted) {
-  const double raw = (hi - lo) / std::max(1, wanted);
-  const double power = std::pow(10.0, std::floor(std::log10(raw)));
-  double step = power * 10.0;
-  for (double m : {1.0, 2.0, 5.0}) {
-    if (power * m >= raw) {
-      step = power * m;
-      break;
-    }
-  }
-  std::vector<double> ticks;
-  for (double t = std::ceil(lo / step - 1e-9) * step; t <= hi + 1e-9 * step; t += step) {
-    ticks.push_back(std::abs(t) < 1e-12 * step ? 0.0 : t);
-  }
-  return ticks;
-}
 
 // Tableau-10 colours, as BGR: distinguishable, and readable on white.
 const cv::Scalar kColors[] = {{180, 119, 31},  {14, 127, 255}, {44, 160, 44},   {40, 39, 214},
@@ -124,7 +106,9 @@ void writeLinePlotPng(const std::filesystem::path& path, const LinePlot& plot) {
   }
 
   drawText(canvas, plot.title, {area.x, 22}, 0.5);
-  const std::string xLabel = plot.xUnit.empty() ? "x" : "[" + plot.xUnit + "]";
+  const std::string unit = plot.xUnit.empty() ? "" : " [" + plot.xUnit + "]";
+  const std::string xLabel =
+      plot.xLabel.empty() ? (unit.empty() ? "x" : unit.substr(1)) : plot.xLabel + unit;
   drawText(canvas, xLabel,
            {area.x + area.width / 2 - textSize(xLabel, 0.45).width / 2, plot.height_px - 10});
   // The y label sits above the axis rather than rotated beside it: OpenCV

@@ -62,6 +62,51 @@ int colormapCode(const std::string& name) {
   return it == codes.end() ? cv::COLORMAP_TURBO : it->second;
 }
 
+// Tick positions covering [lo, hi] at a step of 1, 2 or 5 times a power of
+// ten, about `wanted` of them: the spacing people read without effort.
+std::vector<double> niceTicks(double lo, double hi, int wanted) {
+  const double raw = (hi - lo) / std::max(1, wanted);
+  const double power = std::pow(10.0, std::floor(std::log10(raw)));
+  double step = power * 10.0;
+  for (double m : {1.0, 2.0, 5.0}) {
+    if (power * m >= raw) {
+      step = power * m;
+      break;
+    }
+  }
+  std::vector<double> ticks;
+  for (double t = std::ceil(lo / step - 1e-9) * step; t <= hi + 1e-9 * step; t += step) {
+    ticks.push_back(std::abs(t) < 1e-12 * step ? 0.0 : t);
+  }
+  return ticks;
+}
+
+void applyColormap(const cv::Mat& gray, cv::Mat& bgr, const std::string& name) {
+  if (name != "coolwarm") {
+    cv::applyColorMap(gray, bgr, colormapCode(name));
+    return;
+  }
+  // Moreland's diverging cool-warm map (matplotlib's "coolwarm"): blue,
+  // light grey at the centre, red; linear in RGB between the three, which
+  // keeps the centre (0 for a signed quantity) the lightest colour.
+  static const cv::Mat lut = [] {
+    const double blue[3] = {192, 76, 59}, mid[3] = {221, 221, 221}, red[3] = {38, 4, 180};  // BGR
+    cv::Mat m(256, 1, CV_8UC3);
+    for (int i = 0; i < 256; ++i) {
+      const double u = i / 255.0;
+      const double* a = u < 0.5 ? blue : mid;
+      const double* b = u < 0.5 ? mid : red;
+      const double w = u < 0.5 ? 2.0 * u : 2.0 * u - 1.0;
+      for (int c = 0; c < 3; ++c) {
+        m.at<cv::Vec3b>(i, 0)[c] =
+            static_cast<unsigned char>(std::lround(a[c] + (b[c] - a[c]) * w));
+      }
+    }
+    return m;
+  }();
+  cv::applyColorMap(gray, bgr, lut);
+}
+
 std::string shortNumber(double value) {
   char text[32];
   std::snprintf(text, sizeof text, "%.4g", value);

@@ -29,6 +29,14 @@ void savePng(const std::filesystem::path& path, const cv::Mat& bgr);
 /// so a misspelt colormap still produces a readable picture.
 int colormapCode(const std::string& name);
 
+/// gray (CV_8UC1) through the colormap `name` into bgr: colormapCode's maps,
+/// and "coolwarm", a diverging map whose centre (128) is light grey.
+void applyColormap(const cv::Mat& gray, cv::Mat& bgr, const std::string& name);
+
+/// Tick positions covering [lo, hi] at a step of 1, 2 or 5 times a power of
+/// ten, about `wanted` of them.
+std::vector<double> niceTicks(double lo, double hi, int wanted);
+
 /// "%.4g" of a value, for tick and colour-bar labels.
 std::string shortNumber(double value);
 

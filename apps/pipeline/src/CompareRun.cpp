@@ -35,8 +35,10 @@ CompareSummary runCompare(const std::filesystem::path& a, const std::filesystem:
   io::writeExr(outputDirectory / "compare_arrival.exr", c.earliestArrivalDifference_s, {"Y"});
   Image arrival_ps = c.earliestArrivalDifference_s;
   for (float& v : arrival_ps.data) v *= 1e12f;
+  imaging::ColorScale scale;
+  scale.diverging = true;  // a signed difference: 0 = the same arrival
   imaging::writeColormappedPng(outputDirectory / "compare_arrival.png", arrival_ps,
-                               "earliest arrival A - B [ps]");
+                               "earliest arrival A - B [ps]", scale);
   summary.files.push_back("compare_arrival.exr");
   summary.files.push_back("compare_arrival.png");
   return summary;

@@ -13,6 +13,7 @@
 #include "tofsim/pipeline/Metadata.h"
 #include "tofsim/pipeline/OutputEstimate.h"
 #include "tofsim/pipeline/OutputSink.h"
+#include "tofsim/pipeline/PlotRanges.h"
 #include "tofsim/pipeline/Progress.h"
 #include "tofsim/pipeline/RendererFactory.h"
 #include "tofsim/pipeline/SenseRun.h"
@@ -162,10 +163,12 @@ void writeOutputs(const config::RunConfig& config, const capture::RenderJob& job
   if (out.transient) summary.files.push_back("transient.npy");
   if (out.direct) summary.files.push_back("direct.npy");
   if (out.indirect) summary.files.push_back("indirect.npy");
+  PlotRanges ranges(out.plot_ranges);
   if (out.steady) {
     const Image steady = sink.steady();
     io::writeExr(dir / "steady.exr", steady, {"R", "G", "B"});
-    imaging::writeToneMappedPng(dir / "steady.png", steady, imaging::ToneMap::Global);
+    imaging::writeToneMappedPng(dir / "steady.png", steady, imaging::ToneMap::Global,
+                                ranges.take("steady"));
     summary.files.push_back("steady.exr");
     summary.files.push_back("steady.png");
   }
@@ -173,7 +176,11 @@ void writeOutputs(const config::RunConfig& config, const capture::RenderJob& job
     io::writeDepthExr(dir / "depth.exr", summary.result.depth_m);  // channels Y and Z
     io::writeNpy(dir / "depth.npy", {std::size_t(job.camera.height), std::size_t(job.camera.width)},
                  summary.result.depth_m.data.data());
-    imaging::writeColormappedPng(dir / "depth.png", summary.result.depth_m, "depth [m]", "turbo");
+    imaging::ColorScale scale;  // over the surfaces: 0 (no surface) is not a depth
+    scale.nonPositiveIsNoData = true;
+    scale.noDataLabel = "no surface";
+    scale.range = ranges.take("depth");
+    imaging::writeColormappedPng(dir / "depth.png", summary.result.depth_m, "depth [m]", scale);
     summary.files.push_back("depth.exr");
     summary.files.push_back("depth.npy");
     summary.files.push_back("depth.png");
@@ -195,6 +202,11 @@ void writeOutputs(const config::RunConfig& config, const capture::RenderJob& job
       summary.files.push_back(std::move(f));
     }
   }
+  std::vector<std::string> untaken = ranges.untaken("");
+  if (sensing) {  // runConfiguredSensors reported the sensors' keys
+    std::erase_if(untaken, [](const std::string& k) { return k.rfind("sensors/", 0) == 0; });
+  }
+  warnUntakenPlotRanges(untaken);
   // What was used: a glTF camera's position, view and field of view, not the
   // config's defaults, so the file reproduces the run without the glTF camera too.
   config::RunConfig used = config;

@@ -13,6 +13,13 @@
 
 namespace tofsim::pipeline {
 
+void warnUntakenPlotRanges(const std::vector<std::string>& keys) {
+  for (const std::string& key : keys) {
+    std::fprintf(stderr, "tofsim: warning: output.plot_ranges.%s names no picture of this run\n",
+                 key.c_str());
+  }
+}
+
 namespace {
 
 double secondsSince(std::chrono::steady_clock::time_point start) {
@@ -43,6 +50,7 @@ std::vector<std::string> runConfiguredSensors(const config::RunConfig& config,
                                               const Progress& progress) {
   TOFSIM_CHECK(volumes.volume != nullptr);
   std::vector<std::string> files;
+  PlotRanges ranges(config.output.plot_ranges);
   for (std::size_t i = 0; i < config.sensors.size(); ++i) {
     throwIfInterrupted();
     const sensors::SensorSpec& spec = config.sensors[i];
@@ -69,7 +77,8 @@ std::vector<std::string> runConfiguredSensors(const config::RunConfig& config,
           "sensor '" + spec.name + "' (" + sensors::sensorTypeName(spec.params) + "): " + e.what());
     }
     const std::filesystem::path relative = std::filesystem::path("sensors") / spec.name;
-    for (const std::string& f : writeSensorOutputs(outputDirectory / relative, outputs, run)) {
+    for (const std::string& f :
+         writeSensorOutputs(outputDirectory / relative, outputs, run, ranges)) {
       files.push_back((relative / f).string());
     }
     char line[160];
@@ -77,6 +86,7 @@ std::vector<std::string> runConfiguredSensors(const config::RunConfig& config,
                   sensors::sensorTypeName(spec.params), outputs.size(), secondsSince(start));
     progress.message(line);
   }
+  warnUntakenPlotRanges(ranges.untaken("sensors/"));
   return files;
 }
 

@@ -49,16 +49,32 @@ imaging::LinePlot asPlot(const SensorOutput& o) {
   plot.x0 = o.axis_start;
   plot.dx = o.axis_step;
   plot.xUnit = o.axis_unit;
+  // The TDC's time: arrival at the camera, measured from the laser pulse.
+  if (!o.axes.empty() && o.axes.back() == "t") plot.xLabel = "arrival time since the pulse";
   plot.yLabel = o.unit;
   plot.title = o.description;
   return plot;
+}
+
+// How the picture of `o` maps values to colours: its colormap, a diverging
+// one for signed errors, the configured range, time ticks on a streak's rows.
+imaging::ColorScale colorScale(const SensorOutput& o, const std::string& key, PlotRanges& ranges) {
+  imaging::ColorScale scale;
+  scale.colormap = o.colormap;
+  scale.diverging = o.signed_values;
+  scale.range = ranges.take(key);
+  if (!o.axes.empty() && o.axes.front() == "t" && o.time) {
+    scale.rows =
+        imaging::RowAxis{o.time->start_s * 1e9, o.time->bin_width_s * 1e9, "arrival time [ns]"};
+  }
+  return scale;
 }
 
 }  // namespace
 
 std::vector<std::string> writeSensorOutputs(const std::filesystem::path& directory,
                                             const std::vector<SensorOutput>& outputs,
-                                            const SensorRunInfo& run) {
+                                            const SensorRunInfo& run, PlotRanges& ranges) {
   std::filesystem::create_directories(directory);
   std::vector<std::string> files;
   for (const SensorOutput& o : outputs) {
@@ -77,7 +93,9 @@ std::vector<std::string> writeSensorOutputs(const std::filesystem::path& directo
         break;
       }
       case SensorOutput::Kind::ColorMappedImage:
-        imaging::writeColormappedPng(path, asImage(o), withUnit(o.description, o.unit), o.colormap);
+        imaging::writeColormappedPng(
+            path, asImage(o), withUnit(o.description, o.unit),
+            colorScale(o, "sensors/" + run.spec->name + "/" + o.name, ranges));
         break;
       case SensorOutput::Kind::HistogramPlot:
         imaging::writeLinePlotPng(path, asPlot(o));

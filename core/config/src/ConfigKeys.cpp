@@ -130,6 +130,8 @@ const ConfigKey kRunConfigKeys[] = {
      "before rendering, the outputs' size is estimated (`.npy` volumes, EXR frames and sensor arrays exactly, PNG and MP4 roughly); a run over this, or over the output folder's free space, fails at once naming the sizes and the keys that drive them"},
     {"output.frame_pngs", "bool", "", "false", "-",
      "`frames/frame_NNNNN.png` (NNNNN = time bin): the video's frames as PNG (needs no `video`)"},
+    {"output.plot_ranges", "map of [lo, hi]", "lo < hi", "{}", "unit of the picture",
+     "fixed colour ranges, so pictures compare across runs: key = the PNG's path without `.png` (`depth`, `steady`, `sensors/<sensor>/<output>`), e.g. `{depth: [0.5, 3], sensors/cwtof/cwtof_mpi_error: [-0.05, 0.05]}`; `steady` maps lo..hi to black..white; a key that names no picture of the run is warned about"},
 };
 const ConfigKey kSensorConfigKeys[] = {
     {"common.type", "string", "", "required", "-",

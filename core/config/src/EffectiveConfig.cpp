@@ -96,6 +96,15 @@ YAML::Node outputNode(const OutputConfig& o) {
   if (o.indirect) components.push_back("indirect");
   components.SetStyle(YAML::EmitterStyle::Flow);
   n["components"] = components;
+  YAML::Node ranges(YAML::NodeType::Map);
+  for (const auto& [name, range] : o.plot_ranges) {
+    YAML::Node r(YAML::NodeType::Sequence);
+    r.push_back(shortest(range[0]));
+    r.push_back(shortest(range[1]));
+    r.SetStyle(YAML::EmitterStyle::Flow);
+    ranges[name] = r;
+  }
+  n["plot_ranges"] = ranges;
   return n;
 }
 

@@ -220,6 +220,19 @@ void parseOutput(const ConfigNode& node, OutputConfig& o) {
     node.failKey("max_bytes", "must be between 1 B and 1 EiB");
   }
   o.max_bytes = static_cast<std::uintmax_t>(maxBytes);
+  if (const auto ranges = node.optionalChild("plot_ranges")) {
+    if (!ranges->isMap()) {
+      ranges->fail("expected a mapping of picture name -> [lo, hi]");
+    }
+    for (const auto& entry : ranges->yaml()) {
+      const std::string name = entry.first.as<std::string>();
+      const std::vector<double> r = ranges->getDoubles(name, 2, {});
+      if (!(std::isfinite(r[0]) && std::isfinite(r[1]) && r[0] < r[1])) {
+        ranges->failKey(name, "must be [lo, hi] with lo < hi");
+      }
+      o.plot_ranges[name] = {r[0], r[1]};
+    }
+  }
   if (const auto components = node.optionalChild("components")) {
     for (const ConfigNode& c : components->elements()) {
       const std::string name = c.asString();

@@ -16,6 +16,7 @@ struct LinePlot {
   double x0 = 0.0;                  ///< leading edge of bin 0, in xUnit
   double dx = 1.0;                  ///< bin width, in xUnit, > 0
   std::string xUnit;                ///< e.g. "ns"
+  std::string xLabel;               ///< what x is, e.g. "arrival time"; shown as "xLabel [xUnit]"
   std::string yLabel;               ///< e.g. "counts"
   std::string title;
   int width_px = 800;

@@ -8,15 +8,17 @@
 #include <string>
 #include <vector>
 
+#include "tofsim/pipeline/PlotRanges.h"
 #include "tofsim/pipeline/SensorMetadata.h"
 #include "tofsim/sensors/SensorOutput.h"
 
 namespace tofsim::pipeline {
 
 /// Creates `directory` and writes every output into it, then the metadata of
-/// each name. Returns the file names written, in that order.
+/// each name. Pictures take their fixed colour range from `ranges` under
+/// "sensors/<sensor>/<output>". Returns the file names written, in that order.
 std::vector<std::string> writeSensorOutputs(const std::filesystem::path& directory,
                                             const std::vector<sensors::SensorOutput>& outputs,
-                                            const SensorRunInfo& run);
+                                            const SensorRunInfo& run, PlotRanges& ranges);
 
 }  // namespace tofsim::pipeline

@@ -3,9 +3,11 @@
 // loadRunConfig (the only code that reads YAML); consumed by the pipeline.
 // Key names, units and defaults are documented in configs/README.md.
 
+#include <array>
 #include <cstdint>
 #include <filesystem>
 #include <glm/glm.hpp>
+#include <map>
 #include <string>
 #include <utility>
 #include <vector>
@@ -46,9 +48,9 @@ enum class ReferencePixelFilter { Box, Point };
 
 /// render.reference: the CPU path tracer's settings (core/reference).
 struct ReferenceConfig {
-  int32_t bounces = 2;              ///< 1 direct only, 2 direct + one indirect, n
-  int32_t samples_per_pixel = 64;   ///< indirect paths per pixel
-  int32_t threads = 0;              ///< 0: all hardware threads
+  int32_t bounces = 2;             ///< 1 direct only, 2 direct + one indirect, n
+  int32_t samples_per_pixel = 64;  ///< indirect paths per pixel
+  int32_t threads = 0;             ///< 0: all hardware threads
   ReferencePixelFilter pixel_filter = ReferencePixelFilter::Box;
 };
 
@@ -71,6 +73,10 @@ struct OutputConfig {
   double video_fps = 30.0;   ///< frames per second of the video, > 0
   /// A run whose outputs would exceed this many bytes fails before rendering.
   std::uintmax_t max_bytes = std::uintmax_t(64) << 30;
+  /// Fixed colour ranges [lo, hi] of pictures, keyed by the PNG's path in the
+  /// output folder without ".png": "depth", "steady",
+  /// "sensors/<sensor>/<output>". Pictures not named get an automatic range.
+  std::map<std::string, std::array<double, 2>> plot_ranges;
 };
 
 struct RunConfig {
