@@ -17,6 +17,8 @@ namespace {
 constexpr int32_t kMinSide = 256;
 constexpr int32_t kBand = 24;  // pixels below the image for the time stamp
 
+
+
 cv::Mat frameOf(const TransientVolume& volume, int32_t t, int32_t window, double white,
                 ToneMap mode, const FrameSize& size) {
   const int32_t first = std::max(0, t - (window - 1) / 2);
