@@ -5,8 +5,7 @@
 
 #include "tofsim/pipeline/AxisReport.h"
 #include "tofsim/pipeline/SavedVolume.h"
-#include "tofsim/pipeline/SensorWriter.h"
-#include "tofsim/sensors/RunSensor.h"
+#include "tofsim/pipeline/SensorStreams.h"
 #include "tofsim/util/Error.h"
 #include "tofsim/util/Interrupt.h"
 #include "tofsim/util/StagedFolder.h"
@@ -42,40 +41,17 @@ std::vector<std::string> runConfiguredSensors(const config::RunConfig& config,
                                               const std::filesystem::path& outputDirectory,
                                               const Progress& progress) {
   TOFSIM_CHECK(volumes.volume != nullptr);
-  std::vector<std::string> files;
-  for (std::size_t i = 0; i < config.sensors.size(); ++i) {
-    throwIfInterrupted();
-    const sensors::SensorSpec& spec = config.sensors[i];
-    const auto start = std::chrono::steady_clock::now();
-    sensors::SensorInputs inputs;
-    inputs.volume = volumes.volume;
-    inputs.directOnly = volumes.directOnly;
-    inputs.groundTruthDepth_m = volumes.depth_m;
-    inputs.seed = config.render.seed;
-    std::vector<sensors::SensorOutput> outputs;
-    try {
-      // Warnings go to stderr even when quiet: they say the outputs mislead.
-      for (const std::string& w : sensors::sensorWarnings(spec, inputs)) {
-        std::fprintf(stderr, "tofsim: warning: sensor '%s' (%s): %s\n", spec.name.c_str(),
-                     sensors::sensorTypeName(spec.params), w.c_str());
-      }
-      outputs = sensors::runSensor(spec, inputs);
-    } catch (const InputError& e) {
-      // The sensor library does not know the config; say which entry failed.
-      throw InputError(
-          FileLoc{config.config_file.string()}, "sensors[" + std::to_string(i) + "]",
-          "sensor '" + spec.name + "' (" + sensors::sensorTypeName(spec.params) + "): " + e.what());
-    }
-    const std::filesystem::path relative = std::filesystem::path("sensors") / spec.name;
-    for (const std::string& f : writeSensorOutputs(outputDirectory / relative, outputs)) {
-      files.push_back((relative / f).string());
-    }
-    char line[160];
-    std::snprintf(line, sizeof line, "sensor '%s' (%s): %zu outputs in %.2f s", spec.name.c_str(),
-                  sensors::sensorTypeName(spec.params), outputs.size(), secondsSince(start));
-    progress.message(line);
+  const TransientVolume& volume = *volumes.volume;
+  if (const TransientVolume* d = volumes.directOnly) {
+    TOFSIM_CHECK(d->width() == volume.width() && d->height() == volume.height() &&
+                 d->bins() == volume.bins() && d->channels() == volume.channels());
   }
-  return files;
+  // The whole volume as one span: the same code, and so the same bytes, as a
+  // render's sensors fed segment by segment.
+  SensorStreams streams(config, sensors::shapeOf(volume), volumes.directOnly != nullptr,
+                        outputDirectory);
+  streams.consume(sensors::wholeVolume(volume, volumes.directOnly));
+  return streams.finish(volumes.depth_m, progress);
 }
 
 SenseSummary runSense(const config::RunConfig& config, const SenseOptions& options) {

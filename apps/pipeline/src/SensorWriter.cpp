@@ -60,12 +60,13 @@ std::vector<std::string> writeSensorOutputs(const std::filesystem::path& directo
   std::filesystem::create_directories(directory);
   std::vector<std::string> files;
   for (const SensorOutput& o : outputs) {
-    TOFSIM_CHECK_MSG(static_cast<int64_t>(o.data.size()) == o.elementCount(), o.name);
+    TOFSIM_CHECK_MSG(o.streamed || static_cast<int64_t>(o.data.size()) == o.elementCount(), o.name);
     switch (o.kind) {
       case SensorOutput::Kind::Array: {
         const io::NpyShape shape(o.shape.begin(), o.shape.end());
         files.push_back(o.name + ".npy");
-        io::writeNpy(directory / files.back(), shape, o.data.data());
+        // A streamed array is on disk already (SensorStreams.h).
+        if (!o.streamed) io::writeNpy(directory / files.back(), shape, o.data.data());
         break;
       }
       case SensorOutput::Kind::Image: {

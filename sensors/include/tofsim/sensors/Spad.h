@@ -7,11 +7,13 @@
 
 #include <array>
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "tofsim/sensors/Common.h"
 #include "tofsim/sensors/SensorOutput.h"
+#include "tofsim/sensors/SensorStream.h"
 #include "tofsim/volume/TransientVolume.h"
 
 namespace tofsim::sensors {
@@ -61,5 +63,11 @@ std::vector<double> coatesEstimate(const std::vector<double>& counts, int64_t cy
 /// "spad_histograms" HistogramPlot (pixels, bins).
 std::vector<SensorOutput> runSpad(const TransientVolume& volume, const SpadParams& params,
                                   uint64_t seed);
+
+/// The same model fed as the volume streams (SensorStream.h); spad_counts
+/// goes to options.arrays when given. Throws InputError when the parameters
+/// do not fit the shape (channel, plot pixels).
+std::unique_ptr<SensorStream> openSpad(const SpadParams& params, const VolumeShape& shape,
+                                       const StreamOptions& options);
 
 }  // namespace tofsim::sensors
