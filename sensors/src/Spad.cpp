@@ -6,6 +6,7 @@
 
 #include "ParallelPixels.h"
 #include "PeakDepth.h"
+#include "SpadSampling.h"
 #include "tofsim/sensors/Random.h"
 #include "tofsim/sensors/TimeKernel.h"
 #include "tofsim/util/Error.h"
@@ -153,6 +154,7 @@ class SpadStream final : public SensorStream {
  private:
   struct Scratch {
     std::vector<double> signal, resampled, flux, h;
+    detail::FirstPhotonScratch firstPhoton;
   };
 
   void pixel(const float* values, std::size_t px, float* out, Scratch& s) const {
@@ -163,15 +165,7 @@ class SpadStream final : public SensorStream {
     Rng rng(options_.seed, pixelStream(kSpadStreamTag, px));
     const auto N = static_cast<uint64_t>(p_.cycles);
     if (p_.mode == SpadMode::Synchronous) {
-      // Multinomial over "first detection in bin i" and "none", drawn as
-      // sequential conditional binomials: given no detection before bin i,
-      // the first one is in bin i with probability q_i.
-      uint64_t remaining = N;
-      for (int32_t i = 0; i < K; ++i) {
-        const uint64_t n = remaining == 0 ? 0 : rng.binomial(remaining, -std::expm1(-s.flux[i]));
-        s.h[i] = static_cast<double>(n);
-        remaining -= n;
-      }
+      detail::firstPhotonHistogram(s.flux, N, rng, s.firstPhoton, s.h);
     } else {
       const std::vector<double> m = freeRunningProbabilities(s.flux, deadBins_);
       for (int32_t i = 0; i < K; ++i) s.h[i] = static_cast<double>(rng.binomial(N, m[i]));
