@@ -2,8 +2,9 @@
 // Single-photon avalanche diode with a time-to-digital converter, recording a
 // per-pixel histogram of detections over N laser cycles, in synchronous
 // (first-photon, pile-up) or free-running (dead time) mode. Counts are drawn
-// with the exact per-cycle probabilities by binomial sampling, so the cost does
-// not grow with N. Model and parameters: sensors/README.md, "SPAD".
+// exactly from the per-cycle probabilities (detection by detection by inverse
+// CDF when there are few, else by binomial sampling, so the cost does not grow
+// with N). Model and parameters: sensors/README.md, "SPAD".
 
 #include <array>
 #include <cstdint>
