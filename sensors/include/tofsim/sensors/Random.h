@@ -1,9 +1,10 @@
 #pragma once
 // Reproducible random numbers: PCG32 (O'Neill 2014) seeded through SplitMix64,
 // and samplers written on top of it, so that the same seed gives the same bytes
-// on every platform's standard library. The generator's step and the uniform
-// are inline: the SPAD draws one per detection or bin. Each pixel gets its own stream derived
-// from (seed, stream id), so results do not depend on iteration order.
+// on every platform's standard library. Each pixel gets its own stream derived
+// from (seed, stream id), so results do not depend on iteration order. The
+// generator's step and the uniform are inline: the SPAD draws one per
+// detection or bin.
 
 #include <cstdint>
 
