@@ -34,7 +34,10 @@ TimeAxis resolveBins(const InstrumentBins& bins, const TimeAxis& render) {
 }
 
 void checkChannelSelection(const ChannelSelection& channel, const TransientVolume& volume) {
-  const int32_t c = volume.channels();
+  checkChannelSelection(channel, volume.channels());
+}
+
+void checkChannelSelection(const ChannelSelection& channel, int32_t c) {
   if (!channel.weights.empty()) {
     if (static_cast<int32_t>(channel.weights.size()) != c) {
       throw InputError("sensor channel_weights has " + std::to_string(channel.weights.size()) +
@@ -48,11 +51,14 @@ void checkChannelSelection(const ChannelSelection& channel, const TransientVolum
 
 void pixelSignal(const TransientVolume& volume, const SensorCommon& common, int32_t y, int32_t x,
                  std::vector<double>& out) {
-  const int32_t T = volume.bins();
-  const int32_t C = volume.channels();
+  pixelSignal(volume.data() + volume.index(y, x, 0, 0), volume.bins(), volume.channels(), common,
+              out);
+}
+
+void pixelSignal(const float* p, int32_t T, int32_t C, const SensorCommon& common,
+                 std::vector<double>& out) {
   const double scale = common.radiometry.photoelectronsPerUnit();
   out.assign(static_cast<std::size_t>(T), 0.0);
-  const float* p = volume.data() + volume.index(y, x, 0, 0);
   const auto& w = common.channel.weights;
   for (int32_t t = 0; t < T; ++t) {
     double v = 0.0;

@@ -107,23 +107,11 @@ void addImage(std::vector<SensorOutput>& outs, const std::string& name, int32_t 
   png.colormap = colormap;
   outs.push_back(std::move(png));
 }
-void checkInputs(const TransientVolume& volume, const CwTofParams& p, const CwTofReferences& refs) {
+void checkParams(const CwTofParams& p, const VolumeShape& shape) {
   TOFSIM_CHECK(!p.frequencies_Hz.empty() && p.phase_steps >= 3);
   for (double f : p.frequencies_Hz) TOFSIM_CHECK(f > 0.0);
   TOFSIM_CHECK(p.ambient_e >= 0.0 && p.read_noise_e >= 0.0 && p.max_depth_m >= 0.0);
-  checkChannelSelection(p.common.channel, volume);
-  const int32_t H = volume.height(), W = volume.width();
-  const Image* gt = refs.groundTruthDepth_m;
-  const TransientVolume* direct = refs.directOnly;
-  if (gt && (gt->width != W || gt->height != H || gt->channels < 1)) {
-    throw InputError("cwtof ground-truth depth is " + std::to_string(gt->width) + "x" +
-                     std::to_string(gt->height) + ", the volume " + std::to_string(W) + "x" +
-                     std::to_string(H));
-  }
-  if (direct && (direct->width() != W || direct->height() != H ||
-                 direct->channels() != volume.channels() || direct->bins() != volume.bins())) {
-    throw InputError("cwtof direct-only volume does not match the volume's shape");
-  }
+  checkChannelSelection(p.common.channel, shape.channels);
   for (std::size_t i = 0; i < p.frequencies_Hz.size(); ++i) {
     for (std::size_t j = 0; j < i; ++j) {
       if (frequencyLabel(p.frequencies_Hz[i]) == frequencyLabel(p.frequencies_Hz[j])) {
@@ -134,48 +122,59 @@ void checkInputs(const TransientVolume& volume, const CwTofParams& p, const CwTo
   }
 }
 
-/// One run of the model: the per-pixel measurement into planes of H x W.
-class CwTofRun {
+void checkGroundTruth(const Image* gt, const VolumeShape& shape) {
+  if (gt && (gt->width != shape.width || gt->height != shape.height || gt->channels < 1)) {
+    throw InputError("cwtof ground-truth depth is " + std::to_string(gt->width) + "x" +
+                     std::to_string(gt->height) + ", the volume " + std::to_string(shape.width) +
+                     "x" + std::to_string(shape.height));
+  }
+}
+
+/// The model fed pixel by pixel into planes of H x W. The error against the
+/// ground truth needs a depth known only after the render, so the noise-free
+/// depths it compares are kept per pixel and compared in finish().
+class CwTofStream final : public SensorStream {
  public:
-  CwTofRun(const TransientVolume& volume, const CwTofParams& p, uint64_t seed,
-           const CwTofReferences& refs)
-      : volume_(volume),
-        p_(p),
-        seed_(seed),
-        refs_(refs),
-        correlator_(p, volume.axis()),
-        H_(volume.height()),
-        W_(volume.width()),
+  CwTofStream(const CwTofParams& p, const VolumeShape& shape, const StreamOptions& options)
+      : p_(p),
+        shape_(shape),
+        seed_(options.seed),
+        withDirect_(options.directOnly),
+        correlator_(p_, shape_.axis),
+        H_(shape.height),
+        W_(shape.width),
         F_(static_cast<int32_t>(p.frequencies_Hz.size())),
-        HW_(static_cast<std::size_t>(H_) * W_) {
-    const double k = volume.axis().depthPerSecond_m_per_s();
+        HW_(shape.pixelCount()) {
+    checkParams(p, shape);
+    const double k = shape.axis.depthPerSecond_m_per_s();
     unwrapRange_ = unwrapRange_m(p, k);
     depthRange_ = depthRange_m(p, k);
-    const float nan = std::numeric_limits<float>::quiet_NaN();
     raw_.resize(static_cast<std::size_t>(F_) * p.phase_steps * HW_);
     phase_.resize(F_ * HW_);
     amplitude_.resize(F_ * HW_);
     wrappedDepth_.resize(F_ * HW_);
     depth_.resize(HW_);
-    if (refs.groundTruthDepth_m) {
-      mpiGt_.assign(HW_, nan);
-      mpiGtPerFrequency_.assign(F_ * HW_, nan);
-    }
-    if (refs.directOnly) mpiDirect_.assign(HW_, nan);
+    cleanDepth_.resize(HW_);
+    cleanWrapped_.resize(F_ * HW_);
+    if (withDirect_) mpiDirect_.assign(HW_, std::numeric_limits<float>::quiet_NaN());
   }
 
-  void measure() {
-    for (int32_t y = 0; y < H_; ++y) {
-      for (int32_t x = 0; x < W_; ++x) pixel(y, x);
+  void consume(const PixelSpan& span) override {
+    TOFSIM_CHECK(span.firstPixel == next_ && next_ + span.pixelCount <= HW_);
+    TOFSIM_CHECK(!withDirect_ || span.directOnly != nullptr);
+    for (std::size_t i = 0; i < span.pixelCount; ++i) {
+      const std::size_t offset = i * shape_.pixelFloats();
+      pixel(span.volume + offset, withDirect_ ? span.directOnly + offset : nullptr,
+            span.firstPixel + i);
     }
+    next_ += span.pixelCount;
   }
 
-  std::vector<SensorOutput> outputs();
+  std::vector<SensorOutput> finish(const Image* groundTruthDepth_m) override;
 
  private:
-  void pixel(int32_t y, int32_t x) {
-    const std::size_t px = static_cast<std::size_t>(y) * W_ + x;
-    pixelSignal(volume_, p_.common, y, x, signal_);
+  void pixel(const float* values, const float* direct, std::size_t px) {
+    pixelSignal(values, shape_.axis.bins, shape_.channels, p_.common, signal_);
     correlator_.raw(signal_, p_.ambient_e, ideal_);
     Rng rng(seed_, pixelStream(kCwTofStreamTag, px));
     noisy_ = ideal_;
@@ -190,27 +189,20 @@ class CwTofRun {
       amplitude_[f * HW_ + px] = static_cast<float>(amps_[f]);
       wrappedDepth_[f * HW_ + px] = static_cast<float>(correlator_.wrappedDepth(f, phases_[f]));
     }
-    if (refs_.groundTruthDepth_m || refs_.directOnly) multipath(y, x, px);
+    multipath(direct, px);
   }
 
-  /// The multipath errors of the noise-free measurement, each folded into
-  /// its depth's range so that a phase wrap is not counted.
-  void multipath(int32_t y, int32_t x, std::size_t px) {
+  /// The noise-free depths the multipath errors compare, and the error
+  /// against the direct-only depth, folded into the depth's range so that a
+  /// phase wrap is not counted.
+  void multipath(const float* direct, std::size_t px) {
     const double clean = correlator_.depth(ideal_, phases_, amps_, unwrapRange_);
-    const double k = volume_.axis().depthPerSecond_m_per_s();
-    if (const Image* gt = refs_.groundTruthDepth_m) {
-      const float truth = gt->at(y, x, 0);
-      if (std::isfinite(truth) && truth > 0.0f) {
-        mpiGt_[px] = static_cast<float>(wrapSigned(clean - truth, depthRange_));
-        for (int32_t f = 0; f < F_; ++f) {
-          const double e = correlator_.wrappedDepth(f, phases_[f]) - truth;
-          mpiGtPerFrequency_[f * HW_ + px] =
-              static_cast<float>(wrapSigned(e, k / p_.frequencies_Hz[f]));
-        }
-      }
+    cleanDepth_[px] = clean;
+    for (int32_t f = 0; f < F_; ++f) {
+      cleanWrapped_[f * HW_ + px] = correlator_.wrappedDepth(f, phases_[f]);
     }
-    if (refs_.directOnly) {
-      pixelSignal(*refs_.directOnly, p_.common, y, x, signal_);
+    if (direct) {
+      pixelSignal(direct, shape_.axis.bins, shape_.channels, p_.common, signal_);
       correlator_.raw(signal_, 0.0, ideal_);
       const double directDepth = correlator_.depth(ideal_, phases_, amps_, unwrapRange_);
       if (amps_[0] > 0.0) {
@@ -219,21 +211,44 @@ class CwTofRun {
     }
   }
 
+  /// The errors of the kept noise-free depths against the ground truth.
+  void groundTruthErrors(const Image& gt) {
+    const float nan = std::numeric_limits<float>::quiet_NaN();
+    const double k = shape_.axis.depthPerSecond_m_per_s();
+    mpiGt_.assign(HW_, nan);
+    mpiGtPerFrequency_.assign(F_ * HW_, nan);
+    for (int32_t y = 0; y < H_; ++y) {
+      for (int32_t x = 0; x < W_; ++x) {
+        const std::size_t px = static_cast<std::size_t>(y) * W_ + x;
+        const float truth = gt.at(y, x, 0);
+        if (!(std::isfinite(truth) && truth > 0.0f)) continue;
+        mpiGt_[px] = static_cast<float>(wrapSigned(cleanDepth_[px] - truth, depthRange_));
+        for (int32_t f = 0; f < F_; ++f) {
+          const double e = cleanWrapped_[f * HW_ + px] - truth;
+          mpiGtPerFrequency_[f * HW_ + px] =
+              static_cast<float>(wrapSigned(e, k / p_.frequencies_Hz[f]));
+        }
+      }
+    }
+  }
+
   std::vector<float> plane(const std::vector<float>& planes, int32_t f) const {
     return {planes.begin() + f * HW_, planes.begin() + (f + 1) * HW_};
   }
 
-  const TransientVolume& volume_;
-  const CwTofParams& p_;
-  uint64_t seed_;
-  CwTofReferences refs_;
+  const CwTofParams p_;
+  const VolumeShape shape_;
+  const uint64_t seed_;
+  const bool withDirect_;
   Correlator correlator_;
   int32_t H_, W_, F_;
   std::size_t HW_;
+  std::size_t next_ = 0;
   double unwrapRange_ = 0.0, depthRange_ = 0.0;
   // (F, N, H, W) raw; (F, H, W) per frequency; (H, W) combined.
   std::vector<float> raw_, phase_, amplitude_, wrappedDepth_, mpiGtPerFrequency_;
   std::vector<float> depth_, mpiGt_, mpiDirect_;
+  std::vector<double> cleanDepth_, cleanWrapped_;               // (H, W) and (F, H, W), noise-free
   std::vector<double> signal_, ideal_, noisy_, phases_, amps_;  // per-pixel scratch
 };
 
@@ -243,7 +258,10 @@ std::string metres(double m) {
   return text;
 }
 
-std::vector<SensorOutput> CwTofRun::outputs() {
+std::vector<SensorOutput> CwTofStream::finish(const Image* gt) {
+  TOFSIM_CHECK(next_ == HW_);
+  checkGroundTruth(gt, shape_);
+  if (gt) groundTruthErrors(*gt);
   const int32_t H = H_, W = W_, N = p_.phase_steps;
   const std::string& cmap = p_.colormap;
   std::vector<SensorOutput> outs;
@@ -267,7 +285,7 @@ std::vector<SensorOutput> CwTofRun::outputs() {
   addImage(outs, "cwtof_amplitude", H, W, plane(amplitude_, 0), "photo-electrons",
            "CW-ToF amplitude at the first frequency", cmap,
            {{{"frequency_Hz", p_.frequencies_Hz[0]}}});
-  const double k = volume_.axis().depthPerSecond_m_per_s();
+  const double k = shape_.axis.depthPerSecond_m_per_s();
   for (int32_t f = 0; f < F_; ++f) {
     const std::string label = frequencyLabel(p_.frequencies_Hz[f]);
     const std::string at = " at " + label;
@@ -279,17 +297,17 @@ std::vector<SensorOutput> CwTofRun::outputs() {
              "CW-ToF amplitude" + at, cmap, wrapped);
     addImage(outs, "cwtof_depth_" + label, H, W, plane(wrappedDepth_, f), "m",
              "CW-ToF wrapped depth" + at + ", range " + metres(range), cmap, wrapped);
-    if (refs_.groundTruthDepth_m) {
+    if (gt) {
       addImage(outs, "cwtof_multipath_error_" + label, H, W, plane(mpiGtPerFrequency_, f), "m",
                "CW-ToF multipath error" + at + " (noise-free, truth wrapped into range)", cmap,
                {wrapped.attributes, true});
     }
   }
-  if (refs_.groundTruthDepth_m) {
+  if (gt) {
     addImage(outs, "cwtof_mpi_error", H, W, std::move(mpiGt_), "m",
              "CW-ToF depth error against the ground truth (noise-free)", cmap, combinedError);
   }
-  if (refs_.directOnly) {
+  if (withDirect_) {
     addImage(outs, "cwtof_mpi_error_direct", H, W, std::move(mpiDirect_), "m",
              "CW-ToF depth error against the direct-only depth (noise-free)", cmap, combinedError);
   }
@@ -297,12 +315,24 @@ std::vector<SensorOutput> CwTofRun::outputs() {
 }
 }  // namespace
 
+std::unique_ptr<SensorStream> openCwTof(const CwTofParams& params, const VolumeShape& shape,
+                                        const StreamOptions& options) {
+  return std::make_unique<CwTofStream>(params, shape, options);
+}
+
 std::vector<SensorOutput> runCwTof(const TransientVolume& volume, const CwTofParams& p,
                                    uint64_t seed, const CwTofReferences& refs) {
-  checkInputs(volume, p, refs);
-  CwTofRun run(volume, p, seed, refs);
-  run.measure();
-  return run.outputs();
+  const TransientVolume* direct = refs.directOnly;
+  if (direct && (direct->width() != volume.width() || direct->height() != volume.height() ||
+                 direct->channels() != volume.channels() || direct->bins() != volume.bins())) {
+    throw InputError("cwtof direct-only volume does not match the volume's shape");
+  }
+  StreamOptions options;
+  options.seed = seed;
+  options.directOnly = direct != nullptr;
+  const std::unique_ptr<SensorStream> stream = openCwTof(p, shapeOf(volume), options);
+  stream->consume(wholeVolume(volume, direct));
+  return stream->finish(refs.groundTruthDepth_m);
 }
 
 }  // namespace tofsim::sensors

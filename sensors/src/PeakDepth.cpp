@@ -26,16 +26,29 @@ double peakDepth_m(const std::vector<double>& histogram, const TimeAxis& axis) {
   return axis.depthOf_m(t);
 }
 
-SensorOutput histogramPlot(const SensorOutput& counts,
-                           const std::vector<std::array<int32_t, 2>>& pixels, const TimeAxis& axis,
-                           int32_t H, int32_t W) {
+std::vector<std::array<int32_t, 2>> plotPixels(const std::vector<std::array<int32_t, 2>>& pixels,
+                                               int32_t H, int32_t W) {
   std::vector<std::array<int32_t, 2>> chosen = pixels;
   if (chosen.empty()) chosen.push_back({W / 2, H / 2});
+  for (const auto& [x, y] : chosen) {
+    if (x < 0 || x >= W || y < 0 || y >= H) {
+      throw InputError("spad plot pixel (" + std::to_string(x) + ", " + std::to_string(y) +
+                       ") is outside the " + std::to_string(W) + "x" + std::to_string(H) +
+                       " image");
+    }
+  }
+  return chosen;
+}
+
+SensorOutput histogramPlot(const std::vector<std::array<int32_t, 2>>& pixels,
+                           const std::vector<std::vector<float>>& histograms,
+                           const TimeAxis& axis) {
+  TOFSIM_CHECK(pixels.size() == histograms.size());
   const int32_t K = axis.bins;
   SensorOutput plot;
   plot.name = "spad_histograms";
   plot.kind = SensorOutput::Kind::HistogramPlot;
-  plot.shape = {static_cast<int64_t>(chosen.size()), K};
+  plot.shape = {static_cast<int64_t>(pixels.size()), K};
   plot.axes = {"pixel", "t"};
   plot.time = axis;
   plot.unit = "counts";
@@ -43,15 +56,11 @@ SensorOutput histogramPlot(const SensorOutput& counts,
   plot.axis_start = axis.start_s * 1e9;
   plot.axis_step = axis.bin_width_s * 1e9;
   plot.axis_unit = "ns";
-  for (const auto& [x, y] : chosen) {
-    if (x < 0 || x >= W || y < 0 || y >= H) {
-      throw InputError("spad plot pixel (" + std::to_string(x) + ", " + std::to_string(y) +
-                       ") is outside the " + std::to_string(W) + "x" + std::to_string(H) +
-                       " image");
-    }
-    const float* h = counts.data.data() + (static_cast<std::size_t>(y) * W + x) * K;
-    plot.data.insert(plot.data.end(), h, h + K);
-    plot.labels.push_back("pixel (" + std::to_string(x) + ", " + std::to_string(y) + ")");
+  for (std::size_t i = 0; i < pixels.size(); ++i) {
+    TOFSIM_CHECK(static_cast<int32_t>(histograms[i].size()) == K);
+    plot.data.insert(plot.data.end(), histograms[i].begin(), histograms[i].end());
+    plot.labels.push_back("pixel (" + std::to_string(pixels[i][0]) + ", " +
+                          std::to_string(pixels[i][1]) + ")");
   }
   return plot;
 }

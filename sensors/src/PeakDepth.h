@@ -14,10 +14,14 @@ namespace tofsim::sensors {
 /// parabola through the maximum and its neighbours. NaN for an empty histogram.
 double peakDepth_m(const std::vector<double>& histogram, const TimeAxis& axis);
 
-/// HistogramPlot "spad_histograms" of the given (x, y) pixels (centre if none)
-/// taken from the (H, W, K) counts array.
-SensorOutput histogramPlot(const SensorOutput& counts,
-                           const std::vector<std::array<int32_t, 2>>& pixels, const TimeAxis& axis,
-                           int32_t H, int32_t W);
+/// The pixels to plot: `pixels` ((x, y) each), or the centre when empty.
+/// Throws InputError for a pixel outside the W x H image.
+std::vector<std::array<int32_t, 2>> plotPixels(const std::vector<std::array<int32_t, 2>>& pixels,
+                                               int32_t H, int32_t W);
+
+/// HistogramPlot "spad_histograms": one series per pixel of `pixels` (from
+/// plotPixels), `histograms` holding their counts in the same order.
+SensorOutput histogramPlot(const std::vector<std::array<int32_t, 2>>& pixels,
+                           const std::vector<std::vector<float>>& histograms, const TimeAxis& axis);
 
 }  // namespace tofsim::sensors

@@ -22,20 +22,6 @@ Rng::Rng(uint64_t seed, uint64_t stream) {
   nextU32();
 }
 
-uint32_t Rng::nextU32() {
-  const uint64_t old = state_;
-  state_ = old * 6364136223846793005ull + inc_;
-  const auto xorshifted = static_cast<uint32_t>(((old >> 18u) ^ old) >> 27u);
-  const auto rot = static_cast<uint32_t>(old >> 59u);
-  return (xorshifted >> rot) | (xorshifted << ((32u - rot) & 31u));
-}
-
-double Rng::uniform() {
-  const uint64_t hi = nextU32() >> 5;  // 27 bits
-  const uint64_t lo = nextU32() >> 6;  // 26 bits
-  return static_cast<double>((hi << 26) | lo) * 0x1.0p-53;
-}
-
 double Rng::normal() {
   if (hasSpare_) {
     hasSpare_ = false;

@@ -32,15 +32,38 @@ const SensorOutput* findOutput(const std::vector<SensorOutput>& outputs, const s
   return nullptr;
 }
 
+std::unique_ptr<SensorStream> openSensor(const SensorSpec& spec, const VolumeShape& shape,
+                                         const StreamOptions& options) {
+  return std::visit([&](const auto& p) { return TypeOf<decltype(p)>::open(p, shape, options); },
+                    spec.params);
+}
+
 std::vector<SensorOutput> runSensor(const SensorSpec& spec, const SensorInputs& in) {
   TOFSIM_CHECK(in.volume != nullptr);
-  return std::visit([&](const auto& p) { return TypeOf<decltype(p)>::run(p, in); }, spec.params);
+  const TransientVolume* direct = in.directOnly;
+  if (direct &&
+      (direct->width() != in.volume->width() || direct->height() != in.volume->height() ||
+       direct->channels() != in.volume->channels() || direct->bins() != in.volume->bins())) {
+    throw InputError("the direct-only volume does not match the volume's shape");
+  }
+  StreamOptions options;
+  options.seed = in.seed;
+  options.directOnly = direct != nullptr;
+  const std::unique_ptr<SensorStream> stream = openSensor(spec, shapeOf(*in.volume), options);
+  stream->consume(wholeVolume(*in.volume, direct));
+  return stream->finish(in.groundTruthDepth_m);
 }
 
 std::vector<std::string> sensorWarnings(const SensorSpec& spec, const SensorInputs& in) {
   TOFSIM_CHECK(in.volume != nullptr);
-  return std::visit([&](const auto& p) { return TypeOf<decltype(p)>::warnings(p, in); },
-                    spec.params);
+  return sensorWarnings(spec, in.volume->axis(), in.groundTruthDepth_m);
+}
+
+std::vector<std::string> sensorWarnings(const SensorSpec& spec, const TimeAxis& axis,
+                                        const Image* groundTruthDepth_m) {
+  return std::visit(
+      [&](const auto& p) { return TypeOf<decltype(p)>::warnings(p, axis, groundTruthDepth_m); },
+      spec.params);
 }
 
 }  // namespace tofsim::sensors

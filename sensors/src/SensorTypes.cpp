@@ -1,6 +1,5 @@
 // The sensor descriptors of SensorType.h, one block per model.
 #include "tofsim/sensors/SensorType.h"
-#include "tofsim/sensors/WindowLoss.h"
 
 namespace tofsim::sensors {
 
@@ -13,12 +12,13 @@ std::uintmax_t imageBytes(int32_t width, int32_t height) {
 }  // namespace
 
 // --- streak --------------------------------------------------------------------
-std::vector<SensorOutput> SensorType<StreakParams>::run(const StreakParams& p,
-                                                        const SensorInputs& in) {
-  return runStreak(*in.volume, p, in.seed);
+std::unique_ptr<SensorStream> SensorType<StreakParams>::open(const StreakParams& p,
+                                                             const VolumeShape& shape,
+                                                             const StreamOptions& options) {
+  return openStreak(p, shape, options);
 }
-std::vector<std::string> SensorType<StreakParams>::warnings(const StreakParams&,
-                                                            const SensorInputs&) {
+std::vector<std::string> SensorType<StreakParams>::warnings(const StreakParams&, const TimeAxis&,
+                                                            const Image*) {
   return {};
 }
 std::uintmax_t SensorType<StreakParams>::outputBytes(const StreakParams& p, int32_t width,
@@ -27,16 +27,18 @@ std::uintmax_t SensorType<StreakParams>::outputBytes(const StreakParams& p, int3
   const std::uintmax_t rows = p.rows.empty() ? static_cast<std::uintmax_t>(height) : p.rows.size();
   return rows * static_cast<std::uintmax_t>(width) * bins * (4 + 3) + imageBytes(width, height);
 }
-double SensorType<StreakParams>::windowLossFraction(const StreakParams& p,
-                                                    const TransientVolume& volume) {
-  return instrumentWindowLoss(p.common, p.bins, p.rows, volume);
+std::optional<InstrumentWindow> SensorType<StreakParams>::window(const StreakParams& p) {
+  return InstrumentWindow{p.common, p.bins, p.rows};
 }
 
 // --- spad ----------------------------------------------------------------------
-std::vector<SensorOutput> SensorType<SpadParams>::run(const SpadParams& p, const SensorInputs& in) {
-  return runSpad(*in.volume, p, in.seed);
+std::unique_ptr<SensorStream> SensorType<SpadParams>::open(const SpadParams& p,
+                                                           const VolumeShape& shape,
+                                                           const StreamOptions& options) {
+  return openSpad(p, shape, options);
 }
-std::vector<std::string> SensorType<SpadParams>::warnings(const SpadParams&, const SensorInputs&) {
+std::vector<std::string> SensorType<SpadParams>::warnings(const SpadParams&, const TimeAxis&,
+                                                          const Image*) {
   return {};
 }
 std::uintmax_t SensorType<SpadParams>::outputBytes(const SpadParams& p, int32_t width,
@@ -45,19 +47,20 @@ std::uintmax_t SensorType<SpadParams>::outputBytes(const SpadParams& p, int32_t 
   const auto pixels = static_cast<std::uintmax_t>(width) * static_cast<std::uintmax_t>(height);
   return pixels * bins * 4 + imageBytes(width, height);
 }
-double SensorType<SpadParams>::windowLossFraction(const SpadParams& p,
-                                                  const TransientVolume& volume) {
-  return instrumentWindowLoss(p.common, p.bins, {}, volume);
+std::optional<InstrumentWindow> SensorType<SpadParams>::window(const SpadParams& p) {
+  return InstrumentWindow{p.common, p.bins, {}};
 }
 
 // --- cwtof ---------------------------------------------------------------------
-std::vector<SensorOutput> SensorType<CwTofParams>::run(const CwTofParams& p,
-                                                       const SensorInputs& in) {
-  return runCwTof(*in.volume, p, in.seed, CwTofReferences{in.groundTruthDepth_m, in.directOnly});
+std::unique_ptr<SensorStream> SensorType<CwTofParams>::open(const CwTofParams& p,
+                                                            const VolumeShape& shape,
+                                                            const StreamOptions& options) {
+  return openCwTof(p, shape, options);
 }
 std::vector<std::string> SensorType<CwTofParams>::warnings(const CwTofParams& p,
-                                                           const SensorInputs& in) {
-  return cwtofWarnings(p, in.volume->axis(), in.groundTruthDepth_m);
+                                                           const TimeAxis& axis,
+                                                           const Image* groundTruthDepth_m) {
+  return cwtofWarnings(p, axis, groundTruthDepth_m);
 }
 std::uintmax_t SensorType<CwTofParams>::outputBytes(const CwTofParams& p, int32_t width,
                                                     int32_t height, const TimeAxis&) {
@@ -68,8 +71,8 @@ std::uintmax_t SensorType<CwTofParams>::outputBytes(const CwTofParams& p, int32_
   const auto steps = static_cast<std::uintmax_t>(p.phase_steps);
   return F * (steps + 1) * pixels * 4 + F * 4 * pixels * (4 + 3) + imageBytes(width, height);
 }
-double SensorType<CwTofParams>::windowLossFraction(const CwTofParams&, const TransientVolume&) {
-  return 0.0;
+std::optional<InstrumentWindow> SensorType<CwTofParams>::window(const CwTofParams&) {
+  return std::nullopt;
 }
 
 }  // namespace tofsim::sensors

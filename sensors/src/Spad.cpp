@@ -4,7 +4,9 @@
 #include <limits>
 #include <string>
 
+#include "ParallelPixels.h"
 #include "PeakDepth.h"
+#include "SpadSampling.h"
 #include "tofsim/sensors/Random.h"
 #include "tofsim/sensors/TimeKernel.h"
 #include "tofsim/util/Error.h"
@@ -30,11 +32,11 @@ void checkParams(const SpadParams& p) {
   TOFSIM_CHECK(p.dead_time_s >= 0.0);
 }
 
-void fluxWithKernel(const TransientVolume& volume, const SpadParams& p, const TimeAxis& axis,
-                    const BinKernel& kernel, int32_t y, int32_t x, std::vector<double>& flux) {
-  std::vector<double> signal, resampled;
-  pixelSignal(volume, p.common, y, x, signal);
-  resampleEnergy(signal, volume.axis(), axis, resampled);
+// Per-cycle flux of one pixel from its render bins (signal in photo-electrons).
+void fluxFromSignal(const std::vector<double>& signal, const TimeAxis& render, const SpadParams& p,
+                    const TimeAxis& axis, const BinKernel& kernel, std::vector<double>& resampled,
+                    std::vector<double>& flux) {
+  resampleEnergy(signal, render, axis, resampled);
   flux.assign(resampled.size(), 0.0);
   convolveConserving(resampled.data(), axis.bins, 1, kernel, flux.data());
   const double background =
@@ -59,82 +61,158 @@ SensorOutput image(const std::string& name, int32_t H, int32_t W, std::vector<fl
 void spadFluxPerCycle(const TransientVolume& volume, const SpadParams& params, const TimeAxis& axis,
                       int32_t y, int32_t x, std::vector<double>& flux) {
   checkParams(params);
-  fluxWithKernel(volume, params, axis, spadKernel(params, axis), y, x, flux);
+  std::vector<double> signal, resampled;
+  pixelSignal(volume, params.common, y, x, signal);
+  fluxFromSignal(signal, volume.axis(), params, axis, spadKernel(params, axis), resampled, flux);
+}
+
+namespace {
+
+/// The SPAD fed pixel by pixel: per-pixel images, the plotted pixels'
+/// histograms, and the counts either held or streamed to an ArrayWriter.
+class SpadStream final : public SensorStream {
+ public:
+  SpadStream(const SpadParams& p, const VolumeShape& shape, const StreamOptions& options)
+      : p_(p),
+        shape_(shape),
+        options_(options),
+        axis_(resolveBins(p.bins, shape.axis)),
+        kernel_(spadKernel(p, axis_)),
+        deadBins_(static_cast<int32_t>(std::lround(p.dead_time_s / axis_.bin_width_s))),
+        plotted_(plotPixels(p.plot_pixels, shape.height, shape.width)),
+        histograms_(plotted_.size()) {
+    checkParams(p);
+    checkChannelSelection(p.common.channel, shape.channels);
+    const std::size_t HW = shape.pixelCount();
+    const float nan = std::numeric_limits<float>::quiet_NaN();
+    depthPeak_.assign(HW, nan);
+    depthCoates_.assign(HW, nan);
+    intensity_.assign(HW, 0.0f);
+    counts_.name = "spad_counts";
+    counts_.kind = SensorOutput::Kind::Array;
+    counts_.shape = {shape.height, shape.width, axis_.bins};
+    counts_.axes = {"y", "x", "t"};
+    counts_.time = axis_;
+    counts_.unit = "counts";
+    counts_.description = "SPAD detections per TDC bin over " + std::to_string(p.cycles) +
+                          " laser cycles (" +
+                          (p.mode == SpadMode::Synchronous ? "synchronous" : "free-running") + ")";
+    if (options.arrays) {
+      writer_ = options.arrays->open(counts_.name, counts_.shape);
+      counts_.streamed = true;
+    } else {
+      counts_.data.resize(HW * axis_.bins);
+    }
+  }
+
+  void consume(const PixelSpan& span) override {
+    TOFSIM_CHECK(span.firstPixel == next_ && next_ + span.pixelCount <= shape_.pixelCount());
+    const auto K = static_cast<std::size_t>(axis_.bins);
+    float* counts = nullptr;
+    if (writer_) {
+      chunk_.resize(span.pixelCount * K);
+      counts = chunk_.data();
+    } else {
+      counts = counts_.data.data() + span.firstPixel * K;
+    }
+    detail::parallelPixels(span.pixelCount, options_.threads, [&](std::size_t b, std::size_t e) {
+      Scratch scratch;
+      for (std::size_t i = b; i < e; ++i) {
+        pixel(span.volume + i * shape_.pixelFloats(), span.firstPixel + i, counts + i * K, scratch);
+      }
+    });
+    for (std::size_t k = 0; k < plotted_.size(); ++k) {
+      const std::size_t px =
+          static_cast<std::size_t>(plotted_[k][1]) * shape_.width + plotted_[k][0];
+      if (px < span.firstPixel || px >= span.firstPixel + span.pixelCount) continue;
+      const float* h = counts + (px - span.firstPixel) * K;
+      histograms_[k].assign(h, h + K);
+    }
+    if (writer_) writer_->append(chunk_.data(), chunk_.size());
+    next_ += span.pixelCount;
+  }
+
+  std::vector<SensorOutput> finish(const Image*) override {
+    TOFSIM_CHECK(next_ == shape_.pixelCount());
+    if (writer_) writer_->close();
+    const int32_t H = shape_.height, W = shape_.width;
+    std::vector<SensorOutput> outputs;
+    outputs.push_back(std::move(counts_));
+    outputs.push_back(image("spad_depth_peak", H, W, std::move(depthPeak_), "m",
+                            "SPAD depth from the histogram peak (c t / 2)"));
+    outputs.push_back(image("spad_depth_coates", H, W, std::move(depthCoates_), "m",
+                            "SPAD depth from the peak of the Coates-corrected histogram"));
+    outputs.push_back(image("spad_intensity", H, W, std::move(intensity_), "counts",
+                            "SPAD total counts per pixel"));
+    for (std::size_t i = 1; i < 4; ++i) {
+      SensorOutput png = outputs[i];
+      png.kind = SensorOutput::Kind::ColorMappedImage;
+      png.colormap = p_.colormap;
+      outputs.push_back(std::move(png));
+    }
+    outputs.push_back(histogramPlot(plotted_, histograms_, axis_));
+    return outputs;
+  }
+
+ private:
+  struct Scratch {
+    std::vector<double> signal, resampled, flux, h;
+    detail::FirstPhotonScratch firstPhoton;
+  };
+
+  void pixel(const float* values, std::size_t px, float* out, Scratch& s) const {
+    const int32_t K = axis_.bins;
+    pixelSignal(values, shape_.axis.bins, shape_.channels, p_.common, s.signal);
+    fluxFromSignal(s.signal, shape_.axis, p_, axis_, kernel_, s.resampled, s.flux);
+    s.h.assign(static_cast<std::size_t>(K), 0.0);
+    Rng rng(options_.seed, pixelStream(kSpadStreamTag, px));
+    const auto N = static_cast<uint64_t>(p_.cycles);
+    if (p_.mode == SpadMode::Synchronous) {
+      detail::firstPhotonHistogram(s.flux, N, rng, s.firstPhoton, s.h);
+    } else {
+      const std::vector<double> m = freeRunningProbabilities(s.flux, deadBins_);
+      for (int32_t i = 0; i < K; ++i) s.h[i] = static_cast<double>(rng.binomial(N, m[i]));
+    }
+    double total = 0.0;
+    for (int32_t i = 0; i < K; ++i) {
+      out[i] = static_cast<float>(s.h[i]);
+      total += s.h[i];
+    }
+    intensity_[px] = static_cast<float>(total);
+    depthPeak_[px] = static_cast<float>(peakDepth_m(s.h, axis_));
+    depthCoates_[px] = static_cast<float>(peakDepth_m(coatesEstimate(s.h, p_.cycles), axis_));
+  }
+
+  const SpadParams p_;
+  const VolumeShape shape_;
+  const StreamOptions options_;
+  const TimeAxis axis_;
+  const BinKernel kernel_;
+  const int32_t deadBins_;
+  const std::vector<std::array<int32_t, 2>> plotted_;
+  std::vector<std::vector<float>> histograms_;
+  SensorOutput counts_;
+  std::unique_ptr<ArrayWriter> writer_;
+  std::vector<float> chunk_;
+  // Written by pixel() from several threads, each pixel by one only.
+  mutable std::vector<float> depthPeak_, depthCoates_, intensity_;
+  std::size_t next_ = 0;
+};
+
+}  // namespace
+
+std::unique_ptr<SensorStream> openSpad(const SpadParams& params, const VolumeShape& shape,
+                                       const StreamOptions& options) {
+  return std::make_unique<SpadStream>(params, shape, options);
 }
 
 std::vector<SensorOutput> runSpad(const TransientVolume& volume, const SpadParams& p,
                                   uint64_t seed) {
-  checkParams(p);
-  checkChannelSelection(p.common.channel, volume);
-  const TimeAxis axis = resolveBins(p.bins, volume.axis());
-  const BinKernel kernel = spadKernel(p, axis);
-  const int32_t H = volume.height(), W = volume.width(), K = axis.bins;
-  const auto deadBins = static_cast<int32_t>(std::lround(p.dead_time_s / axis.bin_width_s));
-  const auto N = static_cast<uint64_t>(p.cycles);
-
-  SensorOutput counts;
-  counts.name = "spad_counts";
-  counts.kind = SensorOutput::Kind::Array;
-  counts.shape = {H, W, K};
-  counts.axes = {"y", "x", "t"};
-  counts.time = axis;
-  counts.unit = "counts";
-  counts.description = "SPAD detections per TDC bin over " + std::to_string(p.cycles) +
-                       " laser cycles (" +
-                       (p.mode == SpadMode::Synchronous ? "synchronous" : "free-running") + ")";
-  counts.data.resize(static_cast<std::size_t>(H) * W * K);
-  const float nan = std::numeric_limits<float>::quiet_NaN();
-  std::vector<float> depthPeak(static_cast<std::size_t>(H) * W, nan);
-  std::vector<float> depthCoates(depthPeak.size(), nan), intensity(depthPeak.size(), 0.0f);
-
-  std::vector<double> flux, h(static_cast<std::size_t>(K));
-  for (int32_t y = 0; y < H; ++y) {
-    for (int32_t x = 0; x < W; ++x) {
-      const std::size_t pixel = static_cast<std::size_t>(y) * W + x;
-      fluxWithKernel(volume, p, axis, kernel, y, x, flux);
-      Rng rng(seed, pixelStream(kSpadStreamTag, pixel));
-      double total = 0.0;
-      if (p.mode == SpadMode::Synchronous) {
-        // Multinomial over "first detection in bin i" and "none", drawn as
-        // sequential conditional binomials: given no detection before bin i,
-        // the first one is in bin i with probability q_i.
-        uint64_t remaining = N;
-        for (int32_t i = 0; i < K; ++i) {
-          const uint64_t n = remaining == 0 ? 0 : rng.binomial(remaining, -std::expm1(-flux[i]));
-          h[i] = static_cast<double>(n);
-          remaining -= n;
-        }
-      } else {
-        const std::vector<double> m = freeRunningProbabilities(flux, deadBins);
-        for (int32_t i = 0; i < K; ++i) h[i] = static_cast<double>(rng.binomial(N, m[i]));
-      }
-      float* out = counts.data.data() + pixel * K;
-      for (int32_t i = 0; i < K; ++i) {
-        out[i] = static_cast<float>(h[i]);
-        total += h[i];
-      }
-      intensity[pixel] = static_cast<float>(total);
-      depthPeak[pixel] = static_cast<float>(peakDepth_m(h, axis));
-      depthCoates[pixel] = static_cast<float>(peakDepth_m(coatesEstimate(h, p.cycles), axis));
-    }
-  }
-
-  std::vector<SensorOutput> outputs;
-  outputs.push_back(std::move(counts));
-  outputs.push_back(image("spad_depth_peak", H, W, std::move(depthPeak), "m",
-                          "SPAD depth from the histogram peak (c t / 2)"));
-  outputs.push_back(image("spad_depth_coates", H, W, std::move(depthCoates), "m",
-                          "SPAD depth from the peak of the Coates-corrected histogram"));
-  outputs.push_back(
-      image("spad_intensity", H, W, std::move(intensity), "counts", "SPAD total counts per pixel"));
-  for (std::size_t i = 1; i < 4; ++i) {
-    SensorOutput png = outputs[i];
-    png.kind = SensorOutput::Kind::ColorMappedImage;
-    png.colormap = p.colormap;
-    outputs.push_back(std::move(png));
-  }
-  outputs.push_back(histogramPlot(outputs[0], p.plot_pixels, axis, H, W));
-  return outputs;
+  StreamOptions options;
+  options.seed = seed;
+  const std::unique_ptr<SensorStream> stream = openSpad(p, shapeOf(volume), options);
+  stream->consume(wholeVolume(volume));
+  return stream->finish(nullptr);
 }
 
 }  // namespace tofsim::sensors

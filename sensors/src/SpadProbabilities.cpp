@@ -57,6 +57,7 @@ std::vector<double> coatesEstimate(const std::vector<double>& counts, int64_t cy
   for (std::size_t i = 0; i < counts.size(); ++i) {
     if (remaining <= 0.0) break;
     const double h = counts[i];
+    if (h == 0.0) continue;  // -log1p(-0) is 0: most bins of a sparse histogram
     flux[i] = h >= remaining ? std::log(remaining + 1.0) : -std::log1p(-h / remaining);
     remaining -= h;
   }

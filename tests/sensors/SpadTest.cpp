@@ -101,6 +101,36 @@ TEST(SpadTest, HighFluxPileUpAndCoatesRecoversFlux) {
   EXPECT_GT(chi2, dof - 16 - 5.0 * std::sqrt(2.0 * dof));
 }
 
+// The synchronous histogram is drawn detection by detection (inverse CDF)
+// when there are few per bin and by sequential binomials otherwise: both
+// follow the exact first-photon law, pile-up included. 40 bins of flux 0.05
+// (a detection in 86 % of the cycles): 200 cycles take the first draw, 5000
+// the second. Pearson's chi-square over 400 pixels, bins plus "none".
+TEST(SpadTest, BothSynchronousDrawsFollowTheFirstPhotonLaw) {
+  const int K = 40;
+  TransientVolume v = makeVolume(20, 20, 0.0, kW, K);
+  for (int y = 0; y < 20; ++y)
+    for (int x = 0; x < 20; ++x)
+      for (int t = 0; t < K; ++t) v.at(y, x, t, 0) = 0.05f;
+  std::vector<double> flux(K);
+  for (int t = 0; t < K; ++t) flux[t] = static_cast<double>(0.05f);
+  const std::vector<double> P = firstPhotonProbabilities(flux);
+  for (const int64_t cycles : {200, 5000}) {
+    const std::vector<double> h = pooledCounts(runSpad(v, baseParams(cycles), 7));
+    const double n = 400.0 * static_cast<double>(cycles);
+    double chi2 = 0.0, detected = 0.0, none = 1.0;
+    for (int t = 0; t < K; ++t) {
+      chi2 += (h[t] - n * P[t]) * (h[t] - n * P[t]) / (n * P[t]);
+      detected += h[t];
+      none -= P[t];
+    }
+    chi2 += (n - detected - n * none) * (n - detected - n * none) / (n * none);
+    // 40 degrees of freedom: P(chi2 > 73.4) = 0.001.
+    EXPECT_LT(chi2, 73.4) << cycles << " cycles";
+    EXPECT_GT(chi2, 17.9) << cycles << " cycles";  // P(chi2 < 17.9) = 0.001: not too good
+  }
+}
+
 TEST(SpadTest, JitterBroadensADeltaToTheConfiguredWidthAndTailShiftsTheMean) {
   const double w = 4e-12;
   TransientVolume v = makeVolume(1, 1, 0.0, w, 600);

@@ -134,21 +134,25 @@ void checkAxisAfterRender(const config::RunConfig& config, const capture::Render
                 sides[0] + (sides.size() > 1 ? " and " + sides[1] : "") +
                     suggestAxis(axis, b, before, after, !(result.onAxisEnergy > 0.0)));
   }
-  if (sink.volume() != nullptr) checkSensorWindows(config, *sink.volume());
 }
 
 void checkSensorWindows(const config::RunConfig& config, const TransientVolume& volume) {
   for (std::size_t i = 0; i < config.sensors.size(); ++i) {
-    const sensors::SensorSpec& spec = config.sensors[i];
-    const double lost = sensors::windowLossFraction(spec.params, volume);
-    if (lost <= kWindowLossWarning) continue;
-    warnOrThrow(config, "sensors[" + std::to_string(i) + "]",
-                "sensor '" + spec.name + "' (" + sensors::sensorTypeName(spec.params) +
-                    "): its instrument window drops " + percent(lost) +
-                    " of the light it is given; without bin_offset and bins it takes the "
-                    "render's time axis (" +
-                    ns(volume.axis().start_s) + " .. " + ns(volume.axis().end_s()) + ")");
+    checkSensorWindow(config, i, sensors::windowLossFraction(config.sensors[i].params, volume),
+                      volume.axis());
   }
+}
+
+void checkSensorWindow(const config::RunConfig& config, std::size_t index, double lost,
+                       const TimeAxis& axis) {
+  if (lost <= kWindowLossWarning) return;
+  const sensors::SensorSpec& spec = config.sensors[index];
+  warnOrThrow(config, "sensors[" + std::to_string(index) + "]",
+              "sensor '" + spec.name + "' (" + sensors::sensorTypeName(spec.params) +
+                  "): its instrument window drops " + percent(lost) +
+                  " of the light it is given; without bin_offset and bins it takes the "
+                  "render's time axis (" +
+                  ns(axis.start_s) + " .. " + ns(axis.end_s()) + ")");
 }
 
 }  // namespace tofsim::pipeline

@@ -24,8 +24,8 @@ std::size_t zeroNonFinite(float* values, std::size_t count) {
 
 OutputSink::OutputSink(const std::filesystem::path& directory, const config::OutputConfig& output,
                        int32_t width, int32_t height, const TimeAxis& axis, bool keepInMemory,
-                       bool keepDirectInMemory)
-    : width_(width), height_(height), axis_(axis) {
+                       Forward forward)
+    : width_(width), height_(height), axis_(axis), forward_(std::move(forward)) {
   const io::NpyShape shape = {static_cast<std::size_t>(height), static_cast<std::size_t>(width),
                               static_cast<std::size_t>(axis.bins), kChannels};
   if (output.transient) {
@@ -39,9 +39,6 @@ OutputSink::OutputSink(const std::filesystem::path& directory, const config::Out
   }
   steady_.assign(static_cast<std::size_t>(width) * height * kChannels, 0.0);
   if (keepInMemory) volume_.emplace(width, height, axis, capture::defaultChannelNames(kChannels));
-  if (keepDirectInMemory) {
-    direct_.emplace(width, height, axis, capture::defaultChannelNames(kChannels));
-  }
 }
 
 void OutputSink::consume(const capture::Segment& segment) {
@@ -69,7 +66,9 @@ void OutputSink::consume(const capture::Segment& segment) {
   }
   const std::size_t offset = segment.firstPixel * pixelFloats;
   if (volume_) std::copy_n(scratch_.data(), floats, volume_->data() + offset);
-  if (direct_) std::copy_n(directScratch_.data(), floats, direct_->data() + offset);
+  if (forward_) {
+    forward_({segment.firstPixel, segment.pixelCount, scratch_.data(), directScratch_.data()});
+  }
 }
 
 void OutputSink::commit() {

@@ -1,6 +1,7 @@
 #include "tofsim/pipeline/RenderRun.h"
 
 #include <cstdio>
+#include <optional>
 
 #include "tofsim/imaging/Pictures.h"
 #include "tofsim/imaging/Video.h"
@@ -16,7 +17,7 @@
 #include "tofsim/pipeline/PlotRanges.h"
 #include "tofsim/pipeline/Progress.h"
 #include "tofsim/pipeline/RendererFactory.h"
-#include "tofsim/pipeline/SenseRun.h"
+#include "tofsim/pipeline/SensorStreams.h"
 #include "tofsim/scene/GltfLoader.h"
 #include "tofsim/util/AtomicFile.h"
 #include "tofsim/util/Error.h"
@@ -141,9 +142,19 @@ void writeOutputs(const config::RunConfig& config, const capture::RenderJob& job
   // The sensors see what the render saves (the total volume, plus the direct
   // component and the depth when the output writes them), so `tofsim sense`
   // on the saved folder reproduces their outputs byte for byte.
-  const bool sensing = !config.sensors.empty();
+  // They are fed each segment as it is written, so that no one holds the
+  // whole volume unless the video or the frames (time-major: every pixel of
+  // one bin) need it.
+  std::optional<SensorStreams> sensorStreams;
+  if (!config.sensors.empty()) {
+    const sensors::VolumeShape shape{job.camera.width, job.camera.height, capture::kChannels,
+                                     job.settings.time};
+    sensorStreams.emplace(config, shape, out.direct, dir);
+  }
+  OutputSink::Forward toSensors;
+  if (sensorStreams) toSensors = [&](const sensors::PixelSpan& s) { sensorStreams->consume(s); };
   OutputSink sink(dir, out, job.camera.width, job.camera.height, job.settings.time,
-                  out.frames || out.video || out.frame_pngs || sensing, sensing && out.direct);
+                  out.frames || out.video || out.frame_pngs, toSensors);
   const capture::ProgressCallback onProgress = [&](std::size_t done, std::size_t total,
                                                    const std::string& what) {
     progress.update(done, total, what);
@@ -159,6 +170,7 @@ void writeOutputs(const config::RunConfig& config, const capture::RenderJob& job
                  summary.result.nonFiniteRejected);
   }
   checkAxisAfterRender(config, job, sink, summary.result);  // throws under --strict
+  if (sensorStreams) sensorStreams->checkWindows();
   sink.commit();
   if (out.transient) summary.files.push_back("transient.npy");
   if (out.direct) summary.files.push_back("direct.npy");
@@ -193,17 +205,14 @@ void writeOutputs(const config::RunConfig& config, const capture::RenderJob& job
         transientMetadataJson(config, job, summary.result, summary.backend, summary.device));
     summary.files.push_back("transient.json");
   }
-  if (sensing) {
-    SensorVolumes volumes;
-    volumes.volume = sink.volume();
-    volumes.directOnly = sink.directVolume();
-    volumes.depth_m = out.depth ? &summary.result.depth_m : nullptr;
-    for (std::string& f : runConfiguredSensors(config, volumes, dir, progress)) {
+  if (sensorStreams) {
+    const Image* depth = out.depth ? &summary.result.depth_m : nullptr;
+    for (std::string& f : sensorStreams->finish(depth, progress)) {
       summary.files.push_back(std::move(f));
     }
   }
   std::vector<std::string> untaken = ranges.untaken("");
-  if (sensing) {  // runConfiguredSensors reported the sensors' keys
+  if (sensorStreams) {  // SensorStreams::finish reported the sensors' keys
     std::erase_if(untaken, [](const std::string& k) { return k.rfind("sensors/", 0) == 0; });
   }
   warnUntakenPlotRanges(untaken);

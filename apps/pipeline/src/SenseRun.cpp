@@ -4,9 +4,9 @@
 #include <cstdio>
 
 #include "tofsim/pipeline/AxisReport.h"
+#include "tofsim/pipeline/PlotRanges.h"
 #include "tofsim/pipeline/SavedVolume.h"
-#include "tofsim/pipeline/SensorWriter.h"
-#include "tofsim/sensors/RunSensor.h"
+#include "tofsim/pipeline/SensorStreams.h"
 #include "tofsim/util/Error.h"
 #include "tofsim/util/Interrupt.h"
 #include "tofsim/util/StagedFolder.h"
@@ -49,45 +49,17 @@ std::vector<std::string> runConfiguredSensors(const config::RunConfig& config,
                                               const std::filesystem::path& outputDirectory,
                                               const Progress& progress) {
   TOFSIM_CHECK(volumes.volume != nullptr);
-  std::vector<std::string> files;
-  PlotRanges ranges(config.output.plot_ranges);
-  for (std::size_t i = 0; i < config.sensors.size(); ++i) {
-    throwIfInterrupted();
-    const sensors::SensorSpec& spec = config.sensors[i];
-    const auto start = std::chrono::steady_clock::now();
-    sensors::SensorInputs inputs;
-    inputs.volume = volumes.volume;
-    inputs.directOnly = volumes.directOnly;
-    inputs.groundTruthDepth_m = volumes.depth_m;
-    inputs.seed = config.render.seed;
-    std::vector<sensors::SensorOutput> outputs;
-    SensorRunInfo run{&spec, volumes.volume->axis(), inputs.seed, {}};
-    try {
-      // Warnings go to stderr even when quiet: they say the outputs mislead.
-      run.warnings = sensors::sensorWarnings(spec, inputs);
-      for (const std::string& w : run.warnings) {
-        std::fprintf(stderr, "tofsim: warning: sensor '%s' (%s): %s\n", spec.name.c_str(),
-                     sensors::sensorTypeName(spec.params), w.c_str());
-      }
-      outputs = sensors::runSensor(spec, inputs);
-    } catch (const InputError& e) {
-      // The sensor library does not know the config; say which entry failed.
-      throw InputError(
-          FileLoc{config.config_file.string()}, "sensors[" + std::to_string(i) + "]",
-          "sensor '" + spec.name + "' (" + sensors::sensorTypeName(spec.params) + "): " + e.what());
-    }
-    const std::filesystem::path relative = std::filesystem::path("sensors") / spec.name;
-    for (const std::string& f :
-         writeSensorOutputs(outputDirectory / relative, outputs, run, ranges)) {
-      files.push_back((relative / f).string());
-    }
-    char line[160];
-    std::snprintf(line, sizeof line, "sensor '%s' (%s): %zu outputs in %.2f s", spec.name.c_str(),
-                  sensors::sensorTypeName(spec.params), outputs.size(), secondsSince(start));
-    progress.message(line);
+  const TransientVolume& volume = *volumes.volume;
+  if (const TransientVolume* d = volumes.directOnly) {
+    TOFSIM_CHECK(d->width() == volume.width() && d->height() == volume.height() &&
+                 d->bins() == volume.bins() && d->channels() == volume.channels());
   }
-  warnUntakenPlotRanges(ranges.untaken("sensors/"));
-  return files;
+  // The whole volume as one span: the same code, and so the same bytes, as a
+  // render's sensors fed segment by segment.
+  SensorStreams streams(config, sensors::shapeOf(volume), volumes.directOnly != nullptr,
+                        outputDirectory);
+  streams.consume(sensors::wholeVolume(volume, volumes.directOnly));
+  return streams.finish(volumes.depth_m, progress);
 }
 
 SenseSummary runSense(const config::RunConfig& config, const SenseOptions& options) {

@@ -78,13 +78,15 @@ std::vector<std::string> writeSensorOutputs(const std::filesystem::path& directo
   std::filesystem::create_directories(directory);
   std::vector<std::string> files;
   for (const SensorOutput& o : outputs) {
-    TOFSIM_CHECK_MSG(static_cast<int64_t>(o.data.size()) == o.elementCount(), o.name);
+    TOFSIM_CHECK_MSG(o.streamed || static_cast<int64_t>(o.data.size()) == o.elementCount(), o.name);
     files.push_back(sensorFileName(o));
     const std::filesystem::path path = directory / files.back();
     switch (o.kind) {
       case SensorOutput::Kind::Array: {
         const io::NpyShape shape(o.shape.begin(), o.shape.end());
-        io::writeNpy(path, shape, o.data.data());
+        // A streamed array is on disk already (SensorStreams.h); its shape,
+        // axes and time still describe it in the metadata below.
+        if (!o.streamed) io::writeNpy(path, shape, o.data.data());
         break;
       }
       case SensorOutput::Kind::Image: {

@@ -57,10 +57,17 @@ TimeAxis resolveBins(const InstrumentBins& bins, const TimeAxis& render);
 
 /// Throws InputError when the selection does not fit the volume's channels.
 void checkChannelSelection(const ChannelSelection& channel, const TransientVolume& volume);
+/// The same for a volume of `channels` channels.
+void checkChannelSelection(const ChannelSelection& channel, int32_t channels);
 
 /// Expected photo-electrons per render bin of pixel (y, x): selected channel
 /// times the radiometric scale. `out` gets volume.bins() values.
 void pixelSignal(const TransientVolume& volume, const SensorCommon& common, int32_t y, int32_t x,
+                 std::vector<double>& out);
+
+/// The same for one pixel's `bins` x `channels` floats, wherever they are
+/// (a streamed segment: SensorStream.h).
+void pixelSignal(const float* pixel, int32_t bins, int32_t channels, const SensorCommon& common,
                  std::vector<double>& out);
 
 /// Moves energy from the bins of `from` to those of `to`, each source bin's

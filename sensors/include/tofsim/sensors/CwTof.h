@@ -6,12 +6,14 @@
 // parameters: sensors/README.md, "Continuous-wave ToF".
 
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "tofsim/sensors/Common.h"
 #include "tofsim/sensors/SensorOutput.h"
+#include "tofsim/sensors/SensorStream.h"
 #include "tofsim/volume/TransientVolume.h"
 
 namespace tofsim::sensors {
@@ -84,5 +86,11 @@ std::vector<std::string> cwtofWarnings(const CwTofParams& params, const TimeAxis
 /// wrap never reads as multipath. Every Image comes with a ColorMappedImage.
 std::vector<SensorOutput> runCwTof(const TransientVolume& volume, const CwTofParams& params,
                                    uint64_t seed, const CwTofReferences& references = {});
+
+/// The same model fed as the volume streams (SensorStream.h); spans carry
+/// the direct component when options.directOnly, and finish() takes the
+/// ground-truth depth. Throws InputError when the parameters do not fit.
+std::unique_ptr<SensorStream> openCwTof(const CwTofParams& params, const VolumeShape& shape,
+                                        const StreamOptions& options);
 
 }  // namespace tofsim::sensors

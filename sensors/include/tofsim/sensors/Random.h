@@ -2,7 +2,9 @@
 // Reproducible random numbers: PCG32 (O'Neill 2014) seeded through SplitMix64,
 // and samplers written on top of it, so that the same seed gives the same bytes
 // on every platform's standard library. Each pixel gets its own stream derived
-// from (seed, stream id), so results do not depend on iteration order.
+// from (seed, stream id), so results do not depend on iteration order. The
+// generator's step and the uniform are inline: the SPAD draws one per
+// detection or bin.
 
 #include <cstdint>
 
@@ -14,9 +16,19 @@ class Rng {
  public:
   Rng(uint64_t seed, uint64_t stream);
 
-  uint32_t nextU32();
+  uint32_t nextU32() {
+    const uint64_t old = state_;
+    state_ = old * 6364136223846793005ull + inc_;
+    const auto xorshifted = static_cast<uint32_t>(((old >> 18u) ^ old) >> 27u);
+    const auto rot = static_cast<uint32_t>(old >> 59u);
+    return (xorshifted >> rot) | (xorshifted << ((32u - rot) & 31u));
+  }
   /// Uniform in [0, 1) with 53 random bits.
-  double uniform();
+  double uniform() {
+    const uint64_t hi = nextU32() >> 5;  // 27 bits
+    const uint64_t lo = nextU32() >> 6;  // 26 bits
+    return static_cast<double>((hi << 26) | lo) * 0x1.0p-53;
+  }
   /// Standard normal (Box-Muller, both values used).
   double normal();
   double normal(double mean, double sigma) { return mean + sigma * normal(); }

@@ -24,9 +24,12 @@ struct SensorOutput {
   std::string name;  ///< file stem, e.g. "spad_counts", "streak_row042"
   Kind kind = Kind::Array;
   std::vector<int64_t> shape;  ///< C order
-  std::vector<float> data;     ///< product(shape) values
-  std::string unit;            ///< unit of the values, e.g. "m", "counts", "photo-electrons"
-  std::string description;     ///< one line, usable as a plot title or colour bar label
+  std::vector<float> data;     ///< product(shape) values, or none when `streamed`
+  /// Array only: the values went out through an ArrayWriter (SensorStream.h)
+  /// as they were made, and `data` is empty.
+  bool streamed = false;
+  std::string unit;         ///< unit of the values, e.g. "m", "counts", "photo-electrons"
+  std::string description;  ///< one line, usable as a plot title or colour bar label
 
   // What the numbers mean, for the metadata written beside each file
   // (sensors/README.md, "Output metadata").

@@ -8,16 +8,27 @@
 
 #include <concepts>
 #include <cstdint>
+#include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "tofsim/sensors/CwTof.h"
 #include "tofsim/sensors/SensorInputs.h"
 #include "tofsim/sensors/SensorOutput.h"
+#include "tofsim/sensors/SensorStream.h"
 #include "tofsim/sensors/Spad.h"
 #include "tofsim/sensors/Streak.h"
 
 namespace tofsim::sensors {
+
+/// What of a model its window loss depends on: its channel selection, its
+/// instrument bins and the image rows it records (all when empty).
+struct InstrumentWindow {
+  SensorCommon common;
+  InstrumentBins bins;
+  std::vector<int32_t> rows;
+};
 
 /// Specialised once per model, below; never defined for anything else.
 template <typename Params>
@@ -25,50 +36,60 @@ struct SensorType;
 
 /// What a descriptor must provide.
 template <typename P>
-concept SensorModel = requires(const P& p, const SensorInputs& in, const TransientVolume& v,
-                               int32_t width, int32_t height, const TimeAxis& axis) {
+concept SensorModel = requires(const P& p, const VolumeShape& shape, const StreamOptions& options,
+                               const Image* depth, int32_t width, int32_t height,
+                               const TimeAxis& axis) {
   /// The `type:` of the config and the name in logs.
   { SensorType<P>::name } -> std::convertible_to<const char*>;
-  /// Runs the model (throws InputError when the spec does not fit the inputs).
-  { SensorType<P>::run(p, in) } -> std::same_as<std::vector<SensorOutput>>;
-  /// What the person running it should know about these inputs (e.g. a scene
-  /// deeper than a CW-ToF's unambiguous range); empty when all is well.
-  { SensorType<P>::warnings(p, in) } -> std::same_as<std::vector<std::string>>;
+  /// The model, to be fed the volume as it streams (SensorStream.h); throws
+  /// InputError when the spec does not fit the volume's shape.
+  { SensorType<P>::open(p, shape, options) } -> std::same_as<std::unique_ptr<SensorStream>>;
+  /// What the person running it should know about a render with this time
+  /// axis and ground-truth depth (nullptr when none; e.g. a scene deeper than
+  /// a CW-ToF's unambiguous range); empty when all is well.
+  { SensorType<P>::warnings(p, axis, depth) } -> std::same_as<std::vector<std::string>>;
   /// Upper estimate of the bytes its files take for an image and render axis.
   { SensorType<P>::outputBytes(p, width, height, axis) } -> std::same_as<std::uintmax_t>;
-  /// Fraction of the light it is given that its instrument window drops.
-  { SensorType<P>::windowLossFraction(p, v) } -> std::same_as<double>;
+  /// The instrument window light can fall outside of (WindowLoss.h), or
+  /// none for a model that integrates every bin.
+  { SensorType<P>::window(p) } -> std::same_as<std::optional<InstrumentWindow>>;
 };
 
 template <>
 struct SensorType<StreakParams> {
   static constexpr const char* name = "streak";
-  static std::vector<SensorOutput> run(const StreakParams& p, const SensorInputs& in);
-  static std::vector<std::string> warnings(const StreakParams& p, const SensorInputs& in);
+  static std::unique_ptr<SensorStream> open(const StreakParams& p, const VolumeShape& shape,
+                                            const StreamOptions& options);
+  static std::vector<std::string> warnings(const StreakParams& p, const TimeAxis& axis,
+                                           const Image* groundTruthDepth_m);
   static std::uintmax_t outputBytes(const StreakParams& p, int32_t width, int32_t height,
                                     const TimeAxis& render);
-  static double windowLossFraction(const StreakParams& p, const TransientVolume& volume);
+  static std::optional<InstrumentWindow> window(const StreakParams& p);
 };
 
 template <>
 struct SensorType<SpadParams> {
   static constexpr const char* name = "spad";
-  static std::vector<SensorOutput> run(const SpadParams& p, const SensorInputs& in);
-  static std::vector<std::string> warnings(const SpadParams& p, const SensorInputs& in);
+  static std::unique_ptr<SensorStream> open(const SpadParams& p, const VolumeShape& shape,
+                                            const StreamOptions& options);
+  static std::vector<std::string> warnings(const SpadParams& p, const TimeAxis& axis,
+                                           const Image* groundTruthDepth_m);
   static std::uintmax_t outputBytes(const SpadParams& p, int32_t width, int32_t height,
                                     const TimeAxis& render);
-  static double windowLossFraction(const SpadParams& p, const TransientVolume& volume);
+  static std::optional<InstrumentWindow> window(const SpadParams& p);
 };
 
 template <>
 struct SensorType<CwTofParams> {
   static constexpr const char* name = "cwtof";
-  static std::vector<SensorOutput> run(const CwTofParams& p, const SensorInputs& in);
-  static std::vector<std::string> warnings(const CwTofParams& p, const SensorInputs& in);
+  static std::unique_ptr<SensorStream> open(const CwTofParams& p, const VolumeShape& shape,
+                                            const StreamOptions& options);
+  static std::vector<std::string> warnings(const CwTofParams& p, const TimeAxis& axis,
+                                           const Image* groundTruthDepth_m);
   static std::uintmax_t outputBytes(const CwTofParams& p, int32_t width, int32_t height,
                                     const TimeAxis& render);
   /// CW-ToF integrates every render bin: it has no window to lose light from.
-  static double windowLossFraction(const CwTofParams& p, const TransientVolume& volume);
+  static std::optional<InstrumentWindow> window(const CwTofParams& p);
 };
 
 }  // namespace tofsim::sensors

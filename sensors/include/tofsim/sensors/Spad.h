@@ -2,16 +2,19 @@
 // Single-photon avalanche diode with a time-to-digital converter, recording a
 // per-pixel histogram of detections over N laser cycles, in synchronous
 // (first-photon, pile-up) or free-running (dead time) mode. Counts are drawn
-// with the exact per-cycle probabilities by binomial sampling, so the cost does
-// not grow with N. Model and parameters: sensors/README.md, "SPAD".
+// exactly from the per-cycle probabilities (detection by detection by inverse
+// CDF when there are few, else by binomial sampling, so the cost does not grow
+// with N). Model and parameters: sensors/README.md, "SPAD".
 
 #include <array>
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "tofsim/sensors/Common.h"
 #include "tofsim/sensors/SensorOutput.h"
+#include "tofsim/sensors/SensorStream.h"
 #include "tofsim/volume/TransientVolume.h"
 
 namespace tofsim::sensors {
@@ -61,5 +64,11 @@ std::vector<double> coatesEstimate(const std::vector<double>& counts, int64_t cy
 /// "spad_histograms" HistogramPlot (pixels, bins).
 std::vector<SensorOutput> runSpad(const TransientVolume& volume, const SpadParams& params,
                                   uint64_t seed);
+
+/// The same model fed as the volume streams (SensorStream.h); spad_counts
+/// goes to options.arrays when given. Throws InputError when the parameters
+/// do not fit the shape (channel, plot pixels).
+std::unique_ptr<SensorStream> openSpad(const SpadParams& params, const VolumeShape& shape,
+                                       const StreamOptions& options);
 
 }  // namespace tofsim::sensors

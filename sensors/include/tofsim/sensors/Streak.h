@@ -5,11 +5,13 @@
 // gain and saturation. Parameters: sensors/README.md, "Streak camera".
 
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "tofsim/sensors/Common.h"
 #include "tofsim/sensors/SensorOutput.h"
+#include "tofsim/sensors/SensorStream.h"
 #include "tofsim/volume/TransientVolume.h"
 
 namespace tofsim::sensors {
@@ -31,6 +33,12 @@ struct StreakParams {
 /// of shape (T, W) in ADU, and the same name as a ColorMappedImage.
 std::vector<SensorOutput> runStreak(const TransientVolume& volume, const StreakParams& params,
                                     uint64_t seed);
+
+/// The same model fed as the volume streams (SensorStream.h). It holds the
+/// image of each recorded row (T x W values), and the render bins of one row
+/// at a time. Throws InputError for a channel or row that does not fit.
+std::unique_ptr<SensorStream> openStreak(const StreakParams& params, const VolumeShape& shape,
+                                         const StreamOptions& options);
 
 /// Name of the output for image row `row`: "streak_row042".
 std::string streakRowName(int32_t row);

@@ -57,7 +57,8 @@ AxisLossFractions axisLossFractions(const capture::RenderResult& result);
 
 /// After rendering, before the outputs are committed: records the binned
 /// energy in result.onAxisEnergy, warns (config.strict: throws InputError)
-/// when the axis or a sensor window lost more than kWindowLossWarning.
+/// when the axis lost more than kWindowLossWarning. (The sensors' windows
+/// are checked as they stream: SensorStreams::checkWindows.)
 void checkAxisAfterRender(const config::RunConfig& config, const capture::RenderJob& job,
                           const OutputSink& sink, capture::RenderResult& result);
 
@@ -65,5 +66,10 @@ void checkAxisAfterRender(const config::RunConfig& config, const capture::Render
 /// run on: warns (config.strict: throws InputError) when it drops more than
 /// kWindowLossWarning of the light the sensor sees.
 void checkSensorWindows(const config::RunConfig& config, const TransientVolume& volume);
+
+/// The same for sensor `index` of the config, whose window drops the fraction
+/// `lost` of its light from a volume with time axis `axis`.
+void checkSensorWindow(const config::RunConfig& config, std::size_t index, double lost,
+                       const TimeAxis& axis);
 
 }  // namespace tofsim::pipeline

@@ -9,12 +9,14 @@
 // (nonFiniteValues()), and the run reports the count.
 
 #include <filesystem>
+#include <functional>
 #include <memory>
 #include <optional>
 
 #include "tofsim/capture/SegmentSink.h"
 #include "tofsim/config/RunConfig.h"
 #include "tofsim/io/Npy.h"
+#include "tofsim/sensors/SensorStream.h"
 #include "tofsim/volume/TransientVolume.h"
 
 namespace tofsim::pipeline {
@@ -25,20 +27,23 @@ std::size_t zeroNonFinite(float* values, std::size_t count);
 
 class OutputSink : public capture::SegmentSink {
  public:
-  /// keepInMemory: also collect the total volume (for frames and sensors);
-  /// keepDirectInMemory: also the direct component (for the sensors).
+  /// Each segment's values as written (total and direct, non-finite values
+  /// zeroed), for the sensors (SensorStreams.h).
+  using Forward = std::function<void(const sensors::PixelSpan&)>;
+
+  /// keepInMemory: also collect the total volume (for the video and frames);
+  /// forward: called with every segment's values once they are written.
   OutputSink(const std::filesystem::path& directory, const config::OutputConfig& output,
              int32_t width, int32_t height, const TimeAxis& axis, bool keepInMemory,
-             bool keepDirectInMemory = false);
+             Forward forward = {});
   void consume(const capture::Segment& segment) override;
   /// Renames the streamed files into place.
   void commit();
 
   /// sum over t of transient.npy, accumulated in double.
   Image steady() const;
-  /// Only when keepInMemory (volume) or keepDirectInMemory (directVolume).
+  /// Only when keepInMemory.
   const TransientVolume* volume() const { return volume_ ? &*volume_ : nullptr; }
-  const TransientVolume* directVolume() const { return direct_ ? &*direct_ : nullptr; }
   /// How many values were NaN or infinite and replaced by 0 so far.
   std::size_t nonFiniteValues() const { return nonFinite_; }
 
@@ -50,7 +55,7 @@ class OutputSink : public capture::SegmentSink {
   std::vector<float> scratch_, directScratch_, indirectScratch_;
   std::size_t nonFinite_ = 0;
   std::optional<TransientVolume> volume_;
-  std::optional<TransientVolume> direct_;
+  Forward forward_;
 };
 
 }  // namespace tofsim::pipeline

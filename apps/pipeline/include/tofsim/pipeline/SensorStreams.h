@@ -1,0 +1,59 @@
+#pragma once
+// The configured sensors (config.sensors) fed the volume span by span as it
+// streams out of the renderer, or from a saved volume in one span: what a run
+// with sensors holds is the current segment and the sensors' own state
+// (sensors/SensorStream.h), never the whole volume. Arrays as large as a
+// volume channel (spad_counts) are written to their .npy as they are made.
+// Outputs go to OUTDIR/sensors/<sensor name>/.
+//
+// Randomness: every sensor is seeded with config.render.seed and every pixel
+// draws from its own stream, so the bytes do not depend on how the volume is
+// cut into segments: a render's sensors and `tofsim sense` on its saved
+// volume write the same files.
+
+#include <chrono>
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "tofsim/config/RunConfig.h"
+#include "tofsim/pipeline/Progress.h"
+#include "tofsim/sensors/SensorStream.h"
+#include "tofsim/sensors/WindowLoss.h"
+
+namespace tofsim::pipeline {
+
+class SensorStreams {
+ public:
+  /// Opens every configured sensor for a volume of `shape`; spans carry the
+  /// direct component when `withDirect`. A sensor that does not fit the
+  /// volume (a row outside the image, ...) throws an InputError naming the
+  /// config file and the sensor, before any value arrives.
+  SensorStreams(const config::RunConfig& config, const sensors::VolumeShape& shape, bool withDirect,
+                const std::filesystem::path& outputDirectory);
+  ~SensorStreams();
+  SensorStreams(const SensorStreams&) = delete;
+  SensorStreams& operator=(const SensorStreams&) = delete;
+
+  /// Spans in order, covering the image once.
+  void consume(const sensors::PixelSpan& span);
+  /// Warns (throws under --strict) for each sensor whose instrument window
+  /// drops a noticeable part of the light it was given. After the last span.
+  void checkWindows() const;
+  /// Prints the sensors' warnings, writes their outputs and the metadata of
+  /// each (SensorWriter.h: the warnings included, pictures in the ranges of
+  /// output.plot_ranges), warns of plot_ranges keys under "sensors/" that no
+  /// picture took, and returns the files written, relative to the output
+  /// directory ("sensors/spad/spad_counts.npy").
+  std::vector<std::string> finish(const Image* groundTruthDepth_m, const Progress& progress);
+
+ private:
+  struct Entry;
+  const config::RunConfig& config_;
+  sensors::VolumeShape shape_;
+  std::filesystem::path outputDirectory_;
+  std::vector<std::unique_ptr<Entry>> entries_;
+};
+
+}  // namespace tofsim::pipeline

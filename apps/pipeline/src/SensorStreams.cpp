@@ -1,0 +1,149 @@
+#include "tofsim/pipeline/SensorStreams.h"
+
+#include <cstdio>
+
+#include "tofsim/io/Npy.h"
+#include "tofsim/pipeline/AxisReport.h"
+#include "tofsim/pipeline/PlotRanges.h"
+#include "tofsim/pipeline/SensorWriter.h"
+#include "tofsim/sensors/RunSensor.h"
+#include "tofsim/util/Error.h"
+#include "tofsim/util/Interrupt.h"
+
+namespace tofsim::pipeline {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+// An Array output appended to its .npy (temporary until close()).
+class NpyArrayWriter final : public sensors::ArrayWriter {
+ public:
+  NpyArrayWriter(const std::filesystem::path& path, const std::vector<int64_t>& shape)
+      : writer_(path, io::NpyShape(shape.begin(), shape.end())) {}
+  void append(const float* values, std::size_t count) override { writer_.append(values, count); }
+  void close() override { writer_.commit(); }
+
+ private:
+  io::NpyStreamWriter writer_;
+};
+
+class NpyArrayStreams final : public sensors::ArrayStreams {
+ public:
+  explicit NpyArrayStreams(std::filesystem::path directory) : directory_(std::move(directory)) {}
+  std::unique_ptr<sensors::ArrayWriter> open(const std::string& name,
+                                             const std::vector<int64_t>& shape) override {
+    std::filesystem::create_directories(directory_);
+    return std::make_unique<NpyArrayWriter>(directory_ / (name + ".npy"), shape);
+  }
+
+ private:
+  std::filesystem::path directory_;
+};
+
+}  // namespace
+
+struct SensorStreams::Entry {
+  std::size_t index = 0;           // in config.sensors
+  std::filesystem::path relative;  // sensors/<name>
+  NpyArrayStreams arrays;
+  std::unique_ptr<sensors::SensorStream> stream;
+  sensors::WindowLossMeter meter;
+  Clock::duration busy{};  // time spent in the model, for the log
+
+  Entry(std::size_t i, std::filesystem::path rel, const std::filesystem::path& root,
+        const sensors::SensorSpec& spec, const sensors::VolumeShape& shape)
+      : index(i),
+        relative(std::move(rel)),
+        arrays(root / relative),
+        meter(sensors::instrumentWindow(spec.params), shape) {}
+};
+
+namespace {
+
+// The sensor library does not know the config; say which entry failed.
+[[noreturn]] void rethrowLocated(const config::RunConfig& config, std::size_t i,
+                                 const InputError& e) {
+  const sensors::SensorSpec& spec = config.sensors[i];
+  throw InputError(
+      FileLoc{config.config_file.string()}, "sensors[" + std::to_string(i) + "]",
+      "sensor '" + spec.name + "' (" + sensors::sensorTypeName(spec.params) + "): " + e.what());
+}
+
+}  // namespace
+
+SensorStreams::SensorStreams(const config::RunConfig& config, const sensors::VolumeShape& shape,
+                             bool withDirect, const std::filesystem::path& outputDirectory)
+    : config_(config), shape_(shape), outputDirectory_(outputDirectory) {
+  for (std::size_t i = 0; i < config.sensors.size(); ++i) {
+    const sensors::SensorSpec& spec = config.sensors[i];
+    auto entry = std::make_unique<Entry>(i, std::filesystem::path("sensors") / spec.name,
+                                         outputDirectory, spec, shape);
+    sensors::StreamOptions options;
+    options.seed = config.render.seed;
+    options.directOnly = withDirect;
+    options.arrays = &entry->arrays;
+    try {
+      entry->stream = sensors::openSensor(spec, shape, options);
+    } catch (const InputError& e) {
+      rethrowLocated(config, i, e);
+    }
+    entries_.push_back(std::move(entry));
+  }
+}
+
+SensorStreams::~SensorStreams() = default;
+
+void SensorStreams::consume(const sensors::PixelSpan& span) {
+  for (const std::unique_ptr<Entry>& e : entries_) {
+    const Clock::time_point start = Clock::now();
+    e->stream->consume(span);
+    e->meter.consume(span);
+    e->busy += Clock::now() - start;
+  }
+}
+
+void SensorStreams::checkWindows() const {
+  for (const std::unique_ptr<Entry>& e : entries_) {
+    checkSensorWindow(config_, e->index, e->meter.fraction(), shape_.axis);
+  }
+}
+
+std::vector<std::string> SensorStreams::finish(const Image* groundTruthDepth_m,
+                                               const Progress& progress) {
+  std::vector<std::string> files;
+  PlotRanges ranges(config_.output.plot_ranges);
+  for (const std::unique_ptr<Entry>& e : entries_) {
+    throwIfInterrupted();
+    const sensors::SensorSpec& spec = config_.sensors[e->index];
+    const Clock::time_point start = Clock::now();
+    std::vector<sensors::SensorOutput> outputs;
+    SensorRunInfo run{&spec, shape_.axis, config_.render.seed, {}};
+    try {
+      // Warnings go to stderr even when quiet: they say the outputs mislead.
+      // They go into the metadata too (SensorMetadata.h).
+      run.warnings = sensors::sensorWarnings(spec, shape_.axis, groundTruthDepth_m);
+      for (const std::string& w : run.warnings) {
+        std::fprintf(stderr, "tofsim: warning: sensor '%s' (%s): %s\n", spec.name.c_str(),
+                     sensors::sensorTypeName(spec.params), w.c_str());
+      }
+      outputs = e->stream->finish(groundTruthDepth_m);
+    } catch (const InputError& error) {
+      rethrowLocated(config_, e->index, error);
+    }
+    for (const std::string& f :
+         writeSensorOutputs(outputDirectory_ / e->relative, outputs, run, ranges)) {
+      files.push_back((e->relative / f).string());
+    }
+    e->busy += Clock::now() - start;
+    char line[160];
+    std::snprintf(line, sizeof line, "sensor '%s' (%s): %zu outputs in %.2f s", spec.name.c_str(),
+                  sensors::sensorTypeName(spec.params), outputs.size(),
+                  std::chrono::duration<double>(e->busy).count());
+    progress.message(line);
+  }
+  warnUntakenPlotRanges(ranges.untaken("sensors/"));
+  return files;
+}
+
+}  // namespace tofsim::pipeline

@@ -1,0 +1,88 @@
+#pragma once
+// A sensor model fed the volume as it streams out of the renderer: runs of
+// consecutive pixels in row order (the (H, W, T, C) layout of transient.npy),
+// so that no one needs the whole volume in memory. Each model keeps only what
+// it must: per-pixel results, the image rows a streak camera records, the
+// histograms a SPAD plots. The in-memory entry points (runSensor, runSpad,
+// ...) feed the whole volume as one span, so both paths are one code path and
+// give the same bytes; every pixel draws from its own random stream
+// (Random.h), so how the image is cut into spans changes nothing.
+
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "tofsim/sensors/SensorOutput.h"
+#include "tofsim/volume/TransientVolume.h"
+
+namespace tofsim::sensors {
+
+/// What a stream needs to know of the volume before any value arrives.
+struct VolumeShape {
+  int32_t width = 0;
+  int32_t height = 0;
+  int32_t channels = 0;
+  TimeAxis axis;
+
+  std::size_t pixelCount() const { return static_cast<std::size_t>(width) * height; }
+  std::size_t pixelFloats() const { return static_cast<std::size_t>(axis.bins) * channels; }
+};
+
+VolumeShape shapeOf(const TransientVolume& volume);
+
+/// Pixels firstPixel .. firstPixel + pixelCount - 1 (index y * width + x),
+/// each VolumeShape::pixelFloats() floats.
+struct PixelSpan {
+  std::size_t firstPixel = 0;
+  std::size_t pixelCount = 0;
+  const float* volume = nullptr;      ///< the total volume
+  const float* directOnly = nullptr;  ///< its direct component, or nullptr
+};
+
+/// The whole volume (and its direct component, when given) as one span.
+PixelSpan wholeVolume(const TransientVolume& volume, const TransientVolume* directOnly = nullptr);
+
+/// Receives an Array output in C order as it is made; it is never held whole.
+class ArrayWriter {
+ public:
+  virtual ~ArrayWriter() = default;
+  virtual void append(const float* values, std::size_t count) = 0;
+  /// Every value has been appended.
+  virtual void close() = 0;
+};
+
+/// Where a stream may send its Array outputs as large as a volume channel
+/// (spad_counts). Such an output then comes back from finish() with
+/// `streamed` set and no data.
+class ArrayStreams {
+ public:
+  virtual ~ArrayStreams() = default;
+  virtual std::unique_ptr<ArrayWriter> open(const std::string& name,
+                                            const std::vector<int64_t>& shape) = 0;
+};
+
+struct StreamOptions {
+  uint64_t seed = 0;
+  /// Spans carry directOnly (CW-ToF's error against the direct-only depth).
+  bool directOnly = false;
+  /// nullptr: every output is held in memory and returned with its data.
+  ArrayStreams* arrays = nullptr;
+  /// Threads a span's pixels are spread over; 0: every core. The bytes do
+  /// not depend on it.
+  int threads = 0;
+};
+
+class SensorStream {
+ public:
+  virtual ~SensorStream() = default;
+  /// Spans come in order and cover the image exactly once.
+  virtual void consume(const PixelSpan& span) = 0;
+  /// After the last span: the outputs (sensors/README.md, "Outputs"). The
+  /// ground-truth depth (H, W, 1) in metres, known only once the render is
+  /// done, feeds the CW-ToF multipath errors; nullptr when there is none.
+  virtual std::vector<SensorOutput> finish(const Image* groundTruthDepth_m) = 0;
+};
+
+}  // namespace tofsim::sensors
