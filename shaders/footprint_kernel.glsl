@@ -68,13 +68,53 @@ TOFSIM_PHYSICS_FN vec2 pathStepsAcrossPixel(vec3 gradient, vec3 dxdu, vec3 dxdv)
   return vec2(dot(gradient, dxdu), dot(gradient, dxdv));
 }
 
-// The kernel (see the top) of a contribution at optical path path_m with
-// derivatives steps_m across the pixel, on the axis (start_m, binWidth_m).
+// The path's derivatives (c, d) in metres across a VPL's patch (its RSM
+// texel, spanned by patchU.xyz and patchV.xyz), toward the point x in
+// direction d = (x - x_l) / |x - x_l|: the gradient in x_l of
+// eta (|x_l - l| + |x_l - x|) projected on the patch steps. The light leg's
+// part, eta (x_l - l)/|x_l - l| . step, is constant per VPL and stored in the
+// steps' w (vplPatchSteps in core/ir).
+TOFSIM_PHYSICS_FN vec2 vplPatchPathSteps(vec4 patchU, vec4 patchV, vec3 d, float eta) {
+  return vec2(patchU.w - eta * dot(d, vec3(patchU)), patchV.w - eta * dot(d, vec3(patchV)));
+}
+
+// The two box widths (bins) standing for a path linear in four independent
+// uniform offsets: the pixel's (u, v) with derivatives steps_m.xy and the
+// VPL patch's with steps_m.zw (0 for the direct term). Their sum's density is
+// the convolution of four boxes; it is replaced by the trapezoid of the two
+// boxes with the same mean and variance that keeps the widest box: wide = the
+// largest width, narrow = the root sum of squares of the other three (then
+// (wide^2 + narrow^2) / 12 is the variance of the sum); if that exceeds wide,
+// both get the root mean square. With the patch's widths 0 this is exactly
+// the pixel's trapezoid (sqrt(b * b) == |b| in IEEE arithmetic), so the direct
+// term and a VPL without a footprint are spread exactly as derived above.
+TOFSIM_PHYSICS_FN vec2 footprintWidths(vec4 steps_m, float binWidth_m) {
+  vec4 w = abs(steps_m) / binWidth_m;
+  float pixelWide = max(w.x, w.y);
+  float pixelNarrow = min(w.x, w.y);
+  float patchWide = max(w.z, w.w);
+  float patchNarrow = min(w.z, w.w);
+  float wide = max(pixelWide, patchWide);
+  float other = min(pixelWide, patchWide);
+  float narrow = sqrt(other * other + pixelNarrow * pixelNarrow + patchNarrow * patchNarrow);
+  if (narrow > wide) {
+    float rms = sqrt(0.5f * (wide * wide + narrow * narrow));
+    return vec2(rms, rms);
+  }
+  return vec2(wide, narrow);
+}
+
+// The kernel (see the top) of a contribution at optical path path_m whose
+// path changes by steps_m across the pixel (xy) and across the VPL's patch
+// (zw; 0 without one), on the axis (start_m, binWidth_m).
+TOFSIM_PHYSICS_FN vec3 footprintKernel(float path_m, vec4 steps_m, float start_m,
+                                       float binWidth_m) {
+  vec2 widths = footprintWidths(steps_m, binWidth_m);
+  return vec3((path_m - start_m) / binWidth_m, widths.x, widths.y);
+}
 TOFSIM_PHYSICS_FN vec3 footprintKernel(float path_m, vec2 steps_m, float start_m,
                                        float binWidth_m) {
-  float wa = abs(steps_m.x) / binWidth_m;
-  float wb = abs(steps_m.y) / binWidth_m;
-  return vec3((path_m - start_m) / binWidth_m, max(wa, wb), min(wa, wb));
+  return footprintKernel(path_m, vec4(steps_m.x, steps_m.y, 0.0f, 0.0f), start_m, binWidth_m);
 }
 
 // Position (bins) of kink `knot` (0..3, in increasing order): the trapezoid's
@@ -152,6 +192,37 @@ TOFSIM_PHYSICS_FN double footprintSlotValue(vec3 kernel, int k) {
   double three = double(3.0f);
   return footprintMassToEdge(kernel, k + 1) - three * footprintMassToEdge(kernel, k) +
          three * footprintMassToEdge(kernel, k - 1) - footprintMassToEdge(kernel, k - 2);
+}
+
+// ---- Narrow kernels: straight into the histogram ----
+//
+// Most contributions cover a few bins (a wall seen head-on: under one). For
+// them the difference buffer would cost more than it saves (24 CDF values and
+// a per-pixel integration), so a kernel whose support touches at most
+// FOOTPRINT_DIRECT_BINS bins adds its bin masses F(k + 1) - F(k) to the float
+// histogram directly; wider ones go to the difference buffer. Which way a
+// contribution goes depends on it alone, so the bytes stay deterministic. A
+// spike or a kernel inside one bin adds exactly its value to point sampling's
+// bin (mass 1.0).
+const int FOOTPRINT_DIRECT_BINS = 4;
+
+// First and last bin the kernel's support [knot 0, knot 3] touches, each
+// clamped to [-1, bins] (-1: before the axis, bins: after it).
+TOFSIM_PHYSICS_FN ivec2 footprintSupport(vec3 kernel, int bins) {
+  double lo = clamp(floor(footprintKnot(kernel, 0)), double(-1.0f), double(bins));
+  double hi = clamp(floor(footprintKnot(kernel, 3)), double(-1.0f), double(bins));
+  return ivec2(int(lo), int(hi));
+}
+
+// Whether the kernel is deposited straight into the histogram.
+TOFSIM_PHYSICS_FN bool footprintIsNarrow(ivec2 support) {
+  return support.y - support.x < FOOTPRINT_DIRECT_BINS;
+}
+
+// Mass of the kernel in bin k (exact CDF difference), rounded to float: the
+// factor of the contribution's value added to bin k.
+TOFSIM_PHYSICS_FN float footprintBinMass(vec3 kernel, int k) {
+  return float(footprintCdf(kernel, double(k + 1)) - footprintCdf(kernel, double(k)));
 }
 
 #endif  // TOFSIM_FOOTPRINT_KERNEL_GLSL

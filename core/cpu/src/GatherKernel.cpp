@@ -2,9 +2,44 @@
 
 #include <cmath>
 
+#include "tofsim/physics/FootprintKernel.h"
 #include "tofsim/physics/TransientPhysics.h"
 
 namespace tofsim::cpu {
+
+namespace {
+
+// The footprint kernels of the block's contributions, from the same shared
+// functions as indirect_gather.comp: the path's steps across the pixel (the
+// gradient of eta (|x - x_l| + |x - c|) on x's steps) and across the VPL's
+// patch, combined into one trapezoid.
+__attribute__((target_clones("avx2", "default"))) void vplKernels(const PixelSurface& s,
+                                                                  const VplArrays& v,
+                                                                  std::size_t first,
+                                                                  std::size_t n,
+                                                                  const GatherConstants& c,
+                                                                  VplTerms& terms) {
+  const float eta = c.indexOfRefraction;
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::size_t k = first + i;
+    const glm::vec3 source(v.px[k], v.py[k], v.pz[k]);
+    const glm::vec2 pixel = physics::pathStepsAcrossPixel(
+        physics::opticalPathGradient(s.x, source, c.camera, eta, c.cameraUnwarp), s.dxdu, s.dxdv);
+    const glm::vec3 d(terms.dx[i], terms.dy[i], terms.dz[i]);
+    const glm::vec2 patch =
+        c.vplFootprint ? physics::vplPatchPathSteps(glm::vec4(v.ux[k], v.uy[k], v.uz[k], v.uw[k]),
+                                                    glm::vec4(v.vx[k], v.vy[k], v.vz[k], v.vw[k]),
+                                                    d, eta)
+                       : glm::vec2(0.0f);
+    const float path_m =
+        physics::vplPathLength(v.path[k], eta, terms.dist[i], s.cameraPath_m);
+    const glm::vec3 kernel = physics::footprintKernel(
+        path_m, glm::vec4(pixel, patch), c.start_m, c.binWidth_m);
+    terms.centre[i] = kernel.x, terms.wide[i] = kernel.y, terms.narrow[i] = kernel.z;
+  }
+}
+
+}  // namespace
 
 // target_clones: an AVX2 build and a baseline one of the same source, picked
 // at load time. -ffp-contract=off (CMakeLists.txt) keeps fused multiply-adds
@@ -45,6 +80,7 @@ __attribute__((target_clones("avx2", "default"))) void vplTerms(const PixelSurfa
     terms.b[i] = s.brdf.b * fb[i] * g;
     terms.dx[i] = dx, terms.dy[i] = dy, terms.dz[i] = dz, terms.dist[i] = dist;
   }
+  if (c.footprint) vplKernels(s, v, first, n, c, terms);
 }
 
 }  // namespace tofsim::cpu

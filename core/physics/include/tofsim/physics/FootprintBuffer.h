@@ -9,6 +9,8 @@
 // because the double prefix sum amplifies an entry's rounding error by the
 // distance to the end of the axis (core/physics/footprint_kernel.md).
 
+#include <algorithm>
+#include <cstddef>
 #include <cstdint>
 
 #include "tofsim/physics/FootprintKernel.h"
@@ -36,6 +38,40 @@ inline FootprintOffAxis depositFootprint(double* diff, int32_t bins, const vec3&
     for (int c = 0; c < 3; ++c) entry[c] += value * static_cast<double>(energy[c]);
   }
   return {footprintMassBefore(kernel), footprintMassAfter(kernel, bins)};
+}
+
+/// Light of one pixel's contributions that fell off the axis, summed over
+/// channels, as the gathers book it (AxisLoss).
+struct OffAxisSums {
+  float before = 0.0f;
+  float after = 0.0f;
+};
+
+/// Adds one contribution of `energy` (per channel) spread by `kernel` to a
+/// pixel: a narrow kernel (footprintIsNarrow) straight into its float
+/// `histogram` (bins x 3), a wide one into its difference buffer `diff`; the
+/// part off the axis into `lost`. Returns whether `diff` was written (the
+/// pixel then needs integrateFootprint). The shaders do the same steps.
+inline bool depositContribution(float* histogram, double* diff, int32_t bins, const vec3& kernel,
+                                const vec3& energy, OffAxisSums& lost) {
+  const float total = energy.r + energy.g + energy.b;
+  const ivec2 support = footprintSupport(kernel, bins);
+  if (!footprintIsNarrow(support)) {
+    const FootprintOffAxis off = depositFootprint(diff, bins, kernel, energy);
+    if (off.before > 0.0) lost.before += static_cast<float>(off.before) * total;
+    if (off.after > 0.0) lost.after += static_cast<float>(off.after) * total;
+    return true;
+  }
+  if (support.x < 0) lost.before += static_cast<float>(footprintMassBefore(kernel)) * total;
+  for (int32_t k = std::max(support.x, 0); k <= std::min(support.y, bins - 1); ++k) {
+    const float mass = footprintBinMass(kernel, k);
+    float* out = histogram + static_cast<std::size_t>(k) * 3;
+    out[0] += mass * energy.r;
+    out[1] += mass * energy.g;
+    out[2] += mass * energy.b;
+  }
+  if (support.y >= bins) lost.after += static_cast<float>(footprintMassAfter(kernel, bins)) * total;
+  return false;
 }
 
 /// The final pass for one pixel: adds the bin integrals held by `diff`
