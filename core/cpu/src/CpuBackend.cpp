@@ -257,6 +257,7 @@ void CpuBackend::gatherTile(std::size_t tile, std::size_t firstVpl, std::size_t 
   c.vplFootprint = s.pixel_footprint && s.indirect.vpl_footprint;
   c.cameraUnwarp = s.camera_unwarp;
   c.camera = job_.camera.position_world;
+  c.bins = bins;
   const bool exact = indirectVisibility_ && s.indirect.visibility == capture::Visibility::Exact;
   const float eps = 1e-4f * sceneScale_m_;  // as indirect_gather.comp's exact visibility
   const VplArrays& v = *vpls_;
@@ -287,9 +288,18 @@ void CpuBackend::gatherTile(std::size_t tile, std::size_t firstVpl, std::size_t 
           }
           const glm::vec3 energy(terms.r[k], terms.g[k], terms.b[k]);
           if (c.footprint) {
-            const glm::vec3 kernel(terms.centre[k], terms.wide[k], terms.narrow[k]);
-            footprintWritten_[i] |=
-                physics::depositContribution(histogram, diff, bins, kernel, energy, lost);
+            // What physics::depositContribution does, from the block's precomputed terms.
+            const int32_t narrowBins = terms.count[k];
+            for (int32_t j = 0; j < narrowBins; ++j) {
+              physics::depositNarrowBin(histogram, bins, terms.first[k] + j, terms.mass[j][k],
+                                        energy, lost);
+            }
+            if (narrowBins == 0) {
+              physics::depositWide(diff, bins,
+                                   glm::vec3(terms.centre[k], terms.wide[k], terms.narrow[k]),
+                                   energy, lost);
+              footprintWritten_[i] = 1;
+            }
             continue;
           }
           if (bin < 0 || bin >= bins) {

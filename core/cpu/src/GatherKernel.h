@@ -19,6 +19,7 @@ namespace tofsim::cpu {
 
 constexpr std::size_t kVplBlock = 256;  ///< VPLs per block: ~10 KiB of VPL data, in L1
 constexpr int32_t kNoLight = INT_MIN;   ///< bin of a VPL that does not light the pixel
+constexpr int kFootprintDirectBins = 8;  ///< = FOOTPRINT_DIRECT_BINS (checked in GatherKernel.cpp)
 
 /// The camera G-buffer of one pixel, as the gather needs it.
 struct PixelSurface {
@@ -40,6 +41,7 @@ struct GatherConstants {
   bool vplFootprint = false;   ///< include the VPL patch's widths (render.indirect.vpl_footprint)
   bool cameraUnwarp = false;
   glm::vec3 camera{0.0f};  ///< camera position, for the camera leg's path gradient
+  int32_t bins = 0;        ///< of the time axis
 };
 
 /// Per-VPL terms of one block: bin (kNoLight when the VPL does not face the
@@ -49,6 +51,10 @@ struct GatherConstants {
 struct VplTerms {
   alignas(64) int32_t bin[kVplBlock];
   alignas(64) float centre[kVplBlock], wide[kVplBlock], narrow[kVplBlock];
+  /// A narrow kernel's bins (footprintNarrowFirstBin, footprintNarrowBinCount;
+  /// count 0 for a wide kernel) and masses, mass[j] for bin first + j.
+  alignas(64) int32_t first[kVplBlock], count[kVplBlock];
+  alignas(64) float mass[kFootprintDirectBins][kVplBlock];
   alignas(64) float r[kVplBlock], g[kVplBlock], b[kVplBlock];
   alignas(64) float dx[kVplBlock], dy[kVplBlock], dz[kVplBlock], dist[kVplBlock];
 };

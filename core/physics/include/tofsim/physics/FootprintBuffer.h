@@ -47,6 +47,30 @@ struct OffAxisSums {
   float after = 0.0f;
 };
 
+/// Adds `mass` of a narrow kernel's contribution `energy` to bin k of a
+/// pixel's float histogram, or to the light off the axis.
+inline void depositNarrowBin(float* histogram, int32_t bins, int k, float mass, const vec3& energy,
+                             OffAxisSums& lost) {
+  if (k < 0 || k >= bins) {
+    (k < 0 ? lost.before : lost.after) += mass * (energy.r + energy.g + energy.b);
+    return;
+  }
+  float* out = histogram + static_cast<std::size_t>(k) * 3;
+  out[0] += mass * energy.r;
+  out[1] += mass * energy.g;
+  out[2] += mass * energy.b;
+}
+
+/// A wide kernel's contribution: into the difference buffer, and its mass
+/// off the axis into `lost`.
+inline void depositWide(double* diff, int32_t bins, const vec3& kernel, const vec3& energy,
+                        OffAxisSums& lost) {
+  const float total = energy.r + energy.g + energy.b;
+  const FootprintOffAxis off = depositFootprint(diff, bins, kernel, energy);
+  if (off.before > 0.0) lost.before += static_cast<float>(off.before) * total;
+  if (off.after > 0.0) lost.after += static_cast<float>(off.after) * total;
+}
+
 /// Adds one contribution of `energy` (per channel) spread by `kernel` to a
 /// pixel: a narrow kernel (footprintIsNarrow) straight into its float
 /// `histogram` (bins x 3), a wide one into its difference buffer `diff`; the
@@ -54,23 +78,16 @@ struct OffAxisSums {
 /// pixel then needs integrateFootprint). The shaders do the same steps.
 inline bool depositContribution(float* histogram, double* diff, int32_t bins, const vec3& kernel,
                                 const vec3& energy, OffAxisSums& lost) {
-  const float total = energy.r + energy.g + energy.b;
-  const ivec2 support = footprintSupport(kernel, bins);
-  if (!footprintIsNarrow(support)) {
-    const FootprintOffAxis off = depositFootprint(diff, bins, kernel, energy);
-    if (off.before > 0.0) lost.before += static_cast<float>(off.before) * total;
-    if (off.after > 0.0) lost.after += static_cast<float>(off.after) * total;
+  if (!footprintIsNarrow(kernel)) {
+    depositWide(diff, bins, kernel, energy, lost);
     return true;
   }
-  if (support.x < 0) lost.before += static_cast<float>(footprintMassBefore(kernel)) * total;
-  for (int32_t k = std::max(support.x, 0); k <= std::min(support.y, bins - 1); ++k) {
-    const float mass = footprintBinMass(kernel, k);
-    float* out = histogram + static_cast<std::size_t>(k) * 3;
-    out[0] += mass * energy.r;
-    out[1] += mass * energy.g;
-    out[2] += mass * energy.b;
+  const int first = footprintNarrowFirstBin(kernel, bins);
+  const int count = footprintNarrowBinCount(kernel);
+  for (int j = 0; j < count; ++j) {
+    depositNarrowBin(histogram, bins, first + j, footprintNarrowMass(kernel, first, j), energy,
+                     lost);
   }
-  if (support.y >= bins) lost.after += static_cast<float>(footprintMassAfter(kernel, bins)) * total;
   return false;
 }
 
