@@ -109,7 +109,7 @@ void CpuBackend::allocate(std::size_t pixelsPerSegment, std::size_t vplsPerBatch
   outside_.assign(2 * pixelsPerSegment, 0.0f);
   // The plan counted the footprint buffers (ir::PixelBuffers); they start
   // zero and integratePixel clears what it read.
-  footprint_.assign(job_.settings.pixel_footprint ? floats : 0, 0.0);
+  footprint_.reset(job_.settings.pixel_footprint ? new double[floats] : nullptr);
   footprintWritten_.assign(pixelsPerSegment, 0);
   segmentSurfaces_.resize(pixelsPerSegment * samplesPerPixel());
   segmentLit_.resize(pixelsPerSegment * samplesPerPixel());
@@ -153,13 +153,19 @@ void CpuBackend::beginSegment(std::size_t firstPixel, std::size_t count) {
   }
 }
 
+double* CpuBackend::footprintOf(std::size_t i) {
+  const std::size_t stride = static_cast<std::size_t>(job_.settings.time.bins) * kChannels;
+  double* diff = footprint_.get() + i * stride;
+  if (!footprintWritten_[i]) std::fill_n(diff, stride, 0.0);
+  footprintWritten_[i] = 1;
+  return diff;
+}
+
 void CpuBackend::integratePixel(std::size_t i, float* histogram) {
   if (!footprintWritten_[i]) return;
   const int bins = job_.settings.time.bins;
-  double* diff = &footprint_[i * bins * kChannels];
-  physics::integrateFootprint(diff, bins, histogram);
-  std::fill_n(diff, static_cast<std::size_t>(bins) * kChannels, 0.0);
-  footprintWritten_[i] = 0;
+  physics::integrateFootprint(footprint_.get() + i * bins * kChannels, bins, histogram);
+  footprintWritten_[i] = 0;  // zeroed again by footprintOf when next needed
 }
 
 void CpuBackend::gatherDirect() {
@@ -213,8 +219,12 @@ void CpuBackend::gatherDirectTile(std::size_t tile) {
                                          s.camera_unwarp),
             surface.dxdu, surface.dxdv);
         const glm::vec3 kernel = physics::footprintKernel(path_m, steps, start_m, width_m);
-        footprintWritten_[i] |= physics::depositContribution(
-            histogram, &footprint_[i * bins * kChannels], bins, kernel, radiance * weight, lost);
+        const glm::vec3 value = radiance * weight;
+        if (physics::footprintIsNarrow(kernel)) {
+          physics::depositNarrow(histogram, bins, kernel, value, lost);
+        } else {
+          physics::depositWide(footprintOf(i), bins, kernel, value, lost);
+        }
         continue;
       }
       // Point sampling (render.pixel_footprint: false): the bytes of before
@@ -268,7 +278,6 @@ void CpuBackend::gatherTile(std::size_t tile, std::size_t firstVpl, std::size_t 
     const std::size_t n = std::min(kVplBlock, firstVpl + count - first);
     for (std::size_t i = tile * kTilePixels; i < end; ++i) {
       float* histogram = &indirect_[i * bins * kChannels];
-      double* diff = c.footprint ? &footprint_[i * bins * kChannels] : nullptr;
       physics::OffAxisSums lost{outside_[2 * i], outside_[2 * i + 1]};
       for (std::size_t sample = i * perPixel; sample < (i + 1) * perPixel; ++sample) {
         if (!segmentLit_[sample]) continue;
@@ -288,17 +297,16 @@ void CpuBackend::gatherTile(std::size_t tile, std::size_t firstVpl, std::size_t 
           }
           const glm::vec3 energy(terms.r[k], terms.g[k], terms.b[k]);
           if (c.footprint) {
-            // What physics::depositContribution does, from the block's precomputed terms.
+            // physics::depositNarrow / depositWide, from the block's precomputed terms.
             const int32_t narrowBins = terms.count[k];
             for (int32_t j = 0; j < narrowBins; ++j) {
               physics::depositNarrowBin(histogram, bins, terms.first[k] + j, terms.mass[j][k],
                                         energy, lost);
             }
             if (narrowBins == 0) {
-              physics::depositWide(diff, bins,
+              physics::depositWide(footprintOf(i), bins,
                                    glm::vec3(terms.centre[k], terms.wide[k], terms.narrow[k]),
                                    energy, lost);
-              footprintWritten_[i] = 1;
             }
             continue;
           }

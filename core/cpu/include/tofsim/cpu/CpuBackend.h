@@ -72,6 +72,8 @@ class CpuBackend : public ir::IrBackend {
   void gatherDirectTile(std::size_t tile);
   /// Adds pixel i's footprint buffer, if written, to `histogram` and clears it.
   void integratePixel(std::size_t i, float* histogram);
+  /// Pixel i's footprint buffer, zeroed first if it held nothing.
+  double* footprintOf(std::size_t i);
   std::size_t samplesPerPixel() const;
 
   int threads_ = 1;
@@ -85,8 +87,10 @@ class CpuBackend : public ir::IrBackend {
   std::vector<unsigned char> segmentLit_;      ///< 1 where the sample sees a surface
   std::vector<float> direct_, indirect_, outside_;
   /// The pixel footprint's difference buffers (bins x 3 doubles per pixel of
-  /// the segment) and which pixels' buffers hold something.
-  std::vector<double> footprint_;
+  /// the segment) and which pixels' buffers hold something. Uninitialised:
+  /// a pixel's buffer is zeroed when its first wide kernel arrives
+  /// (footprintOf), so pixels without one never touch its pages.
+  std::unique_ptr<double[]> footprint_;
   std::vector<unsigned char> footprintWritten_;
   std::size_t firstPixel_ = 0, pixelCount_ = 0, pixelsPerSegment_ = 0;
   float sceneScale_m_ = 1.0f;

@@ -30,10 +30,32 @@ struct FootprintOffAxis {
 /// caller books as off-axis energy (it is not in the buffer).
 inline FootprintOffAxis depositFootprint(double* diff, int32_t bins, const vec3& kernel,
                                          const vec3& energy) {
+  // footprintSlotValue's sum over the four kinks, each term computed only
+  // for the kinks within reach of the bin: the others' weights are exactly
+  // 0, so the value has the same bits, at a quarter of the work.
+  const double wide = static_cast<double>(kernel.y);
+  const bool fromCdf = footprintKnot(kernel, 0) < 2.0 || wide < 1.0;
+  const bool step = static_cast<double>(kernel.z) < static_cast<double>(1e-6f);
+  double knot[4];
+  int knotBin[4];
+  for (int j = 0; j < 4; ++j) {
+    knot[j] = footprintKnot(kernel, j);
+    knotBin[j] = footprintKnotBin(kernel, j, bins);
+  }
   for (int slot = 0; slot < FOOTPRINT_SLOTS; ++slot) {
     const int bin = footprintSlotBin(kernel, slot, bins);
     if (bin < 0) continue;
-    const double value = footprintSlotValue(kernel, bin);
+    double value;
+    if (fromCdf) {
+      value = footprintSlotValue(kernel, bin);
+    } else {
+      double w[4] = {0.0, 0.0, 0.0, 0.0};
+      for (int j = 0; j < 4; ++j) {
+        if (bin >= knotBin[j] && bin <= knotBin[j] + 2) w[j] = footprintKinkWeight(knot[j], bin, step);
+      }
+      value = step ? (1.0 / wide) * (w[0] - w[3])
+                   : (1.0 / (wide * static_cast<double>(kernel.z))) * (w[0] - w[1] - w[2] + w[3]);
+    }
     double* entry = diff + static_cast<std::size_t>(bin) * 3;
     for (int c = 0; c < 3; ++c) entry[c] += value * static_cast<double>(energy[c]);
   }
@@ -71,24 +93,16 @@ inline void depositWide(double* diff, int32_t bins, const vec3& kernel, const ve
   if (off.after > 0.0) lost.after += static_cast<float>(off.after) * total;
 }
 
-/// Adds one contribution of `energy` (per channel) spread by `kernel` to a
-/// pixel: a narrow kernel (footprintIsNarrow) straight into its float
-/// `histogram` (bins x 3), a wide one into its difference buffer `diff`; the
-/// part off the axis into `lost`. Returns whether `diff` was written (the
-/// pixel then needs integrateFootprint). The shaders do the same steps.
-inline bool depositContribution(float* histogram, double* diff, int32_t bins, const vec3& kernel,
-                                const vec3& energy, OffAxisSums& lost) {
-  if (!footprintIsNarrow(kernel)) {
-    depositWide(diff, bins, kernel, energy, lost);
-    return true;
-  }
+/// A narrow kernel's contribution (footprintIsNarrow): its bin masses
+/// straight into the float histogram, or off the axis into `lost`.
+inline void depositNarrow(float* histogram, int32_t bins, const vec3& kernel, const vec3& energy,
+                          OffAxisSums& lost) {
   const int first = footprintNarrowFirstBin(kernel, bins);
   const int count = footprintNarrowBinCount(kernel);
   for (int j = 0; j < count; ++j) {
     depositNarrowBin(histogram, bins, first + j, footprintNarrowMass(kernel, first, j), energy,
                      lost);
   }
-  return false;
 }
 
 /// The final pass for one pixel: adds the bin integrals held by `diff`
