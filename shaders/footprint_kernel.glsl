@@ -262,21 +262,25 @@ TOFSIM_PHYSICS_FN double footprintSlotValue(vec3 kernel, int k) {
 // inside one bin (a spike, a wall seen head-on) puts exactly its value there.
 const int FOOTPRINT_DIRECT_BINS = 8;
 
-// The kernel's first and last kink (bins), in float.
-TOFSIM_PHYSICS_FN vec2 footprintExtent(vec3 kernel) {
+// The kernel's first and last kink relative to floor(centre), in float:
+// exact offsets from the centre's bin, so the kinks' positions within it are
+// good to float's precision near 1 whatever the centre (its own bin has the
+// precision of the path's float, as in point sampling).
+TOFSIM_PHYSICS_FN vec2 footprintLocalExtent(vec3 kernel) {
   float halfWidth = 0.5f * (kernel.y + kernel.z);
-  return vec2(kernel.x - halfWidth, kernel.x + halfWidth);
+  float local = kernel.x - floor(kernel.x);  // exact
+  return vec2(local - halfWidth, local + halfWidth);
 }
 
 // Whether the kernel's support touches at most FOOTPRINT_DIRECT_BINS bins.
 TOFSIM_PHYSICS_FN bool footprintIsNarrow(vec3 kernel) {
-  vec2 e = footprintExtent(kernel);
+  vec2 e = footprintLocalExtent(kernel);
   return floor(e.y) - floor(e.x) < float(FOOTPRINT_DIRECT_BINS);
 }
 
 // Bins a narrow kernel touches: from footprintNarrowFirstBin, this many.
 TOFSIM_PHYSICS_FN int footprintNarrowBinCount(vec3 kernel) {
-  vec2 e = footprintExtent(kernel);
+  vec2 e = footprintLocalExtent(kernel);
   return int(floor(e.y) - floor(e.x)) + 1;
 }
 
@@ -284,8 +288,8 @@ TOFSIM_PHYSICS_FN int footprintNarrowBinCount(vec3 kernel) {
 // [-FOOTPRINT_DIRECT_BINS - 1, bins] so that a kernel far off the axis (its
 // masses then all land off it) keeps the integer in range.
 TOFSIM_PHYSICS_FN int footprintNarrowFirstBin(vec3 kernel, int bins) {
-  return int(clamp(floor(footprintExtent(kernel).x), -float(FOOTPRINT_DIRECT_BINS) - 1.0f,
-                   float(bins)));
+  float first = floor(kernel.x) + floor(footprintLocalExtent(kernel).x);
+  return int(clamp(first, -float(FOOTPRINT_DIRECT_BINS) - 1.0f, float(bins)));
 }
 
 // The kernel's CDF at s bins above its first kink, without branches.
@@ -305,10 +309,12 @@ TOFSIM_PHYSICS_FN float footprintNarrowCdf(vec3 kernel, float s) {
 // Mass of a narrow kernel in bin first + j (0 <= j < footprintNarrowBinCount,
 // first = footprintNarrowFirstBin): the factor of the contribution's value
 // added to that bin, or booked before / after the axis when it lies there.
-TOFSIM_PHYSICS_FN float footprintNarrowMass(vec3 kernel, int first, int j) {
-  vec2 e = footprintExtent(kernel);
-  float frac = e.x - float(first);  // exact: first = floor(e.x) on and near the axis
+TOFSIM_PHYSICS_FN float footprintNarrowMass(vec3 kernel, int j) {
+  vec2 e = footprintLocalExtent(kernel);
+  float frac = e.x - floor(e.x);  // the first kink's position in its bin
   float last = floor(e.y) - floor(e.x);
+  // Off the axis by far, `first` was clamped: the masses then only need to
+  // sum to 1, which the exact 0 and 1 at the ends guarantee.
   float upper = float(j + 1) > last ? 1.0f : footprintNarrowCdf(kernel, float(j + 1) - frac);
   float lower = j == 0 ? 0.0f
                        : (float(j) > last ? 1.0f : footprintNarrowCdf(kernel, float(j) - frac));

@@ -63,7 +63,7 @@ __attribute__((target_clones("avx2", "default"))) void vplKernels(const PixelSur
     terms.count[i] = narrow ? physics::footprintNarrowBinCount(kernel) : 0;
 #pragma GCC unroll 8
     for (int j = 0; j < kFootprintDirectBins; ++j) {
-      terms.mass[j][i] = physics::footprintNarrowMass(kernel, firstBin, j);
+      terms.mass[j][i] = physics::footprintNarrowMass(kernel, j);
     }
   }
 }

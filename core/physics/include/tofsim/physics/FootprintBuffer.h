@@ -100,7 +100,7 @@ inline void depositNarrow(float* histogram, int32_t bins, const vec3& kernel, co
   const int first = footprintNarrowFirstBin(kernel, bins);
   const int count = footprintNarrowBinCount(kernel);
   for (int j = 0; j < count; ++j) {
-    depositNarrowBin(histogram, bins, first + j, footprintNarrowMass(kernel, first, j), energy,
+    depositNarrowBin(histogram, bins, first + j, footprintNarrowMass(kernel, j), energy,
                      lost);
   }
 }
