@@ -77,7 +77,7 @@ const ConfigKey kRunConfigKeys[] = {
     {"render.strict", "bool", "", "false", "-",
      "light cut off by the time axis or a sensor window (more than 0.1 %) is an error, not a warning; `--strict` on `render` / `validate` sets it (see \"Time windows\")"},
     {"render.pixel_footprint", "bool", "", "true", "-",
-     "a pixel integrates its area: every contribution is spread over the distribution of its optical path across the pixel (a trapezoid in time, first order; see \"Pixel footprints\"); `false`: all of a pixel's light in the bin of its centre's path (closed-form tests). `ir` only: the reference integrates by `reference.pixel_filter`"},
+     "a pixel integrates its area: every contribution is spread over the distribution of its optical path across the pixel (a trapezoid in time, first order; see README.md, \"Pixel footprints\"); `false`: all of a pixel's light in the bin of its centre's path (closed-form tests). `ir` only: the reference integrates by `reference.pixel_filter`"},
     {"render.pixel_samples", "int", "in [1, 16]", "1", "-",
      "N x N stratified surface samples per pixel, averaged (silhouettes, pixels that see two surfaces); each sample's footprint is its sub-pixel; costs N^2 gathers"},
     {"render.indirect", "mapping", "", "defaults", "-",
