@@ -260,7 +260,7 @@ TOFSIM_PHYSICS_FN double footprintSlotValue(vec3 kernel, int k) {
 // float path whose bin point sampling takes, and the CDF is exactly 0 below
 // the support's first bin edge and exactly 1 above its last bin, so a kernel
 // inside one bin (a spike, a wall seen head-on) puts exactly its value there.
-const int FOOTPRINT_DIRECT_BINS = 8;
+const int FOOTPRINT_DIRECT_BINS = 16;
 
 // The kernel's first and last kink relative to floor(centre), in float:
 // exact offsets from the centre's bin, so the kinks' positions within it are

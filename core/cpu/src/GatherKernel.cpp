@@ -61,7 +61,7 @@ __attribute__((target_clones("avx2", "default"))) void vplKernels(const PixelSur
     const int firstBin = physics::footprintNarrowFirstBin(kernel, bins);
     terms.first[i] = firstBin;
     terms.count[i] = narrow ? physics::footprintNarrowBinCount(kernel) : 0;
-#pragma GCC unroll 8
+#pragma GCC unroll 16
     for (int j = 0; j < kFootprintDirectBins; ++j) {
       terms.mass[j][i] = physics::footprintNarrowMass(kernel, j);
     }

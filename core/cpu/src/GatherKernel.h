@@ -19,7 +19,7 @@ namespace tofsim::cpu {
 
 constexpr std::size_t kVplBlock = 256;  ///< VPLs per block: ~10 KiB of VPL data, in L1
 constexpr int32_t kNoLight = INT_MIN;   ///< bin of a VPL that does not light the pixel
-constexpr int kFootprintDirectBins = 8;  ///< = FOOTPRINT_DIRECT_BINS (checked in GatherKernel.cpp)
+constexpr int kFootprintDirectBins = 16; ///< = FOOTPRINT_DIRECT_BINS (checked in GatherKernel.cpp)
 
 /// The camera G-buffer of one pixel, as the gather needs it.
 struct PixelSurface {

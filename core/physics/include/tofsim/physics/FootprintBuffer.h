@@ -30,36 +30,46 @@ struct FootprintOffAxis {
 /// caller books as off-axis energy (it is not in the buffer).
 inline FootprintOffAxis depositFootprint(double* diff, int32_t bins, const vec3& kernel,
                                          const vec3& energy) {
-  // footprintSlotValue's sum over the four kinks, each term computed only
-  // for the kinks within reach of the bin: the others' weights are exactly
-  // 0, so the value has the same bits, at a quarter of the work.
-  const double wide = static_cast<double>(kernel.y);
-  const bool fromCdf = footprintKnot(kernel, 0) < 2.0 || wide < 1.0;
-  const bool step = static_cast<double>(kernel.z) < static_cast<double>(1e-6f);
+  // footprintSlotBin and footprintSlotValue with the kinks and their bins
+  // computed once, and each slot's sum over the four kinks taken only over
+  // the kinks within reach of its bin: the others' weights are exactly 0, so
+  // the entries have the same bits at a fraction of the work.
   double knot[4];
   int knotBin[4];
   for (int j = 0; j < 4; ++j) {
     knot[j] = footprintKnot(kernel, j);
     knotBin[j] = footprintKnotBin(kernel, j, bins);
   }
-  for (int slot = 0; slot < FOOTPRINT_SLOTS; ++slot) {
-    const int bin = footprintSlotBin(kernel, slot, bins);
-    if (bin < 0) continue;
-    double value;
-    if (fromCdf) {
-      value = footprintSlotValue(kernel, bin);
-    } else {
-      double w[4] = {0.0, 0.0, 0.0, 0.0};
-      for (int j = 0; j < 4; ++j) {
-        if (bin >= knotBin[j] && bin <= knotBin[j] + 2) w[j] = footprintKinkWeight(knot[j], bin, step);
-      }
-      value = step ? (1.0 / wide) * (w[0] - w[3])
-                   : (1.0 / (wide * static_cast<double>(kernel.z))) * (w[0] - w[1] - w[2] + w[3]);
-    }
-    double* entry = diff + static_cast<std::size_t>(bin) * 3;
-    for (int c = 0; c < 3; ++c) entry[c] += value * static_cast<double>(energy[c]);
+  if (knot[3] < 0.0 || knot[0] >= static_cast<double>(bins)) {
+    return {footprintMassBefore(kernel), footprintMassAfter(kernel, bins)};  // wholly off
   }
-  return {footprintMassBefore(kernel), footprintMassAfter(kernel, bins)};
+  const double wide = static_cast<double>(kernel.y);
+  const bool fromCdf = knot[0] < 2.0 || wide < 1.0;
+  const bool step = static_cast<double>(kernel.z) < static_cast<double>(1e-6f);
+  const double scale = step ? 1.0 / wide : 1.0 / (wide * static_cast<double>(kernel.z));
+  for (int j = 0; j < 4; ++j) {
+    for (int o = 0; o < 3; ++o) {
+      const int bin = knotBin[j] + o;
+      if (bin >= bins || (j > 0 && bin <= knotBin[j - 1] + 2)) continue;
+      double value;
+      if (fromCdf) {
+        value = footprintSlotValue(kernel, bin);
+      } else {
+        double w[4] = {0.0, 0.0, 0.0, 0.0};
+        for (int i = std::max(0, j - 2); i < 4; ++i) {
+          if (bin >= knotBin[i] && bin <= knotBin[i] + 2) {
+            w[i] = footprintKinkWeight(knot[i], bin, step);
+          }
+        }
+        value = step ? scale * (w[0] - w[3]) : scale * (w[0] - w[1] - w[2] + w[3]);
+      }
+      double* entry = diff + static_cast<std::size_t>(bin) * 3;
+      for (int c = 0; c < 3; ++c) entry[c] += value * static_cast<double>(energy[c]);
+    }
+  }
+  // F(0) is exactly 0 when the kernel starts on the axis, 1 - F(bins) when it ends on it.
+  return {knot[0] >= 0.0 ? 0.0 : footprintMassBefore(kernel),
+          knot[3] < static_cast<double>(bins) ? 0.0 : footprintMassAfter(kernel, bins)};
 }
 
 /// Light of one pixel's contributions that fell off the axis, summed over
