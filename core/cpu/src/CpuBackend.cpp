@@ -272,41 +272,48 @@ void CpuBackend::gatherTile(std::size_t tile, std::size_t firstVpl, std::size_t 
   const float eps = 1e-4f * sceneScale_m_;  // as indirect_gather.comp's exact visibility
   const VplArrays& v = *vpls_;
   const std::size_t perPixel = samplesPerPixel();
-  VplTerms terms;
+  // One block of terms per sample: contributions are added VPL by VPL and,
+  // for each VPL, sample by sample, so the order of the additions (and the
+  // bytes) does not depend on where the blocks and batches start.
+  std::vector<VplTerms> terms(perPixel);
   const std::size_t end = std::min(pixelCount_, (tile + 1) * kTilePixels);
   for (std::size_t first = firstVpl; first < firstVpl + count; first += kVplBlock) {
     const std::size_t n = std::min(kVplBlock, firstVpl + count - first);
     for (std::size_t i = tile * kTilePixels; i < end; ++i) {
       float* histogram = &indirect_[i * bins * kChannels];
       physics::OffAxisSums lost{outside_[2 * i], outside_[2 * i + 1]};
-      for (std::size_t sample = i * perPixel; sample < (i + 1) * perPixel; ++sample) {
-        if (!segmentLit_[sample]) continue;
-        const PixelSurface& surface = segmentSurfaces_[sample];
-        vplTerms(surface, v, first, n, c, terms);
-        for (std::size_t k = 0; k < n; ++k) {
-          const int32_t bin = terms.bin[k];
+      for (std::size_t s = 0; s < perPixel; ++s) {
+        if (segmentLit_[i * perPixel + s]) {
+          vplTerms(segmentSurfaces_[i * perPixel + s], v, first, n, c, terms[s]);
+        }
+      }
+      for (std::size_t k = 0; k < n; ++k) {
+        for (std::size_t s = 0; s < perPixel; ++s) {
+          if (!segmentLit_[i * perPixel + s]) continue;
+          const VplTerms& t = terms[s];
+          const int32_t bin = t.bin[k];
           if (bin == kNoLight) continue;
+          const PixelSurface& surface = segmentSurfaces_[i * perPixel + s];
           const std::size_t vpl = first + k;
           if (exact) {
             const glm::vec3 from = glm::vec3(v.px[vpl], v.py[vpl], v.pz[vpl]) +
                                    glm::vec3(v.nx[vpl], v.ny[vpl], v.nz[vpl]) * eps;
             if (scene_->occluded(from, surface.x + surface.n * eps)) continue;
-          } else if (ism_ && !ism_->visible(vpl, glm::vec3(terms.dx[k], terms.dy[k], terms.dz[k]),
-                                            terms.dist[k], sceneScale_m_)) {
+          } else if (ism_ && !ism_->visible(vpl, glm::vec3(t.dx[k], t.dy[k], t.dz[k]), t.dist[k],
+                                            sceneScale_m_)) {
             continue;
           }
-          const glm::vec3 energy(terms.r[k], terms.g[k], terms.b[k]);
+          const glm::vec3 energy(t.r[k], t.g[k], t.b[k]);
           if (c.footprint) {
             // physics::depositNarrow / depositWide, from the block's precomputed terms.
-            const int32_t narrowBins = terms.count[k];
+            const int32_t narrowBins = t.count[k];
             for (int32_t j = 0; j < narrowBins; ++j) {
-              physics::depositNarrowBin(histogram, bins, terms.first[k] + j, terms.mass[j][k],
-                                        energy, lost);
+              physics::depositNarrowBin(histogram, bins, t.first[k] + j, t.mass[j][k], energy,
+                                        lost);
             }
             if (narrowBins == 0) {
               physics::depositWide(footprintOf(i), bins,
-                                   glm::vec3(terms.centre[k], terms.wide[k], terms.narrow[k]),
-                                   energy, lost);
+                                   glm::vec3(t.centre[k], t.wide[k], t.narrow[k]), energy, lost);
             }
             continue;
           }
