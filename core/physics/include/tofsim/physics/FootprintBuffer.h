@@ -115,6 +115,21 @@ inline void depositNarrow(float* histogram, int32_t bins, const vec3& kernel, co
   }
 }
 
+/// Adds one contribution of `energy` spread by `kernel` to a pixel: narrow
+/// into its float `histogram`, wide into its difference buffer `diff` (zero
+/// before the pixel's first wide kernel); the part off the axis into `lost`.
+/// Returns whether `diff` was written (the pixel then needs
+/// integrateFootprint). The GL gathers' footprint_deposit.glsl does the same.
+inline bool depositContribution(float* histogram, double* diff, int32_t bins, const vec3& kernel,
+                                const vec3& energy, OffAxisSums& lost) {
+  if (footprintIsNarrow(kernel)) {
+    depositNarrow(histogram, bins, kernel, energy, lost);
+    return false;
+  }
+  depositWide(diff, bins, kernel, energy, lost);
+  return true;
+}
+
 /// The final pass for one pixel: adds the bin integrals held by `diff`
 /// (bins x 3, as depositFootprint left it) to `histogram` (bins x 3 floats).
 /// Running sums in double, channel by channel, bins in increasing order: the
