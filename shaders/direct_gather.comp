@@ -1,17 +1,18 @@
 #version 450 core
-// Direct transient light: one thread per pixel of the segment. The pixel's
-// surface point x receives the light's impulse after |l - x| and reflects it
-// (Lambertian) to the camera after |x - c|; the radiance lands in the bin of
-// the full optical path eta * (|l - x| + |x - c|), or eta * |l - x| when the
-// camera delay is unwarped. Each bin has this thread as its only writer, so
-// the result does not depend on scheduling.
+// Direct transient light: one thread per pixel of the segment, over the
+// pixel's PIXEL_SAMPLES^2 G-buffer samples in order. A sample's surface point
+// x receives the light's impulse after |l - x| and reflects it (Lambertian) to
+// the camera after |x - c|; the radiance lands in the bin of the full optical
+// path eta * (|l - x| + |x - c|), or eta * |l - x| when the camera delay is
+// unwarped. With PIXEL_FOOTPRINT it is spread instead over that path's
+// distribution across the sample's sub-pixel (footprint_deposit.glsl). Each
+// bin has this thread as its only writer, so the result does not depend on
+// scheduling. The sample loop runs at most 16^2 times, far below llvmpipe's
+// 65535 loop trips per invocation.
 layout(local_size_x = TOFSIM_WORK_GROUP_SIZE) in;
 
 #include "light.glsl"
-
-layout(binding = TOFSIM_UNIT_G_POSITION) uniform sampler2D uGPosition;
-layout(binding = TOFSIM_UNIT_G_NORMAL) uniform sampler2D uGNormal;
-layout(binding = TOFSIM_UNIT_G_ALBEDO) uniform sampler2D uGAlbedo;
+#include "surface_samples.glsl"
 
 layout(std430, binding = TOFSIM_SSBO_DIRECT_VOLUME) buffer DirectVolume { float direct[]; };
 layout(std430, binding = TOFSIM_SSBO_OUTSIDE_AXIS) buffer OutsideAxis { float outside[]; };  // [2 * pixel]: before, [2 * pixel + 1]: after
@@ -25,17 +26,21 @@ uniform float uBinWidth_m;
 uniform float uIndexOfRefraction;
 uniform int uCameraUnwarp;
 uniform vec3 uCameraPosition_world;
+uniform float uSampleWeight;  // 1 / PIXEL_SAMPLES^2: the sample's share of the pixel
 
-void main() {
-  uint local = gl_GlobalInvocationID.y * (gl_NumWorkGroups.x * gl_WorkGroupSize.x) + gl_GlobalInvocationID.x;
-  if (local >= uPixelCount) return;
-  uint pixel = uFirstPixel + local;
-  ivec2 xy = ivec2(int(pixel % uint(uImageWidth)), int(pixel / uint(uImageWidth)));
-  vec4 position = texelFetch(uGPosition, xy, 0);
+#ifdef PIXEL_FOOTPRINT
+#define FOOTPRINT_HISTOGRAM direct
+#include "footprint_deposit.glsl"
+#endif
+
+// Adds sample s of pixel `local` (at image position xy).
+void gatherSample(uint local, ivec2 xy, int s, inout float lostBefore, inout float lostAfter) {
+  ivec2 texel = sampleTexel(xy, s);
+  vec4 position = texelFetch(uGPosition, texel, 0);
   if (position.w == 0.0) return;
   vec3 x = position.xyz;
-  vec3 n = texelFetch(uGNormal, xy, 0).xyz;
-  vec3 albedo = texelFetch(uGAlbedo, xy, 0).rgb;
+  vec3 n = texelFetch(uGNormal, texel, 0).xyz;
+  vec3 albedo = texelFetch(uGAlbedo, texel, 0).rgb;
 
   vec3 toLight = uLightPosition_world - x;
   float dLight = length(toLight);
@@ -48,13 +53,49 @@ void main() {
   vec3 radiance = lambertianDirect(albedo, uLightIntensity_W_per_sr, profile, cosX, dLight);
   float dCamera = uCameraUnwarp != 0 ? 0.0 : length(x - uCameraPosition_world);
   float path_m = directPathLength(uIndexOfRefraction, dLight, dCamera);
+#ifdef PIXEL_FOOTPRINT
+  vec3 dxdu, dxdv;
+  surfaceStepsAcrossSample(x, n, dxdu, dxdv);
+  vec2 steps = pathStepsAcrossPixel(
+      opticalPathGradient(x, uLightPosition_world, uCameraPosition_world, uIndexOfRefraction,
+                          uCameraUnwarp != 0),
+      dxdu, dxdv);
+  vec3 kernel = footprintKernel(path_m, steps, uStart_m, uBinWidth_m);
+  depositContribution(local, kernel, radiance * uSampleWeight, lostBefore, lostAfter);
+#else
+  // Point sampling: one sample gives the bytes of before sub-pixel samples.
+#if PIXEL_SAMPLES > 1
+  radiance = radiance * uSampleWeight;
+#endif
   int bin = binOfPath(path_m, uStart_m, uBinWidth_m);
   if (bin < 0 || bin >= uBins) {
-    outside[2u * local + (bin < 0 ? 0u : 1u)] += radiance.r + radiance.g + radiance.b;
+    float value = radiance.r + radiance.g + radiance.b;
+    if (bin < 0) {
+      lostBefore += value;
+    } else {
+      lostAfter += value;
+    }
     return;
   }
   uint base = (local * uint(uBins) + uint(bin)) * uint(TOFSIM_CHANNELS);
-  direct[base + 0u] = radiance.r;
-  direct[base + 1u] = radiance.g;
-  direct[base + 2u] = radiance.b;
+  direct[base + 0u] += radiance.r;
+  direct[base + 1u] += radiance.g;
+  direct[base + 2u] += radiance.b;
+#endif
+}
+
+void main() {
+  uint local = gl_GlobalInvocationID.y * (gl_NumWorkGroups.x * gl_WorkGroupSize.x) + gl_GlobalInvocationID.x;
+  if (local >= uPixelCount) return;
+  uint pixel = uFirstPixel + local;
+  ivec2 xy = ivec2(int(pixel % uint(uImageWidth)), int(pixel / uint(uImageWidth)));
+  float lostBefore = outside[2u * local];
+  float lostAfter = outside[2u * local + 1u];
+#if PIXEL_SAMPLES == 1
+  gatherSample(local, xy, 0, lostBefore, lostAfter);
+#else
+  for (int s = 0; s < kSamplesPerPixel; ++s) gatherSample(local, xy, s, lostBefore, lostAfter);
+#endif
+  outside[2u * local] = lostBefore;
+  outside[2u * local + 1u] = lostAfter;
 }

@@ -33,7 +33,8 @@ const int FOOTPRINT_SLOTS = 12;
 // v / |v|, or 0 for the zero vector.
 TOFSIM_PHYSICS_FN vec3 footprintUnitOrZero(vec3 v) {
   float len = length(v);
-  return len > 0.0f ? v / len : vec3(0.0f);
+  float scale = len > 0.0f ? 1.0f / len : 0.0f;  // a select, not a branch: vectorises
+  return v * scale;
 }
 
 // Derivative of the surface point x across one pixel step, from the ray
@@ -57,9 +58,8 @@ TOFSIM_PHYSICS_FN vec3 surfaceStepAcrossPixel(vec3 toSurface, vec3 forward, vec3
 // t_l is constant across the pixel).
 TOFSIM_PHYSICS_FN vec3 opticalPathGradient(vec3 x, vec3 source, vec3 camera, float eta,
                                            bool unwarp) {
-  vec3 g = footprintUnitOrZero(x - source);
-  if (!unwarp) g = g + footprintUnitOrZero(x - camera);
-  return eta * g;
+  float cameraLeg = unwarp ? 0.0f : 1.0f;
+  return eta * (footprintUnitOrZero(x - source) + cameraLeg * footprintUnitOrZero(x - camera));
 }
 
 // The path's derivatives (a, b) in metres across the pixel: the gradient
@@ -68,13 +68,51 @@ TOFSIM_PHYSICS_FN vec2 pathStepsAcrossPixel(vec3 gradient, vec3 dxdu, vec3 dxdv)
   return vec2(dot(gradient, dxdu), dot(gradient, dxdv));
 }
 
-// The kernel (see the top) of a contribution at optical path path_m with
-// derivatives steps_m across the pixel, on the axis (start_m, binWidth_m).
+// The path's derivatives (c, d) in metres across a VPL's patch (its RSM
+// texel, spanned by patchU.xyz and patchV.xyz), toward the point x in
+// direction d = (x - x_l) / |x - x_l|: the gradient in x_l of
+// eta (|x_l - l| + |x_l - x|) projected on the patch steps. The light leg's
+// part, eta (x_l - l)/|x_l - l| . step, is constant per VPL and stored in the
+// steps' w (vplPatchSteps in core/ir).
+TOFSIM_PHYSICS_FN vec2 vplPatchPathSteps(vec4 patchU, vec4 patchV, vec3 d, float eta) {
+  return vec2(patchU.w - eta * dot(d, vec3(patchU)), patchV.w - eta * dot(d, vec3(patchV)));
+}
+
+// The two box widths (bins) standing for a path linear in four independent
+// uniform offsets: the pixel's (u, v) with derivatives steps_m.xy and the
+// VPL patch's with steps_m.zw (0 for the direct term). Their sum's density is
+// the convolution of four boxes; it is replaced by the trapezoid of the two
+// boxes with the same mean and variance that keeps the widest box: wide = the
+// largest width, narrow = the root sum of squares of the other three (then
+// (wide^2 + narrow^2) / 12 is the variance of the sum); if that exceeds wide,
+// both get the root mean square. With the patch's widths 0 this is exactly
+// the pixel's trapezoid (sqrt(b * b) == |b| in IEEE arithmetic), so the direct
+// term and a VPL without a footprint are spread exactly as derived above.
+TOFSIM_PHYSICS_FN vec2 footprintWidths(vec4 steps_m, float binWidth_m) {
+  vec4 w = abs(steps_m) / binWidth_m;
+  float pixelWide = max(w.x, w.y);
+  float pixelNarrow = min(w.x, w.y);
+  float patchWide = max(w.z, w.w);
+  float patchNarrow = min(w.z, w.w);
+  float wide = max(pixelWide, patchWide);
+  float other = min(pixelWide, patchWide);
+  float narrow = sqrt(other * other + pixelNarrow * pixelNarrow + patchNarrow * patchNarrow);
+  float rms = sqrt(0.5f * (wide * wide + narrow * narrow));
+  bool equal = narrow > wide;  // selects, not branches: vectorises
+  return vec2(equal ? rms : wide, equal ? rms : narrow);
+}
+
+// The kernel (see the top) of a contribution at optical path path_m whose
+// path changes by steps_m across the pixel (xy) and across the VPL's patch
+// (zw; 0 without one), on the axis (start_m, binWidth_m).
+TOFSIM_PHYSICS_FN vec3 footprintKernel(float path_m, vec4 steps_m, float start_m,
+                                       float binWidth_m) {
+  vec2 widths = footprintWidths(steps_m, binWidth_m);
+  return vec3((path_m - start_m) / binWidth_m, widths.x, widths.y);
+}
 TOFSIM_PHYSICS_FN vec3 footprintKernel(float path_m, vec2 steps_m, float start_m,
                                        float binWidth_m) {
-  float wa = abs(steps_m.x) / binWidth_m;
-  float wb = abs(steps_m.y) / binWidth_m;
-  return vec3((path_m - start_m) / binWidth_m, max(wa, wb), min(wa, wb));
+  return footprintKernel(path_m, vec4(steps_m.x, steps_m.y, 0.0f, 0.0f), start_m, binWidth_m);
 }
 
 // Position (bins) of kink `knot` (0..3, in increasing order): the trapezoid's
@@ -145,13 +183,142 @@ TOFSIM_PHYSICS_FN int footprintSlotBin(vec3 kernel, int slot, int bins) {
   return bin;
 }
 
-// The value a deposit adds at difference-buffer bin k, per unit of energy:
-// D_k = I_k - 2 I_(k-1) + I_(k-2), I_i = G(i + 1) - G(i), so
-// D_k = G(k+1) - 3 G(k) + 3 G(k-1) - G(k-2), all exact.
-TOFSIM_PHYSICS_FN double footprintSlotValue(vec3 kernel, int k) {
+// The value a deposit adds at difference-buffer bin k, per unit of energy,
+// from the CDF: D_k = I_k - 2 I_(k-1) + I_(k-2), I_i = G(i + 1) - G(i), so
+// D_k = G(k+1) - 3 G(k) + 3 G(k-1) - G(k-2), all exact. Used where the kernel
+// starts near or before the axis (the truncation of G at the start).
+TOFSIM_PHYSICS_FN double footprintSlotValueFromCdf(vec3 kernel, int k) {
   double three = double(3.0f);
   return footprintMassToEdge(kernel, k + 1) - three * footprintMassToEdge(kernel, k) +
          three * footprintMassToEdge(kernel, k - 1) - footprintMassToEdge(kernel, k - 2);
+}
+
+// What one kink of the density contributes to D_k. The trapezoid's density
+// is piecewise linear; at a kink at p its slope changes by s, and a ramp
+// s max(x - p, 0) has bin integrals whose second differences are s times the
+// quadratic B-spline B2(k + 1 - p) (support [0, 3], sum 1). A box (narrow
+// width under 1e-6 bins) has steps instead: a step h H(x - p) gives h (1 - f),
+// h (2 f - 1), -h f at bins floor(p) + 0, 1, 2 (f = p - floor(p)).
+TOFSIM_PHYSICS_FN double footprintKinkWeight(double p, int k, bool step) {
+  double zero = double(0.0f);
+  double oneHalf = double(0.5f);
+  double t = double(k + 1) - p;  // in (0, 3] on the kink's three bins
+  if (t <= zero || t > double(3.0f)) return zero;
+  if (step) {
+    double f = double(1.0f) - t + floor(t);  // p - floor(p), as t = k + 1 - p
+    if (t <= double(1.0f)) return t;         // bin floor(p): 1 - f
+    if (t <= double(2.0f)) return double(2.0f) * f - double(1.0f);
+    return -f;
+  }
+  if (t <= double(1.0f)) return oneHalf * t * t;
+  if (t <= double(2.0f)) {
+    return oneHalf * (double(-2.0f) * t * t + double(6.0f) * t - double(3.0f));
+  }
+  double r = double(3.0f) - t;
+  return oneHalf * r * r;
+}
+
+// The value a deposit adds at difference-buffer bin k, per unit of energy.
+// For a kernel at least a bin wide away from the axis start, the sum of the
+// four kinks' B-spline weights (a few flops instead of 24 CDF values, exact
+// for the trapezoid; the renderers deposit only kernels wider than
+// FOOTPRINT_DIRECT_BINS here, narrower ones go straight to the histogram,
+// below); else from the truncated CDF, which is accurate however narrow.
+TOFSIM_PHYSICS_FN double footprintSlotValue(vec3 kernel, int k) {
+  double wide = double(kernel.y);
+  if (footprintKnot(kernel, 0) < double(2.0f) || wide < double(1.0f)) {
+    return footprintSlotValueFromCdf(kernel, k);
+  }
+  double narrow = double(kernel.z);
+  bool step = narrow < double(1e-6f);
+  // Slope changes +1/(AB), -1/(AB), -1/(AB), +1/(AB) at kinks 0..3, or
+  // steps +1/A at kink 0 and -1/A at kink 3 for a box.
+  double ramp = step ? double(0.0f) : double(1.0f) / (wide * narrow);
+  double height = double(1.0f) / wide;
+  if (step) {
+    return height * (footprintKinkWeight(footprintKnot(kernel, 0), k, true) -
+                     footprintKinkWeight(footprintKnot(kernel, 3), k, true));
+  }
+  return ramp * (footprintKinkWeight(footprintKnot(kernel, 0), k, false) -
+                 footprintKinkWeight(footprintKnot(kernel, 1), k, false) -
+                 footprintKinkWeight(footprintKnot(kernel, 2), k, false) +
+                 footprintKinkWeight(footprintKnot(kernel, 3), k, false));
+}
+
+// ---- Narrow kernels: straight into the histogram, in float ----
+//
+// Most contributions cover a few bins (a wall seen head-on: under one). For
+// them the difference buffer would cost more than it saves (about 25 CDF
+// values in double and a per-pixel integration), so a kernel whose support
+// touches at most FOOTPRINT_DIRECT_BINS bins adds its bin masses straight to
+// the float histogram; wider ones go to the difference buffer. Which way a
+// contribution goes depends on it alone, so the bytes stay deterministic.
+//
+// Narrow masses are computed in float, branch-free (the CPU vectorises them,
+// a GPU runs float at full rate): the bin integrals of a kernel inside 8 bins
+// need no more than float, the kink positions' own precision is that of the
+// float path whose bin point sampling takes, and the CDF is exactly 0 below
+// the support's first bin edge and exactly 1 above its last bin, so a kernel
+// inside one bin (a spike, a wall seen head-on) puts exactly its value there.
+const int FOOTPRINT_DIRECT_BINS = 16;
+
+// The kernel's first and last kink relative to floor(centre), in float:
+// exact offsets from the centre's bin, so the kinks' positions within it are
+// good to float's precision near 1 whatever the centre (its own bin has the
+// precision of the path's float, as in point sampling).
+TOFSIM_PHYSICS_FN vec2 footprintLocalExtent(vec3 kernel) {
+  float halfWidth = 0.5f * (kernel.y + kernel.z);
+  float local = kernel.x - floor(kernel.x);  // exact
+  return vec2(local - halfWidth, local + halfWidth);
+}
+
+// Whether the kernel's support touches at most FOOTPRINT_DIRECT_BINS bins.
+TOFSIM_PHYSICS_FN bool footprintIsNarrow(vec3 kernel) {
+  vec2 e = footprintLocalExtent(kernel);
+  return floor(e.y) - floor(e.x) < float(FOOTPRINT_DIRECT_BINS);
+}
+
+// Bins a narrow kernel touches: from footprintNarrowFirstBin, this many.
+TOFSIM_PHYSICS_FN int footprintNarrowBinCount(vec3 kernel) {
+  vec2 e = footprintLocalExtent(kernel);
+  return int(floor(e.y) - floor(e.x)) + 1;
+}
+
+// The first bin a narrow kernel touches (may lie off the axis). Clamped to
+// [-FOOTPRINT_DIRECT_BINS - 1, bins] so that a kernel far off the axis (its
+// masses then all land off it) keeps the integer in range.
+TOFSIM_PHYSICS_FN int footprintNarrowFirstBin(vec3 kernel, int bins) {
+  float first = floor(kernel.x) + floor(footprintLocalExtent(kernel).x);
+  return int(clamp(first, -float(FOOTPRINT_DIRECT_BINS) - 1.0f, float(bins)));
+}
+
+// The kernel's CDF at s bins above its first kink, without branches.
+TOFSIM_PHYSICS_FN float footprintNarrowCdf(vec3 kernel, float s) {
+  float wide = kernel.y;
+  float narrow = kernel.z;
+  float total = wide + narrow;
+  float ramps = 2.0f * wide * narrow;
+  float rising = s * s / ramps;
+  float plateau = (s - 0.5f * narrow) / wide;
+  float r = total - s;
+  float falling = 1.0f - r * r / ramps;
+  float inside = s < narrow ? rising : (s <= wide ? plateau : falling);
+  return s <= 0.0f ? 0.0f : (s >= total ? 1.0f : inside);
+}
+
+// Mass of a narrow kernel in bin first + j (0 <= j < footprintNarrowBinCount,
+// first = footprintNarrowFirstBin): the factor of the contribution's value
+// added to that bin, or booked before / after the axis when it lies there.
+TOFSIM_PHYSICS_FN float footprintNarrowMass(vec3 kernel, int j) {
+  vec2 e = footprintLocalExtent(kernel);
+  float frac = e.x - floor(e.x);  // the first kink's position in its bin
+  float last = floor(e.y) - floor(e.x);
+  // Off the axis by far, `first` was clamped: the masses then only need to
+  // sum to 1, which the exact 0 and 1 at the ends guarantee.
+  float upper = float(j + 1) > last ? 1.0f : footprintNarrowCdf(kernel, float(j + 1) - frac);
+  float lower = j == 0 ? 0.0f
+                       : (float(j) > last ? 1.0f : footprintNarrowCdf(kernel, float(j) - frac));
+  return upper - lower;
 }
 
 #endif  // TOFSIM_FOOTPRINT_KERNEL_GLSL

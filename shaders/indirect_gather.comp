@@ -1,9 +1,13 @@
 #version 450 core
 // One indirect bounce (Eqs. 6, 7, 15, 17): one thread per pixel loops over the
-// batch's VPLs in index order and adds each contribution to the bin of its
-// full optical path  t_l + eta (|x_l - x| + |x - c|). Being the only writer of
-// its pixel's bins, and adding in a fixed order, makes the sum reproducible
-// bit for bit whatever the batch and segment sizes.
+// batch's VPLs in index order and, for each, over the pixel's PIXEL_SAMPLES^2
+// G-buffer samples, and adds each contribution to the bin of its full optical
+// path  t_l + eta (|x_l - x| + |x - c|); with PIXEL_FOOTPRINT it is spread
+// over that path's distribution across the sample's sub-pixel and the VPL's
+// patch (footprint_deposit.glsl). Being the only writer of its pixel's bins,
+// and adding in a fixed order (VPL, then sample: an order that does not
+// depend on where the batches and dispatches split the VPLs), makes the sum
+// reproducible bit for bit whatever the batch and segment sizes.
 layout(local_size_x = TOFSIM_WORK_GROUP_SIZE) in;
 
 #include "transient_physics.glsl"
@@ -16,9 +20,7 @@ uniform uint uVplStride;
 uniform int uIsmResolution;
 #endif
 
-layout(binding = TOFSIM_UNIT_G_POSITION) uniform sampler2D uGPosition;
-layout(binding = TOFSIM_UNIT_G_NORMAL) uniform sampler2D uGNormal;
-layout(binding = TOFSIM_UNIT_G_ALBEDO) uniform sampler2D uGAlbedo;
+#include "surface_samples.glsl"
 
 layout(std430, binding = TOFSIM_SSBO_INDIRECT_VOLUME) buffer IndirectVolume { float indirect[]; };
 layout(std430, binding = TOFSIM_SSBO_OUTSIDE_AXIS) buffer OutsideAxis { float outside[]; };  // [2 * pixel]: before, [2 * pixel + 1]: after
@@ -37,10 +39,17 @@ uniform uint uVplCount;     // VPLs in this dispatch
 uniform uint uIsmFirstVpl;  // first VPL whose ISM is at the start of the ISM buffer
 uniform float uGeometryClamp;  // <= 0: no clamping
 uniform float uSceneScale_m;
+uniform float uSampleWeight;  // 1 / PIXEL_SAMPLES^2: the sample's share of the pixel
+
+#ifdef PIXEL_FOOTPRINT
+#define FOOTPRINT_HISTOGRAM indirect
+#include "footprint_deposit.glsl"
+#endif
 
 // llvmpipe stops every loop of an invocation after 65535 iterations in total
 // (its infinite-loop guard), silently, and counts loop entries too. The
-// renderer sizes dispatches to stay well below; an invocation that still
+// renderer sizes dispatches to stay well below (counting the sample loop and
+// the shadow rays per VPL: IndirectLight::vplsPerDispatch); an invocation that still
 // comes within a factor of two raises this flag so the render fails loudly
 // instead of losing light.
 const uint kLoopTripLimit = 30000u;
@@ -60,53 +69,121 @@ bool visible(uint ismIndex, Vpl vpl, vec3 x, vec3 n, vec3 d, float dist, inout u
 #endif
 }
 
+// One G-buffer sample as the gather uses it.
+struct Sample {
+  bool lit;  // a surface was seen
+  vec3 x;
+  vec3 n;
+  vec3 brdf;          // albedo / pi, times the sample's weight with several samples
+  float cameraPath;   // eta |x - c|, or 0 when unwarped
+#ifdef PIXEL_FOOTPRINT
+  vec3 dxdu, dxdv;    // the surface's steps across the sub-pixel
+#endif
+};
+
+Sample loadSample(ivec2 xy, int s) {
+  Sample o;
+  ivec2 texel = sampleTexel(xy, s);
+  vec4 position = texelFetch(uGPosition, texel, 0);
+  o.lit = position.w != 0.0;
+  o.x = position.xyz;
+  o.n = texelFetch(uGNormal, texel, 0).xyz;
+  o.brdf = texelFetch(uGAlbedo, texel, 0).rgb / PI;
+#if defined(PIXEL_FOOTPRINT) || PIXEL_SAMPLES > 1
+  o.brdf = o.brdf * uSampleWeight;  // as the CPU's PixelSurface::brdf
+#endif
+  o.cameraPath = cameraPathLength(uCameraUnwarp != 0, uIndexOfRefraction,
+                                  length(o.x - uCameraPosition_world));
+#ifdef PIXEL_FOOTPRINT
+  surfaceStepsAcrossSample(o.x, o.n, o.dxdu, o.dxdv);
+#endif
+  return o;
+}
+
+// Adds VPL k of the dispatch (vpl) seen from sample `at` of pixel `local`.
+void gatherVpl(uint local, Sample at, uint k, Vpl vpl, inout float lostBefore,
+               inout float lostAfter, inout uint iterations) {
+  vec3 toX = at.x - vpl.positionPath.xyz;
+  float dist2 = dot(toX, toX);
+  if (dist2 <= 0.0) return;
+  float dist = sqrt(dist2);
+  vec3 d = toX / dist;
+  float cosVpl = dot(vpl.normal.xyz, d);
+  float cosX = -dot(at.n, d);
+  if (cosVpl <= 0.0 || cosX <= 0.0) return;
+  float g = geometryTerm(cosVpl, cosX, dist2, uGeometryClamp);
+  if (!visible(uFirstVpl - uIsmFirstVpl + k, vpl, at.x, at.n, d, dist, iterations)) return;
+  vec3 radiance = at.brdf * vpl.flux.rgb * g;
+  float path_m = vplPathLength(vpl.positionPath.w, uIndexOfRefraction, dist, at.cameraPath);
+#ifdef PIXEL_FOOTPRINT
+  vec2 pixelSteps = pathStepsAcrossPixel(
+      opticalPathGradient(at.x, vpl.positionPath.xyz, uCameraPosition_world, uIndexOfRefraction,
+                          uCameraUnwarp != 0),
+      at.dxdu, at.dxdv);
+#ifdef VPL_FOOTPRINT
+  vec2 patchSteps = vplPatchPathSteps(vpl.patchU, vpl.patchV, d, uIndexOfRefraction);
+#else
+  vec2 patchSteps = vec2(0.0);
+#endif
+  vec3 kernel = footprintKernel(path_m, vec4(pixelSteps, patchSteps), uStart_m, uBinWidth_m);
+  depositContribution(local, kernel, radiance, lostBefore, lostAfter);
+#else
+  int bin = binOfPath(path_m, uStart_m, uBinWidth_m);
+  if (bin < 0 || bin >= uBins) {
+    float value = radiance.r + radiance.g + radiance.b;
+    if (bin < 0) {
+      lostBefore += value;
+    } else {
+      lostAfter += value;
+    }
+    return;
+  }
+  uint i = (local * uint(uBins) + uint(bin)) * uint(TOFSIM_CHANNELS);
+  indirect[i + 0u] += radiance.r;
+  indirect[i + 1u] += radiance.g;
+  indirect[i + 2u] += radiance.b;
+#endif
+}
+
 void main() {
   uint local = gl_GlobalInvocationID.y * (gl_NumWorkGroups.x * gl_WorkGroupSize.x) + gl_GlobalInvocationID.x;
   if (local >= uPixelCount) return;
   uint pixel = uFirstPixel + local;
   ivec2 xy = ivec2(int(pixel % uint(uImageWidth)), int(pixel / uint(uImageWidth)));
-  vec4 position = texelFetch(uGPosition, xy, 0);
-  if (position.w == 0.0) return;
-  vec3 x = position.xyz;
-  vec3 n = texelFetch(uGNormal, xy, 0).xyz;
-  vec3 brdf = texelFetch(uGAlbedo, xy, 0).rgb / PI;
-  float cameraPath =
-      cameraPathLength(uCameraUnwarp != 0, uIndexOfRefraction, length(x - uCameraPosition_world));
-  uint base = local * uint(uBins);
+#ifdef PIXEL_FOOTPRINT
+  // The CPU's order: the off-axis sums carry on from the buffer's.
+  float lostBefore = outside[2u * local];
+  float lostAfter = outside[2u * local + 1u];
+#else
   float lostBefore = 0.0;
   float lostAfter = 0.0;
+#endif
   uint iterations = 0u;
+#if PIXEL_SAMPLES == 1
+  Sample at = loadSample(xy, 0);
+  if (!at.lit) return;
+#endif
   for (uint k = 0u; k < uVplCount; ++k) {
     ++iterations;
     Vpl vpl = vpls[uFirstVpl + k];
-    vec3 toX = x - vpl.positionPath.xyz;
-    float dist2 = dot(toX, toX);
-    if (dist2 <= 0.0) continue;
-    float dist = sqrt(dist2);
-    vec3 d = toX / dist;
-    float cosVpl = dot(vpl.normal.xyz, d);
-    float cosX = -dot(n, d);
-    if (cosVpl <= 0.0 || cosX <= 0.0) continue;
-    float g = geometryTerm(cosVpl, cosX, dist2, uGeometryClamp);
-    if (!visible(uFirstVpl - uIsmFirstVpl + k, vpl, x, n, d, dist, iterations)) continue;
-    vec3 radiance = brdf * vpl.flux.rgb * g;
-    float path_m = vplPathLength(vpl.positionPath.w, uIndexOfRefraction, dist, cameraPath);
-    int bin = binOfPath(path_m, uStart_m, uBinWidth_m);
-    if (bin < 0 || bin >= uBins) {
-      float value = radiance.r + radiance.g + radiance.b;
-      if (bin < 0) {
-        lostBefore += value;
-      } else {
-        lostAfter += value;
-      }
-      continue;
+#if PIXEL_SAMPLES == 1
+    gatherVpl(local, at, k, vpl, lostBefore, lostAfter, iterations);
+#else
+    // Samples re-read per VPL: a VPL-major order keeps the bytes independent
+    // of the dispatch split, and the G-buffer reads are cheap next to a VPL.
+    for (int s = 0; s < kSamplesPerPixel; ++s) {
+      ++iterations;
+      Sample at = loadSample(xy, s);
+      if (at.lit) gatherVpl(local, at, k, vpl, lostBefore, lostAfter, iterations);
     }
-    uint i = (base + uint(bin)) * uint(TOFSIM_CHANNELS);
-    indirect[i + 0u] += radiance.r;
-    indirect[i + 1u] += radiance.g;
-    indirect[i + 2u] += radiance.b;
+#endif
   }
+#ifdef PIXEL_FOOTPRINT
+  outside[2u * local] = lostBefore;
+  outside[2u * local + 1u] = lostAfter;
+#else
   outside[2u * local] += lostBefore;
   outside[2u * local + 1u] += lostAfter;
+#endif
   if (iterations >= kLoopTripLimit) atomicOr(loopLimitHit, 1u);
 }

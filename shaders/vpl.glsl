@@ -4,6 +4,8 @@ struct Vpl {
   vec4 positionPath;  // xyz world position; w = optical path light -> VPL, metres
   vec4 normal;        // xyz unit normal on the lit side
   vec4 flux;          // rgb: albedo * flux / pi, W/sr (cosine-weighted intensity)
+  vec4 patchU;        // the VPL's RSM texel patch: xyz step across it, w the light leg's path change
+  vec4 patchV;        //   (ir::Vpl; footprint_kernel.glsl's vplPatchPathSteps)
 };
 layout(std430, binding = TOFSIM_SSBO_VPLS) readonly buffer Vpls { Vpl vpls[]; };
 

@@ -5,7 +5,8 @@
 // the GL's BVH shadow rays) and with ISMs (build included). The read-back of
 // the segment waits for the GL's work; a second read-back, timed alone, is
 // taken off on both backends.
-// Usage: tofsim_cpu_gather [threads] [side] [rsm_resolution]
+// Usage: tofsim_cpu_gather [threads] [side] [rsm_resolution] [pixel_footprint 0|1, default 1]
+//        [cpu_only 0|1, default 0]
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -51,9 +52,13 @@ int main(int argc, char** argv) {
   const int threads = argc > 1 ? std::atoi(argv[1]) : 2;
   const int side = argc > 2 ? std::atoi(argv[2]) : 128;
   const int rsm = argc > 3 ? std::atoi(argv[3]) : 32;
+  const bool footprint = argc > 4 ? std::atoi(argv[4]) != 0 : true;
   test::CornerJob corner(side);
   corner.job.settings.indirect.rsm_resolution = rsm;
-  std::printf("corner %dx%d, rsm %d, %d threads\n", side, side, rsm, threads);
+  corner.job.settings.pixel_footprint = footprint;
+  std::printf("corner %dx%d, rsm %d, %d threads, pixel_footprint %s\n", side, side, rsm, threads,
+              footprint ? "true" : "false");
+  const bool cpuOnly = argc > 5 && std::atoi(argv[5]) != 0;
   const struct {
     const char* name;
     bool visibility;
@@ -72,7 +77,7 @@ int main(int argc, char** argv) {
     cpu::CpuBackend cpuBackend({threads, c.visibility});
     const double cpuSeconds = gatherSeconds(corner.job, cpuBackend, pairs);
     const double cpuMps = pairs / cpuSeconds * 1e-6;
-    if (!c.visibility) {
+    if (!c.visibility || cpuOnly) {
       std::printf("| %s | %zu | %.1f | n/a | n/a |\n", c.name, pairs, cpuMps);
       continue;
     }

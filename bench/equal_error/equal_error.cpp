@@ -1,26 +1,32 @@
 // Equal-error benchmark (issue 4): on the Cornell box, how long the CPU
 // reference path tracer needs to reach the error of a transient instant
 // radiosity render, both measured against a long-converged reference, all in
-// one run on one machine. Usage: equal_error SCENE.gltf [resolution] [gl|cpu]
-// (the IR backend, default gl: llvmpipe without a GPU)
+// one run on one machine.
+// Usage: equal_error SCENE.gltf [resolution] [gl|cpu] [point|box]
+//  - the IR backend, default gl (llvmpipe without a GPU);
+//  - the pixel model (issue 14), default point: the ground truth and the
+//    reference sweep use that render.reference.pixel_filter. point: IR with
+//    render.pixel_footprint false (both sample pixel centres, issue 4's
+//    bench); box: the pixel-area truth, and every IR setting is run with the
+//    footprint (vpl_footprint true) and without it (pixel_footprint false).
 
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <memory>
 #include <string>
 #include <thread>
 #include <vector>
 
+#include "support/TestJobs.h"  // the Cornell box job shared with the tests
 #include "tofsim/capture/VolumeCollector.h"
 #include "tofsim/compare/VolumeComparison.h"
-#include "tofsim/gl/Context.h"
-#include "tofsim/reference/ReferenceRenderer.h"
 #include "tofsim/cpu/CpuBackend.h"
+#include "tofsim/gl/Context.h"
 #include "tofsim/ir/IrRenderer.h"
+#include "tofsim/reference/ReferenceRenderer.h"
 #include "tofsim/render/GlBackend.h"
-#include <memory>
-#include "support/TestJobs.h"  // the Cornell box job shared with the tests
 #include "tofsim/scene/GltfLoader.h"
 #include "tofsim/volume/PhysicalConstants.h"
 
@@ -44,13 +50,15 @@ Measured measure(const capture::RenderJob& job, const TransientVolume& truth, Re
   capture::VolumeCollector out(job.camera.width, job.camera.height, job.settings.time, 3);
   const auto start = std::chrono::steady_clock::now();
   render(out);
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return {seconds, compare::compareVolumes(out.total(), truth)};
 }
 
-Measured referenceRun(const capture::RenderJob& job, const TransientVolume& truth, int spp) {
+Measured referenceRun(const capture::RenderJob& job, const TransientVolume& truth, int spp,
+                      reference::PixelFilter filter) {
   reference::ReferenceSettings s;
-  s.pixel_filter = reference::PixelFilter::Point;  // IR samples pixel centres (issue 14: box truth)
+  s.pixel_filter = filter;
   s.samples_per_pixel = spp;
   return measure(job, truth, [&](capture::VolumeCollector& out) {
     reference::ReferenceRenderer(s).render(job, out);
@@ -71,17 +79,70 @@ double timeAtError(const std::vector<std::pair<double, double>>& timeError, doub
   return NAN;
 }
 
+struct IrCase {
+  const char* name;
+  capture::Visibility visibility;
+  double clamp;
+  int rsm;
+  bool footprint;
+  int pixelSamples;
+};
+
+std::vector<IrCase> irCases(bool box) {
+  std::vector<IrCase> cases;
+  for (bool footprint : box ? std::vector<bool>{true, false} : std::vector<bool>{false}) {
+    for (const IrCase& c : {IrCase{"IR, ISM 32^2, clamp 100", capture::Visibility::Ism, 100.0, 32},
+                            IrCase{"IR, ISM 32^2, clamp 100", capture::Visibility::Ism, 100.0, 64},
+                            IrCase{"IR, exact, no clamp", capture::Visibility::Exact, 0.0, 32},
+                            IrCase{"IR, exact, no clamp", capture::Visibility::Exact, 0.0, 64}}) {
+      IrCase withFootprint = c;
+      withFootprint.footprint = footprint;
+      withFootprint.pixelSamples = 1;
+      cases.push_back(withFootprint);
+    }
+  }
+  if (!box) return cases;
+  // Against the pixel-area truth the silhouettes need sub-pixel samples.
+  for (std::size_t i = 0; i < 4; ++i) {
+    IrCase supersampled = cases[i];
+    supersampled.pixelSamples = 2;
+    cases.push_back(supersampled);
+  }
+  return cases;
+}
+
+// Ground truth: 2 bounces (the transport IR simulates), many paths, seed 99.
+TransientVolume groundTruth(const capture::RenderJob& job, reference::PixelFilter filter) {
+  capture::RenderJob truthJob = job;
+  truthJob.settings.seed = 99;
+  reference::ReferenceSettings truthSettings;
+  truthSettings.pixel_filter = filter;
+  truthSettings.samples_per_pixel = 16384;
+  capture::VolumeCollector truthOut(job.camera.width, job.camera.height, job.settings.time, 3);
+  const auto t0 = std::chrono::steady_clock::now();
+  reference::ReferenceRenderer(truthSettings).render(truthJob, truthOut);
+  const double truthSeconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  std::printf("ground truth: reference, pixel_filter %s, %d paths/pixel, %.1f s\n\n",
+              filter == reference::PixelFilter::Box ? "box" : "point",
+              truthSettings.samples_per_pixel, truthSeconds);
+  return truthOut.total();
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   if (argc < 2) {
-    std::fprintf(stderr, "usage: equal_error SCENE.gltf [resolution]\n");
+    std::fprintf(stderr, "usage: equal_error SCENE.gltf [resolution] [gl|cpu] [point|box]\n");
     return 2;
   }
   const int resolution = argc > 2 ? std::atoi(argv[2]) : 64;
   const scene::Scene scene = scene::loadGltf(argv[1]);
   const capture::RenderJob job = cornellJob(scene, resolution);
   const bool onCpu = argc > 3 && std::string(argv[3]) == "cpu";
+  const bool box = argc > 4 && std::string(argv[4]) == "box";
+  const reference::PixelFilter filter =
+      box ? reference::PixelFilter::Box : reference::PixelFilter::Point;
   std::unique_ptr<gl::Context> context = onCpu ? nullptr : std::make_unique<gl::Context>();
   const auto makeIr = [&] {
     if (onCpu) return ir::IrRenderer(std::make_unique<cpu::CpuBackend>());
@@ -89,47 +150,40 @@ int main(int argc, char** argv) {
   };
   std::printf("IR device: %s; reference: Embree, %u threads\n", makeIr().description().c_str(),
               std::thread::hardware_concurrency());
+  const TransientVolume truth = groundTruth(job, filter);
 
-  // Ground truth: 2 bounces (the transport IR simulates), many paths, seed 99.
-  capture::RenderJob truthJob = job;
-  truthJob.settings.seed = 99;
-  reference::ReferenceSettings truthSettings;
-  truthSettings.pixel_filter = reference::PixelFilter::Point;
-  truthSettings.samples_per_pixel = 16384;
-  capture::VolumeCollector truthOut(resolution, resolution, job.settings.time, 3);
-  const auto t0 = std::chrono::steady_clock::now();
-  reference::ReferenceRenderer(truthSettings).render(truthJob, truthOut);
-  const double truthSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  const TransientVolume truth = truthOut.total();
-  std::printf("ground truth: reference, %d paths/pixel, %.1f s\n\n", truthSettings.samples_per_pixel,
-              truthSeconds);
-
-  std::printf("| renderer | setting | seconds | steady rel. L1 | transient rel. L1 |\n|---|---|---|---|---|\n");
-  struct IrCase { const char* name; capture::Visibility visibility; double clamp; int rsm; };
+  std::printf(
+      "| renderer | setting | seconds | steady rel. L1 | transient rel. L1 "
+      "|\n|---|---|---|---|---|\n");
   std::vector<std::pair<std::string, Measured>> irRuns;
-  for (const IrCase& c : {IrCase{"IR, ISM 32^2, clamp 100", capture::Visibility::Ism, 100.0, 32},
-                          IrCase{"IR, ISM 32^2, clamp 100", capture::Visibility::Ism, 100.0, 64},
-                          IrCase{"IR, exact, no clamp", capture::Visibility::Exact, 0.0, 32},
-                          IrCase{"IR, exact, no clamp", capture::Visibility::Exact, 0.0, 64}}) {
+  for (const IrCase& c : irCases(box)) {
     capture::RenderJob irJob = job;
     irJob.settings.indirect.visibility = c.visibility;
     irJob.settings.indirect.geometry_term_clamp_per_m2 = c.clamp;
     irJob.settings.indirect.rsm_resolution = c.rsm;
+    irJob.settings.pixel_footprint = c.footprint;
+    irJob.settings.indirect.vpl_footprint = c.footprint;
+    irJob.settings.pixel_samples = c.pixelSamples;
     const ir::IrRenderer renderer = makeIr();
-    const Measured m = measure(irJob, truth, [&](capture::VolumeCollector& out) { renderer.render(irJob, out); });
-    const std::string setting = std::string(c.name) + ", RSM " + std::to_string(c.rsm) + "^2";
+    const Measured m =
+        measure(irJob, truth, [&](capture::VolumeCollector& out) { renderer.render(irJob, out); });
+    const std::string setting = std::string(c.name) + ", RSM " + std::to_string(c.rsm) + "^2" +
+                                (c.footprint ? ", footprint" : ", no footprint") +
+                                (c.pixelSamples > 1 ? ", pixel_samples 2" : "");
     std::printf("| IR | %s | %.2f | %.4f | %.4f |\n", setting.c_str(), m.seconds,
                 m.error.steadyRelativeL1, m.error.transientRelativeL1);
     irRuns.emplace_back(setting, m);
   }
   std::vector<std::pair<double, double>> timeError;
   for (int spp = 1; spp <= 4096; spp *= 2) {
-    const Measured m = referenceRun(job, truth, spp);
+    const Measured m = referenceRun(job, truth, spp, filter);
     std::printf("| reference | %d paths/pixel | %.2f | %.4f | %.4f |\n", spp, m.seconds,
                 m.error.steadyRelativeL1, m.error.transientRelativeL1);
     timeError.emplace_back(m.seconds, m.error.transientRelativeL1);
   }
-  std::printf("\n| IR setting | IR seconds | reference seconds at equal transient error | speed-up |\n|---|---|---|---|\n");
+  std::printf(
+      "\n| IR setting | IR seconds | reference seconds at equal transient error | speed-up "
+      "|\n|---|---|---|---|\n");
   for (const auto& [setting, m] : irRuns) {
     const double t = timeAtError(timeError, m.error.transientRelativeL1);
     std::printf("| %s | %.2f | %s | %s |\n", setting.c_str(), m.seconds,

@@ -57,7 +57,8 @@ def write_plane_gltf(path, side=6.0, albedo=PLANE_ALBEDO):
 def plane_config(tmp_path):
     """The plane of tests/render/DirectRenderGLTest.cpp as a config dict: a
     camera 1.5 m above it with a point light at the camera, 1200 bins of 2 mm
-    optical path from 2.5 m."""
+    optical path from 2.5 m. Point pixels (pixel_footprint off): the tests
+    compare the bins of pixel centres' paths."""
     scene = write_plane_gltf(tmp_path / "plane.gltf")
     return {
         "scene": scene,
@@ -65,7 +66,8 @@ def plane_config(tmp_path):
                    "resolution": [40, 30]},
         "light": {"type": "point", "position": [0, 0, 1.5], "intensity": [2.0, 1.0, 0.5]},
         "time": {"start": "2.5 m", "bin_width": "2 mm", "bins": 1200},
-        "render": {"indirect": {"enabled": False}, "shadow_map_resolution": 256},
+        "render": {"indirect": {"enabled": False}, "shadow_map_resolution": 256,
+                   "pixel_footprint": False},
         "output": {"directory": str(tmp_path / "out")},
     }
 

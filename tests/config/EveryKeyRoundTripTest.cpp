@@ -51,6 +51,8 @@ render:
   shadow_map_resolution: 256
   memory_budget: 100 MiB
   strict: true
+  pixel_footprint: false
+  pixel_samples: 3
   indirect:
     enabled: false
     rsm_resolution: 8
@@ -59,6 +61,7 @@ render:
     ism_pull_push: false
     visibility: exact
     geometry_clamp: 50
+    vpl_footprint: false
   reference:
     bounces: 3
     samples_per_pixel: 16

@@ -36,6 +36,7 @@ bool sameBytes(const TransientVolume& a, const TransientVolume& b) {
 
 TEST(CpuBackendTest, PlaneDirectPeakIsInTheBinOfTheRoundTrip) {
   test::PlaneJob s;
+  s.job.settings.pixel_footprint = false;  // compares pixel centres' paths (point pixels)
   s.job.settings.indirect.enabled = false;
   const CpuRender out = renderOnCpu(s.job, {2, true});
   int checked = 0;
@@ -110,26 +111,31 @@ TEST_P(CpuDeterminismTest, OneTwoAndThreeThreadsGiveTheSameBytes) {
 }
 
 TEST_P(CpuDeterminismTest, SegmentsAndBatchesDoNotChangeTheBytes) {
-  test::CornerJob s(20);
-  s.job.settings.indirect.visibility = GetParam();
-  s.job.settings.indirect.rsm_resolution = 12;
-  s.job.settings.indirect.points_per_vpl = 300;
-  s.job.settings.indirect.ism_resolution = 64;  // ~22 kB per VPL: ISMs outgrow the budget below
-  const CpuRender whole = renderOnCpu(s.job, {2, true});
-  // A budget just above what the render holds for its whole length: many
-  // segments, and (with ISMs) many VPL batches.
-  s.job.settings.memory_budget_bytes = std::size_t{3} << 20;
-  const CpuRender split = renderOnCpu(s.job, {2, true});
-  EXPECT_EQ(whole.result.segments, 1u);
-  EXPECT_GT(split.result.segments, 2u);
-  if (GetParam() == capture::Visibility::Ism) {
-    EXPECT_GT(split.result.vplBatches, 1u);
+  // With the pixel footprint (the default), with one and with 2 x 2 samples
+  // per pixel (whose additions must not depend on where batches start).
+  for (const int samples : {1, 2}) {
+    test::CornerJob s(20);
+    s.job.settings.indirect.visibility = GetParam();
+    s.job.settings.indirect.rsm_resolution = 12;
+    s.job.settings.indirect.points_per_vpl = 300;
+    s.job.settings.indirect.ism_resolution = 64;  // ~22 kB per VPL: ISMs outgrow the budget below
+    s.job.settings.pixel_samples = samples;
+    const CpuRender whole = renderOnCpu(s.job, {2, true});
+    // A budget just above what the render holds for its whole length: many
+    // segments, and (with ISMs) many VPL batches.
+    s.job.settings.memory_budget_bytes = std::size_t{3} << 20;
+    const CpuRender split = renderOnCpu(s.job, {2, true});
+    EXPECT_EQ(whole.result.segments, 1u);
+    EXPECT_GT(split.result.segments, 2u);
+    if (GetParam() == capture::Visibility::Ism) {
+      EXPECT_GT(split.result.vplBatches, 1u);
+    }
+    EXPECT_TRUE(sameBytes(whole.volume.direct, split.volume.direct)) << samples;
+    EXPECT_TRUE(sameBytes(whole.volume.indirect, split.volume.indirect)) << samples;
+    double sum = 0.0;
+    for (float v : whole.volume.indirect.values()) sum += v;
+    EXPECT_GT(sum, 0.0);
   }
-  EXPECT_TRUE(sameBytes(whole.volume.direct, split.volume.direct));
-  EXPECT_TRUE(sameBytes(whole.volume.indirect, split.volume.indirect));
-  double sum = 0.0;
-  for (float v : whole.volume.indirect.values()) sum += v;
-  EXPECT_GT(sum, 0.0);
 }
 
 INSTANTIATE_TEST_SUITE_P(Visibility, CpuDeterminismTest,

@@ -1,8 +1,10 @@
 // The CPU backend against the GL one on the plane and the corner: the same
-// G-buffer and VPLs (exactly in what is discrete: which pixels see a surface,
-// how many VPLs, in which order; within float tolerance in the values), and
-// volumes that agree, both rendered through the one IR driver, on the plane,
-// the corner and the Cornell box. Needs a GL context (llvmpipe in CI).
+// G-buffer (pixel centres and N x N sub-pixel samples) and VPLs (exactly in
+// what is discrete: which pixels see a surface, how many VPLs, in which order;
+// within float tolerance in the values), and volumes that agree, both rendered
+// through the one IR driver, on the plane, the corner and the Cornell box,
+// with point pixels and pixel footprints, one sample per pixel and 2 x 2.
+// Needs a GL context (llvmpipe in CI).
 
 #include <gtest/gtest.h>
 
@@ -38,32 +40,39 @@ std::vector<float> download(const gl::Texture& t, std::size_t texels) {
 }
 
 // Rasterized and ray-traced points on the same triangle differ by float
-// rounding only: 1e-5 of the scene's size; normals and albedo to 1e-5.
-void expectSameGBuffer(const capture::RenderJob& job) {
+// rounding only: 1e-5 of the scene's size; normals and albedo to 1e-5. With
+// `samples` per side, the GL backend's G-buffer is the same view rasterized
+// at (width N) x (height N) (surface_samples.glsl): its texel (x N + i, y N +
+// j) must be the CPU's sample j N + i of pixel (x, y).
+void expectSameGBuffer(const capture::RenderJob& job, int32_t samples = 1) {
   test::glTestContext();
   render::GpuScene gpuScene(*job.scene);
   glm::vec3 lo, hi;
   viewBounds(job, lo, hi);
-  render::SurfaceMaps gl(job.camera.width, job.camera.height);
+  const int32_t width = job.camera.width * samples, height = job.camera.height * samples;
+  render::SurfaceMaps gl(width, height);
   const glm::vec2 range = render::depthRange(lo, hi, job.camera.position_world);
   gl.render(gpuScene, job.camera.projection(range.x, range.y) * job.camera.view(),
             job.camera.position_world);
-  const std::size_t pixels = static_cast<std::size_t>(job.camera.width) * job.camera.height;
+  const std::size_t pixels = static_cast<std::size_t>(width) * height;
   const auto position = download(gl.position, pixels);
   const auto normal = download(gl.normal, pixels);
   const auto albedo = download(gl.albedo, pixels);
   const reference::RayScene rays(*job.scene, 1);
-  const SurfaceImage cpu = traceSurfaces(rays, job.camera, 2);
+  const SurfaceImage cpu = traceSurfaces(rays, job.camera, 2, samples);
   const float tol = 1e-5f * glm::length(hi - lo);
   std::size_t surfaces = 0;
-  for (std::size_t i = 0; i < pixels; ++i) {
-    ASSERT_EQ(cpu.position[i].w, position[4 * i + 3]) << "pixel " << i;
+  for (std::size_t t = 0; t < pixels; ++t) {
+    const std::size_t tx = t % width, ty = t / width;
+    const std::size_t pixel = (ty / samples) * job.camera.width + tx / samples;
+    const std::size_t i = pixel * samples * samples + (ty % samples) * samples + tx % samples;
+    ASSERT_EQ(cpu.position[i].w, position[4 * t + 3]) << "sample " << i;
     if (cpu.position[i].w == 0.0f) continue;
     ++surfaces;
     for (int k = 0; k < 3; ++k) {
-      EXPECT_NEAR(cpu.position[i][k], position[4 * i + k], tol) << "pixel " << i;
-      EXPECT_NEAR(cpu.normal[i][k], normal[4 * i + k], 1e-5f) << "pixel " << i;
-      EXPECT_NEAR(cpu.albedo[i][k], albedo[4 * i + k], 1e-5f) << "pixel " << i;
+      EXPECT_NEAR(cpu.position[i][k], position[4 * t + k], tol) << "sample " << i;
+      EXPECT_NEAR(cpu.normal[i][k], normal[4 * t + k], 1e-5f) << "sample " << i;
+      EXPECT_NEAR(cpu.albedo[i][k], albedo[4 * t + k], 1e-5f) << "sample " << i;
     }
   }
   EXPECT_GT(surfaces, pixels / 2);
@@ -71,6 +80,9 @@ void expectSameGBuffer(const capture::RenderJob& job) {
 
 TEST(CpuMatchesGlGLTest, GBufferOnThePlane) { expectSameGBuffer(test::PlaneJob().job); }
 TEST(CpuMatchesGlGLTest, GBufferOnTheCorner) { expectSameGBuffer(test::CornerJob(32).job); }
+TEST(CpuMatchesGlGLTest, SubPixelGBufferOnTheCorner) {
+  expectSameGBuffer(test::CornerJob(16).job, 3);
+}
 
 // Same count and order; positions and paths to 1e-5 of the scene, flux to
 // 2e-4 relative: both evaluate the same texel formula, but in a spot's falloff
@@ -170,13 +182,39 @@ void expectSameVolumes(const capture::RenderJob& job, double steadyTol, double t
   }
 }
 
+// How a pixel is sampled: render.pixel_footprint and render.pixel_samples.
+struct PixelModel {
+  bool footprint;
+  int32_t samples;
+  const char* name;
+};
+constexpr PixelModel kPixelModels[] = {{false, 1, "point pixels"},
+                                       {true, 1, "footprints"},
+                                       {false, 2, "point pixels, 2 x 2 samples"},
+                                       {true, 2, "footprints, 2 x 2 samples"}};
+
+// expectSameVolumes under each pixel model. Point pixels put a whole
+// contribution in one bin, so a path within rounding of a bin edge moves all
+// of it: `pointTransientTol`. A footprint moves only a rounding-sized part of
+// its mass with the edge (the bin integrals are continuous in the path), so
+// its transient tolerance is the steady one.
+void expectSameVolumesForEachPixelModel(capture::RenderJob job, double steadyTol,
+                                        double pointTransientTol) {
+  for (const PixelModel& model : kPixelModels) {
+    SCOPED_TRACE(model.name);
+    job.settings.pixel_footprint = model.footprint;
+    job.settings.pixel_samples = model.samples;
+    expectSameVolumes(job, steadyTol, model.footprint ? steadyTol : pointTransientTol);
+  }
+}
+
 void expectSameCornerVolumes(capture::Visibility visibility) {
   test::CornerJob s(24);
   s.job.settings.indirect.visibility = visibility;
   s.job.settings.indirect.rsm_resolution = 16;
   s.job.settings.indirect.points_per_vpl = 500;
   s.job.settings.shadow_map_resolution = 512;
-  expectSameVolumes(s.job, 1e-3, 1e-2);
+  expectSameVolumesForEachPixelModel(s.job, 1e-3, 1e-2);
 }
 
 TEST(CpuMatchesGlGLTest, CornerVolumesWithExactVisibility) {
@@ -192,7 +230,7 @@ TEST(CpuMatchesGlGLTest, PlaneVolumes) {
   s.job.camera.height = 32;
   s.job.settings.indirect.rsm_resolution = 16;
   s.job.settings.shadow_map_resolution = 512;
-  expectSameVolumes(s.job, 1e-3, 1e-2);
+  expectSameVolumesForEachPixelModel(s.job, 1e-3, 1e-2);
 }
 
 TEST(CpuMatchesGlGLTest, CornellBoxVolumes) {
@@ -209,9 +247,9 @@ TEST(CpuMatchesGlGLTest, CornellBoxVolumes) {
     // both splat the same seeded points, but a point's paraboloid texel can
     // round differently and the pull-push spreads it.
     if (v == capture::Visibility::Ism) {
-      expectSameVolumes(job, 3e-2, 3e-2);
+      expectSameVolumesForEachPixelModel(job, 3e-2, 3e-2);
     } else {
-      expectSameVolumes(job, 1e-2, 1e-2);
+      expectSameVolumesForEachPixelModel(job, 1e-2, 1e-2);
     }
   }
 }

@@ -17,7 +17,7 @@ constexpr std::size_t kHuge = std::size_t(1) << 40;
 
 TEST(SegmentPlanTest, BudgetDividesIntoWholePixels) {
   // 10 floats per pixel, 2 volumes: 80 bytes + 8 for the off-axis light.
-  const SegmentPlan plan = planSegments(1000, 10, 2, 88 * 64 + 87, kHuge, kHuge);
+  const SegmentPlan plan = planSegments(1000, {10, 2, 0}, 88 * 64 + 87, kHuge, kHuge);
   EXPECT_EQ(plan.pixelsPerSegment, 64u);
   EXPECT_EQ(plan.segmentCount, 16u);  // ceil(1000 / 64)
   EXPECT_EQ(plan.bytesPerSegment, 64u * 88);
@@ -25,18 +25,28 @@ TEST(SegmentPlanTest, BudgetDividesIntoWholePixels) {
   EXPECT_EQ(plan.segment(15).count, 40u);  // the last one is shorter
 }
 
+TEST(SegmentPlanTest, FootprintBufferIsCountedInDoubles) {
+  // 10 floats per pixel, 2 volumes and one footprint buffer of 10 doubles:
+  // 80 + 80 bytes + 8 for the off-axis light.
+  const SegmentPlan plan = planSegments(1000, {10, 2, 1}, 168 * 64 + 167, kHuge, kHuge);
+  EXPECT_EQ(plan.pixelsPerSegment, 64u);
+  EXPECT_EQ(plan.bytesPerSegment, 64u * 168);
+  // The largest buffer is the doubles': 400 bytes hold 5 pixels of 80.
+  EXPECT_EQ(planSegments(1000, {10, 2, 1}, kHuge, 400, kHuge).pixelsPerSegment, 5u);
+}
+
 TEST(SegmentPlanTest, DeviceLimitsCapTheSegment) {
   // One buffer of 400 bytes holds 10 pixels of 40 bytes.
-  EXPECT_EQ(planSegments(1000, 10, 2, kHuge, 400, kHuge).pixelsPerSegment, 10u);
-  EXPECT_EQ(planSegments(1000, 10, 2, kHuge, kHuge, 7).pixelsPerSegment, 7u);
-  const SegmentPlan whole = planSegments(1000, 10, 2, kHuge, kHuge, kHuge);
+  EXPECT_EQ(planSegments(1000, {10, 2, 0}, kHuge, 400, kHuge).pixelsPerSegment, 10u);
+  EXPECT_EQ(planSegments(1000, {10, 2, 0}, kHuge, kHuge, 7).pixelsPerSegment, 7u);
+  const SegmentPlan whole = planSegments(1000, {10, 2, 0}, kHuge, kHuge, kHuge);
   EXPECT_EQ(whole.pixelsPerSegment, 1000u);
   EXPECT_EQ(whole.segmentCount, 1u);
 }
 
 TEST(SegmentPlanTest, BudgetBelowOnePixelNamesTheKey) {
   try {
-    planSegments(1000, 10, 2, 83, kHuge, kHuge);
+    planSegments(1000, {10, 2, 0}, 83, kHuge, kHuge);
     FAIL() << "no error";
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("render.memory_budget"), std::string::npos) << e.what();

@@ -233,5 +233,73 @@ TEST(FootprintKernel, PathDerivativesMatchFiniteDifferences) {
   EXPECT_NEAR(glm::length(gUnwarped), eta, 1e-5f);
 }
 
+TEST(FootprintKernel, NarrowMassesAreTheExactBinIntegralsInFloat) {
+  // The float, branch-free masses of the histogram path against the double
+  // CDF's bin integrals, for kernels touching 1 .. FOOTPRINT_DIRECT_BINS bins.
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<float> centre(20.0f, 900.0f), width(0.0f, 6.0f), share(0.0f, 1.0f);
+  int checked = 0;
+  for (int n = 0; n < 4000; ++n) {
+    const float a = width(rng), b = a * share(rng) * (n % 5 == 0 ? 0.0f : 1.0f);
+    const vec3 kernel(centre(rng), std::max(a, b), std::min(a, b));
+    if (!footprintIsNarrow(kernel)) continue;
+    const int first = footprintNarrowFirstBin(kernel, 1024);
+    const int count = footprintNarrowBinCount(kernel);
+    ASSERT_GE(count, 1);
+    ASSERT_LE(count, FOOTPRINT_DIRECT_BINS);
+    double sum = 0.0;
+    for (int j = 0; j < count; ++j) {
+      const double exact = footprintCdf(kernel, first + j + 1.0) - footprintCdf(kernel, first + j);
+      const float mass = footprintNarrowMass(kernel, j);
+      EXPECT_NEAR(mass, exact, 1e-5) << kernel.x << " " << kernel.y << " " << kernel.z << " j " << j;
+      EXPECT_GE(mass, 0.0f);
+      sum += mass;
+    }
+    EXPECT_NEAR(sum, 1.0, 1e-6);
+    ++checked;
+  }
+  EXPECT_GT(checked, 1000);
+  // A spike and a kernel inside one bin give exactly their value to that bin.
+  EXPECT_EQ(footprintNarrowMass(vec3(37.25f, 0.0f, 0.0f), 0), 1.0f);
+  EXPECT_EQ(footprintNarrowBinCount(vec3(37.25f, 0.3f, 0.1f)), 1);
+  EXPECT_EQ(footprintNarrowMass(vec3(37.25f, 0.3f, 0.1f), 0), 1.0f);
+}
+
+TEST(FootprintKernel, KinkWeightsGiveTheCdfsSecondDifferences) {
+  // Wide kernels' slot values from the kinks' B-spline weights against the
+  // same second differences from the CDF (which the tests above validate).
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<float> centre(40.0f, 900.0f), width(1.0f, 300.0f), share(0.0f, 1.0f);
+  for (int n = 0; n < 400; ++n) {
+    const float a = width(rng), b = n % 7 == 0 ? 0.0f : a * share(rng) * share(rng);
+    const vec3 kernel(centre(rng), a, b);
+    for (int slot = 0; slot < FOOTPRINT_SLOTS; ++slot) {
+      const int bin = footprintSlotBin(kernel, slot, 1024);
+      if (bin < 0) continue;
+      EXPECT_NEAR(footprintSlotValue(kernel, bin), footprintSlotValueFromCdf(kernel, bin),
+                  1e-9 + 1e-9 / (double(a) * std::max(double(b), 1e-3)))
+          << kernel.x << " " << a << " " << b << " bin " << bin;
+    }
+  }
+}
+
+TEST(FootprintKernel, FourWidthsKeepTheVarianceAndThePixelsTrapezoid) {
+  // Without a VPL patch: exactly the pixel's two boxes.
+  const vec2 pixel = footprintWidths(vec4(0.012f, -0.0034f, 0.0f, 0.0f), 0.003f);
+  EXPECT_EQ(pixel.x, std::abs(0.012f) / 0.003f);
+  EXPECT_EQ(pixel.y, std::abs(-0.0034f) / 0.003f);
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<float> step(-0.05f, 0.05f);
+  for (int n = 0; n < 200; ++n) {
+    const vec4 steps(step(rng), step(rng), step(rng), step(rng));
+    const vec2 w = footprintWidths(steps, 0.003f);
+    const vec4 bins = abs(steps) / 0.003f;
+    // Variance (A^2 + B^2) / 12 of the trapezoid = that of the four boxes' sum.
+    EXPECT_NEAR(w.x * w.x + w.y * w.y, dot(bins, bins), 1e-4 * dot(bins, bins));
+    EXPECT_GE(w.x, w.y);
+    EXPECT_GE(w.x, std::max(std::max(bins.x, bins.y), std::max(bins.z, bins.w)) * 0.999f);
+  }
+}
+
 }  // namespace
 }  // namespace tofsim::physics

@@ -60,7 +60,9 @@ TEST_F(TimeWindowGLTest, CutOffAxisWarnsWithTheMeasuredFraction) {
   ASSERT_EQ(whole.exitCode, 0) << whole.output;
   EXPECT_EQ(whole.output.find("warning"), std::string::npos) << whole.output;
   const std::filesystem::path wholeJson = dir_ / "whole" / "transient.json";
-  EXPECT_EQ(test::offAxisFraction(wholeJson), 0.0);
+  // The pixel footprint spreads a grazing pixel's light a little past any
+  // axis that ends close behind it (16 x 16 pixels are wide): a trace, not a cut.
+  EXPECT_LT(test::offAxisFraction(wholeJson), 1e-4);
   EXPECT_NEAR(jsonNumber(wholeJson, "energy_on_axis"), on + after, 1e-4 * (on + after));
 }
 

@@ -29,6 +29,7 @@ RenderJob cornellJob(const scene::Scene& scene) {
   job.settings.indirect.rsm_resolution = 64;
   job.settings.indirect.visibility = Visibility::Exact;
   job.settings.indirect.geometry_term_clamp_per_m2 = 0.0;
+  job.settings.pixel_footprint = false;  // pixel centres, as the point-filter reference
   return job;
 }
 

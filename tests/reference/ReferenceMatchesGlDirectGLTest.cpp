@@ -37,6 +37,7 @@ int litBin(const TransientVolume& v, int y, int x) {
 
 void expectSameDirectLight(RenderJob job) {
   job.settings.indirect.enabled = false;
+  job.settings.pixel_footprint = false;  // compares pixel centres (point pixels)
   VolumeCollector gl(job.camera.width, job.camera.height, job.settings.time, 3);
   render::TransientRenderer(test::glTestContext()).render(job, gl);
   ReferenceSettings settings;

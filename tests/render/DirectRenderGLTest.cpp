@@ -39,6 +39,7 @@ class DirectRenderGLTest : public test::BackendTest {
 
 TEST_P(DirectRenderGLTest, PeakLandsInTheBinOfTheRoundTripPath) {
   PlaneSetup s;
+  s.job.settings.pixel_footprint = false;  // compares pixel centres' paths (point pixels)
   const VolumeCollector out = renderJob(s.job);
   int checked = 0;
   for (int y = 0; y < s.job.camera.height; ++y) {
@@ -85,6 +86,7 @@ TEST_P(DirectRenderGLTest, SteadyRadianceFollowsCosineOverDistanceSquared) {
 
 TEST_P(DirectRenderGLTest, CameraUnwarpShiftsPeaksByTheCameraDelay) {
   PlaneSetup s;
+  s.job.settings.pixel_footprint = false;  // compares pixel centres' paths (point pixels)
   s.job.settings.time = TimeAxis{1.0 / kSpeedOfLight_m_per_s, 0.002 / kSpeedOfLight_m_per_s, 1200};
   s.job.settings.camera_unwarp = true;
   const VolumeCollector out = renderJob(s.job);
@@ -105,6 +107,7 @@ TEST_P(DirectRenderGLTest, CameraUnwarpShiftsPeaksByTheCameraDelay) {
 
 TEST_P(DirectRenderGLTest, NoEnergyBeforeTheDirectPath) {
   PlaneSetup s;
+  s.job.settings.pixel_footprint = false;  // compares pixel centres' paths (point pixels)
   const VolumeCollector out = renderJob(s.job);
   const TransientVolume total = out.total();
   for (int y = 0; y < s.job.camera.height; ++y) {

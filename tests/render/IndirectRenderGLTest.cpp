@@ -109,6 +109,7 @@ TEST_P(IndirectRenderGLTest, CornerIndirectMatchesNumericalOneBounceIntegral) {
 
 TEST_P(IndirectRenderGLTest, NoIndirectEnergyBeforeTheShortestWallPath) {
   CornerSetup s;
+  s.job.settings.pixel_footprint = false;  // compares pixel centres' paths (point pixels)
   s.job.settings.indirect.visibility = Visibility::Ism;
   const VolumeCollector out = renderJob(s.job);
   const glm::dvec3 l(s.job.light.position_world), c(s.job.camera.position_world);

@@ -34,6 +34,16 @@ glm::vec3 Camera::pixelDirection(int32_t x, int32_t y, glm::vec2 offset) const {
                         static_cast<float>(p.y) * up());
 }
 
+glm::vec3 Camera::rayStepAlongX() const {
+  const double tanHalf = std::tan(glm::radians(static_cast<double>(fov_y_deg)) * 0.5);
+  return right() * static_cast<float>(2.0 * tanHalf / height);  // square pixels
+}
+
+glm::vec3 Camera::rayStepAlongY() const {
+  const double tanHalf = std::tan(glm::radians(static_cast<double>(fov_y_deg)) * 0.5);
+  return -up() * static_cast<float>(2.0 * tanHalf / height);
+}
+
 double Camera::pixelSolidAngle_sr(int32_t x, int32_t y) const {
   // A pixel of area dA on the unit-distance plane subtends dA cos^3(theta).
   const double tanHalf = std::tan(glm::radians(static_cast<double>(fov_y_deg)) * 0.5);

@@ -58,6 +58,8 @@ YAML::Node renderNode(const RunConfig& config) {
   n["shadow_map_resolution"] = r.shadow_map_resolution;
   n["memory_budget"] = std::to_string(r.memory_budget_bytes) + " B";
   n["strict"] = config.strict;
+  n["pixel_footprint"] = r.pixel_footprint;
+  n["pixel_samples"] = r.pixel_samples;
   YAML::Node i;
   i["enabled"] = r.indirect.enabled;
   i["rsm_resolution"] = r.indirect.rsm_resolution;
@@ -66,6 +68,7 @@ YAML::Node renderNode(const RunConfig& config) {
   i["ism_pull_push"] = r.indirect.ism_pull_push;
   i["visibility"] = r.indirect.visibility == capture::Visibility::Exact ? "exact" : "ism";
   i["geometry_clamp"] = shortest(r.indirect.geometry_term_clamp_per_m2);
+  i["vpl_footprint"] = r.indirect.vpl_footprint;
   n["indirect"] = i;
   YAML::Node ref;
   ref["bounces"] = config.reference.bounces;

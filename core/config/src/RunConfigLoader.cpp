@@ -138,6 +138,7 @@ void parseIndirect(const ConfigNode& node, capture::IndirectSettings& s) {
     node.failKey("visibility", "must be ism or exact (got '" + vis + "')");
   }
   s.geometry_term_clamp_per_m2 = node.getDouble("geometry_clamp", s.geometry_term_clamp_per_m2);
+  s.vpl_footprint = node.getBool("vpl_footprint", s.vpl_footprint);
 }
 
 // render.renderer and render.backend.
@@ -176,6 +177,9 @@ void parseRender(const ConfigNode& node, RunConfig& out) {
     node.failKey("memory_budget", "must be between 1 MiB and 1 PiB");
   }
   r.memory_budget_bytes = static_cast<std::size_t>(budget);
+  r.pixel_footprint = node.getBool("pixel_footprint", r.pixel_footprint);
+  r.pixel_samples =
+      static_cast<int32_t>(intInRange(node, "pixel_samples", r.pixel_samples, 1, 16));
   if (const auto indirect = node.optionalChild("indirect")) parseIndirect(*indirect, r.indirect);
   if (const auto reference = node.optionalChild("reference")) {
     ReferenceConfig& ref = out.reference;

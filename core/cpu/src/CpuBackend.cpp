@@ -11,6 +11,7 @@
 #include "SurfaceImage.h"
 #include "VplArrays.h"
 #include "tofsim/capture/SegmentSink.h"
+#include "tofsim/physics/FootprintBuffer.h"
 #include "tofsim/physics/TransientPhysics.h"
 #include "tofsim/reference/RayScene.h"
 #include "tofsim/util/Error.h"
@@ -50,14 +51,25 @@ std::vector<float> CpuBackend::prepareSurfaces(const capture::RenderJob& job) {
   vpls_.reset();  // a new render: nothing of the previous one survives
   ism_.reset();
   scene_ = std::make_unique<reference::RayScene>(*job.scene, threads_);
-  surfaces_ = std::make_unique<SurfaceImage>(traceSurfaces(*scene_, job.camera, threads_));
+  const int32_t samples = job.settings.pixel_samples;
+  surfaces_ = std::make_unique<SurfaceImage>(traceSurfaces(*scene_, job.camera, threads_, samples));
   const scene::Bounds b = job.scene->bounds();
   sceneScale_m_ = std::max(glm::length(b.max - b.min), 1e-6f);
-  std::vector<float> positions(surfaces_->size() * 4);
-  for (std::size_t i = 0; i < surfaces_->size(); ++i) {
-    for (int k = 0; k < 4; ++k) positions[i * 4 + k] = surfaces_->position[i][k];
+  // The driver's G-buffer (depth, the light seen by the camera) is the pixel
+  // centres', whatever the sub-pixel samples.
+  const SurfaceImage centres =
+      samples == 1 ? SurfaceImage{} : traceSurfaces(*scene_, job.camera, threads_, 1);
+  const SurfaceImage& image = samples == 1 ? *surfaces_ : centres;
+  std::vector<float> positions(image.size() * 4);
+  for (std::size_t i = 0; i < image.size(); ++i) {
+    for (int k = 0; k < 4; ++k) positions[i * 4 + k] = image.position[i][k];
   }
   return positions;
+}
+
+std::size_t CpuBackend::samplesPerPixel() const {
+  const auto n = static_cast<std::size_t>(job_.settings.pixel_samples);
+  return n * n;
 }
 
 std::vector<ir::Vpl> CpuBackend::generateVpls(const capture::RenderJob& job) {
@@ -95,8 +107,12 @@ void CpuBackend::allocate(std::size_t pixelsPerSegment, std::size_t vplsPerBatch
   direct_.assign(floats, 0.0f);
   indirect_.assign(floats, 0.0f);
   outside_.assign(2 * pixelsPerSegment, 0.0f);
-  segmentSurfaces_.resize(pixelsPerSegment);
-  segmentLit_.resize(pixelsPerSegment);
+  // The plan counted the footprint buffers (ir::PixelBuffers); they start
+  // zero and integratePixel clears what it read.
+  footprint_.reset(job_.settings.pixel_footprint ? new double[floats] : nullptr);
+  footprintWritten_.assign(pixelsPerSegment, 0);
+  segmentSurfaces_.resize(pixelsPerSegment * samplesPerPixel());
+  segmentLit_.resize(pixelsPerSegment * samplesPerPixel());
   if (ism_) ism_->allocate(vplsPerBatch);
 }
 
@@ -113,20 +129,51 @@ void CpuBackend::beginSegment(std::size_t firstPixel, std::size_t count) {
   std::fill_n(indirect_.begin(), floats, 0.0f);
   std::fill_n(outside_.begin(), 2 * count, 0.0f);
   const capture::RenderSettings& s = job_.settings;
+  const capture::Camera& camera = job_.camera;
   const auto eta = static_cast<float>(s.index_of_refraction);
-  for (std::size_t i = 0; i < count; ++i) {
-    const std::size_t p = firstPixel + i;
+  const std::size_t perPixel = samplesPerPixel();
+  // Each sample stands for 1 / N^2 of the pixel and its footprint is its
+  // sub-pixel: the ray steps shrink by N.
+  const float weight = 1.0f / static_cast<float>(perPixel);
+  const float side = 1.0f / static_cast<float>(s.pixel_samples);
+  const glm::vec3 forward = camera.forward();
+  const glm::vec3 stepX = camera.rayStepAlongX() * side, stepY = camera.rayStepAlongY() * side;
+  for (std::size_t i = 0; i < count * perPixel; ++i) {
+    const std::size_t p = firstPixel * perPixel + i;
     segmentLit_[i] = surfaces_->position[p].w != 0.0f;
     PixelSurface& surface = segmentSurfaces_[i];
     surface.x = glm::vec3(surfaces_->position[p]);
     surface.n = glm::vec3(surfaces_->normal[p]);
-    surface.brdf = glm::vec3(surfaces_->albedo[p]) / physics::PI;
+    surface.brdf = glm::vec3(surfaces_->albedo[p]) / physics::PI * weight;
     surface.cameraPath_m = physics::cameraPathLength(
-        s.camera_unwarp, eta, glm::length(surface.x - job_.camera.position_world));
+        s.camera_unwarp, eta, glm::length(surface.x - camera.position_world));
+    const glm::vec3 toSurface = surface.x - camera.position_world;
+    surface.dxdu = physics::surfaceStepAcrossPixel(toSurface, forward, stepX, surface.n);
+    surface.dxdv = physics::surfaceStepAcrossPixel(toSurface, forward, stepY, surface.n);
   }
 }
 
+double* CpuBackend::footprintOf(std::size_t i) {
+  const std::size_t stride = static_cast<std::size_t>(job_.settings.time.bins) * kChannels;
+  double* diff = footprint_.get() + i * stride;
+  if (!footprintWritten_[i]) std::fill_n(diff, stride, 0.0);
+  footprintWritten_[i] = 1;
+  return diff;
+}
+
+void CpuBackend::integratePixel(std::size_t i, float* histogram) {
+  if (!footprintWritten_[i]) return;
+  const int bins = job_.settings.time.bins;
+  physics::integrateFootprint(footprint_.get() + i * bins * kChannels, bins, histogram);
+  footprintWritten_[i] = 0;  // zeroed again by footprintOf when next needed
+}
+
 void CpuBackend::gatherDirect() {
+  const std::size_t tiles = (pixelCount_ + kTilePixels - 1) / kTilePixels;
+  parallelFor(tiles, threads_, [&](std::size_t tile) { gatherDirectTile(tile); });
+}
+
+void CpuBackend::gatherDirectTile(std::size_t tile) {
   const capture::RenderSettings& s = job_.settings;
   const capture::Light& light = job_.light;
   const bool spot = light.type == capture::Light::Type::Spot;
@@ -139,14 +186,18 @@ void CpuBackend::gatherDirect() {
   const auto start_m = static_cast<float>(s.time.start_m());
   const auto width_m = static_cast<float>(s.time.bin_width_m());
   const auto eta = static_cast<float>(s.index_of_refraction);
-  const std::size_t tiles = (pixelCount_ + kTilePixels - 1) / kTilePixels;
-  parallelFor(tiles, threads_, [&](std::size_t tile) {
-    const std::size_t end = std::min(pixelCount_, (tile + 1) * kTilePixels);
-    for (std::size_t i = tile * kTilePixels; i < end; ++i) {
-      if (!segmentLit_[i]) continue;
+  const std::size_t perPixel = samplesPerPixel();
+  const float weight = 1.0f / static_cast<float>(perPixel);
+  const std::size_t end = std::min(pixelCount_, (tile + 1) * kTilePixels);
+  for (std::size_t i = tile * kTilePixels; i < end; ++i) {
+    float* histogram = &direct_[i * bins * kChannels];
+    physics::OffAxisSums lost{outside_[2 * i], outside_[2 * i + 1]};
+    for (std::size_t sample = i * perPixel; sample < (i + 1) * perPixel; ++sample) {
+      if (!segmentLit_[sample]) continue;
       // The steps of direct_gather.comp.
-      const std::size_t p = firstPixel_ + i;
-      const glm::vec3 x = segmentSurfaces_[i].x, n = segmentSurfaces_[i].n;
+      const std::size_t p = firstPixel_ * perPixel + sample;
+      const PixelSurface& surface = segmentSurfaces_[sample];
+      const glm::vec3 x = surface.x, n = surface.n;
       const glm::vec3 toLight = light.position_world - x;
       const float dLight = glm::length(toLight);
       const glm::vec3 wLight = toLight / dLight;
@@ -162,15 +213,40 @@ void CpuBackend::gatherDirect() {
           glm::vec3(surfaces_->albedo[p]), light.intensity_W_per_sr, profile, cosX, dLight);
       const float dCamera = s.camera_unwarp ? 0.0f : glm::length(x - job_.camera.position_world);
       const float path_m = physics::directPathLength(eta, dLight, dCamera);
-      const int bin = physics::binOfPath(path_m, start_m, width_m);
-      if (bin < 0 || bin >= bins) {
-        outside_[2 * i + (bin < 0 ? 0 : 1)] += radiance.r + radiance.g + radiance.b;
+      if (s.pixel_footprint) {
+        const glm::vec2 steps = physics::pathStepsAcrossPixel(
+            physics::opticalPathGradient(x, light.position_world, job_.camera.position_world, eta,
+                                         s.camera_unwarp),
+            surface.dxdu, surface.dxdv);
+        const glm::vec3 kernel = physics::footprintKernel(path_m, steps, start_m, width_m);
+        const glm::vec3 value = radiance * weight;
+        if (physics::footprintIsNarrow(kernel)) {
+          physics::depositNarrow(histogram, bins, kernel, value, lost);
+        } else {
+          physics::depositWide(footprintOf(i), bins, kernel, value, lost);
+        }
         continue;
       }
-      float* out = &direct_[(i * bins + bin) * kChannels];
-      out[0] = radiance.r, out[1] = radiance.g, out[2] = radiance.b;
+      // Point sampling (render.pixel_footprint: false): the bytes of before
+      // the footprint existed when there is one sample.
+      const glm::vec3 value = perPixel == 1 ? radiance : radiance * weight;
+      const int bin = physics::binOfPath(path_m, start_m, width_m);
+      if (bin < 0 || bin >= bins) {
+        (bin < 0 ? lost.before : lost.after) += value.r + value.g + value.b;
+        continue;
+      }
+      float* out = histogram + static_cast<std::size_t>(bin) * kChannels;
+      if (perPixel == 1) {
+        out[0] = value.r, out[1] = value.g, out[2] = value.b;
+      } else {
+        out[0] += value.r, out[1] += value.g, out[2] += value.b;
+      }
     }
-  });
+    outside_[2 * i] = lost.before;
+    outside_[2 * i + 1] = lost.after;
+    // The footprint buffer is the indirect gathers' next.
+    if (s.pixel_footprint) integratePixel(i, histogram);
+  }
 }
 
 void CpuBackend::gatherIndirect(std::size_t firstVpl, std::size_t count) {
@@ -187,47 +263,89 @@ void CpuBackend::gatherTile(std::size_t tile, std::size_t firstVpl, std::size_t 
   c.binWidth_m = static_cast<float>(s.time.bin_width_m());
   c.indexOfRefraction = static_cast<float>(s.index_of_refraction);
   c.geometryClamp = static_cast<float>(s.indirect.geometry_term_clamp_per_m2);
+  c.footprint = s.pixel_footprint;
+  c.vplFootprint = s.pixel_footprint && s.indirect.vpl_footprint;
+  c.cameraUnwarp = s.camera_unwarp;
+  c.camera = job_.camera.position_world;
+  c.bins = bins;
   const bool exact = indirectVisibility_ && s.indirect.visibility == capture::Visibility::Exact;
   const float eps = 1e-4f * sceneScale_m_;  // as indirect_gather.comp's exact visibility
   const VplArrays& v = *vpls_;
-  VplTerms terms;
+  const std::size_t perPixel = samplesPerPixel();
+  // One block of terms per sample: contributions are added VPL by VPL and,
+  // for each VPL, sample by sample, so the order of the additions (and the
+  // bytes) does not depend on where the blocks and batches start.
+  std::vector<VplTerms> terms(perPixel);
   const std::size_t end = std::min(pixelCount_, (tile + 1) * kTilePixels);
   for (std::size_t first = firstVpl; first < firstVpl + count; first += kVplBlock) {
     const std::size_t n = std::min(kVplBlock, firstVpl + count - first);
     for (std::size_t i = tile * kTilePixels; i < end; ++i) {
-      if (!segmentLit_[i]) continue;
-      const PixelSurface& surface = segmentSurfaces_[i];
-      vplTerms(surface, v, first, n, c, terms);
       float* histogram = &indirect_[i * bins * kChannels];
-      float& before = outside_[2 * i];
-      float& after = outside_[2 * i + 1];
-      for (std::size_t k = 0; k < n; ++k) {
-        const int32_t bin = terms.bin[k];
-        if (bin == kNoLight) continue;
-        const std::size_t vpl = first + k;
-        if (exact) {
-          const glm::vec3 from = glm::vec3(v.px[vpl], v.py[vpl], v.pz[vpl]) +
-                                 glm::vec3(v.nx[vpl], v.ny[vpl], v.nz[vpl]) * eps;
-          if (scene_->occluded(from, surface.x + surface.n * eps)) continue;
-        } else if (ism_ && !ism_->visible(vpl, glm::vec3(terms.dx[k], terms.dy[k], terms.dz[k]),
-                                          terms.dist[k], sceneScale_m_)) {
-          continue;
+      physics::OffAxisSums lost{outside_[2 * i], outside_[2 * i + 1]};
+      for (std::size_t s = 0; s < perPixel; ++s) {
+        if (segmentLit_[i * perPixel + s]) {
+          vplTerms(segmentSurfaces_[i * perPixel + s], v, first, n, c, terms[s]);
         }
-        if (bin < 0 || bin >= bins) {
-          (bin < 0 ? before : after) += terms.r[k] + terms.g[k] + terms.b[k];
-          continue;
-        }
-        float* out = histogram + static_cast<std::size_t>(bin) * kChannels;
-        out[0] += terms.r[k];
-        out[1] += terms.g[k];
-        out[2] += terms.b[k];
       }
+      for (std::size_t k = 0; k < n; ++k) {
+        for (std::size_t s = 0; s < perPixel; ++s) {
+          if (!segmentLit_[i * perPixel + s]) continue;
+          const VplTerms& t = terms[s];
+          const int32_t bin = t.bin[k];
+          if (bin == kNoLight) continue;
+          const PixelSurface& surface = segmentSurfaces_[i * perPixel + s];
+          const std::size_t vpl = first + k;
+          if (exact) {
+            const glm::vec3 from = glm::vec3(v.px[vpl], v.py[vpl], v.pz[vpl]) +
+                                   glm::vec3(v.nx[vpl], v.ny[vpl], v.nz[vpl]) * eps;
+            if (scene_->occluded(from, surface.x + surface.n * eps)) continue;
+          } else if (ism_ && !ism_->visible(vpl, glm::vec3(t.dx[k], t.dy[k], t.dz[k]), t.dist[k],
+                                            sceneScale_m_)) {
+            continue;
+          }
+          const glm::vec3 energy(t.r[k], t.g[k], t.b[k]);
+          if (c.footprint) {
+            // physics::depositNarrow / depositWide, from the block's precomputed terms.
+            const int32_t narrowBins = t.count[k];
+            for (int32_t j = 0; j < narrowBins; ++j) {
+              physics::depositNarrowBin(histogram, bins, t.first[k] + j, t.mass[j][k], energy,
+                                        lost);
+            }
+            if (narrowBins == 0) {
+              physics::depositWide(footprintOf(i), bins,
+                                   glm::vec3(t.centre[k], t.wide[k], t.narrow[k]), energy, lost);
+            }
+            continue;
+          }
+          if (bin < 0 || bin >= bins) {
+            (bin < 0 ? lost.before : lost.after) += energy.r + energy.g + energy.b;
+            continue;
+          }
+          float* out = histogram + static_cast<std::size_t>(bin) * kChannels;
+          out[0] += energy.r;
+          out[1] += energy.g;
+          out[2] += energy.b;
+        }
+      }
+      outside_[2 * i] = lost.before;
+      outside_[2 * i + 1] = lost.after;
     }
   }
 }
 
 void CpuBackend::readSegment(float* direct, float* indirect, AxisLoss& offAxis) {
   const std::size_t floats = pixelCount_ * job_.settings.time.bins * kChannels;
+  if (job_.settings.pixel_footprint) {
+    // The indirect gathers' wide kernels, after every batch: one sum per pixel.
+    const std::size_t tiles = (pixelCount_ + kTilePixels - 1) / kTilePixels;
+    const std::size_t stride = static_cast<std::size_t>(job_.settings.time.bins) * kChannels;
+    parallelFor(tiles, threads_, [&](std::size_t tile) {
+      const std::size_t end = std::min(pixelCount_, (tile + 1) * kTilePixels);
+      for (std::size_t i = tile * kTilePixels; i < end; ++i) {
+        integratePixel(i, &indirect_[i * stride]);
+      }
+    });
+  }
   std::copy_n(direct_.begin(), floats, direct);
   std::copy_n(indirect_.begin(), floats, indirect);
   for (std::size_t i = 0; i < pixelCount_; ++i) {

@@ -2,9 +2,73 @@
 
 #include <cmath>
 
+#include "tofsim/physics/FootprintKernel.h"
 #include "tofsim/physics/TransientPhysics.h"
 
 namespace tofsim::cpu {
+
+namespace {
+
+static_assert(kFootprintDirectBins == physics::FOOTPRINT_DIRECT_BINS);
+
+// The footprint kernels of the block's contributions, from the same shared
+// functions as indirect_gather.comp: the path's steps across the pixel (the
+// gradient of eta (|x - x_l| + |x - c|) on x's steps) and across the VPL's
+// patch, combined into one trapezoid.
+__attribute__((target_clones("avx2", "default"))) void vplKernels(const PixelSurface& s,
+                                                                  const VplArrays& v,
+                                                                  std::size_t first,
+                                                                  std::size_t n,
+                                                                  const GatherConstants& c,
+                                                                  VplTerms& __restrict terms) {
+  const float eta = c.indexOfRefraction;
+  const float vplFootprint = c.vplFootprint ? 1.0f : 0.0f;
+  // Plain pointers, read before the loop (as vplTerms): the vectoriser does
+  // not see through the vectors' members.
+  const float* __restrict px = v.px.data() + first;
+  const float* __restrict py = v.py.data() + first;
+  const float* __restrict pz = v.pz.data() + first;
+  const float* __restrict path = v.path.data() + first;
+  const float* __restrict ux = v.ux.data() + first;
+  const float* __restrict uy = v.uy.data() + first;
+  const float* __restrict uz = v.uz.data() + first;
+  const float* __restrict uw = v.uw.data() + first;
+  const float* __restrict vx = v.vx.data() + first;
+  const float* __restrict vy = v.vy.data() + first;
+  const float* __restrict vz = v.vz.data() + first;
+  const float* __restrict vw = v.vw.data() + first;
+  const glm::vec3 x = s.x, dxdu = s.dxdu, dxdv = s.dxdv, camera = c.camera;
+  const float cameraPath = s.cameraPath_m, start = c.start_m, width = c.binWidth_m;
+  const bool unwarp = c.cameraUnwarp;
+  const int bins = c.bins;
+  for (std::size_t i = 0; i < n; ++i) {
+    const glm::vec2 pixel = physics::pathStepsAcrossPixel(
+        physics::opticalPathGradient(x, glm::vec3(px[i], py[i], pz[i]), camera, eta, unwarp),
+        dxdu, dxdv);
+    const glm::vec3 d(terms.dx[i], terms.dy[i], terms.dz[i]);
+    // Loaded for every lane and zeroed without the VPL footprint: a
+    // conditional load would be a branch, and the loop would not vectorise.
+    const glm::vec2 patch =
+        vplFootprint * physics::vplPatchPathSteps(glm::vec4(ux[i], uy[i], uz[i], uw[i]),
+                                                  glm::vec4(vx[i], vy[i], vz[i], vw[i]), d, eta);
+    const float path_m = physics::vplPathLength(path[i], eta, terms.dist[i], cameraPath);
+    const glm::vec3 kernel =
+        physics::footprintKernel(path_m, glm::vec4(pixel, patch), start, width);
+    terms.centre[i] = kernel.x, terms.wide[i] = kernel.y, terms.narrow[i] = kernel.z;
+    // The narrow masses for every lane (a wide kernel's are not used), so
+    // that the loop has no data-dependent branch and vectorises.
+    const bool narrow = physics::footprintIsNarrow(kernel);
+    const int firstBin = physics::footprintNarrowFirstBin(kernel, bins);
+    terms.first[i] = firstBin;
+    terms.count[i] = narrow ? physics::footprintNarrowBinCount(kernel) : 0;
+#pragma GCC unroll 16
+    for (int j = 0; j < kFootprintDirectBins; ++j) {
+      terms.mass[j][i] = physics::footprintNarrowMass(kernel, j);
+    }
+  }
+}
+
+}  // namespace
 
 // target_clones: an AVX2 build and a baseline one of the same source, picked
 // at load time. -ffp-contract=off (CMakeLists.txt) keeps fused multiply-adds
@@ -45,6 +109,7 @@ __attribute__((target_clones("avx2", "default"))) void vplTerms(const PixelSurfa
     terms.b[i] = s.brdf.b * fb[i] * g;
     terms.dx[i] = dx, terms.dy[i] = dy, terms.dz[i] = dz, terms.dist[i] = dist;
   }
+  if (c.footprint) vplKernels(s, v, first, n, c, terms);
 }
 
 }  // namespace tofsim::cpu

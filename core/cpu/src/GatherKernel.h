@@ -19,13 +19,16 @@ namespace tofsim::cpu {
 
 constexpr std::size_t kVplBlock = 256;  ///< VPLs per block: ~10 KiB of VPL data, in L1
 constexpr int32_t kNoLight = INT_MIN;   ///< bin of a VPL that does not light the pixel
+constexpr int kFootprintDirectBins = 16; ///< = FOOTPRINT_DIRECT_BINS (checked in GatherKernel.cpp)
 
 /// The camera G-buffer of one pixel, as the gather needs it.
 struct PixelSurface {
   glm::vec3 x{0.0f};          ///< world position, m
   glm::vec3 n{0.0f};          ///< unit normal facing the camera
-  glm::vec3 brdf{0.0f};       ///< albedo / pi
+  glm::vec3 brdf{0.0f};       ///< albedo / pi, times the sample's weight 1 / N^2
   float cameraPath_m = 0.0f;  ///< eta * |x - c|, or 0 when unwarped
+  glm::vec3 dxdu{0.0f};       ///< x's steps across the (sub-)pixel (surfaceStepAcrossPixel)
+  glm::vec3 dxdv{0.0f};
 };
 
 /// What the time axis and the job fix for every contribution.
@@ -34,13 +37,24 @@ struct GatherConstants {
   float binWidth_m = 1.0f;
   float indexOfRefraction = 1.0f;
   float geometryClamp = 0.0f;  ///< <= 0: no clamp
+  bool footprint = false;      ///< compute the footprint kernels (render.pixel_footprint)
+  bool vplFootprint = false;   ///< include the VPL patch's widths (render.indirect.vpl_footprint)
+  bool cameraUnwarp = false;
+  glm::vec3 camera{0.0f};  ///< camera position, for the camera leg's path gradient
+  int32_t bins = 0;        ///< of the time axis
 };
 
 /// Per-VPL terms of one block: bin (kNoLight when the VPL does not face the
-/// pixel or vice versa), rgb radiance, and the unit direction and distance
-/// VPL -> x for the visibility test.
+/// pixel or vice versa), rgb radiance, the unit direction and distance
+/// VPL -> x for the visibility test, and with the footprint its kernel
+/// (footprintKernel: centre, wide, narrow, in bins).
 struct VplTerms {
   alignas(64) int32_t bin[kVplBlock];
+  alignas(64) float centre[kVplBlock], wide[kVplBlock], narrow[kVplBlock];
+  /// A narrow kernel's bins (footprintNarrowFirstBin, footprintNarrowBinCount;
+  /// count 0 for a wide kernel) and masses, mass[j] for bin first + j.
+  alignas(64) int32_t first[kVplBlock], count[kVplBlock];
+  alignas(64) float mass[kFootprintDirectBins][kVplBlock];
   alignas(64) float r[kVplBlock], g[kVplBlock], b[kVplBlock];
   alignas(64) float dx[kVplBlock], dy[kVplBlock], dz[kVplBlock], dist[kVplBlock];
 };

@@ -1,8 +1,9 @@
 #pragma once
-// The first surface seen through each pixel (or RSM texel), found by one ray
-// through the pixel's centre: the CPU counterpart of the GL's rasterized
-// SurfaceMaps, with its conventions (world position with w = 1 on a surface
-// and 0 elsewhere, unit normal facing the viewpoint, albedo with textures).
+// The first surface seen through each pixel, found by one ray through the
+// pixel's centre, or through each of its N x N sub-pixel centres: the CPU
+// counterpart of the GL's rasterized SurfaceMaps, with its conventions (world
+// position with w = 1 on a surface and 0 elsewhere, unit normal facing the
+// viewpoint, albedo with textures).
 
 #include <cstdint>
 #include <glm/glm.hpp>
@@ -16,6 +17,7 @@ namespace tofsim::cpu {
 struct SurfaceImage {
   int32_t width = 0;
   int32_t height = 0;
+  int32_t samplesPerSide = 1;  ///< N: sample s of pixel p is entry p * N * N + s
   std::vector<glm::vec4> position;   ///< xyz world, w = 1 on a surface, 0 else
   std::vector<glm::vec4> normal;     ///< xyz unit shading normal facing the viewpoint
   std::vector<glm::vec4> albedo;     ///< rgb diffuse albedo, a = 1
@@ -24,8 +26,11 @@ struct SurfaceImage {
   std::size_t size() const { return position.size(); }
 };
 
-/// Camera G-buffer: pixel (x, y), row 0 at the top, through Camera::pixelDirection.
+/// Camera G-buffer: pixel (x, y), row 0 at the top, through
+/// Camera::pixelDirection; with samplesPerSide N > 1, N x N samples per pixel
+/// at the centres of its sub-pixels, sub-pixel (i, j) at offset
+/// ((i + 1/2) / N - 1/2, (j + 1/2) / N - 1/2), entry j * N + i.
 SurfaceImage traceSurfaces(const reference::RayScene& scene, const capture::Camera& camera,
-                           int threads);
+                           int threads, int32_t samplesPerSide = 1);
 
 }  // namespace tofsim::cpu

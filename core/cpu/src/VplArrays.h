@@ -13,10 +13,12 @@ struct VplArrays {
   std::vector<float> px, py, pz, path;  ///< position (world, m), optical path light -> VPL (m)
   std::vector<float> nx, ny, nz;        ///< unit normal, lit side
   std::vector<float> fr, fg, fb;        ///< albedo * Phi / pi, W/sr
+  std::vector<float> ux, uy, uz, uw;    ///< patch step along the RSM's right axis, w: light leg
+  std::vector<float> vx, vy, vz, vw;    ///< along its up axis (ir::Vpl::patchU / patchV)
   std::size_t count = 0;
 
   explicit VplArrays(const std::vector<ir::Vpl>& vpls = {}) : count(vpls.size()) {
-    for (std::vector<float>* a : {&px, &py, &pz, &path, &nx, &ny, &nz, &fr, &fg, &fb}) {
+    for (std::vector<float>* a : {&px, &py, &pz, &path, &nx, &ny, &nz, &fr, &fg, &fb, &ux, &uy, &uz, &uw, &vx, &vy, &vz, &vw}) {
       a->resize(count);
     }
     for (std::size_t k = 0; k < count; ++k) {
@@ -25,9 +27,11 @@ struct VplArrays {
       path[k] = v.positionPath.w;
       nx[k] = v.normal.x, ny[k] = v.normal.y, nz[k] = v.normal.z;
       fr[k] = v.flux.r, fg[k] = v.flux.g, fb[k] = v.flux.b;
+      ux[k] = v.patchU.x, uy[k] = v.patchU.y, uz[k] = v.patchU.z, uw[k] = v.patchU.w;
+      vx[k] = v.patchV.x, vy[k] = v.patchV.y, vz[k] = v.patchV.z, vw[k] = v.patchV.w;
     }
   }
-  std::size_t bytes() const { return count * 10 * sizeof(float); }
+  std::size_t bytes() const { return count * 18 * sizeof(float); }
 };
 
 }  // namespace tofsim::cpu

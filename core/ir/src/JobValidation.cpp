@@ -46,12 +46,18 @@ void validateJob(const RenderJob& job, const DeviceLimits& limits) {
                      " bytes per VPL, over the GL storage-block limit " +
                      std::to_string(limits.maxBufferBytes));
   }
-  const std::size_t pixelBytes = std::size_t(job.settings.time.bins) * kChannels * sizeof(float);
+  // The footprint's difference buffer holds doubles: twice a histogram.
+  const std::size_t valueBytes = job.settings.pixel_footprint ? sizeof(double) : sizeof(float);
+  const std::size_t pixelBytes = std::size_t(job.settings.time.bins) * kChannels * valueBytes;
   if (pixelBytes > limits.maxBufferBytes) {
     throw InputError("time.bins " + std::to_string(job.settings.time.bins) + " x " +
-                     std::to_string(kChannels) + " channels x 4 bytes exceeds the GL " +
-                     "storage-block limit " + std::to_string(limits.maxBufferBytes) +
-                     " bytes; use fewer time bins");
+                     std::to_string(kChannels) + " channels x " + std::to_string(valueBytes) +
+                     " bytes" +
+                     (job.settings.pixel_footprint ? " (the pixel footprint's buffer)" : "") +
+                     " exceeds the GL storage-block limit " +
+                     std::to_string(limits.maxBufferBytes) +
+                     " bytes; use fewer time bins" +
+                     (job.settings.pixel_footprint ? " or render.pixel_footprint: false" : ""));
   }
 }
 

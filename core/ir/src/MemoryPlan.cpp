@@ -50,10 +50,11 @@ MemoryPlan planMemory(const capture::RenderJob& job, const DeviceLimits& limits,
     budget -= plan.vplsPerBatch * visibilityBytesPerVpl;
   }
   const std::size_t pixelCount = static_cast<std::size_t>(job.camera.width) * job.camera.height;
-  const std::size_t floatsPerPixel =
-      static_cast<std::size_t>(job.settings.time.bins) * capture::kChannels;
-  plan.segments = planSegments(pixelCount, floatsPerPixel, 2, budget, limits.maxBufferBytes,
-                               limits.maxPixelsPerPass);
+  PixelBuffers pixel;
+  pixel.floatsPerPixel = static_cast<std::size_t>(job.settings.time.bins) * capture::kChannels;
+  pixel.footprintBuffers = job.settings.pixel_footprint ? 1 : 0;
+  plan.segments =
+      planSegments(pixelCount, pixel, budget, limits.maxBufferBytes, limits.maxPixelsPerPass);
   plan.peakBytes = total - budget + plan.segments.bytesPerSegment;
   return plan;
 }

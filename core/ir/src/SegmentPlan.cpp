@@ -24,16 +24,25 @@ SegmentPlan fixedSegments(std::size_t pixelCount, std::size_t pixelsPerSegment,
   return plan;
 }
 
-SegmentPlan planSegments(std::size_t pixelCount, std::size_t floatsPerPixel, int buffersPerPixel,
+std::size_t PixelBuffers::bytes() const {
+  // Plus the light off the axis: one float before it, one after (AxisLoss).
+  return floatsPerPixel * (sizeof(float) * volumes + sizeof(double) * footprintBuffers) +
+         2 * sizeof(float);
+}
+
+std::size_t PixelBuffers::largestBufferBytes() const {
+  return floatsPerPixel * (footprintBuffers > 0 ? sizeof(double) : sizeof(float));
+}
+
+SegmentPlan planSegments(std::size_t pixelCount, const PixelBuffers& pixel,
                          std::size_t budgetBytes, std::size_t maxBufferBytes,
                          std::size_t maxPixelsPerPass) {
-  const std::size_t pixelVolumeBytes = floatsPerPixel * sizeof(float);
-  // Plus the light off the axis: one float before it, one after (AxisLoss).
-  const std::size_t pixelBytes = pixelVolumeBytes * buffersPerPixel + 2 * sizeof(float);
-  // validateJob rejects time.bins whose histogram exceeds the buffer limit,
-  // naming the key; reaching this is a caller's bug.
-  TOFSIM_CHECK_GT(pixelVolumeBytes, 0u);
-  TOFSIM_CHECK_LE(pixelVolumeBytes, maxBufferBytes);
+  const std::size_t pixelBytes = pixel.bytes();
+  const std::size_t largest = pixel.largestBufferBytes();
+  // validateJob rejects time.bins whose histogram (or footprint buffer)
+  // exceeds the buffer limit, naming the key; reaching this is a caller's bug.
+  TOFSIM_CHECK_GT(largest, 0u);
+  TOFSIM_CHECK_LE(largest, maxBufferBytes);
   TOFSIM_CHECK_GT(pixelCount, 0u);
   TOFSIM_CHECK_GT(maxPixelsPerPass, 0u);
   if (pixelBytes > budgetBytes) {
@@ -44,7 +53,7 @@ SegmentPlan planSegments(std::size_t pixelCount, std::size_t floatsPerPixel, int
                      "time.bins");
   }
   const std::size_t pixels = std::min(
-      {budgetBytes / pixelBytes, maxBufferBytes / pixelVolumeBytes, maxPixelsPerPass, pixelCount});
+      {budgetBytes / pixelBytes, maxBufferBytes / largest, maxPixelsPerPass, pixelCount});
   return fixedSegments(pixelCount, pixels, pixelBytes);
 }
 

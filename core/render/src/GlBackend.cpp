@@ -7,17 +7,24 @@
 #include "IndirectLight.h"
 #include "LightShadowMap.h"
 #include "LightUniforms.h"
+#include "PixelFootprint.h"
 #include "SurfaceMaps.h"
 #include "Vpls.h"
 #include "tofsim/gl/Buffer.h"
 #include "tofsim/gl/Check.h"
 #include "tofsim/gl/Compute.h"
 #include "tofsim/gl/Context.h"
+#include "tofsim/physics/FootprintKernel.h"
 #include "tofsim/util/Error.h"
 
 namespace tofsim::render {
 
 using namespace capture;  // the job description types
+
+// footprint_deposit.glsl writes the narrow bins and the slots as straight-line
+// calls (llvmpipe's loop guard), one per bin and per slot.
+static_assert(physics::FOOTPRINT_DIRECT_BINS == 16 && physics::FOOTPRINT_SLOTS == 12,
+              "update the straight-line deposits of shaders/footprint_deposit.glsl");
 
 namespace {
 
@@ -41,6 +48,17 @@ void configureGather(const gl::Program& program, const RenderJob& job) {
   program.set("uIndexOfRefraction", static_cast<float>(job.settings.index_of_refraction));
   program.set("uCameraUnwarp", job.settings.camera_unwarp ? 1 : 0);
   program.set("uCameraPosition_world", job.camera.position_world);
+  const RenderSettings& s = job.settings;
+  const int32_t n = s.pixel_samples;
+  // Each sample stands for 1 / N^2 of the pixel (as the CPU backend weighs it).
+  if (s.pixel_footprint || n > 1) program.set("uSampleWeight", 1.0f / static_cast<float>(n * n));
+  if (s.pixel_footprint) {
+    // A sample's footprint is its sub-pixel: the ray steps shrink by N.
+    const float side = 1.0f / static_cast<float>(n);
+    program.set("uCameraForward", job.camera.forward());
+    program.set("uSampleStepX", job.camera.rayStepAlongX() * side);
+    program.set("uSampleStepY", job.camera.rayStepAlongY() * side);
+  }
 }
 
 // Uniforms of the indirect gather only: scene scale (biases) and the clamp.
@@ -60,7 +78,8 @@ struct GlBackend::Passes {
       : job(renderJob),
         bounds(job),
         gpuScene(*job.scene),
-        gbuffer(job.camera.width, job.camera.height),
+        samplesPerSide(job.settings.pixel_samples),
+        gbuffer(job.camera.width * samplesPerSide, job.camera.height * samplesPerSide),
         shadowMap(job.settings.shadow_map_resolution, job.light.position_world, bounds.lo,
                   bounds.hi) {}
 
@@ -71,12 +90,14 @@ struct GlBackend::Passes {
   RenderJob job;
   ViewBounds bounds;
   GpuScene gpuScene;
-  SurfaceMaps gbuffer;
+  int32_t samplesPerSide;  ///< render.pixel_samples
+  SurfaceMaps gbuffer;     ///< the samples': (width N) x (height N), surface_samples.glsl
   LightShadowMap shadowMap;
   gl::Program directGather;
   std::unique_ptr<IndirectLight> indirectLight;  ///< null without VPLs
   gl::Buffer directVolume, indirectVolume;
-  gl::Buffer outsideAxis;  ///< per pixel: light before the axis, light after it
+  gl::Buffer outsideAxis;                     ///< per pixel: light before the axis, light after it
+  std::unique_ptr<PixelFootprint> footprint;  ///< null without render.pixel_footprint
   std::size_t firstPixel = 0, segmentPixels = 0;
   std::vector<float> outside;
 };
@@ -107,18 +128,38 @@ ir::DeviceLimits GlBackend::limits() const {
 
 std::vector<float> GlBackend::prepareSurfaces(const RenderJob& job) {
   passes_.reset();  // the previous render's GL objects go first
+  const Camera& camera = job.camera;
+  const int32_t n = job.settings.pixel_samples;
+  const int32_t maxSide = context_.limits().maxTextureSize;
+  if (n > 1 && (camera.width * n > maxSide || camera.height * n > maxSide)) {
+    throw InputError("camera.resolution " + std::to_string(camera.width) + "x" +
+                     std::to_string(camera.height) + " times render.pixel_samples " +
+                     std::to_string(n) + " exceeds the GL texture limit " +
+                     std::to_string(maxSide) + " for the sub-pixel G-buffer");
+  }
   passes_ = std::make_unique<Passes>(job);
   Passes& p = *passes_;
-  const Camera& camera = job.camera;
   const glm::vec2 range = depthRange(p.bounds.lo, p.bounds.hi, camera.position_world);
-  p.gbuffer.render(p.gpuScene, camera.projection(range.x, range.y) * camera.view(),
-                   camera.position_world);
+  const glm::mat4 viewProjection = camera.projection(range.x, range.y) * camera.view();
+  p.gbuffer.render(p.gpuScene, viewProjection, camera.position_world);
+  // The driver's G-buffer (depth, the light seen by the camera) is the pixel
+  // centres', whatever the sub-pixel samples: with several, a W x H one only
+  // for this download.
   std::vector<float> positions(p.pixelCount() * 4);
-  p.gbuffer.position.download(GL_RGBA, GL_FLOAT, positions.size() * sizeof(float),
-                              positions.data());
+  const auto download = [&](const SurfaceMaps& maps) {
+    maps.position.download(GL_RGBA, GL_FLOAT, positions.size() * sizeof(float), positions.data());
+  };
+  if (n == 1) {
+    download(p.gbuffer);
+  } else {
+    SurfaceMaps centres(camera.width, camera.height);
+    centres.render(p.gpuScene, viewProjection, camera.position_world);
+    download(centres);
+  }
   p.shadowMap.render(p.gpuScene);
 
-  p.directGather = gpu::makeProgram({{GL_COMPUTE_SHADER, "direct_gather.comp"}});
+  p.directGather = gpu::makeProgram({{GL_COMPUTE_SHADER, "direct_gather.comp"}},
+                                    gpu::gatherDefines(job.settings));
   setLightUniforms(p.directGather, job.light);
   p.shadowMap.bind(p.directGather);
   configureGather(p.directGather, job);
@@ -137,16 +178,17 @@ void GlBackend::setVpls(const std::vector<ir::Vpl>& vpls) {
   Passes& p = passes();
   p.indirectLight.reset();
   if (vpls.empty()) return;
-  p.indirectLight = std::make_unique<IndirectLight>(scene::buildTriangleSoup(*p.job.scene), vpls,
-                                                    p.job.settings.indirect, p.job.settings.seed);
+  p.indirectLight =
+      std::make_unique<IndirectLight>(scene::buildTriangleSoup(*p.job.scene), vpls, p.job.settings);
   configureIndirectGather(p.indirectLight->gatherProgram(), p.job);
 }
 
 std::size_t GlBackend::fixedBytes() const {
   const Passes& p = passes();
-  // The G-buffer: four RGBA32F-sized targets per pixel.
+  // The G-buffer: four RGBA32F-sized targets per sample.
+  const auto samples = static_cast<std::size_t>(p.samplesPerSide) * p.samplesPerSide;
   std::size_t bytes =
-      p.gpuScene.bytes() + p.pixelCount() * 4 * 4 * sizeof(float) + p.shadowMap.bytes();
+      p.gpuScene.bytes() + p.pixelCount() * samples * 4 * 4 * sizeof(float) + p.shadowMap.bytes();
   if (p.indirectLight) bytes += p.indirectLight->fixedBytes();
   return bytes;
 }
@@ -165,6 +207,11 @@ void GlBackend::allocate(std::size_t pixelsPerSegment, std::size_t vplsPerBatch)
   p.indirectVolume = gl::Buffer(floats * sizeof(float));
   p.outsideAxis = gl::Buffer(pixelsPerSegment * 2 * sizeof(float));
   p.outside.resize(pixelsPerSegment * 2);
+  // The plan counted the difference buffer (ir::PixelBuffers::footprintBuffers).
+  p.footprint.reset();
+  if (p.job.settings.pixel_footprint) {
+    p.footprint = std::make_unique<PixelFootprint>(pixelsPerSegment, p.job.settings.time.bins);
+  }
 }
 
 void GlBackend::buildVisibility(std::size_t firstVpl, std::size_t count) {
@@ -186,6 +233,7 @@ void GlBackend::beginSegment(std::size_t firstPixel, std::size_t count) {
   p.indirectVolume.bindRange(GL_SHADER_STORAGE_BUFFER, gpu::kIndirectVolume, 0, bytes);
   p.outsideAxis.bindRange(GL_SHADER_STORAGE_BUFFER, gpu::kOutsideAxis, 0,
                           count * 2 * sizeof(float));
+  if (p.footprint) p.footprint->beginSegment(count);
 }
 
 void GlBackend::gatherDirect() {
@@ -199,6 +247,9 @@ void GlBackend::gatherDirect() {
   p.directGather.set("uPixelCount", static_cast<unsigned>(p.segmentPixels));
   gl::dispatchThreads(p.segmentPixels, gpu::kWorkGroupSize);
   glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
+  // The wide kernels' buffer into the direct volume; it is then the indirect
+  // gathers'.
+  if (p.footprint) p.footprint->integrateInto(p.directVolume, p.segmentPixels);
   TOFSIM_GL_CHECK("direct gather");
 }
 
@@ -213,6 +264,8 @@ void GlBackend::gatherIndirect(std::size_t firstVpl, std::size_t count) {
 
 void GlBackend::readSegment(float* direct, float* indirect, AxisLoss& offAxis) {
   Passes& p = passes();
+  // The indirect gathers' wide kernels, after every batch: one sum per pixel.
+  if (p.footprint) p.footprint->integrateInto(p.indirectVolume, p.segmentPixels);
   const std::size_t bytes = p.segmentPixels * static_cast<std::size_t>(p.job.settings.time.bins) *
                             gpu::kChannels * sizeof(float);
   p.directVolume.download(0, bytes, direct);

@@ -16,6 +16,9 @@ std::vector<std::pair<std::string, std::string>> shaderDefines() {
       {"TOFSIM_SSBO_BVH", n(kBvh)},
       {"TOFSIM_SSBO_ISM", n(kIsm)},
       {"TOFSIM_SSBO_LOOP_GUARD", n(kLoopGuard)},
+      {"TOFSIM_SSBO_FOOTPRINT", n(kFootprint)},
+      {"TOFSIM_SSBO_FOOTPRINT_WRITTEN", n(kFootprintWritten)},
+      {"TOFSIM_SSBO_FOOTPRINT_VOLUME", n(kFootprintVolume)},
       {"TOFSIM_UNIT_G_POSITION", n(kGPosition)},
       {"TOFSIM_UNIT_G_NORMAL", n(kGNormal)},
       {"TOFSIM_UNIT_G_ALBEDO", n(kGAlbedo)},
@@ -28,6 +31,14 @@ std::vector<std::pair<std::string, std::string>> shaderDefines() {
       {"TOFSIM_OUT_NORMAL", n(kOutNormal)},
       {"TOFSIM_OUT_ALBEDO", n(kOutAlbedo)},
   };
+}
+
+std::vector<std::pair<std::string, std::string>> gatherDefines(const capture::RenderSettings& s) {
+  std::vector<std::pair<std::string, std::string>> defines = {
+      {"PIXEL_SAMPLES", std::to_string(s.pixel_samples)}};
+  if (s.pixel_footprint) defines.emplace_back("PIXEL_FOOTPRINT", "1");
+  if (s.pixel_footprint && s.indirect.vpl_footprint) defines.emplace_back("VPL_FOOTPRINT", "1");
+  return defines;
 }
 
 gl::Program makeProgram(const std::vector<gl::ShaderStage>& stages,

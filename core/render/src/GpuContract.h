@@ -14,6 +14,7 @@
 #include <utility>
 #include <vector>
 
+#include "tofsim/capture/RenderSettings.h"
 #include "tofsim/capture/SegmentSink.h"
 #include "tofsim/gl/Program.h"
 
@@ -26,15 +27,18 @@ inline constexpr int kChannels = capture::kChannels;
 
 /// Shader storage buffer bindings (TOFSIM_SSBO_...).
 enum StorageBinding : uint32_t {
-  kDirectVolume,    ///< segment's direct light, written by direct_gather.comp
-  kIndirectVolume,  ///< segment's indirect light, indirect_gather.comp
-  kOutsideAxis,     ///< two floats per pixel: light before / after the axis
-  kVpls,            ///< struct Vpl[] (vpl.glsl)
-  kCorners,         ///< triangle corners in BVH order (scene_geometry.glsl)
-  kAreaCdf,         ///< cumulative triangle areas
-  kBvh,             ///< BVH nodes
-  kIsm,             ///< imperfect shadow maps of the resident batch
-  kLoopGuard,       ///< flag raised near llvmpipe's loop-trip limit
+  kDirectVolume,      ///< segment's direct light, written by direct_gather.comp
+  kIndirectVolume,    ///< segment's indirect light, indirect_gather.comp
+  kOutsideAxis,       ///< two floats per pixel: light before / after the axis
+  kVpls,              ///< struct Vpl[] (vpl.glsl)
+  kCorners,           ///< triangle corners in BVH order (scene_geometry.glsl)
+  kAreaCdf,           ///< cumulative triangle areas
+  kBvh,               ///< BVH nodes
+  kIsm,               ///< imperfect shadow maps of the resident batch
+  kLoopGuard,         ///< flag raised near llvmpipe's loop-trip limit
+  kFootprint,         ///< segment's footprint difference buffer: bins x 3 doubles per pixel
+  kFootprintWritten,  ///< one uint per pixel: its difference buffer holds entries
+  kFootprintVolume,   ///< the volume footprint_integrate.comp adds the buffer to
 };
 
 /// Texture units (TOFSIM_UNIT_...).
@@ -55,6 +59,13 @@ enum FragmentOutput : int { kOutPosition, kOutNormal, kOutAlbedo };
 
 /// The contract as (TOFSIM_NAME, value) defines.
 std::vector<std::pair<std::string, std::string>> shaderDefines();
+
+/// The gathers' variant of `settings` (direct_gather.comp, indirect_gather.comp):
+/// PIXEL_SAMPLES (render.pixel_samples), PIXEL_FOOTPRINT, VPL_FOOTPRINT. As
+/// defines, so that render.pixel_footprint: false compiles the point-sampling
+/// shader of before.
+std::vector<std::pair<std::string, std::string>> gatherDefines(
+    const capture::RenderSettings& settings);
 
 /// A program from embedded shaders with the contract's defines, then `extra`.
 gl::Program makeProgram(const std::vector<gl::ShaderStage>& stages,

@@ -19,9 +19,12 @@ namespace {
 // Measured on the Cornell box: light went missing above ~45000 of our trips.
 constexpr std::size_t kTripsPerDispatch = 20000;
 
-std::vector<std::pair<std::string, std::string>> gatherDefines(const capture::IndirectSettings& s) {
-  if (s.visibility == capture::Visibility::Exact) return {{"EXACT_VISIBILITY", "1"}};
-  return {};
+std::vector<std::pair<std::string, std::string>> gatherDefines(const capture::RenderSettings& s) {
+  std::vector<std::pair<std::string, std::string>> defines = gpu::gatherDefines(s);
+  if (s.indirect.visibility == capture::Visibility::Exact) {
+    defines.emplace_back("EXACT_VISIBILITY", "1");
+  }
+  return defines;
 }
 
 void dispatchThreads(std::size_t threads) { gl::dispatchThreads(threads, gpu::kWorkGroupSize); }
@@ -29,9 +32,10 @@ void dispatchThreads(std::size_t threads) { gl::dispatchThreads(threads, gpu::kW
 }  // namespace
 
 IndirectLight::IndirectLight(const TriangleSoup& soup, const std::vector<ir::Vpl>& vpls,
-                             const capture::IndirectSettings& settings, uint64_t seed)
-    : settings_(settings),
-      seed_(seed),
+                             const capture::RenderSettings& settings)
+    : settings_(settings.indirect),
+      seed_(settings.seed),
+      samplesPerPixel_(static_cast<std::size_t>(settings.pixel_samples) * settings.pixel_samples),
       vplCount_(vpls.size()),
       triangleCount_(soup.triangleCount()),
       // A shadow ray visits about two nodes per level and a few leaves.
@@ -80,8 +84,13 @@ void IndirectLight::bindSceneBuffers() const {
 }
 
 std::size_t IndirectLight::vplsPerDispatch() const {
-  const std::size_t tripsPerVpl =
-      1 + (settings_.visibility == capture::Visibility::Exact ? tripsPerShadowRay_ : 0);
+  // Per VPL: its own trip, then per sample one trip of the sample loop (none
+  // with one sample: no loop) and a shadow ray's; the footprint's deposits
+  // are straight-line code (footprint_deposit.glsl) and cost none.
+  const std::size_t shadowRay =
+      settings_.visibility == capture::Visibility::Exact ? tripsPerShadowRay_ : 0;
+  const std::size_t perSample = (samplesPerPixel_ > 1 ? 1 : 0) + shadowRay;
+  const std::size_t tripsPerVpl = 1 + samplesPerPixel_ * perSample;
   return std::max<std::size_t>(1, kTripsPerDispatch / tripsPerVpl);
 }
 

@@ -21,8 +21,10 @@ using scene::TriangleSoup;
 
 class IndirectLight {
  public:
+  /// The gather's variant (pixel samples, footprints) and the ISM seed come
+  /// from `settings`.
   IndirectLight(const TriangleSoup& soup, const std::vector<ir::Vpl>& vpls,
-                const capture::IndirectSettings& settings, uint64_t seed);
+                const capture::RenderSettings& settings);
 
   std::size_t vplCount() const { return vplCount_; }
   /// GPU bytes that do not depend on the batch size (geometry, VPLs).
@@ -49,6 +51,7 @@ class IndirectLight {
 
   capture::IndirectSettings settings_;
   uint64_t seed_;
+  std::size_t samplesPerPixel_ = 1;  ///< render.pixel_samples squared
   std::size_t vplCount_ = 0;
   std::size_t triangleCount_ = 0;
   std::size_t tripsPerShadowRay_ = 0;

@@ -24,6 +24,11 @@ struct Camera {
   /// Unit direction through the point `offset` (pixels, in [-1/2, 1/2]^2, +x
   /// right, +y down) from pixel (x, y)'s centre.
   glm::vec3 pixelDirection(int32_t x, int32_t y, glm::vec2 offset) const;
+  /// Change of the unnormalised ray direction forward + s right + t up from
+  /// one pixel to the next: along +x (right) and along +y (down the image).
+  /// The ray differentials of the pixel footprint (footprint_kernel.md).
+  glm::vec3 rayStepAlongX() const;
+  glm::vec3 rayStepAlongY() const;
   /// Solid angle (sr) seen by pixel (x, y).
   double pixelSolidAngle_sr(int32_t x, int32_t y) const;
   /// Pixel containing the world point, or (-1, -1) when it projects outside

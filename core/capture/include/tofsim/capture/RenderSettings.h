@@ -20,6 +20,9 @@ struct IndirectSettings {
   Visibility visibility = Visibility::Ism;
   /// Upper bound of the geometry term cos*cos/d^2 (1/m^2); <= 0 disables clamping.
   double geometry_term_clamp_per_m2 = 100.0;
+  /// Spread each VPL's light over the path variation across its RSM texel's
+  /// patch (anti-banding); only with RenderSettings::pixel_footprint.
+  bool vpl_footprint = true;
 };
 
 struct RenderSettings {
@@ -30,6 +33,12 @@ struct RenderSettings {
   /// Bytes of GPU memory the volume segments and ISM batches may use.
   std::size_t memory_budget_bytes = std::size_t{512} << 20;
   uint64_t seed = 1;
+  /// A pixel integrates its area: every contribution is spread over its
+  /// optical path's distribution across the pixel (footprint_kernel.md).
+  /// false: one point per (sub-)pixel, all of its light in one bin.
+  bool pixel_footprint = true;
+  /// N x N stratified G-buffer samples per pixel, averaged.
+  int32_t pixel_samples = 1;
   IndirectSettings indirect;
 };
 

@@ -69,17 +69,29 @@ class CpuBackend : public ir::IrBackend {
 
  private:
   void gatherTile(std::size_t tile, std::size_t firstVpl, std::size_t count);
+  void gatherDirectTile(std::size_t tile);
+  /// Adds pixel i's footprint buffer, if written, to `histogram` and clears it.
+  void integratePixel(std::size_t i, float* histogram);
+  /// Pixel i's footprint buffer, zeroed first if it held nothing.
+  double* footprintOf(std::size_t i);
+  std::size_t samplesPerPixel() const;
 
   int threads_ = 1;
   bool indirectVisibility_ = true;
   capture::RenderJob job_;
   std::unique_ptr<reference::RayScene> scene_;
-  std::unique_ptr<SurfaceImage> surfaces_;
+  std::unique_ptr<SurfaceImage> surfaces_;  ///< render.pixel_samples^2 samples per pixel
   std::unique_ptr<VplArrays> vpls_;
   std::unique_ptr<CpuIsm> ism_;
-  std::vector<PixelSurface> segmentSurfaces_;
-  std::vector<unsigned char> segmentLit_;  ///< 1 where the pixel sees a surface
+  std::vector<PixelSurface> segmentSurfaces_;  ///< per sample of the segment's pixels
+  std::vector<unsigned char> segmentLit_;      ///< 1 where the sample sees a surface
   std::vector<float> direct_, indirect_, outside_;
+  /// The pixel footprint's difference buffers (bins x 3 doubles per pixel of
+  /// the segment) and which pixels' buffers hold something. Uninitialised:
+  /// a pixel's buffer is zeroed when its first wide kernel arrives
+  /// (footprintOf), so pixels without one never touch its pages.
+  std::unique_ptr<double[]> footprint_;
+  std::vector<unsigned char> footprintWritten_;
   std::size_t firstPixel_ = 0, pixelCount_ = 0, pixelsPerSegment_ = 0;
   float sceneScale_m_ = 1.0f;
 };

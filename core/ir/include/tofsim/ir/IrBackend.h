@@ -48,6 +48,12 @@ struct Vpl {
   glm::vec4 positionPath;  ///< xyz world, w = optical path light -> VPL, m (eta included)
   glm::vec4 normal;        ///< xyz unit, lit side
   glm::vec4 flux;          ///< rgb albedo * Phi / pi, W/sr
+  /// The VPL's patch (its RSM texel on the surface), for the VPL footprint:
+  /// xyz = the surface point's step across one texel along the RSM view's
+  /// right (patchU) and up (patchV) axes, w = eta (x_l - l)/|x_l - l| . xyz,
+  /// the light leg's change of path along it (vplPatchPathSteps).
+  glm::vec4 patchU{0.0f};
+  glm::vec4 patchV{0.0f};
 };
 
 class IrBackend {

@@ -27,12 +27,25 @@ struct SegmentPlan {
 SegmentPlan fixedSegments(std::size_t pixelCount, std::size_t pixelsPerSegment,
                           std::size_t bytesPerPixel);
 
-/// `floatsPerPixel`: T * C. `buffersPerPixel`: how many volumes (direct,
-/// indirect) a segment holds; each pixel also costs two floats for the
-/// light off the axis (before it, after it). One pixel's histogram must fit `maxBufferBytes`
-/// (validated before, by the driver). Throws InputError when the budget cannot
-/// hold one pixel.
-SegmentPlan planSegments(std::size_t pixelCount, std::size_t floatsPerPixel, int buffersPerPixel,
+/// What one pixel of a segment holds: `volumes` float histograms of
+/// `floatsPerPixel` (T * C) floats (direct, indirect), `footprintBuffers`
+/// difference buffers of as many doubles (the pixel footprint's, 0 or 1), and
+/// two floats for the light off the axis (before it, after it).
+struct PixelBuffers {
+  std::size_t floatsPerPixel = 0;
+  int volumes = 2;
+  int footprintBuffers = 0;
+
+  std::size_t bytes() const;
+  /// The largest single buffer's bytes per pixel (a histogram, or the
+  /// footprint buffer of doubles): one pixel of it must fit `maxBufferBytes`
+  /// (validated before, by the driver).
+  std::size_t largestBufferBytes() const;
+};
+
+/// Segments as large as the budget, the device's buffer limit and pass limit
+/// allow. Throws InputError when the budget cannot hold one pixel.
+SegmentPlan planSegments(std::size_t pixelCount, const PixelBuffers& pixel,
                          std::size_t budgetBytes, std::size_t maxBufferBytes,
                          std::size_t maxPixelsPerPass);
 

@@ -12,11 +12,14 @@ using glm::abs;
 using glm::clamp;
 using glm::dot;
 using glm::floor;
+using glm::ivec2;
 using glm::length;
 using glm::max;
 using glm::min;
+using glm::sqrt;
 using glm::vec2;
 using glm::vec3;
+using glm::vec4;
 
 #define TOFSIM_PHYSICS_FN inline
 #include "footprint_kernel.glsl"

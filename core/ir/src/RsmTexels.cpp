@@ -1,0 +1,86 @@
+#include "tofsim/ir/RsmTexels.h"
+
+#include <cmath>
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "tofsim/physics/FootprintKernel.h"
+
+namespace tofsim::ir {
+
+namespace {
+
+RsmView lookAtView(const glm::vec3& forward, const glm::vec3& upHint, float half) {
+  const glm::vec3 f = glm::normalize(forward);
+  const glm::vec3 s = glm::normalize(glm::cross(f, upHint));
+  return {f, s, glm::cross(s, f), upHint, half};
+}
+
+// Image-plane coordinates (at unit distance along forward) of texel (x, y)'s centre.
+glm::dvec2 texelPlanePoint(const RsmView& v, int resolution, int x, int y) {
+  const double tanHalf = std::tan(static_cast<double>(v.halfAngle_rad));
+  return {(2.0 * (x + 0.5) / resolution - 1.0) * tanHalf,
+          (2.0 * (y + 0.5) / resolution - 1.0) * tanHalf};
+}
+
+}  // namespace
+
+glm::mat4 RsmView::viewMatrix(const glm::vec3& light_world) const {
+  return glm::lookAt(light_world, light_world + forward, upHint);
+}
+
+std::vector<RsmView> rsmViews(const capture::Light& light) {
+  const float half = glm::radians(light.cone_half_angle_deg);
+  if (light.type == capture::Light::Type::Spot && half <= glm::radians(60.0f)) {
+    const glm::vec3 dir = glm::normalize(light.direction_world);
+    const glm::vec3 up = std::abs(dir.y) < 0.99f ? glm::vec3(0, 1, 0) : glm::vec3(1, 0, 0);
+    return {lookAtView(dir, up, half)};
+  }
+  const glm::vec3 forward[6] = {{1, 0, 0},  {-1, 0, 0}, {0, 1, 0},
+                                {0, -1, 0}, {0, 0, 1},  {0, 0, -1}};
+  const glm::vec3 up[6] = {{0, -1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}, {0, -1, 0}, {0, -1, 0}};
+  std::vector<RsmView> views;
+  for (int f = 0; f < 6; ++f) views.push_back(lookAtView(forward[f], up[f], glm::radians(45.0f)));
+  return views;
+}
+
+glm::vec3 rsmTexelDirection(const RsmView& view, int resolution, int x, int y) {
+  const glm::dvec2 p = texelPlanePoint(view, resolution, x, y);
+  return glm::normalize(view.forward + static_cast<float>(p.x) * view.right +
+                        static_cast<float>(p.y) * view.up);
+}
+
+std::optional<Vpl> rsmTexelVpl(const capture::Light& light, const RsmView& view, int resolution,
+                               int x, int y, const RsmTexelSurface& surface,
+                               double indexOfRefraction) {
+  const glm::vec3 p = surface.position_world;
+  const glm::vec3 toSurface = p - light.position_world;
+  const float dist = glm::length(toSurface);
+  if (!(dist > 0.0f)) return std::nullopt;
+  const float profile = light.angularProfile(toSurface / dist);
+  if (profile <= 0.0f) return std::nullopt;
+  // Solid angle of the texel: its area on the unit-distance plane times cos^3.
+  const double tanHalf = std::tan(static_cast<double>(view.halfAngle_rad));
+  const double texelSide = 2.0 * tanHalf / resolution;
+  const glm::dvec2 q = texelPlanePoint(view, resolution, x, y);
+  const double r2 = 1.0 + q.x * q.x + q.y * q.y;
+  const double solidAngle = texelSide * texelSide / (r2 * std::sqrt(r2));
+  const glm::vec3 flux = surface.albedo * light.intensity_W_per_sr *
+                         static_cast<float>(profile * solidAngle / M_PI);
+  if (flux.r + flux.g + flux.b <= 0.0f) return std::nullopt;
+  // The texel's patch on the surface: the surface point's steps across one
+  // texel (ray differentials, as for a camera pixel), and the light leg's
+  // part of the path's change along each (footprint_kernel.md).
+  const auto eta = static_cast<float>(indexOfRefraction);
+  const auto side = static_cast<float>(texelSide);
+  const glm::vec3 stepU =
+      physics::surfaceStepAcrossPixel(toSurface, view.forward, view.right * side, surface.normal);
+  const glm::vec3 stepV =
+      physics::surfaceStepAcrossPixel(toSurface, view.forward, view.up * side, surface.normal);
+  const glm::vec3 fromLight = toSurface / dist;
+  return Vpl{glm::vec4(p, static_cast<float>(indexOfRefraction * dist)),
+             glm::vec4(surface.normal, 0.0f), glm::vec4(flux, 0.0f),
+             glm::vec4(stepU, eta * glm::dot(fromLight, stepU)),
+             glm::vec4(stepV, eta * glm::dot(fromLight, stepV))};
+}
+
+}  // namespace tofsim::ir

@@ -1,0 +1,110 @@
+// The gathers' side of the pixel footprint (render.pixel_footprint): a
+// contribution spread by its kernel (footprint_kernel.glsl) goes straight into
+// the float histogram when narrow, else into the segment's difference buffer
+// of doubles, which footprint_integrate.comp turns into bin integrals once per
+// pixel. The steps and float operations of depositContribution in
+// core/physics/include/tofsim/physics/FootprintBuffer.h, so the GL and CPU
+// volumes agree to float rounding.
+//
+// The including gather defines FOOTPRINT_HISTOGRAM (the name of its float
+// volume array) and declares uBins and uCameraPosition_world.
+//
+// llvmpipe ends every loop of an invocation after 65535 iterations in total
+// (see indirect_gather.comp): the up to FOOTPRINT_DIRECT_BINS narrow bins and
+// the FOOTPRINT_SLOTS slots are written as straight-line calls, not loops, so
+// a contribution costs the gather's loop guard nothing. GlBackend.cpp checks
+// both counts at compile time.
+#ifndef TOFSIM_FOOTPRINT_DEPOSIT_GLSL
+#define TOFSIM_FOOTPRINT_DEPOSIT_GLSL
+
+#include "footprint_kernel.glsl"
+
+// Per pixel of the segment: bins x TOFSIM_CHANNELS doubles, (bin, channel).
+layout(std430, binding = TOFSIM_SSBO_FOOTPRINT) buffer FootprintDiff { double footprintDiff[]; };
+// Per pixel: 1 once a wide kernel wrote its difference buffer (the
+// integration skips the others, as the CPU's footprintWritten_).
+layout(std430, binding = TOFSIM_SSBO_FOOTPRINT_WRITTEN) buffer FootprintWritten {
+  uint footprintWritten[];
+};
+
+uniform vec3 uCameraForward;  // the camera's unit view axis
+uniform vec3 uSampleStepX;    // Camera::rayStepAlongX() / pixel_samples: one sub-pixel step
+uniform vec3 uSampleStepY;    // Camera::rayStepAlongY() / pixel_samples
+
+// The surface point's steps across the sample's sub-pixel (dx/du, dx/dv),
+// from the ray differentials on its tangent plane.
+void surfaceStepsAcrossSample(vec3 x, vec3 n, out vec3 dxdu, out vec3 dxdv) {
+  vec3 toSurface = x - uCameraPosition_world;
+  dxdu = surfaceStepAcrossPixel(toSurface, uCameraForward, uSampleStepX, n);
+  dxdv = surfaceStepAcrossPixel(toSurface, uCameraForward, uSampleStepY, n);
+}
+
+// Narrow kernel: the mass of bin first + j (j < count) times energy into the
+// histogram, or off the axis (physics::depositNarrowBin).
+void footprintAddNarrowBin(uint local, vec3 kernel, int first, int count, int j, vec3 energy,
+                           inout float lostBefore, inout float lostAfter) {
+  if (j >= count) return;
+  float mass = footprintNarrowMass(kernel, j);
+  int k = first + j;
+  if (k < 0 || k >= uBins) {
+    float lost = mass * (energy.r + energy.g + energy.b);
+    if (k < 0) {
+      lostBefore += lost;
+    } else {
+      lostAfter += lost;
+    }
+    return;
+  }
+  uint i = (local * uint(uBins) + uint(k)) * uint(TOFSIM_CHANNELS);
+  FOOTPRINT_HISTOGRAM[i + 0u] += mass * energy.r;
+  FOOTPRINT_HISTOGRAM[i + 1u] += mass * energy.g;
+  FOOTPRINT_HISTOGRAM[i + 2u] += mass * energy.b;
+}
+
+// Wide kernel: slot `slot` of the difference buffer (footprintSlotBin,
+// footprintSlotValue; physics::depositFootprint).
+void footprintAddSlot(uint local, vec3 kernel, int slot, vec3 energy) {
+  int bin = footprintSlotBin(kernel, slot, uBins);
+  if (bin < 0) return;
+  double value = footprintSlotValue(kernel, bin);
+  uint i = (local * uint(uBins) + uint(bin)) * uint(TOFSIM_CHANNELS);
+  footprintDiff[i + 0u] += value * double(energy.r);
+  footprintDiff[i + 1u] += value * double(energy.g);
+  footprintDiff[i + 2u] += value * double(energy.b);
+}
+
+#define TOFSIM_NARROW_BIN(j) \
+  footprintAddNarrowBin(local, kernel, first, count, j, energy, lostBefore, lostAfter)
+#define TOFSIM_SLOT(s) footprintAddSlot(local, kernel, s, energy)
+
+// Adds a contribution of `energy` spread by `kernel` to pixel `local` of the
+// segment; the part off the axis to lostBefore / lostAfter
+// (physics::depositContribution: the same steps and float operations).
+void depositContribution(uint local, vec3 kernel, vec3 energy, inout float lostBefore,
+                         inout float lostAfter) {
+  if (!footprintIsNarrow(kernel)) {
+    // FOOTPRINT_SLOTS (12): three per kink, in increasing bin order.
+    TOFSIM_SLOT(0); TOFSIM_SLOT(1); TOFSIM_SLOT(2); TOFSIM_SLOT(3);
+    TOFSIM_SLOT(4); TOFSIM_SLOT(5); TOFSIM_SLOT(6); TOFSIM_SLOT(7);
+    TOFSIM_SLOT(8); TOFSIM_SLOT(9); TOFSIM_SLOT(10); TOFSIM_SLOT(11);
+    float total = energy.r + energy.g + energy.b;
+    double before = footprintMassBefore(kernel);
+    double after = footprintMassAfter(kernel, uBins);
+    if (before > 0.0lf) lostBefore += float(before) * total;
+    if (after > 0.0lf) lostAfter += float(after) * total;
+    footprintWritten[local] = 1u;
+    return;
+  }
+  // FOOTPRINT_DIRECT_BINS (16) bins at most, ascending.
+  int first = footprintNarrowFirstBin(kernel, uBins);
+  int count = footprintNarrowBinCount(kernel);
+  TOFSIM_NARROW_BIN(0); TOFSIM_NARROW_BIN(1); TOFSIM_NARROW_BIN(2); TOFSIM_NARROW_BIN(3);
+  TOFSIM_NARROW_BIN(4); TOFSIM_NARROW_BIN(5); TOFSIM_NARROW_BIN(6); TOFSIM_NARROW_BIN(7);
+  TOFSIM_NARROW_BIN(8); TOFSIM_NARROW_BIN(9); TOFSIM_NARROW_BIN(10); TOFSIM_NARROW_BIN(11);
+  TOFSIM_NARROW_BIN(12); TOFSIM_NARROW_BIN(13); TOFSIM_NARROW_BIN(14); TOFSIM_NARROW_BIN(15);
+}
+
+#undef TOFSIM_NARROW_BIN
+#undef TOFSIM_SLOT
+
+#endif  // TOFSIM_FOOTPRINT_DEPOSIT_GLSL
