@@ -297,11 +297,14 @@ TOFSIM_PHYSICS_FN float footprintNarrowCdf(vec3 kernel, float s) {
   float wide = kernel.y;
   float narrow = kernel.z;
   float total = wide + narrow;
-  float ramps = 2.0f * wide * narrow;
-  float rising = s * s / ramps;
-  float plateau = (s - 0.5f * narrow) / wide;
+  // Reciprocals: the same for every edge of a kernel, so the compilers
+  // compute them once per contribution, and each edge costs multiplies only.
+  float perRamps = 1.0f / (2.0f * wide * narrow);
+  float perWide = 1.0f / wide;
+  float rising = s * s * perRamps;
+  float plateau = (s - 0.5f * narrow) * perWide;
   float r = total - s;
-  float falling = 1.0f - r * r / ramps;
+  float falling = 1.0f - r * r * perRamps;
   float inside = s < narrow ? rising : (s <= wide ? plateau : falling);
   return s <= 0.0f ? 0.0f : (s >= total ? 1.0f : inside);
 }
