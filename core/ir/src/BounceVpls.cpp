@@ -1,5 +1,7 @@
 #include "tofsim/ir/BounceVpls.h"
 
+#include <optional>
+
 #include "tofsim/reference/RayScene.h"
 #include "tofsim/reference/Sampling.h"
 #include "tofsim/util/Error.h"

@@ -87,7 +87,8 @@ RenderResult IrRenderer::render(const RenderJob& job, SegmentSink& sink,
                   static_cast<std::size_t>(job.camera.width) * job.camera.height * 4);
   result.depth_m = depthFromPositions(positions, job.camera);
   // Bounce 1 from the backend's RSM, later bounces traced from it here, so
-  // both backends gather the same VPLs of every bounce.
+  // both backends gather the same VPLs of every bounce; bounced.firstOfBounce
+  // keeps which VPLs are of which bounce (for bounce-resolved output).
   const BouncedVpls bounced = withLaterBounces(job, backend.generateVpls(job));
   const std::vector<Vpl>& vpls = bounced.vpls;
   backend.setVpls(vpls);
