@@ -62,6 +62,8 @@ render:
     visibility: exact
     geometry_clamp: 50
     vpl_footprint: false
+    bounces: 3
+    vpls_per_bounce: 500
   reference:
     bounces: 3
     samples_per_pixel: 16

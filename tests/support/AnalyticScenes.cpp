@@ -40,4 +40,17 @@ scene::Scene makeCorner(const glm::vec3& floorAlbedo, const glm::vec3& wallAlbed
   return scene;
 }
 
+scene::Scene makeClosedBox(float side_m, const glm::vec3& albedo) {
+  scene::Scene scene;
+  const float h = 0.5f * side_m;
+  for (int axis = 0; axis < 3; ++axis) {
+    for (const float sign : {-1.0f, 1.0f}) {
+      glm::vec3 centre(0.0f);
+      centre[axis] = sign * h;
+      addQuad(scene, centre, -centre / h, side_m, albedo);
+    }
+  }
+  return scene;
+}
+
 }  // namespace tofsim::test

@@ -18,4 +18,8 @@ scene::Scene makePlane(float size_m, const glm::vec3& albedo = glm::vec3(0.5f));
 /// (x in [-1, 1], y in [0, 2]) facing +z.
 scene::Scene makeCorner(const glm::vec3& floorAlbedo, const glm::vec3& wallAlbedo);
 
+/// A closed cube [-side/2, side/2]^3 of six inward-facing squares of one
+/// albedo: no ray from inside leaves it.
+scene::Scene makeClosedBox(float side_m, const glm::vec3& albedo);
+
 }  // namespace tofsim::test

@@ -68,7 +68,8 @@ double sumOf(const Image& image) {
 
 int32_t surfaceVertices(const config::RunConfig& config) {
   if (config.renderer == config::RendererKind::Reference) return config.reference.bounces;
-  return config.render.indirect.enabled ? 2 : 1;
+  // The surface point the camera sees, plus one per indirect bounce.
+  return config.render.indirect.enabled ? 1 + config.render.indirect.bounces : 1;
 }
 
 AxisPrediction predictAxisCut(const config::RunConfig& config, const capture::RenderJob& job) {

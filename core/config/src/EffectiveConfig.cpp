@@ -69,6 +69,8 @@ YAML::Node renderNode(const RunConfig& config) {
   i["visibility"] = r.indirect.visibility == capture::Visibility::Exact ? "exact" : "ism";
   i["geometry_clamp"] = shortest(r.indirect.geometry_term_clamp_per_m2);
   i["vpl_footprint"] = r.indirect.vpl_footprint;
+  i["bounces"] = r.indirect.bounces;
+  i["vpls_per_bounce"] = r.indirect.vpls_per_bounce;
   n["indirect"] = i;
   YAML::Node ref;
   ref["bounces"] = config.reference.bounces;

@@ -139,6 +139,9 @@ void parseIndirect(const ConfigNode& node, capture::IndirectSettings& s) {
   }
   s.geometry_term_clamp_per_m2 = node.getDouble("geometry_clamp", s.geometry_term_clamp_per_m2);
   s.vpl_footprint = node.getBool("vpl_footprint", s.vpl_footprint);
+  s.bounces = static_cast<int32_t>(intInRange(node, "bounces", s.bounces, 1, 8));
+  s.vpls_per_bounce =
+      static_cast<int32_t>(intInRange(node, "vpls_per_bounce", s.vpls_per_bounce, 0, 1 << 22));
 }
 
 // render.renderer and render.backend.
@@ -178,8 +181,7 @@ void parseRender(const ConfigNode& node, RunConfig& out) {
   }
   r.memory_budget_bytes = static_cast<std::size_t>(budget);
   r.pixel_footprint = node.getBool("pixel_footprint", r.pixel_footprint);
-  r.pixel_samples =
-      static_cast<int32_t>(intInRange(node, "pixel_samples", r.pixel_samples, 1, 16));
+  r.pixel_samples = static_cast<int32_t>(intInRange(node, "pixel_samples", r.pixel_samples, 1, 16));
   if (const auto indirect = node.optionalChild("indirect")) parseIndirect(*indirect, r.indirect);
   if (const auto reference = node.optionalChild("reference")) {
     ReferenceConfig& ref = out.reference;
@@ -296,16 +298,21 @@ constexpr long long kMaxVpls = 1LL << 22;
 
 void checkVplCount(const ConfigNode& root, const RunConfig& config) {
   const capture::Light& light = config.light.light;
+  const capture::IndirectSettings& s = config.render.indirect;
   const long long faces =
       light.type == capture::Light::Type::Spot && light.cone_half_angle_deg <= 60.0f ? 1 : 6;
-  const long long side = config.render.indirect.rsm_resolution;
-  if (config.render.indirect.enabled && faces * side * side > kMaxVpls) {
+  const long long side = s.rsm_resolution;
+  const long long first = faces * side * side;
+  // Every later bounce traces vpls_per_bounce (0: as many as the first) VPLs.
+  const long long later = (s.bounces - 1) * (s.vpls_per_bounce > 0 ? s.vpls_per_bounce : first);
+  if (s.enabled && first + later > kMaxVpls) {
     const ConfigNode render = root.child("render");
     const ConfigNode indirect = render.child("indirect");
-    indirect.failKey("rsm_resolution",
-                     std::to_string(side) + "^2 x " + std::to_string(faces) +
-                         " light view(s) = " + std::to_string(faces * side * side) +
-                         " VPLs, more than the limit of " + std::to_string(kMaxVpls));
+    std::string what = std::to_string(side) + "^2 x " + std::to_string(faces) +
+                       " light view(s) = " + std::to_string(first) + " VPLs";
+    if (later > 0) what += " + " + std::to_string(later) + " of later bounces";
+    indirect.failKey(later > 0 ? "bounces" : "rsm_resolution",
+                     what + ", more than the limit of " + std::to_string(kMaxVpls));
   }
 }
 

@@ -5,6 +5,7 @@
 #include "JobValidation.h"
 #include "MemoryPlan.h"
 #include "tofsim/capture/DirectLightView.h"
+#include "tofsim/ir/BounceVpls.h"
 #include "tofsim/ir/SegmentStream.h"
 #include "tofsim/util/Error.h"
 
@@ -85,7 +86,11 @@ RenderResult IrRenderer::render(const RenderJob& job, SegmentSink& sink,
   TOFSIM_CHECK_EQ(positions.size(),
                   static_cast<std::size_t>(job.camera.width) * job.camera.height * 4);
   result.depth_m = depthFromPositions(positions, job.camera);
-  const std::vector<Vpl> vpls = backend.generateVpls(job);
+  // Bounce 1 from the backend's RSM, later bounces traced from it here, so
+  // both backends gather the same VPLs of every bounce; bounced.firstOfBounce
+  // keeps which VPLs are of which bounce (for bounce-resolved output).
+  const BouncedVpls bounced = withLaterBounces(job, backend.generateVpls(job));
+  const std::vector<Vpl>& vpls = bounced.vpls;
   backend.setVpls(vpls);
 
   const MemoryPlan plan =

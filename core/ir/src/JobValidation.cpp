@@ -38,6 +38,10 @@ void validateJob(const RenderJob& job, const DeviceLimits& limits) {
   TOFSIM_CHECK(job.scene != nullptr);
   validateImageSides(job, limits);
   const IndirectSettings& s = job.settings.indirect;
+  if (s.bounces < 1 || s.bounces > 8 || s.vpls_per_bounce < 0) {
+    throw InputError("render.indirect.bounces must be in [1, 8] (got " + std::to_string(s.bounces) +
+                     ") and vpls_per_bounce >= 0 (got " + std::to_string(s.vpls_per_bounce) + ")");
+  }
   // One ISM (without its pull-push pyramid) is one buffer.
   const std::size_t ismBytes = std::size_t(s.ism_resolution) * s.ism_resolution * sizeof(float);
   if (s.enabled && ismBytes > limits.maxBufferBytes) {
@@ -55,8 +59,7 @@ void validateJob(const RenderJob& job, const DeviceLimits& limits) {
                      " bytes" +
                      (job.settings.pixel_footprint ? " (the pixel footprint's buffer)" : "") +
                      " exceeds the GL storage-block limit " +
-                     std::to_string(limits.maxBufferBytes) +
-                     " bytes; use fewer time bins" +
+                     std::to_string(limits.maxBufferBytes) + " bytes; use fewer time bins" +
                      (job.settings.pixel_footprint ? " or render.pixel_footprint: false" : ""));
   }
 }

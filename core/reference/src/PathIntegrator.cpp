@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "Sampling.h"
+#include "tofsim/reference/Sampling.h"
 #include "tofsim/volume/PhysicalConstants.h"
 
 namespace tofsim::reference {

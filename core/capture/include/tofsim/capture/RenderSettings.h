@@ -13,22 +13,28 @@ enum class Visibility { Ism, Exact };
 
 struct IndirectSettings {
   bool enabled = true;
-  int32_t rsm_resolution = 32;        ///< RSM side; VPL count = rsm_resolution^2
-  int32_t ism_resolution = 32;        ///< side of each VPL's paraboloid depth map
-  int32_t points_per_vpl = 1000;      ///< ISM points splatted per VPL
-  bool ism_pull_push = true;          ///< fill ISM holes by pull-push
+  int32_t rsm_resolution = 32;    ///< RSM side; VPL count = rsm_resolution^2
+  int32_t ism_resolution = 32;    ///< side of each VPL's paraboloid depth map
+  int32_t points_per_vpl = 1000;  ///< ISM points splatted per VPL
+  bool ism_pull_push = true;      ///< fill ISM holes by pull-push
   Visibility visibility = Visibility::Ism;
   /// Upper bound of the geometry term cos*cos/d^2 (1/m^2); <= 0 disables clamping.
   double geometry_term_clamp_per_m2 = 100.0;
   /// Spread each VPL's light over the path variation across its RSM texel's
   /// patch (anti-banding); only with RenderSettings::pixel_footprint.
   bool vpl_footprint = true;
+  /// Indirect bounces: 1 = the RSM's VPLs only; k > 1 adds VPLs of bounces
+  /// 2..k, each traced from those of the bounce before (core/ir BounceVpls.h).
+  int32_t bounces = 1;
+  /// VPLs traced for each bounce after the first; 0 = as many as the first
+  /// bounce has (rays that leave the scene make none).
+  int32_t vpls_per_bounce = 0;
 };
 
 struct RenderSettings {
-  TimeAxis time;                     ///< arrival-time histogram bins
-  double index_of_refraction = 1.0;  ///< of the medium filling the scene
-  bool camera_unwarp = false;        ///< drop the surface -> camera delay
+  TimeAxis time;                         ///< arrival-time histogram bins
+  double index_of_refraction = 1.0;      ///< of the medium filling the scene
+  bool camera_unwarp = false;            ///< drop the surface -> camera delay
   int32_t shadow_map_resolution = 1024;  ///< per cube face of the light's shadow map
   /// Bytes of GPU memory the volume segments and ISM batches may use.
   std::size_t memory_budget_bytes = std::size_t{512} << 20;

@@ -71,7 +71,9 @@ class IrBackend {
   /// (faces +X..-Z), empty when indirect light is off or nothing is lit.
   virtual std::vector<Vpl> generateVpls(const capture::RenderJob& job) = 0;
   /// Makes all VPLs resident for the gathers (visibility structures are built
-  /// per batch later). An empty list means no indirect light this render.
+  /// per batch later): those of generateVpls followed by the later bounces'
+  /// the driver traced from them (BounceVpls.h). An empty list means no
+  /// indirect light this render.
   virtual void setVpls(const std::vector<Vpl>& vpls) = 0;
   /// Bytes held for the whole render (scene, G-buffer, shadow map, VPLs,
   /// BVH...), for the plan.

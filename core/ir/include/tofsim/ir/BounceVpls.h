@@ -1,0 +1,56 @@
+#pragma once
+// VPLs of the indirect bounces after the first (Keller 1997, "Instant
+// radiosity"): the RSM gives bounce 1; the VPLs of bounce k + 1 continue the
+// light paths of those of bounce k by cosine-weighted directions traced
+// against the scene, so every VPL still carries its flux and its whole optical
+// path from the light, and the gather needs nothing new. Backend-independent:
+// the rays are Embree's whatever device gathers.
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "tofsim/capture/RenderJob.h"
+#include "tofsim/ir/IrBackend.h"
+
+namespace tofsim::reference {
+class RayScene;
+}
+
+namespace tofsim::ir {
+
+/// All VPLs of a render, bounce 1 first, then 2, ...: bounce k (1-based) is
+/// vpls[firstOfBounce[k - 1], firstOfBounce[k]).
+struct BouncedVpls {
+  std::vector<Vpl> vpls;
+  std::vector<std::size_t> firstOfBounce;  ///< bounces + 1 offsets, the last = vpls.size()
+
+  int32_t bounces() const { return static_cast<int32_t>(firstOfBounce.size()) - 1; }
+  std::size_t countOf(int32_t bounce) const {
+    return firstOfBounce[bounce] - firstOfBounce[bounce - 1];
+  }
+};
+
+/// The VPLs of one bounce after `parents` (those of bounce `bounce` - 1):
+/// `count` children picked among the parents in proportion to their power
+/// (systematic resampling, one seeded offset per bounce: deterministic, and
+/// every parent of power p gets count * p / total children on average), each
+/// shot from its parent in a cosine-weighted direction (its own seeded
+/// generator, from the seed, the bounce and its index). A child sits at the
+/// first hit, its normal facing the ray, its path the parent's plus eta times
+/// the leg, its flux albedo * (the total power / count) / pi in the parent's
+/// colour: the expected power of the bounce is the albedo times the parents'.
+/// Rays that leave the scene make no VPL. Children have no RSM patch
+/// (patchU = patchV = 0: a point VPL, no VPL footprint): a child stands for
+/// the parents' light spread over the scene by a random ray, not for a texel
+/// of a light view whose extent the patch steps could describe.
+std::vector<Vpl> traceBounce(const reference::RayScene& scene, const std::vector<Vpl>& parents,
+                             std::size_t count, int32_t bounce, uint64_t seed,
+                             double indexOfRefraction);
+
+/// Bounce 1 (`firstBounce`, the backend's RSM VPLs) followed by bounces
+/// 2..job.settings.indirect.bounces, traced through a RayScene of job.scene
+/// built here (only when there is a later bounce and light to continue).
+BouncedVpls withLaterBounces(const capture::RenderJob& job, std::vector<Vpl> firstBounce);
+
+}  // namespace tofsim::ir

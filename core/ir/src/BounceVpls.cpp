@@ -1,0 +1,102 @@
+#include "tofsim/ir/BounceVpls.h"
+
+#include <optional>
+
+#include "tofsim/reference/RayScene.h"
+#include "tofsim/reference/Sampling.h"
+#include "tofsim/util/Error.h"
+#include "tofsim/util/Random.h"
+
+namespace tofsim::ir {
+
+namespace {
+
+// Generator units of the bounce tracing, apart from any other user of the
+// seed: the tag in the top byte, the bounce, then the child's index.
+constexpr uint64_t kChildUnit = uint64_t{0xB0} << 56;
+constexpr uint64_t kOffsetUnit = uint64_t{0xB1} << 56;
+
+uint64_t unitOf(uint64_t tag, int32_t bounce, std::size_t index) {
+  return tag | (static_cast<uint64_t>(bounce) << 32) | static_cast<uint64_t>(index);
+}
+
+double powerOf(const Vpl& v) { return static_cast<double>(v.flux.r) + v.flux.g + v.flux.b; }
+
+// Child `index`'s light path continued from `parent`, whose power share is
+// `share` (rgb, W/sr: the parent's flux scaled to total power / count).
+std::optional<Vpl> shootChild(const reference::RayScene& scene, const Vpl& parent,
+                              const glm::vec3& share, int32_t bounce, uint64_t seed,
+                              std::size_t index, float eta) {
+  Pcg32 rng = Pcg32::forUnit(seed, unitOf(kChildUnit, bounce, index));
+  const glm::vec3 p(parent.positionPath);
+  const glm::vec3 n(parent.normal);
+  const float u1 = rng.nextFloat();
+  const float u2 = rng.nextFloat();
+  const glm::vec3 w = reference::cosineSampleHemisphere(n, u1, u2);
+  if (!(glm::dot(w, n) > 0.0f)) return std::nullopt;
+  const auto hit = scene.intersect(p + n * scene.epsilon_m(), w);
+  if (!hit) return std::nullopt;  // the light leaves the scene
+  const glm::vec3 flux = hit->albedo * share;
+  if (!(flux.r + flux.g + flux.b > 0.0f)) return std::nullopt;
+  const float path_m = parent.positionPath.w + eta * glm::length(hit->position_world - p);
+  return Vpl{glm::vec4(hit->position_world, path_m), glm::vec4(hit->normal_world, 0.0f),
+             glm::vec4(flux, 0.0f)};
+}
+
+}  // namespace
+
+std::vector<Vpl> traceBounce(const reference::RayScene& scene, const std::vector<Vpl>& parents,
+                             std::size_t count, int32_t bounce, uint64_t seed,
+                             double indexOfRefraction) {
+  std::vector<Vpl> children;
+  double total = 0.0;
+  for (const Vpl& v : parents) total += powerOf(v);
+  if (parents.empty() || count == 0 || !(total > 0.0)) return children;
+  children.reserve(count);
+  // Systematic resampling: child j takes the parent whose share of the
+  // cumulative power holds (j + offset) * total / count.
+  Pcg32 offsetRng = Pcg32::forUnit(seed, unitOf(kOffsetUnit, bounce, 0));
+  const double offset = offsetRng.nextDouble();
+  const double step = total / static_cast<double>(count);
+  const auto eta = static_cast<float>(indexOfRefraction);
+  std::size_t parent = 0;
+  double parentEnd = powerOf(parents[0]);
+  for (std::size_t j = 0; j < count; ++j) {
+    const double target = (static_cast<double>(j) + offset) * step;
+    // The last parent also takes any target rounding puts past the total.
+    while (target >= parentEnd && parent + 1 < parents.size()) {
+      parentEnd += powerOf(parents[++parent]);
+    }
+    const Vpl& from = parents[parent];
+    const glm::vec3 share = glm::vec3(from.flux) * static_cast<float>(step / powerOf(from));
+    if (const auto child = shootChild(scene, from, share, bounce, seed, j, eta)) {
+      children.push_back(*child);
+    }
+  }
+  return children;
+}
+
+BouncedVpls withLaterBounces(const capture::RenderJob& job, std::vector<Vpl> firstBounce) {
+  const capture::IndirectSettings& s = job.settings.indirect;
+  TOFSIM_CHECK(s.bounces >= 1);
+  BouncedVpls out;
+  out.vpls = std::move(firstBounce);
+  out.firstOfBounce = {0, out.vpls.size()};
+  if (s.bounces == 1 || out.vpls.empty()) {
+    out.firstOfBounce.resize(static_cast<std::size_t>(s.bounces) + 1, out.vpls.size());
+    return out;
+  }
+  const std::size_t count =
+      s.vpls_per_bounce > 0 ? static_cast<std::size_t>(s.vpls_per_bounce) : out.vpls.size();
+  const reference::RayScene scene(*job.scene, 0);
+  std::vector<Vpl> parents(out.vpls);
+  for (int32_t bounce = 2; bounce <= s.bounces; ++bounce) {
+    parents = traceBounce(scene, parents, count, bounce, job.settings.seed,
+                          job.settings.index_of_refraction);
+    out.vpls.insert(out.vpls.end(), parents.begin(), parents.end());
+    out.firstOfBounce.push_back(out.vpls.size());
+  }
+  return out;
+}
+
+}  // namespace tofsim::ir
