@@ -11,12 +11,18 @@ namespace tofsim::capture {
 
 enum class Visibility { Ism, Exact };
 
+/// How surfaces reflect (render.materials). Lambertian: albedo / pi for every
+/// material, the renderer of before. Gltf: the glTF metallic-roughness BRDF
+/// (shaders/gltf_brdf.glsl) in the direct light and the light the camera
+/// sees; VPLs, and the camera side of their contributions, stay Lambertian.
+enum class MaterialModel { Lambertian, Gltf };
+
 struct IndirectSettings {
   bool enabled = true;
-  int32_t rsm_resolution = 32;        ///< RSM side; VPL count = rsm_resolution^2
-  int32_t ism_resolution = 32;        ///< side of each VPL's paraboloid depth map
-  int32_t points_per_vpl = 1000;      ///< ISM points splatted per VPL
-  bool ism_pull_push = true;          ///< fill ISM holes by pull-push
+  int32_t rsm_resolution = 32;    ///< RSM side; VPL count = rsm_resolution^2
+  int32_t ism_resolution = 32;    ///< side of each VPL's paraboloid depth map
+  int32_t points_per_vpl = 1000;  ///< ISM points splatted per VPL
+  bool ism_pull_push = true;      ///< fill ISM holes by pull-push
   Visibility visibility = Visibility::Ism;
   /// Upper bound of the geometry term cos*cos/d^2 (1/m^2); <= 0 disables clamping.
   double geometry_term_clamp_per_m2 = 100.0;
@@ -26,9 +32,9 @@ struct IndirectSettings {
 };
 
 struct RenderSettings {
-  TimeAxis time;                     ///< arrival-time histogram bins
-  double index_of_refraction = 1.0;  ///< of the medium filling the scene
-  bool camera_unwarp = false;        ///< drop the surface -> camera delay
+  TimeAxis time;                         ///< arrival-time histogram bins
+  double index_of_refraction = 1.0;      ///< of the medium filling the scene
+  bool camera_unwarp = false;            ///< drop the surface -> camera delay
   int32_t shadow_map_resolution = 1024;  ///< per cube face of the light's shadow map
   /// Bytes of GPU memory the volume segments and ISM batches may use.
   std::size_t memory_budget_bytes = std::size_t{512} << 20;
@@ -39,6 +45,7 @@ struct RenderSettings {
   bool pixel_footprint = true;
   /// N x N stratified G-buffer samples per pixel, averaged.
   int32_t pixel_samples = 1;
+  MaterialModel materials = MaterialModel::Lambertian;
   IndirectSettings indirect;
 };
 
