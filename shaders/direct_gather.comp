@@ -1,8 +1,8 @@
 #version 450 core
 // Direct transient light: one thread per pixel of the segment, over the
 // pixel's PIXEL_SAMPLES^2 G-buffer samples in order. A sample's surface point
-// x receives the light's impulse after |l - x| and reflects it (Lambertian) to
-// the camera after |x - c|; the radiance lands in the bin of the full optical
+// x receives the light's impulse after |l - x| and reflects it (Lambertian, or
+// with GLTF_MATERIALS the glTF BRDF of gltf_brdf.glsl) to the camera after |x - c|; the radiance lands in the bin of the full optical
 // path eta * (|l - x| + |x - c|), or eta * |l - x| when the camera delay is
 // unwarped. With PIXEL_FOOTPRINT it is spread instead over that path's
 // distribution across the sample's sub-pixel (footprint_deposit.glsl). Each
@@ -13,6 +13,9 @@ layout(local_size_x = TOFSIM_WORK_GROUP_SIZE) in;
 
 #include "light.glsl"
 #include "surface_samples.glsl"
+#ifdef GLTF_MATERIALS
+#include "gltf_brdf.glsl"
+#endif
 
 layout(std430, binding = TOFSIM_SSBO_DIRECT_VOLUME) buffer DirectVolume { float direct[]; };
 layout(std430, binding = TOFSIM_SSBO_OUTSIDE_AXIS) buffer OutsideAxis { float outside[]; };  // [2 * pixel]: before, [2 * pixel + 1]: after
@@ -50,7 +53,14 @@ void gatherSample(uint local, ivec2 xy, int s, inout float lostBefore, inout flo
   float profile = spotProfile(-wLight);
   if (profile <= 0.0 || !visibleFromLight(x, cosX)) return;
 
+#ifdef GLTF_MATERIALS
+  vec2 metallicRoughness = texelFetch(uGMetallicRoughness, texel, 0).rg;
+  vec3 wCamera = normalize(uCameraPosition_world - x);
+  vec3 radiance = gltfDirect(n, wLight, wCamera, albedo, metallicRoughness.x, metallicRoughness.y,
+                             uLightIntensity_W_per_sr, profile, cosX, dLight);
+#else
   vec3 radiance = lambertianDirect(albedo, uLightIntensity_W_per_sr, profile, cosX, dLight);
+#endif
   float dCamera = uCameraUnwarp != 0 ? 0.0 : length(x - uCameraPosition_world);
   float path_m = directPathLength(uIndexOfRefraction, dLight, dCamera);
 #ifdef PIXEL_FOOTPRINT

@@ -10,6 +10,13 @@ uniform vec3 uViewpoint_world;
 uniform vec3 uAlbedoFactor;
 uniform int uHasAlbedoTexture;
 layout(binding = TOFSIM_UNIT_ALBEDO_TEXTURE) uniform sampler2D uAlbedoTexture;
+#ifdef GLTF_MATERIALS
+// render.materials: gltf. metallic = factor.x * texture.b, roughness = factor.y * texture.g.
+uniform vec2 uMetallicRoughnessFactor;
+uniform int uHasMetallicRoughnessTexture;
+layout(binding = TOFSIM_UNIT_METALLIC_ROUGHNESS_TEXTURE) uniform sampler2D uMetallicRoughnessTexture;
+layout(location = TOFSIM_OUT_METALLIC_ROUGHNESS) out vec2 outMetallicRoughness;
+#endif
 
 layout(location = TOFSIM_OUT_POSITION) out vec4 outPosition;  // xyz world, w = 1 where a surface was hit
 layout(location = TOFSIM_OUT_NORMAL) out vec4 outNormal;    // xyz unit world normal facing the viewpoint
@@ -23,4 +30,11 @@ void main() {
   outPosition = vec4(vPosition_world, 1.0);
   outNormal = vec4(n, 0.0);
   outAlbedo = vec4(albedo, 1.0);
+#ifdef GLTF_MATERIALS
+  vec2 metallicRoughness = uMetallicRoughnessFactor;
+  if (uHasMetallicRoughnessTexture != 0) {
+    metallicRoughness *= texture(uMetallicRoughnessTexture, vUv).bg;
+  }
+  outMetallicRoughness = metallicRoughness;
+#endif
 }

@@ -15,6 +15,9 @@ const int kSamplesPerPixel = PIXEL_SAMPLES * PIXEL_SAMPLES;
 layout(binding = TOFSIM_UNIT_G_POSITION) uniform sampler2D uGPosition;
 layout(binding = TOFSIM_UNIT_G_NORMAL) uniform sampler2D uGNormal;
 layout(binding = TOFSIM_UNIT_G_ALBEDO) uniform sampler2D uGAlbedo;
+#ifdef GLTF_MATERIALS
+layout(binding = TOFSIM_UNIT_G_METALLIC_ROUGHNESS) uniform sampler2D uGMetallicRoughness;  // rg
+#endif
 
 // G-buffer texel of sample s of the pixel at image position pixelXy.
 ivec2 sampleTexel(ivec2 pixelXy, int s) {

@@ -53,6 +53,7 @@ render:
   strict: true
   pixel_footprint: false
   pixel_samples: 3
+  materials: gltf
   indirect:
     enabled: false
     rsm_resolution: 8

@@ -71,6 +71,30 @@ TEST_F(SharedScenesTest, TexturedBoxHasALinearTexture) {
   }
 }
 
+// metallicFactor / roughnessFactor as the file declares them, glTF's default
+// 1 where it does not (Box.gltf's "Red" names no roughnessFactor).
+TEST_F(SharedScenesTest, MaterialsCarryMetallicAndRoughness) {
+  const Scene box = loadGltf(kShared / "loader/Box.gltf");
+  ASSERT_EQ(box.materials.size(), 1u);
+  EXPECT_EQ(box.materials[0].metallic, 0.0f);
+  EXPECT_EQ(box.materials[0].roughness, 1.0f);
+  EXPECT_EQ(box.materials[0].metallicRoughnessTexture, -1);
+  const Scene room = loadGltf(kShared / "convergence-room/ConvergenceTest.gltf");
+  int checked = 0;
+  for (const Material& m : room.materials) {
+    if (m.name == "Glossy Metal") {
+      EXPECT_EQ(m.metallic, 1.0f);
+      EXPECT_FLOAT_EQ(m.roughness, 0.2f);
+      ++checked;
+    } else if (m.name == "Diffuse") {
+      EXPECT_EQ(m.metallic, 0.0f);
+      EXPECT_EQ(m.roughness, 1.0f);
+      ++checked;
+    }
+  }
+  EXPECT_EQ(checked, 2);
+}
+
 TEST_F(SharedScenesTest, SparseAccessorFileLoads) {
   for (const char* name : {"loader/box_sparse.gltf", "loader/box_sparse.glb"}) {
     EXPECT_EQ(loadGltf(kShared / name).triangleCount(), 12u) << name;
@@ -136,7 +160,8 @@ TEST_F(SharedScenesTest, DracoIsRejectedClearly) {
   } catch (const InputError& e) {
     const std::string what = e.what();
     EXPECT_NE(what.find("required extension KHR_draco_mesh_compression is not supported"),
-              std::string::npos) << what;
+              std::string::npos)
+        << what;
     EXPECT_NE(what.find("2CylinderEngine.gltf"), std::string::npos) << what;
   }
 }

@@ -46,5 +46,22 @@ TEST(TextureSamplingTest, MaterialAlbedoMultipliesFactorAndTexture) {
   EXPECT_EQ(materialAlbedo(scene, 1, {0.75f, 0.75f}), glm::vec3(2.0f, 0.0f, 0.0f));
 }
 
+TEST(TextureSamplingTest, MetallicRoughnessIsFactorsTimesBlueAndGreen) {
+  Scene scene;
+  Texture t;
+  t.width = t.height = 1;
+  t.rgb = {0.9f, 0.5f, 0.25f};  // R unused, G roughness, B metallic (glTF)
+  scene.textures.push_back(t);
+  Material plain;
+  plain.metallic = 0.8f;
+  plain.roughness = 0.6f;
+  Material textured = plain;
+  textured.metallicRoughnessTexture = 0;
+  scene.materials = {plain, textured};
+  EXPECT_EQ(materialMetallicRoughness(scene, 0, {0.5f, 0.5f}), glm::vec2(0.8f, 0.6f));
+  EXPECT_EQ(materialMetallicRoughness(scene, 1, {0.5f, 0.5f}),
+            glm::vec2(0.8f * 0.25f, 0.6f * 0.5f));
+}
+
 }  // namespace
 }  // namespace tofsim::scene

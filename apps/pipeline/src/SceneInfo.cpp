@@ -14,6 +14,14 @@ std::string format(const char* fmt, auto... args) {
   return buffer;
 }
 
+// What render.materials: gltf makes of a material (gltf_brdf.glsl); with
+// lambertian (the default) every material is albedo / pi.
+std::string gltfKind(const scene::Material& m) {
+  const char* kind = m.metallic <= 0.0f ? "dielectric" : m.metallic >= 1.0f ? "metal" : "mixed";
+  return format("gltf: %s, metallic %.3g, roughness %.3g%s", kind, m.metallic, m.roughness,
+                m.metallicRoughnessTexture >= 0 ? " x texture (B, G)" : "");
+}
+
 std::string reportText(const scene::LoadReport& r) {
   std::string out = "loader:\n";
   const auto count = [&](const char* what, std::size_t n) {
@@ -22,7 +30,8 @@ std::string reportText(const scene::LoadReport& r) {
   count("point/line primitive(s) skipped", r.skippedPrimitives);
   count("zero-area triangle(s) dropped", r.degenerateTriangles);
   count("primitive(s) without normals (flat normals made)", r.flatNormalPrimitives);
-  count("metallic material(s) (rendered as diffuse base colour)", r.metallicMaterials);
+  count("metallic material(s) (diffuse base colour unless render.materials: gltf)",
+        r.metallicMaterials);
   count("emissive material(s) (emission ignored)", r.emissiveMaterials);
   count("transmissive material(s) (rendered as diffuse base colour)", r.transmissiveMaterials);
   count("orthographic camera(s) skipped", r.orthographicCameras);
@@ -52,11 +61,14 @@ std::string describeScene(const std::filesystem::path& sceneFile) {
   out += format(
       "bounds (m): min [%.4g, %.4g, %.4g]  max [%.4g, %.4g, %.4g]  size [%.4g, %.4g, %.4g]\n",
       b.min.x, b.min.y, b.min.z, b.max.x, b.max.y, b.max.z, size.x, size.y, size.z);
-  out += format("materials: %zu\n", s.materials.size());
+  out += format(
+      "materials: %zu (render.materials: lambertian renders each as albedo / pi; gltf as said)\n",
+      s.materials.size());
   for (std::size_t i = 0; i < s.materials.size(); ++i) {
     const scene::Material& m = s.materials[i];
-    out += format("  [%zu] %-24s albedo [%.3f, %.3f, %.3f]%s\n", i, m.name.c_str(), m.albedo.x,
-                  m.albedo.y, m.albedo.z, m.albedoTexture >= 0 ? " x texture" : "");
+    out += format("  [%zu] %-24s albedo [%.3f, %.3f, %.3f]%s  (%s)\n", i, m.name.c_str(),
+                  m.albedo.x, m.albedo.y, m.albedo.z, m.albedoTexture >= 0 ? " x texture" : "",
+                  gltfKind(m).c_str());
   }
   out += format("textures: %zu\n", s.textures.size());
   out += format("cameras: %zu\n", s.cameras.size());

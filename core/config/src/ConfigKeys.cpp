@@ -80,6 +80,8 @@ const ConfigKey kRunConfigKeys[] = {
      "a pixel integrates its area: every contribution is spread over the distribution of its optical path across the pixel (a trapezoid in time, first order; see README.md, \"Pixel footprints\"); `false`: all of a pixel's light in the bin of its centre's path (closed-form tests). `ir` only: the reference integrates by `reference.pixel_filter`"},
     {"render.pixel_samples", "int", "in [1, 16]", "1", "-",
      "N x N stratified surface samples per pixel, averaged (silhouettes, pixels that see two surfaces); each sample's footprint is its sub-pixel; costs N^2 gathers"},
+    {"render.materials", "string", "", "lambertian", "-",
+     "`lambertian`: every material reflects albedo / pi (base colour only; metallic and roughness ignored), the output of before, byte for byte. `gltf`: the glTF metallic-roughness BRDF (GGX, height-correlated Smith, Schlick; `metallicFactor`, `roughnessFactor`, `metallicRoughnessTexture`; README.md, \"Materials\") in the direct light seen by the camera, on both `ir` backends and in the reference; VPLs and the camera side of their contributions stay Lambertian for now. The default stays `lambertian` because glTF's metallic 0, roughness 1 is not Lambertian: the shipped scenes would change"},
     {"render.indirect", "mapping", "", "defaults", "-",
      "indirect light (instant radiosity: VPLs), below"},
     {"render.reference", "mapping", "", "defaults", "-",

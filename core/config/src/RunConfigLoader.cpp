@@ -182,6 +182,13 @@ void parseRender(const ConfigNode& node, RunConfig& out) {
   r.memory_budget_bytes = static_cast<std::size_t>(budget);
   r.pixel_footprint = node.getBool("pixel_footprint", r.pixel_footprint);
   r.pixel_samples = static_cast<int32_t>(intInRange(node, "pixel_samples", r.pixel_samples, 1, 16));
+  const std::string materials = node.getString("materials", "lambertian");
+  if (materials == "lambertian" || materials == "gltf") {
+    r.materials =
+        materials == "gltf" ? capture::MaterialModel::Gltf : capture::MaterialModel::Lambertian;
+  } else {
+    node.failKey("materials", "must be lambertian or gltf (got '" + materials + "')");
+  }
   if (const auto indirect = node.optionalChild("indirect")) parseIndirect(*indirect, r.indirect);
   if (const auto reference = node.optionalChild("reference")) {
     ReferenceConfig& ref = out.reference;

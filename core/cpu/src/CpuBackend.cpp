@@ -12,6 +12,7 @@
 #include "VplArrays.h"
 #include "tofsim/capture/SegmentSink.h"
 #include "tofsim/physics/FootprintBuffer.h"
+#include "tofsim/physics/GltfBrdf.h"
 #include "tofsim/physics/TransientPhysics.h"
 #include "tofsim/reference/RayScene.h"
 #include "tofsim/util/Error.h"
@@ -91,7 +92,9 @@ void CpuBackend::setVpls(const std::vector<ir::Vpl>& vpls) {
 
 std::size_t CpuBackend::fixedBytes() const {
   std::size_t bytes =
-      surfaces_ ? surfaces_->size() * (3 * sizeof(glm::vec4) + sizeof(glm::vec3)) : 0;
+      surfaces_
+          ? surfaces_->size() * (3 * sizeof(glm::vec4) + sizeof(glm::vec3) + sizeof(glm::vec2))
+          : 0;
   // Embree's BVH and vertex copies: about 100 bytes per triangle (measured order).
   if (job_.scene != nullptr) bytes += job_.scene->triangleCount() * 100;
   if (vpls_) bytes += vpls_->bytes();
@@ -177,6 +180,7 @@ void CpuBackend::gatherDirectTile(std::size_t tile) {
   const capture::RenderSettings& s = job_.settings;
   const capture::Light& light = job_.light;
   const bool spot = light.type == capture::Light::Type::Spot;
+  const bool gltf = s.materials == capture::MaterialModel::Gltf;
   // As LightUniforms.cpp hands them to light.glsl.
   const glm::vec3 axis = glm::normalize(light.direction_world);
   const float cosOuter = std::cos(glm::radians(light.cone_half_angle_deg));
@@ -209,8 +213,17 @@ void CpuBackend::gatherDirectTile(std::size_t tile) {
       const glm::vec3 g = surfaces_->geometric[p];
       const glm::vec3 offset = (glm::dot(g, toLight) < 0.0f ? -g : g) * scene_->epsilon_m();
       if (scene_->occluded(x + offset, light.position_world)) continue;
-      const glm::vec3 radiance = physics::lambertianDirect(
-          glm::vec3(surfaces_->albedo[p]), light.intensity_W_per_sr, profile, cosX, dLight);
+      const glm::vec3 albedo(surfaces_->albedo[p]);
+      glm::vec3 radiance;
+      if (gltf) {
+        const glm::vec2 mr = surfaces_->metallicRoughness[p];
+        const glm::vec3 wCamera = glm::normalize(job_.camera.position_world - x);
+        radiance = physics::gltfDirect(n, wLight, wCamera, albedo, mr.x, mr.y,
+                                       light.intensity_W_per_sr, profile, cosX, dLight);
+      } else {
+        radiance =
+            physics::lambertianDirect(albedo, light.intensity_W_per_sr, profile, cosX, dLight);
+      }
       const float dCamera = s.camera_unwarp ? 0.0f : glm::length(x - job_.camera.position_world);
       const float path_m = physics::directPathLength(eta, dLight, dCamera);
       if (s.pixel_footprint) {

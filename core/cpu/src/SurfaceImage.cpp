@@ -17,6 +17,7 @@ SurfaceImage traceSurfaces(const reference::RayScene& scene, const capture::Came
   image.normal.assign(pixels, glm::vec4(0.0f));
   image.albedo.assign(pixels, glm::vec4(0.0f));
   image.geometric.assign(pixels, glm::vec3(0.0f));
+  image.metallicRoughness.assign(pixels, glm::vec2(0.0f));
   parallelFor(static_cast<std::size_t>(camera.height), threads, [&](std::size_t row) {
     const auto y = static_cast<int32_t>(row);
     for (int32_t x = 0; x < camera.width; ++x) {
@@ -32,6 +33,7 @@ SurfaceImage traceSurfaces(const reference::RayScene& scene, const capture::Came
         image.normal[i] = glm::vec4(hit->normal_world, 0.0f);
         image.albedo[i] = glm::vec4(hit->albedo, 1.0f);
         image.geometric[i] = hit->geometric_world;
+        image.metallicRoughness[i] = glm::vec2(hit->metallic, hit->roughness);
       }
     }
   });

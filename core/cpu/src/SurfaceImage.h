@@ -3,7 +3,7 @@
 // pixel's centre, or through each of its N x N sub-pixel centres: the CPU
 // counterpart of the GL's rasterized SurfaceMaps, with its conventions (world
 // position with w = 1 on a surface and 0 elsewhere, unit normal facing the
-// viewpoint, albedo with textures).
+// viewpoint, albedo and metallic-roughness with textures).
 
 #include <cstdint>
 #include <glm/glm.hpp>
@@ -17,11 +17,12 @@ namespace tofsim::cpu {
 struct SurfaceImage {
   int32_t width = 0;
   int32_t height = 0;
-  int32_t samplesPerSide = 1;  ///< N: sample s of pixel p is entry p * N * N + s
-  std::vector<glm::vec4> position;   ///< xyz world, w = 1 on a surface, 0 else
-  std::vector<glm::vec4> normal;     ///< xyz unit shading normal facing the viewpoint
-  std::vector<glm::vec4> albedo;     ///< rgb diffuse albedo, a = 1
-  std::vector<glm::vec3> geometric;  ///< triangle normal facing the viewpoint (ray offsets)
+  int32_t samplesPerSide = 1;                ///< N: sample s of pixel p is entry p * N * N + s
+  std::vector<glm::vec4> position;           ///< xyz world, w = 1 on a surface, 0 else
+  std::vector<glm::vec4> normal;             ///< xyz unit shading normal facing the viewpoint
+  std::vector<glm::vec4> albedo;             ///< rgb diffuse albedo, a = 1
+  std::vector<glm::vec3> geometric;          ///< triangle normal facing the viewpoint (ray offsets)
+  std::vector<glm::vec2> metallicRoughness;  ///< (metallic, roughness), render.materials: gltf
 
   std::size_t size() const { return position.size(); }
 };

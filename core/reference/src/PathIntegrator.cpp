@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "tofsim/reference/Sampling.h"
+#include "tofsim/physics/GltfBrdf.h"
 #include "tofsim/volume/PhysicalConstants.h"
 
 namespace tofsim::reference {
@@ -19,10 +20,13 @@ PathIntegrator::PathIntegrator(const RayScene& scene, const capture::RenderJob& 
       job_(job),
       bounces_(bounces),
       samplesPerPixel_(samplesPerPixel),
-      pixelFilter_(pixelFilter) {}
+      pixelFilter_(pixelFilter),
+      gltf_(job.settings.materials == capture::MaterialModel::Gltf) {}
 
-PathIntegrator::Radiance PathIntegrator::lightReflectedAt(const SurfaceHit& hit) const {
-  // The GL direct gather's formula: albedo / pi * I * profile * cos / r^2.
+PathIntegrator::Radiance PathIntegrator::lightReflectedAt(const SurfaceHit& hit,
+                                                          const glm::vec3& toViewer) const {
+  // The GL direct gather's formula: f * I * profile * cos / r^2, f = albedo / pi
+  // or the glTF BRDF (physics::gltfBrdf, the shaders' own).
   Radiance out;
   const capture::Light& light = job_.light;
   const glm::vec3 toLight = light.position_world - hit.position_world;
@@ -34,8 +38,15 @@ PathIntegrator::Radiance PathIntegrator::lightReflectedAt(const SurfaceHit& hit)
   const float profile = light.angularProfile(-w);
   if (profile <= 0.0f) return out;
   if (scene_.occluded(scene_.offsetOrigin(hit, w), light.position_world)) return out;
-  const double scale = static_cast<double>(profile) * cosX / (static_cast<double>(d) * d) / kPi;
-  out.value = glm::dvec3(hit.albedo) * glm::dvec3(light.intensity_W_per_sr) * scale;
+  if (gltf_) {
+    const glm::vec3 f =
+        physics::gltfBrdf(hit.normal_world, w, toViewer, hit.albedo, hit.metallic, hit.roughness);
+    const double scale = static_cast<double>(profile) * cosX / (static_cast<double>(d) * d);
+    out.value = glm::dvec3(f) * glm::dvec3(light.intensity_W_per_sr) * scale;
+  } else {
+    const double scale = static_cast<double>(profile) * cosX / (static_cast<double>(d) * d) / kPi;
+    out.value = glm::dvec3(hit.albedo) * glm::dvec3(light.intensity_W_per_sr) * scale;
+  }
   out.path_m = d;
   out.valid = true;
   return out;
@@ -55,11 +66,22 @@ void PathIntegrator::renderPixel(int32_t x, int32_t y, PixelOutput& out,
   }
 }
 
-void PathIntegrator::traceContinuation(const SurfaceHit& hit, double toCamera_m, Pcg32& rng,
-                                       double* histogram, AxisLoss& outside) const {
-  // Lambertian f = albedo / pi and pdf = cos / pi: the throughput gains albedo.
+glm::dvec3 PathIntegrator::continuationWeight(const SurfaceHit& hit, const glm::vec3& toLight,
+                                              const glm::vec3& toViewer) const {
+  if (!gltf_) return glm::dvec3(hit.albedo);
+  // pdf = cos / pi: f cos / pdf = pi f, unbiased for any BRDF (noisy for glossy ones).
+  return kPi * glm::dvec3(physics::gltfBrdf(hit.normal_world, toLight, toViewer, hit.albedo,
+                                            hit.metallic, hit.roughness));
+}
+
+void PathIntegrator::traceContinuation(const SurfaceHit& hit, const glm::vec3& toCamera,
+                                       double toCamera_m, Pcg32& rng, double* histogram,
+                                       AxisLoss& outside) const {
+  // Cosine-sampled directions, pdf = cos / pi: the throughput gains f cos / pdf
+  // (albedo for a Lambertian surface).
   SurfaceHit current = hit;
-  glm::dvec3 throughput(hit.albedo);
+  glm::vec3 toViewer = toCamera;
+  glm::dvec3 throughput(1.0);
   double fromCamera_m = toCamera_m;
   for (int32_t depth = 2; depth <= bounces_; ++depth) {
     const float u1 = rng.nextFloat();
@@ -68,8 +90,10 @@ void PathIntegrator::traceContinuation(const SurfaceHit& hit, double toCamera_m,
     if (glm::dot(wi, current.geometric_world) <= 0.0f) break;  // below the true surface
     const std::optional<SurfaceHit> next = scene_.intersect(scene_.offsetOrigin(current, wi), wi);
     if (!next) break;
+    throughput *= continuationWeight(current, wi, toViewer);
+    toViewer = -wi;
     fromCamera_m += glm::length(next->position_world - current.position_world);
-    const Radiance reflected = lightReflectedAt(*next);
+    const Radiance reflected = lightReflectedAt(*next, toViewer);
     if (reflected.valid) {
       const glm::dvec3 value = throughput * reflected.value;
       const int32_t b = binOfPath(reflected.path_m + fromCamera_m);
@@ -80,7 +104,6 @@ void PathIntegrator::traceContinuation(const SurfaceHit& hit, double toCamera_m,
         for (int c = 0; c < kChannels; ++c) bin[c] += value[c];
       }
     }
-    throughput *= glm::dvec3(next->albedo);
     current = *next;
   }
 }
@@ -99,7 +122,8 @@ void PathIntegrator::renderPixelCentre(int32_t x, int32_t y, PixelOutput& out,
   const std::size_t floats = static_cast<std::size_t>(job_.settings.time.bins) * kChannels;
 
   // Bounce 1: exact, no sampling.
-  const Radiance direct = lightReflectedAt(hit);
+  const glm::vec3 toCamera = glm::normalize(eye - hit.position_world);
+  const Radiance direct = lightReflectedAt(hit, toCamera);
   if (direct.valid) {
     const int32_t b = binOfPath(direct.path_m + toCamera_m);
     if (b < 0) {
@@ -117,7 +141,7 @@ void PathIntegrator::renderPixelCentre(int32_t x, int32_t y, PixelOutput& out,
   Pcg32 rng = Pcg32::forUnit(job_.settings.seed,
                              static_cast<uint64_t>(y) * static_cast<uint64_t>(camera.width) + x);
   for (int32_t s = 0; s < samplesPerPixel_; ++s) {
-    traceContinuation(hit, toCamera_m, rng, scratch.data(), outside);
+    traceContinuation(hit, toCamera, toCamera_m, rng, scratch.data(), outside);
   }
   const double norm = 1.0 / samplesPerPixel_;
   for (std::size_t i = 0; i < floats; ++i) out.indirect[i] = static_cast<float>(scratch[i] * norm);
@@ -125,9 +149,9 @@ void PathIntegrator::renderPixelCentre(int32_t x, int32_t y, PixelOutput& out,
   out.offAxis.after += outside.after * norm;
 }
 
-void PathIntegrator::addDirect(const SurfaceHit& hit, double toCamera_m, double* histogram,
-                               AxisLoss& outside) const {
-  const Radiance direct = lightReflectedAt(hit);
+void PathIntegrator::addDirect(const SurfaceHit& hit, const glm::vec3& toCamera, double toCamera_m,
+                               double* histogram, AxisLoss& outside) const {
+  const Radiance direct = lightReflectedAt(hit, toCamera);
   if (!direct.valid) return;
   const int32_t b = binOfPath(direct.path_m + toCamera_m);
   if (b < 0) {
@@ -160,8 +184,9 @@ void PathIntegrator::renderPixelArea(int32_t x, int32_t y, PixelOutput& out,
     if (!hit) continue;  // a silhouette pixel: this part of it sees nothing
     const double toCamera_m =
         job_.settings.camera_unwarp ? 0.0 : glm::length(hit->position_world - eye);
-    addDirect(*hit, toCamera_m, direct, outside);
-    if (bounces_ >= 2) traceContinuation(*hit, toCamera_m, rng, indirect, outside);
+    const glm::vec3 toCamera = glm::normalize(eye - hit->position_world);
+    addDirect(*hit, toCamera, toCamera_m, direct, outside);
+    if (bounces_ >= 2) traceContinuation(*hit, toCamera, toCamera_m, rng, indirect, outside);
   }
   const double norm = 1.0 / samplesPerPixel_;
   for (std::size_t i = 0; i < floats; ++i) {

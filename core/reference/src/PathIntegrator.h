@@ -5,8 +5,8 @@
 #include <cstdint>
 #include <vector>
 
-#include "tofsim/reference/RayScene.h"
 #include "tofsim/capture/RenderJob.h"
+#include "tofsim/reference/RayScene.h"
 #include "tofsim/reference/ReferenceRenderer.h"
 #include "tofsim/util/Random.h"
 
@@ -34,20 +34,28 @@ class PathIntegrator {
     double path_m = 0.0;  ///< geometric distance light -> surface, metres
     bool valid = false;
   };
-  /// Radiance `hit` reflects towards its normal side straight from the light,
-  /// tested with one shadow ray; path_m is the light -> hit distance.
-  Radiance lightReflectedAt(const SurfaceHit& hit) const;
+  /// Radiance `hit` reflects towards `toViewer` (unit, on its normal side)
+  /// straight from the light, tested with one shadow ray; path_m is the
+  /// light -> hit distance. The BRDF is render.materials' (Lambertian: the
+  /// same for every toViewer).
+  Radiance lightReflectedAt(const SurfaceHit& hit, const glm::vec3& toViewer) const;
+  /// f(toLight, toViewer) cos / pdf of a cosine-sampled direction toLight:
+  /// albedo for a Lambertian surface, pi f for the glTF BRDF.
+  glm::dvec3 continuationWeight(const SurfaceHit& hit, const glm::vec3& toLight,
+                                const glm::vec3& toViewer) const;
   /// Point filter: one primary ray through the pixel centre, direct term exact.
   void renderPixelCentre(int32_t x, int32_t y, PixelOutput& out,
                          std::vector<double>& scratch) const;
   /// Box filter: every path starts at its own stratified sub-pixel point.
   void renderPixelArea(int32_t x, int32_t y, PixelOutput& out, std::vector<double>& scratch) const;
-  /// Adds the direct light reflected at `hit` (weight 1) to `histogram` (T x 3).
-  void addDirect(const SurfaceHit& hit, double toCamera_m, double* histogram,
-                 AxisLoss& outside) const;
-  /// One path's bounces 2..n from the primary hit, added to `histogram`.
-  void traceContinuation(const SurfaceHit& hit, double toCamera_m, Pcg32& rng, double* histogram,
-                         AxisLoss& outside) const;
+  /// Adds the direct light reflected at `hit` towards the camera (unit
+  /// toCamera, weight 1) to `histogram` (T x 3).
+  void addDirect(const SurfaceHit& hit, const glm::vec3& toCamera, double toCamera_m,
+                 double* histogram, AxisLoss& outside) const;
+  /// One path's bounces 2..n from the primary hit, seen from the unit
+  /// direction toCamera, added to `histogram`.
+  void traceContinuation(const SurfaceHit& hit, const glm::vec3& toCamera, double toCamera_m,
+                         Pcg32& rng, double* histogram, AxisLoss& outside) const;
   /// Time bin of a geometric path length (metres, before the index of
   /// refraction), -1 when it falls off the axis. Same rule as TimeAxis::binOf.
   int32_t binOfPath(double path_m) const;
@@ -57,6 +65,7 @@ class PathIntegrator {
   int32_t bounces_;
   int32_t samplesPerPixel_;
   PixelFilter pixelFilter_;
+  bool gltf_;  ///< render.materials: gltf
 };
 
 }  // namespace tofsim::reference

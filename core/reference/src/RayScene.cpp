@@ -109,6 +109,9 @@ std::optional<SurfaceHit> RayScene::intersect(const glm::vec3& origin, const glm
     uv = w * mesh.uvs[tri[0]] + u * mesh.uvs[tri[1]] + v * mesh.uvs[tri[2]];
   }
   hit.albedo = scene::materialAlbedo(scene_, mesh.material, uv);
+  const glm::vec2 metallicRoughness = scene::materialMetallicRoughness(scene_, mesh.material, uv);
+  hit.metallic = metallicRoughness.x;
+  hit.roughness = metallicRoughness.y;
   return hit;
 }
 

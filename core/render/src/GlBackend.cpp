@@ -79,7 +79,8 @@ struct GlBackend::Passes {
         bounds(job),
         gpuScene(*job.scene),
         samplesPerSide(job.settings.pixel_samples),
-        gbuffer(job.camera.width * samplesPerSide, job.camera.height * samplesPerSide),
+        gbuffer(job.camera.width * samplesPerSide, job.camera.height * samplesPerSide,
+                job.settings.materials == capture::MaterialModel::Gltf),
         shadowMap(job.settings.shadow_map_resolution, job.light.position_world, bounds.lo,
                   bounds.hi) {}
 
@@ -185,10 +186,14 @@ void GlBackend::setVpls(const std::vector<ir::Vpl>& vpls) {
 
 std::size_t GlBackend::fixedBytes() const {
   const Passes& p = passes();
-  // The G-buffer: four RGBA32F-sized targets per sample.
+  // The G-buffer: four RGBA32F-sized targets per sample, and an RG32F one
+  // with render.materials: gltf.
   const auto samples = static_cast<std::size_t>(p.samplesPerSide) * p.samplesPerSide;
-  std::size_t bytes =
-      p.gpuScene.bytes() + p.pixelCount() * samples * 4 * 4 * sizeof(float) + p.shadowMap.bytes();
+  const std::size_t floatsPerSample =
+      4 * 4 + (p.job.settings.materials == capture::MaterialModel::Gltf ? 2 : 0);
+  std::size_t bytes = p.gpuScene.bytes() +
+                      p.pixelCount() * samples * floatsPerSample * sizeof(float) +
+                      p.shadowMap.bytes();
   if (p.indirectLight) bytes += p.indirectLight->fixedBytes();
   return bytes;
 }
@@ -241,6 +246,9 @@ void GlBackend::gatherDirect() {
   p.gbuffer.position.bindUnit(gpu::kGPosition);
   p.gbuffer.normal.bindUnit(gpu::kGNormal);
   p.gbuffer.albedo.bindUnit(gpu::kGAlbedo);
+  if (p.job.settings.materials == capture::MaterialModel::Gltf) {
+    p.gbuffer.metallicRoughness.bindUnit(gpu::kGMetallicRoughness);
+  }
   p.directGather.use();
   p.shadowMap.bind(p.directGather);
   p.directGather.set("uFirstPixel", static_cast<unsigned>(p.firstPixel));

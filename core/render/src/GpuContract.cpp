@@ -24,12 +24,15 @@ std::vector<std::pair<std::string, std::string>> shaderDefines() {
       {"TOFSIM_UNIT_G_ALBEDO", n(kGAlbedo)},
       {"TOFSIM_UNIT_SHADOW_MAP", n(kShadowMap)},
       {"TOFSIM_UNIT_ALBEDO_TEXTURE", n(kAlbedoTexture)},
+      {"TOFSIM_UNIT_G_METALLIC_ROUGHNESS", n(kGMetallicRoughness)},
+      {"TOFSIM_UNIT_METALLIC_ROUGHNESS_TEXTURE", n(kMetallicRoughnessTexture)},
       {"TOFSIM_ATTRIB_POSITION", n(kPositionAttribute)},
       {"TOFSIM_ATTRIB_NORMAL", n(kNormalAttribute)},
       {"TOFSIM_ATTRIB_UV", n(kUvAttribute)},
       {"TOFSIM_OUT_POSITION", n(kOutPosition)},
       {"TOFSIM_OUT_NORMAL", n(kOutNormal)},
       {"TOFSIM_OUT_ALBEDO", n(kOutAlbedo)},
+      {"TOFSIM_OUT_METALLIC_ROUGHNESS", n(kOutMetallicRoughness)},
   };
 }
 
@@ -38,6 +41,7 @@ std::vector<std::pair<std::string, std::string>> gatherDefines(const capture::Re
       {"PIXEL_SAMPLES", std::to_string(s.pixel_samples)}};
   if (s.pixel_footprint) defines.emplace_back("PIXEL_FOOTPRINT", "1");
   if (s.pixel_footprint && s.indirect.vpl_footprint) defines.emplace_back("VPL_FOOTPRINT", "1");
+  if (s.materials == capture::MaterialModel::Gltf) defines.emplace_back("GLTF_MATERIALS", "1");
   return defines;
 }
 

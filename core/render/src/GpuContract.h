@@ -43,11 +43,13 @@ enum StorageBinding : uint32_t {
 
 /// Texture units (TOFSIM_UNIT_...).
 enum TextureUnit : uint32_t {
-  kGPosition,      ///< camera G-buffer: world position
-  kGNormal,        ///< camera G-buffer: normal
-  kGAlbedo,        ///< camera G-buffer: albedo
-  kShadowMap,      ///< the light's distance cube (light.glsl)
-  kAlbedoTexture,  ///< a material's base-colour texture (gbuffer.frag)
+  kGPosition,                 ///< camera G-buffer: world position
+  kGNormal,                   ///< camera G-buffer: normal
+  kGAlbedo,                   ///< camera G-buffer: albedo
+  kShadowMap,                 ///< the light's distance cube (light.glsl)
+  kAlbedoTexture,             ///< a material's base-colour texture (gbuffer.frag)
+  kGMetallicRoughness,        ///< camera G-buffer: metallic, roughness (render.materials: gltf)
+  kMetallicRoughnessTexture,  ///< a material's metallic-roughness texture (gbuffer.frag)
 };
 
 /// Vertex attribute locations of gbuffer.vert (TOFSIM_ATTRIB_...).
@@ -55,15 +57,16 @@ enum VertexAttribute : uint32_t { kPositionAttribute, kNormalAttribute, kUvAttri
 
 /// Fragment outputs of gbuffer.frag (TOFSIM_OUT_...); distance.frag writes
 /// kOutPosition's location, its only output.
-enum FragmentOutput : int { kOutPosition, kOutNormal, kOutAlbedo };
+enum FragmentOutput : int { kOutPosition, kOutNormal, kOutAlbedo, kOutMetallicRoughness };
 
 /// The contract as (TOFSIM_NAME, value) defines.
 std::vector<std::pair<std::string, std::string>> shaderDefines();
 
 /// The gathers' variant of `settings` (direct_gather.comp, indirect_gather.comp):
-/// PIXEL_SAMPLES (render.pixel_samples), PIXEL_FOOTPRINT, VPL_FOOTPRINT. As
-/// defines, so that render.pixel_footprint: false compiles the point-sampling
-/// shader of before.
+/// PIXEL_SAMPLES (render.pixel_samples), PIXEL_FOOTPRINT, VPL_FOOTPRINT,
+/// GLTF_MATERIALS (render.materials: gltf). As defines, so that
+/// render.pixel_footprint: false compiles the point-sampling shader of before
+/// and render.materials: lambertian the Lambertian one.
 std::vector<std::pair<std::string, std::string>> gatherDefines(
     const capture::RenderSettings& settings);
 

@@ -55,7 +55,9 @@ GpuScene::GpuScene(const scene::Scene& scene) : scene_(scene) {
 void GpuScene::draw(const gl::Program& program, Materials materials) const {
   vertexArray_.bind();
   for (const DrawRange& range : ranges_) {
-    if (materials == Materials::Set) setMaterial(program, range.material);
+    if (materials != Materials::Skip) {
+      setMaterial(program, range.material, materials == Materials::SetGltf);
+    }
     glDrawElementsBaseVertex(GL_TRIANGLES, range.indexCount, GL_UNSIGNED_INT,
                              reinterpret_cast<const void*>(range.indexOffsetBytes),
                              range.baseVertex);
@@ -63,13 +65,21 @@ void GpuScene::draw(const gl::Program& program, Materials materials) const {
   TOFSIM_GL_CHECK("GpuScene::draw");
 }
 
-void GpuScene::setMaterial(const gl::Program& program, int32_t index) const {
+void GpuScene::setMaterial(const gl::Program& program, int32_t index, bool gltf) const {
   const scene::Material& material = scene_.materials.at(static_cast<std::size_t>(index));
   program.set("uAlbedoFactor", material.albedo);
   const bool textured = material.albedoTexture >= 0;
   program.set("uHasAlbedoTexture", textured ? 1 : 0);
   if (textured) {
     textures_.at(static_cast<std::size_t>(material.albedoTexture)).bindUnit(gpu::kAlbedoTexture);
+  }
+  if (!gltf) return;
+  program.set("uMetallicRoughnessFactor", glm::vec2(material.metallic, material.roughness));
+  const bool mrTextured = material.metallicRoughnessTexture >= 0;
+  program.set("uHasMetallicRoughnessTexture", mrTextured ? 1 : 0);
+  if (mrTextured) {
+    textures_.at(static_cast<std::size_t>(material.metallicRoughnessTexture))
+        .bindUnit(gpu::kMetallicRoughnessTexture);
   }
 }
 

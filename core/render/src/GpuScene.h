@@ -16,14 +16,15 @@ class GpuScene {
  public:
   explicit GpuScene(const scene::Scene& scene);
   /// Whether a draw sets the material uniforms (uAlbedoFactor,
-  /// uHasAlbedoTexture) and texture per mesh: only programs that declare them.
-  enum class Materials { Set, Skip };
+  /// uHasAlbedoTexture) and texture per mesh: only programs that declare them;
+  /// SetGltf also the metallic-roughness ones (gbuffer.frag's GLTF_MATERIALS).
+  enum class Materials { Set, SetGltf, Skip };
   /// Draws every mesh.
   void draw(const gl::Program& program, Materials materials) const;
   std::size_t bytes() const { return bytes_; }
 
  private:
-  void setMaterial(const gl::Program& program, int32_t index) const;
+  void setMaterial(const gl::Program& program, int32_t index, bool gltf) const;
   struct DrawRange {
     GLsizei indexCount = 0;
     std::size_t indexOffsetBytes = 0;

@@ -9,16 +9,29 @@
 
 namespace tofsim::render {
 
-SurfaceMaps::SurfaceMaps(int width, int height)
+namespace {
+std::vector<std::pair<std::string, std::string>> gbufferDefines(bool withMetallicRoughness) {
+  if (!withMetallicRoughness) return {};
+  return {{"GLTF_MATERIALS", "1"}};
+}
+}  // namespace
+
+SurfaceMaps::SurfaceMaps(int width, int height, bool withMetallicRoughness)
     : position(gl::Texture::create2D(GL_RGBA32F, width, height)),
       normal(gl::Texture::create2D(GL_RGBA32F, width, height)),
       albedo(gl::Texture::create2D(GL_RGBA32F, width, height)),
       depth(gl::Texture::create2D(GL_DEPTH_COMPONENT32F, width, height)),
+      metallicRoughness(withMetallicRoughness ? gl::Texture::create2D(GL_RG32F, width, height)
+                                              : gl::Texture()),
       program_(gpu::makeProgram(
-          {{GL_VERTEX_SHADER, "gbuffer.vert"}, {GL_FRAGMENT_SHADER, "gbuffer.frag"}})) {
+          {{GL_VERTEX_SHADER, "gbuffer.vert"}, {GL_FRAGMENT_SHADER, "gbuffer.frag"}},
+          gbufferDefines(withMetallicRoughness))),
+      withMetallicRoughness_(withMetallicRoughness) {
   framebuffer_.attachColor(gpu::kOutPosition, position);
   framebuffer_.attachColor(gpu::kOutNormal, normal);
   framebuffer_.attachColor(gpu::kOutAlbedo, albedo);
+  if (withMetallicRoughness)
+    framebuffer_.attachColor(gpu::kOutMetallicRoughness, metallicRoughness);
   framebuffer_.attachDepth(depth);
   framebuffer_.finish("SurfaceMaps framebuffer");
 }
@@ -28,7 +41,9 @@ void SurfaceMaps::render(const GpuScene& scene, const glm::mat4& viewProjection,
   framebuffer_.bind();
   glViewport(0, 0, position.width(), position.height());
   const float zero[4] = {0.0f, 0.0f, 0.0f, 0.0f};
-  for (GLint i = 0; i < 3; ++i) glClearNamedFramebufferfv(framebuffer_.id(), GL_COLOR, i, zero);
+  const GLint colours = withMetallicRoughness_ ? 4 : 3;
+  for (GLint i = 0; i < colours; ++i)
+    glClearNamedFramebufferfv(framebuffer_.id(), GL_COLOR, i, zero);
   const float one = 1.0f;
   glClearNamedFramebufferfv(framebuffer_.id(), GL_DEPTH, 0, &one);
   glEnable(GL_DEPTH_TEST);
@@ -37,7 +52,8 @@ void SurfaceMaps::render(const GpuScene& scene, const glm::mat4& viewProjection,
   program_.use();
   program_.set("uViewProjection", viewProjection);
   program_.set("uViewpoint_world", viewpoint_world);
-  scene.draw(program_, GpuScene::Materials::Set);
+  scene.draw(program_,
+             withMetallicRoughness_ ? GpuScene::Materials::SetGltf : GpuScene::Materials::Set);
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   TOFSIM_GL_CHECK("SurfaceMaps::render");
 }

@@ -1,7 +1,8 @@
 #pragma once
 // Rasterized surface attributes seen from one viewpoint: world position,
-// facing normal and albedo per texel. The camera's G-buffer and the light's
-// reflective shadow map are both SurfaceMaps.
+// facing normal and albedo per texel, and (metallic, roughness) where the
+// glTF BRDF needs it. The camera's G-buffer and the light's reflective shadow
+// map are both SurfaceMaps.
 
 #include <glm/glm.hpp>
 
@@ -18,8 +19,11 @@ struct SurfaceMaps {
   gl::Texture normal;    ///< RGBA32F
   gl::Texture albedo;    ///< RGBA32F
   gl::Texture depth;     ///< DEPTH32F
+  /// RG32F: metallic, roughness; only with withMetallicRoughness (else id 0).
+  gl::Texture metallicRoughness;
 
-  SurfaceMaps(int width, int height);
+  /// withMetallicRoughness: the camera G-buffer of render.materials: gltf.
+  SurfaceMaps(int width, int height, bool withMetallicRoughness = false);
   /// Rasterizes the scene with `viewProjection` from `viewpoint_world`.
   void render(const GpuScene& scene, const glm::mat4& viewProjection,
               const glm::vec3& viewpoint_world);
@@ -27,6 +31,7 @@ struct SurfaceMaps {
  private:
   gl::Framebuffer framebuffer_;
   gl::Program program_;
+  bool withMetallicRoughness_;
 };
 
 /// Near and far planes that enclose the scene's bounds seen from `eye`.

@@ -3,10 +3,9 @@
 // TinyGltfImport.cpp sees tinygltf; the rest of the loader reads this.
 // Indices are glTF indices (-1 = absent).
 
-#include <glm/glm.hpp>
-
 #include <cstddef>
 #include <cstdint>
+#include <glm/glm.hpp>
 #include <optional>
 #include <string>
 #include <vector>
@@ -80,6 +79,10 @@ struct MaterialDesc {
   glm::dvec4 baseColorFactor{1.0};
   int baseColorImage = -1;  ///< glTF image index of baseColorTexture's source
   int baseColorTexCoord = 0;
+  double metallicFactor = 1.0;      ///< glTF default
+  double roughnessFactor = 1.0;     ///< glTF default
+  int metallicRoughnessImage = -1;  ///< glTF image index of metallicRoughnessTexture's source
+  int metallicRoughnessTexCoord = 0;
   bool metallic = false;
   bool emissive = false;
   bool transmissive = false;

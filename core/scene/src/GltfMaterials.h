@@ -1,7 +1,8 @@
 #pragma once
-// glTF materials and base-colour images to Lambertian Materials and linear
-// Textures. Metallic, emissive and transmissive properties are not used for
-// shading (the renderer is diffuse); they are counted in the LoadReport.
+// glTF materials and their base-colour and metallic-roughness images to
+// Materials and linear Textures. Metallic-roughness is shaded only with
+// render.materials: gltf; emissive and transmissive properties are never used
+// for shading; all three are counted in the LoadReport.
 
 #include "GltfDocument.h"
 #include "tofsim/scene/GltfLoader.h"
@@ -9,7 +10,8 @@
 namespace tofsim::scene::detail {
 
 /// Fills scene.materials (one per glTF material, same index) and
-/// scene.textures (one per base-colour image used).
+/// scene.textures (one per image and encoding used: sRGB base colour, linear
+/// metallic-roughness).
 void convertMaterials(const GltfDocument& doc, Scene& scene, LoadReport& report);
 
 /// The material of primitives that name none: "default", albedo 0.8.

@@ -41,4 +41,13 @@ glm::vec3 materialAlbedo(const Scene& scene, int32_t material, const glm::vec2& 
          sampleBilinear(scene.textures.at(static_cast<std::size_t>(m.albedoTexture)), uv);
 }
 
+glm::vec2 materialMetallicRoughness(const Scene& scene, int32_t material, const glm::vec2& uv) {
+  const Material& m = scene.materials.at(static_cast<std::size_t>(material));
+  const glm::vec2 factors(m.metallic, m.roughness);
+  if (m.metallicRoughnessTexture < 0) return factors;
+  const glm::vec3 t =
+      sampleBilinear(scene.textures.at(static_cast<std::size_t>(m.metallicRoughnessTexture)), uv);
+  return factors * glm::vec2(t.b, t.g);
+}
+
 }  // namespace tofsim::scene

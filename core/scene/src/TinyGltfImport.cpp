@@ -65,7 +65,8 @@ Primitive convert(const tinygltf::Primitive& p) {
     // coordinate set (std::stoul would throw on it: a crash found by fuzzing).
     const std::string suffix = name.rfind("TEXCOORD_", 0) == 0 ? name.substr(9) : "";
     if (!suffix.empty() && suffix.size() <= 2 &&
-        std::all_of(suffix.begin(), suffix.end(), [](unsigned char c) { return std::isdigit(c); })) {
+        std::all_of(suffix.begin(), suffix.end(),
+                    [](unsigned char c) { return std::isdigit(c); })) {
       const std::size_t set = std::stoul(suffix);
       if (set < 16) {
         if (out.texcoords.size() <= set) out.texcoords.resize(set + 1, -1);
@@ -89,11 +90,18 @@ MaterialDesc convert(const tinygltf::Model& model, const tinygltf::Material& m) 
     out.baseColorImage = model.textures[tex].source;
     out.baseColorTexCoord = pbr.baseColorTexture.texCoord;
   }
+  out.metallicFactor = pbr.metallicFactor;
+  out.roughnessFactor = pbr.roughnessFactor;
+  const int mr = pbr.metallicRoughnessTexture.index;
+  if (mr >= 0 && mr < static_cast<int>(model.textures.size())) {
+    out.metallicRoughnessImage = model.textures[mr].source;
+    out.metallicRoughnessTexCoord = pbr.metallicRoughnessTexture.texCoord;
+  }
   // The metallic texture is multiplied by the factor, so the factor decides.
   out.metallic = pbr.metallicFactor > 0.0;
-  out.emissive = m.emissiveTexture.index >= 0 ||
-                 std::any_of(m.emissiveFactor.begin(), m.emissiveFactor.end(),
-                             [](double v) { return v != 0.0; });
+  out.emissive =
+      m.emissiveTexture.index >= 0 || std::any_of(m.emissiveFactor.begin(), m.emissiveFactor.end(),
+                                                  [](double v) { return v != 0.0; });
   out.transmissive = m.extensions.count("KHR_materials_transmission") > 0;
   return out;
 }
@@ -106,7 +114,8 @@ GltfDocument importGltf(const std::filesystem::path& path) {
   tinygltf::TinyGLTF parser;
   std::string err, warn;
   std::string ext = path.extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return std::tolower(c); });
   const bool ok = ext == ".glb" ? parser.LoadBinaryFromFile(&model, &err, &warn, file)
                                 : parser.LoadASCIIFromFile(&model, &err, &warn, file);
   if (!ok) throw InputError(FileLoc{file}, "", "cannot load glTF: " + trimmed(err));
@@ -118,8 +127,9 @@ GltfDocument importGltf(const std::filesystem::path& path) {
     tinygltf::Buffer& b = model.buffers[i];
     doc.buffers.push_back(std::move(b.data));
     const bool dataUri = b.uri.rfind("data:", 0) == 0;
-    doc.bufferNames.push_back(b.uri.empty() || dataUri ? "buffer[" + std::to_string(i) + "]"
-                                                       : "buffer[" + std::to_string(i) + "] '" + b.uri + "'");
+    doc.bufferNames.push_back(b.uri.empty() || dataUri
+                                  ? "buffer[" + std::to_string(i) + "]"
+                                  : "buffer[" + std::to_string(i) + "] '" + b.uri + "'");
   }
   for (const tinygltf::BufferView& v : model.bufferViews) {
     doc.bufferViews.push_back({v.buffer, v.byteOffset, v.byteLength, v.byteStride});
@@ -140,8 +150,8 @@ GltfDocument importGltf(const std::filesystem::path& path) {
   }
   for (const tinygltf::Camera& c : model.cameras) {
     const bool persp = c.type == "perspective";
-    doc.cameras.push_back({c.name, persp, persp ? c.perspective.yfov : 0.0,
-                           persp ? c.perspective.aspectRatio : 0.0});
+    doc.cameras.push_back(
+        {c.name, persp, persp ? c.perspective.yfov : 0.0, persp ? c.perspective.aspectRatio : 0.0});
   }
 
   if (!model.scenes.empty()) {

@@ -11,6 +11,12 @@ namespace tofsim::capture {
 
 enum class Visibility { Ism, Exact };
 
+/// How surfaces reflect (render.materials). Lambertian: albedo / pi for every
+/// material, the renderer of before. Gltf: the glTF metallic-roughness BRDF
+/// (shaders/gltf_brdf.glsl) in the direct light and the light the camera
+/// sees; VPLs, and the camera side of their contributions, stay Lambertian.
+enum class MaterialModel { Lambertian, Gltf };
+
 struct IndirectSettings {
   bool enabled = true;
   int32_t rsm_resolution = 32;    ///< RSM side; VPL count = rsm_resolution^2
@@ -45,6 +51,7 @@ struct RenderSettings {
   bool pixel_footprint = true;
   /// N x N stratified G-buffer samples per pixel, averaged.
   int32_t pixel_samples = 1;
+  MaterialModel materials = MaterialModel::Lambertian;
   IndirectSettings indirect;
 };
 

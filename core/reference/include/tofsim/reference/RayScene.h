@@ -1,7 +1,7 @@
 #pragma once
 // The scene's triangles in an Embree BVH, and what the path tracer needs to
 // know about a hit: position, normals facing the incoming ray (surfaces are
-// two-sided, as in the GL renderer) and albedo.
+// two-sided, as in the GL renderer), albedo and metallic-roughness.
 
 #include <embree3/rtcore.h>
 
@@ -18,6 +18,8 @@ struct SurfaceHit {
   glm::vec3 normal_world{0.0f};     ///< interpolated shading normal, facing the ray origin
   glm::vec3 geometric_world{0.0f};  ///< triangle normal, facing the ray origin
   glm::vec3 albedo{0.0f};
+  float metallic = 0.0f;   ///< with textures (scene::materialMetallicRoughness)
+  float roughness = 1.0f;  ///< perceptual, alpha = roughness^2
 };
 
 class RayScene {

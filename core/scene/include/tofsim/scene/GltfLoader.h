@@ -5,15 +5,18 @@
 // strips and fans become lists), POSITION, NORMAL, TEXCOORD_n, indices, the
 // node hierarchy of the default scene (world transforms baked into positions
 // and normals), perspective cameras, baseColorFactor.rgb x baseColorTexture
-// as Lambertian albedo. Accessors may be strided, normalized integers
+// as albedo, and metallicFactor, roughnessFactor, metallicRoughnessTexture
+// (shaded with render.materials: gltf). Accessors may be strided, normalized integers
 // (KHR_mesh_quantization) or sparse. Primitives without NORMAL get flat
 // normals (the glTF rule), one face normal per triangle.
 //
 // What is not used (counted in LoadReport so callers can warn): points and
-// lines, orthographic cameras, zero-area triangles, and the metallic,
-// emissive and transmissive parts of materials: tofsim's renderer is diffuse
-// and lights are point/spot lights configured separately, so those materials
-// render as their base colour. Morph targets, skins and animations are ignored.
+// lines, orthographic cameras, zero-area triangles, and the emissive and
+// transmissive parts of materials (lights are point/spot lights configured
+// separately): those materials render as their base colour. Metallic
+// materials are counted too: they render as diffuse base colour under the
+// default render.materials: lambertian. Morph targets, skins and animations
+// are ignored.
 //
 // Units: glTF metres; frame: glTF's right-handed, +Y up.
 
@@ -28,14 +31,14 @@ namespace tofsim::scene {
 
 /// What the loader skipped or changed, for the caller to report.
 struct LoadReport {
-  std::size_t skippedPrimitives = 0;     ///< POINTS, LINES, LINE_LOOP, LINE_STRIP
-  std::size_t degenerateTriangles = 0;   ///< zero-area triangles dropped
-  std::size_t flatNormalPrimitives = 0;  ///< primitives without NORMAL (flat normals made)
-  std::size_t metallicMaterials = 0;     ///< metallicFactor > 0 or a metallic texture
-  std::size_t emissiveMaterials = 0;     ///< emissiveFactor != 0 or an emissive texture
-  std::size_t transmissiveMaterials = 0; ///< KHR_materials_transmission
-  std::size_t orthographicCameras = 0;   ///< skipped
-  std::vector<std::string> warnings;     ///< tinygltf's warnings and the loader's own
+  std::size_t skippedPrimitives = 0;      ///< POINTS, LINES, LINE_LOOP, LINE_STRIP
+  std::size_t degenerateTriangles = 0;    ///< zero-area triangles dropped
+  std::size_t flatNormalPrimitives = 0;   ///< primitives without NORMAL (flat normals made)
+  std::size_t metallicMaterials = 0;      ///< metallicFactor > 0 or a metallic texture
+  std::size_t emissiveMaterials = 0;      ///< emissiveFactor != 0 or an emissive texture
+  std::size_t transmissiveMaterials = 0;  ///< KHR_materials_transmission
+  std::size_t orthographicCameras = 0;    ///< skipped
+  std::vector<std::string> warnings;      ///< tinygltf's warnings and the loader's own
 };
 
 /// Loads a .gltf or .glb. Throws tofsim::InputError naming the file (and the

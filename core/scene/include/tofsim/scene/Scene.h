@@ -1,17 +1,17 @@
 #pragma once
 // A scene ready to render: triangle meshes in world space (node transforms
-// already applied), diffuse materials and the cameras the file defined.
+// already applied), materials and the cameras the file defined.
 // Units are metres; the frame is glTF's (right-handed, +Y up).
 
-#include <glm/glm.hpp>
-
 #include <cstdint>
+#include <glm/glm.hpp>
 #include <string>
 #include <vector>
 
 namespace tofsim::scene {
 
-/// An RGB texture in linear radiometric units (sRGB decoded at load time).
+/// An RGB texture of linear values: radiometric for base colours (sRGB
+/// decoded at load time), as stored for metallic-roughness (glTF: linear).
 /// Row 0 is the top row of the image file; glTF uv (0,0) is its top-left.
 struct Texture {
   int32_t width = 0;
@@ -19,11 +19,19 @@ struct Texture {
   std::vector<float> rgb;  ///< width * height * 3 floats
 };
 
-/// Lambertian material. albedo = baseColorFactor.rgb x baseColorTexture.rgb.
+/// A glTF metallic-roughness material. albedo = baseColorFactor.rgb x
+/// baseColorTexture.rgb; metallic = metallicFactor x texture.b, roughness =
+/// roughnessFactor x texture.g. Renderers use albedo alone (Lambertian) unless
+/// render.materials is `gltf` (shaders/gltf_brdf.glsl). The defaults are
+/// those of a code-built diffuse surface (glTF's own are metallic 1,
+/// roughness 1; the loader fills in the file's).
 struct Material {
   std::string name;
   glm::vec3 albedo{0.8f};
-  int32_t albedoTexture = -1;  ///< index into Scene::textures, or -1
+  int32_t albedoTexture = -1;             ///< index into Scene::textures, or -1
+  float metallic = 0.0f;                  ///< in [0, 1]
+  float roughness = 1.0f;                 ///< perceptual roughness in [0, 1]; alpha = roughness^2
+  int32_t metallicRoughnessTexture = -1;  ///< index into Scene::textures (B metal, G rough), or -1
 };
 
 /// One triangle list with one material, in world space.
