@@ -10,6 +10,7 @@
 #include <cmath>
 #include <vector>
 
+#include "support/HistogramMetrics.h"
 #include "tofsim/capture/Camera.h"
 #include "tofsim/physics/FootprintBuffer.h"
 
@@ -97,19 +98,6 @@ std::vector<double> footprint(const GrazingScene& scene, int32_t px, int32_t py)
   return h;
 }
 
-double sum(const std::vector<double>& h) {
-  double s = 0.0;
-  for (double v : h) s += v;
-  return s;
-}
-
-double normalisedL1(const std::vector<double>& p, const std::vector<double>& q) {
-  const double sp = sum(p), sq = sum(q);
-  double l1 = 0.0;
-  for (std::size_t i = 0; i < p.size(); ++i) l1 += std::abs(p[i] / sp - q[i] / sq);
-  return l1;
-}
-
 // Camera height 0.5 m (the centre pixel 2.9 m away, ~60 bins per pixel) and
 // 2 m (11.5 m, ~250 bins, the dotted-floor case).
 class GrazingPlaneFootprint : public testing::TestWithParam<float> {};
@@ -123,36 +111,33 @@ TEST_P(GrazingPlaneFootprint, FirstOrderTrapezoidMatchesSubPixelQuadrature) {
       const std::vector<double> truth = quadrature(scene, px, py, 400);
       if (truth.empty()) continue;
       const std::vector<double> kernel = footprint(scene, px, py);
-      l1s.push_back(normalisedL1(kernel, truth));
-      energyErrors.push_back(std::abs(sum(kernel) / sum(truth) - 1.0));
+      l1s.push_back(test::normalisedL1(kernel, truth));
+      energyErrors.push_back(
+          std::abs(test::histogramSum(kernel) / test::histogramSum(truth) - 1.0));
       // Point sampling: everything in the centre's bin.
       std::vector<double> point(kBins, 0.0);
       const vec3 c = scene.camera.position_world;
       const vec3 dir = scene.camera.pixelDirection(px, py);
       const float path = 2.0f * glm::length(dir * (-c.y / dir.y));
       point[static_cast<std::size_t>(std::floor(path / kBinWidth_m))] = 1.0;
-      pointL1s.push_back(normalisedL1(point, truth));
+      pointL1s.push_back(test::normalisedL1(point, truth));
       int32_t occupied = 0;
       for (double v : truth) occupied += v > 0.0;
       widestBins = std::max(widestBins, static_cast<double>(occupied));
     }
   }
   ASSERT_GE(l1s.size(), 40u);
-  const auto median = [](std::vector<double> v) {
-    std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
-    return v[v.size() / 2];
-  };
-  const double medianL1 = median(l1s);
+  const double medianL1 = test::median(l1s);
   const double worstL1 = *std::max_element(l1s.begin(), l1s.end());
   const double worstEnergy = *std::max_element(energyErrors.begin(), energyErrors.end());
   std::printf(
       "%zu pixels, up to %.0f bins wide: median L1 %.4f (max %.4f), point sampling "
       "median L1 %.3f; energy within %.3f%%\n",
-      l1s.size(), widestBins, medianL1, worstL1, median(pointL1s), 100.0 * worstEnergy);
+      l1s.size(), widestBins, medianL1, worstL1, test::median(pointL1s), 100.0 * worstEnergy);
   EXPECT_LT(medianL1, 0.06);
   EXPECT_LT(worstL1, 0.2);
   EXPECT_LT(worstEnergy, 0.02);
-  EXPECT_GT(median(pointL1s), 1.5);  // the point-sampled pixel is almost disjoint
+  EXPECT_GT(test::median(pointL1s), 1.5);  // the point-sampled pixel is almost disjoint
 }
 
 INSTANTIATE_TEST_SUITE_P(CameraHeights, GrazingPlaneFootprint, testing::Values(0.5f, 2.0f));

@@ -13,6 +13,7 @@
 
 #include "support/AnalyticScenes.h"
 #include "support/ClosedForm.h"
+#include "support/HistogramMetrics.h"
 #include "support/TestBackends.h"
 #include "support/TestJobs.h"
 #include "tofsim/capture/VolumeCollector.h"
@@ -46,9 +47,9 @@ struct GrazingPlane {
     const double grazing = 10.0 * kPi / 180.0;
     job.scene = &scene;
     job.camera.position_world = {0.0f, 0.0f, 0.5f};
-    job.camera.look_at_world = job.camera.position_world +
-                               glm::vec3(0.0f, static_cast<float>(std::cos(grazing)),
-                                         -static_cast<float>(std::sin(grazing)));
+    job.camera.look_at_world =
+        job.camera.position_world + glm::vec3(0.0f, static_cast<float>(std::cos(grazing)),
+                                              -static_cast<float>(std::sin(grazing)));
     job.camera.up_world = {0.0f, 0.0f, 1.0f};
     job.camera.fov_y_deg = 40.0f;
     job.camera.width = job.camera.height = 64;
@@ -70,8 +71,8 @@ std::vector<double> quadrature(const RenderJob& job, int px, int py, int sub) {
     const glm::dvec3 d(job.camera.pixelDirection(px, py, offset));
     if (d.z >= 0.0) return false;
     x = c + d * (-c.z / d.z);
-    const double f = (2.0 * glm::length(x - c) / kSpeedOfLight_m_per_s - axis.start_s) /
-                     axis.bin_width_s;
+    const double f =
+        (2.0 * glm::length(x - c) / kSpeedOfLight_m_per_s - axis.start_s) / axis.bin_width_s;
     return f > 1.0 && f < axis.bins - 1.0 && std::abs(x.x) < 19.0 && std::abs(x.y) < 19.0;
   };
   glm::dvec3 x;
@@ -85,8 +86,7 @@ std::vector<double> quadrature(const RenderJob& job, int px, int py, int sub) {
       const glm::dvec3 toLight = c - x;
       const double r = glm::length(toLight);
       const double radiance = kAlbedo / kPi * kIntensity * (toLight.z / r) / (r * r);
-      const double f =
-          (2.0 * r / kSpeedOfLight_m_per_s - axis.start_s) / axis.bin_width_s;
+      const double f = (2.0 * r / kSpeedOfLight_m_per_s - axis.start_s) / axis.bin_width_s;
       h[static_cast<std::size_t>(std::floor(f))] += radiance / (double(sub) * sub);
     }
   }
@@ -97,24 +97,6 @@ std::vector<double> pixelHistogram(const TransientVolume& v, int px, int py) {
   std::vector<double> h(v.bins());
   for (int t = 0; t < v.bins(); ++t) h[t] = v.at(py, px, t, 0);
   return h;
-}
-
-double sum(const std::vector<double>& h) {
-  double s = 0.0;
-  for (double v : h) s += v;
-  return s;
-}
-
-double normalisedL1(const std::vector<double>& p, const std::vector<double>& q) {
-  const double sp = sum(p), sq = sum(q);
-  double l1 = 0.0;
-  for (std::size_t i = 0; i < p.size(); ++i) l1 += std::abs(p[i] / sp - q[i] / sq);
-  return l1;
-}
-
-double median(std::vector<double> v) {
-  std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
-  return v[v.size() / 2];
 }
 
 TEST_P(FootprintRenderGLTest, GrazingPlaneMatchesASubPixelQuadratureOfTheDirectTerm) {
@@ -128,22 +110,23 @@ TEST_P(FootprintRenderGLTest, GrazingPlaneMatchesASubPixelQuadratureOfTheDirectT
       const std::vector<double> truth = quadrature(s.job, px, py, 200);
       if (truth.empty()) continue;
       const std::vector<double> h = pixelHistogram(footprint.direct, px, py);
-      l1s.push_back(normalisedL1(h, truth));
-      pointL1s.push_back(normalisedL1(pixelHistogram(point.direct, px, py), truth));
-      energyErrors.push_back(std::abs(sum(h) / sum(truth) - 1.0));
+      l1s.push_back(test::normalisedL1(h, truth));
+      pointL1s.push_back(test::normalisedL1(pixelHistogram(point.direct, px, py), truth));
+      energyErrors.push_back(std::abs(test::histogramSum(h) / test::histogramSum(truth) - 1.0));
     }
   }
   ASSERT_GE(l1s.size(), 40u);
   const double worstEnergy = *std::max_element(energyErrors.begin(), energyErrors.end());
-  std::printf("%zu pixels: footprint median L1 %.4f (max %.4f), point pixels median L1 %.3f; "
-              "energy within %.3f%%\n",
-              l1s.size(), median(l1s), *std::max_element(l1s.begin(), l1s.end()),
-              median(pointL1s), 100.0 * worstEnergy);
+  std::printf(
+      "%zu pixels: footprint median L1 %.4f (max %.4f), point pixels median L1 %.3f; "
+      "energy within %.3f%%\n",
+      l1s.size(), test::median(l1s), *std::max_element(l1s.begin(), l1s.end()),
+      test::median(pointL1s), 100.0 * worstEnergy);
   // The first-order trapezoid's own error (tests/physics: median 0.02-0.03)
   // plus the renderer's float surface point.
-  EXPECT_LT(median(l1s), 0.06);
+  EXPECT_LT(test::median(l1s), 0.06);
   EXPECT_LT(worstEnergy, 0.02);
-  EXPECT_GT(median(pointL1s), 1.5);  // what the footprint fixes: almost disjoint
+  EXPECT_GT(test::median(pointL1s), 1.5);  // what the footprint fixes: almost disjoint
 }
 
 TEST_P(FootprintRenderGLTest, HeadOnPlaneKeepsThePeakBinAndPointSamplingsEnergy) {
@@ -208,15 +191,18 @@ TEST_P(FootprintRenderGLTest, SubPixelSamplesKeepTheQuadraturesShapeAndEnergy) {
     for (int px = 1; px < 24; px += 3) {
       const std::vector<double> truth = quadrature(s.job, px, py, 120);
       if (truth.empty()) continue;
-      l1Three.push_back(normalisedL1(pixelHistogram(three.direct, px, py), truth));
-      l1One.push_back(normalisedL1(pixelHistogram(one.direct, px, py), truth));
-      EXPECT_NEAR(sum(pixelHistogram(three.direct, px, py)) / sum(truth), 1.0, 0.01);
+      l1Three.push_back(test::normalisedL1(pixelHistogram(three.direct, px, py), truth));
+      l1One.push_back(test::normalisedL1(pixelHistogram(one.direct, px, py), truth));
+      EXPECT_NEAR(
+          test::histogramSum(pixelHistogram(three.direct, px, py)) / test::histogramSum(truth), 1.0,
+          0.01);
     }
   }
   ASSERT_GE(l1Three.size(), 20u);
-  std::printf("median L1: 1 sample %.4f, 3 x 3 samples %.4f\n", median(l1One), median(l1Three));
-  EXPECT_LT(median(l1Three), 0.06);
-  EXPECT_LE(median(l1Three), median(l1One) * 1.05);
+  std::printf("median L1: 1 sample %.4f, 3 x 3 samples %.4f\n", test::median(l1One),
+              test::median(l1Three));
+  EXPECT_LT(test::median(l1Three), 0.06);
+  EXPECT_LE(test::median(l1Three), test::median(l1One) * 1.05);
 }
 
 TOFSIM_ON_BOTH_BACKENDS(FootprintRenderGLTest);
