@@ -233,5 +233,39 @@ TEST_F(RunConfigTest, UnknownBackendIsALocatedError) {
   EXPECT_NE(e.find("vulkan"), std::string::npos) << e;
 }
 
+TEST_F(RunConfigTest, BounceComponentsUpToTheBouncesParseAndRoundTrip) {
+  const std::string yaml = std::string(kValid) +
+                           "render:\n  indirect:\n    bounces: 2\n"
+                           "output:\n  components: [bounce2, direct, bounce1, bounce2]\n";
+  const RunConfig c = loadRunConfig(write(yaml));
+  EXPECT_EQ(c.output.bounces, (std::vector<int32_t>{1, 2}));
+  EXPECT_TRUE(c.output.direct);
+  EXPECT_NE(effectiveConfigYaml(c).find("components: [direct, bounce1, bounce2]"),
+            std::string::npos)
+      << effectiveConfigYaml(c);
+  // One bounce (the default): bounce1 is the indirect light.
+  EXPECT_EQ(loadRunConfig(write(std::string(kValid) + "output:\n  components: [bounce1]\n"))
+                .output.bounces,
+            (std::vector<int32_t>{1}));
+}
+
+TEST_F(RunConfigTest, BounceComponentAboveTheBouncesIsALocatedError) {
+  const std::string e = errorOf(std::string(kValid) +
+                                "render:\n  indirect:\n    bounces: 2\n"
+                                "output:\n  components: [bounce1, bounce3]\n");
+  EXPECT_NE(e.find("test.yaml:21:25"), std::string::npos) << e;
+  EXPECT_NE(e.find("output.components[1]"), std::string::npos) << e;
+  EXPECT_NE(e.find("bounce3"), std::string::npos) << e;
+  EXPECT_NE(e.find("render.indirect.bounces: 2"), std::string::npos) << e;
+  for (const char* bad : {"bounce0", "bounce", "bounce01", "bounce1x"}) {
+    const std::string b = errorOf(std::string(kValid) + "output:\n  components: [" + bad + "]\n");
+    EXPECT_NE(b.find("output.components[0]"), std::string::npos) << bad << ": " << b;
+  }
+  const std::string r = errorOf(std::string(kValid) +
+                                "render:\n  renderer: reference\n"
+                                "output:\n  components: [bounce1]\n");
+  EXPECT_NE(r.find("render.renderer: ir"), std::string::npos) << r;
+}
+
 }  // namespace
 }  // namespace tofsim::config

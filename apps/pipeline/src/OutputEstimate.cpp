@@ -37,6 +37,10 @@ OutputEstimate estimateOutputs(const config::RunConfig& config) {
   if (out.transient) e.items.push_back({"transient.npy", volume, volumeKeys});
   if (out.direct) e.items.push_back({"direct.npy", volume, volumeKeys + ", output.components"});
   if (out.indirect) e.items.push_back({"indirect.npy", volume, volumeKeys + ", output.components"});
+  for (const int32_t k : out.bounces) {
+    e.items.push_back(
+        {"bounce" + std::to_string(k) + ".npy", volume, volumeKeys + ", output.components"});
+  }
   if (out.frames) e.items.push_back({"frames/*.exr", volume, volumeKeys + ", output.frames"});
   const std::uintmax_t picture = w * h * kChannels;
   const std::uintmax_t videoFrames = (bins + out.video_stride - 1) / out.video_stride;

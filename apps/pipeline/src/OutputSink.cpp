@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 
 #include "tofsim/capture/VolumeCollector.h"
 
@@ -37,6 +38,10 @@ OutputSink::OutputSink(const std::filesystem::path& directory, const config::Out
   if (output.indirect) {
     indirectFile_ = std::make_unique<io::NpyStreamWriter>(directory / "indirect.npy", shape);
   }
+  for (const int32_t k : output.bounces) {
+    const std::string name = "bounce" + std::to_string(k) + ".npy";
+    bounceFiles_.emplace_back(k, std::make_unique<io::NpyStreamWriter>(directory / name, shape));
+  }
   steady_.assign(static_cast<std::size_t>(width) * height * kChannels, 0.0);
   if (keepInMemory) volume_.emplace(width, height, axis, capture::defaultChannelNames(kChannels));
 }
@@ -57,6 +62,12 @@ void OutputSink::consume(const capture::Segment& segment) {
   if (total_) total_->append(scratch_.data(), floats);
   if (directFile_) directFile_->append(directScratch_.data(), floats);
   if (indirectFile_) indirectFile_->append(indirectScratch_.data(), floats);
+  for (const auto& [k, file] : bounceFiles_) {
+    const float* bounce = segment.component(capture::bounceComponent(k));
+    bounceScratch_.assign(bounce, bounce + floats);
+    zeroNonFinite(bounceScratch_.data(), floats);  // already counted in indirect's
+    file->append(bounceScratch_.data(), floats);
+  }
   for (std::size_t p = 0; p < segment.pixelCount; ++p) {
     double* out = &steady_[(segment.firstPixel + p) * kChannels];
     const float* in = &scratch_[p * pixelFloats];
@@ -75,6 +86,7 @@ void OutputSink::commit() {
   if (total_) total_->commit();
   if (directFile_) directFile_->commit();
   if (indirectFile_) indirectFile_->commit();
+  for (const auto& entry : bounceFiles_) entry.second->commit();
 }
 
 Image OutputSink::steady() const {

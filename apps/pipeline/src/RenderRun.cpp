@@ -175,6 +175,8 @@ void writeOutputs(const config::RunConfig& config, const capture::RenderJob& job
   if (out.transient) summary.files.push_back("transient.npy");
   if (out.direct) summary.files.push_back("direct.npy");
   if (out.indirect) summary.files.push_back("indirect.npy");
+  for (const int32_t k : out.bounces)
+    summary.files.push_back("bounce" + std::to_string(k) + ".npy");
   PlotRanges ranges(out.plot_ranges);
   if (out.steady) {
     const Image steady = sink.steady();

@@ -127,7 +127,7 @@ const ConfigKey kRunConfigKeys[] = {
     {"output.frames", "bool", "", "false", "-",
      "`frames/frame_NNNNN.exr`, one per time bin"},
     {"output.components", "list", "", "[]", "-",
-     "also write `direct` (`direct.npy`) and/or `indirect` (`indirect.npy`)"},
+     "also write `direct` (`direct.npy`), `indirect` (`indirect.npy`) and/or `bounce1` .. `bounceN` (`bounce<k>.npy`, the light of exactly k indirect bounces, k <= `render.indirect.bounces`, `renderer: ir` only; `indirect` = their sum exactly)"},
     {"output.video", "bool", "", "false", "-",
      "`transient.mp4`: light in flight, one frame per `video_stride` bins, time stamp in each frame"},
     {"output.video_tone_map", "string", "", "global", "-",

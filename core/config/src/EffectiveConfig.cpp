@@ -100,6 +100,7 @@ YAML::Node outputNode(const OutputConfig& o) {
   YAML::Node components(YAML::NodeType::Sequence);
   if (o.direct) components.push_back("direct");
   if (o.indirect) components.push_back("indirect");
+  for (const int32_t k : o.bounces) components.push_back("bounce" + std::to_string(k));
   components.SetStyle(YAML::EmitterStyle::Flow);
   n["components"] = components;
   YAML::Node ranges(YAML::NodeType::Map);

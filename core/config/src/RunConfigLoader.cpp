@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -205,7 +206,26 @@ void parseRender(const ConfigNode& node, RunConfig& out) {
   }
 }
 
-void parseOutput(const ConfigNode& node, OutputConfig& o) {
+// "bounce<k>" with 1 <= k <= the IR renderer's render.indirect.bounces.
+void parseBounceComponent(const ConfigNode& c, const std::string& name, const RunConfig& config,
+                          OutputConfig& o) {
+  const std::string digits = name.substr(6);
+  const bool number = !digits.empty() && digits.size() <= 2 && digits[0] != '0' &&
+                      digits.find_first_not_of("0123456789") == std::string::npos;
+  const int32_t bounces = config.render.indirect.bounces;
+  if (!number || std::stoi(digits) > bounces) {
+    c.fail("'" + name + "': bounce components are bounce1 .. bounce" + std::to_string(bounces) +
+           " (render.indirect.bounces: " + std::to_string(bounces) + ")");
+  }
+  if (config.renderer != RendererKind::InstantRadiosity) {
+    c.fail("'" + name + "': bounce components come from the IR renderer (render.renderer: ir)");
+  }
+  const int32_t k = std::stoi(digits);
+  if (std::find(o.bounces.begin(), o.bounces.end(), k) == o.bounces.end()) o.bounces.push_back(k);
+  std::sort(o.bounces.begin(), o.bounces.end());
+}
+
+void parseOutput(const ConfigNode& node, const RunConfig& config, OutputConfig& o) {
   o.directory = node.getString("directory", o.directory.string());
   o.transient = node.getBool("transient", o.transient);
   o.steady = node.getBool("steady", o.steady);
@@ -253,8 +273,10 @@ void parseOutput(const ConfigNode& node, OutputConfig& o) {
         o.direct = true;
       } else if (name == "indirect") {
         o.indirect = true;
+      } else if (name.rfind("bounce", 0) == 0) {
+        parseBounceComponent(c, name, config, o);
       } else {
-        c.fail("components are direct and indirect (got '" + name + "')");
+        c.fail("components are direct, indirect and bounce1 .. bounceN (got '" + name + "')");
       }
     }
   }
@@ -366,7 +388,7 @@ RunConfig loadRunConfigYaml(YAML::Node yaml, const std::filesystem::path& file,
   }
   if (const auto render = root.optionalChild("render")) parseRender(*render, config);
   checkVplCount(root, config);
-  if (const auto output = root.optionalChild("output")) parseOutput(*output, config.output);
+  if (const auto output = root.optionalChild("output")) parseOutput(*output, config, config.output);
   if (const auto list = root.optionalChild("sensors")) {
     // parseSensors reports unknown keys inside each sensor itself; the keys it
     // read are shared with `root`, so the check below neither repeats nor

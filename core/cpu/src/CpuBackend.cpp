@@ -346,19 +346,31 @@ void CpuBackend::gatherTile(std::size_t tile, std::size_t firstVpl, std::size_t 
   }
 }
 
+void CpuBackend::integrateIndirectFootprints() {
+  if (!job_.settings.pixel_footprint) return;
+  const std::size_t tiles = (pixelCount_ + kTilePixels - 1) / kTilePixels;
+  const std::size_t stride = static_cast<std::size_t>(job_.settings.time.bins) * kChannels;
+  parallelFor(tiles, threads_, [&](std::size_t tile) {
+    const std::size_t end = std::min(pixelCount_, (tile + 1) * kTilePixels);
+    for (std::size_t i = tile * kTilePixels; i < end; ++i) {
+      integratePixel(i, &indirect_[i * stride]);
+    }
+  });
+}
+
+void CpuBackend::takeIndirect(float* indirect) {
+  const std::size_t floats = pixelCount_ * job_.settings.time.bins * kChannels;
+  // integratePixel clears each footprint buffer it read, so the next bounce
+  // starts from zero there too.
+  integrateIndirectFootprints();
+  std::copy_n(indirect_.begin(), floats, indirect);
+  std::fill_n(indirect_.begin(), floats, 0.0f);
+}
+
 void CpuBackend::readSegment(float* direct, float* indirect, AxisLoss& offAxis) {
   const std::size_t floats = pixelCount_ * job_.settings.time.bins * kChannels;
-  if (job_.settings.pixel_footprint) {
-    // The indirect gathers' wide kernels, after every batch: one sum per pixel.
-    const std::size_t tiles = (pixelCount_ + kTilePixels - 1) / kTilePixels;
-    const std::size_t stride = static_cast<std::size_t>(job_.settings.time.bins) * kChannels;
-    parallelFor(tiles, threads_, [&](std::size_t tile) {
-      const std::size_t end = std::min(pixelCount_, (tile + 1) * kTilePixels);
-      for (std::size_t i = tile * kTilePixels; i < end; ++i) {
-        integratePixel(i, &indirect_[i * stride]);
-      }
-    });
-  }
+  // The indirect gathers' wide kernels, after every batch: one sum per pixel.
+  integrateIndirectFootprints();
   std::copy_n(direct_.begin(), floats, direct);
   std::copy_n(indirect_.begin(), floats, indirect);
   for (std::size_t i = 0; i < pixelCount_; ++i) {

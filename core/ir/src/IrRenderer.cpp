@@ -1,5 +1,6 @@
 #include "tofsim/ir/IrRenderer.h"
 
+#include <algorithm>
 #include <chrono>
 
 #include "JobValidation.h"
@@ -27,43 +28,115 @@ Image depthFromPositions(const std::vector<float>& positions, const Camera& came
   return depth;
 }
 
+// One gatherIndirect: VPLs [first, first + count), all of bounce `bounce`
+// (0-based) and of the memory plan's visibility batch `batch`.
+struct GatherStep {
+  std::size_t first = 0;
+  std::size_t count = 0;
+  std::size_t bounce = 0;
+  std::size_t batch = 0;
+};
+
+// The memory plan's visibility batches (vplsPerBatch VPLs each, in VPL
+// order), each cut where a bounce ends, so each bounce's light can be read
+// out alone while every batch is still built once per segment (once per
+// render when it is the only one). With one bounce the steps are the batches.
+std::vector<GatherStep> planGathers(const BouncedVpls& bounced, std::size_t vplsPerBatch) {
+  std::vector<GatherStep> steps;
+  if (vplsPerBatch == 0) return steps;  // no VPLs
+  for (std::size_t k = 0; k + 1 < bounced.firstOfBounce.size(); ++k) {
+    const std::size_t end = bounced.firstOfBounce[k + 1];
+    for (std::size_t first = bounced.firstOfBounce[k]; first < end;) {
+      const std::size_t batch = first / vplsPerBatch;
+      const std::size_t stop = std::min(end, (batch + 1) * vplsPerBatch);
+      steps.push_back({first, stop - first, k, batch});
+      first = stop;
+    }
+  }
+  return steps;
+}
+
 // One segment: the direct gather, then every VPL batch in increasing order
 // (building its visibility unless it is still resident), then the read-back.
+// With several bounces, each bounce's light is read out after its batches
+// (buffers.components[2 + k] for bounce k + 1) and indirect is their float
+// sum in bounce order, so indirect = sum of the bounces exactly.
 class SegmentPasses {
  public:
   SegmentPasses(IrBackend& backend, const MemoryPlan& plan, std::size_t vplCount,
+                std::size_t floatsPerPixel, std::vector<GatherStep> steps, std::size_t bounces,
                 const ProgressCallback& progress, AxisLoss& offAxis)
       : backend_(backend),
         plan_(plan),
         vplCount_(vplCount),
+        floatsPerPixel_(floatsPerPixel),
+        steps_(std::move(steps)),
+        bounces_(bounces),
         progress_(progress),
         offAxis_(offAxis) {}
 
   void operator()(const SegmentBuffers& buffers) {
-    const std::size_t workUnits = plan_.segments.segmentCount * (1 + plan_.batchCount);
-    std::size_t done = buffers.index * (1 + plan_.batchCount);
+    const std::size_t workUnits = plan_.segments.segmentCount * (1 + steps_.size());
+    std::size_t done = buffers.index * (1 + steps_.size());
     backend_.beginSegment(buffers.pixels.first, buffers.pixels.count);
     backend_.gatherDirect();
     if (progress_) progress_(++done, workUnits, "segment/VPL-batch passes");
-    for (std::size_t b = 0; b < plan_.batchCount; ++b) {
-      const std::size_t first = b * plan_.vplsPerBatch;
-      const std::size_t count = std::min(plan_.vplsPerBatch, vplCount_ - first);
-      // Every segment needs every batch; a single batch is built once and kept.
-      if (residentBatch_ != b) backend_.buildVisibility(first, count);
-      residentBatch_ = b;
-      backend_.gatherIndirect(first, count);
-      if (progress_) progress_(++done, workUnits, "segment/VPL-batch passes");
+    const bool resolved = bounces_ > 1;
+    std::size_t b = 0;
+    for (std::size_t k = 0; k < bounces_; ++k) {
+      for (; b < steps_.size() && steps_[b].bounce == k; ++b) {
+        const GatherStep& step = steps_[b];
+        // Every segment needs every batch; a single batch is built once and kept.
+        if (residentBatch_ != step.batch) {
+          const std::size_t first = step.batch * plan_.vplsPerBatch;
+          backend_.buildVisibility(first, std::min(plan_.vplsPerBatch, vplCount_ - first));
+        }
+        residentBatch_ = step.batch;
+        backend_.gatherIndirect(step.first, step.count);
+        if (progress_) progress_(++done, workUnits, "segment/VPL-batch passes");
+      }
+      if (resolved && k + 1 < bounces_) backend_.takeIndirect(buffers.components[2 + k]);
     }
-    backend_.readSegment(buffers.components[0], buffers.components[1], offAxis_);
+    float* lastIndirect = buffers.components[resolved ? 1 + bounces_ : 1];
+    backend_.readSegment(buffers.components[0], lastIndirect, offAxis_);
+    if (resolved) sumBounces(buffers);
   }
 
  private:
+  void sumBounces(const SegmentBuffers& buffers) const {
+    const std::size_t floats = buffers.pixels.count * floatsPerPixel_;
+    float* indirect = buffers.components[1];
+    std::copy_n(buffers.components[2], floats, indirect);
+    for (std::size_t k = 1; k < bounces_; ++k) {
+      const float* bounce = buffers.components[2 + k];
+      for (std::size_t i = 0; i < floats; ++i) indirect[i] += bounce[i];
+    }
+  }
+
   IrBackend& backend_;
   const MemoryPlan& plan_;
   std::size_t vplCount_;
+  std::size_t floatsPerPixel_;  ///< bins * kChannels
+  std::vector<GatherStep> steps_;
+  std::size_t bounces_;
   const ProgressCallback& progress_;
   AxisLoss& offAxis_;
   std::size_t residentBatch_ = static_cast<std::size_t>(-1);
+};
+
+// With one bounce the indirect light is bounce 1's: the segment names it
+// twice ("bounce1" = "indirect") rather than copying it.
+class SingleBounceAlias : public SegmentSink {
+ public:
+  explicit SingleBounceAlias(SegmentSink& next) : next_(next) {}
+  void consume(const Segment& segment) override {
+    Segment aliased = segment;
+    aliased.components.push_back({bounceComponent(1), segment.component(kIndirect)});
+    next_.consume(aliased);
+  }
+
+ private:
+  SegmentSink& next_;
 };
 
 }  // namespace
@@ -102,9 +175,21 @@ RenderResult IrRenderer::render(const RenderJob& job, SegmentSink& sink,
   backend.allocate(plan.segments.pixelsPerSegment, plan.vplsPerBatch);
 
   const DirectLightView lightView = directLightView(job, positions);
-  SegmentPasses passes(backend, plan, vpls.size(), progress, result.offAxis);
-  streamSegments(plan.segments, job.settings.time, {kDirect, kIndirect}, lightView, sink,
-                 result.offAxis, std::ref(passes));
+  const auto bounces = static_cast<std::size_t>(bounced.bounces());
+  SegmentPasses passes(backend, plan, vpls.size(),
+                       static_cast<std::size_t>(job.settings.time.bins) * kChannels,
+                       planGathers(bounced, plan.vplsPerBatch), bounces, progress, result.offAxis);
+  std::vector<std::string_view> names = {kDirect, kIndirect};
+  if (bounces > 1) {
+    for (std::size_t k = 1; k <= bounces; ++k)
+      names.push_back(bounceComponent(static_cast<int32_t>(k)));
+    streamSegments(plan.segments, job.settings.time, names, lightView, sink, result.offAxis,
+                   std::ref(passes));
+  } else {
+    SingleBounceAlias aliased(sink);
+    streamSegments(plan.segments, job.settings.time, names, lightView, aliased, result.offAxis,
+                   std::ref(passes));
+  }
   result.seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   return result;

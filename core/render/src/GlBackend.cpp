@@ -270,6 +270,20 @@ void GlBackend::gatherIndirect(std::size_t firstVpl, std::size_t count) {
   p.indirectLight->gather(firstVpl, count, p.firstPixel, p.segmentPixels);
 }
 
+void GlBackend::takeIndirect(float* indirect) {
+  Passes& p = passes();
+  // The integration zeroes the difference buffer behind it (footprint_integrate.comp).
+  if (p.footprint) p.footprint->integrateInto(p.indirectVolume, p.segmentPixels);
+  const std::size_t bytes = p.segmentPixels * static_cast<std::size_t>(p.job.settings.time.bins) *
+                            gpu::kChannels * sizeof(float);
+  p.indirectVolume.download(0, bytes, indirect);
+  p.indirectVolume.clear();
+  // The gathers write through the binding of beginSegment's range, which
+  // clear() leaves in place; the barrier orders the clear before them.
+  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
+  TOFSIM_GL_CHECK("indirect read-back");
+}
+
 void GlBackend::readSegment(float* direct, float* indirect, AxisLoss& offAxis) {
   Passes& p = passes();
   // The indirect gathers' wide kernels, after every batch: one sum per pixel.

@@ -12,6 +12,8 @@
 #include <functional>
 #include <memory>
 #include <optional>
+#include <utility>
+#include <vector>
 
 #include "tofsim/capture/SegmentSink.h"
 #include "tofsim/config/RunConfig.h"
@@ -51,8 +53,10 @@ class OutputSink : public capture::SegmentSink {
   int32_t width_, height_;
   TimeAxis axis_;
   std::unique_ptr<io::NpyStreamWriter> total_, directFile_, indirectFile_;
+  /// bounce<k>.npy for each k of OutputConfig::bounces, in that order.
+  std::vector<std::pair<int32_t, std::unique_ptr<io::NpyStreamWriter>>> bounceFiles_;
   std::vector<double> steady_;
-  std::vector<float> scratch_, directScratch_, indirectScratch_;
+  std::vector<float> scratch_, directScratch_, indirectScratch_, bounceScratch_;
   std::size_t nonFinite_ = 0;
   std::optional<TransientVolume> volume_;
   Forward forward_;

@@ -5,9 +5,11 @@
 // order and cover the image exactly once; nothing needs the whole volume in
 // memory.
 //
-// A segment carries the light split into named components (direct and
-// indirect today; one per bounce later). The volume is their sum, taken in
-// float in the order listed, so each component file adds up to it.
+// A segment carries the light split into named components: direct and
+// indirect, and from the IR renderers also bounce1 .. bounceN (the light
+// whose path has exactly k indirect bounces). The volume is direct + indirect
+// in float, and indirect is the float sum of the bounces in bounce order, so
+// each component file adds up exactly.
 
 #include <cstddef>
 #include <cstdint>
@@ -22,6 +24,12 @@ inline constexpr int32_t kChannels = 3;
 /// Names of the components the renderers emit today.
 inline constexpr std::string_view kDirect = "direct";      ///< bounce 1 and the light seen straight
 inline constexpr std::string_view kIndirect = "indirect";  ///< bounces 2..n
+
+/// The most indirect bounces a component can name (render.indirect.bounces' limit).
+inline constexpr int32_t kMaxBounceComponents = 8;
+/// "bounce1" .. "bounce8" (static lifetime): the light of exactly `bounce`
+/// indirect bounces, 1 <= bounce <= kMaxBounceComponents.
+std::string_view bounceComponent(int32_t bounce);
 
 struct SegmentComponent {
   std::string_view name;          ///< a string with static lifetime, e.g. kDirect

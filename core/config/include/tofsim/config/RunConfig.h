@@ -59,12 +59,15 @@ enum class VideoToneMap { Global, Log };
 
 struct OutputConfig {
   std::filesystem::path directory = "out";
-  bool transient = true;    ///< transient.npy + transient.json
-  bool steady = true;       ///< steady.exr
-  bool depth = true;        ///< depth.exr
-  bool frames = false;      ///< frames/frame_NNNN.exr, one per time bin
-  bool direct = false;      ///< direct.npy (components: [direct, ...])
-  bool indirect = false;    ///< indirect.npy
+  bool transient = true;  ///< transient.npy + transient.json
+  bool steady = true;     ///< steady.exr
+  bool depth = true;      ///< depth.exr
+  bool frames = false;    ///< frames/frame_NNNN.exr, one per time bin
+  bool direct = false;    ///< direct.npy (components: [direct, ...])
+  bool indirect = false;  ///< indirect.npy
+  /// bounce<k>.npy for each k listed (increasing, 1 <= k <= render.indirect.bounces):
+  /// the light whose path has exactly k indirect bounces (IR renderer only).
+  std::vector<int32_t> bounces;
   bool video = false;       ///< transient.mp4: light in flight, one frame per video_stride bins
   bool frame_pngs = false;  ///< frames/frame_NNNNN.png: the video's frames as PNG
   VideoToneMap video_tone_map = VideoToneMap::Global;

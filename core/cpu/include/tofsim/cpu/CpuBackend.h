@@ -63,6 +63,7 @@ class CpuBackend : public ir::IrBackend {
   void beginSegment(std::size_t firstPixel, std::size_t count) override;
   void gatherDirect() override;
   void gatherIndirect(std::size_t firstVpl, std::size_t count) override;
+  void takeIndirect(float* indirect) override;
   void readSegment(float* direct, float* indirect, AxisLoss& offAxis) override;
 
   int threads() const { return threads_; }
@@ -74,6 +75,8 @@ class CpuBackend : public ir::IrBackend {
   void integratePixel(std::size_t i, float* histogram);
   /// Pixel i's footprint buffer, zeroed first if it held nothing.
   double* footprintOf(std::size_t i);
+  /// The indirect gathers' wide kernels into indirect_: one sum per pixel.
+  void integrateIndirectFootprints();
   std::size_t samplesPerPixel() const;
 
   int threads_ = 1;

@@ -11,6 +11,10 @@
 //   ranges): beginSegment, gatherDirect, for each VPL batch b (increasing):
 //   buildVisibility (only when batch b is not already resident: with one batch
 //   it is built once for the whole render), gatherIndirect; readSegment.
+//   With render.indirect.bounces > 1 the batches are planned within each
+//   bounce's VPL range and every bounce but the last ends with takeIndirect
+//   (that bounce's light, read out and restarted from zero); the last
+//   bounce's light comes with readSegment. One read-back per bounce.
 //
 // What every implementation must guarantee:
 //  - Determinism: the same job gives the same bytes whatever the thread count,
@@ -93,6 +97,11 @@ class IrBackend {
   /// Adds VPLs [firstVpl, firstVpl + count) (whose visibility was built last)
   /// into the segment.
   virtual void gatherIndirect(std::size_t firstVpl, std::size_t count) = 0;
+  /// Copies the indirect light gathered since beginSegment or the last
+  /// takeIndirect out (count * bins * kChannels floats, wide footprint kernels
+  /// integrated) and zeroes the indirect accumulators; direct light and the
+  /// off-axis sums stay as they are (they are read once, by readSegment).
+  virtual void takeIndirect(float* indirect) = 0;
   /// Copies the segment out: direct and indirect, count * bins * kChannels
   /// floats each (pixel-major, then bin, then channel), and adds the light
   /// that fell before / after the axis to `offAxis`, pixel by pixel in pixel

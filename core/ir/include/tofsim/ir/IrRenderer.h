@@ -7,7 +7,8 @@
 //
 // The volume is produced in segments sized by the memory budget and the
 // device's limits and handed to a SegmentSink as soon as each is done, with
-// the components "direct" and "indirect".
+// the components "direct", "indirect" and "bounce1" .. "bounceN"
+// (N = render.indirect.bounces; indirect = their float sum in bounce order).
 
 #include <memory>
 

@@ -35,6 +35,7 @@ class GlBackend : public ir::IrBackend {
   void beginSegment(std::size_t firstPixel, std::size_t count) override;
   void gatherDirect() override;
   void gatherIndirect(std::size_t firstVpl, std::size_t count) override;
+  void takeIndirect(float* indirect) override;
   void readSegment(float* direct, float* indirect, AxisLoss& offAxis) override;
 
  private:
