@@ -85,8 +85,9 @@ int runCompareCommand(const std::string& a, const std::string& b, const std::str
   const std::filesystem::path out =
       outputDir.empty() ? std::filesystem::path(a) : std::filesystem::path(outputDir);
   const pipeline::CompareSummary summary = pipeline::runCompare(a, b, out);
-  std::printf("A (under test): %s\nB (reference):  %s\n%s\n", a.c_str(), b.c_str(),
-              compare::summaryTable(summary.comparison).c_str());
+  std::printf("A (under test): %s\nB (reference):  %s\n%s%s\n", a.c_str(), b.c_str(),
+              compare::summaryTable(summary.comparison).c_str(),
+              pipeline::componentsTable(summary.components).c_str());
   std::fprintf(stderr, "compare: wrote %zu file(s) to %s\n", summary.files.size(),
                out.string().c_str());
   return 0;

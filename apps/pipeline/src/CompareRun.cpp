@@ -1,5 +1,8 @@
 #include "tofsim/pipeline/CompareRun.h"
 
+#include <cstdio>
+#include <optional>
+
 #include "tofsim/imaging/LinePlot.h"
 #include "tofsim/imaging/Pictures.h"
 #include "tofsim/io/Exr.h"
@@ -7,6 +10,55 @@
 #include "tofsim/util/AtomicFile.h"
 
 namespace tofsim::pipeline {
+
+namespace {
+
+// The components a render may write (output.components; at most
+// render.indirect.bounces = 8 bounces), in the order they are reported.
+std::vector<std::string> componentNames() {
+  std::vector<std::string> names = {"direct", "indirect"};
+  for (int k = 1; k <= 8; ++k) names.push_back("bounce" + std::to_string(k));
+  return names;
+}
+
+std::vector<ComponentComparison> compareComponents(const std::filesystem::path& a,
+                                                   const std::filesystem::path& b) {
+  std::vector<ComponentComparison> out;
+  for (const std::string& name : componentNames()) {
+    const std::optional<TransientVolume> inA = loadSavedComponent(a, name);
+    if (!inA) continue;
+    const std::optional<TransientVolume> inB = loadSavedComponent(b, name);
+    if (!inB) continue;
+    out.push_back({name, compare::compareVolumes(*inA, *inB)});
+  }
+  return out;
+}
+
+std::string componentsCsv(const std::vector<ComponentComparison>& components) {
+  std::string csv = "component,steady_relative_l1,steady_rmse,transient_relative_l1\n";
+  for (const ComponentComparison& c : components) {
+    char line[256];
+    std::snprintf(line, sizeof line, "%s,%.9g,%.9g,%.9g\n", c.name.c_str(),
+                  c.comparison.steadyRelativeL1, c.comparison.steadyRmse,
+                  c.comparison.transientRelativeL1);
+    csv += line;
+  }
+  return csv;
+}
+
+}  // namespace
+
+std::string componentsTable(const std::vector<ComponentComparison>& components) {
+  if (components.empty()) return "";
+  std::string text = "components (in both A and B): steady rel. L1, transient rel. L1\n";
+  for (const ComponentComparison& c : components) {
+    char line[160];
+    std::snprintf(line, sizeof line, "  %-10s %.6g  %.6g\n", c.name.c_str(),
+                  c.comparison.steadyRelativeL1, c.comparison.transientRelativeL1);
+    text += line;
+  }
+  return text;
+}
 
 CompareSummary runCompare(const std::filesystem::path& a, const std::filesystem::path& b,
                           const std::filesystem::path& outputDirectory) {
@@ -41,6 +93,12 @@ CompareSummary runCompare(const std::filesystem::path& a, const std::filesystem:
                                "earliest arrival A - B [ps]", scale);
   summary.files.push_back("compare_arrival.exr");
   summary.files.push_back("compare_arrival.png");
+  summary.components = compareComponents(a, b);
+  if (!summary.components.empty()) {
+    writeFileAtomically(outputDirectory / "compare_components.csv",
+                        componentsCsv(summary.components));
+    summary.files.push_back("compare_components.csv");
+  }
   return summary;
 }
 

@@ -118,4 +118,13 @@ SavedVolume loadSavedVolume(const std::filesystem::path& directory) {
   return saved;
 }
 
+std::optional<TransientVolume> loadSavedComponent(const std::filesystem::path& directory,
+                                                  const std::string& name) {
+  const std::filesystem::path file = directory / (name + ".npy");
+  std::error_code ec;
+  if (!std::filesystem::exists(file, ec)) return std::nullopt;
+  const std::filesystem::path json = directory / "transient.json";
+  return readVolume(file, readLayout(json), json);
+}
+
 }  // namespace tofsim::pipeline

@@ -4,6 +4,7 @@
 
 #include <filesystem>
 #include <optional>
+#include <string>
 
 #include "tofsim/volume/TransientVolume.h"
 
@@ -18,5 +19,12 @@ struct SavedVolume {
 /// Throws InputError naming the file when transient.npy or transient.json is
 /// missing or unreadable, or when the files disagree on the shape.
 SavedVolume loadSavedVolume(const std::filesystem::path& directory);
+
+/// A light component saved beside transient.npy (`direct`, `indirect`,
+/// `bounce<k>`: `<name>.npy`), read with transient.json's time axis, or
+/// nothing when the render did not write it. Throws InputError like
+/// loadSavedVolume when the file's shape disagrees with transient.json.
+std::optional<TransientVolume> loadSavedComponent(const std::filesystem::path& directory,
+                                                  const std::string& name);
 
 }  // namespace tofsim::pipeline
