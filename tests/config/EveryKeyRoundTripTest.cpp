@@ -47,6 +47,7 @@ time:
 render:
   renderer: reference
   backend: cpu
+  threads: 3
   seed: 7
   shadow_map_resolution: 256
   memory_budget: 100 MiB

@@ -61,6 +61,25 @@ TEST_F(BackendGLTest, GlStillRendersWithoutAHardwareGpu) {
   EXPECT_NE(gl.output.find("device: "), std::string::npos) << gl.output;
 }
 
+TEST_F(BackendGLTest, CpuThreadCountIsTakenAndLeavesTheBytes) {
+  // render.threads: the CPU backend runs on that many threads (its device
+  // line says so), and the volume is the same whatever the count.
+  std::string bytes[2];
+  const int counts[2] = {1, 3};
+  for (int i = 0; i < 2; ++i) {
+    const std::string out = (dir_ / ("threads" + std::to_string(counts[i]))).string();
+    const CommandResult r =
+        test::runCli("render " + test::kCornellConfig + " -o " + out + kSmall +
+                     " --backend cpu --set render.threads=" + std::to_string(counts[i]));
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    const std::string device = counts[i] == 1 ? "CPU (1 thread," : "CPU (3 threads,";
+    EXPECT_NE(r.output.find(device), std::string::npos) << r.output;
+    bytes[i] = test::fileBytes(out + "/transient.npy");
+  }
+  ASSERT_FALSE(bytes[0].empty());
+  EXPECT_TRUE(bytes[0] == bytes[1]);
+}
+
 TEST_F(BackendGLTest, UnknownBackendIsALocatedError) {
   const CommandResult r = test::runCli("render " + test::kCornellConfig + " -o " +
                                        (dir_ / "x").string() + " --set render.backend=vulkan");

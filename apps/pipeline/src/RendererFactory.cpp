@@ -13,8 +13,12 @@ config::IrBackendKind resolveIrBackend(config::IrBackendKind requested) {
 }
 
 std::unique_ptr<ir::IrBackend> makeIrBackend(config::IrBackendKind backend,
-                                             gl::EglPlatform eglPlatform) {
-  if (backend == config::IrBackendKind::Cpu) return std::make_unique<cpu::CpuBackend>();
+                                             gl::EglPlatform eglPlatform, int cpuThreads) {
+  if (backend == config::IrBackendKind::Cpu) {
+    cpu::CpuBackendOptions options;
+    options.threads = cpuThreads;
+    return std::make_unique<cpu::CpuBackend>(options);
+  }
   return std::make_unique<render::GlBackend>(std::make_unique<gl::Context>(eglPlatform));
 }
 
@@ -30,7 +34,7 @@ RendererChoice makeRenderer(const config::RunConfig& config, gl::EglPlatform egl
     return {std::make_unique<reference::ReferenceRenderer>(settings), "reference"};
   }
   const config::IrBackendKind backend = resolveIrBackend(config.backend);
-  return {std::make_unique<ir::IrRenderer>(makeIrBackend(backend, eglPlatform)),
+  return {std::make_unique<ir::IrRenderer>(makeIrBackend(backend, eglPlatform, config.cpu_threads)),
           config::irBackendName(backend)};
 }
 

@@ -68,6 +68,8 @@ const ConfigKey kRunConfigKeys[] = {
      "printed (`device: ...`) and recorded in `transient.json` (`backend`, `device`); "
      "`--backend` on `render` sets it. Both give the same volume within float rounding "
      "(tests/cpu)"},
+    {"render.threads", "int", "in [0, 4096]", "0", "-",
+     "worker threads of the `cpu` backend (0 = all hardware threads, e.g. a cluster job's `--cpus-per-task`); the bytes do not depend on it (tests/cpu)"},
     {"render.seed", "int", "in [0, 2^62]", "1", "-",
      "seed of every random choice: the renderer's and the sensors'"},
     {"render.shadow_map_resolution", "int", "in [16, 16384]", "1024", "pixel",

@@ -54,6 +54,7 @@ YAML::Node renderNode(const RunConfig& config) {
   YAML::Node n;
   n["renderer"] = config.renderer == RendererKind::Reference ? "reference" : "ir";
   n["backend"] = irBackendName(config.backend);
+  n["threads"] = config.cpu_threads;
   n["seed"] = r.seed;
   n["shadow_map_resolution"] = r.shadow_map_resolution;
   n["memory_budget"] = std::to_string(r.memory_budget_bytes) + " B";

@@ -170,6 +170,7 @@ void parseRendererChoice(const ConfigNode& node, RunConfig& out) {
 void parseRender(const ConfigNode& node, RunConfig& out) {
   parseRendererChoice(node, out);
   out.strict = node.getBool("strict", out.strict);
+  out.cpu_threads = static_cast<int32_t>(intInRange(node, "threads", out.cpu_threads, 0, 4096));
   capture::RenderSettings& r = out.render;
   r.seed = static_cast<uint64_t>(intInRange(node, "seed", 1, 0, (1LL << 62)));
   r.shadow_map_resolution = static_cast<int32_t>(

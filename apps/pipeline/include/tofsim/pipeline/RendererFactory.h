@@ -20,9 +20,9 @@ namespace tofsim::pipeline {
 config::IrBackendKind resolveIrBackend(config::IrBackendKind requested);
 
 /// The IR backend `backend` names (not Auto): GL on a new EGL context of
-/// `eglPlatform`, or the CPU backend on every core.
+/// `eglPlatform`, or the CPU backend on `cpuThreads` threads (0: every core).
 std::unique_ptr<ir::IrBackend> makeIrBackend(config::IrBackendKind backend,
-                                             gl::EglPlatform eglPlatform);
+                                             gl::EglPlatform eglPlatform, int cpuThreads = 0);
 
 /// What renders a run, for the log and transient.json.
 struct RendererChoice {

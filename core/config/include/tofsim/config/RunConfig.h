@@ -90,6 +90,7 @@ struct RunConfig {
   capture::RenderSettings render;
   RendererKind renderer = RendererKind::InstantRadiosity;
   IrBackendKind backend = IrBackendKind::Auto;  ///< render.backend (IR only)
+  int32_t cpu_threads = 0;  ///< render.threads: the CPU IR backend's threads, 0 = all
   ReferenceConfig reference;
   /// render.strict (or --strict): light cut off by the time axis or a sensor
   /// window is an error, not a warning (apps/pipeline AxisReport.h).
