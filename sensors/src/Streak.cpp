@@ -100,9 +100,11 @@ class StreakStream final : public SensorStream {
     image.time = axis_;
     image.attributes = {{"row", y}};
     image.unit = "ADU";
+    char axisText[96];  // %g: "5.00346 ns, step 10 ps", not std::to_string's six decimals
+    std::snprintf(axisText, sizeof axisText, "%g ns, step %g ps", axis_.start_s * 1e9,
+                  axis_.bin_width_s * 1e12);
     image.description = "streak image of row " + std::to_string(y) + " (rows: time from " +
-                        std::to_string(axis_.start_s * 1e9) + " ns, step " +
-                        std::to_string(axis_.bin_width_s * 1e12) + " ps; columns: x)";
+                        axisText + "; columns: x)";
     image.data.resize(a.size());
     for (int32_t x = 0; x < W; ++x) {
       Rng rng(seed_, pixelStream(kStreakStreamTag, static_cast<uint64_t>(y) * W + x));
