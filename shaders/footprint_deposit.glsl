@@ -42,15 +42,11 @@ void surfaceStepsAcrossSample(vec3 x, vec3 n, out vec3 dxdu, out vec3 dxdv) {
 // Narrow kernel: bin first + j (j < count) gets the mass between its edges
 // times energy in the histogram, or off the axis (physics::depositNarrowBin).
 // `lower` carries the CDF at the bin's lower edge from the previous bin, so
-// each edge is evaluated once: the values of footprintNarrowMass(kernel, j),
-// bit for bit, at half the work.
-void footprintAddNarrowBin(uint local, vec3 kernel, vec2 local01, int first, int count, int j,
-                           vec3 energy, inout float lower, inout float lostBefore,
-                           inout float lostAfter) {
+// each edge is evaluated once: footprintNarrowMass(kernel, j) bit for bit.
+void footprintAddNarrowBin(uint local, vec3 kernel, int first, int count, int j, vec3 energy,
+                           inout float lower, inout float lostBefore, inout float lostAfter) {
   if (j >= count) return;
-  float frac = local01.x;
-  float last = local01.y;
-  float upper = float(j + 1) > last ? 1.0f : footprintNarrowCdf(kernel, float(j + 1) - frac);
+  float upper = footprintNarrowEdgeCdf(kernel, j);
   float mass = upper - lower;
   lower = upper;
   int k = first + j;
@@ -81,9 +77,8 @@ void footprintAddSlot(uint local, vec3 kernel, int slot, vec3 energy) {
   footprintDiff[i + 2u] += value * double(energy.b);
 }
 
-#define TOFSIM_NARROW_BIN(j)                                                          \
-  footprintAddNarrowBin(local, kernel, local01, first, count, j, energy, lower, lostBefore, \
-                        lostAfter)
+#define TOFSIM_NARROW_BIN(j) \
+  footprintAddNarrowBin(local, kernel, first, count, j, energy, lower, lostBefore, lostAfter)
 #define TOFSIM_SLOT(s) footprintAddSlot(local, kernel, s, energy)
 
 // Adds a contribution of `energy` spread by `kernel` to pixel `local` of the
@@ -107,9 +102,6 @@ void depositContribution(uint local, vec3 kernel, vec3 energy, inout float lostB
   // FOOTPRINT_DIRECT_BINS (16) bins at most, ascending.
   int first = footprintNarrowFirstBin(kernel, uBins);
   int count = footprintNarrowBinCount(kernel);
-  // footprintNarrowMass's first kink position in its bin and last bin offset.
-  vec2 e = footprintLocalExtent(kernel);
-  vec2 local01 = vec2(e.x - floor(e.x), floor(e.y) - floor(e.x));
   float lower = 0.0f;
   TOFSIM_NARROW_BIN(0); TOFSIM_NARROW_BIN(1); TOFSIM_NARROW_BIN(2); TOFSIM_NARROW_BIN(3);
   TOFSIM_NARROW_BIN(4); TOFSIM_NARROW_BIN(5); TOFSIM_NARROW_BIN(6); TOFSIM_NARROW_BIN(7);

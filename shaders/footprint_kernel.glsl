@@ -309,19 +309,23 @@ TOFSIM_PHYSICS_FN float footprintNarrowCdf(vec3 kernel, float s) {
   return s <= 0.0f ? 0.0f : (s >= total ? 1.0f : inside);
 }
 
-// Mass of a narrow kernel in bin first + j (0 <= j < footprintNarrowBinCount,
-// first = footprintNarrowFirstBin): the factor of the contribution's value
-// added to that bin, or booked before / after the axis when it lies there.
-TOFSIM_PHYSICS_FN float footprintNarrowMass(vec3 kernel, int j) {
+// The narrow kernel's CDF at the upper edge of bin first + j
+// (first = footprintNarrowFirstBin): exactly 1 above its last bin. Off the
+// axis by far, `first` was clamped: the masses then only need to sum to 1,
+// which the exact 0 below and 1 above guarantee.
+TOFSIM_PHYSICS_FN float footprintNarrowEdgeCdf(vec3 kernel, int j) {
   vec2 e = footprintLocalExtent(kernel);
   float frac = e.x - floor(e.x);  // the first kink's position in its bin
   float last = floor(e.y) - floor(e.x);
-  // Off the axis by far, `first` was clamped: the masses then only need to
-  // sum to 1, which the exact 0 and 1 at the ends guarantee.
-  float upper = float(j + 1) > last ? 1.0f : footprintNarrowCdf(kernel, float(j + 1) - frac);
-  float lower = j == 0 ? 0.0f
-                       : (float(j) > last ? 1.0f : footprintNarrowCdf(kernel, float(j) - frac));
-  return upper - lower;
+  return float(j + 1) > last ? 1.0f : footprintNarrowCdf(kernel, float(j + 1) - frac);
+}
+
+// Mass of a narrow kernel in bin first + j (0 <= j < footprintNarrowBinCount):
+// the factor of the contribution's value added to that bin, or booked before
+// / after the axis when it lies there.
+TOFSIM_PHYSICS_FN float footprintNarrowMass(vec3 kernel, int j) {
+  float lower = j == 0 ? 0.0f : footprintNarrowEdgeCdf(kernel, j - 1);
+  return footprintNarrowEdgeCdf(kernel, j) - lower;
 }
 
 #endif  // TOFSIM_FOOTPRINT_KERNEL_GLSL

@@ -1,7 +1,6 @@
 #include "tofsim/capture/Camera.h"
 
 #include <cmath>
-
 #include <glm/gtc/matrix_transform.hpp>
 
 namespace tofsim::capture {
@@ -11,9 +10,14 @@ glm::vec3 Camera::right() const { return glm::normalize(glm::cross(forward(), up
 glm::vec3 Camera::up() const { return glm::cross(right(), forward()); }
 
 namespace {
+// tan(fov_y / 2): the image plane's half height at unit distance.
+double tanHalfFovY(const Camera& c) {
+  return std::tan(glm::radians(static_cast<double>(c.fov_y_deg)) * 0.5);
+}
+
 // Image-plane coordinates at unit distance of pixel (x, y)'s centre.
 glm::dvec2 planePoint(const Camera& c, double x, double y) {
-  const double tanHalf = std::tan(glm::radians(static_cast<double>(c.fov_y_deg)) * 0.5);
+  const double tanHalf = tanHalfFovY(c);
   const double aspect = static_cast<double>(c.width) / c.height;
   const double u = (2.0 * (x + 0.5) / c.width - 1.0) * tanHalf * aspect;
   const double v = (1.0 - 2.0 * (y + 0.5) / c.height) * tanHalf;
@@ -35,18 +39,18 @@ glm::vec3 Camera::pixelDirection(int32_t x, int32_t y, glm::vec2 offset) const {
 }
 
 glm::vec3 Camera::rayStepAlongX() const {
-  const double tanHalf = std::tan(glm::radians(static_cast<double>(fov_y_deg)) * 0.5);
+  const double tanHalf = tanHalfFovY(*this);
   return right() * static_cast<float>(2.0 * tanHalf / height);  // square pixels
 }
 
 glm::vec3 Camera::rayStepAlongY() const {
-  const double tanHalf = std::tan(glm::radians(static_cast<double>(fov_y_deg)) * 0.5);
+  const double tanHalf = tanHalfFovY(*this);
   return -up() * static_cast<float>(2.0 * tanHalf / height);
 }
 
 double Camera::pixelSolidAngle_sr(int32_t x, int32_t y) const {
   // A pixel of area dA on the unit-distance plane subtends dA cos^3(theta).
-  const double tanHalf = std::tan(glm::radians(static_cast<double>(fov_y_deg)) * 0.5);
+  const double tanHalf = tanHalfFovY(*this);
   const double pixelSide = 2.0 * tanHalf / height;
   const glm::dvec2 p = planePoint(*this, x, y);
   const double r2 = 1.0 + p.x * p.x + p.y * p.y;
@@ -57,7 +61,7 @@ glm::ivec2 Camera::project(const glm::vec3& point) const {
   const glm::vec3 d = point - position_world;
   const float z = glm::dot(d, forward());
   if (z <= 0.0f) return {-1, -1};
-  const double tanHalf = std::tan(glm::radians(static_cast<double>(fov_y_deg)) * 0.5);
+  const double tanHalf = tanHalfFovY(*this);
   const double aspect = static_cast<double>(width) / height;
   const double u = glm::dot(d, right()) / z / (tanHalf * aspect);
   const double v = glm::dot(d, up()) / z / tanHalf;

@@ -109,7 +109,7 @@ void CpuBackend::allocate(std::size_t pixelsPerSegment, std::size_t vplsPerBatch
   const std::size_t floats = pixelsPerSegment * job_.settings.time.bins * kChannels;
   direct_.assign(floats, 0.0f);
   indirect_.assign(floats, 0.0f);
-  outside_.assign(2 * pixelsPerSegment, 0.0f);
+  outside_.assign(pixelsPerSegment, physics::OffAxisSums{});
   // The plan counted the footprint buffers (ir::PixelBuffers); they start
   // zero and integratePixel clears what it read.
   footprint_.reset(job_.settings.pixel_footprint ? new double[floats] : nullptr);
@@ -130,7 +130,7 @@ void CpuBackend::beginSegment(std::size_t firstPixel, std::size_t count) {
   const std::size_t floats = count * job_.settings.time.bins * kChannels;
   std::fill_n(direct_.begin(), floats, 0.0f);
   std::fill_n(indirect_.begin(), floats, 0.0f);
-  std::fill_n(outside_.begin(), 2 * count, 0.0f);
+  std::fill_n(outside_.begin(), count, physics::OffAxisSums{});
   const capture::RenderSettings& s = job_.settings;
   const capture::Camera& camera = job_.camera;
   const auto eta = static_cast<float>(s.index_of_refraction);
@@ -195,7 +195,7 @@ void CpuBackend::gatherDirectTile(std::size_t tile) {
   const std::size_t end = std::min(pixelCount_, (tile + 1) * kTilePixels);
   for (std::size_t i = tile * kTilePixels; i < end; ++i) {
     float* histogram = &direct_[i * bins * kChannels];
-    physics::OffAxisSums lost{outside_[2 * i], outside_[2 * i + 1]};
+    physics::OffAxisSums& lost = outside_[i];
     for (std::size_t sample = i * perPixel; sample < (i + 1) * perPixel; ++sample) {
       if (!segmentLit_[sample]) continue;
       // The steps of direct_gather.comp.
@@ -255,8 +255,6 @@ void CpuBackend::gatherDirectTile(std::size_t tile) {
         out[0] += value.r, out[1] += value.g, out[2] += value.b;
       }
     }
-    outside_[2 * i] = lost.before;
-    outside_[2 * i + 1] = lost.after;
     // The footprint buffer is the indirect gathers' next.
     if (s.pixel_footprint) integratePixel(i, histogram);
   }
@@ -294,7 +292,7 @@ void CpuBackend::gatherTile(std::size_t tile, std::size_t firstVpl, std::size_t 
     const std::size_t n = std::min(kVplBlock, firstVpl + count - first);
     for (std::size_t i = tile * kTilePixels; i < end; ++i) {
       float* histogram = &indirect_[i * bins * kChannels];
-      physics::OffAxisSums lost{outside_[2 * i], outside_[2 * i + 1]};
+      physics::OffAxisSums& lost = outside_[i];
       for (std::size_t s = 0; s < perPixel; ++s) {
         if (segmentLit_[i * perPixel + s]) {
           vplTerms(segmentSurfaces_[i * perPixel + s], v, first, n, c, terms[s]);
@@ -340,8 +338,6 @@ void CpuBackend::gatherTile(std::size_t tile, std::size_t firstVpl, std::size_t 
           out[2] += energy.b;
         }
       }
-      outside_[2 * i] = lost.before;
-      outside_[2 * i + 1] = lost.after;
     }
   }
 }
@@ -374,8 +370,8 @@ void CpuBackend::readSegment(float* direct, float* indirect, AxisLoss& offAxis) 
   std::copy_n(direct_.begin(), floats, direct);
   std::copy_n(indirect_.begin(), floats, indirect);
   for (std::size_t i = 0; i < pixelCount_; ++i) {
-    offAxis.before += outside_[2 * i];
-    offAxis.after += outside_[2 * i + 1];
+    offAxis.before += outside_[i].before;
+    offAxis.after += outside_[i].after;
   }
 }
 

@@ -31,6 +31,9 @@
 namespace tofsim::reference {
 class RayScene;
 }
+namespace tofsim::physics {
+struct OffAxisSums;
+}
 
 namespace tofsim::cpu {
 
@@ -88,7 +91,8 @@ class CpuBackend : public ir::IrBackend {
   std::unique_ptr<CpuIsm> ism_;
   std::vector<PixelSurface> segmentSurfaces_;  ///< per sample of the segment's pixels
   std::vector<unsigned char> segmentLit_;      ///< 1 where the sample sees a surface
-  std::vector<float> direct_, indirect_, outside_;
+  std::vector<float> direct_, indirect_;
+  std::vector<physics::OffAxisSums> outside_;  ///< per pixel of the segment: light off the axis
   /// The pixel footprint's difference buffers (bins x 3 doubles per pixel of
   /// the segment) and which pixels' buffers hold something. Uninitialised:
   /// a pixel's buffer is zeroed when its first wide kernel arrives

@@ -109,9 +109,12 @@ inline void depositNarrow(float* histogram, int32_t bins, const vec3& kernel, co
                           OffAxisSums& lost) {
   const int first = footprintNarrowFirstBin(kernel, bins);
   const int count = footprintNarrowBinCount(kernel);
+  // Each edge's CDF once, carried to the next bin: footprintNarrowMass's values.
+  float lower = 0.0f;
   for (int j = 0; j < count; ++j) {
-    depositNarrowBin(histogram, bins, first + j, footprintNarrowMass(kernel, j), energy,
-                     lost);
+    const float upper = footprintNarrowEdgeCdf(kernel, j);
+    depositNarrowBin(histogram, bins, first + j, upper - lower, energy, lost);
+    lower = upper;
   }
 }
 
