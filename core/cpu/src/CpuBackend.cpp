@@ -109,6 +109,7 @@ void CpuBackend::allocate(std::size_t pixelsPerSegment, std::size_t vplsPerBatch
   const std::size_t floats = pixelsPerSegment * job_.settings.time.bins * kChannels;
   direct_.assign(floats, 0.0f);
   indirect_.assign(floats, 0.0f);
+  accumulatorsZero_ = true;
   outside_.assign(pixelsPerSegment, physics::OffAxisSums{});
   // The plan counted the footprint buffers (ir::PixelBuffers); they start
   // zero and integratePixel clears what it read.
@@ -127,9 +128,15 @@ void CpuBackend::beginSegment(std::size_t firstPixel, std::size_t count) {
   TOFSIM_CHECK(count <= pixelsPerSegment_);
   firstPixel_ = firstPixel;
   pixelCount_ = count;
-  const std::size_t floats = count * job_.settings.time.bins * kChannels;
-  std::fill_n(direct_.begin(), floats, 0.0f);
-  std::fill_n(indirect_.begin(), floats, 0.0f);
+  // readSegment leaves the histograms zero (it zeroes each pixel's as it
+  // copies it out, while it is in cache): a second pass over the segment's
+  // memory only after an unfinished one.
+  if (!accumulatorsZero_) {
+    const std::size_t floats = count * job_.settings.time.bins * kChannels;
+    std::fill_n(direct_.begin(), floats, 0.0f);
+    std::fill_n(indirect_.begin(), floats, 0.0f);
+  }
+  accumulatorsZero_ = false;
   std::fill_n(outside_.begin(), count, physics::OffAxisSums{});
   const capture::RenderSettings& s = job_.settings;
   const capture::Camera& camera = job_.camera;
@@ -342,33 +349,33 @@ void CpuBackend::gatherTile(std::size_t tile, std::size_t firstVpl, std::size_t 
   }
 }
 
-void CpuBackend::integrateIndirectFootprints() {
-  if (!job_.settings.pixel_footprint) return;
+void CpuBackend::moveOut(std::vector<float>& from, float* to, bool integrateFootprints) {
   const std::size_t tiles = (pixelCount_ + kTilePixels - 1) / kTilePixels;
   const std::size_t stride = static_cast<std::size_t>(job_.settings.time.bins) * kChannels;
+  // Per pixel while its histogram is in cache: the wide footprint kernels
+  // summed in (integratePixel clears each footprint buffer it read), copied
+  // out, zeroed for the next bounce or segment.
   parallelFor(tiles, threads_, [&](std::size_t tile) {
     const std::size_t end = std::min(pixelCount_, (tile + 1) * kTilePixels);
     for (std::size_t i = tile * kTilePixels; i < end; ++i) {
-      integratePixel(i, &indirect_[i * stride]);
+      float* histogram = &from[i * stride];
+      if (integrateFootprints) integratePixel(i, histogram);
+      std::copy_n(histogram, stride, to + i * stride);
+      std::fill_n(histogram, stride, 0.0f);
     }
   });
 }
 
 void CpuBackend::takeIndirect(float* indirect) {
-  const std::size_t floats = pixelCount_ * job_.settings.time.bins * kChannels;
-  // integratePixel clears each footprint buffer it read, so the next bounce
-  // starts from zero there too.
-  integrateIndirectFootprints();
-  std::copy_n(indirect_.begin(), floats, indirect);
-  std::fill_n(indirect_.begin(), floats, 0.0f);
+  moveOut(indirect_, indirect, job_.settings.pixel_footprint);
 }
 
 void CpuBackend::readSegment(float* direct, float* indirect, AxisLoss& offAxis) {
-  const std::size_t floats = pixelCount_ * job_.settings.time.bins * kChannels;
-  // The indirect gathers' wide kernels, after every batch: one sum per pixel.
-  integrateIndirectFootprints();
-  std::copy_n(direct_.begin(), floats, direct);
-  std::copy_n(indirect_.begin(), floats, indirect);
+  // The direct gather integrated its footprints itself; the indirect gathers'
+  // wide kernels, added after every batch, are summed once per pixel here.
+  moveOut(direct_, direct, false);
+  moveOut(indirect_, indirect, job_.settings.pixel_footprint);
+  accumulatorsZero_ = true;
   for (std::size_t i = 0; i < pixelCount_; ++i) {
     offAxis.before += outside_[i].before;
     offAxis.after += outside_[i].after;

@@ -78,8 +78,9 @@ class CpuBackend : public ir::IrBackend {
   void integratePixel(std::size_t i, float* histogram);
   /// Pixel i's footprint buffer, zeroed first if it held nothing.
   double* footprintOf(std::size_t i);
-  /// The indirect gathers' wide kernels into indirect_: one sum per pixel.
-  void integrateIndirectFootprints();
+  /// The segment's histograms in `from` out to `to` (with the indirect
+  /// light's wide footprint kernels summed in, pixel by pixel), and zeroed.
+  void moveOut(std::vector<float>& from, float* to, bool integrateFootprints);
   std::size_t samplesPerPixel() const;
 
   int threads_ = 1;
@@ -92,6 +93,8 @@ class CpuBackend : public ir::IrBackend {
   std::vector<PixelSurface> segmentSurfaces_;  ///< per sample of the segment's pixels
   std::vector<unsigned char> segmentLit_;      ///< 1 where the sample sees a surface
   std::vector<float> direct_, indirect_;
+  /// direct_ and indirect_ hold zeros (after allocate and readSegment).
+  bool accumulatorsZero_ = false;
   std::vector<physics::OffAxisSums> outside_;  ///< per pixel of the segment: light off the axis
   /// The pixel footprint's difference buffers (bins x 3 doubles per pixel of
   /// the segment) and which pixels' buffers hold something. Uninitialised:

@@ -105,7 +105,9 @@ class IrBackend {
   /// Copies the segment out: direct and indirect, count * bins * kChannels
   /// floats each (pixel-major, then bin, then channel), and adds the light
   /// that fell before / after the axis to `offAxis`, pixel by pixel in pixel
-  /// order (so the double sums do not depend on the segment plan).
+  /// order (so the double sums do not depend on the segment plan). What the
+  /// accumulators hold afterwards is unspecified until the next beginSegment
+  /// (the CPU backend zeroes them as it copies, so beginSegment need not).
   virtual void readSegment(float* direct, float* indirect, AxisLoss& offAxis) = 0;
 };
 
