@@ -1,4 +1,6 @@
 // Loader behaviour on tiny hand-written files.
+#include "tofsim/scene/GltfLoader.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -8,7 +10,6 @@
 
 #include "GltfTestFiles.h"
 #include "support/TempDir.h"
-#include "tofsim/scene/GltfLoader.h"
 #include "tofsim/util/Error.h"
 
 namespace tofsim::scene {
@@ -32,10 +33,8 @@ class GltfLoaderTest : public test::TempDirTest {
 };
 
 TEST_F(GltfLoaderTest, NodeTranslationMovesGeometry) {
-  const auto path = writeText(
-      dir_ / "t.gltf",
-      triangleGltf(
-          R"("nodes": [{"mesh": 0, "translation": [10, 0, -2]}], "scenes": [{"nodes": [0]}])"));
+  const auto path = writeText(dir_ / "t.gltf", triangleGltf(
+      R"("nodes": [{"mesh": 0, "translation": [10, 0, -2]}], "scenes": [{"nodes": [0]}])"));
   LoadReport report;
   const Scene scene = loadGltf(path, &report);
   ASSERT_EQ(scene.triangleCount(), 1u);
@@ -73,10 +72,8 @@ TEST_F(GltfLoaderTest, IgnoredMaterialPartsAreNamedPerMaterial) {
 }
 
 TEST_F(GltfLoaderTest, HierarchyComposesParentScaleAndChildTranslation) {
-  const auto path = writeText(
-      dir_ / "h.gltf",
-      triangleGltf(
-          R"("nodes": [{"scale": [2, 2, 2], "children": [1]}, {"mesh": 0, "translation": [1, 0, 0]}],
+  const auto path = writeText(dir_ / "h.gltf", triangleGltf(
+      R"("nodes": [{"scale": [2, 2, 2], "children": [1]}, {"mesh": 0, "translation": [1, 0, 0]}],
          "scenes": [{"nodes": [0]}])"));
   const Bounds b = loadGltf(path).bounds();
   EXPECT_FLOAT_EQ(b.min.x, 2.0f);  // 2 * (1 + 0)
@@ -86,28 +83,24 @@ TEST_F(GltfLoaderTest, HierarchyComposesParentScaleAndChildTranslation) {
 
 TEST_F(GltfLoaderTest, MatrixNodeAndRootsWithoutScene) {
   // Column-major matrix translating by (0, 5, 0); no "scenes": roots are used.
-  const auto path = writeText(
-      dir_ / "m.gltf",
-      triangleGltf(R"("nodes": [{"mesh": 0, "matrix": [1,0,0,0, 0,1,0,0, 0,0,1,0, 0,5,0,1]}])"));
+  const auto path = writeText(dir_ / "m.gltf", triangleGltf(
+      R"("nodes": [{"mesh": 0, "matrix": [1,0,0,0, 0,1,0,0, 0,0,1,0, 0,5,0,1]}])"));
   const Bounds b = loadGltf(path).bounds();
   EXPECT_FLOAT_EQ(b.min.y, 5.0f);
   EXPECT_FLOAT_EQ(b.max.y, 6.0f);
 }
 
 TEST_F(GltfLoaderTest, InstancingPlacesOneMeshTwice) {
-  const auto path = writeText(
-      dir_ / "i.gltf",
-      triangleGltf(
-          R"("nodes": [{"mesh": 0}, {"mesh": 0, "translation": [0, 0, 3]}], "scenes": [{"nodes": [0, 1]}])"));
+  const auto path = writeText(dir_ / "i.gltf", triangleGltf(
+      R"("nodes": [{"mesh": 0}, {"mesh": 0, "translation": [0, 0, 3]}], "scenes": [{"nodes": [0, 1]}])"));
   const Scene scene = loadGltf(path);
   EXPECT_EQ(scene.triangleCount(), 2u);
   EXPECT_FLOAT_EQ(scene.bounds().max.z, 3.0f);
 }
 
 TEST_F(GltfLoaderTest, MirroringFlipsWindingSoFlatNormalStaysOnTheFrontSide) {
-  const auto path = writeText(
-      dir_ / "neg.gltf",
-      triangleGltf(R"("nodes": [{"mesh": 0, "scale": [-1, 1, 1]}], "scenes": [{"nodes": [0]}])"));
+  const auto path = writeText(dir_ / "neg.gltf", triangleGltf(
+      R"("nodes": [{"mesh": 0, "scale": [-1, 1, 1]}], "scenes": [{"nodes": [0]}])"));
   const Scene scene = loadGltf(path);
   ASSERT_EQ(scene.triangleCount(), 1u);
   const Mesh& m = scene.meshes[0];
@@ -118,9 +111,8 @@ TEST_F(GltfLoaderTest, MirroringFlipsWindingSoFlatNormalStaysOnTheFrontSide) {
 }
 
 TEST_F(GltfLoaderTest, DegenerateTrianglesAreDroppedAndCounted) {
-  const auto path = writeText(dir_ / "d.gltf",
-                              triangleGltf(R"("nodes": [{"mesh": 0}])",
-                                           {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 0, 1, 1, 1, 2, 2, 2}));
+  const auto path = writeText(dir_ / "d.gltf", triangleGltf(
+      R"("nodes": [{"mesh": 0}])", {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 0, 1, 1, 1, 2, 2, 2}));
   LoadReport report;
   EXPECT_EQ(loadGltf(path, &report).triangleCount(), 1u);
   EXPECT_EQ(report.degenerateTriangles, 1u);
@@ -128,8 +120,8 @@ TEST_F(GltfLoaderTest, DegenerateTrianglesAreDroppedAndCounted) {
 
 TEST_F(GltfLoaderTest, NanPositionIsAnError) {
   const float nan = std::numeric_limits<float>::quiet_NaN();
-  const auto path = writeText(
-      dir_ / "nan.gltf", triangleGltf(R"("nodes": [{"mesh": 0}])", {0, 0, 0, nan, 0, 0, 0, 1, 0}));
+  const auto path = writeText(dir_ / "nan.gltf",
+                              triangleGltf(R"("nodes": [{"mesh": 0}])", {0, 0, 0, nan, 0, 0, 0, 1, 0}));
   const std::string e = errorOf(path);
   EXPECT_NE(e.find("nan.gltf"), std::string::npos) << e;
   EXPECT_NE(e.find("NaN"), std::string::npos) << e;
@@ -159,15 +151,11 @@ std::string indexedGltf(const std::vector<uint16_t>& indices, std::size_t positi
   appendBytes(bytes, indices);
   while (bytes.size() % 4) bytes.push_back(0);
   return R"({"asset": {"version": "2.0"},
-    "buffers": [{"byteLength": )" +
-         std::to_string(bytes.size()) + R"(, "uri": ")" + dataUri(bytes) + R"("}],
-    "bufferViews": [{"buffer": 0, "byteLength": )" +
-         std::to_string(positionViewBytes) + R"(},
-                    {"buffer": 0, "byteOffset": 36, "byteLength": )" +
-         std::to_string(2 * indices.size()) + R"(}],
+    "buffers": [{"byteLength": )" + std::to_string(bytes.size()) + R"(, "uri": ")" + dataUri(bytes) + R"("}],
+    "bufferViews": [{"buffer": 0, "byteLength": )" + std::to_string(positionViewBytes) + R"(},
+                    {"buffer": 0, "byteOffset": 36, "byteLength": )" + std::to_string(2 * indices.size()) + R"(}],
     "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3"},
-                  {"bufferView": 1, "componentType": 5123, "count": )" +
-         std::to_string(indices.size()) + R"(, "type": "SCALAR"}],
+                  {"bufferView": 1, "componentType": 5123, "count": )" + std::to_string(indices.size()) + R"(, "type": "SCALAR"}],
     "meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "indices": 1}]}],
     "nodes": [{"mesh": 0}]})";
 }
@@ -196,8 +184,7 @@ TEST_F(GltfLoaderTest, SparsePositionsAreApplied) {
   appendBytes(bytes, std::vector<uint32_t>{1});
   appendBytes(bytes, std::vector<float>{5, 0, 0});
   const auto path = writeText(dir_ / "sparse.gltf", R"({"asset": {"version": "2.0"},
-    "buffers": [{"byteLength": 52, "uri": ")" + dataUri(bytes) +
-                                                        R"("}],
+    "buffers": [{"byteLength": 52, "uri": ")" + dataUri(bytes) + R"("}],
     "bufferViews": [{"buffer": 0, "byteLength": 36}, {"buffer": 0, "byteOffset": 36, "byteLength": 4},
                     {"buffer": 0, "byteOffset": 40, "byteLength": 12}],
     "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3",
@@ -209,23 +196,18 @@ TEST_F(GltfLoaderTest, SparsePositionsAreApplied) {
 }
 
 TEST_F(GltfLoaderTest, UnsupportedRequiredExtensionInGlbJson) {
-  const std::string json =
-      R"({"asset": {"version": "2.0"}, "extensionsRequired": ["EXT_meshopt_compression"]})";
+  const std::string json = R"({"asset": {"version": "2.0"}, "extensionsRequired": ["EXT_meshopt_compression"]})";
   std::string padded = json;
   while (padded.size() % 4) padded += ' ';
   std::string glb = "glTF";
-  const auto u32 = [&](uint32_t v) {
-    for (int i = 0; i < 4; ++i) glb += char(v >> (8 * i) & 0xFF);
-  };
+  const auto u32 = [&](uint32_t v) { for (int i = 0; i < 4; ++i) glb += char(v >> (8 * i) & 0xFF); };
   u32(2);
   u32(12 + 8 + uint32_t(padded.size()));
   u32(uint32_t(padded.size()));
   u32(0x4E4F534A);
   glb += padded;
   const std::string e = errorOf(writeText(dir_ / "meshopt.glb", glb));
-  EXPECT_NE(e.find("required extension EXT_meshopt_compression is not supported"),
-            std::string::npos)
-      << e;
+  EXPECT_NE(e.find("required extension EXT_meshopt_compression is not supported"), std::string::npos) << e;
 }
 
 }  // namespace
