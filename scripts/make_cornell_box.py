@@ -20,11 +20,19 @@ light opening; tofsim uses point/spot lights). The blocks face outward; each
 block also gets a bottom face on the floor so it is a closed solid (invisible,
 but it keeps the blocks watertight). 5 x 2 + 2 x 6 x 2 = 34 triangles.
 
-Standard library only. Usage: python3 scripts/make_cornell_box.py [out.gltf]
+Glossy variant (--glossy, configs/scenes/cornell_box_glossy.gltf): the same
+box with two surfaces for render.materials: gltf, keeping the published white
+reflectance as their base colour: the floor a glossy dielectric (metallic 0,
+roughness 0.25: a polished floor that mirrors the blocks and walls) and the
+tall block a rough metal (metallic 1, roughness 0.35: its base colour is its
+reflectance at normal incidence). Everything else is as in the diffuse box.
+
+Standard library only. Usage: python3 scripts/make_cornell_box.py [--glossy] [out.gltf]
 """
 
 import math
 import struct
+import sys
 
 from gltf_common import embed_buffer, write_gltf
 
@@ -37,6 +45,14 @@ MATERIALS = [
     ("red", (0.63, 0.065, 0.05)),
     ("green", (0.14, 0.45, 0.091)),
 ]
+
+# The glossy variant's extra materials (name, rgb, metallic, roughness) and
+# the groups that use them.
+GLOSSY_MATERIALS = [
+    ("white_glossy", (0.725, 0.71, 0.68), 0.0, 0.25),
+    ("white_metal", (0.725, 0.71, 0.68), 1.0, 0.35),
+]
+GLOSSY_GROUPS = {"floor": "white_glossy", "tall_block": "white_metal"}
 
 ROOM = [  # name, material, quad (mm), normal direction: "in" the room
     ("floor", "white", [(552.8, 0.0, 0.0), (0.0, 0.0, 0.0), (0.0, 0.0, 559.2), (549.6, 0.0, 559.2)]),
@@ -115,9 +131,13 @@ def build_groups():
     return groups
 
 
-def build_gltf():
+def build_gltf(glossy=False):
     groups = build_groups()
-    material_index = {name: i for i, (name, _) in enumerate(MATERIALS)}
+    materials = [(name, rgb, 0.0, 1.0) for name, rgb in MATERIALS]
+    if glossy:
+        materials += GLOSSY_MATERIALS
+        groups = [(name, GLOSSY_GROUPS.get(name, material), tris) for name, material, tris in groups]
+    material_index = {m[0]: i for i, m in enumerate(materials)}
     blob = bytearray()
     gltf = {
         "asset": {"version": "2.0", "generator": "tofsim scripts/make_cornell_box.py",
@@ -126,8 +146,8 @@ def build_gltf():
         "scenes": [{"name": "cornell_box", "nodes": []}],
         "nodes": [], "meshes": [], "accessors": [], "bufferViews": [],
         "materials": [{"name": name, "pbrMetallicRoughness": {
-            "baseColorFactor": [r, g, b, 1.0], "metallicFactor": 0.0, "roughnessFactor": 1.0}}
-            for name, (r, g, b) in MATERIALS],
+            "baseColorFactor": [r, g, b, 1.0], "metallicFactor": metallic, "roughnessFactor": roughness}}
+            for name, (r, g, b), metallic, roughness in materials],
     }
 
     def add_vec3(values):
@@ -168,7 +188,10 @@ def build_gltf():
 
 
 def main():
-    write_gltf(build_gltf(), "cornell_box.gltf")
+    glossy = "--glossy" in sys.argv[1:]
+    if glossy:
+        sys.argv.remove("--glossy")
+    write_gltf(build_gltf(glossy), "cornell_box_glossy.gltf" if glossy else "cornell_box.gltf")
 
 
 if __name__ == "__main__":

@@ -122,7 +122,8 @@ TEST_F(BatchCliGLTest, FailingRunIsReportedAndTheOthersComplete) {
   EXPECT_EQ(statusOf(r.output, "good1"), "done") << r.output;
   EXPECT_EQ(statusOf(r.output, "broken"), "failed") << r.output;
   EXPECT_EQ(statusOf(r.output, "good2"), "done") << r.output;
-  EXPECT_NE(r.output.find("memory_budget"), std::string::npos) << r.output;  // the reason, from log.txt
+  EXPECT_NE(r.output.find("memory_budget"), std::string::npos)
+      << r.output;  // the reason, from log.txt
   EXPECT_FALSE(fs::exists(dir_ / "out" / "broken" / "manifest.json"));
   EXPECT_TRUE(fs::exists(dir_ / "out" / "good2" / "manifest.json"));
 }
@@ -176,6 +177,16 @@ TEST_F(BatchCliGLTest, InfoDescribesTheCornellBox) {
   EXPECT_NE(r.output.find("cornell_camera"), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("albedo [0.630, 0.065, 0.050]"), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("bounds (m)"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("lambertian: albedo / pi"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("gltf:       dielectric"), std::string::npos) << r.output;
+  const CommandResult glossy =
+      runCli("info " + std::string(TOFSIM_SOURCE_DIR) + "/configs/scenes/cornell_box_glossy.gltf");
+  ASSERT_EQ(glossy.exitCode, 0) << glossy.output;
+  EXPECT_NE(glossy.output.find("gltf:       metal: F(albedo) GGX; metallic 1, roughness 0.35"),
+            std::string::npos)
+      << glossy.output;
+  EXPECT_NE(glossy.output.find("albedo / pi (metallic, roughness ignored)"), std::string::npos)
+      << glossy.output;
 }
 
 }  // namespace

@@ -71,6 +71,7 @@ render:
     samples_per_pixel: 16
     threads: 2
     pixel_filter: point
+    sampling: cosine
 output:
   directory: elsewhere
   transient: false

@@ -140,6 +140,18 @@ TEST_F(RunConfigTest, ReferencePixelFilterDefaultsToBoxAndRoundTrips) {
   EXPECT_NE(e.find("must be box or point"), std::string::npos) << e;
 }
 
+TEST_F(RunConfigTest, ReferenceSamplingDefaultsToBrdfAndRoundTrips) {
+  const RunConfig c = loadRunConfig(write(kValid));
+  EXPECT_EQ(c.reference.sampling, ReferenceSampling::Brdf);
+  EXPECT_NE(effectiveConfigYaml(c).find("sampling: brdf"), std::string::npos);
+  const RunConfig p =
+      loadRunConfig(write(kValid), {parseOverride("render.reference.sampling=cosine")});
+  EXPECT_EQ(p.reference.sampling, ReferenceSampling::Cosine);
+  EXPECT_NE(effectiveConfigYaml(p).find("sampling: cosine"), std::string::npos);
+  const std::string e = errorOf(kValid, {parseOverride("render.reference.sampling=vndf")});
+  EXPECT_NE(e.find("must be brdf or cosine"), std::string::npos) << e;
+}
+
 TEST_F(RunConfigTest, EffectiveConfigRoundTrips) {
   const RunConfig c = loadRunConfig(write(kValid));
   const auto path = dir_ / "effective.yaml";

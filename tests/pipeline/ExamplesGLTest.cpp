@@ -37,6 +37,7 @@ TEST_F(ExamplesGLTest, EveryExampleKeepsItsLightOnTheAxes) {
       {"spad_lidar", " --set sensors.0.plot_pixels=[[8,8]]"},
       {"streak_femto", " --set sensors.0.rows=[8]"},
       {"cwtof_corner", ""},
+      {"glossy_floor", " --set render.reference.samples_per_pixel=8"},
   };
   for (const auto& [name, sets] : examples) {
     const std::filesystem::path out = dir_ / name;
@@ -46,6 +47,16 @@ TEST_F(ExamplesGLTest, EveryExampleKeepsItsLightOnTheAxes) {
     ASSERT_EQ(r.exitCode, 0) << name << "\n" << r.output;
     expectHoldsItsLight(out, r.output);
   }
+}
+
+// The glossy-floor example (renderer: reference, render.materials: gltf)
+// validates strictly: no proven cut of its light by the time axis.
+TEST_F(ExamplesGLTest, GlossyFloorValidates) {
+  const test::CommandResult r = test::runCli("validate " + kConfigs + "glossy_floor.yaml --strict");
+  EXPECT_EQ(r.exitCode, 0) << r.output;
+  const test::CommandResult typo = test::runCli(
+      "validate " + kConfigs + "glossy_floor.yaml --set render.reference.sampling=vndf");
+  EXPECT_NE(typo.exitCode, 0) << typo.output;
 }
 
 TEST_F(ExamplesGLTest, EverySweepRunKeepsItsLightOnTheAxes) {

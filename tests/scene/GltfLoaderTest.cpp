@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 #include <string>
+#include <vector>
 
 #include "GltfTestFiles.h"
 #include "support/TempDir.h"
@@ -45,6 +46,29 @@ TEST_F(GltfLoaderTest, NodeTranslationMovesGeometry) {
   ASSERT_EQ(scene.materials.size(), 1u);
   EXPECT_EQ(scene.materials[0].name, "default");
   EXPECT_FLOAT_EQ(scene.materials[0].albedo.g, 0.8f);
+}
+
+// tofsim info lists, per material, what no renderer reads.
+TEST_F(GltfLoaderTest, IgnoredMaterialPartsAreNamedPerMaterial) {
+  const auto path = writeText(dir_ / "m.gltf", triangleGltf(R"("nodes": [{"mesh": 0}],
+      "scenes": [{"nodes": [0]}],
+      "materials": [
+        {"name": "plain", "pbrMetallicRoughness": {"metallicFactor": 0.0}},
+        {"name": "fancy", "emissiveFactor": [1, 0, 0], "alphaMode": "BLEND",
+         "extensions": {"KHR_materials_ior": {"ior": 1.7},
+                        "KHR_materials_specular": {"specularFactor": 0.5},
+                        "KHR_materials_clearcoat": {"clearcoatFactor": 1.0}}}])"));
+  LoadReport report;
+  const Scene scene = loadGltf(path, &report);
+  ASSERT_EQ(report.ignoredMaterialParts.size(), 2u);
+  EXPECT_TRUE(report.ignoredMaterialParts[0].empty());
+  const std::vector<std::string> expected = {"emission", "alphaMode BLEND (rendered opaque)",
+                                             "KHR_materials_clearcoat",
+                                             "KHR_materials_ior (dielectric F0 stays 0.04)",
+                                             "KHR_materials_specular (dielectric F0 stays 0.04)"};
+  EXPECT_EQ(report.ignoredMaterialParts[1], expected);
+  EXPECT_EQ(report.emissiveMaterials, 1u);
+  EXPECT_EQ(scene.materials.at(1).name, "fancy");
 }
 
 TEST_F(GltfLoaderTest, HierarchyComposesParentScaleAndChildTranslation) {

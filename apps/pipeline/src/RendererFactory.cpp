@@ -31,6 +31,9 @@ RendererChoice makeRenderer(const config::RunConfig& config, gl::EglPlatform egl
     settings.pixel_filter = config.reference.pixel_filter == config::ReferencePixelFilter::Box
                                 ? reference::PixelFilter::Box
                                 : reference::PixelFilter::Point;
+    settings.sampling = config.reference.sampling == config::ReferenceSampling::Brdf
+                            ? reference::ContinuationSampling::BrdfMixture
+                            : reference::ContinuationSampling::Cosine;
     return {std::make_unique<reference::ReferenceRenderer>(settings), "reference"};
   }
   const config::IrBackendKind backend = resolveIrBackend(config.backend);

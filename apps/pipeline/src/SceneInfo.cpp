@@ -1,7 +1,10 @@
 #include "tofsim/pipeline/SceneInfo.h"
 
 #include <cstdio>
+#include <string>
+#include <vector>
 
+#include "tofsim/physics/GltfBrdf.h"
 #include "tofsim/scene/GltfLoader.h"
 
 namespace tofsim::pipeline {
@@ -14,12 +17,30 @@ std::string format(const char* fmt, auto... args) {
   return buffer;
 }
 
-// What render.materials: gltf makes of a material (gltf_brdf.glsl); with
-// lambertian (the default) every material is albedo / pi.
+// What render.materials: lambertian makes of a material: albedo / pi, the
+// glTF metallic-roughness values unread.
+std::string lambertianKind(const scene::Material& m) {
+  const bool dropsGltf = m.metallic > 0.0f || m.roughness < 1.0f || m.metallicRoughnessTexture >= 0;
+  return dropsGltf ? "albedo / pi (metallic, roughness ignored)" : "albedo / pi";
+}
+
+// What render.materials: gltf makes of it (shaders/gltf_brdf.glsl).
 std::string gltfKind(const scene::Material& m) {
-  const char* kind = m.metallic <= 0.0f ? "dielectric" : m.metallic >= 1.0f ? "metal" : "mixed";
-  return format("gltf: %s, metallic %.3g, roughness %.3g%s", kind, m.metallic, m.roughness,
-                m.metallicRoughnessTexture >= 0 ? " x texture (B, G)" : "");
+  const bool textured = m.metallicRoughnessTexture >= 0;
+  const char* kind = textured             ? "metallic-roughness texture x factors"
+                     : m.metallic <= 0.0f ? "dielectric: (1 - F) albedo / pi + F GGX, F0 0.04"
+                     : m.metallic >= 1.0f ? "metal: F(albedo) GGX"
+                                          : "dielectric / metal mix by metallic";
+  return format("%s; metallic %.3g, roughness %.3g%s", kind, m.metallic, m.roughness,
+                textured                                   ? " (x texture B, G)"
+                : m.roughness < physics::kGltfMinRoughness ? " (clamped to 0.001)"
+                                                           : "");
+}
+
+std::string joined(const std::vector<std::string>& parts) {
+  std::string out;
+  for (const std::string& p : parts) out += (out.empty() ? "" : ", ") + p;
+  return out;
 }
 
 std::string reportText(const scene::LoadReport& r) {
@@ -61,14 +82,16 @@ std::string describeScene(const std::filesystem::path& sceneFile) {
   out += format(
       "bounds (m): min [%.4g, %.4g, %.4g]  max [%.4g, %.4g, %.4g]  size [%.4g, %.4g, %.4g]\n",
       b.min.x, b.min.y, b.min.z, b.max.x, b.max.y, b.max.z, size.x, size.y, size.z);
-  out += format(
-      "materials: %zu (render.materials: lambertian renders each as albedo / pi; gltf as said)\n",
-      s.materials.size());
+  out += format("materials: %zu (as each render.materials mode renders it)\n", s.materials.size());
   for (std::size_t i = 0; i < s.materials.size(); ++i) {
     const scene::Material& m = s.materials[i];
-    out += format("  [%zu] %-24s albedo [%.3f, %.3f, %.3f]%s  (%s)\n", i, m.name.c_str(),
-                  m.albedo.x, m.albedo.y, m.albedo.z, m.albedoTexture >= 0 ? " x texture" : "",
-                  gltfKind(m).c_str());
+    out += format("  [%zu] %-24s albedo [%.3f, %.3f, %.3f]%s\n", i, m.name.c_str(), m.albedo.x,
+                  m.albedo.y, m.albedo.z, m.albedoTexture >= 0 ? " x texture" : "");
+    out += "        lambertian: " + lambertianKind(m) + "\n";
+    out += "        gltf:       " + gltfKind(m) + "\n";
+    if (i < report.ignoredMaterialParts.size() && !report.ignoredMaterialParts[i].empty()) {
+      out += "        ignored:    " + joined(report.ignoredMaterialParts[i]) + "\n";
+    }
   }
   out += format("textures: %zu\n", s.textures.size());
   out += format("cameras: %zu\n", s.cameras.size());

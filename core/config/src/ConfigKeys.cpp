@@ -117,6 +117,8 @@ const ConfigKey kRunConfigKeys[] = {
     {"render.reference.pixel_filter", "string", "", "box", "-",
      "`box`: a pixel integrates its area (stratified, jittered sub-pixel points, one per path); "
      "`point`: one ray through the pixel centre, the G-buffer's view (closed-form tests)"},
+    {"render.reference.sampling", "string", "", "brdf", "-",
+     "continuation at glTF surfaces (`render.materials: gltf`): `brdf` draws from a mixture of the cosine lobe and GGX visible normals weighted by the mixture's pdf (one-sample MIS); `cosine`: cosine sampling weighted by pi f (noisier on glossy surfaces; the bytes of before). Lambertian surfaces are cosine-sampled either way"},
     {"output.directory", "string", "", "out", "-",
      "output folder (`-o` overrides)"},
     {"output.transient", "bool", "", "true", "-",

@@ -80,6 +80,7 @@ YAML::Node renderNode(const RunConfig& config) {
   ref["threads"] = config.reference.threads;
   ref["pixel_filter"] =
       config.reference.pixel_filter == ReferencePixelFilter::Box ? "box" : "point";
+  ref["sampling"] = config.reference.sampling == ReferenceSampling::Brdf ? "brdf" : "cosine";
   n["reference"] = ref;
   return n;
 }

@@ -204,6 +204,12 @@ void parseRender(const ConfigNode& node, RunConfig& out) {
     } else {
       reference->failKey("pixel_filter", "must be box or point (got '" + filter + "')");
     }
+    const std::string sampling = reference->getString("sampling", "brdf");
+    if (sampling == "brdf" || sampling == "cosine") {
+      ref.sampling = sampling == "brdf" ? ReferenceSampling::Brdf : ReferenceSampling::Cosine;
+    } else {
+      reference->failKey("sampling", "must be brdf or cosine (got '" + sampling + "')");
+    }
   }
 }
 

@@ -3,8 +3,9 @@
 #include <algorithm>
 #include <cmath>
 
-#include "tofsim/reference/Sampling.h"
 #include "tofsim/physics/GltfBrdf.h"
+#include "tofsim/physics/GltfSampling.h"
+#include "tofsim/reference/Sampling.h"
 #include "tofsim/volume/PhysicalConstants.h"
 
 namespace tofsim::reference {
@@ -15,13 +16,15 @@ constexpr int kChannels = 3;
 }  // namespace
 
 PathIntegrator::PathIntegrator(const RayScene& scene, const capture::RenderJob& job,
-                               int32_t bounces, int32_t samplesPerPixel, PixelFilter pixelFilter)
+                               int32_t bounces, int32_t samplesPerPixel, PixelFilter pixelFilter,
+                               ContinuationSampling sampling)
     : scene_(scene),
       job_(job),
       bounces_(bounces),
       samplesPerPixel_(samplesPerPixel),
       pixelFilter_(pixelFilter),
-      gltf_(job.settings.materials == capture::MaterialModel::Gltf) {}
+      gltf_(job.settings.materials == capture::MaterialModel::Gltf),
+      sampling_(sampling) {}
 
 PathIntegrator::Radiance PathIntegrator::lightReflectedAt(const SurfaceHit& hit,
                                                           const glm::vec3& toViewer) const {
@@ -66,31 +69,53 @@ void PathIntegrator::renderPixel(int32_t x, int32_t y, PixelOutput& out,
   }
 }
 
-glm::dvec3 PathIntegrator::continuationWeight(const SurfaceHit& hit, const glm::vec3& toLight,
-                                              const glm::vec3& toViewer) const {
-  if (!gltf_) return glm::dvec3(hit.albedo);
-  // pdf = cos / pi: f cos / pdf = pi f, unbiased for any BRDF (noisy for glossy ones).
-  return kPi * glm::dvec3(physics::gltfBrdf(hit.normal_world, toLight, toViewer, hit.albedo,
-                                            hit.metallic, hit.roughness));
+PathIntegrator::Continuation PathIntegrator::sampleContinuation(const SurfaceHit& hit,
+                                                                const glm::vec3& toViewer,
+                                                                Pcg32& rng) const {
+  const float u1 = rng.nextFloat();
+  const float u2 = rng.nextFloat();
+  Continuation out;
+  if (gltf_ && sampling_ == ContinuationSampling::BrdfMixture) {
+    // One-sample MIS over the cosine and GGX visible-normal lobes (balance
+    // heuristic: f cos / the mixture's pdf). Point lights are delta lights, so
+    // light sampling (next-event estimation) is the only strategy for the
+    // direct light; the mixture is what combines strategies here.
+    const float uLobe = rng.nextFloat();
+    const physics::GltfBounce b = physics::sampleGltfBounce(
+        hit.normal_world, toViewer, hit.albedo, hit.metallic, hit.roughness, uLobe, u1, u2);
+    out.direction = b.direction;
+    out.weight = glm::dvec3(b.weight);
+    out.ends = out.weight == glm::dvec3(0.0);
+    return out;
+  }
+  out.direction = cosineSampleHemisphere(hit.normal_world, u1, u2);
+  if (!gltf_) {
+    out.weight = glm::dvec3(hit.albedo);
+  } else {
+    // pdf = cos / pi: f cos / pdf = pi f, unbiased for any BRDF (noisy for glossy ones).
+    out.weight = kPi * glm::dvec3(physics::gltfBrdf(hit.normal_world, out.direction, toViewer,
+                                                    hit.albedo, hit.metallic, hit.roughness));
+  }
+  return out;
 }
 
 void PathIntegrator::traceContinuation(const SurfaceHit& hit, const glm::vec3& toCamera,
                                        double toCamera_m, Pcg32& rng, double* histogram,
                                        AxisLoss& outside) const {
-  // Cosine-sampled directions, pdf = cos / pi: the throughput gains f cos / pdf
-  // (albedo for a Lambertian surface).
+  // At each vertex the throughput gains f cos / pdf of the sampled direction
+  // (albedo for a cosine-sampled Lambertian surface).
   SurfaceHit current = hit;
   glm::vec3 toViewer = toCamera;
   glm::dvec3 throughput(1.0);
   double fromCamera_m = toCamera_m;
   for (int32_t depth = 2; depth <= bounces_; ++depth) {
-    const float u1 = rng.nextFloat();
-    const float u2 = rng.nextFloat();
-    const glm::vec3 wi = cosineSampleHemisphere(current.normal_world, u1, u2);
+    const Continuation step = sampleContinuation(current, toViewer, rng);
+    const glm::vec3 wi = step.direction;
     if (glm::dot(wi, current.geometric_world) <= 0.0f) break;  // below the true surface
+    if (step.ends) break;  // mixture sample below the shading normal (or the float limit)
     const std::optional<SurfaceHit> next = scene_.intersect(scene_.offsetOrigin(current, wi), wi);
     if (!next) break;
-    throughput *= continuationWeight(current, wi, toViewer);
+    throughput *= step.weight;
     toViewer = -wi;
     fromCamera_m += glm::length(next->position_world - current.position_world);
     const Radiance reflected = lightReflectedAt(*next, toViewer);

@@ -23,7 +23,8 @@ class PathIntegrator {
  public:
   /// bounces >= 1; samplesPerPixel >= 1.
   PathIntegrator(const RayScene& scene, const capture::RenderJob& job, int32_t bounces,
-                 int32_t samplesPerPixel, PixelFilter pixelFilter);
+                 int32_t samplesPerPixel, PixelFilter pixelFilter,
+                 ContinuationSampling sampling = ContinuationSampling::BrdfMixture);
 
   /// Renders pixel (x, y). `scratch` is reused between calls of one thread.
   void renderPixel(int32_t x, int32_t y, PixelOutput& out, std::vector<double>& scratch) const;
@@ -39,10 +40,20 @@ class PathIntegrator {
   /// light -> hit distance. The BRDF is render.materials' (Lambertian: the
   /// same for every toViewer).
   Radiance lightReflectedAt(const SurfaceHit& hit, const glm::vec3& toViewer) const;
-  /// f(toLight, toViewer) cos / pdf of a cosine-sampled direction toLight:
-  /// albedo for a Lambertian surface, pi f for the glTF BRDF.
-  glm::dvec3 continuationWeight(const SurfaceHit& hit, const glm::vec3& toLight,
-                                const glm::vec3& toViewer) const;
+  /// The next direction of a path at `hit` seen from toViewer, and the factor
+  /// f cos / pdf its throughput gains (0: the path ends).
+  struct Continuation {
+    glm::vec3 direction{0.0f};
+    glm::dvec3 weight{0.0};
+    /// The path ends here (only the mixture ends paths on a zero weight: the
+    /// cosine paths keep the random stream of the renderer before it).
+    bool ends = false;
+  };
+  /// Lambertian, or glTF with ContinuationSampling::Cosine: a cosine-sampled
+  /// direction (two draws), weight albedo or pi f. glTF with BrdfMixture: the
+  /// cosine + GGX VNDF mixture (three draws), weight f cos / mixture pdf.
+  Continuation sampleContinuation(const SurfaceHit& hit, const glm::vec3& toViewer,
+                                  Pcg32& rng) const;
   /// Point filter: one primary ray through the pixel centre, direct term exact.
   void renderPixelCentre(int32_t x, int32_t y, PixelOutput& out,
                          std::vector<double>& scratch) const;
@@ -66,6 +77,7 @@ class PathIntegrator {
   int32_t samplesPerPixel_;
   PixelFilter pixelFilter_;
   bool gltf_;  ///< render.materials: gltf
+  ContinuationSampling sampling_;
 };
 
 }  // namespace tofsim::reference

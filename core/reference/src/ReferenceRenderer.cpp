@@ -8,9 +8,9 @@
 #include <vector>
 
 #include "PathIntegrator.h"
-#include "tofsim/reference/RayScene.h"
 #include "tofsim/capture/DirectLightView.h"
 #include "tofsim/ir/SegmentStream.h"
+#include "tofsim/reference/RayScene.h"
 #include "tofsim/util/Error.h"
 
 namespace tofsim::reference {
@@ -86,7 +86,7 @@ RenderResult ReferenceRenderer::render(const RenderJob& job, SegmentSink& sink,
 
   const RayScene rayScene(*job.scene, threads);
   const PathIntegrator integrator(rayScene, job, bounces, settings_.samples_per_pixel,
-                                  settings_.pixel_filter);
+                                  settings_.pixel_filter, settings_.sampling);
   const DirectLightView lightView = lightSeenByCamera(job, rayScene);
 
   RenderResult result;

@@ -86,6 +86,9 @@ struct MaterialDesc {
   bool metallic = false;
   bool emissive = false;
   bool transmissive = false;
+  /// The parts of the material no renderer reads (for tofsim info), in order:
+  /// emission, normal and occlusion textures, alpha, then every extension.
+  std::vector<std::string> ignored;
 };
 
 /// Decoded pixels as tinygltf delivers them (stb_image): 8 or 16 bits.

@@ -96,6 +96,7 @@ void convertMaterials(const GltfDocument& doc, Scene& scene, LoadReport& report)
     report.metallicMaterials += m.metallic;
     report.emissiveMaterials += m.emissive;
     report.transmissiveMaterials += m.transmissive;
+    report.ignoredMaterialParts.push_back(m.ignored);
     scene.materials.push_back(std::move(out));
   }
 }

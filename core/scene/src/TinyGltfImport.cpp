@@ -77,6 +77,31 @@ Primitive convert(const tinygltf::Primitive& p) {
   return out;
 }
 
+// What of a material no renderer reads: tofsim lights are point/spot lights,
+// surfaces are opaque and two-sided, shading normals are the vertex normals,
+// and the BRDF's dielectric F0 is the pinned 0.04 (shaders/gltf_brdf.glsl), so
+// KHR_materials_ior and KHR_materials_specular do not change it.
+std::vector<std::string> ignoredParts(const tinygltf::Material& m, bool emissive) {
+  std::vector<std::string> out;
+  if (emissive) out.push_back("emission");
+  if (m.normalTexture.index >= 0) out.push_back("normalTexture");
+  if (m.occlusionTexture.index >= 0) out.push_back("occlusionTexture");
+  if (!m.alphaMode.empty() && m.alphaMode != "OPAQUE") {
+    out.push_back("alphaMode " + m.alphaMode + " (rendered opaque)");
+  }
+  for (const auto& [name, value] : m.extensions) {
+    (void)value;
+    if (name == "KHR_materials_ior" || name == "KHR_materials_specular") {
+      out.push_back(name + " (dielectric F0 stays 0.04)");
+    } else if (name == "KHR_materials_transmission") {
+      out.push_back(name + " (rendered opaque)");
+    } else {
+      out.push_back(name);
+    }
+  }
+  return out;
+}
+
 MaterialDesc convert(const tinygltf::Model& model, const tinygltf::Material& m) {
   MaterialDesc out;
   out.name = m.name;
@@ -103,6 +128,7 @@ MaterialDesc convert(const tinygltf::Model& model, const tinygltf::Material& m) 
       m.emissiveTexture.index >= 0 || std::any_of(m.emissiveFactor.begin(), m.emissiveFactor.end(),
                                                   [](double v) { return v != 0.0; });
   out.transmissive = m.extensions.count("KHR_materials_transmission") > 0;
+  out.ignored = ignoredParts(m, out.emissive);
   return out;
 }
 

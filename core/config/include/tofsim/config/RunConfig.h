@@ -46,12 +46,17 @@ const char* irBackendName(IrBackendKind kind);
 /// render.reference.pixel_filter: a pixel's area (box) or its centre (point).
 enum class ReferencePixelFilter { Box, Point };
 
+/// render.reference.sampling: how paths continue at glTF surfaces: the cosine
+/// + GGX visible-normal mixture (brdf) or cosine sampling alone (cosine).
+enum class ReferenceSampling { Brdf, Cosine };
+
 /// render.reference: the CPU path tracer's settings (core/reference).
 struct ReferenceConfig {
   int32_t bounces = 2;             ///< 1 direct only, 2 direct + one indirect, n
   int32_t samples_per_pixel = 64;  ///< indirect paths per pixel
   int32_t threads = 0;             ///< 0: all hardware threads
   ReferencePixelFilter pixel_filter = ReferencePixelFilter::Box;
+  ReferenceSampling sampling = ReferenceSampling::Brdf;
 };
 
 /// Tone map of the transient video and frame PNGs (tofsim/imaging/Video.h).

@@ -10,7 +10,8 @@
 //    hit (with point: no noise), the
 //    same formula and time binning as the GL direct gather. Goes to Segment::direct,
 //    with the light seen straight by the camera (capture::DirectLightView);
-//  - bounces 2..n: samples_per_pixel cosine-sampled continuations of fixed depth
+//  - bounces 2..n: samples_per_pixel continuations of fixed depth, cosine-sampled
+//    (with render.materials: gltf, drawn from the cosine + GGX VNDF mixture)
 //    (no Russian roulette), next-event estimation towards the light at every
 //    vertex, each contribution binned at its full optical path. Segment::indirect.
 // Deterministic: every pixel draws from its own generator seeded with
@@ -27,6 +28,13 @@ namespace tofsim::reference {
 /// (point, the G-buffer's view: kept for closed-form tests at pixel centres).
 enum class PixelFilter { Box, Point };
 
+/// How a path continues at a surface with render.materials: gltf (Lambertian
+/// surfaces are always cosine-sampled): BrdfMixture draws from the one-sample
+/// MIS mixture of the cosine lobe and GGX visible normals
+/// (tofsim/physics/GltfSampling.h); Cosine keeps cosine sampling weighted by
+/// pi f (for variance comparisons; the bytes of the renderer before the mixture).
+enum class ContinuationSampling { BrdfMixture, Cosine };
+
 struct ReferenceSettings {
   /// Surface interactions per path: 1 = direct only, 2 = direct + one indirect
   /// bounce (the paper's), n = up to n - 1 indirect bounces. >= 1.
@@ -39,6 +47,8 @@ struct ReferenceSettings {
   PixelFilter pixel_filter = PixelFilter::Box;
   /// Worker threads; 0 = std::thread::hardware_concurrency().
   int32_t threads = 0;
+  /// Direction sampling of glTF surfaces (render.reference.sampling).
+  ContinuationSampling sampling = ContinuationSampling::BrdfMixture;
 };
 
 class ReferenceRenderer : public capture::Renderer {

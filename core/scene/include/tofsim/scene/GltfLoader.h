@@ -13,7 +13,11 @@
 // What is not used (counted in LoadReport so callers can warn): points and
 // lines, orthographic cameras, zero-area triangles, and the emissive and
 // transmissive parts of materials (lights are point/spot lights configured
-// separately): those materials render as their base colour. Metallic
+// separately): those materials render as their base colour. Per material,
+// LoadReport::ignoredMaterialParts names what is not read: emission, normal
+// and occlusion textures, alphaMode, and every material extension
+// (KHR_materials_ior and KHR_materials_specular included: the dielectric F0
+// stays the pinned 0.04). Metallic
 // materials are counted too: they render as diffuse base colour under the
 // default render.materials: lambertian. Morph targets, skins and animations
 // are ignored.
@@ -38,7 +42,11 @@ struct LoadReport {
   std::size_t emissiveMaterials = 0;      ///< emissiveFactor != 0 or an emissive texture
   std::size_t transmissiveMaterials = 0;  ///< KHR_materials_transmission
   std::size_t orthographicCameras = 0;    ///< skipped
-  std::vector<std::string> warnings;      ///< tinygltf's warnings and the loader's own
+  /// Per material of the file (Scene::materials order; the loader's default
+  /// material, added after them, has none): the parts no renderer reads, e.g.
+  /// "emission", "normalTexture", "KHR_materials_ior (dielectric F0 stays 0.04)".
+  std::vector<std::vector<std::string>> ignoredMaterialParts;
+  std::vector<std::string> warnings;  ///< tinygltf's warnings and the loader's own
 };
 
 /// Loads a .gltf or .glb. Throws tofsim::InputError naming the file (and the
