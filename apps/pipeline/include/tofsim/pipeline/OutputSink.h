@@ -63,7 +63,7 @@ class OutputSink : public capture::SegmentSink {
   std::vector<double> steady_;
   std::vector<float> scratch_, directScratch_, indirectScratch_, bounceScratch_;
   int32_t forwardBounces_ = 0;
-  std::vector<std::vector<float>> forwardedBounces_;  ///< bounces 2.. when forwardBounces_ >= 2
+  std::vector<std::vector<float>> forwardedBounces_;  ///< bounces 1..N when forwardBounces_ >= 2
   std::size_t nonFinite_ = 0;
   std::optional<TransientVolume> volume_;
   Forward forward_;
