@@ -2,13 +2,17 @@
 // reference path tracer needs to reach the error of a transient instant
 // radiosity render, both measured against a long-converged reference, all in
 // one run on one machine.
-// Usage: equal_error SCENE.gltf [resolution] [gl|cpu] [point|box]
+// Usage: equal_error SCENE.gltf [resolution] [gl|cpu] [point|box] [bounces]
 //  - the IR backend, default gl (llvmpipe without a GPU);
 //  - the pixel model (issue 14), default point: the ground truth and the
 //    reference sweep use that render.reference.pixel_filter. point: IR with
 //    render.pixel_footprint false (both sample pixel centres, issue 4's
 //    bench); box: the pixel-area truth, and every IR setting is run with the
-//    footprint (vpl_footprint true) and without it (pixel_footprint false).
+//    footprint (vpl_footprint true) and without it (pixel_footprint false);
+//  - bounces N (issue 15): IR with render.indirect.bounces N against the
+//    reference with N + 1 interactions (truth and sweep alike) on a longer
+//    axis, 1.5 .. 6.5 m (500 bins of 1 cm), that holds the later bounces'
+//    light; without it, issue 4's bench: 1 bounce, 1.5 .. 3.5 m.
 
 #include <chrono>
 #include <cmath>
@@ -34,8 +38,8 @@ namespace {
 
 using namespace tofsim;
 
-capture::RenderJob cornellJob(const scene::Scene& scene, int resolution) {
-  capture::RenderJob job = test::cornellBoxJob(scene, resolution, 200, 0.01);
+capture::RenderJob cornellJob(const scene::Scene& scene, int resolution, int bins) {
+  capture::RenderJob job = test::cornellBoxJob(scene, resolution, bins, 0.01);
   job.settings.shadow_map_resolution = 1024;
   return job;
 }
@@ -56,8 +60,9 @@ Measured measure(const capture::RenderJob& job, const TransientVolume& truth, Re
 }
 
 Measured referenceRun(const capture::RenderJob& job, const TransientVolume& truth, int spp,
-                      reference::PixelFilter filter) {
+                      reference::PixelFilter filter, int bounces) {
   reference::ReferenceSettings s;
+  s.bounces = bounces + 1;
   s.pixel_filter = filter;
   s.samples_per_pixel = spp;
   return measure(job, truth, [&](capture::VolumeCollector& out) {
@@ -111,11 +116,14 @@ std::vector<IrCase> irCases(bool box) {
   return cases;
 }
 
-// Ground truth: 2 bounces (the transport IR simulates), many paths, seed 99.
-TransientVolume groundTruth(const capture::RenderJob& job, reference::PixelFilter filter) {
+// Ground truth: the transport IR simulates (its bounces + 1 interactions),
+// many paths, seed 99.
+TransientVolume groundTruth(const capture::RenderJob& job, reference::PixelFilter filter,
+                            int bounces) {
   capture::RenderJob truthJob = job;
   truthJob.settings.seed = 99;
   reference::ReferenceSettings truthSettings;
+  truthSettings.bounces = bounces + 1;
   truthSettings.pixel_filter = filter;
   truthSettings.samples_per_pixel = 16384;
   capture::VolumeCollector truthOut(job.camera.width, job.camera.height, job.settings.time, 3);
@@ -123,9 +131,10 @@ TransientVolume groundTruth(const capture::RenderJob& job, reference::PixelFilte
   reference::ReferenceRenderer(truthSettings).render(truthJob, truthOut);
   const double truthSeconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  std::printf("ground truth: reference, pixel_filter %s, %d paths/pixel, %.1f s\n\n",
-              filter == reference::PixelFilter::Box ? "box" : "point",
-              truthSettings.samples_per_pixel, truthSeconds);
+  std::printf(
+      "ground truth: reference, %d interactions, pixel_filter %s, %d paths/pixel, %.1f s\n\n",
+      truthSettings.bounces, filter == reference::PixelFilter::Box ? "box" : "point",
+      truthSettings.samples_per_pixel, truthSeconds);
   return truthOut.total();
 }
 
@@ -133,12 +142,20 @@ TransientVolume groundTruth(const capture::RenderJob& job, reference::PixelFilte
 
 int main(int argc, char** argv) {
   if (argc < 2) {
-    std::fprintf(stderr, "usage: equal_error SCENE.gltf [resolution] [gl|cpu] [point|box]\n");
+    std::fprintf(stderr,
+                 "usage: equal_error SCENE.gltf [resolution] [gl|cpu] [point|box] [bounces]\n");
     return 2;
   }
   const int resolution = argc > 2 ? std::atoi(argv[2]) : 64;
   const scene::Scene scene = scene::loadGltf(argv[1]);
-  const capture::RenderJob job = cornellJob(scene, resolution);
+  const bool multiBounce = argc > 5;
+  const int bounces = multiBounce ? std::atoi(argv[5]) : 1;
+  if (bounces < 1 || bounces > 8) {
+    std::fprintf(stderr, "equal_error: bounces must be in [1, 8]\n");
+    return 2;
+  }
+  capture::RenderJob job = cornellJob(scene, resolution, multiBounce ? 500 : 200);
+  job.settings.indirect.bounces = bounces;
   const bool onCpu = argc > 3 && std::string(argv[3]) == "cpu";
   const bool box = argc > 4 && std::string(argv[4]) == "box";
   const reference::PixelFilter filter =
@@ -150,7 +167,11 @@ int main(int argc, char** argv) {
   };
   std::printf("IR device: %s; reference: Embree, %u threads\n", makeIr().description().c_str(),
               std::thread::hardware_concurrency());
-  const TransientVolume truth = groundTruth(job, filter);
+  std::printf(
+      "IR: %d indirect bounce(s); axis %.1f .. %.1f m of optical path\n", bounces,
+      job.settings.time.start_m(),
+      job.settings.time.start_m() + job.settings.time.bins * job.settings.time.bin_width_m());
+  const TransientVolume truth = groundTruth(job, filter, bounces);
 
   std::printf(
       "| renderer | setting | seconds | steady rel. L1 | transient rel. L1 "
@@ -176,7 +197,7 @@ int main(int argc, char** argv) {
   }
   std::vector<std::pair<double, double>> timeError;
   for (int spp = 1; spp <= 4096; spp *= 2) {
-    const Measured m = referenceRun(job, truth, spp, filter);
+    const Measured m = referenceRun(job, truth, spp, filter, bounces);
     std::printf("| reference | %d paths/pixel | %.2f | %.4f | %.4f |\n", spp, m.seconds,
                 m.error.steadyRelativeL1, m.error.transientRelativeL1);
     timeError.emplace_back(m.seconds, m.error.transientRelativeL1);

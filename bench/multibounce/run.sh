@@ -5,10 +5,14 @@
 # enough for 4 bounces (1.5 .. 7.5 m in 30 ps bins). For 1..4 bounces: the
 # render's stats.seconds, its VPLs, and the indirect energy (energy_on_axis
 # minus that of a direct-only render, so no volume has to be read).
-# Usage: bench/multibounce/run.sh [OUTDIR]
+# Usage: bench/multibounce/run.sh [OUTDIR [--set key=value ...]]
+# (the --set overrides go to every render, e.g.
+#  --set render.indirect.russian_roulette=true)
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 out=${1:-$(mktemp -d)}
+shift || true
+extra=("$@")
 mkdir -p "$out"
 tofsim=./build/apps/cli/tofsim
 field() { sed -n "s/.*\"$1\": *\([0-9.eE+-]*\).*/\1/p" "$2" | head -1; }
@@ -17,7 +21,7 @@ render() {  # name, then --set overrides
   shift
   "$tofsim" render configs/cornell_box.yaml -q -o "$dir" --backend cpu \
     --set output.video=false --set 'sensors=[]' --set 'output.components=[]' \
-    --set time.bin_width="30 ps" --set time.bins=1000 "$@"
+    --set time.bin_width="30 ps" --set time.bins=1000 "$@" ${extra[@]+"${extra[@]}"}
 }
 echo "commit: $(git rev-parse --short HEAD), $(nproc) CPUs, load: $(cut -d' ' -f1-3 /proc/loadavg)"
 render direct --set render.indirect.enabled=false

@@ -5,6 +5,8 @@
 #include <cstdio>
 #include <limits>
 
+#include "CwTofByOrder.h"
+#include "CwTofCorrelator.h"
 #include "tofsim/sensors/Random.h"
 #include "tofsim/util/Error.h"
 
@@ -12,66 +14,6 @@ namespace tofsim::sensors {
 
 namespace {
 constexpr uint32_t kCwTofStreamTag = 0x4357;  // "CW"
-
-/// Per pixel: the noise-free raw values (F * N) of a volume.
-struct Correlator {
-  const CwTofParams& p;
-  const TimeAxis& axis;
-  std::vector<double> table;  // (F, N, T): correlation of each render bin
-
-  Correlator(const CwTofParams& params, const TimeAxis& a) : p(params), axis(a) {
-    const int32_t N = p.phase_steps;
-    for (double f : p.frequencies_Hz) {
-      for (int32_t k = 0; k < N; ++k) {
-        const double phi = 2.0 * M_PI * k / N;
-        for (int32_t t = 0; t < axis.bins; ++t) {
-          const double t0 = axis.binStart_s(t);
-          table.push_back(binCorrelation(p.waveform, f, phi, t0, t0 + axis.bin_width_s));
-        }
-      }
-    }
-  }
-
-  /// raw[f * N + k] = 0.5 (sum E + ambient) + 0.5 sum_t E_t rho_t(f, k).
-  void raw(const std::vector<double>& signal, double ambient, std::vector<double>& out) const {
-    const std::size_t T = signal.size();
-    const std::size_t FN = p.frequencies_Hz.size() * p.phase_steps;
-    double total = ambient;
-    for (double e : signal) total += e;
-    out.assign(FN, 0.5 * total);
-    for (std::size_t j = 0; j < FN; ++j) {
-      const double* rho = table.data() + j * T;
-      double s = 0.0;
-      for (std::size_t t = 0; t < T; ++t) s += signal[t] * rho[t];
-      out[j] += 0.5 * s;
-    }
-  }
-
-  /// Phases and amplitudes (F) from raw values, and the depth: unwrapped
-  /// over `range` when F >= 2, the wrapped depth of the one frequency else.
-  double depth(const std::vector<double>& raw, std::vector<double>& phases,
-               std::vector<double>& amplitudes, double range) const {
-    const auto F = static_cast<int32_t>(p.frequencies_Hz.size());
-    phases.resize(F);
-    amplitudes.resize(F);
-    for (int32_t f = 0; f < F; ++f) {
-      phaseFromSteps(raw.data() + static_cast<std::size_t>(f) * p.phase_steps, p.phase_steps,
-                     phases[f], amplitudes[f]);
-    }
-    // Delay -> depth in the medium (c / eta), so a scene in water is not
-    // reported as (eta - 1) x depth of multipath error.
-    return unwrapDepth_m(phases, p.frequencies_Hz, range, axis.depthPerSecond_m_per_s());
-  }
-
-  /// The depth one frequency's phase stands for, in [0, k / f).
-  double wrappedDepth(std::size_t f, double phase) const {
-    return axis.depthPerSecond_m_per_s() * phase / (2.0 * M_PI * p.frequencies_Hz[f]);
-  }
-};
-
-/// An error e between two depths measured modulo `range`, folded into
-/// [-range/2, range/2]: a whole number of wraps is ambiguity, not multipath.
-double wrapSigned(double e, double range) { return e - range * std::round(e / range); }
 
 SensorOutput makeOutput(const std::string& name, SensorOutput::Kind kind,
                         std::vector<int64_t> shape, std::vector<std::string> axes,
@@ -157,6 +99,14 @@ class CwTofStream final : public SensorStream {
     cleanDepth_.resize(HW_);
     cleanWrapped_.resize(F_ * HW_);
     if (withDirect_) mpiDirect_.assign(HW_, std::numeric_limits<float>::quiet_NaN());
+    if (p.multipath_by_order) {
+      if (!options.bounces) {
+        throw InputError(
+            "multipath_by_order needs the render's light by bounce order (its direct component "
+            "and bounce1 .. bounceN), which this run does not give the sensor");
+      }
+      byOrder_.emplace(correlator_, p_.common, shape_, *options.bounces, unwrapRange_);
+    }
   }
 
   void consume(const PixelSpan& span) override {
@@ -166,6 +116,7 @@ class CwTofStream final : public SensorStream {
       const std::size_t offset = i * shape_.pixelFloats();
       pixel(span.volume + offset, withDirect_ ? span.directOnly + offset : nullptr,
             span.firstPixel + i);
+      if (byOrder_) byOrder_->pixel(span, offset, span.firstPixel + i);
     }
     next_ += span.pixelCount;
   }
@@ -173,6 +124,8 @@ class CwTofStream final : public SensorStream {
   std::vector<SensorOutput> finish(const Image* groundTruthDepth_m) override;
 
  private:
+  void addByOrder(std::vector<SensorOutput>& outs, const Image* gt) const;
+
   void pixel(const float* values, const float* direct, std::size_t px) {
     pixelSignal(values, shape_.axis.bins, shape_.channels, p_.common, signal_);
     correlator_.raw(signal_, p_.ambient_e, ideal_);
@@ -250,6 +203,7 @@ class CwTofStream final : public SensorStream {
   std::vector<float> depth_, mpiGt_, mpiDirect_;
   std::vector<double> cleanDepth_, cleanWrapped_;               // (H, W) and (F, H, W), noise-free
   std::vector<double> signal_, ideal_, noisy_, phases_, amps_;  // per-pixel scratch
+  std::optional<OrderDepths> byOrder_;                          // multipath_by_order
 };
 
 std::string metres(double m) {
@@ -311,7 +265,42 @@ std::vector<SensorOutput> CwTofStream::finish(const Image* gt) {
     addImage(outs, "cwtof_mpi_error_direct", H, W, std::move(mpiDirect_), "m",
              "CW-ToF depth error against the direct-only depth (noise-free)", cmap, combinedError);
   }
+  addByOrder(outs, gt);
   return outs;
+}
+
+// (N + 1, H, W) and a picture of each order, in the combined depth's range.
+void CwTofStream::addByOrder(std::vector<SensorOutput>& outs, const Image* gt) const {
+  if (!byOrder_) return;
+  if (!gt) {
+    throw InputError(
+        "multipath_by_order needs the ground-truth depth (the render's output.depth, or "
+        "depth.exr beside a saved volume)");
+  }
+  const int32_t orders = byOrder_->orders();
+  std::vector<float> errors = byOrder_->errors(*gt, depthRange_);
+  const ImageMeaning meaning{{{"range_m", depthRange_}}, true};
+  for (int32_t k = 0; k < orders; ++k) {
+    const std::string light =
+        k == 0 ? "the direct light" : "direct + bounces 1.." + std::to_string(k);
+    const auto first = errors.begin() + static_cast<std::ptrdiff_t>(k * HW_);
+    SensorOutput picture = makeOutput(
+        "cwtof_multipath_error_order" + std::to_string(k), SensorOutput::Kind::ColorMappedImage,
+        {H_, W_}, {"y", "x"}, {first, first + static_cast<std::ptrdiff_t>(HW_)}, "m",
+        "CW-ToF depth error of " + light + " against the ground truth (noise-free)");
+    picture.attributes = {{"range_m", depthRange_}, {"order", k}};
+    picture.signed_values = true;
+    picture.colormap = p_.colormap;
+    outs.push_back(std::move(picture));
+  }
+  SensorOutput array =
+      makeOutput("cwtof_multipath_error_by_order", SensorOutput::Kind::Array, {orders, H_, W_},
+                 {"order", "y", "x"}, std::move(errors), "m",
+                 "CW-ToF depth error of direct + bounces 1..k against the ground truth, k = 0.." +
+                     std::to_string(orders - 1) + " (noise-free; order k is the first axis)");
+  array.attributes = meaning.attributes;
+  array.signed_values = true;
+  outs.push_back(std::move(array));
 }
 }  // namespace
 
@@ -323,15 +312,25 @@ std::unique_ptr<SensorStream> openCwTof(const CwTofParams& params, const VolumeS
 std::vector<SensorOutput> runCwTof(const TransientVolume& volume, const CwTofParams& p,
                                    uint64_t seed, const CwTofReferences& refs) {
   const TransientVolume* direct = refs.directOnly;
-  if (direct && (direct->width() != volume.width() || direct->height() != volume.height() ||
-                 direct->channels() != volume.channels() || direct->bins() != volume.bins())) {
+  const auto sameShape = [&](const TransientVolume& v) {
+    return v.width() == volume.width() && v.height() == volume.height() &&
+           v.channels() == volume.channels() && v.bins() == volume.bins();
+  };
+  if (direct && !sameShape(*direct)) {
     throw InputError("cwtof direct-only volume does not match the volume's shape");
   }
   StreamOptions options;
   options.seed = seed;
   options.directOnly = direct != nullptr;
+  if (refs.bounces) {
+    if (!direct) throw InputError("cwtof bounce volumes need the direct-only volume too");
+    for (const TransientVolume* b : *refs.bounces) {
+      if (!sameShape(*b)) throw InputError("cwtof bounce volume does not match the volume's shape");
+    }
+    options.bounces = static_cast<int32_t>(refs.bounces->size());
+  }
   const std::unique_ptr<SensorStream> stream = openCwTof(p, shapeOf(volume), options);
-  stream->consume(wholeVolume(volume, direct));
+  stream->consume(wholeVolume(volume, direct, refs.bounces));
   return stream->finish(refs.groundTruthDepth_m);
 }
 

@@ -41,16 +41,26 @@ std::unique_ptr<SensorStream> openSensor(const SensorSpec& spec, const VolumeSha
 std::vector<SensorOutput> runSensor(const SensorSpec& spec, const SensorInputs& in) {
   TOFSIM_CHECK(in.volume != nullptr);
   const TransientVolume* direct = in.directOnly;
-  if (direct &&
-      (direct->width() != in.volume->width() || direct->height() != in.volume->height() ||
-       direct->channels() != in.volume->channels() || direct->bins() != in.volume->bins())) {
+  const auto sameShape = [&](const TransientVolume& v) {
+    return v.width() == in.volume->width() && v.height() == in.volume->height() &&
+           v.channels() == in.volume->channels() && v.bins() == in.volume->bins();
+  };
+  if (direct && !sameShape(*direct)) {
     throw InputError("the direct-only volume does not match the volume's shape");
   }
   StreamOptions options;
   options.seed = in.seed;
   options.directOnly = direct != nullptr;
+  if (in.bounces) {
+    if (!direct) throw InputError("bounce components need the direct component too");
+    for (const TransientVolume* b : *in.bounces) {
+      TOFSIM_CHECK(b != nullptr);
+      if (!sameShape(*b)) throw InputError("a bounce volume does not match the volume's shape");
+    }
+    options.bounces = static_cast<int32_t>(in.bounces->size());
+  }
   const std::unique_ptr<SensorStream> stream = openSensor(spec, shapeOf(*in.volume), options);
-  stream->consume(wholeVolume(*in.volume, direct));
+  stream->consume(wholeVolume(*in.volume, direct, in.bounces));
   return stream->finish(in.groundTruthDepth_m);
 }
 

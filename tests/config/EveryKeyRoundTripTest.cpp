@@ -66,6 +66,7 @@ render:
     vpl_footprint: false
     bounces: 3
     vpls_per_bounce: 500
+    russian_roulette: true
   reference:
     bounces: 3
     samples_per_pixel: 16

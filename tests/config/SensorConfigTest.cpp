@@ -146,6 +146,7 @@ TEST(SensorConfigTest, EffectiveConfigRoundTrips) {
   - type: cwtof
     frequencies: [20 MHz, 110.5 MHz]
     max_depth: 12 m
+    multipath_by_order: true
 )");
   YAML::Node doc;
   doc["sensors"] = sensorsToYaml(specs);
@@ -169,6 +170,7 @@ TEST(SensorConfigTest, EffectiveConfigRoundTrips) {
   const auto& c1 = std::get<CwTofParams>(again[2].params);
   EXPECT_EQ(c1.frequencies_Hz, (std::vector<double>{20e6, 110.5e6}));
   EXPECT_DOUBLE_EQ(c1.max_depth_m, 12.0);
+  EXPECT_TRUE(c1.multipath_by_order);
   EXPECT_NE(text.find("time_fwhm: 12.5 ps"), std::string::npos) << text;
 }
 

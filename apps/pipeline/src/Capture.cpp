@@ -31,6 +31,7 @@ capture::RenderJob makeRenderJob(const config::RunConfig& config, const scene::S
   job.scene = &scene;
   job.camera = config.camera.camera;
   job.settings = config.render;
+  job.settings.indirect.trace_threads = config.cpu_threads;
   if (!config.camera.gltf_camera.empty()) {
     const scene::SceneCamera& c = findCamera(config, scene);
     job.camera.position_world = c.position_world;
@@ -42,8 +43,8 @@ capture::RenderJob makeRenderJob(const config::RunConfig& config, const scene::S
   if (config.light.attach_to_camera) {
     const capture::Camera& cam = job.camera;
     const glm::vec3 offset = config.light.offset_camera_m;
-    job.light.position_world =
-        cam.position_world + offset.x * cam.right() + offset.y * cam.up() + offset.z * cam.forward();
+    job.light.position_world = cam.position_world + offset.x * cam.right() + offset.y * cam.up() +
+                               offset.z * cam.forward();
     job.light.direction_world = cam.forward();
   }
   return job;

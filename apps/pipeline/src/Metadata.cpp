@@ -69,6 +69,9 @@ std::string transientMetadataJson(const config::RunConfig& config, const capture
   j["backend"] = backend;
   j["device"] = device;
   j["seed"] = job.settings.seed;
+  // What bounce<k>.npy can hold, and what `tofsim sense` takes as the
+  // light's bounce orders (cwtof multipath_by_order).
+  j["indirect_bounces"] = surfaceVertices(config) - 1;
   j["scene"] = config.scene_file.filename().string();
   const AxisLossFractions lost = axisLossFractions(result);
   j["stats"] = {{"seconds", result.seconds},

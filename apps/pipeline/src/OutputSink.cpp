@@ -25,8 +25,12 @@ std::size_t zeroNonFinite(float* values, std::size_t count) {
 
 OutputSink::OutputSink(const std::filesystem::path& directory, const config::OutputConfig& output,
                        int32_t width, int32_t height, const TimeAxis& axis, bool keepInMemory,
-                       Forward forward)
-    : width_(width), height_(height), axis_(axis), forward_(std::move(forward)) {
+                       Forward forward, int32_t forwardBounces)
+    : width_(width),
+      height_(height),
+      axis_(axis),
+      forwardBounces_(forwardBounces),
+      forward_(std::move(forward)) {
   const io::NpyShape shape = {static_cast<std::size_t>(height), static_cast<std::size_t>(width),
                               static_cast<std::size_t>(axis.bins), kChannels};
   if (output.transient) {
@@ -77,9 +81,24 @@ void OutputSink::consume(const capture::Segment& segment) {
   }
   const std::size_t offset = segment.firstPixel * pixelFloats;
   if (volume_) std::copy_n(scratch_.data(), floats, volume_->data() + offset);
-  if (forward_) {
-    forward_({segment.firstPixel, segment.pixelCount, scratch_.data(), directScratch_.data()});
+  if (forward_) forward_(forwardedSpan(segment, floats));
+}
+
+sensors::PixelSpan OutputSink::forwardedSpan(const capture::Segment& segment, std::size_t floats) {
+  sensors::PixelSpan span{
+      segment.firstPixel, segment.pixelCount, scratch_.data(), directScratch_.data(), {}};
+  if (forwardBounces_ == 1) span.bounces.push_back(indirectScratch_.data());
+  if (forwardBounces_ >= 2) {
+    forwardedBounces_.resize(static_cast<std::size_t>(forwardBounces_));
+    for (int32_t k = 1; k <= forwardBounces_; ++k) {
+      const float* bounce = segment.component(capture::bounceComponent(k));
+      std::vector<float>& copy = forwardedBounces_[k - 1];
+      copy.assign(bounce, bounce + floats);
+      zeroNonFinite(copy.data(), floats);  // counted in indirect's
+      span.bounces.push_back(copy.data());
+    }
   }
+  return span;
 }
 
 void OutputSink::commit() {

@@ -144,17 +144,20 @@ void writeOutputs(const config::RunConfig& config, const capture::RenderJob& job
   // on the saved folder reproduces their outputs byte for byte.
   // They are fed each segment as it is written, so that no one holds the
   // whole volume unless the video or the frames (time-major: every pixel of
-  // one bin) need it.
+  // one bin) need it. The light by bounce order (cwtof multipath_by_order)
+  // is given them whether or not the components are saved; `tofsim sense`
+  // needs the files (direct.npy, bounce<k>.npy) to redo it.
   std::optional<SensorStreams> sensorStreams;
+  const std::optional<int32_t> bounces = sensorBounces(config);
   if (!config.sensors.empty()) {
     const sensors::VolumeShape shape{job.camera.width, job.camera.height, capture::kChannels,
                                      job.settings.time};
-    sensorStreams.emplace(config, shape, out.direct, dir);
+    sensorStreams.emplace(config, shape, out.direct, bounces, dir);
   }
   OutputSink::Forward toSensors;
   if (sensorStreams) toSensors = [&](const sensors::PixelSpan& s) { sensorStreams->consume(s); };
   OutputSink sink(dir, out, job.camera.width, job.camera.height, job.settings.time,
-                  out.frames || out.video || out.frame_pngs, toSensors);
+                  out.frames || out.video || out.frame_pngs, toSensors, bounces.value_or(0));
   const capture::ProgressCallback onProgress = [&](std::size_t done, std::size_t total,
                                                    const std::string& what) {
     progress.update(done, total, what);

@@ -118,6 +118,24 @@ SavedVolume loadSavedVolume(const std::filesystem::path& directory) {
   return saved;
 }
 
+int32_t savedIndirectBounces(const std::filesystem::path& file) {
+  std::ifstream in(file);
+  if (!in) fail(file, "cannot open");
+  try {
+    const nlohmann::json j = nlohmann::json::parse(in);
+    if (!j.contains("indirect_bounces")) {
+      fail(file, "records no indirect_bounces (written by an older tofsim): render again");
+    }
+    const nlohmann::json& n = j.at("indirect_bounces");
+    if (!n.is_number_integer() || n.get<int64_t>() < 0 || n.get<int64_t>() > 64) {
+      fail(file, "indirect_bounces must be an integer in [0, 64]");
+    }
+    return static_cast<int32_t>(n.get<int64_t>());
+  } catch (const nlohmann::json::exception& e) {
+    fail(file, std::string("not a tofsim transient.json: ") + e.what());
+  }
+}
+
 std::optional<TransientVolume> loadSavedComponent(const std::filesystem::path& directory,
                                                   const std::string& name) {
   const std::filesystem::path file = directory / (name + ".npy");

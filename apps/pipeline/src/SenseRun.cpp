@@ -42,6 +42,35 @@ void noteDifferences(const config::RunConfig& config, const TransientVolume& vol
   }
 }
 
+// The light by bounce order of a saved render, for a cwtof sensor with
+// multipath_by_order: N from transient.json, then bounce1 .. bounce<N>.npy.
+std::vector<TransientVolume> savedBounces(const config::RunConfig& config,
+                                          const std::filesystem::path& dir,
+                                          const SavedVolume& saved) {
+  const auto fail = [&](const std::filesystem::path& file, const std::string& why) {
+    throw InputError(FileLoc{file.string()}, "",
+                     why + ": a cwtof sensor with multipath_by_order (" +
+                         config.config_file.string() +
+                         ") needs the render's direct.npy, bounce<k>.npy and depth.exr");
+  };
+  if (!saved.directOnly) fail(dir / "direct.npy", "not found");
+  if (!saved.depth_m) fail(dir / "depth.exr", "not found");
+  const int32_t n = savedIndirectBounces(dir / "transient.json");
+  std::vector<TransientVolume> bounces;
+  for (int32_t k = 1; k <= n; ++k) {
+    std::optional<TransientVolume> b = loadSavedComponent(dir, "bounce" + std::to_string(k));
+    if (!b && n == 1) b = loadSavedComponent(dir, "indirect");  // one bounce: the same light
+    if (!b) {
+      fail(dir / ("bounce" + std::to_string(k) + ".npy"),
+           "not found (transient.json: indirect_bounces " + std::to_string(n) +
+               "; render with output.components: [direct, bounce1 .. bounce" + std::to_string(n) +
+               "])");
+    }
+    bounces.push_back(std::move(*b));
+  }
+  return bounces;
+}
+
 }  // namespace
 
 std::vector<std::string> runConfiguredSensors(const config::RunConfig& config,
@@ -56,9 +85,14 @@ std::vector<std::string> runConfiguredSensors(const config::RunConfig& config,
   }
   // The whole volume as one span: the same code, and so the same bytes, as a
   // render's sensors fed segment by segment.
-  SensorStreams streams(config, sensors::shapeOf(volume), volumes.directOnly != nullptr,
+  std::optional<int32_t> bounces;
+  if (volumes.bounces) {
+    TOFSIM_CHECK(volumes.directOnly != nullptr);
+    bounces = static_cast<int32_t>(volumes.bounces->size());
+  }
+  SensorStreams streams(config, sensors::shapeOf(volume), volumes.directOnly != nullptr, bounces,
                         outputDirectory);
-  streams.consume(sensors::wholeVolume(volume, volumes.directOnly));
+  streams.consume(sensors::wholeVolume(volume, volumes.directOnly, volumes.bounces));
   return streams.finish(volumes.depth_m, progress);
 }
 
@@ -79,6 +113,11 @@ SenseSummary runSense(const config::RunConfig& config, const SenseOptions& optio
   volumes.volume = &saved.volume;
   volumes.directOnly = saved.directOnly ? &*saved.directOnly : nullptr;
   volumes.depth_m = saved.depth_m ? &*saved.depth_m : nullptr;
+  std::vector<TransientVolume> bounces;
+  if (sensorBounces(config)) bounces = savedBounces(config, options.volumeDirectory, saved);
+  std::vector<const TransientVolume*> bouncePointers;
+  for (const TransientVolume& b : bounces) bouncePointers.push_back(&b);
+  if (sensorBounces(config)) volumes.bounces = &bouncePointers;
   // The folder's other files (the render's) stay; its sensors/ is replaced as
   // a whole, atomically, so sensors no longer configured go and an interrupted
   // run leaves the earlier sensors/. A batch manifest no longer describes the

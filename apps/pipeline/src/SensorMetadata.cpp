@@ -40,6 +40,7 @@ std::string axisDoc(const std::string& axis) {
   if (axis == "phase_step")
     return "phase step k, reference phase 2 pi k / sensor.parameters.phase_steps";
   if (axis == "pixel") return "index into `labels` (the pixel each series shows)";
+  if (axis == "order") return "bounce order k: the light of direct + indirect bounces 1..k";
   TOFSIM_CHECK_MSG(false, "undocumented sensor output axis " + axis);
   return "";
 }

@@ -73,6 +73,7 @@ json modelJson(const CwTofParams& p, const TimeAxis& render) {
   j["shot_noise"] = p.shot_noise;
   j["read_noise_e"] = p.read_noise_e;
   j["max_depth_m"] = p.max_depth_m;
+  j["multipath_by_order"] = p.multipath_by_order;
   const double k = render.depthPerSecond_m_per_s();
   j["depth_range_m"] = depthRange_m(p, k);
   json ranges = json::array();

@@ -1,6 +1,8 @@
 #include "tofsim/pipeline/SensorStreams.h"
 
+#include <algorithm>
 #include <cstdio>
+#include <variant>
 
 #include "tofsim/io/Npy.h"
 #include "tofsim/pipeline/AxisReport.h"
@@ -72,8 +74,18 @@ namespace {
 
 }  // namespace
 
+std::optional<int32_t> sensorBounces(const config::RunConfig& config) {
+  const bool asked = std::any_of(config.sensors.begin(), config.sensors.end(), [](const auto& s) {
+    const auto* cwtof = std::get_if<sensors::CwTofParams>(&s.params);
+    return cwtof && cwtof->multipath_by_order;
+  });
+  if (!asked) return std::nullopt;
+  return surfaceVertices(config) - 1;  // the camera's surface point, then one per bounce
+}
+
 SensorStreams::SensorStreams(const config::RunConfig& config, const sensors::VolumeShape& shape,
-                             bool withDirect, const std::filesystem::path& outputDirectory)
+                             bool withDirect, std::optional<int32_t> bounces,
+                             const std::filesystem::path& outputDirectory)
     : config_(config), shape_(shape), outputDirectory_(outputDirectory) {
   for (std::size_t i = 0; i < config.sensors.size(); ++i) {
     const sensors::SensorSpec& spec = config.sensors[i];
@@ -82,6 +94,7 @@ SensorStreams::SensorStreams(const config::RunConfig& config, const sensors::Vol
     sensors::StreamOptions options;
     options.seed = config.render.seed;
     options.directOnly = withDirect;
+    options.bounces = bounces;
     options.arrays = &entry->arrays;
     try {
       entry->stream = sensors::openSensor(spec, shape, options);

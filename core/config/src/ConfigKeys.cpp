@@ -69,7 +69,7 @@ const ConfigKey kRunConfigKeys[] = {
      "`--backend` on `render` sets it. Both give the same volume within float rounding "
      "(tests/cpu)"},
     {"render.threads", "int", "in [0, 4096]", "0", "-",
-     "worker threads of the `cpu` backend (0 = all hardware threads, e.g. a cluster job's `--cpus-per-task`); the bytes do not depend on it (tests/cpu)"},
+     "worker threads of the `cpu` backend, and of the later bounces' ray tracing on both backends (0 = all hardware threads, e.g. a cluster job's `--cpus-per-task`); the bytes do not depend on it (tests/cpu, tests/ir BounceVplsTest)"},
     {"render.seed", "int", "in [0, 2^62]", "1", "-",
      "seed of every random choice: the renderer's and the sensors'"},
     {"render.shadow_map_resolution", "int", "in [16, 16384]", "1024", "pixel",
@@ -108,6 +108,8 @@ const ConfigKey kRunConfigKeys[] = {
      "indirect bounces: 1 = the RSM's VPLs only; k adds VPLs of bounces 2..k, each traced (cosine-weighted, Embree) from the VPLs of the bounce before; `indirect` holds all bounces. Compare with `reference.bounces: k + 1`"},
     {"render.indirect.vpls_per_bounce", "int", "in [0, 2^22]", "0", "-",
      "VPLs traced for each bounce after the first (chosen among the bounce before's in proportion to their power); 0 = as many as the first bounce has; rays that leave the scene make none. The total of all bounces is at most 4,194,304"},
+    {"render.indirect.russian_roulette", "bool", "", "false", "-",
+     "Russian roulette on bounces 2..k: a traced VPL survives with probability q = the largest albedo channel at its hit, its flux divided by q (unbiased), and each bounce after the second traces as many rays as the bounce before kept VPLs; fewer VPLs, more noise. `false`: every later bounce traces `vpls_per_bounce`"},
     {"render.reference.bounces", "int", "in [1, 64]", "2", "-",
      "surface interactions per path: 1 direct only, 2 direct + one indirect bounce, n"},
     {"render.reference.samples_per_pixel", "int", "in [1, 2^24]", "64", "-",
@@ -230,6 +232,8 @@ const ConfigKey kSensorConfigKeys[] = {
      "unwrapping search range"},
     {"cwtof.colormap", "string", "", "turbo", "-",
      "colormap of the PNGs"},
+    {"cwtof.multipath_by_order", "bool", "", "false", "-",
+     "also the depth error of direct + bounces 1..k against the ground truth for every order k = 0..N (`cwtof_multipath_error_by_order`); needs `output.depth` and a renderer that resolves bounces (see \"Multipath error by bounce order\" above)"},
 };
 // clang-format on
 }  // namespace

@@ -73,6 +73,7 @@ YAML::Node renderNode(const RunConfig& config) {
   i["vpl_footprint"] = r.indirect.vpl_footprint;
   i["bounces"] = r.indirect.bounces;
   i["vpls_per_bounce"] = r.indirect.vpls_per_bounce;
+  i["russian_roulette"] = r.indirect.russian_roulette;
   n["indirect"] = i;
   YAML::Node ref;
   ref["bounces"] = config.reference.bounces;

@@ -1,6 +1,7 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <variant>
 
 #include "ConfigNode.h"
 #include "RunConfigYaml.h"
@@ -143,6 +144,7 @@ void parseIndirect(const ConfigNode& node, capture::IndirectSettings& s) {
   s.bounces = static_cast<int32_t>(intInRange(node, "bounces", s.bounces, 1, 8));
   s.vpls_per_bounce =
       static_cast<int32_t>(intInRange(node, "vpls_per_bounce", s.vpls_per_bounce, 0, 1 << 22));
+  s.russian_roulette = node.getBool("russian_roulette", s.russian_roulette);
 }
 
 // render.renderer and render.backend.
@@ -311,6 +313,30 @@ void checkSensorNames(const ConfigNode& list, const std::vector<sensors::SensorS
   }
 }
 
+// A CW-ToF sensor's error by bounce order compares with the ground-truth
+// depth, and needs the light split by bounce: the IR renderer's bounce
+// components, or the reference's direct and indirect light when that is one
+// bounce at most (render.reference.bounces <= 2).
+void checkBounceOrders(const ConfigNode& list, const RunConfig& config) {
+  const std::vector<ConfigNode> elements = list.elements();
+  for (std::size_t i = 0; i < config.sensors.size(); ++i) {
+    const auto* cwtof = std::get_if<sensors::CwTofParams>(&config.sensors[i].params);
+    if (!cwtof || !cwtof->multipath_by_order) continue;
+    if (!config.output.depth) {
+      elements[i].failKey("multipath_by_order",
+                          "needs the ground-truth depth: set output.depth: true");
+    }
+    if (config.renderer == RendererKind::Reference && config.reference.bounces > 2) {
+      elements[i].failKey(
+          "multipath_by_order",
+          "the reference renderer does not split its indirect light by bounce (render.reference."
+          "bounces: " +
+              std::to_string(config.reference.bounces) +
+              "); use renderer: ir with render.indirect.bounces, or reference.bounces <= 2");
+    }
+  }
+}
+
 // "sensors.0.bins" -> "sensors[0].bins", the form ConfigNode paths take.
 std::string nodePath(const std::string& keyPath) {
   std::string out;
@@ -403,6 +429,7 @@ RunConfig loadRunConfigYaml(YAML::Node yaml, const std::filesystem::path& file,
     config.sensors = parseSensors(*list);
     checkSensorNames(*list, config.sensors);
     checkSensorsFitImage(*list, config.sensors, config.camera.camera);
+    checkBounceOrders(*list, config);
   }
   root.reportUnusedKeys();
   return config;

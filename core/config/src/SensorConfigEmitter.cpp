@@ -103,6 +103,7 @@ void SensorConfigType<CwTofParams>::emit(YAML::Node& n, const CwTofParams& p) {
   n["read_noise"] = shortest(p.read_noise_e);
   n["max_depth"] = shortest(p.max_depth_m) + " m";
   n["colormap"] = p.colormap;
+  n["multipath_by_order"] = p.multipath_by_order;
 }
 
 YAML::Node sensorsToYaml(const std::vector<SensorSpec>& specs) {

@@ -195,6 +195,7 @@ CwTofParams SensorConfigType<CwTofParams>::parse(const ConfigNode& n) {
   p.read_noise_e = nonNegative(n, "read_noise", n.getDouble("read_noise", p.read_noise_e));
   p.max_depth_m = nonNegative(n, "max_depth", n.getLength_m("max_depth", p.max_depth_m));
   p.colormap = n.getString("colormap", p.colormap);
+  p.multipath_by_order = n.getBool("multipath_by_order", p.multipath_by_order);
   return p;
 }
 

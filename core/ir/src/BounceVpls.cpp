@@ -1,10 +1,13 @@
 #include "tofsim/ir/BounceVpls.h"
 
+#include <algorithm>
 #include <optional>
+#include <thread>
 
 #include "tofsim/reference/RayScene.h"
 #include "tofsim/reference/Sampling.h"
 #include "tofsim/util/Error.h"
+#include "tofsim/util/ParallelFor.h"
 #include "tofsim/util/Random.h"
 
 namespace tofsim::ir {
@@ -22,43 +25,59 @@ uint64_t unitOf(uint64_t tag, int32_t bounce, std::size_t index) {
 
 double powerOf(const Vpl& v) { return static_cast<double>(v.flux.r) + v.flux.g + v.flux.b; }
 
+// The direction a light path leaves `parent` in: cosine-weighted about its
+// normal (a Lambertian VPL), from the child's generator. The one place a
+// BRDF's sampling (and its weight) would go.
+glm::vec3 continuationDirection(const Vpl& parent, Pcg32& rng) {
+  const float u1 = rng.nextFloat();
+  const float u2 = rng.nextFloat();
+  return reference::cosineSampleHemisphere(glm::vec3(parent.normal), u1, u2);
+}
+
 // Child `index`'s light path continued from `parent`, whose power share is
 // `share` (rgb, W/sr: the parent's flux scaled to total power / count).
 std::optional<Vpl> shootChild(const reference::RayScene& scene, const Vpl& parent,
                               const glm::vec3& share, int32_t bounce, uint64_t seed,
-                              std::size_t index, float eta) {
+                              std::size_t index, float eta, bool russianRoulette) {
   Pcg32 rng = Pcg32::forUnit(seed, unitOf(kChildUnit, bounce, index));
   const glm::vec3 p(parent.positionPath);
   const glm::vec3 n(parent.normal);
-  const float u1 = rng.nextFloat();
-  const float u2 = rng.nextFloat();
-  const glm::vec3 w = reference::cosineSampleHemisphere(n, u1, u2);
+  const glm::vec3 w = continuationDirection(parent, rng);
   if (!(glm::dot(w, n) > 0.0f)) return std::nullopt;
   const auto hit = scene.intersect(p + n * scene.epsilon_m(), w);
   if (!hit) return std::nullopt;  // the light leaves the scene
-  const glm::vec3 flux = hit->albedo * share;
+  glm::vec3 flux = hit->albedo * share;
   if (!(flux.r + flux.g + flux.b > 0.0f)) return std::nullopt;
+  if (russianRoulette) {
+    // Survival q = the largest albedo channel: a survivor's flux / q stays
+    // within the share in every channel, and E[flux] is unchanged.
+    const float q = std::min(1.0f, std::max({hit->albedo.r, hit->albedo.g, hit->albedo.b}));
+    if (!(rng.nextFloat() < q)) return std::nullopt;
+    flux /= q;
+  }
   const float path_m = parent.positionPath.w + eta * glm::length(hit->position_world - p);
   return Vpl{glm::vec4(hit->position_world, path_m), glm::vec4(hit->normal_world, 0.0f),
              glm::vec4(flux, 0.0f)};
 }
 
+// Rays per task: a fixed split, so that each task writes its own slots.
+constexpr std::size_t kRaysPerTask = 256;
+
 }  // namespace
 
 std::vector<Vpl> traceBounce(const reference::RayScene& scene, const std::vector<Vpl>& parents,
                              std::size_t count, int32_t bounce, uint64_t seed,
-                             double indexOfRefraction) {
+                             double indexOfRefraction, const BounceTracing& tracing) {
   std::vector<Vpl> children;
   double total = 0.0;
   for (const Vpl& v : parents) total += powerOf(v);
   if (parents.empty() || count == 0 || !(total > 0.0)) return children;
-  children.reserve(count);
   // Systematic resampling: child j takes the parent whose share of the
   // cumulative power holds (j + offset) * total / count.
   Pcg32 offsetRng = Pcg32::forUnit(seed, unitOf(kOffsetUnit, bounce, 0));
   const double offset = offsetRng.nextDouble();
   const double step = total / static_cast<double>(count);
-  const auto eta = static_cast<float>(indexOfRefraction);
+  std::vector<std::size_t> parentOf(count);
   std::size_t parent = 0;
   double parentEnd = powerOf(parents[0]);
   for (std::size_t j = 0; j < count; ++j) {
@@ -67,11 +86,27 @@ std::vector<Vpl> traceBounce(const reference::RayScene& scene, const std::vector
     while (target >= parentEnd && parent + 1 < parents.size()) {
       parentEnd += powerOf(parents[++parent]);
     }
-    const Vpl& from = parents[parent];
-    const glm::vec3 share = glm::vec3(from.flux) * static_cast<float>(step / powerOf(from));
-    if (const auto child = shootChild(scene, from, share, bounce, seed, j, eta)) {
-      children.push_back(*child);
+    parentOf[j] = parent;
+  }
+  // Every ray has its own generator and slot: the bytes do not depend on
+  // the threads.
+  const auto eta = static_cast<float>(indexOfRefraction);
+  std::vector<std::optional<Vpl>> slots(count);
+  const std::size_t tasks = (count + kRaysPerTask - 1) / kRaysPerTask;
+  const int threads = tracing.threads > 0
+                          ? tracing.threads
+                          : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  parallelFor(tasks, threads, [&](std::size_t task) {
+    const std::size_t end = std::min(count, (task + 1) * kRaysPerTask);
+    for (std::size_t j = task * kRaysPerTask; j < end; ++j) {
+      const Vpl& from = parents[parentOf[j]];
+      const glm::vec3 share = glm::vec3(from.flux) * static_cast<float>(step / powerOf(from));
+      slots[j] = shootChild(scene, from, share, bounce, seed, j, eta, tracing.russian_roulette);
     }
+  });
+  children.reserve(count);
+  for (const std::optional<Vpl>& child : slots) {
+    if (child) children.push_back(*child);
   }
   return children;
 }
@@ -89,10 +124,13 @@ BouncedVpls withLaterBounces(const capture::RenderJob& job, std::vector<Vpl> fir
   const std::size_t count =
       s.vpls_per_bounce > 0 ? static_cast<std::size_t>(s.vpls_per_bounce) : out.vpls.size();
   const reference::RayScene scene(*job.scene, 0);
+  const BounceTracing tracing{s.russian_roulette, s.trace_threads};
   std::vector<Vpl> parents(out.vpls);
   for (int32_t bounce = 2; bounce <= s.bounces; ++bounce) {
-    parents = traceBounce(scene, parents, count, bounce, job.settings.seed,
-                          job.settings.index_of_refraction);
+    // Russian roulette ends paths: bounce 3 on traces one ray per VPL kept.
+    const std::size_t rays = s.russian_roulette && bounce > 2 ? parents.size() : count;
+    parents = traceBounce(scene, parents, rays, bounce, job.settings.seed,
+                          job.settings.index_of_refraction, tracing);
     out.vpls.insert(out.vpls.end(), parents.begin(), parents.end());
     out.firstOfBounce.push_back(out.vpls.size());
   }

@@ -30,6 +30,10 @@ struct CwTofParams {
   double read_noise_e = 0.0;  ///< Gaussian read noise per raw image, photo-electrons RMS
   double max_depth_m = 0.0;   ///< unwrapping range; 0 = (c / eta) / (2 gcd(frequencies)), capped
   std::string colormap = "turbo";
+  /// Also the multipath error of each bounce order k = 0..N: the noise-free
+  /// depth of direct + bounces 1..k against the ground truth. Needs the
+  /// render's direct and bounce components (StreamOptions::bounces).
+  bool multipath_by_order = false;
 };
 
 /// Mean over [t0_s, t1_s) of the normalised correlation rho(2 pi f t - phase):
@@ -66,6 +70,8 @@ std::string frequencyLabel(double frequency_Hz);
 struct CwTofReferences {
   const Image* groundTruthDepth_m = nullptr;    ///< (H, W, 1), metres; <= 0 or NaN = unknown
   const TransientVolume* directOnly = nullptr;  ///< the direct component of the same render
+  /// Bounces 1..N of the same render (with directOnly), for multipath_by_order.
+  const std::vector<const TransientVolume*>* bounces = nullptr;
 };
 
 /// Warnings for the person running the sensor: one when the ground-truth
@@ -81,15 +87,21 @@ std::vector<std::string> cwtofWarnings(const CwTofParams& params, const TimeAxis
 /// f, "cwtof_phase_<f>", "cwtof_amplitude_<f>" and "cwtof_depth_<f>" (wrapped)
 /// Images; with a ground truth, "cwtof_mpi_error" (noise-free depth - ground
 /// truth) and per frequency "cwtof_multipath_error_<f>"; with a direct-only
-/// volume, "cwtof_mpi_error_direct" (noise-free depth - direct-only depth).
+/// volume, "cwtof_mpi_error_direct" (noise-free depth - direct-only depth);
+/// with multipath_by_order, "cwtof_multipath_error_by_order" Array (N + 1,
+/// H, W): order k = the depth of direct + bounces 1..k - ground truth, NaN
+/// where that light is zero, and a ColorMappedImage of each order,
+/// "cwtof_multipath_error_order<k>".
 /// Every error is wrapped into (-R/2, R/2] of its depth's range R, so a phase
 /// wrap never reads as multipath. Every Image comes with a ColorMappedImage.
 std::vector<SensorOutput> runCwTof(const TransientVolume& volume, const CwTofParams& params,
                                    uint64_t seed, const CwTofReferences& references = {});
 
 /// The same model fed as the volume streams (SensorStream.h); spans carry
-/// the direct component when options.directOnly, and finish() takes the
-/// ground-truth depth. Throws InputError when the parameters do not fit.
+/// the direct component when options.directOnly (and the bounces when
+/// options.bounces), and finish() takes the ground-truth depth. Throws
+/// InputError when the parameters do not fit, or multipath_by_order is on
+/// and options.bounces is not set.
 std::unique_ptr<SensorStream> openCwTof(const CwTofParams& params, const VolumeShape& shape,
                                         const StreamOptions& options);
 

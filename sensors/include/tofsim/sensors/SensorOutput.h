@@ -36,7 +36,7 @@ struct SensorOutput {
   /// One name per dimension of `shape`: "y" (image row, 0 = top), "x" (image
   /// column, 0 = left), "t" (a bin of `time`), "frequency" (index into the
   /// model's frequencies), "phase_step" (reference phase 2 pi k / N), "pixel"
-  /// (index into `labels`).
+  /// (index into `labels`), "order" (bounce order k: direct + bounces 1..k).
   std::vector<std::string> axes;
   /// The instrument's time axis, when one of `axes` is "t".
   std::optional<TimeAxis> time;

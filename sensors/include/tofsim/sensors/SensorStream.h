@@ -11,6 +11,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -39,10 +40,14 @@ struct PixelSpan {
   std::size_t pixelCount = 0;
   const float* volume = nullptr;      ///< the total volume
   const float* directOnly = nullptr;  ///< its direct component, or nullptr
+  /// Bounces 1..N (StreamOptions::bounces = N), the light of exactly k
+  /// indirect bounces; empty when the spans do not carry them.
+  std::vector<const float*> bounces;
 };
 
-/// The whole volume (and its direct component, when given) as one span.
-PixelSpan wholeVolume(const TransientVolume& volume, const TransientVolume* directOnly = nullptr);
+/// The whole volume (and its direct component and bounces, when given) as one span.
+PixelSpan wholeVolume(const TransientVolume& volume, const TransientVolume* directOnly = nullptr,
+                      const std::vector<const TransientVolume*>* bounces = nullptr);
 
 /// Receives an Array output in C order as it is made; it is never held whole.
 class ArrayWriter {
@@ -67,6 +72,9 @@ struct StreamOptions {
   uint64_t seed = 0;
   /// Spans carry directOnly (CW-ToF's error against the direct-only depth).
   bool directOnly = false;
+  /// N: spans carry the direct component and bounces 1..N (CW-ToF's
+  /// multipath error by bounce order; N = 0: direct only). Unset: they do not.
+  std::optional<int32_t> bounces;
   /// nullptr: every output is held in memory and returned with its data.
   ArrayStreams* arrays = nullptr;
   /// Threads a span's pixels are spread over; 0: every core. The bytes do

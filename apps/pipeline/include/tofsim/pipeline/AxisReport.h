@@ -22,7 +22,8 @@ namespace tofsim::pipeline {
 inline constexpr double kWindowLossWarning = 0.001;
 
 /// Surface vertices a path of the configured renderer can have: instant
-/// radiosity 1, or 2 with indirect light; the reference its bounces.
+/// radiosity 1, or 1 + render.indirect.bounces with indirect light; the
+/// reference its bounces.
 int32_t surfaceVertices(const config::RunConfig& config);
 
 /// What the arrival bounds say about the render axis, before rendering.

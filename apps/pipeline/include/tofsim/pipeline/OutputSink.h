@@ -34,10 +34,13 @@ class OutputSink : public capture::SegmentSink {
   using Forward = std::function<void(const sensors::PixelSpan&)>;
 
   /// keepInMemory: also collect the total volume (for the video and frames);
-  /// forward: called with every segment's values once they are written.
+  /// forward: called with every segment's values once they are written;
+  /// forwardBounces N >= 1: the forwarded spans carry bounces 1..N too,
+  /// non-finite values zeroed as in bounce<k>.npy (bounce 1 is the
+  /// indirect light when N = 1: the IR's bounce1, the reference's one bounce).
   OutputSink(const std::filesystem::path& directory, const config::OutputConfig& output,
              int32_t width, int32_t height, const TimeAxis& axis, bool keepInMemory,
-             Forward forward = {});
+             Forward forward = {}, int32_t forwardBounces = 0);
   void consume(const capture::Segment& segment) override;
   /// Renames the streamed files into place.
   void commit();
@@ -50,6 +53,8 @@ class OutputSink : public capture::SegmentSink {
   std::size_t nonFiniteValues() const { return nonFinite_; }
 
  private:
+  sensors::PixelSpan forwardedSpan(const capture::Segment& segment, std::size_t floats);
+
   int32_t width_, height_;
   TimeAxis axis_;
   std::unique_ptr<io::NpyStreamWriter> total_, directFile_, indirectFile_;
@@ -57,6 +62,8 @@ class OutputSink : public capture::SegmentSink {
   std::vector<std::pair<int32_t, std::unique_ptr<io::NpyStreamWriter>>> bounceFiles_;
   std::vector<double> steady_;
   std::vector<float> scratch_, directScratch_, indirectScratch_, bounceScratch_;
+  int32_t forwardBounces_ = 0;
+  std::vector<std::vector<float>> forwardedBounces_;  ///< bounces 1..N when forwardBounces_ >= 2
   std::size_t nonFinite_ = 0;
   std::optional<TransientVolume> volume_;
   Forward forward_;

@@ -20,6 +20,11 @@ struct SavedVolume {
 /// missing or unreadable, or when the files disagree on the shape.
 SavedVolume loadSavedVolume(const std::filesystem::path& directory);
 
+/// The render's `indirect_bounces` from its transient.json (how many bounces
+/// its light has: what bounce<k>.npy can hold); InputError naming the file
+/// when it is not there (a transient.json of an older tofsim).
+int32_t savedIndirectBounces(const std::filesystem::path& transientJson);
+
 /// A light component saved beside transient.npy (`direct`, `indirect`,
 /// `bounce<k>`: `<name>.npy`), read with transient.json's time axis, or
 /// nothing when the render did not write it. Throws InputError like

@@ -23,6 +23,8 @@ struct SensorVolumes {
   const TransientVolume* volume = nullptr;
   const TransientVolume* directOnly = nullptr;
   const Image* depth_m = nullptr;  ///< (H, W, 1), metres
+  /// Bounces 1..N, with directOnly, for the CW-ToF error by bounce order.
+  const std::vector<const TransientVolume*>* bounces = nullptr;
 };
 
 /// Runs each sensor in order and writes its outputs. Returns the files written,
@@ -48,7 +50,11 @@ struct SenseSummary {
 
 /// `tofsim sense`: loads a saved render (SavedVolume.h) and runs the config's
 /// sensors on it. Uses only the config's `sensors:` and `render.seed`; the
-/// sensors take the time axis and image size from the saved volume.
+/// sensors take the time axis and image size from the saved volume. A cwtof
+/// sensor with multipath_by_order takes the render's N from transient.json
+/// (`indirect_bounces`) and needs direct.npy, bounce1.npy .. bounce<N>.npy
+/// (for N = 1 indirect.npy will do) and depth.exr: an InputError names the
+/// first file missing.
 SenseSummary runSense(const config::RunConfig& config, const SenseOptions& options);
 
 }  // namespace tofsim::pipeline

@@ -14,6 +14,7 @@
 #include <chrono>
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -24,14 +25,22 @@
 
 namespace tofsim::pipeline {
 
+/// How many indirect bounces the render's light is split into for the
+/// sensors (sensors::StreamOptions::bounces): unset when no sensor asks
+/// (cwtof multipath_by_order); else the IR renderer's render.indirect.bounces
+/// (0 with indirect light off) or the reference's bounces - 1 (at most 1,
+/// checked by the config: its indirect light is then bounce 1).
+std::optional<int32_t> sensorBounces(const config::RunConfig& config);
+
 class SensorStreams {
  public:
   /// Opens every configured sensor for a volume of `shape`; spans carry the
-  /// direct component when `withDirect`. A sensor that does not fit the
-  /// volume (a row outside the image, ...) throws an InputError naming the
-  /// config file and the sensor, before any value arrives.
+  /// direct component when `withDirect`, and the direct component and
+  /// bounces 1..N when `bounces` = N. A sensor that does not fit the volume
+  /// (a row outside the image, ...) throws an InputError naming the config
+  /// file and the sensor, before any value arrives.
   SensorStreams(const config::RunConfig& config, const sensors::VolumeShape& shape, bool withDirect,
-                const std::filesystem::path& outputDirectory);
+                std::optional<int32_t> bounces, const std::filesystem::path& outputDirectory);
   ~SensorStreams();
   SensorStreams(const SensorStreams&) = delete;
   SensorStreams& operator=(const SensorStreams&) = delete;

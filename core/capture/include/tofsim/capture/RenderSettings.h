@@ -35,6 +35,14 @@ struct IndirectSettings {
   /// VPLs traced for each bounce after the first; 0 = as many as the first
   /// bounce has (rays that leave the scene make none).
   int32_t vpls_per_bounce = 0;
+  /// Russian roulette on the later bounces: a child VPL survives with
+  /// probability q = its hit's largest albedo channel, its flux divided by q,
+  /// and each bounce after the second traces as many rays as the bounce
+  /// before has VPLs. false: every bounce traces vpls_per_bounce rays.
+  bool russian_roulette = false;
+  /// Threads tracing the later bounces' rays (render.threads); 0 = all. The
+  /// bytes do not depend on it.
+  int32_t trace_threads = 0;
 };
 
 struct RenderSettings {

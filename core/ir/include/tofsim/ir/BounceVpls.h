@@ -31,6 +31,15 @@ struct BouncedVpls {
   }
 };
 
+/// How a bounce's rays are traced.
+struct BounceTracing {
+  /// A child survives with probability q = its hit's largest albedo
+  /// channel, its flux divided by q (IndirectSettings::russian_roulette).
+  bool russian_roulette = false;
+  /// Threads over fixed runs of rays; 0 = all. The bytes do not depend on it.
+  int32_t threads = 1;
+};
+
 /// The VPLs of one bounce after `parents` (those of bounce `bounce` - 1):
 /// `count` children picked among the parents in proportion to their power
 /// (systematic resampling, one seeded offset per bounce: deterministic, and
@@ -40,17 +49,21 @@ struct BouncedVpls {
 /// first hit, its normal facing the ray, its path the parent's plus eta times
 /// the leg, its flux albedo * (the total power / count) / pi in the parent's
 /// colour: the expected power of the bounce is the albedo times the parents'.
-/// Rays that leave the scene make no VPL. Children have no RSM patch
+/// Rays that leave the scene make no VPL; with Russian roulette a child
+/// that loses makes none either. Children have no RSM patch
 /// (patchU = patchV = 0: a point VPL, no VPL footprint): a child stands for
 /// the parents' light spread over the scene by a random ray, not for a texel
 /// of a light view whose extent the patch steps could describe.
 std::vector<Vpl> traceBounce(const reference::RayScene& scene, const std::vector<Vpl>& parents,
                              std::size_t count, int32_t bounce, uint64_t seed,
-                             double indexOfRefraction);
+                             double indexOfRefraction, const BounceTracing& tracing = {});
 
 /// Bounce 1 (`firstBounce`, the backend's RSM VPLs) followed by bounces
 /// 2..job.settings.indirect.bounces, traced through a RayScene of job.scene
-/// built here (only when there is a later bounce and light to continue).
+/// built here (only when there is a later bounce and light to continue), on
+/// indirect.trace_threads threads. Bounce 2 traces vpls_per_bounce rays (0:
+/// as many as bounce 1 has VPLs), and so does every later bounce, or with
+/// russian_roulette as many as the bounce before kept.
 BouncedVpls withLaterBounces(const capture::RenderJob& job, std::vector<Vpl> firstBounce);
 
 }  // namespace tofsim::ir

@@ -1,0 +1,46 @@
+#pragma once
+// Runs task(i) for i in [0, tasks) on `threads` threads. Which thread runs a
+// task is left to chance (an atomic counter balances the load), so a task
+// must own everything it writes: the CPU backend's tasks are fixed tiles of
+// pixels, each the only writer of its pixels' bins, and the later bounces'
+// tasks fixed runs of rays, each writing its own children's slots, which
+// makes the bytes independent of the thread count and of the schedule.
+// Header-only: a user links Threads::Threads.
+
+#include <algorithm>
+#include <atomic>
+#include <cstddef>
+#include <exception>
+#include <mutex>
+#include <thread>
+#include <vector>
+
+namespace tofsim {
+
+template <typename Task>
+void parallelFor(std::size_t tasks, int threads, const Task& task) {
+  const std::size_t workers = std::min<std::size_t>(std::max(threads, 1), tasks);
+  if (workers <= 1) {
+    for (std::size_t i = 0; i < tasks; ++i) task(i);
+    return;
+  }
+  std::atomic<std::size_t> next{0};
+  std::exception_ptr error;
+  std::mutex errorMutex;
+  const auto work = [&] {
+    try {
+      for (std::size_t i; (i = next.fetch_add(1)) < tasks;) task(i);
+    } catch (...) {
+      const std::lock_guard<std::mutex> lock(errorMutex);
+      if (!error) error = std::current_exception();
+      next = tasks;  // the others stop after their current task
+    }
+  };
+  std::vector<std::thread> pool;
+  for (std::size_t t = 1; t < workers; ++t) pool.emplace_back(work);
+  work();
+  for (std::thread& t : pool) t.join();
+  if (error) std::rethrow_exception(error);
+}
+
+}  // namespace tofsim

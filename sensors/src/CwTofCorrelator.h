@@ -1,0 +1,72 @@
+#pragma once
+// Private to the CW-ToF model: the noise-free raw values of a pixel's
+// transient (exact per-bin correlation) and the depth they give.
+
+#include <cmath>
+#include <vector>
+
+#include "tofsim/sensors/CwTof.h"
+
+namespace tofsim::sensors {
+
+/// Per pixel: the noise-free raw values (F * N) of a volume.
+struct Correlator {
+  const CwTofParams& p;
+  const TimeAxis& axis;
+  std::vector<double> table;  // (F, N, T): correlation of each render bin
+
+  Correlator(const CwTofParams& params, const TimeAxis& a) : p(params), axis(a) {
+    const int32_t N = p.phase_steps;
+    for (double f : p.frequencies_Hz) {
+      for (int32_t k = 0; k < N; ++k) {
+        const double phi = 2.0 * M_PI * k / N;
+        for (int32_t t = 0; t < axis.bins; ++t) {
+          const double t0 = axis.binStart_s(t);
+          table.push_back(binCorrelation(p.waveform, f, phi, t0, t0 + axis.bin_width_s));
+        }
+      }
+    }
+  }
+
+  /// raw[f * N + k] = 0.5 (sum E + ambient) + 0.5 sum_t E_t rho_t(f, k).
+  void raw(const std::vector<double>& signal, double ambient, std::vector<double>& out) const {
+    const std::size_t T = signal.size();
+    const std::size_t FN = p.frequencies_Hz.size() * p.phase_steps;
+    double total = ambient;
+    for (double e : signal) total += e;
+    out.assign(FN, 0.5 * total);
+    for (std::size_t j = 0; j < FN; ++j) {
+      const double* rho = table.data() + j * T;
+      double s = 0.0;
+      for (std::size_t t = 0; t < T; ++t) s += signal[t] * rho[t];
+      out[j] += 0.5 * s;
+    }
+  }
+
+  /// Phases and amplitudes (F) from raw values, and the depth: unwrapped
+  /// over `range` when F >= 2, the wrapped depth of the one frequency else.
+  double depth(const std::vector<double>& raw, std::vector<double>& phases,
+               std::vector<double>& amplitudes, double range) const {
+    const auto F = static_cast<int32_t>(p.frequencies_Hz.size());
+    phases.resize(F);
+    amplitudes.resize(F);
+    for (int32_t f = 0; f < F; ++f) {
+      phaseFromSteps(raw.data() + static_cast<std::size_t>(f) * p.phase_steps, p.phase_steps,
+                     phases[f], amplitudes[f]);
+    }
+    // Delay -> depth in the medium (c / eta), so a scene in water is not
+    // reported as (eta - 1) x depth of multipath error.
+    return unwrapDepth_m(phases, p.frequencies_Hz, range, axis.depthPerSecond_m_per_s());
+  }
+
+  /// The depth one frequency's phase stands for, in [0, k / f).
+  double wrappedDepth(std::size_t f, double phase) const {
+    return axis.depthPerSecond_m_per_s() * phase / (2.0 * M_PI * p.frequencies_Hz[f]);
+  }
+};
+
+/// An error e between two depths measured modulo `range`, folded into
+/// [-range/2, range/2]: a whole number of wraps is ambiguity, not multipath.
+inline double wrapSigned(double e, double range) { return e - range * std::round(e / range); }
+
+}  // namespace tofsim::sensors
