@@ -2,6 +2,7 @@
 
 #include <optional>
 
+#include "tofsim/physics/GltfBrdf.h"
 #include "tofsim/reference/RayScene.h"
 #include "tofsim/reference/Sampling.h"
 #include "tofsim/util/Error.h"
@@ -22,11 +23,30 @@ uint64_t unitOf(uint64_t tag, int32_t bounce, std::size_t index) {
 
 double powerOf(const Vpl& v) { return static_cast<double>(v.flux.r) + v.flux.g + v.flux.b; }
 
+// A glossy child (render.materials: gltf) at `hit`, reached from `parent`
+// along w (cosine-sampled): it receives the parent's share times the BRDF
+// weight f cos / pdf = pi f(incoming, w) (clamped as the gather clamps the
+// VPL's BRDF), comes in from -w, and carries the hit's material.
+std::optional<Vpl> glossyChild(const Vpl& parent, const glm::vec3& share, const glm::vec3& w,
+                               const reference::SurfaceHit& hit, float path_m, float brdfClamp) {
+  const glm::vec3 f = physics::gltfVplBrdf(glm::vec3(parent.normal), glm::vec3(parent.incoming), w,
+                                           glm::vec3(parent.material), parent.incoming.w,
+                                           parent.material.w, brdfClamp);
+  const glm::vec3 power = share * (physics::kGltfPi * f);
+  if (!(power.r + power.g + power.b > 0.0f)) return std::nullopt;
+  Vpl child{glm::vec4(hit.position_world, path_m), glm::vec4(hit.normal_world, 0.0f),
+            glm::vec4(power, 0.0f)};
+  child.incoming = glm::vec4(-w, hit.metallic);
+  child.material = glm::vec4(hit.albedo, hit.roughness);
+  return child;
+}
+
 // Child `index`'s light path continued from `parent`, whose power share is
-// `share` (rgb, W/sr: the parent's flux scaled to total power / count).
+// `share` (rgb: the parent's flux scaled to total power / count; W/sr, or W
+// for glossy VPLs).
 std::optional<Vpl> shootChild(const reference::RayScene& scene, const Vpl& parent,
                               const glm::vec3& share, int32_t bounce, uint64_t seed,
-                              std::size_t index, float eta) {
+                              std::size_t index, float eta, const BounceMaterials& materials) {
   Pcg32 rng = Pcg32::forUnit(seed, unitOf(kChildUnit, bounce, index));
   const glm::vec3 p(parent.positionPath);
   const glm::vec3 n(parent.normal);
@@ -36,9 +56,10 @@ std::optional<Vpl> shootChild(const reference::RayScene& scene, const Vpl& paren
   if (!(glm::dot(w, n) > 0.0f)) return std::nullopt;
   const auto hit = scene.intersect(p + n * scene.epsilon_m(), w);
   if (!hit) return std::nullopt;  // the light leaves the scene
+  const float path_m = parent.positionPath.w + eta * glm::length(hit->position_world - p);
+  if (materials.gltf) return glossyChild(parent, share, w, *hit, path_m, materials.brdfClamp);
   const glm::vec3 flux = hit->albedo * share;
   if (!(flux.r + flux.g + flux.b > 0.0f)) return std::nullopt;
-  const float path_m = parent.positionPath.w + eta * glm::length(hit->position_world - p);
   return Vpl{glm::vec4(hit->position_world, path_m), glm::vec4(hit->normal_world, 0.0f),
              glm::vec4(flux, 0.0f)};
 }
@@ -47,7 +68,7 @@ std::optional<Vpl> shootChild(const reference::RayScene& scene, const Vpl& paren
 
 std::vector<Vpl> traceBounce(const reference::RayScene& scene, const std::vector<Vpl>& parents,
                              std::size_t count, int32_t bounce, uint64_t seed,
-                             double indexOfRefraction) {
+                             double indexOfRefraction, const BounceMaterials& materials) {
   std::vector<Vpl> children;
   double total = 0.0;
   for (const Vpl& v : parents) total += powerOf(v);
@@ -69,7 +90,7 @@ std::vector<Vpl> traceBounce(const reference::RayScene& scene, const std::vector
     }
     const Vpl& from = parents[parent];
     const glm::vec3 share = glm::vec3(from.flux) * static_cast<float>(step / powerOf(from));
-    if (const auto child = shootChild(scene, from, share, bounce, seed, j, eta)) {
+    if (const auto child = shootChild(scene, from, share, bounce, seed, j, eta, materials)) {
       children.push_back(*child);
     }
   }
@@ -92,7 +113,9 @@ BouncedVpls withLaterBounces(const capture::RenderJob& job, std::vector<Vpl> fir
   std::vector<Vpl> parents(out.vpls);
   for (int32_t bounce = 2; bounce <= s.bounces; ++bounce) {
     parents = traceBounce(scene, parents, count, bounce, job.settings.seed,
-                          job.settings.index_of_refraction);
+                          job.settings.index_of_refraction,
+                          {job.settings.materials == capture::MaterialModel::Gltf,
+                           static_cast<float>(s.vpl_brdf_clamp_per_sr)});
     out.vpls.insert(out.vpls.end(), parents.begin(), parents.end());
     out.firstOfBounce.push_back(out.vpls.size());
   }

@@ -21,8 +21,10 @@ using ir::Vpl;  // matches struct Vpl in shaders/vpl.glsl (std430)
 /// Spot lights narrower than 60 degrees (half angle) use one view of side
 /// `rsmResolution` covering the cone; wider spots and point lights use six
 /// cube faces of that side. VPLs are in texel order, faces in +X..-Z order.
+/// `gltf` (render.materials: gltf): glossy VPLs, from the RSM's metallic and
+/// roughness too (ir::rsmTexelVpl).
 std::vector<Vpl> generateVpls(const GpuScene& scene, const capture::Light& light, int rsmResolution,
                               double indexOfRefraction, const glm::vec3& boundsMin,
-                              const glm::vec3& boundsMax);
+                              const glm::vec3& boundsMax, bool gltf);
 
 }  // namespace tofsim::render
