@@ -5,6 +5,8 @@
 // flux it receives, Phi = I * profile * Omega; the surface reflects it
 // diffusely, so the VPL is a cosine emitter of intensity
 // albedo * Phi / pi * cos(theta), emitting at t_l = eta * |l - x_l| / c.
+// With render.materials: gltf it keeps Phi, the direction to the light and
+// its material, and emits by its BRDF (ir::rsmTexelVpl).
 
 #include <glm/glm.hpp>
 #include <vector>
