@@ -8,6 +8,10 @@
 // and adding in a fixed order (VPL, then sample: an order that does not
 // depend on where the batches and dispatches split the VPLs), makes the sum
 // reproducible bit for bit whatever the batch and segment sizes.
+// With GLTF_MATERIALS (render.materials: gltf) both ends of a contribution
+// carry the glTF BRDF (gltf_brdf.glsl): the VPL's toward x for the direction
+// its light arrived from (clamped at uVplBrdfClamp), and x's toward the
+// camera for the direction to the VPL.
 layout(local_size_x = TOFSIM_WORK_GROUP_SIZE) in;
 
 #include "transient_physics.glsl"
@@ -21,6 +25,10 @@ uniform int uIsmResolution;
 #endif
 
 #include "surface_samples.glsl"
+#ifdef GLTF_MATERIALS
+#include "gltf_brdf.glsl"
+uniform float uVplBrdfClamp;  // 1/sr, <= 0: no clamping
+#endif
 
 layout(std430, binding = TOFSIM_SSBO_INDIRECT_VOLUME) buffer IndirectVolume { float indirect[]; };
 layout(std430, binding = TOFSIM_SSBO_OUTSIDE_AXIS) buffer OutsideAxis { float outside[]; };  // [2 * pixel]: before, [2 * pixel + 1]: after
@@ -75,6 +83,13 @@ struct Sample {
   vec3 x;
   vec3 n;
   vec3 brdf;          // albedo / pi, times the sample's weight with several samples
+#ifdef GLTF_MATERIALS
+  vec3 baseColor;     // the glTF BRDF's parameters at x
+  float metallic;
+  float roughness;
+  vec3 toCamera;      // unit, x -> camera
+  float weight;       // the sample's share of the pixel (1 with one point sample)
+#endif
   float cameraPath;   // eta |x - c|, or 0 when unwarped
 #ifdef PIXEL_FOOTPRINT
   vec3 dxdu, dxdv;    // the surface's steps across the sub-pixel
@@ -91,6 +106,18 @@ Sample loadSample(ivec2 xy, int s) {
   o.brdf = texelFetch(uGAlbedo, texel, 0).rgb / PI;
 #if defined(PIXEL_FOOTPRINT) || PIXEL_SAMPLES > 1
   o.brdf = o.brdf * uSampleWeight;  // as the CPU's PixelSurface::brdf
+#endif
+#ifdef GLTF_MATERIALS
+  o.baseColor = texelFetch(uGAlbedo, texel, 0).rgb;
+  vec2 metallicRoughness = texelFetch(uGMetallicRoughness, texel, 0).rg;
+  o.metallic = metallicRoughness.x;
+  o.roughness = metallicRoughness.y;
+  o.toCamera = normalize(uCameraPosition_world - o.x);
+#if defined(PIXEL_FOOTPRINT) || PIXEL_SAMPLES > 1
+  o.weight = uSampleWeight;
+#else
+  o.weight = 1.0;
+#endif
 #endif
   o.cameraPath = cameraPathLength(uCameraUnwarp != 0, uIndexOfRefraction,
                                   length(o.x - uCameraPosition_world));
@@ -113,7 +140,14 @@ void gatherVpl(uint local, Sample at, uint k, Vpl vpl, inout float lostBefore,
   if (cosVpl <= 0.0 || cosX <= 0.0) return;
   float g = geometryTerm(cosVpl, cosX, dist2, uGeometryClamp);
   if (!visible(uFirstVpl - uIsmFirstVpl + k, vpl, at.x, at.n, d, dist, iterations)) return;
+#ifdef GLTF_MATERIALS
+  vec3 fVpl = gltfVplBrdf(vpl.normal.xyz, vpl.incoming.xyz, d, vpl.material.rgb, vpl.incoming.w,
+                          vpl.material.w, uVplBrdfClamp);
+  vec3 fCamera = gltfBrdf(at.n, -d, at.toCamera, at.baseColor, at.metallic, at.roughness) * at.weight;
+  vec3 radiance = gltfVplRadiance(fCamera, fVpl, vpl.flux.rgb, g);
+#else
   vec3 radiance = at.brdf * vpl.flux.rgb * g;
+#endif
   float path_m = vplPathLength(vpl.positionPath.w, uIndexOfRefraction, dist, at.cameraPath);
 #ifdef PIXEL_FOOTPRINT
   vec2 pixelSteps = pathStepsAcrossPixel(

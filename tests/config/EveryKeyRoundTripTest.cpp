@@ -63,6 +63,7 @@ render:
     ism_pull_push: false
     visibility: exact
     geometry_clamp: 50
+    vpl_brdf_clamp: 8
     vpl_footprint: false
     bounces: 3
     vpls_per_bounce: 500

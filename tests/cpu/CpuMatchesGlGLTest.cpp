@@ -93,8 +93,9 @@ void expectSameVpls(const capture::RenderJob& job) {
   glm::vec3 lo, hi;
   viewBounds(job, lo, hi);
   const capture::IndirectSettings& s = job.settings.indirect;
-  const auto gl = render::generateVpls(gpuScene, job.light, s.rsm_resolution,
-                                       job.settings.index_of_refraction, lo, hi);
+  const auto gl =
+      render::generateVpls(gpuScene, job.light, s.rsm_resolution, job.settings.index_of_refraction,
+                           lo, hi, job.settings.materials == capture::MaterialModel::Gltf);
   CpuBackend backend({2, true});
   backend.prepareSurfaces(job);
   const auto cpu = backend.generateVpls(job);
@@ -106,13 +107,34 @@ void expectSameVpls(const capture::RenderJob& job) {
       EXPECT_NEAR(cpu[k].positionPath[i], gl[k].positionPath[i], tol) << "VPL " << k;
       EXPECT_NEAR(cpu[k].normal[i], gl[k].normal[i], 1e-5f) << "VPL " << k;
       EXPECT_NEAR(cpu[k].flux[i], gl[k].flux[i], 2e-4f * gl[k].flux[i]) << "VPL " << k;
+      // render.materials: gltf: the direction to the light and the material (0 otherwise).
+      EXPECT_NEAR(cpu[k].incoming[i], gl[k].incoming[i], 1e-5f) << "VPL " << k;
+      EXPECT_NEAR(cpu[k].material[i], gl[k].material[i], 1e-5f) << "VPL " << k;
     }
+    EXPECT_NEAR(cpu[k].incoming.w, gl[k].incoming.w, 1e-6f) << "VPL " << k;
+    EXPECT_NEAR(cpu[k].material.w, gl[k].material.w, 1e-6f) << "VPL " << k;
     EXPECT_NEAR(cpu[k].positionPath.w, gl[k].positionPath.w, tol) << "VPL " << k;
   }
 }
 
 TEST(CpuMatchesGlGLTest, VplsOfAPointLightOnTheCorner) {
   test::CornerJob s(16);
+  s.job.settings.indirect.rsm_resolution = 16;
+  expectSameVpls(s.job);
+}
+
+// The corner with a glossy floor (a rough metal) and a glossy dielectric wall.
+test::CornerJob glossyCorner(int32_t side) {
+  test::CornerJob s(side);
+  s.scene.materials.at(0).metallic = 0.8f;
+  s.scene.materials.at(0).roughness = 0.35f;
+  s.scene.materials.at(1).roughness = 0.5f;
+  s.job.settings.materials = capture::MaterialModel::Gltf;
+  return s;
+}
+
+TEST(CpuMatchesGlGLTest, GlossyVplsOfAPointLightOnTheCorner) {
+  test::CornerJob s = glossyCorner(16);
   s.job.settings.indirect.rsm_resolution = 16;
   expectSameVpls(s.job);
 }
@@ -222,6 +244,29 @@ TEST(CpuMatchesGlGLTest, CornerVolumesWithExactVisibility) {
 }
 TEST(CpuMatchesGlGLTest, CornerVolumesWithIsms) {
   expectSameCornerVolumes(capture::Visibility::Ism);
+}
+
+// Glossy VPLs and the BRDF on the camera side of their light agree as the
+// diffuse ones do, with the same tolerances: exact visibility with and
+// without the clamp, and ISMs (whose splat reads the glossy VPL layout).
+TEST(CpuMatchesGlGLTest, GlossyCornerVolumes) {
+  const struct {
+    capture::Visibility visibility;
+    double clamp;
+  } variants[] = {{capture::Visibility::Exact, 0.0},
+                  {capture::Visibility::Exact, 1.0},
+                  {capture::Visibility::Ism, 0.0}};
+  for (const auto& [visibility, clamp] : variants) {
+    SCOPED_TRACE(testing::Message() << (visibility == capture::Visibility::Ism ? "ism" : "exact")
+                                    << ", vpl_brdf_clamp " << clamp);
+    test::CornerJob s = glossyCorner(24);
+    s.job.settings.indirect.visibility = visibility;
+    s.job.settings.indirect.points_per_vpl = 500;
+    s.job.settings.indirect.rsm_resolution = 16;
+    s.job.settings.indirect.vpl_brdf_clamp_per_sr = clamp;
+    s.job.settings.shadow_map_resolution = 512;
+    expectSameVolumesForEachPixelModel(s.job, 1e-3, 1e-2);
+  }
 }
 
 TEST(CpuMatchesGlGLTest, PlaneVolumes) {

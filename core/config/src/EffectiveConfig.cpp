@@ -70,6 +70,7 @@ YAML::Node renderNode(const RunConfig& config) {
   i["ism_pull_push"] = r.indirect.ism_pull_push;
   i["visibility"] = r.indirect.visibility == capture::Visibility::Exact ? "exact" : "ism";
   i["geometry_clamp"] = shortest(r.indirect.geometry_term_clamp_per_m2);
+  i["vpl_brdf_clamp"] = shortest(r.indirect.vpl_brdf_clamp_per_sr);
   i["vpl_footprint"] = r.indirect.vpl_footprint;
   i["bounces"] = r.indirect.bounces;
   i["vpls_per_bounce"] = r.indirect.vpls_per_bounce;

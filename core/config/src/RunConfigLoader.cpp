@@ -140,6 +140,7 @@ void parseIndirect(const ConfigNode& node, capture::IndirectSettings& s) {
     node.failKey("visibility", "must be ism or exact (got '" + vis + "')");
   }
   s.geometry_term_clamp_per_m2 = node.getDouble("geometry_clamp", s.geometry_term_clamp_per_m2);
+  s.vpl_brdf_clamp_per_sr = node.getDouble("vpl_brdf_clamp", s.vpl_brdf_clamp_per_sr);
   s.vpl_footprint = node.getBool("vpl_footprint", s.vpl_footprint);
   s.bounces = static_cast<int32_t>(intInRange(node, "bounces", s.bounces, 1, 8));
   s.vpls_per_bounce =

@@ -78,11 +78,12 @@ std::vector<ir::Vpl> CpuBackend::generateVpls(const capture::RenderJob& job) {
   const capture::IndirectSettings& s = job.settings.indirect;
   if (!s.enabled) return {};
   return traceRsmVpls(*scene_, job.light, s.rsm_resolution, job.settings.index_of_refraction,
-                      threads_);
+                      job.settings.materials == capture::MaterialModel::Gltf, threads_);
 }
 
 void CpuBackend::setVpls(const std::vector<ir::Vpl>& vpls) {
-  vpls_ = std::make_unique<VplArrays>(vpls);
+  vpls_ =
+      std::make_unique<VplArrays>(vpls, job_.settings.materials == capture::MaterialModel::Gltf);
   ism_.reset();
   if (indirectVisibility_ && job_.settings.indirect.visibility == capture::Visibility::Ism &&
       !vpls.empty()) {
@@ -155,6 +156,13 @@ void CpuBackend::beginSegment(std::size_t firstPixel, std::size_t count) {
     surface.x = glm::vec3(surfaces_->position[p]);
     surface.n = glm::vec3(surfaces_->normal[p]);
     surface.brdf = glm::vec3(surfaces_->albedo[p]) / physics::PI * weight;
+    if (s.materials == capture::MaterialModel::Gltf) {
+      surface.baseColor = glm::vec3(surfaces_->albedo[p]);
+      surface.metallic = surfaces_->metallicRoughness[p].x;
+      surface.roughness = surfaces_->metallicRoughness[p].y;
+      surface.toCamera = glm::normalize(camera.position_world - surface.x);
+      surface.weight = weight;
+    }
     surface.cameraPath_m = physics::cameraPathLength(
         s.camera_unwarp, eta, glm::length(surface.x - camera.position_world));
     const glm::vec3 toSurface = surface.x - camera.position_world;
@@ -284,6 +292,8 @@ void CpuBackend::gatherTile(std::size_t tile, std::size_t firstVpl, std::size_t 
   c.footprint = s.pixel_footprint;
   c.vplFootprint = s.pixel_footprint && s.indirect.vpl_footprint;
   c.cameraUnwarp = s.camera_unwarp;
+  c.gltf = s.materials == capture::MaterialModel::Gltf;
+  c.vplBrdfClamp = static_cast<float>(s.indirect.vpl_brdf_clamp_per_sr);
   c.camera = job_.camera.position_world;
   c.bins = bins;
   const bool exact = indirectVisibility_ && s.indirect.visibility == capture::Visibility::Exact;

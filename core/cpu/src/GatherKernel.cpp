@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "tofsim/physics/FootprintKernel.h"
+#include "tofsim/physics/GltfBrdf.h"
 #include "tofsim/physics/TransientPhysics.h"
 
 namespace tofsim::cpu {
@@ -17,8 +18,7 @@ static_assert(kFootprintDirectBins == physics::FOOTPRINT_DIRECT_BINS);
 // patch, combined into one trapezoid.
 __attribute__((target_clones("avx2", "default"))) void vplKernels(const PixelSurface& s,
                                                                   const VplArrays& v,
-                                                                  std::size_t first,
-                                                                  std::size_t n,
+                                                                  std::size_t first, std::size_t n,
                                                                   const GatherConstants& c,
                                                                   VplTerms& __restrict terms) {
   const float eta = c.indexOfRefraction;
@@ -43,8 +43,8 @@ __attribute__((target_clones("avx2", "default"))) void vplKernels(const PixelSur
   const int bins = c.bins;
   for (std::size_t i = 0; i < n; ++i) {
     const glm::vec2 pixel = physics::pathStepsAcrossPixel(
-        physics::opticalPathGradient(x, glm::vec3(px[i], py[i], pz[i]), camera, eta, unwarp),
-        dxdu, dxdv);
+        physics::opticalPathGradient(x, glm::vec3(px[i], py[i], pz[i]), camera, eta, unwarp), dxdu,
+        dxdv);
     const glm::vec3 d(terms.dx[i], terms.dy[i], terms.dz[i]);
     // Loaded for every lane and zeroed without the VPL footprint: a
     // conditional load would be a branch, and the loop would not vectorise.
@@ -65,6 +65,31 @@ __attribute__((target_clones("avx2", "default"))) void vplKernels(const PixelSur
     for (int j = 0; j < kFootprintDirectBins; ++j) {
       terms.mass[j][i] = physics::footprintNarrowMass(kernel, j);
     }
+  }
+}
+
+// render.materials: gltf: the block's radiance with the glTF BRDF at both
+// ends, as indirect_gather.comp's GLTF_MATERIALS, from the directions and
+// distances vplTerms left in `terms` (lanes that light nothing are not read).
+void glossyRadiance(const PixelSurface& s, const VplArrays& v, std::size_t first, std::size_t n,
+                    const GatherConstants& c, VplTerms& terms) {
+  for (std::size_t i = 0; i < n; ++i) {
+    if (terms.bin[i] == kNoLight) continue;
+    const std::size_t k = first + i;
+    const glm::vec3 d(terms.dx[i], terms.dy[i], terms.dz[i]);
+    const glm::vec3 vplN(v.nx[k], v.ny[k], v.nz[k]);
+    const glm::vec3 toX = s.x - glm::vec3(v.px[k], v.py[k], v.pz[k]);
+    const float dist2 = glm::dot(toX, toX);
+    const float g =
+        physics::geometryTerm(glm::dot(vplN, d), -glm::dot(s.n, d), dist2, c.geometryClamp);
+    const glm::vec3 fVpl = physics::gltfVplBrdf(vplN, glm::vec3(v.ix[k], v.iy[k], v.iz[k]), d,
+                                                glm::vec3(v.br[k], v.bg[k], v.bb[k]), v.metallic[k],
+                                                v.roughness[k], c.vplBrdfClamp);
+    const glm::vec3 fCamera =
+        physics::gltfBrdf(s.n, -d, s.toCamera, s.baseColor, s.metallic, s.roughness) * s.weight;
+    const glm::vec3 radiance =
+        physics::gltfVplRadiance(fCamera, fVpl, glm::vec3(v.fr[k], v.fg[k], v.fb[k]), g);
+    terms.r[i] = radiance.r, terms.g[i] = radiance.g, terms.b[i] = radiance.b;
   }
 }
 
@@ -109,6 +134,7 @@ __attribute__((target_clones("avx2", "default"))) void vplTerms(const PixelSurfa
     terms.b[i] = s.brdf.b * fb[i] * g;
     terms.dx[i] = dx, terms.dy[i] = dy, terms.dz[i] = dz, terms.dist[i] = dist;
   }
+  if (c.gltf) glossyRadiance(s, v, first, n, c, terms);
   if (c.footprint) vplKernels(s, v, first, n, c, terms);
 }
 

@@ -17,9 +17,9 @@
 
 namespace tofsim::cpu {
 
-constexpr std::size_t kVplBlock = 256;  ///< VPLs per block: ~10 KiB of VPL data, in L1
-constexpr int32_t kNoLight = INT_MIN;   ///< bin of a VPL that does not light the pixel
-constexpr int kFootprintDirectBins = 16; ///< = FOOTPRINT_DIRECT_BINS (checked in GatherKernel.cpp)
+constexpr std::size_t kVplBlock = 256;    ///< VPLs per block: ~10 KiB of VPL data, in L1
+constexpr int32_t kNoLight = INT_MIN;     ///< bin of a VPL that does not light the pixel
+constexpr int kFootprintDirectBins = 16;  ///< = FOOTPRINT_DIRECT_BINS (checked in GatherKernel.cpp)
 
 /// The camera G-buffer of one pixel, as the gather needs it.
 struct PixelSurface {
@@ -29,6 +29,12 @@ struct PixelSurface {
   float cameraPath_m = 0.0f;  ///< eta * |x - c|, or 0 when unwarped
   glm::vec3 dxdu{0.0f};       ///< x's steps across the (sub-)pixel (surfaceStepAcrossPixel)
   glm::vec3 dxdv{0.0f};
+  // render.materials: gltf: the glTF BRDF's parameters at x.
+  glm::vec3 baseColor{0.0f};
+  float metallic = 0.0f;
+  float roughness = 1.0f;
+  glm::vec3 toCamera{0.0f};  ///< unit, x -> camera
+  float weight = 1.0f;       ///< the sample's share of the pixel, 1 / N^2
 };
 
 /// What the time axis and the job fix for every contribution.
@@ -40,8 +46,10 @@ struct GatherConstants {
   bool footprint = false;      ///< compute the footprint kernels (render.pixel_footprint)
   bool vplFootprint = false;   ///< include the VPL patch's widths (render.indirect.vpl_footprint)
   bool cameraUnwarp = false;
-  glm::vec3 camera{0.0f};  ///< camera position, for the camera leg's path gradient
-  int32_t bins = 0;        ///< of the time axis
+  bool gltf = false;          ///< render.materials: gltf (VplArrays::glossy)
+  float vplBrdfClamp = 0.0f;  ///< 1/sr, <= 0: no clamp
+  glm::vec3 camera{0.0f};     ///< camera position, for the camera leg's path gradient
+  int32_t bins = 0;           ///< of the time axis
 };
 
 /// Per-VPL terms of one block: bin (kNoLight when the VPL does not face the
@@ -59,7 +67,8 @@ struct VplTerms {
   alignas(64) float dx[kVplBlock], dy[kVplBlock], dz[kVplBlock], dist[kVplBlock];
 };
 
-/// Fills terms[0, n) for VPLs [first, first + n), n <= kVplBlock.
+/// Fills terms[0, n) for VPLs [first, first + n), n <= kVplBlock; with
+/// c.gltf the radiance carries the glTF BRDF at both ends (gltfVplRadiance).
 void vplTerms(const PixelSurface& s, const VplArrays& v, std::size_t first, std::size_t n,
               const GatherConstants& c, VplTerms& terms);
 

@@ -12,26 +12,30 @@ namespace {
 // The VPL of texel (x, y) of a view (row 0 at the bottom, as GL stores it), or
 // nothing when the texel sees no lit surface: a ray where the GL rasterises.
 std::optional<ir::Vpl> texelVpl(const reference::RayScene& scene, const capture::Light& light,
-                                const ir::RsmView& v, int resolution, int x, int y, double eta) {
+                                const ir::RsmView& v, int resolution, int x, int y, double eta,
+                                bool gltf) {
   const glm::vec3 direction = ir::rsmTexelDirection(v, resolution, x, y);
   const auto hit = scene.intersect(light.position_world, direction);
   if (!hit) return std::nullopt;
-  return ir::rsmTexelVpl(light, v, resolution, x, y,
-                         {hit->position_world, hit->normal_world, hit->albedo}, eta);
+  return ir::rsmTexelVpl(
+      light, v, resolution, x, y,
+      {hit->position_world, hit->normal_world, hit->albedo, hit->metallic, hit->roughness}, eta,
+      gltf);
 }
 
 }  // namespace
 
 std::vector<ir::Vpl> traceRsmVpls(const reference::RayScene& scene, const capture::Light& light,
-                                  int resolution, double indexOfRefraction, int threads) {
+                                  int resolution, double indexOfRefraction, bool gltf,
+                                  int threads) {
   std::vector<ir::Vpl> vpls;
   for (const ir::RsmView& view : ir::rsmViews(light)) {
     // Rows in parallel, then appended in texel order.
     std::vector<std::vector<ir::Vpl>> rows(static_cast<std::size_t>(resolution));
     parallelFor(rows.size(), threads, [&](std::size_t row) {
       for (int x = 0; x < resolution; ++x) {
-        const auto vpl =
-            texelVpl(scene, light, view, resolution, x, static_cast<int>(row), indexOfRefraction);
+        const auto vpl = texelVpl(scene, light, view, resolution, x, static_cast<int>(row),
+                                  indexOfRefraction, gltf);
         if (vpl) rows[row].push_back(*vpl);
       }
     });

@@ -7,7 +7,7 @@
 // differ only where a triangle edge crosses a texel centre (the rasterizer's
 // tie rule) and in float rounding of the hit point. Unlike the GL, surfaces
 // closer to the light than its near plane (1e-4 of the scene's far distance)
-// are not clipped.
+// are not clipped. `gltf`: glossy VPLs (ir::rsmTexelVpl).
 
 #include <vector>
 
@@ -18,6 +18,7 @@
 namespace tofsim::cpu {
 
 std::vector<ir::Vpl> traceRsmVpls(const reference::RayScene& scene, const capture::Light& light,
-                                  int rsmResolution, double indexOfRefraction, int threads);
+                                  int rsmResolution, double indexOfRefraction, bool gltf,
+                                  int threads);
 
 }  // namespace tofsim::cpu

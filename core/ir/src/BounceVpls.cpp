@@ -4,6 +4,7 @@
 #include <optional>
 #include <thread>
 
+#include "tofsim/physics/GltfBrdf.h"
 #include "tofsim/reference/RayScene.h"
 #include "tofsim/reference/Sampling.h"
 #include "tofsim/util/Error.h"
@@ -34,11 +35,31 @@ glm::vec3 continuationDirection(const Vpl& parent, Pcg32& rng) {
   return reference::cosineSampleHemisphere(glm::vec3(parent.normal), u1, u2);
 }
 
+// A glossy child (render.materials: gltf) at `hit`, reached from `parent`
+// along w (cosine-sampled): it receives the parent's share times the BRDF
+// weight f cos / pdf = pi f(incoming, w) (clamped as the gather clamps the
+// VPL's BRDF), comes in from -w, and carries the hit's material.
+std::optional<Vpl> glossyChild(const Vpl& parent, const glm::vec3& share, const glm::vec3& w,
+                               const reference::SurfaceHit& hit, float path_m, float brdfClamp) {
+  const glm::vec3 f = physics::gltfVplBrdf(glm::vec3(parent.normal), glm::vec3(parent.incoming), w,
+                                           glm::vec3(parent.material), parent.incoming.w,
+                                           parent.material.w, brdfClamp);
+  const glm::vec3 power = share * (physics::kGltfPi * f);
+  if (!(power.r + power.g + power.b > 0.0f)) return std::nullopt;
+  Vpl child{glm::vec4(hit.position_world, path_m), glm::vec4(hit.normal_world, 0.0f),
+            glm::vec4(power, 0.0f)};
+  child.incoming = glm::vec4(-w, hit.metallic);
+  child.material = glm::vec4(hit.albedo, hit.roughness);
+  return child;
+}
+
 // Child `index`'s light path continued from `parent`, whose power share is
-// `share` (rgb, W/sr: the parent's flux scaled to total power / count).
+// `share` (rgb: the parent's flux scaled to total power / count; W/sr, or W
+// for glossy VPLs).
 std::optional<Vpl> shootChild(const reference::RayScene& scene, const Vpl& parent,
                               const glm::vec3& share, int32_t bounce, uint64_t seed,
-                              std::size_t index, float eta, bool russianRoulette) {
+                              std::size_t index, float eta, const BounceTracing& tracing,
+                              const BounceMaterials& materials) {
   Pcg32 rng = Pcg32::forUnit(seed, unitOf(kChildUnit, bounce, index));
   const glm::vec3 p(parent.positionPath);
   const glm::vec3 n(parent.normal);
@@ -46,18 +67,22 @@ std::optional<Vpl> shootChild(const reference::RayScene& scene, const Vpl& paren
   if (!(glm::dot(w, n) > 0.0f)) return std::nullopt;
   const auto hit = scene.intersect(p + n * scene.epsilon_m(), w);
   if (!hit) return std::nullopt;  // the light leaves the scene
-  glm::vec3 flux = hit->albedo * share;
-  if (!(flux.r + flux.g + flux.b > 0.0f)) return std::nullopt;
-  if (russianRoulette) {
+  const float path_m = parent.positionPath.w + eta * glm::length(hit->position_world - p);
+  std::optional<Vpl> child;
+  if (materials.gltf) {
+    child = glossyChild(parent, share, w, *hit, path_m, materials.brdfClamp);
+  } else if (const glm::vec3 flux = hit->albedo * share; flux.r + flux.g + flux.b > 0.0f) {
+    child = Vpl{glm::vec4(hit->position_world, path_m), glm::vec4(hit->normal_world, 0.0f),
+                glm::vec4(flux, 0.0f)};
+  }
+  if (child && tracing.russian_roulette) {
     // Survival q = the largest albedo channel: a survivor's flux / q stays
     // within the share in every channel, and E[flux] is unchanged.
     const float q = std::min(1.0f, std::max({hit->albedo.r, hit->albedo.g, hit->albedo.b}));
     if (!(rng.nextFloat() < q)) return std::nullopt;
-    flux /= q;
+    child->flux /= q;
   }
-  const float path_m = parent.positionPath.w + eta * glm::length(hit->position_world - p);
-  return Vpl{glm::vec4(hit->position_world, path_m), glm::vec4(hit->normal_world, 0.0f),
-             glm::vec4(flux, 0.0f)};
+  return child;
 }
 
 // Rays per task: a fixed split, so that each task writes its own slots.
@@ -67,7 +92,8 @@ constexpr std::size_t kRaysPerTask = 256;
 
 std::vector<Vpl> traceBounce(const reference::RayScene& scene, const std::vector<Vpl>& parents,
                              std::size_t count, int32_t bounce, uint64_t seed,
-                             double indexOfRefraction, const BounceTracing& tracing) {
+                             double indexOfRefraction, const BounceTracing& tracing,
+                             const BounceMaterials& materials) {
   std::vector<Vpl> children;
   double total = 0.0;
   for (const Vpl& v : parents) total += powerOf(v);
@@ -101,7 +127,7 @@ std::vector<Vpl> traceBounce(const reference::RayScene& scene, const std::vector
     for (std::size_t j = task * kRaysPerTask; j < end; ++j) {
       const Vpl& from = parents[parentOf[j]];
       const glm::vec3 share = glm::vec3(from.flux) * static_cast<float>(step / powerOf(from));
-      slots[j] = shootChild(scene, from, share, bounce, seed, j, eta, tracing.russian_roulette);
+      slots[j] = shootChild(scene, from, share, bounce, seed, j, eta, tracing, materials);
     }
   });
   children.reserve(count);
@@ -125,12 +151,14 @@ BouncedVpls withLaterBounces(const capture::RenderJob& job, std::vector<Vpl> fir
       s.vpls_per_bounce > 0 ? static_cast<std::size_t>(s.vpls_per_bounce) : out.vpls.size();
   const reference::RayScene scene(*job.scene, 0);
   const BounceTracing tracing{s.russian_roulette, s.trace_threads};
+  const BounceMaterials materials{job.settings.materials == capture::MaterialModel::Gltf,
+                                  static_cast<float>(s.vpl_brdf_clamp_per_sr)};
   std::vector<Vpl> parents(out.vpls);
   for (int32_t bounce = 2; bounce <= s.bounces; ++bounce) {
     // Russian roulette ends paths: bounce 3 on traces one ray per VPL kept.
     const std::size_t rays = s.russian_roulette && bounce > 2 ? parents.size() : count;
     parents = traceBounce(scene, parents, rays, bounce, job.settings.seed,
-                          job.settings.index_of_refraction, tracing);
+                          job.settings.index_of_refraction, tracing, materials);
     out.vpls.insert(out.vpls.end(), parents.begin(), parents.end());
     out.firstOfBounce.push_back(out.vpls.size());
   }

@@ -68,6 +68,9 @@ void configureIndirectGather(const gl::Program& program, const RenderJob& job) {
   program.set("uSceneScale_m", std::max(glm::length(extent), 1e-6f));
   program.set("uGeometryClamp",
               static_cast<float>(job.settings.indirect.geometry_term_clamp_per_m2));
+  if (job.settings.materials == capture::MaterialModel::Gltf) {
+    program.set("uVplBrdfClamp", static_cast<float>(job.settings.indirect.vpl_brdf_clamp_per_sr));
+  }
 }
 
 }  // namespace
@@ -172,7 +175,8 @@ std::vector<ir::Vpl> GlBackend::generateVpls(const RenderJob& job) {
   if (!s.enabled) return {};
   const Passes& p = passes();
   return render::generateVpls(p.gpuScene, job.light, s.rsm_resolution,
-                              job.settings.index_of_refraction, p.bounds.lo, p.bounds.hi);
+                              job.settings.index_of_refraction, p.bounds.lo, p.bounds.hi,
+                              job.settings.materials == capture::MaterialModel::Gltf);
 }
 
 void GlBackend::setVpls(const std::vector<ir::Vpl>& vpls) {
@@ -267,6 +271,9 @@ void GlBackend::gatherIndirect(std::size_t firstVpl, std::size_t count) {
   p.gbuffer.position.bindUnit(gpu::kGPosition);
   p.gbuffer.normal.bindUnit(gpu::kGNormal);
   p.gbuffer.albedo.bindUnit(gpu::kGAlbedo);
+  if (p.job.settings.materials == capture::MaterialModel::Gltf) {
+    p.gbuffer.metallicRoughness.bindUnit(gpu::kGMetallicRoughness);
+  }
   p.indirectLight->gather(firstVpl, count, p.firstPixel, p.segmentPixels);
 }
 

@@ -1,6 +1,7 @@
 #include "IndirectLight.h"
 
 #include <algorithm>
+#include <cstring>
 
 #include "GpuContract.h"
 #include "tofsim/gl/Check.h"
@@ -29,6 +30,18 @@ std::vector<std::pair<std::string, std::string>> gatherDefines(const capture::Re
 
 void dispatchThreads(std::size_t threads) { gl::dispatchThreads(threads, gpu::kWorkGroupSize); }
 
+// The VPL buffer as vpl.glsl declares it: whole VPLs with
+// render.materials: gltf, else each VPL's first kLambertianVplBytes (the
+// Lambertian gathers read no material).
+gl::Buffer vplBufferOf(const std::vector<ir::Vpl>& vpls, bool gltf) {
+  if (gltf) return gl::Buffer(vpls.size() * sizeof(ir::Vpl), vpls.data(), 0);
+  std::vector<unsigned char> packed(vpls.size() * ir::kLambertianVplBytes);
+  for (std::size_t k = 0; k < vpls.size(); ++k) {
+    std::memcpy(&packed[k * ir::kLambertianVplBytes], &vpls[k], ir::kLambertianVplBytes);
+  }
+  return gl::Buffer(packed.size(), packed.data(), 0);
+}
+
 }  // namespace
 
 IndirectLight::IndirectLight(const TriangleSoup& soup, const std::vector<ir::Vpl>& vpls,
@@ -47,12 +60,17 @@ IndirectLight::IndirectLight(const TriangleSoup& soup, const std::vector<ir::Vpl
   corners_ = gl::Buffer(soup.corners.size() * sizeof(glm::vec4), soup.corners.data(), 0);
   areaCdf_ = gl::Buffer(soup.areaCdf.size() * sizeof(float), soup.areaCdf.data(), 0);
   bvh_ = gl::Buffer(soup.bvh.size() * sizeof(BvhNode), soup.bvh.data(), 0);
-  vplBuffer_ = gl::Buffer(vpls.size() * sizeof(ir::Vpl), vpls.data(), 0);
+  vplBuffer_ = vplBufferOf(vpls, settings.materials == capture::MaterialModel::Gltf);
   loopGuard_ = gl::Buffer(sizeof(uint32_t));
   loopGuard_.clear();
   fixedBytes_ = corners_.size() + areaCdf_.size() + bvh_.size() + vplBuffer_.size();
   if (settings_.visibility == capture::Visibility::Ism) {
-    splat_ = gpu::makeProgram({{GL_COMPUTE_SHADER, "ism_splat.comp"}});
+    // The splat reads the VPL buffer: the gather's struct Vpl.
+    std::vector<std::pair<std::string, std::string>> vplLayout;
+    if (settings.materials == capture::MaterialModel::Gltf) {
+      vplLayout.emplace_back("GLTF_MATERIALS", "1");
+    }
+    splat_ = gpu::makeProgram({{GL_COMPUTE_SHADER, "ism_splat.comp"}}, vplLayout);
     pull_ = gpu::makeProgram({{GL_COMPUTE_SHADER, "ism_pull.comp"}});
     push_ = gpu::makeProgram({{GL_COMPUTE_SHADER, "ism_push.comp"}});
     for (int size = settings_.ism_resolution;; size = (size + 1) / 2) {

@@ -22,7 +22,8 @@ struct SurfaceMaps {
   /// RG32F: metallic, roughness; only with withMetallicRoughness (else id 0).
   gl::Texture metallicRoughness;
 
-  /// withMetallicRoughness: the camera G-buffer of render.materials: gltf.
+  /// withMetallicRoughness: the camera G-buffer and the RSM of
+  /// render.materials: gltf.
   SurfaceMaps(int width, int height, bool withMetallicRoughness = false);
   /// Rasterizes the scene with `viewProjection` from `viewpoint_world`.
   void render(const GpuScene& scene, const glm::mat4& viewProjection,

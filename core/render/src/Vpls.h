@@ -5,6 +5,8 @@
 // flux it receives, Phi = I * profile * Omega; the surface reflects it
 // diffusely, so the VPL is a cosine emitter of intensity
 // albedo * Phi / pi * cos(theta), emitting at t_l = eta * |l - x_l| / c.
+// With render.materials: gltf it keeps Phi, the direction to the light and
+// its material, and emits by its BRDF (ir::rsmTexelVpl).
 
 #include <glm/glm.hpp>
 #include <vector>
@@ -21,8 +23,10 @@ using ir::Vpl;  // matches struct Vpl in shaders/vpl.glsl (std430)
 /// Spot lights narrower than 60 degrees (half angle) use one view of side
 /// `rsmResolution` covering the cone; wider spots and point lights use six
 /// cube faces of that side. VPLs are in texel order, faces in +X..-Z order.
+/// `gltf` (render.materials: gltf): glossy VPLs, from the RSM's metallic and
+/// roughness too (ir::rsmTexelVpl).
 std::vector<Vpl> generateVpls(const GpuScene& scene, const capture::Light& light, int rsmResolution,
                               double indexOfRefraction, const glm::vec3& boundsMin,
-                              const glm::vec3& boundsMax);
+                              const glm::vec3& boundsMax, bool gltf);
 
 }  // namespace tofsim::render

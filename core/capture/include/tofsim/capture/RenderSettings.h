@@ -13,8 +13,9 @@ enum class Visibility { Ism, Exact };
 
 /// How surfaces reflect (render.materials). Lambertian: albedo / pi for every
 /// material, the renderer of before. Gltf: the glTF metallic-roughness BRDF
-/// (shaders/gltf_brdf.glsl) in the direct light and the light the camera
-/// sees; VPLs, and the camera side of their contributions, stay Lambertian.
+/// (shaders/gltf_brdf.glsl) in the direct light and at both ends of every VPL
+/// contribution: the VPL's BRDF toward x (for the direction its light came
+/// from) and x's toward the camera.
 enum class MaterialModel { Lambertian, Gltf };
 
 struct IndirectSettings {
@@ -26,6 +27,10 @@ struct IndirectSettings {
   Visibility visibility = Visibility::Ism;
   /// Upper bound of the geometry term cos*cos/d^2 (1/m^2); <= 0 disables clamping.
   double geometry_term_clamp_per_m2 = 100.0;
+  /// render.materials: gltf: upper bound (1/sr, per channel) of a VPL's BRDF
+  /// value toward x, and of its BRDF weight when a later bounce continues
+  /// its path; <= 0 disables clamping.
+  double vpl_brdf_clamp_per_sr = 0.0;
   /// Spread each VPL's light over the path variation across its RSM texel's
   /// patch (anti-banding); only with RenderSettings::pixel_footprint.
   bool vpl_footprint = true;

@@ -40,6 +40,12 @@ struct BounceTracing {
   int32_t threads = 1;
 };
 
+/// How later bounces reflect (render.materials, render.indirect.vpl_brdf_clamp).
+struct BounceMaterials {
+  bool gltf = false;       ///< glossy VPLs (Vpl::incoming, Vpl::material)
+  float brdfClamp = 0.0f;  ///< 1/sr, <= 0: none
+};
+
 /// The VPLs of one bounce after `parents` (those of bounce `bounce` - 1):
 /// `count` children picked among the parents in proportion to their power
 /// (systematic resampling, one seeded offset per bounce: deterministic, and
@@ -54,9 +60,15 @@ struct BounceTracing {
 /// (patchU = patchV = 0: a point VPL, no VPL footprint): a child stands for
 /// the parents' light spread over the scene by a random ray, not for a texel
 /// of a light view whose extent the patch steps could describe.
+/// With materials.gltf the VPLs are glossy (flux = the power received, W): a
+/// child receives its share times pi f_parent(incoming, w), the cosine
+/// sample's weight f cos / pdf (BRDF sampling comes later; the parents are
+/// still picked by the power they received, which stays unbiased), and
+/// records -w and its hit's material.
 std::vector<Vpl> traceBounce(const reference::RayScene& scene, const std::vector<Vpl>& parents,
                              std::size_t count, int32_t bounce, uint64_t seed,
-                             double indexOfRefraction, const BounceTracing& tracing = {});
+                             double indexOfRefraction, const BounceTracing& tracing = {},
+                             const BounceMaterials& materials = {});
 
 /// Bounce 1 (`firstBounce`, the backend's RSM VPLs) followed by bounces
 /// 2..job.settings.indirect.bounces, traced through a RayScene of job.scene

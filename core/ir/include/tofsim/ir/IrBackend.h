@@ -47,18 +47,34 @@ struct DeviceLimits {
   std::size_t maxPixelsPerPass = 0;  ///< most pixels one gather call may cover (GL: groups x 64)
 };
 
-/// A virtual point light; layout = struct Vpl in shaders/vpl.glsl (std430).
+/// A virtual point light; layout = struct Vpl in shaders/vpl.glsl (std430),
+/// whose last two members (the glossy VPL's) exist only with
+/// render.materials: gltf: the GL backend uploads the first 80 bytes of each
+/// VPL otherwise, so the Lambertian gather reads what it did before.
 struct Vpl {
   glm::vec4 positionPath;  ///< xyz world, w = optical path light -> VPL, m (eta included)
   glm::vec4 normal;        ///< xyz unit, lit side
-  glm::vec4 flux;          ///< rgb albedo * Phi / pi, W/sr
+  /// rgb: lambertian: albedo * Phi / pi, W/sr (the cosine emitter's
+  /// intensity); gltf: Phi, W, the power the VPL received (its BRDF toward x,
+  /// from `incoming` and `material`, turns it into intensity).
+  glm::vec4 flux;
   /// The VPL's patch (its RSM texel on the surface), for the VPL footprint:
   /// xyz = the surface point's step across one texel along the RSM view's
   /// right (patchU) and up (patchV) axes, w = eta (x_l - l)/|x_l - l| . xyz,
   /// the light leg's change of path along it (vplPatchPathSteps).
   glm::vec4 patchU{0.0f};
   glm::vec4 patchV{0.0f};
+  /// render.materials: gltf only (zero otherwise). xyz: unit direction from
+  /// the VPL toward where its light came from (the light, or the parent VPL
+  /// of a later bounce); w: metallic.
+  glm::vec4 incoming{0.0f};
+  /// gltf only: rgb base colour (textures applied), w: perceptual roughness.
+  glm::vec4 material{0.0f};
 };
+
+/// Bytes of a VPL as the Lambertian gathers read it (Vpl without incoming
+/// and material).
+constexpr std::size_t kLambertianVplBytes = 5 * sizeof(glm::vec4);
 
 class IrBackend {
  public:

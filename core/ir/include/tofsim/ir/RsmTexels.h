@@ -35,15 +35,20 @@ glm::vec3 rsmTexelDirection(const RsmView& view, int resolution, int x, int y);
 struct RsmTexelSurface {
   glm::vec3 position_world{0.0f};
   glm::vec3 normal{0.0f};  ///< unit, facing the light
-  glm::vec3 albedo{0.0f};
+  glm::vec3 albedo{0.0f};  ///< base colour
+  float metallic = 0.0f;   ///< read with render.materials: gltf only
+  float roughness = 1.0f;
 };
 
 /// The VPL standing for texel (x, y)'s surface (flux = albedo * I * profile *
 /// the texel's solid angle / pi, path = eta |x_l - l|, and the texel's patch
 /// on the surface for the VPL footprint), or nothing when that surface is not
-/// lit (outside the spot, black).
+/// lit (outside the spot, black). `gltf` (render.materials: gltf): a glossy
+/// VPL instead, flux = Phi = I * profile * solid angle (the power it
+/// receives), incoming = the unit direction to the light, and the surface's
+/// material; a black surface still makes one (its Fresnel lobe reflects).
 std::optional<Vpl> rsmTexelVpl(const capture::Light& light, const RsmView& view, int resolution,
                                int x, int y, const RsmTexelSurface& surface,
-                               double indexOfRefraction);
+                               double indexOfRefraction, bool gltf);
 
 }  // namespace tofsim::ir

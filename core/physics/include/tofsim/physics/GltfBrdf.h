@@ -10,6 +10,7 @@ namespace tofsim::physics {
 using glm::abs;
 using glm::dot;
 using glm::max;
+using glm::min;
 using glm::normalize;
 using glm::sqrt;
 using glm::vec3;
