@@ -1,5 +1,3 @@
-#include "tofsim/io/Npy.h"
-
 #include <gtest/gtest.h>
 
 #include <fstream>
@@ -8,6 +6,7 @@
 #include <vector>
 
 #include "support/TempDir.h"
+#include "tofsim/io/Npy.h"
 #include "tofsim/util/Error.h"
 
 namespace tofsim::io {
@@ -118,15 +117,38 @@ TEST_F(NpyTest, ReaderAcceptsVersion2) {
   EXPECT_EQ(a.data, (std::vector<float>{0.0f, 0.0f}));
 }
 
+// The stream reader reads the same floats in pieces as readNpy at once, and
+// checks the file's size before reading any.
+TEST_F(NpyTest, StreamReaderReadsInPiecesWhatReadNpyReads) {
+  std::vector<float> data(5 * 7 * 3);
+  for (std::size_t i = 0; i < data.size(); ++i) data[i] = 0.25f * static_cast<float>(i) - 3.0f;
+  const auto path = dir_ / "a.npy";
+  io::writeNpy(path, {5, 7, 3}, data.data());
+  io::NpyStreamReader reader(path);
+  EXPECT_EQ(reader.shape(), (io::NpyShape{5, 7, 3}));
+  std::vector<float> pieces;
+  for (const std::size_t n : {1u, 20u, 0u, 64u, 20u}) {
+    std::vector<float> piece(n);
+    reader.read(piece.data(), n);
+    pieces.insert(pieces.end(), piece.begin(), piece.end());
+  }
+  EXPECT_EQ(reader.remaining(), 0u);
+  EXPECT_EQ(pieces, io::readNpy(path).data);
+  std::filesystem::resize_file(path, std::filesystem::file_size(path) - 4);
+  EXPECT_THROW(io::NpyStreamReader{path}, InputError);
+}
+
 TEST_F(NpyTest, RejectsFloat64) {
-  writeBytes(dir_ / "f8.npy", npyWithDict("{'descr': '<f8', 'fortran_order': False, 'shape': (2,), }", 16));
+  writeBytes(dir_ / "f8.npy",
+             npyWithDict("{'descr': '<f8', 'fortran_order': False, 'shape': (2,), }", 16));
   const std::string e = errorOf(dir_ / "f8.npy");
   EXPECT_NE(e.find("f8.npy"), std::string::npos) << e;
   EXPECT_NE(e.find("'<f8' is not supported"), std::string::npos) << e;
 }
 
 TEST_F(NpyTest, RejectsFortranOrder) {
-  writeBytes(dir_ / "fo.npy", npyWithDict("{'descr': '<f4', 'fortran_order': True, 'shape': (2, 2), }", 16));
+  writeBytes(dir_ / "fo.npy",
+             npyWithDict("{'descr': '<f4', 'fortran_order': True, 'shape': (2, 2), }", 16));
   const std::string e = errorOf(dir_ / "fo.npy");
   EXPECT_NE(e.find("fo.npy"), std::string::npos) << e;
   EXPECT_NE(e.find("fortran_order True"), std::string::npos) << e;
@@ -144,10 +166,13 @@ TEST_F(NpyTest, RejectsTruncatedData) {
 
 TEST_F(NpyTest, HugeShapeInTinyFileIsAnErrorNotAnAllocation) {
   writeBytes(dir_ / "huge.npy",
-             npyWithDict("{'descr': '<f4', 'fortran_order': False, 'shape': (100000, 100000, 1000), }", 4));
+             npyWithDict(
+                 "{'descr': '<f4', 'fortran_order': False, 'shape': (100000, 100000, 1000), }", 4));
   EXPECT_NE(errorOf(dir_ / "huge.npy").find("huge.npy"), std::string::npos);
-  writeBytes(dir_ / "ovf.npy",
-             npyWithDict("{'descr': '<f4', 'fortran_order': False, 'shape': (99999999999, 99999999999), }", 4));
+  writeBytes(
+      dir_ / "ovf.npy",
+      npyWithDict("{'descr': '<f4', 'fortran_order': False, 'shape': (99999999999, 99999999999), }",
+                  4));
   EXPECT_NE(errorOf(dir_ / "ovf.npy").find("too large"), std::string::npos);
 }
 
@@ -158,7 +183,9 @@ TEST_F(NpyTest, RejectsBadMagicAndTruncatedHeader) {
   EXPECT_NE(e.find("bad magic"), std::string::npos) << e;
   writeBytes(dir_ / "short.npy", "\x93NUM");
   EXPECT_NE(errorOf(dir_ / "short.npy").find("bad magic"), std::string::npos);
-  writeBytes(dir_ / "hdr.npy", npyWithDict("{'descr': '<f4', 'fortran_order': False, 'shape': (2,), }", 0).substr(0, 30));
+  writeBytes(
+      dir_ / "hdr.npy",
+      npyWithDict("{'descr': '<f4', 'fortran_order': False, 'shape': (2,), }", 0).substr(0, 30));
   EXPECT_NE(errorOf(dir_ / "hdr.npy").find("truncated header"), std::string::npos);
   EXPECT_NE(errorOf(dir_ / "missing.npy").find("missing.npy"), std::string::npos);
 }

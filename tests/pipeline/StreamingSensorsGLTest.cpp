@@ -1,7 +1,8 @@
 // End-to-end: a render's sensors are fed the volume segment by segment as it
 // streams out of the renderer (a memory budget small enough for several
 // segments), and write byte for byte what `tofsim sense` writes from the
-// whole saved volume in memory; without the volume written (sensors only)
+// saved volume, read back run by run within the same budget (several runs);
+// without the volume written (sensors only)
 // the sensors' files are the same again. The streamed spad_counts.npy still
 // has its metadata, and output.plot_ranges reaches the sensors' pictures.
 
@@ -73,7 +74,7 @@ TEST_F(StreamingSensorsGLTest, SegmentedSensorsWriteTheBytesOfTheWholeVolume) {
   EXPECT_EQ(counts["time"]["bins"], 200);
   EXPECT_EQ(counts["files"]["data"], "spad_counts.npy");
 
-  // The whole saved volume in memory, in one span.
+  // The saved volume read back in runs of pixels within the 1 MiB budget.
   const auto sensed = dir_ / "sense";
   const CommandResult s = runCli("sense " + test::kCornellConfig + " --volume " + out.string() +
                                  " -o " + sensed.string() + kSegmented);

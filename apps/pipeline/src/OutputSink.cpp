@@ -4,8 +4,6 @@
 #include <cmath>
 #include <string>
 
-#include "tofsim/capture/VolumeCollector.h"
-
 namespace tofsim::pipeline {
 
 namespace {
@@ -24,8 +22,7 @@ std::size_t zeroNonFinite(float* values, std::size_t count) {
 }
 
 OutputSink::OutputSink(const std::filesystem::path& directory, const config::OutputConfig& output,
-                       int32_t width, int32_t height, const TimeAxis& axis, bool keepInMemory,
-                       Forward forward)
+                       int32_t width, int32_t height, const TimeAxis& axis, Forward forward)
     : width_(width), height_(height), axis_(axis), forward_(std::move(forward)) {
   const io::NpyShape shape = {static_cast<std::size_t>(height), static_cast<std::size_t>(width),
                               static_cast<std::size_t>(axis.bins), kChannels};
@@ -43,7 +40,6 @@ OutputSink::OutputSink(const std::filesystem::path& directory, const config::Out
     bounceFiles_.emplace_back(k, std::make_unique<io::NpyStreamWriter>(directory / name, shape));
   }
   steady_.assign(static_cast<std::size_t>(width) * height * kChannels, 0.0);
-  if (keepInMemory) volume_.emplace(width, height, axis, capture::defaultChannelNames(kChannels));
 }
 
 void OutputSink::consume(const capture::Segment& segment) {
@@ -75,8 +71,6 @@ void OutputSink::consume(const capture::Segment& segment) {
       for (int32_t c = 0; c < kChannels; ++c) out[c] += in[t * kChannels + c];
     }
   }
-  const std::size_t offset = segment.firstPixel * pixelFloats;
-  if (volume_) std::copy_n(scratch_.data(), floats, volume_->data() + offset);
   if (forward_) {
     forward_({segment.firstPixel, segment.pixelCount, scratch_.data(), directScratch_.data()});
   }

@@ -1,9 +1,9 @@
 #include "tofsim/pipeline/SenseRun.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 
-#include "tofsim/pipeline/AxisReport.h"
 #include "tofsim/pipeline/PlotRanges.h"
 #include "tofsim/pipeline/SavedVolume.h"
 #include "tofsim/pipeline/SensorStreams.h"
@@ -28,38 +28,50 @@ double secondsSince(std::chrono::steady_clock::time_point start) {
 
 // The config says what it expects; the saved volume decides. A mismatch is
 // legitimate (a volume rendered with other --set values) but worth a note.
-void noteDifferences(const config::RunConfig& config, const TransientVolume& volume,
+void noteDifferences(const config::RunConfig& config, const sensors::VolumeShape& volume,
                      const Progress& progress) {
   const capture::Camera& cam = config.camera.camera;
   const TimeAxis& axis = config.render.time;
-  if (cam.width != volume.width() || cam.height != volume.height() || axis.bins != volume.bins() ||
-      axis.start_s != volume.axis().start_s || axis.bin_width_s != volume.axis().bin_width_s ||
-      axis.index_of_refraction != volume.axis().index_of_refraction ||
-      axis.camera_unwarp != volume.axis().camera_unwarp) {
+  if (cam.width != volume.width || cam.height != volume.height || axis.bins != volume.axis.bins ||
+      axis.start_s != volume.axis.start_s || axis.bin_width_s != volume.axis.bin_width_s ||
+      axis.index_of_refraction != volume.axis.index_of_refraction ||
+      axis.camera_unwarp != volume.axis.camera_unwarp) {
     progress.message(
         "note: the saved volume's size or time axis differs from the config's; "
         "the sensors use the volume's");
   }
 }
 
+// The saved components the sensors take beside the total.
+const std::vector<std::string> kSensedComponents = {"direct"};
+
+// Pixels per run read: the files' runs together within render.memory_budget.
+std::size_t pixelsPerRun(const config::RunConfig& config, const SavedVolumeStream& saved) {
+  std::size_t files = 1;
+  for (const std::string& c : kSensedComponents) files += saved.has(c) ? 1 : 0;
+  const std::size_t pixelBytes = saved.shape().pixelFloats() * sizeof(float) * files;
+  return std::max<std::size_t>(1, config.render.memory_budget_bytes / pixelBytes);
+}
+
 }  // namespace
 
 std::vector<std::string> runConfiguredSensors(const config::RunConfig& config,
-                                              const SensorVolumes& volumes,
+                                              SavedVolumeStream& saved,
                                               const std::filesystem::path& outputDirectory,
                                               const Progress& progress) {
-  TOFSIM_CHECK(volumes.volume != nullptr);
-  const TransientVolume& volume = *volumes.volume;
-  if (const TransientVolume* d = volumes.directOnly) {
-    TOFSIM_CHECK(d->width() == volume.width() && d->height() == volume.height() &&
-                 d->bins() == volume.bins() && d->channels() == volume.channels());
+  // Run by run, as a render's sensors are fed segment by segment: the same
+  // code, and so the same bytes (the per-pixel random streams do not see
+  // where the runs are cut).
+  const bool withDirect = saved.has("direct");
+  SensorStreams streams(config, saved.shape(), withDirect, outputDirectory);
+  const std::size_t run = pixelsPerRun(config, saved);
+  while (const std::size_t pixels = saved.read(run)) {
+    throwIfInterrupted();
+    streams.consume({saved.firstPixel(), pixels, saved.values("transient"),
+                     withDirect ? saved.values("direct") : nullptr});
   }
-  // The whole volume as one span: the same code, and so the same bytes, as a
-  // render's sensors fed segment by segment.
-  SensorStreams streams(config, sensors::shapeOf(volume), volumes.directOnly != nullptr,
-                        outputDirectory);
-  streams.consume(sensors::wholeVolume(volume, volumes.directOnly));
-  return streams.finish(volumes.depth_m, progress);
+  streams.checkWindows();  // throws under --strict: the staged files go
+  return streams.finish(saved.depth_m(), progress);
 }
 
 SenseSummary runSense(const config::RunConfig& config, const SenseOptions& options) {
@@ -69,24 +81,20 @@ SenseSummary runSense(const config::RunConfig& config, const SenseOptions& optio
   }
   const auto start = std::chrono::steady_clock::now();
   Progress progress("sense", options.quiet);
-  const SavedVolume saved = loadSavedVolume(options.volumeDirectory);
-  noteDifferences(config, saved.volume, progress);
-  checkSensorWindows(config, saved.volume);  // before any file; throws under --strict
+  SavedVolumeStream saved(options.volumeDirectory, kSensedComponents);
+  noteDifferences(config, saved.shape(), progress);
   SenseSummary summary;
   summary.outputDirectory =
       options.outputDirectory.empty() ? options.volumeDirectory : options.outputDirectory;
-  SensorVolumes volumes;
-  volumes.volume = &saved.volume;
-  volumes.directOnly = saved.directOnly ? &*saved.directOnly : nullptr;
-  volumes.depth_m = saved.depth_m ? &*saved.depth_m : nullptr;
   // The folder's other files (the render's) stay; its sensors/ is replaced as
   // a whole, atomically, so sensors no longer configured go and an interrupted
-  // run leaves the earlier sensors/. A batch manifest no longer describes the
-  // folder once its sensors change, so it goes too (the run is redone).
+  // or failed run leaves the earlier sensors/. A batch manifest no longer
+  // describes the folder once its sensors change, so it goes too (the run is
+  // redone).
   StagedFolder folder(summary.outputDirectory, [](const std::string& name) {
     return name != "sensors" && name != "manifest.json";
   });
-  summary.files = runConfiguredSensors(config, volumes, folder.staging(), progress);
+  summary.files = runConfiguredSensors(config, saved, folder.staging(), progress);
   throwIfInterrupted();
   folder.commit();
   summary.seconds = secondsSince(start);

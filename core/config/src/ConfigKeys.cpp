@@ -75,7 +75,7 @@ const ConfigKey kRunConfigKeys[] = {
     {"render.shadow_map_resolution", "int", "in [16, 16384]", "1024", "pixel",
      "per cube face of the light's shadow map"},
     {"render.memory_budget", "bytes", "in [1 MiB, 1 PiB]", "512 MiB", "B",
-     "device memory (GPU, or RAM for `backend: cpu`) for volume segments and ISM batches"},
+     "device memory (GPU, or RAM for `backend: cpu`) for volume segments and ISM batches; for `tofsim sense`, the host memory of the runs of pixels it reads from the saved files"},
     {"render.strict", "bool", "", "false", "-",
      "light cut off by the time axis or a sensor window (more than 0.1 %) is an error, not a warning; `--strict` on `render` / `validate` sets it (see \"Time windows\")"},
     {"render.pixel_footprint", "bool", "", "true", "-",

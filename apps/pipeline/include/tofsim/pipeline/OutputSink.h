@@ -33,19 +33,16 @@ class OutputSink : public capture::SegmentSink {
   /// zeroed), for the sensors (SensorStreams.h).
   using Forward = std::function<void(const sensors::PixelSpan&)>;
 
-  /// keepInMemory: also collect the total volume (for the video and frames);
-  /// forward: called with every segment's values once they are written.
+  /// forward: called with every segment's values once they are written (the
+  /// sensors, the video's bin-major copy); the sink holds no volume.
   OutputSink(const std::filesystem::path& directory, const config::OutputConfig& output,
-             int32_t width, int32_t height, const TimeAxis& axis, bool keepInMemory,
-             Forward forward = {});
+             int32_t width, int32_t height, const TimeAxis& axis, Forward forward = {});
   void consume(const capture::Segment& segment) override;
   /// Renames the streamed files into place.
   void commit();
 
   /// sum over t of transient.npy, accumulated in double.
   Image steady() const;
-  /// Only when keepInMemory.
-  const TransientVolume* volume() const { return volume_ ? &*volume_ : nullptr; }
   /// How many values were NaN or infinite and replaced by 0 so far.
   std::size_t nonFiniteValues() const { return nonFinite_; }
 
@@ -58,7 +55,6 @@ class OutputSink : public capture::SegmentSink {
   std::vector<double> steady_;
   std::vector<float> scratch_, directScratch_, indirectScratch_, bounceScratch_;
   std::size_t nonFinite_ = 0;
-  std::optional<TransientVolume> volume_;
   Forward forward_;
 };
 
