@@ -74,10 +74,17 @@ void FallingBinomial::rebuild(uint64_t n) {
   built_ = true;
 }
 
-// The smallest k with u < P(X <= k); past the table, the pmf's recursion goes on.
+// The smallest k with u < P(X <= k), u = Rng::uniform()'s 53 bits; past the
+// table, the pmf's recursion goes on. The high 27 bits put u in
+// [uLo, uLo + 2^-27): unless a CDF value falls in there (rarely), they decide
+// k alone and the low 26 bits are never drawn (a generator step saved).
 uint64_t FallingBinomial::drawBase(Rng& rng) const {
-  const double u = rng.uniform();
-  std::size_t k = guide_[static_cast<std::size_t>(u * static_cast<double>(kGuide))];
+  const uint64_t hi = rng.nextU32() >> 5;
+  const double uLo = static_cast<double>(hi) * 0x1.0p-27;
+  std::size_t k = guide_[hi >> (27 - kGuideBits)];  // floor(u kGuide)
+  while (k + 1 < cdf_.size() && cdf_[k] <= uLo) ++k;
+  if (cdf_[k] >= uLo + 0x1.0p-27) return k;  // cdf_[k - 1] <= uLo <= u < cdf_[k]
+  const double u = static_cast<double>((hi << 26) | (rng.nextU32() >> 6)) * 0x1.0p-53;
   while (k + 1 < cdf_.size() && cdf_[k] <= u) ++k;
   if (cdf_[k] > u) return k;
   double pmf = lastPmf_, sum = cdf_[k];

@@ -28,8 +28,8 @@ class FallingBinomial {
   uint64_t draw(uint64_t n, Rng& rng);
 
  private:
-  static constexpr std::size_t kGuide = 256;
-  static_assert((kGuide & (kGuide - 1)) == 0, "j / kGuide must be exact");
+  static constexpr int kGuideBits = 8;  // a power of 2: j / kGuide is exact
+  static constexpr std::size_t kGuide = std::size_t{1} << kGuideBits;
   void rebuild(uint64_t n);
   uint64_t drawBase(Rng& rng) const;
   uint64_t drawAbove(uint64_t m, Rng& rng) const;
