@@ -1,3 +1,5 @@
+#include "tofsim/io/Npy.h"
+
 #include <gtest/gtest.h>
 
 #include <fstream>
@@ -6,7 +8,6 @@
 #include <vector>
 
 #include "support/TempDir.h"
-#include "tofsim/io/Npy.h"
 #include "tofsim/util/Error.h"
 
 namespace tofsim::io {
@@ -139,16 +140,14 @@ TEST_F(NpyTest, StreamReaderReadsInPiecesWhatReadNpyReads) {
 }
 
 TEST_F(NpyTest, RejectsFloat64) {
-  writeBytes(dir_ / "f8.npy",
-             npyWithDict("{'descr': '<f8', 'fortran_order': False, 'shape': (2,), }", 16));
+  writeBytes(dir_ / "f8.npy", npyWithDict("{'descr': '<f8', 'fortran_order': False, 'shape': (2,), }", 16));
   const std::string e = errorOf(dir_ / "f8.npy");
   EXPECT_NE(e.find("f8.npy"), std::string::npos) << e;
   EXPECT_NE(e.find("'<f8' is not supported"), std::string::npos) << e;
 }
 
 TEST_F(NpyTest, RejectsFortranOrder) {
-  writeBytes(dir_ / "fo.npy",
-             npyWithDict("{'descr': '<f4', 'fortran_order': True, 'shape': (2, 2), }", 16));
+  writeBytes(dir_ / "fo.npy", npyWithDict("{'descr': '<f4', 'fortran_order': True, 'shape': (2, 2), }", 16));
   const std::string e = errorOf(dir_ / "fo.npy");
   EXPECT_NE(e.find("fo.npy"), std::string::npos) << e;
   EXPECT_NE(e.find("fortran_order True"), std::string::npos) << e;
@@ -166,13 +165,10 @@ TEST_F(NpyTest, RejectsTruncatedData) {
 
 TEST_F(NpyTest, HugeShapeInTinyFileIsAnErrorNotAnAllocation) {
   writeBytes(dir_ / "huge.npy",
-             npyWithDict(
-                 "{'descr': '<f4', 'fortran_order': False, 'shape': (100000, 100000, 1000), }", 4));
+             npyWithDict("{'descr': '<f4', 'fortran_order': False, 'shape': (100000, 100000, 1000), }", 4));
   EXPECT_NE(errorOf(dir_ / "huge.npy").find("huge.npy"), std::string::npos);
-  writeBytes(
-      dir_ / "ovf.npy",
-      npyWithDict("{'descr': '<f4', 'fortran_order': False, 'shape': (99999999999, 99999999999), }",
-                  4));
+  writeBytes(dir_ / "ovf.npy",
+             npyWithDict("{'descr': '<f4', 'fortran_order': False, 'shape': (99999999999, 99999999999), }", 4));
   EXPECT_NE(errorOf(dir_ / "ovf.npy").find("too large"), std::string::npos);
 }
 
@@ -183,9 +179,7 @@ TEST_F(NpyTest, RejectsBadMagicAndTruncatedHeader) {
   EXPECT_NE(e.find("bad magic"), std::string::npos) << e;
   writeBytes(dir_ / "short.npy", "\x93NUM");
   EXPECT_NE(errorOf(dir_ / "short.npy").find("bad magic"), std::string::npos);
-  writeBytes(
-      dir_ / "hdr.npy",
-      npyWithDict("{'descr': '<f4', 'fortran_order': False, 'shape': (2,), }", 0).substr(0, 30));
+  writeBytes(dir_ / "hdr.npy", npyWithDict("{'descr': '<f4', 'fortran_order': False, 'shape': (2,), }", 0).substr(0, 30));
   EXPECT_NE(errorOf(dir_ / "hdr.npy").find("truncated header"), std::string::npos);
   EXPECT_NE(errorOf(dir_ / "missing.npy").find("missing.npy"), std::string::npos);
 }
