@@ -1,6 +1,5 @@
 #include "tofsim/sensors/Random.h"
 
-#include <algorithm>
 #include <cmath>
 
 #include "tofsim/util/Error.h"
@@ -99,49 +98,6 @@ double Rng::beta(double a, double b) {
   const double x = gamma(a);
   const double y = gamma(b);
   return x / (x + y);
-}
-
-uint64_t Rng::binomialInversion(uint64_t n, double p) {
-  // p <= 0.5 and n p small, so q^n does not underflow.
-  const double q = 1.0 - p;
-  const double s = p / q;
-  const double a = (static_cast<double>(n) + 1.0) * s;
-  double r = std::pow(q, static_cast<double>(n));
-  double u = uniform();
-  uint64_t x = 0;
-  while (u > r && x < n) {
-    u -= r;
-    ++x;
-    r *= a / static_cast<double>(x) - s;
-    if (r <= 0.0) break;
-  }
-  return x;
-}
-
-uint64_t Rng::binomial(uint64_t n, double p) {
-  TOFSIM_CHECK_MSG(p >= 0.0 && p <= 1.0, "binomial p " + std::to_string(p));
-  uint64_t result = 0;
-  // Knuth (TAOCP 3.4.1): the a-th smallest of n uniforms is Beta(a, n + 1 - a);
-  // the uniforms below it are Binomial(a - 1, p / X) given X >= p, the ones
-  // above it a + Binomial(n - a, (p - X) / (1 - X)) otherwise. Exact.
-  while (n > 64 && static_cast<double>(n) * std::min(p, 1.0 - p) > 16.0) {
-    const uint64_t a = 1 + n / 2;
-    const uint64_t b = n + 1 - a;
-    const double x = beta(static_cast<double>(a), static_cast<double>(b));
-    if (x >= p) {
-      n = a - 1;
-      p = p / x;
-    } else {
-      result += a;
-      n = b - 1;
-      p = (p - x) / (1.0 - x);
-    }
-    p = std::clamp(p, 0.0, 1.0);
-  }
-  if (n == 0 || p <= 0.0) return result;
-  if (p >= 1.0) return result + n;
-  if (p > 0.5) return result + n - binomialInversion(n, 1.0 - p);
-  return result + binomialInversion(n, p);
 }
 
 }  // namespace tofsim::sensors

@@ -164,13 +164,13 @@ class SpadStream final : public SensorStream {
     const int32_t K = axis_.bins;
     pixelSignal(values, shape_.axis.bins, shape_.channels, p_.common, s.signal);
     fluxFromSignal(s.signal, shape_.axis, p_, axis_, kernel_, s.resampled, s.flux);
-    s.h.assign(static_cast<std::size_t>(K), 0.0);
     Rng rng(options_.seed, pixelStream(kSpadStreamTag, px));
     const auto N = static_cast<uint64_t>(p_.cycles);
     if (p_.mode == SpadMode::Synchronous) {
       detail::firstPhotonHistogram(s.flux, N, rng, s.firstPhoton, s.h);
     } else {
       const std::vector<double> m = freeRunningProbabilities(s.flux, deadBins_);
+      s.h.resize(static_cast<std::size_t>(K));
       for (int32_t i = 0; i < K; ++i) s.h[i] = static_cast<double>(rng.binomial(N, m[i]));
     }
     double total = 0.0;
@@ -180,7 +180,7 @@ class SpadStream final : public SensorStream {
     }
     intensity_[px] = static_cast<float>(total);
     depthPeak_[px] = static_cast<float>(peakDepth_m(s.h, axis_));
-    depthCoates_[px] = static_cast<float>(peakDepth_m(coatesEstimate(s.h, p_.cycles), axis_));
+    depthCoates_[px] = static_cast<float>(coatesPeakDepth_m(s.h, p_.cycles, axis_));
   }
 
   const SpadParams p_;

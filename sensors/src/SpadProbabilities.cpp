@@ -2,6 +2,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "PeakDepth.h"
 #include "tofsim/sensors/Spad.h"
 #include "tofsim/util/Error.h"
 
@@ -56,10 +57,8 @@ std::vector<double> coatesEstimate(const std::vector<double>& counts, int64_t cy
   double remaining = static_cast<double>(cycles);
   for (std::size_t i = 0; i < counts.size(); ++i) {
     if (remaining <= 0.0) break;
-    const double h = counts[i];
-    if (h == 0.0) continue;  // -log1p(-0) is 0: most bins of a sparse histogram
-    flux[i] = h >= remaining ? std::log(remaining + 1.0) : -std::log1p(-h / remaining);
-    remaining -= h;
+    flux[i] = coatesBinFlux(counts[i], remaining);
+    remaining -= counts[i];
   }
   return flux;
 }

@@ -14,7 +14,7 @@ namespace {
 // detections are drawn one by one.
 constexpr double kDrawsPerBinomial = 4.0;
 
-// Binomial(n, p) for n p <= 16 and p <= 0.5 by inversion, as
+// Binomial(n, p) for n p < 10 and p <= 0.5 by inversion, as
 // Rng::binomial's, with (1 - p)^n as exp(n log(1 - p)) from the caller's
 // log(1 - p): a run of bins of one flux (the ambient floor) shares it.
 // 1 / x for the first steps of the inversion (a division per step is its
@@ -45,19 +45,34 @@ uint64_t binomialByInversion(uint64_t n, double p, double log1mp, Rng& rng) {
   return x;
 }
 
+// Runs of bins of one flux (the ambient floor) shorter than this take the
+// generic draws: a FallingBinomial's tables cost about this many draws.
+constexpr std::size_t kMinTableRun = 32;
+
+// Binomial(n, q) by inversion below this mean, BTRS (Rng::binomial) above.
+constexpr double kMaxInversionMean = 10.0;
+
 void sequentialBinomials(const std::vector<double>& flux, uint64_t cycles, Rng& rng,
-                         std::vector<double>& h) {
+                         FallingBinomial& falling, std::vector<double>& h) {
   uint64_t remaining = cycles;
-  double lastFlux = -1.0, q = 0.0, log1mq = 0.0;
-  for (std::size_t i = 0; i < flux.size() && remaining > 0; ++i) {
-    if (flux[i] != lastFlux) {
-      lastFlux = flux[i];
+  double q = 0.0, log1mq = 0.0;
+  bool tabled = false;
+  for (std::size_t i = 0, runEnd = 0; i < flux.size() && remaining > 0; ++i) {
+    if (i == runEnd) {  // a new run of bins [i, runEnd) of one flux
+      while (runEnd < flux.size() && flux[runEnd] == flux[i]) ++runEnd;
       q = -std::expm1(-flux[i]);
       log1mq = -flux[i];  // log(1 - q) exactly
+      tabled = runEnd - i >= kMinTableRun && FallingBinomial::suits(remaining, q);
+      if (tabled) falling.reset(q);
     }
-    const uint64_t n = q <= 0.5 && static_cast<double>(remaining) * q <= 16.0
-                           ? binomialByInversion(remaining, q, log1mq, rng)
-                           : rng.binomial(remaining, q);
+    uint64_t n = 0;
+    if (tabled) {
+      n = falling.draw(remaining, rng);
+    } else if (q <= 0.5 && static_cast<double>(remaining) * q < kMaxInversionMean) {
+      n = binomialByInversion(remaining, q, log1mq, rng);
+    } else {
+      n = rng.binomial(remaining, q);
+    }
     h[i] = static_cast<double>(n);
     remaining -= n;
   }
@@ -89,6 +104,15 @@ void firstPhotonHistogram(const std::vector<double>& flux, uint64_t cycles, Rng&
   const std::size_t K = flux.size();
   h.assign(K, 0.0);
   if (K == 0) return;
+  double total = 0.0;
+  for (const double f : flux) total += f;
+  const double detect = -std::expm1(-total);  // P(any detection in a cycle)
+  TOFSIM_CHECK(detect >= 0.0 && detect <= 1.0);
+  if (!(detect > 0.0)) return;
+  if (static_cast<double>(cycles) * detect > kDrawsPerBinomial * static_cast<double>(K)) {
+    sequentialBinomials(flux, cycles, rng, s.falling, h);
+    return;
+  }
   // Survival: no detection up to the end of bin i with probability
   // exp(-F_{i+1}) (F the cumulative flux), a product of per-bin factors that
   // a run of bins of one flux shares; P(first detection by bin i) = 1 - that.
@@ -102,14 +126,8 @@ void firstPhotonHistogram(const std::vector<double>& flux, uint64_t cycles, Rng&
     survive *= factor;
     s.cdf[i] = 1.0 - survive;
   }
-  const double detect = s.cdf[K - 1];  // P(any detection in a cycle)
-  TOFSIM_CHECK(detect >= 0.0 && detect <= 1.0);
-  if (!(detect > 0.0)) return;
-  if (static_cast<double>(cycles) * detect > kDrawsPerBinomial * static_cast<double>(K)) {
-    sequentialBinomials(flux, cycles, rng, h);
-    return;
-  }
-  for (double& c : s.cdf) c /= detect;  // the last is detect / detect == 1 exactly
+  const double last = s.cdf[K - 1];
+  for (double& c : s.cdf) c /= last;  // the last is last / last == 1 exactly
   inverseCdfDraws(rng.binomial(cycles, detect), rng, s, h);
 }
 

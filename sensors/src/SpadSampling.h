@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "FallingBinomial.h"
 #include "tofsim/sensors/Random.h"
 
 namespace tofsim::sensors::detail {
@@ -12,6 +13,7 @@ namespace tofsim::sensors::detail {
 struct FirstPhotonScratch {
   std::vector<double> cdf;
   std::vector<int32_t> guide;
+  FallingBinomial falling;  ///< its powers of (1 - q) are reused across pixels
 };
 
 /// The histogram over `cycles` laser cycles of the bin of each cycle's first
@@ -24,7 +26,9 @@ struct FirstPhotonScratch {
 ///    then each detection's bin by inverse CDF of p_i / (1 - exp(-sum flux))
 ///    (a guide table makes each draw O(1) on average); cost ~ D;
 ///  - many: K sequential conditional binomials (given no detection before
-///    bin i, the first one is in bin i with probability q_i); cost ~ K.
+///    bin i, the first one is in bin i with probability q_i); cost ~ K: in
+///    runs of bins of one flux (the ambient floor) O(1) each by a
+///    FallingBinomial, elsewhere inversion below a mean of 10 and BTRS above.
 /// `h` gets K counts.
 void firstPhotonHistogram(const std::vector<double>& flux, uint64_t cycles, Rng& rng,
                           FirstPhotonScratch& scratch, std::vector<double>& h);

@@ -29,7 +29,7 @@ TEST_F(NonFiniteOutputTest, NonFiniteValuesAreZeroedAndCounted) {
   direct[7] = std::numeric_limits<float>::max();  // finite, but the sum overflows
   indirect[7] = std::numeric_limits<float>::max();
 
-  pipeline::OutputSink sink(dir_, output, W, H, axis, /*keepInMemory=*/true);
+  pipeline::OutputSink sink(dir_, output, W, H, axis);
   capture::Segment segment;
   segment.pixelCount = 2;
   segment.components = {{capture::kDirect, direct.data()}, {capture::kIndirect, indirect.data()}};

@@ -118,6 +118,27 @@ TEST_F(NpyTest, ReaderAcceptsVersion2) {
   EXPECT_EQ(a.data, (std::vector<float>{0.0f, 0.0f}));
 }
 
+// The stream reader reads the same floats in pieces as readNpy at once, and
+// checks the file's size before reading any.
+TEST_F(NpyTest, StreamReaderReadsInPiecesWhatReadNpyReads) {
+  std::vector<float> data(5 * 7 * 3);
+  for (std::size_t i = 0; i < data.size(); ++i) data[i] = 0.25f * static_cast<float>(i) - 3.0f;
+  const auto path = dir_ / "a.npy";
+  io::writeNpy(path, {5, 7, 3}, data.data());
+  io::NpyStreamReader reader(path);
+  EXPECT_EQ(reader.shape(), (io::NpyShape{5, 7, 3}));
+  std::vector<float> pieces;
+  for (const std::size_t n : {1u, 20u, 0u, 64u, 20u}) {
+    std::vector<float> piece(n);
+    reader.read(piece.data(), n);
+    pieces.insert(pieces.end(), piece.begin(), piece.end());
+  }
+  EXPECT_EQ(reader.remaining(), 0u);
+  EXPECT_EQ(pieces, io::readNpy(path).data);
+  std::filesystem::resize_file(path, std::filesystem::file_size(path) - 4);
+  EXPECT_THROW(io::NpyStreamReader{path}, InputError);
+}
+
 TEST_F(NpyTest, RejectsFloat64) {
   writeBytes(dir_ / "f8.npy", npyWithDict("{'descr': '<f8', 'fortran_order': False, 'shape': (2,), }", 16));
   const std::string e = errorOf(dir_ / "f8.npy");

@@ -1,7 +1,8 @@
 // End-to-end: a render's sensors are fed the volume segment by segment as it
 // streams out of the renderer (a memory budget small enough for several
 // segments), and write byte for byte what `tofsim sense` writes from the
-// whole saved volume in memory; without the volume written (sensors only)
+// saved volume, read back run by run within the same budget (several runs);
+// without the volume written (sensors only)
 // the sensors' files are the same again. The streamed spad_counts.npy still
 // has its metadata, and output.plot_ranges reaches the sensors' pictures.
 
@@ -72,8 +73,23 @@ TEST_F(StreamingSensorsGLTest, SegmentedSensorsWriteTheBytesOfTheWholeVolume) {
   EXPECT_EQ(counts["axes"], (nlohmann::json{"y", "x", "t"}));
   EXPECT_EQ(counts["time"]["bins"], 200);
   EXPECT_EQ(counts["files"]["data"], "spad_counts.npy");
+  // A picture's JSON says the colour range it was drawn with: the fixed one,
+  // or the automatic one with its percentiles.
+  const nlohmann::json intensity = nlohmann::json::parse(
+      test::fileBytes((out / "sensors" / "spad" / "spad_intensity.json").string()));
+  EXPECT_EQ(intensity["picture"]["range"]["lo"], 0.0);
+  EXPECT_EQ(intensity["picture"]["range"]["hi"], 50.0);
+  EXPECT_EQ(intensity["picture"]["range"]["source"], "output.plot_ranges");
+  EXPECT_EQ(intensity["picture"]["range"]["unit"], "counts");
+  const nlohmann::json peak = nlohmann::json::parse(
+      test::fileBytes((out / "sensors" / "spad" / "spad_depth_peak.json").string()));
+  const nlohmann::json& range = peak["picture"]["range"];
+  EXPECT_EQ(range["source"], "automatic");
+  EXPECT_LT(range["lo"].get<double>(), range["hi"].get<double>());
+  EXPECT_GT(range["lo"].get<double>(), 0.5);  // metres: the box is 0.8 .. 1.4 m away
+  EXPECT_LT(range["hi_percentile"].get<double>(), 100.0 + 1e-9);
 
-  // The whole saved volume in memory, in one span.
+  // The saved volume read back in runs of pixels within the 1 MiB budget.
   const auto sensed = dir_ / "sense";
   const CommandResult s = runCli("sense " + test::kCornellConfig + " --volume " + out.string() +
                                  " -o " + sensed.string() + kSegmented);

@@ -1,8 +1,11 @@
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <vector>
 
+#include "support/ChiSquare.h"
 #include "tofsim/sensors/Random.h"
 
 namespace tofsim::sensors {
@@ -62,7 +65,7 @@ TEST(RandomTest, PoissonMeanEqualsVariance) {
   }
 }
 
-TEST(RandomTest, BinomialMomentsIncludingBetaSplitting) {
+TEST(RandomTest, BinomialMomentsOfInversionAndBtrs) {
   Rng rng(3, 0);
   const int n = 20000;
   const std::vector<std::pair<uint64_t, double>> cases = {
@@ -77,6 +80,88 @@ TEST(RandomTest, BinomialMomentsIncludingBetaSplitting) {
   EXPECT_EQ(rng.binomial(0, 0.5), 0u);
   EXPECT_EQ(rng.binomial(17, 1.0), 17u);
   EXPECT_EQ(rng.binomial(17, 0.0), 0u);
+}
+
+// Binomial(n, p)'s pmf over k in [lo, hi] (mode +- 14 standard deviations),
+// by the ratio P(k + 1) / P(k) = (n - k) / (k + 1) p / (1 - p) from the mode
+// outwards in logarithms, normalised over the range (no lgamma of huge n).
+std::vector<double> binomialPmf(uint64_t n, double p, uint64_t& lo) {
+  const double N = static_cast<double>(n);
+  const double mode = std::floor((N + 1.0) * p);
+  const double spread = 14.0 * std::sqrt(N * p * (1.0 - p)) + 30.0;
+  lo = static_cast<uint64_t>(std::max(0.0, mode - spread));
+  const auto hi = static_cast<uint64_t>(std::min(N, mode + spread));
+  const auto m = static_cast<uint64_t>(mode);
+  const double lr = std::log(p) - std::log1p(-p);
+  std::vector<double> logPmf(hi - lo + 1, 0.0);
+  for (uint64_t k = m; k < hi; ++k) {
+    logPmf[k + 1 - lo] = logPmf[k - lo] + std::log((N - k) / (k + 1.0)) + lr;
+  }
+  for (uint64_t k = m; k > lo; --k) {
+    logPmf[k - 1 - lo] = logPmf[k - lo] - std::log((N - k + 1.0) / k) - lr;
+  }
+  std::vector<double> pmf(logPmf.size());
+  double sum = 0.0;
+  for (std::size_t i = 0; i < pmf.size(); ++i) sum += pmf[i] = std::exp(logPmf[i]);
+  for (double& v : pmf) v /= sum;
+  return pmf;
+}
+
+// Pearson's chi-square of `draws` draws of Binomial(n, pDraw) against the
+// pmf of Binomial(n, pLaw), cells of at least draws / 200 expected.
+test::ChiSquare binomialChiSquare(uint64_t n, double pDraw, double pLaw, int draws, Rng& rng) {
+  uint64_t lo = 0;
+  const std::vector<double> pmf = binomialPmf(n, pLaw, lo);
+  std::vector<double> observed(pmf.size(), 0.0), expected(pmf.size());
+  for (std::size_t i = 0; i < pmf.size(); ++i) expected[i] = pmf[i] * draws;
+  for (int i = 0; i < draws; ++i) {
+    const uint64_t k = rng.binomial(n, pDraw);
+    const uint64_t j = std::clamp<uint64_t>(k, lo, lo + pmf.size() - 1) - lo;
+    observed[j] += 1.0;
+  }
+  return test::pearson(observed, expected, std::max(5.0, draws / 200.0));
+}
+
+// n p on both sides of the switch from inversion to BTRS (10), tiny and huge
+// p (and 1 - p), huge n: chi-square within its two 0.001 quantiles.
+TEST(RandomTest, BinomialFollowsItsPmf) {
+  Rng rng(4, 0);
+  const std::vector<std::pair<uint64_t, double>> cases = {{20, 0.5},
+                                                          {1000, 0.0099},
+                                                          {1000, 0.0101},
+                                                          {100000, 6e-5},
+                                                          {100000, 1e-7},
+                                                          {100000, 0.9999999},
+                                                          {40, 0.3},
+                                                          {1000, 0.9901},
+                                                          {100000, 0.02},
+                                                          {3000000000ull, 0.5},
+                                                          {1000000000000ull, 1e-3},
+                                                          {1000000000, 1.2e-8}};
+  for (const auto& [n, p] : cases) {
+    const test::ChiSquare chi = binomialChiSquare(n, p, p, 100000, rng);
+    if (chi.dof < 1) {  // all mass in one cell (tiny p): the draws must all land there
+      EXPECT_EQ(chi.statistic, 0.0) << n << " " << p;
+      continue;
+    }
+    EXPECT_LT(chi.statistic, test::chiSquareQuantile(chi.dof, 3.09)) << n << " " << p;
+    if (chi.dof >= 10) {
+      EXPECT_GT(chi.statistic, test::chiSquareQuantile(chi.dof, -3.09)) << n << " " << p;
+    }
+  }
+}
+
+// The test above can fail: draws with a mean 1 % high (inversion, BTRS) or
+// 3 % high (a mean of 10) are told from the pmf.
+TEST(RandomTest, BinomialChiSquareRejectsADistortedMean) {
+  Rng rng(5, 0);
+  const std::vector<std::array<double, 3>> cases = {
+      {1000, 0.0099, 1.03}, {100000, 0.02, 1.01}, {1000000000000.0, 1e-3, 1.0001}};
+  for (const auto& [n, p, factor] : cases) {
+    const test::ChiSquare chi =
+        binomialChiSquare(static_cast<uint64_t>(n), p * factor, p, 100000, rng);
+    EXPECT_GT(chi.statistic, test::chiSquareQuantile(chi.dof, 3.09)) << n << " " << p;
+  }
 }
 
 }  // namespace

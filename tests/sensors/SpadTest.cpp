@@ -4,6 +4,7 @@
 #include <numeric>
 
 #include "TestVolumes.h"
+#include "support/ChiSquare.h"
 #include "tofsim/sensors/Random.h"
 #include "tofsim/sensors/Spad.h"
 #include "tofsim/sensors/TimeKernel.h"
@@ -101,33 +102,72 @@ TEST(SpadTest, HighFluxPileUpAndCoatesRecoversFlux) {
   EXPECT_GT(chi2, dof - 16 - 5.0 * std::sqrt(2.0 * dof));
 }
 
-// The synchronous histogram is drawn detection by detection (inverse CDF)
-// when there are few per bin and by sequential binomials otherwise: both
-// follow the exact first-photon law, pile-up included. 40 bins of flux 0.05
-// (a detection in 86 % of the cycles): 200 cycles take the first draw, 5000
-// the second. Pearson's chi-square over 400 pixels, bins plus "none".
-TEST(SpadTest, BothSynchronousDrawsFollowTheFirstPhotonLaw) {
-  const int K = 40;
+// Pearson's chi-square of the counts pooled over a 20x20 image of one flux
+// profile against the first-photon law of `lawFlux`, bins plus "none" (each
+// pixel's histogram is Multinomial(cycles; p_0 .. p_{K-1}, none), so their
+// sum is Multinomial(400 cycles; ...)).
+tofsim::test::ChiSquare firstPhotonChiSquare(const std::vector<double>& flux, int64_t cycles,
+                                             const std::vector<double>& lawFlux, uint64_t seed) {
+  const auto K = static_cast<int32_t>(flux.size());
   TransientVolume v = makeVolume(20, 20, 0.0, kW, K);
   for (int y = 0; y < 20; ++y)
     for (int x = 0; x < 20; ++x)
-      for (int t = 0; t < K; ++t) v.at(y, x, t, 0) = 0.05f;
-  std::vector<double> flux(K);
-  for (int t = 0; t < K; ++t) flux[t] = static_cast<double>(0.05f);
-  const std::vector<double> P = firstPhotonProbabilities(flux);
-  for (const int64_t cycles : {200, 5000}) {
-    const std::vector<double> h = pooledCounts(runSpad(v, baseParams(cycles), 7));
-    const double n = 400.0 * static_cast<double>(cycles);
-    double chi2 = 0.0, detected = 0.0, none = 1.0;
-    for (int t = 0; t < K; ++t) {
-      chi2 += (h[t] - n * P[t]) * (h[t] - n * P[t]) / (n * P[t]);
-      detected += h[t];
-      none -= P[t];
-    }
-    chi2 += (n - detected - n * none) * (n - detected - n * none) / (n * none);
-    // 40 degrees of freedom: P(chi2 > 73.4) = 0.001.
-    EXPECT_LT(chi2, 73.4) << cycles << " cycles";
-    EXPECT_GT(chi2, 17.9) << cycles << " cycles";  // P(chi2 < 17.9) = 0.001: not too good
+      for (int t = 0; t < K; ++t) v.at(y, x, t, 0) = static_cast<float>(flux[t]);
+  std::vector<double> h = pooledCounts(runSpad(v, baseParams(cycles), seed));
+  std::vector<double> law(K);
+  for (int t = 0; t < K; ++t) law[t] = static_cast<double>(static_cast<float>(lawFlux[t]));
+  std::vector<double> expected = firstPhotonProbabilities(law);
+  const double n = 400.0 * static_cast<double>(cycles);
+  double none = 1.0, detected = 0.0;
+  for (int t = 0; t < K; ++t) {
+    none -= expected[t];
+    detected += h[t];
+    expected[t] *= n;
+  }
+  h.push_back(n - detected);
+  expected.push_back(n * none);
+  return tofsim::test::pearson(h, expected);
+}
+
+// Flux profiles that take each of the synchronous draws: detection by
+// detection (inverse CDF) when there are few per bin, else sequential
+// binomials, by the FallingBinomial tables along a long run of one flux,
+// inversion below a mean of 10 and BTRS above.
+struct FirstPhotonCase {
+  const char* draws;
+  std::vector<double> flux;
+  int64_t cycles;
+};
+
+std::vector<FirstPhotonCase> firstPhotonCases() {
+  std::vector<double> floorAndPeak(200, 2e-4);  // a floor of n q ~ 6, a peak of n q ~ 600
+  for (int t = 90; t < 110; ++t) floorAndPeak[t] += 0.02 * std::exp(-0.05 * (t - 100) * (t - 100));
+  std::vector<double> rising(60);  // n q from ~1 to ~50: inversion, then BTRS
+  for (int t = 0; t < 60; ++t) rising[t] = 2e-4 * (1.0 + t);
+  return {{"per detection", std::vector<double>(40, 0.05), 200},
+          {"binomials, BTRS", std::vector<double>(40, 0.05), 5000},
+          {"falling-binomial tables", std::vector<double>(400, 2e-4), 30000},
+          {"tables, inversion and BTRS", floorAndPeak, 30000},
+          {"inversion to BTRS", rising, 5000}};
+}
+
+// The five cases above: chi-square within its two 0.001 quantiles.
+TEST(SpadTest, EverySynchronousDrawFollowsTheFirstPhotonLaw) {
+  for (const FirstPhotonCase& c : firstPhotonCases()) {
+    const tofsim::test::ChiSquare chi = firstPhotonChiSquare(c.flux, c.cycles, c.flux, 7);
+    EXPECT_LT(chi.statistic, tofsim::test::chiSquareQuantile(chi.dof, 3.09)) << c.draws;
+    EXPECT_GT(chi.statistic, tofsim::test::chiSquareQuantile(chi.dof, -3.09))
+        << c.draws;  // not too good
+  }
+}
+
+// The test above can fail: the same draws against a law 2 % off in flux.
+TEST(SpadTest, FirstPhotonChiSquareRejectsATwoPercentDistortion) {
+  for (const FirstPhotonCase& c : firstPhotonCases()) {
+    std::vector<double> distorted = c.flux;
+    for (double& f : distorted) f *= 1.02;
+    const tofsim::test::ChiSquare chi = firstPhotonChiSquare(c.flux, c.cycles, distorted, 7);
+    EXPECT_GT(chi.statistic, tofsim::test::chiSquareQuantile(chi.dof, 3.09)) << c.draws;
   }
 }
 

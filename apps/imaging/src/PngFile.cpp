@@ -9,21 +9,16 @@
 #include <string_view>
 #include <vector>
 
+#include "tofsim/imaging/WhiteLevel.h"
 #include "tofsim/util/AtomicFile.h"
 #include "tofsim/util/Error.h"
 
 namespace tofsim::imaging::detail {
 
 double whiteLevel(const float* values, std::size_t count) {
-  const std::size_t step = std::max<std::size_t>(1, count / (std::size_t{1} << 22));
-  std::vector<float> v;
-  for (std::size_t i = 0; i < count; i += step) {
-    if (values[i] > 0.0f && std::isfinite(values[i])) v.push_back(values[i]);
-  }
-  if (v.empty()) return 1.0;
-  const std::size_t k = std::min(v.size() - 1, static_cast<std::size_t>(0.995 * v.size()));
-  std::nth_element(v.begin(), v.begin() + static_cast<long>(k), v.end());
-  return v[k];
+  WhiteLevelSampler sampler(count);
+  sampler.add(values, count);
+  return sampler.white();
 }
 
 unsigned char toneMapped8(double value, double white, ToneMap mode) {

@@ -11,9 +11,7 @@
 
 namespace tofsim::imaging::detail {
 
-/// The 99.5th percentile of the positive finite values among `count` floats
-/// (from at most ~4M evenly spaced samples: exact enough for a display scale,
-/// without copying a whole volume); 1 when there are none. The white point
+/// WhiteLevelSampler's white of `count` floats (WhiteLevel.h): the white point
 /// of both tone maps.
 double whiteLevel(const float* values, std::size_t count);
 

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <map>
 #include <opencv2/imgproc.hpp>
 #include <opencv2/videoio.hpp>
 #include <vector>
@@ -17,30 +18,55 @@ namespace {
 constexpr int32_t kMinSide = 256;
 constexpr int32_t kBand = 24;  // pixels below the image for the time stamp
 
+// The bins of one frame's window, read once each as the frames advance.
+class BinWindow {
+ public:
+  explicit BinWindow(const BinFrames& frames) : frames_(frames) {}
+  // Bins first .. last (first never decreasing from call to call).
+  const std::map<int32_t, std::vector<float>>& bins(int32_t first, int32_t last) {
+    bins_.erase(bins_.begin(), bins_.lower_bound(first));
+    const std::size_t floats =
+        static_cast<std::size_t>(frames_.width) * frames_.height * frames_.channels;
+    for (int32_t b = first; b <= last; ++b) {
+      if (bins_.count(b)) continue;
+      std::vector<float>& values = bins_[b];
+      values.resize(floats);
+      frames_.readBin(b, values.data());
+    }
+    return bins_;
+  }
 
+ private:
+  const BinFrames& frames_;
+  std::map<int32_t, std::vector<float>> bins_;
+};
 
-cv::Mat frameOf(const TransientVolume& volume, int32_t t, int32_t window, double white,
-                ToneMap mode, const FrameSize& size) {
-  const int32_t first = std::max(0, t - (window - 1) / 2);
-  const int32_t last = std::min(volume.bins() - 1, t + window / 2);
-  cv::Mat small(volume.height(), volume.width(), CV_8UC3);
-  const int32_t channels = volume.channels();
-  for (int32_t y = 0; y < volume.height(); ++y) {
-    for (int32_t x = 0; x < volume.width(); ++x) {
+cv::Mat frameOf(const BinFrames& frames, BinWindow& window, int32_t t, int32_t width, ToneMap mode,
+                const FrameSize& size) {
+  const int32_t first = std::max(0, t - (width - 1) / 2);
+  const int32_t last = std::min(frames.axis.bins - 1, t + width / 2);
+  const std::map<int32_t, std::vector<float>>& bins = window.bins(first, last);
+  const int32_t W = frames.width, H = frames.height, channels = frames.channels;
+  cv::Mat small(H, W, CV_8UC3);
+  for (int32_t y = 0; y < H; ++y) {
+    for (int32_t x = 0; x < W; ++x) {
+      const std::size_t pixel = (static_cast<std::size_t>(y) * W + x) * channels;
       for (int c = 0; c < 3; ++c) {
         double v = 0.0;
-        for (int32_t b = first; b <= last; ++b) v += volume.at(y, x, b, channels >= 3 ? c : 0);
-        small.at<cv::Vec3b>(y, x)[2 - c] = detail::toneMapped8(v, white, mode);  // OpenCV: BGR
+        for (int32_t b = first; b <= last; ++b) {
+          v += bins.at(b)[pixel + (channels >= 3 ? c : 0)];
+        }
+        small.at<cv::Vec3b>(y, x)[2 - c] =
+            detail::toneMapped8(v, frames.white, mode);  // OpenCV: BGR
       }
     }
   }
-  const int32_t k = (size.height - kBand) / volume.height();
+  const int32_t k = (size.height - kBand) / H;
   cv::Mat frame(size.height, size.width, CV_8UC3, cv::Scalar(0, 0, 0));
   cv::Mat scaled;
-  cv::resize(small, scaled, cv::Size(volume.width() * k, volume.height() * k), 0, 0,
-             cv::INTER_NEAREST);
+  cv::resize(small, scaled, cv::Size(W * k, H * k), 0, 0, cv::INTER_NEAREST);
   scaled.copyTo(frame(cv::Rect(0, 0, scaled.cols, scaled.rows)));
-  const double t_s = volume.axis().binCenter_s(t);
+  const double t_s = frames.axis.binCenter_s(t);
   char stamp[96];
   std::snprintf(stamp, sizeof stamp, "t = %.3f ns (%.3f m)", t_s * 1e9, t_s * 299792458.0);
   cv::putText(frame, stamp, cv::Point(4, size.height - 7), cv::FONT_HERSHEY_SIMPLEX, 0.45,
@@ -59,11 +85,28 @@ FrameSize videoFrameSize(int32_t imageWidth, int32_t imageHeight) {
 
 int32_t videoFrameCount(int32_t bins, int32_t stride) { return (bins + stride - 1) / stride; }
 
-void writeTransientVideo(const std::filesystem::path& mp4Path, const TransientVolume& volume,
+BinFrames binFramesOf(const TransientVolume& volume) {
+  BinFrames frames;
+  frames.width = volume.width();
+  frames.height = volume.height();
+  frames.channels = volume.channels();
+  frames.axis = volume.axis();
+  frames.white = detail::whiteLevel(volume.data(), volume.size());
+  frames.readBin = [&volume](int32_t t, float* out) {
+    for (int32_t y = 0; y < volume.height(); ++y) {
+      for (int32_t x = 0; x < volume.width(); ++x) {
+        for (int32_t c = 0; c < volume.channels(); ++c) *out++ = volume.at(y, x, t, c);
+      }
+    }
+  };
+  return frames;
+}
+
+void writeTransientVideo(const std::filesystem::path& mp4Path, const BinFrames& frames,
                          const VideoOptions& options, const std::filesystem::path& pngDirectory) {
   TOFSIM_CHECK(options.stride >= 1 && options.window >= 1);
-  const FrameSize size = videoFrameSize(volume.width(), volume.height());
-  const double white = detail::whiteLevel(volume.data(), volume.size());
+  const FrameSize size = videoFrameSize(frames.width, frames.height);
+  BinWindow window(frames);
   // OpenCV picks the container from the file name, so the temporary keeps
   // the .mp4 extension.
   std::filesystem::path temp = mp4Path;
@@ -80,8 +123,8 @@ void writeTransientVideo(const std::filesystem::path& mp4Path, const TransientVo
   }
   if (!pngDirectory.empty()) std::filesystem::create_directories(pngDirectory);
   try {
-    for (int32_t t = 0; t < volume.bins(); t += options.stride) {
-      const cv::Mat frame = frameOf(volume, t, options.window, white, options.toneMap, size);
+    for (int32_t t = 0; t < frames.axis.bins; t += options.stride) {
+      const cv::Mat frame = frameOf(frames, window, t, options.window, options.toneMap, size);
       if (writer.isOpened()) writer.write(frame);
       if (!pngDirectory.empty()) {
         char name[32];

@@ -137,13 +137,6 @@ void checkAxisAfterRender(const config::RunConfig& config, const capture::Render
   }
 }
 
-void checkSensorWindows(const config::RunConfig& config, const TransientVolume& volume) {
-  for (std::size_t i = 0; i < config.sensors.size(); ++i) {
-    checkSensorWindow(config, i, sensors::windowLossFraction(config.sensors[i].params, volume),
-                      volume.axis());
-  }
-}
-
 void checkSensorWindow(const config::RunConfig& config, std::size_t index, double lost,
                        const TimeAxis& axis) {
   if (lost <= kWindowLossWarning) return;

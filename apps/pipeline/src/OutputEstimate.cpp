@@ -42,6 +42,10 @@ OutputEstimate estimateOutputs(const config::RunConfig& config) {
         {"bounce" + std::to_string(k) + ".npy", volume, volumeKeys + ", output.components"});
   }
   if (out.frames) e.items.push_back({"frames/*.exr", volume, volumeKeys + ", output.frames"});
+  if (out.frames || out.video || out.frame_pngs) {
+    // Disk the run needs while it goes, gone when it ends (BinMajorSpill.h).
+    e.temporaryBytes = volume - kNpyHeaderBytes;
+  }
   const std::uintmax_t picture = w * h * kChannels;
   const std::uintmax_t videoFrames = (bins + out.video_stride - 1) / out.video_stride;
   if (out.frame_pngs) {
@@ -100,9 +104,15 @@ void checkOutputsFit(const OutputEstimate& estimate, const config::RunConfig& co
   struct statvfs fs {};
   if (::statvfs(directory.c_str(), &fs) != 0) return;  // unknown: the writes will tell
   const std::uintmax_t available = static_cast<std::uintmax_t>(fs.f_bavail) * fs.f_frsize;
-  if (total > available) {
+  if (total + estimate.temporaryBytes > available) {
+    const std::string temporary =
+        estimate.temporaryBytes == 0
+            ? ""
+            : ", and " + formatBytes(estimate.temporaryBytes) +
+                  " more while the run goes (the video's and frames' bin-major copy of the "
+                  "volume, output.video / frames / frame_pngs)";
     throw InputError(FileLoc{directory.string()}, "",
-                     need + "; the file system has " + formatBytes(available) +
+                     need + temporary + "; the file system has " + formatBytes(available) +
                          " free (the earlier results stay until the new set is complete)");
   }
 }

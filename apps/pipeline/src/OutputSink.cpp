@@ -4,8 +4,6 @@
 #include <cmath>
 #include <string>
 
-#include "tofsim/capture/VolumeCollector.h"
-
 namespace tofsim::pipeline {
 
 namespace {
@@ -24,8 +22,8 @@ std::size_t zeroNonFinite(float* values, std::size_t count) {
 }
 
 OutputSink::OutputSink(const std::filesystem::path& directory, const config::OutputConfig& output,
-                       int32_t width, int32_t height, const TimeAxis& axis, bool keepInMemory,
-                       Forward forward, int32_t forwardBounces)
+                       int32_t width, int32_t height, const TimeAxis& axis, Forward forward,
+                       int32_t forwardBounces)
     : width_(width),
       height_(height),
       axis_(axis),
@@ -47,7 +45,6 @@ OutputSink::OutputSink(const std::filesystem::path& directory, const config::Out
     bounceFiles_.emplace_back(k, std::make_unique<io::NpyStreamWriter>(directory / name, shape));
   }
   steady_.assign(static_cast<std::size_t>(width) * height * kChannels, 0.0);
-  if (keepInMemory) volume_.emplace(width, height, axis, capture::defaultChannelNames(kChannels));
 }
 
 void OutputSink::consume(const capture::Segment& segment) {
@@ -79,8 +76,6 @@ void OutputSink::consume(const capture::Segment& segment) {
       for (int32_t c = 0; c < kChannels; ++c) out[c] += in[t * kChannels + c];
     }
   }
-  const std::size_t offset = segment.firstPixel * pixelFloats;
-  if (volume_) std::copy_n(scratch_.data(), floats, volume_->data() + offset);
   if (forward_) forward_(forwardedSpan(segment, floats));
 }
 

@@ -3,6 +3,8 @@
 #include <cstdio>
 #include <optional>
 
+#include "BinMajorSpill.h"
+#include "tofsim/capture/VolumeCollector.h"
 #include "tofsim/imaging/Pictures.h"
 #include "tofsim/imaging/Video.h"
 #include "tofsim/io/DepthExr.h"
@@ -39,27 +41,24 @@ void reportLoad(const scene::LoadReport& report, const Progress& progress) {
   }
 }
 
-void writeFrames(const std::filesystem::path& directory, const TransientVolume& volume,
+void writeFrames(const std::filesystem::path& directory, const imaging::BinFrames& frames,
                  std::vector<std::string>& files) {
   std::filesystem::create_directories(directory / "frames");
-  for (int32_t t = 0; t < volume.bins(); ++t) {
+  std::vector<std::string> channels = capture::defaultChannelNames(frames.channels);
+  for (int32_t t = 0; t < frames.axis.bins; ++t) {
     throwIfInterrupted();
-    Image frame(volume.width(), volume.height(), volume.channels());
-    for (int32_t y = 0; y < volume.height(); ++y) {
-      for (int32_t x = 0; x < volume.width(); ++x) {
-        for (int32_t c = 0; c < volume.channels(); ++c) frame.at(y, x, c) = volume.at(y, x, t, c);
-      }
-    }
+    Image frame(frames.width, frames.height, frames.channels);
+    frames.readBin(t, frame.data.data());
     char name[64];
     std::snprintf(name, sizeof name, "frames/frame_%05d.exr", t);
-    io::writeExr(directory / name, frame, volume.channelNames());
+    io::writeExr(directory / name, frame, channels);
     files.push_back(name);
   }
 }
 
 // transient.mp4 and/or frames/frame_NNNNN.png (the same pictures).
 void writeVideo(const std::filesystem::path& dir, const config::OutputConfig& out,
-                const TransientVolume& volume, const Progress& progress,
+                const imaging::BinFrames& frames, const Progress& progress,
                 std::vector<std::string>& files) {
   imaging::VideoOptions options;
   options.toneMap = out.video_tone_map == config::VideoToneMap::Log ? imaging::ToneMap::Log
@@ -68,19 +67,24 @@ void writeVideo(const std::filesystem::path& dir, const config::OutputConfig& ou
   options.window = out.video_window;
   options.fps = out.video_fps;
   progress.message(
-      "video: " + std::to_string(imaging::videoFrameCount(volume.bins(), out.video_stride)) +
+      "video: " + std::to_string(imaging::videoFrameCount(frames.axis.bins, out.video_stride)) +
       " frame(s)");
-  imaging::writeTransientVideo(out.video ? dir / "transient.mp4" : std::filesystem::path(), volume,
+  imaging::writeTransientVideo(out.video ? dir / "transient.mp4" : std::filesystem::path(), frames,
                                options, out.frame_pngs ? dir / "frames" : std::filesystem::path());
   if (out.video) files.push_back("transient.mp4");
   if (out.frame_pngs) {
-    for (int32_t t = 0; t < volume.bins(); t += out.video_stride) {
+    for (int32_t t = 0; t < frames.axis.bins; t += out.video_stride) {
       char name[64];
       std::snprintf(name, sizeof name, "frames/frame_%05d.png", t);
       files.push_back(name);
     }
   }
 }
+
+// The video's and the frames' bin-major copy of the volume, in the staging
+// folder (on the outputs' disk, not a RAM-backed /tmp); gone before the
+// folder is committed.
+constexpr const char* kBinMajorSpillName = ".transient_bin_major.tmp";
 
 }  // namespace
 
@@ -143,21 +147,27 @@ void writeOutputs(const config::RunConfig& config, const capture::RenderJob& job
   // component and the depth when the output writes them), so `tofsim sense`
   // on the saved folder reproduces their outputs byte for byte.
   // They are fed each segment as it is written, so that no one holds the
-  // whole volume unless the video or the frames (time-major: every pixel of
-  // one bin) need it. The light by bounce order (cwtof multipath_by_order)
-  // is given them whether or not the components are saved; `tofsim sense`
-  // needs the files (direct.npy, bounce<k>.npy) to redo it.
-  std::optional<SensorStreams> sensorStreams;
+  // whole volume. The video and the frames (time-major: every pixel of one
+  // bin) get it through a bin-major temporary file. The light by bounce order
+  // (cwtof multipath_by_order) is given the sensors whether or not the
+  // components are saved; `tofsim sense` needs the files (direct.npy,
+  // bounce<k>.npy) to redo it.
+  const sensors::VolumeShape shape{job.camera.width, job.camera.height, capture::kChannels,
+                                   job.settings.time};
   const std::optional<int32_t> bounces = sensorBounces(config);
-  if (!config.sensors.empty()) {
-    const sensors::VolumeShape shape{job.camera.width, job.camera.height, capture::kChannels,
-                                     job.settings.time};
-    sensorStreams.emplace(config, shape, out.direct, bounces, dir);
+  std::optional<SensorStreams> sensorStreams;
+  if (!config.sensors.empty()) sensorStreams.emplace(config, shape, out.direct, bounces, dir);
+  std::optional<BinMajorSpill> spill;
+  if (out.frames || out.video || out.frame_pngs) spill.emplace(dir / kBinMajorSpillName, shape);
+  OutputSink::Forward forward;
+  if (sensorStreams || spill) {
+    forward = [&](const sensors::PixelSpan& s) {
+      if (sensorStreams) sensorStreams->consume(s);
+      if (spill) spill->append(s);
+    };
   }
-  OutputSink::Forward toSensors;
-  if (sensorStreams) toSensors = [&](const sensors::PixelSpan& s) { sensorStreams->consume(s); };
-  OutputSink sink(dir, out, job.camera.width, job.camera.height, job.settings.time,
-                  out.frames || out.video || out.frame_pngs, toSensors, bounces.value_or(0));
+  OutputSink sink(dir, out, job.camera.width, job.camera.height, job.settings.time, forward,
+                  bounces.value_or(0));
   const capture::ProgressCallback onProgress = [&](std::size_t done, std::size_t total,
                                                    const std::string& what) {
     progress.update(done, total, what);
@@ -202,8 +212,11 @@ void writeOutputs(const config::RunConfig& config, const capture::RenderJob& job
     summary.files.push_back("depth.npy");
     summary.files.push_back("depth.png");
   }
-  if (out.frames) writeFrames(dir, *sink.volume(), summary.files);
-  if (out.video || out.frame_pngs) writeVideo(dir, out, *sink.volume(), progress, summary.files);
+  if (spill) {
+    const imaging::BinFrames frames = spill->frames();
+    if (out.frames) writeFrames(dir, frames, summary.files);
+    if (out.video || out.frame_pngs) writeVideo(dir, out, frames, progress, summary.files);
+  }
   if (out.transient) {
     writeFileAtomically(
         dir / "transient.json",

@@ -1,7 +1,9 @@
 #include "tofsim/pipeline/SavedVolume.h"
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <memory>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
@@ -67,12 +69,11 @@ std::string shapeText(const io::NpyShape& shape) {
   return text + ")";
 }
 
-TransientVolume readVolume(const std::filesystem::path& file, const VolumeLayout& layout,
-                           const std::filesystem::path& jsonFile) {
-  std::error_code ec;
-  if (!std::filesystem::exists(file, ec)) fail(file, "not found");
-  io::NpyArray array = io::readNpy(file);
-  const io::NpyShape& s = array.shape;
+// Throws unless the .npy's shape is (H, W, bins, C) with the JSON's bins and
+// channels; returns the channel names (the JSON's, or C0, C1, ...).
+std::vector<std::string> checkedChannels(const std::filesystem::path& file, const io::NpyShape& s,
+                                         const VolumeLayout& layout,
+                                         const std::filesystem::path& jsonFile) {
   // Every axis at least 1 and H, W, C within int32 (TransientVolume's sizes).
   const auto badDimension = [](std::size_t d) { return d < 1 || d > (std::size_t{1} << 30); };
   if (s.size() != 4 || badDimension(s[0]) || badDimension(s[1]) || badDimension(s[3]) ||
@@ -84,10 +85,34 @@ TransientVolume readVolume(const std::filesystem::path& file, const VolumeLayout
   }
   std::vector<std::string> channels = layout.channels;
   for (std::size_t c = channels.size(); c < s[3]; ++c) channels.push_back("C" + std::to_string(c));
+  return channels;
+}
+
+TransientVolume readVolume(const std::filesystem::path& file, const VolumeLayout& layout,
+                           const std::filesystem::path& jsonFile) {
+  std::error_code ec;
+  if (!std::filesystem::exists(file, ec)) fail(file, "not found");
+  io::NpyArray array = io::readNpy(file);
+  const io::NpyShape& s = array.shape;
+  std::vector<std::string> channels = checkedChannels(file, s, layout, jsonFile);
   TransientVolume volume(static_cast<int32_t>(s[1]), static_cast<int32_t>(s[0]), layout.axis,
-                         channels);
+                         std::move(channels));
   volume.values() = std::move(array.data);
   return volume;
+}
+
+// depth.exr when present, one channel of W x H.
+std::optional<Image> readDepth(const std::filesystem::path& directory, int32_t W, int32_t H) {
+  const std::filesystem::path depthFile = directory / "depth.exr";
+  std::error_code ec;
+  if (!std::filesystem::exists(depthFile, ec)) return std::nullopt;
+  Image depth = io::readDepthExr(depthFile);
+  if (depth.channels != 1 || depth.width != W || depth.height != H) {
+    fail(depthFile, "expected one channel of " + std::to_string(W) + "x" + std::to_string(H) +
+                        " (got " + std::to_string(depth.channels) + " of " +
+                        std::to_string(depth.width) + "x" + std::to_string(depth.height) + ")");
+  }
+  return depth;
 }
 
 }  // namespace
@@ -105,16 +130,7 @@ SavedVolume loadSavedVolume(const std::filesystem::path& directory) {
       fail(directory / "direct.npy", "shape differs from transient.npy");
     }
   }
-  const std::filesystem::path depthFile = directory / "depth.exr";
-  if (std::filesystem::exists(depthFile, ec)) {
-    saved.depth_m = io::readDepthExr(depthFile);
-    if (saved.depth_m->channels != 1 || saved.depth_m->width != W || saved.depth_m->height != H) {
-      fail(depthFile, "expected one channel of " + std::to_string(W) + "x" + std::to_string(H) +
-                          " (got " + std::to_string(saved.depth_m->channels) + " of " +
-                          std::to_string(saved.depth_m->width) + "x" +
-                          std::to_string(saved.depth_m->height) + ")");
-    }
-  }
+  saved.depth_m = readDepth(directory, W, H);
   return saved;
 }
 
@@ -134,6 +150,63 @@ int32_t savedIndirectBounces(const std::filesystem::path& file) {
   } catch (const nlohmann::json::exception& e) {
     fail(file, std::string("not a tofsim transient.json: ") + e.what());
   }
+}
+
+SavedVolumeStream::SavedVolumeStream(const std::filesystem::path& directory,
+                                     const std::vector<std::string>& components) {
+  const std::filesystem::path json = directory / "transient.json";
+  const VolumeLayout layout = readLayout(json);
+  const auto open = [&](const std::filesystem::path& file) {
+    std::error_code ec;
+    if (!std::filesystem::exists(file, ec)) fail(file, "not found");
+    auto reader = std::make_unique<io::NpyStreamReader>(file);
+    const std::vector<std::string> channels = checkedChannels(file, reader->shape(), layout, json);
+    return std::make_pair(std::move(reader), channels.size());
+  };
+  auto [volume, channels] = open(directory / "transient.npy");
+  const io::NpyShape s = volume->shape();
+  shape_.height = static_cast<int32_t>(s[0]);
+  shape_.width = static_cast<int32_t>(s[1]);
+  shape_.channels = static_cast<int32_t>(channels);
+  shape_.axis = layout.axis;
+  files_.push_back({"transient", std::move(volume), {}});
+  for (const std::string& name : components) {
+    const std::filesystem::path file = directory / (name + ".npy");
+    std::error_code ec;
+    if (!std::filesystem::exists(file, ec)) continue;
+    auto component = open(file).first;
+    if (component->shape() != s) fail(file, "shape differs from transient.npy");
+    files_.push_back({name, std::move(component), {}});
+  }
+  depth_m_ = readDepth(directory, shape_.width, shape_.height);
+}
+
+SavedVolumeStream::~SavedVolumeStream() = default;
+
+bool SavedVolumeStream::has(const std::string& component) const {
+  for (const File& f : files_) {
+    if (f.name == component) return true;
+  }
+  return false;
+}
+
+std::size_t SavedVolumeStream::read(std::size_t maxPixels) {
+  TOFSIM_CHECK(maxPixels >= 1);
+  const std::size_t pixels = std::min(maxPixels, shape_.pixelCount() - next_);
+  firstPixel_ = next_;
+  for (File& f : files_) {
+    f.values.resize(pixels * shape_.pixelFloats());
+    f.reader->read(f.values.data(), f.values.size());
+  }
+  next_ += pixels;
+  return pixels;
+}
+
+const float* SavedVolumeStream::values(const std::string& component) const {
+  for (const File& f : files_) {
+    if (f.name == component) return f.values.data();
+  }
+  return nullptr;
 }
 
 std::optional<TransientVolume> loadSavedComponent(const std::filesystem::path& directory,

@@ -1,9 +1,9 @@
 #include "tofsim/pipeline/SenseRun.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 
-#include "tofsim/pipeline/AxisReport.h"
 #include "tofsim/pipeline/PlotRanges.h"
 #include "tofsim/pipeline/SavedVolume.h"
 #include "tofsim/pipeline/SensorStreams.h"
@@ -28,72 +28,93 @@ double secondsSince(std::chrono::steady_clock::time_point start) {
 
 // The config says what it expects; the saved volume decides. A mismatch is
 // legitimate (a volume rendered with other --set values) but worth a note.
-void noteDifferences(const config::RunConfig& config, const TransientVolume& volume,
+void noteDifferences(const config::RunConfig& config, const sensors::VolumeShape& volume,
                      const Progress& progress) {
   const capture::Camera& cam = config.camera.camera;
   const TimeAxis& axis = config.render.time;
-  if (cam.width != volume.width() || cam.height != volume.height() || axis.bins != volume.bins() ||
-      axis.start_s != volume.axis().start_s || axis.bin_width_s != volume.axis().bin_width_s ||
-      axis.index_of_refraction != volume.axis().index_of_refraction ||
-      axis.camera_unwarp != volume.axis().camera_unwarp) {
+  if (cam.width != volume.width || cam.height != volume.height || axis.bins != volume.axis.bins ||
+      axis.start_s != volume.axis.start_s || axis.bin_width_s != volume.axis.bin_width_s ||
+      axis.index_of_refraction != volume.axis.index_of_refraction ||
+      axis.camera_unwarp != volume.axis.camera_unwarp) {
     progress.message(
         "note: the saved volume's size or time axis differs from the config's; "
         "the sensors use the volume's");
   }
 }
 
-// The light by bounce order of a saved render, for a cwtof sensor with
-// multipath_by_order: N from transient.json, then bounce1 .. bounce<N>.npy.
-std::vector<TransientVolume> savedBounces(const config::RunConfig& config,
-                                          const std::filesystem::path& dir,
-                                          const SavedVolume& saved) {
+// The saved components the sensors take beside the total: the direct light,
+// and for a cwtof sensor with multipath_by_order the light by bounce order,
+// bounce1 .. bounce<N> with N from transient.json (indirect.npy stands for
+// bounce1 when N = 1: the same light). An InputError names the first file
+// missing.
+std::vector<std::string> sensedComponents(const config::RunConfig& config,
+                                          const std::filesystem::path& dir) {
+  std::vector<std::string> components = {"direct"};
+  if (!sensorBounces(config)) return components;
   const auto fail = [&](const std::filesystem::path& file, const std::string& why) {
     throw InputError(FileLoc{file.string()}, "",
                      why + ": a cwtof sensor with multipath_by_order (" +
                          config.config_file.string() +
                          ") needs the render's direct.npy, bounce<k>.npy and depth.exr");
   };
-  if (!saved.directOnly) fail(dir / "direct.npy", "not found");
-  if (!saved.depth_m) fail(dir / "depth.exr", "not found");
+  for (const char* file : {"direct.npy", "depth.exr"}) {
+    if (!std::filesystem::exists(dir / file)) fail(dir / file, "not found");
+  }
   const int32_t n = savedIndirectBounces(dir / "transient.json");
-  std::vector<TransientVolume> bounces;
   for (int32_t k = 1; k <= n; ++k) {
-    std::optional<TransientVolume> b = loadSavedComponent(dir, "bounce" + std::to_string(k));
-    if (!b && n == 1) b = loadSavedComponent(dir, "indirect");  // one bounce: the same light
-    if (!b) {
-      fail(dir / ("bounce" + std::to_string(k) + ".npy"),
+    const std::string name = "bounce" + std::to_string(k);
+    if (std::filesystem::exists(dir / (name + ".npy"))) {
+      components.push_back(name);
+    } else if (n == 1 && std::filesystem::exists(dir / "indirect.npy")) {
+      components.push_back("indirect");
+    } else {
+      fail(dir / (name + ".npy"),
            "not found (transient.json: indirect_bounces " + std::to_string(n) +
                "; render with output.components: [direct, bounce1 .. bounce" + std::to_string(n) +
                "])");
     }
-    bounces.push_back(std::move(*b));
   }
-  return bounces;
+  return components;
+}
+
+// Pixels per run read: the files' runs together within render.memory_budget.
+std::size_t pixelsPerRun(const config::RunConfig& config, const SavedVolumeStream& saved,
+                         const std::vector<std::string>& components) {
+  std::size_t files = 1;
+  for (const std::string& c : components) files += saved.has(c) ? 1 : 0;
+  const std::size_t pixelBytes = saved.shape().pixelFloats() * sizeof(float) * files;
+  return std::max<std::size_t>(1, config.render.memory_budget_bytes / pixelBytes);
 }
 
 }  // namespace
 
 std::vector<std::string> runConfiguredSensors(const config::RunConfig& config,
-                                              const SensorVolumes& volumes,
+                                              SavedVolumeStream& saved,
+                                              const std::vector<std::string>& components,
                                               const std::filesystem::path& outputDirectory,
                                               const Progress& progress) {
-  TOFSIM_CHECK(volumes.volume != nullptr);
-  const TransientVolume& volume = *volumes.volume;
-  if (const TransientVolume* d = volumes.directOnly) {
-    TOFSIM_CHECK(d->width() == volume.width() && d->height() == volume.height() &&
-                 d->bins() == volume.bins() && d->channels() == volume.channels());
-  }
-  // The whole volume as one span: the same code, and so the same bytes, as a
-  // render's sensors fed segment by segment.
+  // Run by run, as a render's sensors are fed segment by segment: the same
+  // code, and so the same bytes (the per-pixel random streams do not see
+  // where the runs are cut).
+  const bool withDirect = saved.has("direct");
+  // components[1..]: the bounces, when a sensor asked for them.
   std::optional<int32_t> bounces;
-  if (volumes.bounces) {
-    TOFSIM_CHECK(volumes.directOnly != nullptr);
-    bounces = static_cast<int32_t>(volumes.bounces->size());
+  if (sensorBounces(config)) bounces = static_cast<int32_t>(components.size()) - 1;
+  SensorStreams streams(config, saved.shape(), withDirect, bounces, outputDirectory);
+  const std::size_t run = pixelsPerRun(config, saved, components);
+  while (const std::size_t pixels = saved.read(run)) {
+    throwIfInterrupted();
+    sensors::PixelSpan span{saved.firstPixel(), pixels, saved.values("transient"),
+                            withDirect ? saved.values("direct") : nullptr};
+    if (bounces) {
+      for (std::size_t k = 1; k < components.size(); ++k) {
+        span.bounces.push_back(saved.values(components[k]));
+      }
+    }
+    streams.consume(span);
   }
-  SensorStreams streams(config, sensors::shapeOf(volume), volumes.directOnly != nullptr, bounces,
-                        outputDirectory);
-  streams.consume(sensors::wholeVolume(volume, volumes.directOnly, volumes.bounces));
-  return streams.finish(volumes.depth_m, progress);
+  streams.checkWindows();  // throws under --strict: the staged files go
+  return streams.finish(saved.depth_m(), progress);
 }
 
 SenseSummary runSense(const config::RunConfig& config, const SenseOptions& options) {
@@ -103,29 +124,21 @@ SenseSummary runSense(const config::RunConfig& config, const SenseOptions& optio
   }
   const auto start = std::chrono::steady_clock::now();
   Progress progress("sense", options.quiet);
-  const SavedVolume saved = loadSavedVolume(options.volumeDirectory);
-  noteDifferences(config, saved.volume, progress);
-  checkSensorWindows(config, saved.volume);  // before any file; throws under --strict
+  const std::vector<std::string> components = sensedComponents(config, options.volumeDirectory);
+  SavedVolumeStream saved(options.volumeDirectory, components);
+  noteDifferences(config, saved.shape(), progress);
   SenseSummary summary;
   summary.outputDirectory =
       options.outputDirectory.empty() ? options.volumeDirectory : options.outputDirectory;
-  SensorVolumes volumes;
-  volumes.volume = &saved.volume;
-  volumes.directOnly = saved.directOnly ? &*saved.directOnly : nullptr;
-  volumes.depth_m = saved.depth_m ? &*saved.depth_m : nullptr;
-  std::vector<TransientVolume> bounces;
-  if (sensorBounces(config)) bounces = savedBounces(config, options.volumeDirectory, saved);
-  std::vector<const TransientVolume*> bouncePointers;
-  for (const TransientVolume& b : bounces) bouncePointers.push_back(&b);
-  if (sensorBounces(config)) volumes.bounces = &bouncePointers;
   // The folder's other files (the render's) stay; its sensors/ is replaced as
   // a whole, atomically, so sensors no longer configured go and an interrupted
-  // run leaves the earlier sensors/. A batch manifest no longer describes the
-  // folder once its sensors change, so it goes too (the run is redone).
+  // or failed run leaves the earlier sensors/. A batch manifest no longer
+  // describes the folder once its sensors change, so it goes too (the run is
+  // redone).
   StagedFolder folder(summary.outputDirectory, [](const std::string& name) {
     return name != "sensors" && name != "manifest.json";
   });
-  summary.files = runConfiguredSensors(config, volumes, folder.staging(), progress);
+  summary.files = runConfiguredSensors(config, saved, components, folder.staging(), progress);
   throwIfInterrupted();
   folder.commit();
   summary.seconds = secondsSince(start);

@@ -83,9 +83,23 @@ json describe(const SensorOutput& o) {
   return j;
 }
 
-json pictureJson(const SensorOutput& o) {
+json pictureJson(const SensorOutput& o, const std::map<std::string, PictureRange>& ranges) {
   json j = {{"kind", kindName(o.kind)}};
   if (!o.colormap.empty()) j["colormap"] = o.colormap;
+  const auto it = ranges.find(o.name);
+  if (it != ranges.end()) {
+    const PictureRange& r = it->second;
+    j["range"] = {{"lo", r.lo},
+                  {"hi", r.hi},
+                  {"unit", o.unit},
+                  {"source", r.automatic ? "automatic" : "output.plot_ranges"},
+                  {"clipped_low", r.clippedLow},
+                  {"clipped_high", r.clippedHigh}};
+    if (r.automatic) {
+      j["range"]["lo_percentile"] = r.loPercentile;
+      j["range"]["hi_percentile"] = r.hiPercentile;
+    }
+  }
   return j;
 }
 }  // namespace
@@ -104,7 +118,8 @@ std::string sensorFileName(const SensorOutput& o) {
 }
 
 std::vector<NamedMetadata> sensorMetadata(const SensorRunInfo& run,
-                                          const std::vector<SensorOutput>& outputs, bool files) {
+                                          const std::vector<SensorOutput>& outputs, bool files,
+                                          const std::map<std::string, PictureRange>& ranges) {
   TOFSIM_CHECK(run.spec != nullptr);
   std::vector<std::string> order;
   std::vector<json> docs;
@@ -123,7 +138,7 @@ std::vector<NamedMetadata> sensorMetadata(const SensorRunInfo& run,
       docs.push_back(std::move(doc));
     }
     json& doc = docs[i];
-    if (isPicture(o)) doc["picture"] = pictureJson(o);
+    if (isPicture(o)) doc["picture"] = pictureJson(o, ranges);
     if (files) doc["files"][isPicture(o) ? "picture" : "data"] = sensorFileName(o);
   }
   std::vector<NamedMetadata> result;

@@ -77,6 +77,7 @@ std::vector<std::string> writeSensorOutputs(const std::filesystem::path& directo
                                             const SensorRunInfo& run, PlotRanges& ranges) {
   std::filesystem::create_directories(directory);
   std::vector<std::string> files;
+  std::map<std::string, PictureRange> pictureRanges;
   for (const SensorOutput& o : outputs) {
     TOFSIM_CHECK_MSG(o.streamed || static_cast<int64_t>(o.data.size()) == o.elementCount(), o.name);
     files.push_back(sensorFileName(o));
@@ -94,17 +95,21 @@ std::vector<std::string> writeSensorOutputs(const std::filesystem::path& directo
         io::writeExr(path, image, channelNames(image.channels));
         break;
       }
-      case SensorOutput::Kind::ColorMappedImage:
-        imaging::writeColormappedPng(
+      case SensorOutput::Kind::ColorMappedImage: {
+        const imaging::ColorScaleUsed used = imaging::writeColormappedPng(
             path, asImage(o), withUnit(o.description, o.unit),
             colorScale(o, "sensors/" + run.spec->name + "/" + o.name, ranges));
+        pictureRanges[o.name] = {used.lo,           used.hi,           used.automatic,
+                                 used.loPercentile, used.hiPercentile, used.clippedLow,
+                                 used.clippedHigh};
         break;
+      }
       case SensorOutput::Kind::HistogramPlot:
         imaging::writeLinePlotPng(path, asPlot(o));
         break;
     }
   }
-  for (const NamedMetadata& m : sensorMetadata(run, outputs, true)) {
+  for (const NamedMetadata& m : sensorMetadata(run, outputs, true, pictureRanges)) {
     files.push_back(m.name + ".json");
     writeFileAtomically(directory / files.back(), m.json);
   }

@@ -75,7 +75,7 @@ const ConfigKey kRunConfigKeys[] = {
     {"render.shadow_map_resolution", "int", "in [16, 16384]", "1024", "pixel",
      "per cube face of the light's shadow map"},
     {"render.memory_budget", "bytes", "in [1 MiB, 1 PiB]", "512 MiB", "B",
-     "device memory (GPU, or RAM for `backend: cpu`) for volume segments and ISM batches"},
+     "device memory (GPU, or RAM for `backend: cpu`) for volume segments and ISM batches; for `tofsim sense`, the host memory of the runs of pixels it reads from the saved files"},
     {"render.strict", "bool", "", "false", "-",
      "light cut off by the time axis or a sensor window (more than 0.1 %) is an error, not a warning; `--strict` on `render` / `validate` sets it (see \"Time windows\")"},
     {"render.pixel_footprint", "bool", "", "true", "-",
@@ -151,7 +151,7 @@ const ConfigKey kRunConfigKeys[] = {
     {"output.frame_pngs", "bool", "", "false", "-",
      "`frames/frame_NNNNN.png` (NNNNN = time bin): the video's frames as PNG (needs no `video`)"},
     {"output.plot_ranges", "map of [lo, hi]", "lo < hi", "{}", "unit of the picture",
-     "fixed colour ranges, so pictures compare across runs: key = the PNG's path without `.png` (`depth`, `steady`, `sensors/<sensor>/<output>`), e.g. `{depth: [0.5, 3], sensors/cwtof/cwtof_mpi_error: [-0.05, 0.05]}`; `steady` maps lo..hi to black..white; a key that names no picture of the run is warned about"},
+     "fixed colour ranges, so pictures compare across runs: key = the PNG's path without `.png` (`depth`, `steady`, `sensors/<sensor>/<output>`), e.g. `{depth: [0.5, 3], sensors/cwtof/cwtof_mpi_error: [-0.05, 0.05]}`; `steady` maps lo..hi to black..white; a key that names no picture of the run is warned about; a sensor picture's JSON records the range it was drawn with, fixed or automatic (`picture.range`, `sensors/README.md`)"},
 };
 const ConfigKey kSensorConfigKeys[] = {
     {"common.type", "string", "", "required", "-",

@@ -1,18 +1,9 @@
 #include "tofsim/io/Npy.h"
 
-#include <algorithm>
-#include <fstream>
-#include <string>
-
 #include "NpyHeader.h"
 #include "tofsim/util/Error.h"
 
 namespace tofsim::io {
-
-namespace {
-// Headers longer than this are not produced by NumPy for any realistic shape.
-constexpr std::size_t kMaxPrefixBytes = std::size_t{1} << 20;
-}  // namespace
 
 std::size_t elementCount(const NpyShape& shape) {
   std::size_t n = 1;
@@ -28,10 +19,9 @@ void writeNpy(const std::filesystem::path& path, const NpyShape& shape, const fl
 }
 
 void writeNpy(const std::filesystem::path& path, const TransientVolume& volume) {
-  const NpyShape shape{static_cast<std::size_t>(volume.height()),
-                       static_cast<std::size_t>(volume.width()),
-                       static_cast<std::size_t>(volume.bins()),
-                       static_cast<std::size_t>(volume.channels())};
+  const NpyShape shape{
+      static_cast<std::size_t>(volume.height()), static_cast<std::size_t>(volume.width()),
+      static_cast<std::size_t>(volume.bins()), static_cast<std::size_t>(volume.channels())};
   TOFSIM_CHECK(elementCount(shape) == volume.size());
   writeNpy(path, shape, volume.data());
 }
@@ -45,35 +35,11 @@ void writeNpy(const std::filesystem::path& path, const Image& image) {
 }
 
 NpyArray readNpy(const std::filesystem::path& path) {
-  const std::string name = path.string();
-  std::error_code ec;
-  const std::uintmax_t fileSize = std::filesystem::file_size(path, ec);
-  std::ifstream in(path, std::ios::binary);
-  if (ec || !in) throw InputError(FileLoc{name}, "", "cannot open .npy file");
-
-  std::string prefix(static_cast<std::size_t>(std::min<std::uintmax_t>(fileSize, kMaxPrefixBytes)),
-                     '\0');
-  in.read(prefix.data(), static_cast<std::streamsize>(prefix.size()));
-  if (!in) throw InputError(FileLoc{name}, "", "cannot read .npy header");
-  const detail::NpyHeaderInfo info = detail::decodeNpyHeader(prefix, name);
-
-  const std::size_t count = detail::checkedElementCount(info.shape, name);
-  const std::uintmax_t needed = info.dataOffset + count * sizeof(float);
-  if (fileSize != needed) {
-    throw InputError(FileLoc{name}, "",
-                     std::string(fileSize < needed ? "truncated" : "unexpected trailing bytes") +
-                         ": shape needs " + std::to_string(count * sizeof(float)) +
-                         " bytes of data, file has " +
-                         std::to_string(fileSize - info.dataOffset));
-  }
-
+  NpyStreamReader reader(path);
   NpyArray array;
-  array.shape = info.shape;
-  array.data.resize(count);
-  in.seekg(static_cast<std::streamoff>(info.dataOffset));
-  in.read(reinterpret_cast<char*>(array.data.data()),
-          static_cast<std::streamsize>(count * sizeof(float)));
-  if (!in) throw InputError(FileLoc{name}, "", "read failed");
+  array.shape = reader.shape();
+  array.data.resize(reader.remaining());
+  reader.read(array.data.data(), array.data.size());
   return array;
 }
 

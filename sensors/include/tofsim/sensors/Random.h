@@ -29,12 +29,23 @@ class Rng {
     const uint64_t lo = nextU32() >> 6;  // 26 bits
     return static_cast<double>((hi << 26) | lo) * 0x1.0p-53;
   }
+  /// uniform() when it is >= p, else -1: the same law, but the low 26 bits
+  /// are drawn only when the high 27 do not decide (a generator step saved
+  /// where u < p is likely).
+  double uniformUnless(double p) {
+    const uint64_t hi = nextU32() >> 5;
+    const double edge = p * 0x1.0p27;
+    if (static_cast<double>(hi) + 1.0 <= edge) return -1.0;  // u < (hi + 1) 2^-27 <= p
+    const double u = static_cast<double>((hi << 26) | (nextU32() >> 6)) * 0x1.0p-53;
+    return u < p ? -1.0 : u;
+  }
   /// Standard normal (Box-Muller, both values used).
   double normal();
   double normal(double mean, double sigma) { return mean + sigma * normal(); }
   /// Poisson with the given mean >= 0 (inversion below 12, PTRS above).
   uint64_t poisson(double mean);
-  /// Binomial(n, p), exact: beta splitting (Knuth) down to small n p, then inversion.
+  /// Binomial(n, p), exact: inversion for n min(p, 1 - p) < 10, else BTRS
+  /// (Hormann 1993), constant expected time. Binomial.cpp.
   uint64_t binomial(uint64_t n, double p);
   /// Gamma(shape, 1), shape > 0 (Marsaglia-Tsang).
   double gamma(double shape);
@@ -43,6 +54,7 @@ class Rng {
 
  private:
   uint64_t binomialInversion(uint64_t n, double p);
+  uint64_t binomialBtrs(uint64_t n, double p);
 
   uint64_t state_ = 0;
   uint64_t inc_ = 1;

@@ -13,6 +13,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 
 #include "tofsim/imaging/Pictures.h"
 #include "tofsim/volume/TransientVolume.h"
@@ -41,10 +42,26 @@ FrameSize videoFrameSize(int32_t imageWidth, int32_t imageHeight);
 /// Number of frames for `bins` time bins: ceil(bins / stride).
 int32_t videoFrameCount(int32_t bins, int32_t stride);
 
+/// A volume as the video reads it: one time bin of every pixel at a time
+/// (from memory, or from a bin-major file when the volume is not held).
+struct BinFrames {
+  int32_t width = 0, height = 0, channels = 0;
+  TimeAxis axis;
+  /// The tone maps' white: WhiteLevelSampler's over the volume's values in
+  /// (y, x, t, c) order (WhiteLevel.h).
+  double white = 1.0;
+  /// Fills `out` with bin t: width * height * channels floats, (y, x, c) order.
+  std::function<void(int32_t t, float* out)> readBin;
+};
+
+/// The frames of a volume in memory.
+BinFrames binFramesOf(const TransientVolume& volume);
+
 /// Writes the video atomically (an empty mp4Path: only the PNGs) (to "<stem>.tmp.mp4", renamed when
 /// complete). With `pngDirectory` not empty, also writes each frame as pngDirectory/frame_NNNNN.png
-/// (NNNNN = the time bin). Throws InputError when OpenCV cannot encode MP4.
-void writeTransientVideo(const std::filesystem::path& mp4Path, const TransientVolume& volume,
+/// (NNNNN = the time bin). Holds the bins of one frame's window. Throws InputError when OpenCV
+/// cannot encode MP4.
+void writeTransientVideo(const std::filesystem::path& mp4Path, const BinFrames& frames,
                          const VideoOptions& options,
                          const std::filesystem::path& pngDirectory = {});
 

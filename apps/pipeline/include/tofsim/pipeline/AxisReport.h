@@ -63,13 +63,9 @@ AxisLossFractions axisLossFractions(const capture::RenderResult& result);
 void checkAxisAfterRender(const config::RunConfig& config, const capture::RenderJob& job,
                           const OutputSink& sink, capture::RenderResult& result);
 
-/// Each streak or SPAD sensor's instrument window against the volume it will
-/// run on: warns (config.strict: throws InputError) when it drops more than
-/// kWindowLossWarning of the light the sensor sees.
-void checkSensorWindows(const config::RunConfig& config, const TransientVolume& volume);
-
-/// The same for sensor `index` of the config, whose window drops the fraction
-/// `lost` of its light from a volume with time axis `axis`.
+/// Sensor `index` of the config, whose window drops the fraction `lost` of
+/// its light from a volume with time axis `axis`: warns (config.strict:
+/// throws InputError) when that is more than kWindowLossWarning.
 void checkSensorWindow(const config::RunConfig& config, std::size_t index, double lost,
                        const TimeAxis& axis);
 

@@ -23,13 +23,17 @@ struct OutputItem {
 
 struct OutputEstimate {
   std::vector<OutputItem> items;
+  /// Disk needed during the run only (the video's and frames' bin-major
+  /// copy of the volume): counted against the free space, not max_bytes.
+  std::uintmax_t temporaryBytes = 0;
   std::uintmax_t totalBytes() const;
 };
 
 OutputEstimate estimateOutputs(const config::RunConfig& config);
 
 /// Throws InputError naming the sizes and their keys when the estimate
-/// exceeds output.max_bytes or the free space of `directory`'s file system.
+/// exceeds output.max_bytes, or with the temporary bytes the free space of
+/// `directory`'s file system.
 void checkOutputsFit(const OutputEstimate& estimate, const config::RunConfig& config,
                      const std::filesystem::path& directory);
 

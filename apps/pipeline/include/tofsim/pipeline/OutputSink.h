@@ -33,22 +33,20 @@ class OutputSink : public capture::SegmentSink {
   /// zeroed), for the sensors (SensorStreams.h).
   using Forward = std::function<void(const sensors::PixelSpan&)>;
 
-  /// keepInMemory: also collect the total volume (for the video and frames);
-  /// forward: called with every segment's values once they are written;
+  /// forward: called with every segment's values once they are written (the
+  /// sensors, the video's bin-major copy); the sink holds no volume.
   /// forwardBounces N >= 1: the forwarded spans carry bounces 1..N too,
   /// non-finite values zeroed as in bounce<k>.npy (bounce 1 is the
   /// indirect light when N = 1: the IR's bounce1, the reference's one bounce).
   OutputSink(const std::filesystem::path& directory, const config::OutputConfig& output,
-             int32_t width, int32_t height, const TimeAxis& axis, bool keepInMemory,
-             Forward forward = {}, int32_t forwardBounces = 0);
+             int32_t width, int32_t height, const TimeAxis& axis, Forward forward = {},
+             int32_t forwardBounces = 0);
   void consume(const capture::Segment& segment) override;
   /// Renames the streamed files into place.
   void commit();
 
   /// sum over t of transient.npy, accumulated in double.
   Image steady() const;
-  /// Only when keepInMemory.
-  const TransientVolume* volume() const { return volume_ ? &*volume_ : nullptr; }
   /// How many values were NaN or infinite and replaced by 0 so far.
   std::size_t nonFiniteValues() const { return nonFinite_; }
 
@@ -65,7 +63,6 @@ class OutputSink : public capture::SegmentSink {
   int32_t forwardBounces_ = 0;
   std::vector<std::vector<float>> forwardedBounces_;  ///< bounces 1..N when forwardBounces_ >= 2
   std::size_t nonFinite_ = 0;
-  std::optional<TransientVolume> volume_;
   Forward forward_;
 };
 

@@ -3,10 +3,17 @@
 // time axis from transient.json, and direct.npy and depth.exr when present.
 
 #include <filesystem>
+#include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
+#include "tofsim/sensors/SensorStream.h"
 #include "tofsim/volume/TransientVolume.h"
+
+namespace tofsim::io {
+class NpyStreamReader;
+}
 
 namespace tofsim::pipeline {
 
@@ -24,6 +31,46 @@ SavedVolume loadSavedVolume(const std::filesystem::path& directory);
 /// its light has: what bounce<k>.npy can hold); InputError naming the file
 /// when it is not there (a transient.json of an older tofsim).
 int32_t savedIndirectBounces(const std::filesystem::path& transientJson);
+
+/// A saved render opened to be read a run of pixels at a time, never whole:
+/// transient.npy and those of `components` saved beside it (`direct`,
+/// `bounce<k>`: `<name>.npy`; absent ones are skipped), their headers and
+/// sizes checked as loadSavedVolume checks them before any value is read;
+/// depth.exr (one image) is read whole. What it holds is one run of each
+/// file.
+class SavedVolumeStream {
+ public:
+  SavedVolumeStream(const std::filesystem::path& directory,
+                    const std::vector<std::string>& components);
+  ~SavedVolumeStream();
+  SavedVolumeStream(const SavedVolumeStream&) = delete;
+  SavedVolumeStream& operator=(const SavedVolumeStream&) = delete;
+
+  const sensors::VolumeShape& shape() const { return shape_; }
+  /// Whether `component`'s .npy was saved.
+  bool has(const std::string& component) const;
+  const Image* depth_m() const { return depth_m_ ? &*depth_m_ : nullptr; }
+
+  /// Reads the next run of at most maxPixels pixels (>= 1) of every file;
+  /// returns its length, 0 once every pixel has been read.
+  std::size_t read(std::size_t maxPixels);
+  /// The first pixel of the run read last.
+  std::size_t firstPixel() const { return firstPixel_; }
+  /// The run read last of `component` ("transient" for the total), nullptr
+  /// when it was not saved; valid until the next read().
+  const float* values(const std::string& component) const;
+
+ private:
+  struct File {
+    std::string name;
+    std::unique_ptr<io::NpyStreamReader> reader;
+    std::vector<float> values;
+  };
+  sensors::VolumeShape shape_;
+  std::vector<File> files_;
+  std::optional<Image> depth_m_;
+  std::size_t next_ = 0, firstPixel_ = 0;
+};
 
 /// A light component saved beside transient.npy (`direct`, `indirect`,
 /// `bounce<k>`: `<name>.npy`), read with transient.json's time axis, or

@@ -1,7 +1,7 @@
 #pragma once
-// The configured sensors (config.sensors) run on a transient volume, their
-// outputs written to OUTDIR/sensors/<sensor name>/. Used after a render by
-// `tofsim render`, and on a saved render by `tofsim sense`.
+// `tofsim sense`: the configured sensors (config.sensors) run on a saved
+// render, streamed from its files a run of pixels at a time (never held
+// whole), their outputs written to OUTDIR/sensors/<sensor name>/.
 //
 // Randomness: every sensor is seeded with config.render.seed, so the same
 // volume, config and seed give the same bytes whether the sensors run right
@@ -13,26 +13,22 @@
 
 #include "tofsim/config/RunConfig.h"
 #include "tofsim/pipeline/Progress.h"
-#include "tofsim/volume/TransientVolume.h"
+#include "tofsim/pipeline/SavedVolume.h"
 
 namespace tofsim::pipeline {
 
-/// What the sensors see. Only `volume` is required; `directOnly` and
-/// `depth_m` feed the CW-ToF multipath-error outputs.
-struct SensorVolumes {
-  const TransientVolume* volume = nullptr;
-  const TransientVolume* directOnly = nullptr;
-  const Image* depth_m = nullptr;  ///< (H, W, 1), metres
-  /// Bounces 1..N, with directOnly, for the CW-ToF error by bounce order.
-  const std::vector<const TransientVolume*>* bounces = nullptr;
-};
-
-/// Runs each sensor in order and writes its outputs. Returns the files written,
-/// relative to outputDirectory ("sensors/spad/spad_counts.npy", ...). A sensor
-/// that does not fit the volume (a row outside the image, ...) throws an
-/// InputError naming the config file and the sensor.
+/// Runs each sensor on the saved volume, read a run of pixels at a time
+/// (runs of every saved file read together within render.memory_budget
+/// bytes), and writes its outputs. `components`: "direct" (when saved), then
+/// the bounces 1..N a cwtof sensor with multipath_by_order takes (the names
+/// of their files, e.g. "bounce2"; see runSense). Returns the files written, relative to
+/// outputDirectory ("sensors/spad/spad_counts.npy", ...). A sensor that does
+/// not fit the volume (a row outside the image, ...) throws an InputError
+/// naming the config file and the sensor; so does a sensor window that drops
+/// light under --strict, after the last run.
 std::vector<std::string> runConfiguredSensors(const config::RunConfig& config,
-                                              const SensorVolumes& volumes,
+                                              SavedVolumeStream& saved,
+                                              const std::vector<std::string>& components,
                                               const std::filesystem::path& outputDirectory,
                                               const Progress& progress);
 
@@ -48,13 +44,13 @@ struct SenseSummary {
   double seconds = 0.0;
 };
 
-/// `tofsim sense`: loads a saved render (SavedVolume.h) and runs the config's
-/// sensors on it. Uses only the config's `sensors:` and `render.seed`; the
-/// sensors take the time axis and image size from the saved volume. A cwtof
-/// sensor with multipath_by_order takes the render's N from transient.json
-/// (`indirect_bounces`) and needs direct.npy, bounce1.npy .. bounce<N>.npy
-/// (for N = 1 indirect.npy will do) and depth.exr: an InputError names the
-/// first file missing.
+/// `tofsim sense`: opens a saved render (SavedVolumeStream) and runs the
+/// config's sensors on it. Uses only the config's `sensors:` and `render.seed`; the
+/// sensors take the time axis and image size from the saved volume.
+/// A cwtof sensor with multipath_by_order takes the render's N from
+/// transient.json (`indirect_bounces`) and needs direct.npy, bounce1.npy ..
+/// bounce<N>.npy (for N = 1 indirect.npy will do) and depth.exr: an
+/// InputError names the first file missing.
 SenseSummary runSense(const config::RunConfig& config, const SenseOptions& options);
 
 }  // namespace tofsim::pipeline

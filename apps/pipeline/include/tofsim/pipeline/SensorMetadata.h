@@ -5,9 +5,12 @@
 // (start, bin width, bins; in seconds and metres), what the model was given
 // (parameters in SI units, seed, the render's axis) and the warnings of the
 // run. Written as sensors/<sensor>/<output>.json by the CLI and returned with
-// each array by the Python module's tofsim.sense, the same text for both.
+// each array by the Python module's tofsim.sense, the same text for both but
+// for what only files have: the file names and the colour range each picture
+// was drawn with.
 
 #include <cstdint>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -34,9 +37,21 @@ struct NamedMetadata {
   std::string name;
   std::string json;  ///< pretty-printed, ends in a newline
 };
+/// The colour range a picture was drawn with (imaging::ColorScaleUsed), in
+/// the unit of its values: the JSON's "picture.range".
+struct PictureRange {
+  double lo = 0.0, hi = 1.0;
+  bool automatic = true;  ///< from the data (percentiles below), else output.plot_ranges
+  double loPercentile = 0.0, hiPercentile = 100.0;  ///< of lo and hi among the valid pixels
+  bool clippedLow = false, clippedHigh = false;     ///< values lie below lo / above hi
+};
+
+/// `ranges`: the colour ranges of the pictures drawn, by output name (none
+/// for the Python module, which draws none).
 std::vector<NamedMetadata> sensorMetadata(const SensorRunInfo& run,
                                           const std::vector<sensors::SensorOutput>& outputs,
-                                          bool files);
+                                          bool files,
+                                          const std::map<std::string, PictureRange>& ranges = {});
 
 /// The file an output is written to: <name>.npy (Array), .exr (Image) or
 /// .png (ColorMappedImage, HistogramPlot).

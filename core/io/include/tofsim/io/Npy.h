@@ -10,6 +10,8 @@
 #include <cstddef>
 #include <cstdint>
 #include <filesystem>
+#include <fstream>
+#include <string>
 #include <vector>
 
 #include "tofsim/util/AtomicFile.h"
@@ -37,6 +39,30 @@ void writeNpy(const std::filesystem::path& path, const Image& image);
 /// Reads a float32 little-endian C-order array. Throws InputError naming the
 /// file for anything else (bad magic, other dtype, Fortran order, truncation).
 NpyArray readNpy(const std::filesystem::path& path);
+
+/// A .npy read piece by piece in C order (volumes too large to hold:
+/// `tofsim sense`); readNpy reads through one.
+class NpyStreamReader {
+ public:
+  /// Opens the file and checks its header and size as readNpy does (throws
+  /// InputError naming the file: bad magic, other dtype, Fortran order,
+  /// truncation, trailing bytes); reads no data.
+  explicit NpyStreamReader(const std::filesystem::path& path);
+
+  const NpyShape& shape() const { return shape_; }
+  /// Values not read yet.
+  std::size_t remaining() const { return count_ - read_; }
+  /// The next `count` values (at most remaining()) into `out`. Throws
+  /// InputError naming the file when the read fails.
+  void read(float* out, std::size_t count);
+
+ private:
+  std::string name_;
+  std::ifstream in_;
+  NpyShape shape_;
+  std::size_t count_ = 0;
+  std::size_t read_ = 0;
+};
 
 /// Writes a .npy whose data arrives in pieces (e.g. row tiles of an
 /// out-of-core render). The header is written first; commit() checks that
