@@ -71,12 +71,13 @@ Bias biasOf(RenderJob job, double clamp, const VolumeCollector& ref) {
   return b;
 }
 
-// Stated bounds around the values measured at commit time (32768 paths per
-// pixel; README.md, "Materials"), indirect energy / reference and steady L1:
+// Stated bounds around the values measured (32768 paths per pixel, the
+// reference's BRDF sampling; README.md, "Materials"), indirect energy /
+// reference and steady L1:
 //   clamp (1/sr)     0 (off)        16             4              1              0.25
-//   48^2 RSM      1.085, 0.306   1.015, 0.282   0.864, 0.290   0.787, 0.333   0.748, 0.366
-//   128^2 RSM     0.974, 0.106   0.924, 0.126   0.832, 0.212   0.767, 0.278   0.729, 0.315
-// with the reference's own noise 0.094 (steady L1, another seed) and IR on
+//   48^2 RSM      1.085, 0.276   1.015, 0.253   0.864, 0.261   0.787, 0.303   0.748, 0.337
+//   128^2 RSM     0.973, 0.070   0.924, 0.090   0.832, 0.177   0.766, 0.242   0.728, 0.280
+// with the reference's own noise 0.033 (steady L1, another seed) and IR on
 // the diffuse corner (render.materials: lambertian) 1.000, 0.020 at 48^2.
 // Unclamped, IR converges to the reference with the VPL count (at 128^2 its
 // error is the reference's noise); with few VPLs the floor's sharp lobe (it

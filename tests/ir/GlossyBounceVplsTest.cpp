@@ -50,7 +50,10 @@ TEST(GlossyBounceVplsTest, ChildrenCarryTheParentsPowerTimesItsDirectionalAlbedo
   const std::size_t count = 20000;
   const BounceMaterials gltf{true, 0.0f};
   const std::vector<Vpl> children = traceBounce(scene, {parent}, count, 2, 7, 1.0, {}, gltf);
-  ASSERT_EQ(children.size(), count);  // closed: no ray escapes, and f > 0 everywhere
+  // Closed: no ray escapes; the GGX lobe's directions below the surface end
+  // their paths (the light the surface does not reflect), a few per cent here.
+  ASSERT_LE(children.size(), count);
+  ASSERT_GT(children.size(), count * 9 / 10);
   glm::dvec3 sum(0.0);
   for (const Vpl& c : children) {
     sum += glm::dvec3(glm::vec3(c.flux));
@@ -61,22 +64,20 @@ TEST(GlossyBounceVplsTest, ChildrenCarryTheParentsPowerTimesItsDirectionalAlbedo
   }
   const glm::dvec3 albedo =
       directionalAlbedo(glm::dvec3(incoming), glm::dvec3(0.9, 0.7, 0.5), 1.0, 0.4);
-  // Monte Carlo over 20000 cosine samples of pi f: about 1 % standard error
-  // (the lobe's peak weight is ~10 where the mean is ~0.7).
+  // Monte Carlo over 20000 BRDF samples (the mixture of the cosine lobe and
+  // GGX visible normals, weight f cos / pdf): well under 1 % standard error.
   for (int c = 0; c < 3; ++c) {
     EXPECT_NEAR(sum[c] / parent.flux[c], albedo[c], 0.04 * albedo[c]) << "channel " << c;
   }
-  // The same directions (same seed) with the clamp: no child gains light, and
-  // each carries at most its share (1 / count of the power) times pi * clamp.
+  // The same directions (same seed) with the clamp: no child gains light.
   const std::vector<Vpl> clamped =
       traceBounce(scene, {parent}, count, 2, 7, 1.0, {}, BounceMaterials{true, 0.5f});
-  ASSERT_EQ(clamped.size(), count);
+  ASSERT_EQ(clamped.size(), children.size());
   double removed = 0.0;
-  for (std::size_t k = 0; k < count; ++k) {
+  for (std::size_t k = 0; k < clamped.size(); ++k) {
     EXPECT_EQ(clamped[k].positionPath, children[k].positionPath);
     for (int c = 0; c < 3; ++c) {
       EXPECT_LE(clamped[k].flux[c], children[k].flux[c]);
-      EXPECT_LE(clamped[k].flux[c], parent.flux[c] / count * kPi * 0.5 * (1.0 + 1e-5));
       removed += children[k].flux[c] - clamped[k].flux[c];
     }
   }

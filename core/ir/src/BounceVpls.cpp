@@ -1,10 +1,12 @@
 #include "tofsim/ir/BounceVpls.h"
 
 #include <algorithm>
+#include <cmath>
 #include <optional>
 #include <thread>
 
 #include "tofsim/physics/GltfBrdf.h"
+#include "tofsim/physics/GltfSampling.h"
 #include "tofsim/reference/RayScene.h"
 #include "tofsim/reference/Sampling.h"
 #include "tofsim/util/Error.h"
@@ -26,29 +28,54 @@ uint64_t unitOf(uint64_t tag, int32_t bounce, std::size_t index) {
 
 double powerOf(const Vpl& v) { return static_cast<double>(v.flux.r) + v.flux.g + v.flux.b; }
 
-// The direction a light path leaves `parent` in: cosine-weighted about its
-// normal (a Lambertian VPL), from the child's generator. The one place a
-// BRDF's sampling (and its weight) would go.
-glm::vec3 continuationDirection(const Vpl& parent, Pcg32& rng) {
+// A continuation of the light path at `parent`: its direction and the
+// factor its power gains there.
+struct Continuation {
+  glm::vec3 direction{0.0f};
+  glm::vec3 weight{0.0f};  ///< f cos / pdf of a glossy parent; 1 for a Lambertian one
+};
+
+// Cosine-weighted about the parent's normal for a Lambertian VPL (its albedo
+// is in its flux already: weight 1). A glossy VPL (render.materials: gltf)
+// samples its BRDF as the reference does (tofsim/physics/GltfSampling.h: the
+// mixture of the cosine lobe and GGX visible normals about the direction its
+// light came from) and gains f cos / pdf, f clamped as the gather clamps the
+// VPL's BRDF. From the child's generator.
+Continuation continuationOf(const Vpl& parent, Pcg32& rng, const BounceMaterials& materials) {
+  const glm::vec3 n(parent.normal);
+  if (!materials.gltf) {
+    const float u1 = rng.nextFloat();
+    const float u2 = rng.nextFloat();
+    return {reference::cosineSampleHemisphere(n, u1, u2), glm::vec3(1.0f)};
+  }
+  const float uLobe = rng.nextFloat();
   const float u1 = rng.nextFloat();
   const float u2 = rng.nextFloat();
-  return reference::cosineSampleHemisphere(glm::vec3(parent.normal), u1, u2);
+  const glm::vec3 v(parent.incoming);
+  const glm::vec3 base(parent.material);
+  const float metallic = parent.incoming.w, roughness = parent.material.w;
+  Continuation out;
+  out.direction = physics::sampleGltfMixture(n, v, base, metallic, roughness, uLobe, u1, u2);
+  const float cosL = glm::dot(n, out.direction);
+  if (!(cosL > 0.0f)) return out;
+  const float pdf = physics::gltfMixturePdf(n, v, out.direction, base, metallic, roughness);
+  const glm::vec3 f =
+      physics::gltfVplBrdf(n, v, out.direction, base, metallic, roughness, materials.brdfClamp);
+  const glm::vec3 w = f * (cosL / pdf);
+  if (pdf > 0.0f && std::isfinite(w.x) && std::isfinite(w.y) && std::isfinite(w.z)) out.weight = w;
+  return out;
 }
 
 // A glossy child (render.materials: gltf) at `hit`, reached from `parent`
-// along w (cosine-sampled): it receives the parent's share times the BRDF
-// weight f cos / pdf = pi f(incoming, w) (clamped as the gather clamps the
-// VPL's BRDF), comes in from -w, and carries the hit's material.
-std::optional<Vpl> glossyChild(const Vpl& parent, const glm::vec3& share, const glm::vec3& w,
-                               const reference::SurfaceHit& hit, float path_m, float brdfClamp) {
-  const glm::vec3 f = physics::gltfVplBrdf(glm::vec3(parent.normal), glm::vec3(parent.incoming), w,
-                                           glm::vec3(parent.material), parent.incoming.w,
-                                           parent.material.w, brdfClamp);
-  const glm::vec3 power = share * (physics::kGltfPi * f);
+// along w with the continuation's weight: it receives the parent's share
+// times that weight, comes in from -w, and carries the hit's material.
+std::optional<Vpl> glossyChild(const glm::vec3& share, const Continuation& c,
+                               const reference::SurfaceHit& hit, float path_m) {
+  const glm::vec3 power = share * c.weight;
   if (!(power.r + power.g + power.b > 0.0f)) return std::nullopt;
   Vpl child{glm::vec4(hit.position_world, path_m), glm::vec4(hit.normal_world, 0.0f),
             glm::vec4(power, 0.0f)};
-  child.incoming = glm::vec4(-w, hit.metallic);
+  child.incoming = glm::vec4(-c.direction, hit.metallic);
   child.material = glm::vec4(hit.albedo, hit.roughness);
   return child;
 }
@@ -63,14 +90,15 @@ std::optional<Vpl> shootChild(const reference::RayScene& scene, const Vpl& paren
   Pcg32 rng = Pcg32::forUnit(seed, unitOf(kChildUnit, bounce, index));
   const glm::vec3 p(parent.positionPath);
   const glm::vec3 n(parent.normal);
-  const glm::vec3 w = continuationDirection(parent, rng);
+  const Continuation continuation = continuationOf(parent, rng, materials);
+  const glm::vec3 w = continuation.direction;
   if (!(glm::dot(w, n) > 0.0f)) return std::nullopt;
   const auto hit = scene.intersect(p + n * scene.epsilon_m(), w);
   if (!hit) return std::nullopt;  // the light leaves the scene
   const float path_m = parent.positionPath.w + eta * glm::length(hit->position_world - p);
   std::optional<Vpl> child;
   if (materials.gltf) {
-    child = glossyChild(parent, share, w, *hit, path_m, materials.brdfClamp);
+    child = glossyChild(share, continuation, *hit, path_m);
   } else if (const glm::vec3 flux = hit->albedo * share; flux.r + flux.g + flux.b > 0.0f) {
     child = Vpl{glm::vec4(hit->position_world, path_m), glm::vec4(hit->normal_world, 0.0f),
                 glm::vec4(flux, 0.0f)};

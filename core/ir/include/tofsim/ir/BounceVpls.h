@@ -60,10 +60,11 @@ struct BounceMaterials {
 /// (patchU = patchV = 0: a point VPL, no VPL footprint): a child stands for
 /// the parents' light spread over the scene by a random ray, not for a texel
 /// of a light view whose extent the patch steps could describe.
-/// With materials.gltf the VPLs are glossy (flux = the power received, W): a
-/// child receives its share times pi f_parent(incoming, w), the cosine
-/// sample's weight f cos / pdf (BRDF sampling comes later; the parents are
-/// still picked by the power they received, which stays unbiased), and
+/// With materials.gltf the VPLs are glossy (flux = the power received, W): w
+/// is drawn from the parent's BRDF (physics::sampleGltfMixture about
+/// parent.incoming), the child receives its share times f cos / pdf (f
+/// clamped by brdfClamp; a w below the surface ends the path; the parents
+/// are still picked by the power they received, which stays unbiased), and
 /// records -w and its hit's material.
 std::vector<Vpl> traceBounce(const reference::RayScene& scene, const std::vector<Vpl>& parents,
                              std::size_t count, int32_t bounce, uint64_t seed,
