@@ -160,11 +160,11 @@ Measured measure(const char* name, const RenderJob& job, const Volumes& ref) {
 //   bounce 2 alone     0.149 / 0.352      0.097 / 0.253
 // IR's error is mostly its own VPL noise: it falls with the VPL count
 // (indirect steady 0.29 with 2304 VPLs, 0.25 with 9216, 0.12 with 50176,
-// against 4096 reference paths) at
-// an energy within 1 % of the reference's. Bounds about 1.5x. The test can
-// fail: IR with render.materials: lambertian against the same glossy
-// reference gives 0.31 / 0.42 for 1 bounce's indirect light and 0.27 / 0.40
-// for 2 bounces' (its energy 14 % low), above those bounds (checked below).
+// against 4096 reference paths) at an energy within 1 % of the reference's.
+// Bounds about 1.5x, above the reference's noise. The test can fail: IR
+// with render.materials: lambertian against the same glossy reference gives
+// 0.31 / 0.42 for 1 bounce's indirect light and 0.27 / 0.40 for 2 bounces'
+// (its energy about 10 % low), above those bounds (checked below).
 const Bounds kGlossyBounds{{1e-4, 1e-4},   {0.036, 0.047}, {0.22, 0.28},
                            {0.042, 0.074}, {0.18, 0.31},   {0.23, 0.53}};
 
