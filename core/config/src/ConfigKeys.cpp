@@ -107,7 +107,7 @@ const ConfigKey kRunConfigKeys[] = {
     {"render.indirect.vpl_footprint", "bool", "", "true", "-",
      "spread each VPL's light over the path variation across its RSM texel's patch (no temporal banding from few VPLs); only with `pixel_footprint: true`"},
     {"render.indirect.bounces", "int", "in [1, 8]", "1", "-",
-     "indirect bounces: 1 = the RSM's VPLs only; k adds VPLs of bounces 2..k, each traced (cosine-weighted, Embree) from the VPLs of the bounce before; `indirect` holds all bounces. Compare with `reference.bounces: k + 1`"},
+     "indirect bounces: 1 = the RSM's VPLs only; k adds VPLs of bounces 2..k, each traced (Embree) from the VPLs of the bounce before, in a cosine-weighted direction (with `materials: gltf`, sampled from the VPL's BRDF, README.md \"Materials\"); `indirect` holds all bounces. Compare with `reference.bounces: k + 1`"},
     {"render.indirect.vpls_per_bounce", "int", "in [0, 2^22]", "0", "-",
      "VPLs traced for each bounce after the first (chosen among the bounce before's in proportion to their power); 0 = as many as the first bounce has; rays that leave the scene make none. The total of all bounces is at most 4,194,304"},
     {"render.indirect.russian_roulette", "bool", "", "false", "-",
