@@ -31,10 +31,9 @@ Standard library only. Usage: python3 scripts/make_cornell_box.py [--glossy] [ou
 """
 
 import math
-import struct
 import sys
 
-from gltf_common import embed_buffer, write_gltf
+from gltf_common import add_camera, add_mesh, cross, dot, finish, new_gltf, normalize, sub, write_gltf
 
 MM = 0.001  # metres per millimetre
 
@@ -69,23 +68,6 @@ TALL_TOP = [(423.0, 330.0, 247.0), (265.0, 330.0, 296.0), (314.0, 330.0, 456.0),
 # length, 25 mm x 25 mm film: vertical fov = 2 atan(12.5 / 35) = 39.3 deg.
 CAMERA_POS_MM = (278.0, 273.0, -800.0)
 FOCAL_MM, FILM_MM = 35.0, 25.0
-
-
-def sub(a, b):
-    return tuple(x - y for x, y in zip(a, b))
-
-
-def cross(a, b):
-    return (a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0])
-
-
-def dot(a, b):
-    return sum(x * y for x, y in zip(a, b))
-
-
-def normalize(v):
-    n = math.sqrt(dot(v, v))
-    return tuple(x / n for x in v)
 
 
 def centroid(points):
@@ -139,52 +121,18 @@ def build_gltf(glossy=False):
         groups = [(name, GLOSSY_GROUPS.get(name, material), tris) for name, material, tris in groups]
     material_index = {m[0]: i for i, m in enumerate(materials)}
     blob = bytearray()
-    gltf = {
-        "asset": {"version": "2.0", "generator": "tofsim scripts/make_cornell_box.py",
-                  "copyright": "Geometry and camera: Cornell University Program of Computer Graphics, Cornell Box data"},
-        "scene": 0,
-        "scenes": [{"name": "cornell_box", "nodes": []}],
-        "nodes": [], "meshes": [], "accessors": [], "bufferViews": [],
-        "materials": [{"name": name, "pbrMetallicRoughness": {
-            "baseColorFactor": [r, g, b, 1.0], "metallicFactor": metallic, "roughnessFactor": roughness}}
-            for name, (r, g, b), metallic, roughness in materials],
-    }
-
-    def add_vec3(values):
-        offset = len(blob)
-        for v in values:
-            blob.extend(struct.pack("<3f", *v))
-        gltf["bufferViews"].append({"buffer": 0, "byteOffset": offset, "byteLength": 12 * len(values),
-                                    "target": 34962})
-        accessor = {"bufferView": len(gltf["bufferViews"]) - 1, "componentType": 5126,
-                    "count": len(values), "type": "VEC3"}
-        gltf["accessors"].append(accessor)
-        return len(gltf["accessors"]) - 1, accessor
-
+    gltf = new_gltf("tofsim scripts/make_cornell_box.py", "cornell_box", materials,
+                    "Geometry and camera: Cornell University Program of Computer Graphics, Cornell Box data")
     for name, material, tris in groups:
         positions = [tuple(round(c * MM, 6) for c in p) for tri, _ in tris for p in tri]
         normals = [tuple(round(c, 6) for c in n) for _, n in tris for _ in range(3)]
-        pos_index, pos_accessor = add_vec3(positions)
-        # min/max of the float32 values actually stored, as the spec requires.
-        stored = [struct.unpack("<3f", struct.pack("<3f", *p)) for p in positions]
-        pos_accessor["min"] = [min(p[i] for p in stored) for i in range(3)]
-        pos_accessor["max"] = [max(p[i] for p in stored) for i in range(3)]
-        nrm_index, _ = add_vec3(normals)
-        gltf["meshes"].append({"name": name, "primitives": [{
-            "attributes": {"POSITION": pos_index, "NORMAL": nrm_index},
-            "material": material_index[material], "mode": 4}]})
-        gltf["nodes"].append({"name": name, "mesh": len(gltf["meshes"]) - 1})
+        add_mesh(gltf, blob, name, material_index[material], positions, normals)
 
     half_film = FILM_MM / 2
-    gltf["cameras"] = [{"name": "cornell_camera", "type": "perspective", "perspective": {
-        "yfov": 2 * math.atan(half_film / FOCAL_MM), "aspectRatio": 1.0, "znear": 0.01, "zfar": 100.0}}]
-    gltf["nodes"].append({"name": "cornell_camera", "camera": 0,
-                          "translation": [c * MM for c in CAMERA_POS_MM],
-                          # 180 deg about +y: the camera's -Z looks along world +z.
-                          "rotation": [0.0, 1.0, 0.0, 0.0]})
-    gltf["scenes"][0]["nodes"] = list(range(len(gltf["nodes"])))
-    embed_buffer(gltf, blob)
-    return gltf
+    # 180 deg about +y: the camera's -Z looks along world +z.
+    add_camera(gltf, "cornell_camera", 2 * math.atan(half_film / FOCAL_MM),
+               [c * MM for c in CAMERA_POS_MM], [0.0, 1.0, 0.0, 0.0])
+    return finish(gltf, blob)
 
 
 def main():

@@ -21,10 +21,8 @@ Standard library only. Usage: python3 scripts/make_glossy_floor.py [out.gltf]
 """
 
 import math
-import struct
 
-from gltf_common import embed_buffer, write_gltf
-from make_corner import cross, look_rotation, normalize, sub
+from gltf_common import add_camera, add_quads, finish, look_rotation, new_gltf, sub, write_gltf
 
 # name, rgb, metallic, roughness
 MATERIALS = [("floor_polished", (0.35, 0.35, 0.35), 0.0, 0.2),
@@ -43,47 +41,11 @@ FOV_Y_DEG = 50.0
 
 def build_gltf():
     blob = bytearray()
-    gltf = {
-        "asset": {"version": "2.0", "generator": "tofsim scripts/make_glossy_floor.py"},
-        "scene": 0, "scenes": [{"name": "glossy_floor", "nodes": []}],
-        "nodes": [], "meshes": [], "accessors": [], "bufferViews": [],
-        "materials": [{"name": name, "pbrMetallicRoughness": {
-            "baseColorFactor": [r, g, b, 1.0], "metallicFactor": metallic,
-            "roughnessFactor": roughness}}
-            for name, (r, g, b), metallic, roughness in MATERIALS],
-    }
-
-    def add_vec3(values, bounds):
-        offset = len(blob)
-        for v in values:
-            blob.extend(struct.pack("<3f", *v))
-        gltf["bufferViews"].append({"buffer": 0, "byteOffset": offset, "byteLength": 12 * len(values),
-                                    "target": 34962})
-        accessor = {"bufferView": len(gltf["bufferViews"]) - 1, "componentType": 5126,
-                    "count": len(values), "type": "VEC3"}
-        if bounds:
-            accessor["min"] = [min(v[i] for v in values) for i in range(3)]
-            accessor["max"] = [max(v[i] for v in values) for i in range(3)]
-        gltf["accessors"].append(accessor)
-        return len(gltf["accessors"]) - 1
-
-    for name, material, q, normal in QUADS:
-        n = normalize(cross(sub(q[1], q[0]), sub(q[2], q[0])))
-        assert all(abs(a - b) < 1e-9 for a, b in zip(n, normal)), name  # winding matches normal
-        positions = [tuple(float(c) for c in p) for p in (q[0], q[1], q[2], q[0], q[2], q[3])]
-        pos = add_vec3(positions, True)
-        nrm = add_vec3([tuple(float(c) for c in normal)] * 6, False)
-        gltf["meshes"].append({"name": name, "primitives": [{
-            "attributes": {"POSITION": pos, "NORMAL": nrm}, "material": material, "mode": 4}]})
-        gltf["nodes"].append({"name": name, "mesh": len(gltf["meshes"]) - 1})
-
-    gltf["cameras"] = [{"name": "floor_camera", "type": "perspective", "perspective": {
-        "yfov": math.radians(FOV_Y_DEG), "aspectRatio": 1.0, "znear": 0.01, "zfar": 100.0}}]
-    gltf["nodes"].append({"name": "floor_camera", "camera": 0, "translation": list(CAMERA_POS),
-                          "rotation": look_rotation(sub(CAMERA_TARGET, CAMERA_POS))})
-    gltf["scenes"][0]["nodes"] = list(range(len(gltf["nodes"])))
-    embed_buffer(gltf, blob)
-    return gltf
+    gltf = new_gltf("tofsim scripts/make_glossy_floor.py", "glossy_floor", MATERIALS)
+    add_quads(gltf, blob, QUADS)
+    add_camera(gltf, "floor_camera", math.radians(FOV_Y_DEG), CAMERA_POS,
+               look_rotation(sub(CAMERA_TARGET, CAMERA_POS)))
+    return finish(gltf, blob)
 
 
 def main():
