@@ -10,6 +10,7 @@
 #include <cstdio>
 #include <memory>
 
+#include "reference/RenderReference.h"
 #include "support/AnalyticScenes.h"
 #include "support/TestJobs.h"
 #include "tofsim/capture/VolumeCollector.h"
@@ -32,21 +33,14 @@ VolumeCollector renderIr(const RenderJob& job) {
 }
 
 VolumeCollector renderReference(const RenderJob& job, int samples) {
-  VolumeCollector out(job.camera.width, job.camera.height, job.settings.time, 3);
-  reference::ReferenceSettings settings;
-  settings.pixel_filter = reference::PixelFilter::Box;
-  settings.bounces = 2;
-  settings.samples_per_pixel = samples;
-  settings.threads = 2;
-  reference::ReferenceRenderer(settings).render(job, out);
-  return out;
+  return test::renderReference(job, 2, samples, reference::PixelFilter::Box);
 }
 
 struct Errors {
   double footprint = 0.0;   ///< total transient relative L1, IR with footprint vs reference
   double footprint3 = 0.0;  ///< the same with 3 x 3 sub-pixel samples (silhouettes)
   double point = 0.0;       ///< the same with point pixels
-  double noise = 0.0;      ///< reference vs reference with another seed
+  double noise = 0.0;       ///< reference vs reference with another seed
 };
 
 Errors transientErrors(RenderJob job, int samples) {
@@ -65,9 +59,10 @@ Errors transientErrors(RenderJob job, int samples) {
       compare::compareVolumes(renderIr(samples3).total(), ref.total()).transientRelativeL1;
   job.settings.pixel_footprint = false;
   e.point = compare::compareVolumes(renderIr(job).total(), ref.total()).transientRelativeL1;
-  std::printf("transient relative L1 vs the box-filter reference: footprint %.4f, with 3 x 3 "
-              "samples %.4f, point pixels %.4f (reference seed-to-seed %.4f)\n",
-              e.footprint, e.footprint3, e.point, e.noise);
+  std::printf(
+      "transient relative L1 vs the box-filter reference: footprint %.4f, with 3 x 3 "
+      "samples %.4f, point pixels %.4f (reference seed-to-seed %.4f)\n",
+      e.footprint, e.footprint3, e.point, e.noise);
   return e;
 }
 

@@ -19,6 +19,7 @@
 #include <string>
 #include <utility>
 
+#include "reference/RenderReference.h"
 #include "support/TestJobs.h"
 #include "tofsim/capture/VolumeCollector.h"
 #include "tofsim/compare/VolumeComparison.h"
@@ -36,18 +37,6 @@ VolumeCollector renderIr(RenderJob job, int32_t bounces) {
   job.settings.indirect.bounces = bounces;
   VolumeCollector out(job.camera.width, job.camera.height, job.settings.time, 3);
   ir::IrRenderer(std::make_unique<CpuBackend>(CpuBackendOptions{2, true})).render(job, out);
-  return out;
-}
-
-// The reference at pixel centres with `interactions` surface interactions.
-VolumeCollector renderReference(const RenderJob& job, int32_t interactions, int samples) {
-  VolumeCollector out(job.camera.width, job.camera.height, job.settings.time, 3);
-  reference::ReferenceSettings settings;
-  settings.pixel_filter = reference::PixelFilter::Point;
-  settings.bounces = interactions;
-  settings.samples_per_pixel = samples;
-  settings.threads = 2;
-  reference::ReferenceRenderer(settings).render(job, out);
   return out;
 }
 
@@ -76,7 +65,8 @@ struct Volumes {
 Volumes renderIrs(const RenderJob& job) { return {renderIr(job, 1), renderIr(job, 2)}; }
 
 Volumes renderReferences(const RenderJob& job, int samples) {
-  return {renderReference(job, 2, samples), renderReference(job, 3, samples)};
+  return {test::renderReference(job, 2, samples, reference::PixelFilter::Point),
+          test::renderReference(job, 3, samples, reference::PixelFilter::Point)};
 }
 
 // Per component; bounce 2 alone is the difference of the two renders on each

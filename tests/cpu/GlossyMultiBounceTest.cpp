@@ -12,6 +12,7 @@
 #include <cstdio>
 #include <memory>
 
+#include "reference/RenderReference.h"
 #include "support/TestJobs.h"
 #include "tofsim/capture/VolumeCollector.h"
 #include "tofsim/cpu/CpuBackend.h"
@@ -23,28 +24,16 @@ namespace {
 
 using namespace capture;
 
-double energy(const TransientVolume& v) {
-  double sum = 0.0;
-  for (const float x : v.values()) sum += x;
-  return sum;
-}
-
 double irIndirect(RenderJob job, int32_t bounces) {
   job.settings.indirect.bounces = bounces;
   VolumeCollector out(job.camera.width, job.camera.height, job.settings.time, 3);
   ir::IrRenderer(std::make_unique<CpuBackend>(CpuBackendOptions{2, true})).render(job, out);
-  return energy(out.indirect);
+  return test::energy(out.indirect);
 }
 
 double referenceIndirect(const RenderJob& job, int32_t interactions) {
-  VolumeCollector out(job.camera.width, job.camera.height, job.settings.time, 3);
-  reference::ReferenceSettings settings;
-  settings.pixel_filter = reference::PixelFilter::Box;
-  settings.bounces = interactions;
-  settings.samples_per_pixel = 16384;
-  settings.threads = 2;
-  reference::ReferenceRenderer(settings).render(job, out);
-  return energy(out.indirect);
+  return test::energy(
+      test::renderReference(job, interactions, 16384, reference::PixelFilter::Box).indirect);
 }
 
 TEST(GlossyMultiBounceTest, FloorAndWallEnergyOfTwoGlossyBouncesMatchesTheReference) {

@@ -14,6 +14,7 @@
 #include <memory>
 #include <vector>
 
+#include "reference/RenderReference.h"
 #include "support/TestJobs.h"
 #include "tofsim/capture/VolumeCollector.h"
 #include "tofsim/compare/VolumeComparison.h"
@@ -40,20 +41,7 @@ test::CornerJob glossyFloorCorner() {
 }
 
 VolumeCollector renderReference(const RenderJob& job) {
-  VolumeCollector out(job.camera.width, job.camera.height, job.settings.time, 3);
-  reference::ReferenceSettings settings;
-  settings.pixel_filter = reference::PixelFilter::Point;
-  settings.bounces = 2;
-  settings.samples_per_pixel = 32768;
-  settings.threads = 2;
-  reference::ReferenceRenderer(settings).render(job, out);
-  return out;
-}
-
-double energy(const TransientVolume& v) {
-  double e = 0.0;
-  for (float x : v.values()) e += x;
-  return e;
+  return test::renderReference(job, 2, 32768, reference::PixelFilter::Point);
 }
 
 struct Bias {
@@ -65,7 +53,7 @@ Bias biasOf(RenderJob job, double clamp, const VolumeCollector& ref) {
   job.settings.indirect.vpl_brdf_clamp_per_sr = clamp;
   VolumeCollector ir(job.camera.width, job.camera.height, job.settings.time, 3);
   ir::IrRenderer(std::make_unique<CpuBackend>(CpuBackendOptions{2, true})).render(job, ir);
-  const Bias b{energy(ir.indirect) / energy(ref.indirect),
+  const Bias b{test::energy(ir.indirect) / test::energy(ref.indirect),
                compare::compareVolumes(ir.indirect, ref.indirect).steadyRelativeL1};
   std::printf("| %g | %.3f | %.3f |\n", clamp, b.energyRatio, b.steadyL1);
   return b;
@@ -91,7 +79,7 @@ TEST(GlossyVplBiasTest, ClampOnAGlossyFloorAgainstTheReference) {
   const VolumeCollector ref2 = renderReference(otherSeed);
   const double noise = compare::compareVolumes(ref2.indirect, ref.indirect).steadyRelativeL1;
   std::printf("reference vs reference (other seed): indirect energy %.3f, steady L1 %.3f\n",
-              energy(ref2.indirect) / energy(ref.indirect), noise);
+              test::energy(ref2.indirect) / test::energy(ref.indirect), noise);
   EXPECT_LT(noise, 0.13);
   RenderJob diffuse = s.job;
   diffuse.settings.materials = MaterialModel::Lambertian;

@@ -12,6 +12,7 @@
 #include <cstring>
 #include <memory>
 
+#include "reference/RenderReference.h"
 #include "support/AnalyticScenes.h"
 #include "support/TestJobs.h"
 #include "tofsim/capture/VolumeCollector.h"
@@ -39,25 +40,6 @@ Rendered renderIr(RenderJob job, int32_t bounces, int threads = 2) {
   return out;
 }
 
-// Light of the reference with `interactions` surface interactions per path
-// (reference.bounces: 2 = IR's one indirect bounce).
-VolumeCollector renderReference(const RenderJob& job, int32_t interactions, int samples) {
-  VolumeCollector out(job.camera.width, job.camera.height, job.settings.time, 3);
-  reference::ReferenceSettings settings;
-  settings.pixel_filter = reference::PixelFilter::Box;
-  settings.bounces = interactions;
-  settings.samples_per_pixel = samples;
-  settings.threads = 2;
-  reference::ReferenceRenderer(settings).render(job, out);
-  return out;
-}
-
-double energy(const TransientVolume& v) {
-  double sum = 0.0;
-  for (const float x : v.values()) sum += x;
-  return sum;
-}
-
 RenderJob exactUnclamped(RenderJob job) {
   job.settings.indirect.visibility = Visibility::Exact;
   job.settings.indirect.geometry_term_clamp_per_m2 = 0.0;
@@ -70,10 +52,12 @@ struct BounceErrors {
 };
 
 BounceErrors energyErrors(const RenderJob& job, int samples) {
-  const double ir1 = energy(renderIr(job, 1).volumes.indirect);
-  const double ir2 = energy(renderIr(job, 2).volumes.indirect);
-  const double ref2 = energy(renderReference(job, 2, samples).indirect);
-  const double ref3 = energy(renderReference(job, 3, samples).indirect);
+  const double ir1 = test::energy(renderIr(job, 1).volumes.indirect);
+  const double ir2 = test::energy(renderIr(job, 2).volumes.indirect);
+  const double ref2 =
+      test::energy(test::renderReference(job, 2, samples, reference::PixelFilter::Box).indirect);
+  const double ref3 =
+      test::energy(test::renderReference(job, 3, samples, reference::PixelFilter::Box).indirect);
   const BounceErrors e{std::abs(ir2 - ref3) / ref3,
                        std::abs((ir2 - ir1) - (ref3 - ref2)) / (ref3 - ref2)};
   std::printf(
@@ -127,7 +111,7 @@ TEST(MultiBounceTest, ClosedBoxBounceEnergyTendsToAlbedoTimesThePreviousOne) {
   double previous = 0.0, previousBounce = 0.0;
   std::vector<double> ratio(6, 0.0);
   for (int32_t k = 1; k <= 5; ++k) {
-    const double all = energy(renderIr(job, k).volumes.indirect);
+    const double all = test::energy(renderIr(job, k).volumes.indirect);
     const double bounce = all - previous;
     if (k > 1) ratio[k] = bounce / previousBounce;
     if (k > 1) std::printf("closed box: bounce %d / bounce %d = %.4f\n", k, k - 1, ratio[k]);
