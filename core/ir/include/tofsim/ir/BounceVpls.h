@@ -1,8 +1,8 @@
 #pragma once
 // VPLs of the indirect bounces after the first (Keller 1997, "Instant
 // radiosity"): the RSM gives bounce 1; the VPLs of bounce k + 1 continue the
-// light paths of those of bounce k by cosine-weighted directions traced
-// against the scene, so every VPL still carries its flux and its whole optical
+// light paths of those of bounce k by cosine-weighted directions (sampled
+// from the VPL's BRDF for glossy VPLs) traced against the scene, so every VPL still carries its flux and its whole optical
 // path from the light, and the gather needs nothing new. Backend-independent:
 // the rays are Embree's whatever device gathers.
 
@@ -50,7 +50,8 @@ struct BounceMaterials {
 /// `count` children picked among the parents in proportion to their power
 /// (systematic resampling, one seeded offset per bounce: deterministic, and
 /// every parent of power p gets count * p / total children on average), each
-/// shot from its parent in a cosine-weighted direction (its own seeded
+/// shot from its parent in a cosine-weighted direction (a BRDF-sampled one
+/// for glossy VPLs, below; its own seeded
 /// generator, from the seed, the bounce and its index). A child sits at the
 /// first hit, its normal facing the ray, its path the parent's plus eta times
 /// the leg, its flux albedo * (the total power / count) / pi in the parent's
