@@ -7,11 +7,15 @@
 
 #include <optional>
 #include <string>
+#include <utility>
+#include <variant>
+#include <vector>
 
 #include "Arrays.h"
 #include "Bindings.h"
 #include "tofsim/config/SensorConfig.h"
 #include "tofsim/pipeline/SensorMetadata.h"
+#include "tofsim/sensors/CwTof.h"
 #include "tofsim/sensors/RunSensor.h"
 
 namespace py = pybind11;
@@ -35,6 +39,38 @@ sensors::SensorSpec parseSensor(const std::string& json) {
   }
 }
 
+// A cwtof sensor with multipath_by_order takes the light by bounce order and
+// the ground truth; naming the missing arguments here says more than the
+// sensor's own error, which speaks of the CLI's files.
+void checkByOrderInputs(const sensors::SensorSpec& spec, bool bounces, bool direct, bool depth) {
+  const auto* cwtof = std::get_if<sensors::CwTofParams>(&spec.params);
+  if (!cwtof || !cwtof->multipath_by_order || (bounces && direct && depth)) return;
+  std::string missing;
+  for (const auto& [given, name] :
+       {std::pair{bounces, "bounces"}, std::pair{direct, "direct"}, std::pair{depth, "depth"}}) {
+    if (!given) missing += std::string(missing.empty() ? "" : ", ") + name;
+  }
+  throw InputError(FileLoc{kSensorFile}, "multipath_by_order",
+                   "needs bounces= (the light of bounces 1..N, (H, W, T, C) each), direct= and "
+                   "depth=; missing: " +
+                       missing);
+}
+
+// The bounce volumes, each of the transient's shape.
+std::vector<TransientVolume> bounceVolumes(const std::vector<FloatArray>& arrays,
+                                           const FloatArray& transient, const TimeAxis& axis) {
+  std::vector<TransientVolume> volumes;
+  for (size_t k = 0; k < arrays.size(); ++k) {
+    const std::string what = "bounces[" + std::to_string(k) + "]";
+    const FloatArray& a = arrays[k];
+    bool same = a.ndim() == transient.ndim();
+    for (py::ssize_t d = 0; same && d < a.ndim(); ++d) same = a.shape(d) == transient.shape(d);
+    if (!same) throw py::value_error(what + " must have the transient's shape (H, W, T, C)");
+    volumes.push_back(volumeFromArray(a, axis, what.c_str()));
+  }
+  return volumes;
+}
+
 // (outputs: name -> array, metadata: name -> JSON text, warnings). The
 // metadata is the CLI's sensors/<name>/<output>.json without its `files`. A
 // colour-mapped image repeats the Image of the same name (it is how the CLI
@@ -42,8 +78,11 @@ sensors::SensorSpec parseSensor(const std::string& json) {
 // histograms) adds its plotted numbers.
 py::tuple sense(const FloatArray& transient, double start_s, double binWidth_s,
                 const std::string& sensorJson, uint64_t seed,
-                const std::optional<FloatArray>& direct, const std::optional<FloatArray>& depth) {
+                const std::optional<FloatArray>& direct, const std::optional<FloatArray>& depth,
+                const std::optional<std::vector<FloatArray>>& bounces) {
   const sensors::SensorSpec spec = parseSensor(sensorJson);
+  checkByOrderInputs(spec, bounces.has_value(), direct.has_value(), depth.has_value());
+  if (bounces && !direct) throw py::value_error("bounces need direct (the direct component) too");
   const TimeAxis axis{start_s, binWidth_s,
                       transient.ndim() == 4 ? static_cast<int32_t>(transient.shape(2)) : 0};
   const TransientVolume volume = volumeFromArray(transient, axis, "transient");
@@ -58,10 +97,17 @@ py::tuple sense(const FloatArray& transient, double start_s, double binWidth_s,
     depthImage = Image(volume.width(), volume.height(), 1);
     std::copy_n(depth->data(), depthImage->data.size(), depthImage->data.data());
   }
+  std::vector<TransientVolume> bounceVolumesHeld;
+  std::vector<const TransientVolume*> bouncePointers;
+  if (bounces) {
+    bounceVolumesHeld = bounceVolumes(*bounces, transient, axis);
+    for (const TransientVolume& b : bounceVolumesHeld) bouncePointers.push_back(&b);
+  }
   sensors::SensorInputs inputs;
   inputs.volume = &volume;
   inputs.directOnly = directVolume ? &*directVolume : nullptr;
   inputs.groundTruthDepth_m = depthImage ? &*depthImage : nullptr;
+  inputs.bounces = bounces ? &bouncePointers : nullptr;
   inputs.seed = seed;
   std::vector<sensors::SensorOutput> outputs;
   pipeline::SensorRunInfo run{&spec, axis, seed, {}};
@@ -89,7 +135,8 @@ py::tuple sense(const FloatArray& transient, double start_s, double binWidth_s,
 
 void bindSense(py::module_& m) {
   m.def("_sense", &sense, py::arg("transient"), py::arg("start_s"), py::arg("bin_width_s"),
-        py::arg("sensor_json"), py::arg("seed"), py::arg("direct"), py::arg("depth"));
+        py::arg("sensor_json"), py::arg("seed"), py::arg("direct"), py::arg("depth"),
+        py::arg("bounces"));
 }
 
 }  // namespace tofsim::python

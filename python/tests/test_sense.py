@@ -1,12 +1,15 @@
 """tofsim.sense on synthetic transients: the SPAD pile-up law, outputs, errors."""
 
 import math
+import os
 
 import numpy as np
 import pytest
 
 import tofsim
+from conftest import SOURCE_DIR
 
+CORNELL = os.path.join(SOURCE_DIR, "configs", "cornell_box.yaml")
 AXIS = {"start_s": 0.0, "bin_width_s": 100e-12, "bins": 64}
 
 
@@ -155,3 +158,49 @@ def test_sense_runs_on_a_render_result(plane_config):
                         {"type": "spad", "cycles": 1000, "channel_weights": [1, 1, 1]})
     assert spad["spad_counts"].shape == (6, 8, 1200)
     assert spad["spad_counts"].sum() > 0
+
+
+CWTOF_BY_ORDER = {"type": "cwtof", "name": "cwtof", "frequencies": ["20 MHz", "100 MHz"],
+                  "channel_weights": [1, 1, 1], "source_scale": 10000, "shot_noise": False,
+                  "read_noise": 0.0, "multipath_by_order": True}
+
+
+def render_bounces(tmp_path):
+    """A 12 x 12 Cornell box of two IR bounces, written with its components and
+    the CW-ToF error by bounce order (the CLI's sensors/cwtof/ files)."""
+    config = tofsim.load_config(CORNELL, overrides={
+        "camera.resolution": [12, 12], "render.indirect.bounces": 2,
+        "output.components": ["direct", "bounce1", "bounce2"], "output.video": False,
+        "sensors": [CWTOF_BY_ORDER]})
+    out = tmp_path / "render"
+    return tofsim.render(config, renderer="ir", output_dir=out), out
+
+
+def test_cwtof_by_bounce_order_is_the_renders(tmp_path):
+    result, out = render_bounces(tmp_path)
+    bounces = [np.load(out / "bounce1.npy"), np.load(out / "bounce2.npy")]
+    assert result.indirect is None and bounces[1].sum() > 0  # not written; bounce 2 has light
+    sensed = tofsim.sense(result.transient, result.time, CWTOF_BY_ORDER, seed=1,
+                          direct=result.direct, depth=result.depth, bounces=bounces)
+    errors = sensed["cwtof_multipath_error_by_order"]
+    assert errors.shape == (3, 12, 12)
+    assert sensed.metadata["cwtof_multipath_error_by_order"]["shape"] == [3, 12, 12]
+    assert sensed.metadata["cwtof_multipath_error_by_order"]["axes"][0] == "order"
+    # The same model on the same floats as the render's sensor: the same bytes.
+    written = np.load(out / "sensors" / "cwtof" / "cwtof_multipath_error_by_order.npy")
+    assert np.isfinite(written).any()
+    np.testing.assert_array_equal(errors, written)
+
+
+def test_cwtof_by_bounce_order_names_what_is_missing(tmp_path):
+    volume = np.zeros((2, 2, 64, 1), np.float32)
+    depth = np.ones((2, 2), np.float32)
+    sensor = dict(CWTOF_BY_ORDER, channel_weights=[1])
+    with pytest.raises(tofsim.ConfigError, match="missing: bounces") as e:
+        tofsim.sense(volume, AXIS, sensor, direct=volume, depth=depth)
+    assert e.value.key == "multipath_by_order"
+    with pytest.raises(tofsim.ConfigError, match="missing: direct, depth"):
+        tofsim.sense(volume, AXIS, sensor, bounces=[volume])
+    with pytest.raises(ValueError, match=r"bounces\[1\] must have the transient's shape"):
+        tofsim.sense(volume, AXIS, sensor, direct=volume, depth=depth,
+                     bounces=[volume, np.zeros((2, 2, 64, 3), np.float32)])

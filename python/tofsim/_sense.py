@@ -55,7 +55,7 @@ def _axis_of(time):
     return float(time.start_s), float(time.bin_width_s), int(time.bins)
 
 
-def sense(transient, time, sensor, seed=0, direct=None, depth=None):
+def sense(transient, time, sensor, seed=0, direct=None, depth=None, bounces=None):
     """Runs one sensor on a transient.
 
     transient: (H, W, T, C) array of radiance per bin (float32; converted if not).
@@ -66,8 +66,14 @@ def sense(transient, time, sensor, seed=0, direct=None, depth=None):
       the same numbers.
     direct: optional (H, W, T, C) direct component; depth: optional (H, W)
       ground-truth depth in metres (both feed CW-ToF's multipath error).
+    bounces: optional list of N (H, W, T, C) arrays, the light of exactly
+      1 .. N indirect bounces (a render's bounce1.npy .. bounce<N>.npy, written
+      with output.components); a cwtof sensor with multipath_by_order needs
+      them with direct and depth, and returns cwtof_multipath_error_by_order
+      ((N + 1, H, W): order k = the depth of direct + bounces 1..k - depth).
 
-    Raises ConfigError naming the sensor key for a bad parameter; issues a
+    Raises ConfigError naming the sensor key for a bad parameter (key
+    multipath_by_order when bounces, direct or depth is missing for it); issues a
     SensorWarning for each of the model's warnings (also in result.warnings).
     """
     start_s, bin_width_s, bins = _axis_of(time)
@@ -75,7 +81,8 @@ def sense(transient, time, sensor, seed=0, direct=None, depth=None):
     if shape is not None and len(shape) == 4 and shape[2] != bins:
         raise ValueError(f"transient has {shape[2]} time bins but time has bins={bins}")
     arrays, texts, messages = _tofsim._sense(
-        transient, start_s, bin_width_s, to_json(sensor), int(seed), direct, depth
+        transient, start_s, bin_width_s, to_json(sensor), int(seed), direct, depth,
+        None if bounces is None else list(bounces),
     )
     metadata = {name: json.loads(text) for name, text in texts.items()}
     info = _sensor_info(metadata)
