@@ -71,6 +71,10 @@ bool onMainThread() {
 // What a render hands back before it becomes Python objects (built without the GIL).
 struct Rendered {
   std::optional<TransientVolume> transient, direct, indirect;
+  /// bounce1 .. bounceN; `indirectIsBounce1`: N = 1, the indirect light is
+  /// bounce 1 (the same array is handed back, not a copy).
+  std::vector<TransientVolume> bounces;
+  bool indirectIsBounce1 = false;
   Image steady;
   capture::RenderResult result;
   std::string device;
@@ -88,8 +92,12 @@ Rendered renderInMemory(const config::RunConfig& config, bool quiet) {
   const scene::Scene scene = scene::loadGltf(config.scene_file);
   const capture::RenderJob job = pipeline::makeRenderJob(config, scene);
   pipeline::checkAxisBeforeRender(config, job, false);
+  // IR's light by bounce: with N > 1 bounces the segments carry bounce1 ..
+  // bounceN (N more volumes in memory); with one, bounce 1 is the indirect light.
+  const bool ir = config.renderer == config::RendererKind::InstantRadiosity;
+  const int32_t bounces = ir && job.settings.indirect.enabled ? job.settings.indirect.bounces : 0;
   capture::VolumeCollector collector(job.camera.width, job.camera.height, job.settings.time,
-                                     capture::kChannels);
+                                     capture::kChannels, bounces > 1 ? bounces : 0);
   const pipeline::RendererChoice choice =
       pipeline::makeRenderer(config, gl::eglPlatformFromEnvironment());
   const auto& renderer = choice.renderer;
@@ -102,10 +110,13 @@ Rendered renderInMemory(const config::RunConfig& config, bool quiet) {
                               });
   throwIfInterrupted();
   r.result.nonFiniteRejected = zeroNonFinite(collector.direct) + zeroNonFinite(collector.indirect);
+  for (TransientVolume& b : collector.bounces) zeroNonFinite(b);  // counted in indirect's
   r.transient = collector.total();
   r.steady = steadyImage(*r.transient);
   r.direct = std::move(collector.direct);
   r.indirect = std::move(collector.indirect);
+  r.bounces = std::move(collector.bounces);
+  r.indirectIsBounce1 = bounces == 1;
   return r;
 }
 
@@ -137,6 +148,11 @@ Rendered renderToFolder(const config::RunConfig& config, const std::string& dire
   if (wrote("transient.npy")) r.transient = readVolume(dir / "transient.npy", axis);
   if (wrote("direct.npy")) r.direct = readVolume(dir / "direct.npy", axis);
   if (wrote("indirect.npy")) r.indirect = readVolume(dir / "indirect.npy", axis);
+  for (int32_t k = 1; k <= capture::kMaxBounceComponents; ++k) {
+    const std::string name = std::string(capture::bounceComponent(k)) + ".npy";
+    if (!wrote(name.c_str())) break;
+    r.bounces.push_back(*readVolume(dir / name, axis));
+  }
   if (r.transient) r.steady = steadyImage(*r.transient);
   return r;
 }
@@ -150,6 +166,16 @@ py::dict toPython(Rendered& r, const TimeAxis& axis) {
   d["transient"] = optionalVolume(r.transient);
   d["direct"] = optionalVolume(r.direct);
   d["indirect"] = optionalVolume(r.indirect);
+  py::object bounces = py::none();
+  if (r.indirectIsBounce1 && !d["indirect"].is_none()) {
+    bounces = py::list();
+    bounces.cast<py::list>().append(d["indirect"]);
+  } else if (!r.bounces.empty()) {
+    py::list list;
+    for (TransientVolume& b : r.bounces) list.append(volumeArray(std::move(b)));
+    bounces = list;
+  }
+  d["bounces"] = bounces;
   const Image& depth = r.result.depth_m;
   d["depth"] = ownedArray(std::move(r.result.depth_m.data), {depth.height, depth.width});
   d["steady"] = r.steady.data.empty()

@@ -178,3 +178,31 @@ def test_the_gil_is_released_while_rendering(plane_config):
     thread.join()
     assert done["seconds"] > 0.2
     assert longest < 0.5 * done["seconds"], (longest, done["seconds"])
+
+
+def test_bounces_add_up_to_the_indirect_light_and_match_the_files(tmp_path):
+    """IR with 2 bounces: result.bounces is bounce 1 and 2, their float sum is
+    the indirect light exactly, and the in-memory arrays are those the CLI
+    writes as bounce<k>.npy."""
+    overrides = {"camera.resolution": [12, 12], "sensors": [], "output.video": False,
+                 "render.backend": "cpu", "render.indirect.bounces": 2,
+                 "render.indirect.rsm_resolution": 8,
+                 "output.components": ["direct", "indirect", "bounce1", "bounce2"]}
+    config = tofsim.load_config(CORNELL, overrides)
+    result = tofsim.render(config)
+    assert len(result.bounces) == 2
+    for b in result.bounces:
+        assert b.shape == result.indirect.shape and b.dtype == np.float32
+    assert result.bounces[1].sum() > 0
+    assert np.array_equal(result.bounces[0] + result.bounces[1], result.indirect)
+    written = tofsim.render(config, output_dir=tmp_path / "run")
+    for k in (1, 2):
+        on_disk = np.load(tmp_path / "run" / f"bounce{k}.npy")
+        assert np.array_equal(on_disk, result.bounces[k - 1])
+        assert np.array_equal(written.bounces[k - 1], on_disk)
+    single = dict(overrides, **{"render.indirect.bounces": 1,
+                                "output.components": ["direct", "indirect"]})
+    one = tofsim.render(tofsim.load_config(CORNELL, single))
+    assert len(one.bounces) == 1 and one.bounces[0] is one.indirect
+    reference = dict(single, **{"render.reference.samples_per_pixel": 1})
+    assert tofsim.render(tofsim.load_config(CORNELL, reference), renderer="reference").bounces is None

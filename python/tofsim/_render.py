@@ -31,6 +31,12 @@ class RenderResult:
 
     transient: (H, W, T, C) radiance per time bin, direct + indirect
     direct, indirect: (H, W, T, C) the components (transient == direct + indirect)
+    bounces: list of N (H, W, T, C) arrays, the light of exactly 1 .. N indirect
+      bounces (IR with render.indirect.bounces N; indirect == their float sum;
+      for N = 1 the list holds the indirect array itself); with output_dir the
+      bounce<k>.npy the run wrote (output.components); None otherwise (the
+      reference renderer, indirect light off). In memory, N > 1 costs N more
+      volumes.
     depth: (H, W) camera-to-surface distance, metres; 0 where no surface
     steady: (H, W, C) transient summed over time
     time: the TimeAxis of the T bins
@@ -42,6 +48,7 @@ class RenderResult:
     transient: object
     direct: object
     indirect: object
+    bounces: object
     depth: object
     steady: object
     time: TimeAxis

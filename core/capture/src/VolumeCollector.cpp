@@ -12,15 +12,21 @@ std::vector<std::string> defaultChannelNames(int32_t channels) {
 }
 
 VolumeCollector::VolumeCollector(int32_t width, int32_t height, const TimeAxis& axis,
-                                 int32_t channels)
+                                 int32_t channels, int32_t bounceCount)
     : direct(width, height, axis, defaultChannelNames(channels)),
-      indirect(width, height, axis, defaultChannelNames(channels)) {}
+      indirect(width, height, axis, defaultChannelNames(channels)) {
+  for (int32_t k = 0; k < bounceCount; ++k) bounces.push_back(indirect);
+}
 
 void VolumeCollector::consume(const Segment& segment) {
   const std::size_t offset = segment.firstPixel * direct.pixelStride();
   const std::size_t floats = segment.pixelCount * direct.pixelStride();
   std::copy_n(segment.component(kDirect), floats, direct.data() + offset);
   std::copy_n(segment.component(kIndirect), floats, indirect.data() + offset);
+  for (std::size_t k = 0; k < bounces.size(); ++k) {
+    const float* bounce = segment.component(bounceComponent(static_cast<int32_t>(k) + 1));
+    std::copy_n(bounce, floats, bounces[k].data() + offset);
+  }
 }
 
 TransientVolume VolumeCollector::total() const {

@@ -8,10 +8,14 @@ namespace tofsim::capture {
 
 class VolumeCollector : public SegmentSink {
  public:
-  VolumeCollector(int32_t width, int32_t height, const TimeAxis& axis, int32_t channels);
+  /// bounces N >= 1: also keep bounce1 .. bounceN (the segments must carry
+  /// them: an IR render with render.indirect.bounces N > 1).
+  VolumeCollector(int32_t width, int32_t height, const TimeAxis& axis, int32_t channels,
+                  int32_t bounces = 0);
   void consume(const Segment& segment) override;
   TransientVolume direct;
   TransientVolume indirect;
+  std::vector<TransientVolume> bounces;  ///< bounce1 .. bounceN, when asked
   /// direct + indirect, computed in float: total == direct + indirect exactly.
   TransientVolume total() const;
 };
