@@ -1,5 +1,6 @@
-// Bytes -> a saved render (transient.json + transient.npy) -> loadSavedVolume,
-// what `tofsim sense` and `tofsim compare` read. The input is split at the
+// Bytes -> a saved render (transient.json + transient.npy) -> loadSavedVolume
+// (what `tofsim compare` reads) and SavedVolumeStream read in runs of 7
+// pixels (what `tofsim sense` reads). The input is split at the
 // first NUL byte: JSON before it, .npy after it (so both files mutate).
 #include <cstring>
 
@@ -21,6 +22,18 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
         static_cast<size_t>(v.width()) * v.height() * v.bins() * v.channels()) {
       __builtin_trap();
     }
+  } catch (const tofsim::InputError&) {
+  }
+  try {
+    tofsim::pipeline::SavedVolumeStream stream(tofsim::fuzz::workDir(), {"direct"});
+    std::size_t pixels = 0;
+    while (const std::size_t run = stream.read(7)) {
+      if (run > 7 || stream.firstPixel() != pixels || stream.values("transient") == nullptr) {
+        __builtin_trap();
+      }
+      pixels += run;
+    }
+    if (pixels != stream.shape().pixelCount()) __builtin_trap();
   } catch (const tofsim::InputError&) {
   }
   return 0;
