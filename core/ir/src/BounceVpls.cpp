@@ -1,7 +1,6 @@
 #include "tofsim/ir/BounceVpls.h"
 
 #include <algorithm>
-#include <cmath>
 #include <optional>
 #include <thread>
 
@@ -28,20 +27,15 @@ uint64_t unitOf(uint64_t tag, int32_t bounce, std::size_t index) {
 
 double powerOf(const Vpl& v) { return static_cast<double>(v.flux.r) + v.flux.g + v.flux.b; }
 
-// A continuation of the light path at `parent`: its direction and the
-// factor its power gains there.
-struct Continuation {
-  glm::vec3 direction{0.0f};
-  glm::vec3 weight{0.0f};  ///< f cos / pdf of a glossy parent; 1 for a Lambertian one
-};
-
-// Cosine-weighted about the parent's normal for a Lambertian VPL (its albedo
-// is in its flux already: weight 1). A glossy VPL (render.materials: gltf)
-// samples its BRDF as the reference does (tofsim/physics/GltfSampling.h: the
-// mixture of the cosine lobe and GGX visible normals about the direction its
-// light came from) and gains f cos / pdf, f clamped as the gather clamps the
-// VPL's BRDF. From the child's generator.
-Continuation continuationOf(const Vpl& parent, Pcg32& rng, const BounceMaterials& materials) {
+// The continuation of the light path at `parent`: its direction and the
+// factor its power gains there. Cosine-weighted about the parent's normal for
+// a Lambertian VPL (its albedo is in its flux already: weight 1). A glossy VPL
+// (render.materials: gltf) samples its BRDF as the reference does
+// (physics::sampleGltfBounce: the mixture of the cosine lobe and GGX visible
+// normals about the direction its light came from) and gains f cos / pdf, f
+// clamped as the gather clamps the VPL's BRDF. From the child's generator.
+physics::GltfBounce continuationOf(const Vpl& parent, Pcg32& rng,
+                                   const BounceMaterials& materials) {
   const glm::vec3 n(parent.normal);
   if (!materials.gltf) {
     const float u1 = rng.nextFloat();
@@ -51,25 +45,15 @@ Continuation continuationOf(const Vpl& parent, Pcg32& rng, const BounceMaterials
   const float uLobe = rng.nextFloat();
   const float u1 = rng.nextFloat();
   const float u2 = rng.nextFloat();
-  const glm::vec3 v(parent.incoming);
-  const glm::vec3 base(parent.material);
-  const float metallic = parent.incoming.w, roughness = parent.material.w;
-  Continuation out;
-  out.direction = physics::sampleGltfMixture(n, v, base, metallic, roughness, uLobe, u1, u2);
-  const float cosL = glm::dot(n, out.direction);
-  if (!(cosL > 0.0f)) return out;
-  const float pdf = physics::gltfMixturePdf(n, v, out.direction, base, metallic, roughness);
-  const glm::vec3 f =
-      physics::gltfVplBrdf(n, v, out.direction, base, metallic, roughness, materials.brdfClamp);
-  const glm::vec3 w = f * (cosL / pdf);
-  if (pdf > 0.0f && std::isfinite(w.x) && std::isfinite(w.y) && std::isfinite(w.z)) out.weight = w;
-  return out;
+  return physics::sampleGltfBounce(n, glm::vec3(parent.incoming), glm::vec3(parent.material),
+                                   parent.incoming.w, parent.material.w, uLobe, u1, u2,
+                                   materials.brdfClamp);
 }
 
 // A glossy child (render.materials: gltf) at `hit`, reached from `parent`
 // along w with the continuation's weight: it receives the parent's share
 // times that weight, comes in from -w, and carries the hit's material.
-std::optional<Vpl> glossyChild(const glm::vec3& share, const Continuation& c,
+std::optional<Vpl> glossyChild(const glm::vec3& share, const physics::GltfBounce& c,
                                const reference::SurfaceHit& hit, float path_m) {
   const glm::vec3 power = share * c.weight;
   if (!(power.r + power.g + power.b > 0.0f)) return std::nullopt;
@@ -90,7 +74,7 @@ std::optional<Vpl> shootChild(const reference::RayScene& scene, const Vpl& paren
   Pcg32 rng = Pcg32::forUnit(seed, unitOf(kChildUnit, bounce, index));
   const glm::vec3 p(parent.positionPath);
   const glm::vec3 n(parent.normal);
-  const Continuation continuation = continuationOf(parent, rng, materials);
+  const physics::GltfBounce continuation = continuationOf(parent, rng, materials);
   const glm::vec3 w = continuation.direction;
   if (!(glm::dot(w, n) > 0.0f)) return std::nullopt;
   const auto hit = scene.intersect(p + n * scene.epsilon_m(), w);

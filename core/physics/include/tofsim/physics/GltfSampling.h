@@ -135,16 +135,20 @@ struct GltfBounce {
 
 /// Draws l from the mixture for the surface (n, baseColor, metallic,
 /// roughness) seen from unit v on n's side, from three uniform numbers.
+/// brdfClampPerSr > 0 bounds each channel of f in the weight (a glossy VPL's
+/// render.indirect.vpl_brdf_clamp, as gltfVplBrdf bounds it in the gather).
 inline GltfBounce sampleGltfBounce(const glm::vec3& n, const glm::vec3& v,
                                    const glm::vec3& baseColor, float metallic, float roughness,
-                                   float uLobe, float u1, float u2) {
+                                   float uLobe, float u1, float u2, float brdfClampPerSr = 0.0f) {
   GltfBounce out;
   if (glm::dot(n, v) <= 0.0f) return out;
   out.direction = sampleGltfMixture(n, v, baseColor, metallic, roughness, uLobe, u1, u2);
   const float cosL = glm::dot(n, out.direction);
   if (cosL <= 0.0f) return out;
   const float pdf = gltfMixturePdf(n, v, out.direction, baseColor, metallic, roughness);
-  const glm::vec3 w = gltfBrdf(n, out.direction, v, baseColor, metallic, roughness) * (cosL / pdf);
+  const glm::vec3 f =
+      gltfVplBrdf(n, out.direction, v, baseColor, metallic, roughness, brdfClampPerSr);
+  const glm::vec3 w = f * (cosL / pdf);
   if (pdf > 0.0f && std::isfinite(w.x) && std::isfinite(w.y) && std::isfinite(w.z)) out.weight = w;
   return out;
 }
