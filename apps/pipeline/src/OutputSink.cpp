@@ -63,12 +63,8 @@ void OutputSink::consume(const capture::Segment& segment) {
   if (total_) total_->append(scratch_.data(), floats);
   if (directFile_) directFile_->append(directScratch_.data(), floats);
   if (indirectFile_) indirectFile_->append(indirectScratch_.data(), floats);
-  for (const auto& [k, file] : bounceFiles_) {
-    const float* bounce = segment.component(capture::bounceComponent(k));
-    bounceScratch_.assign(bounce, bounce + floats);
-    zeroNonFinite(bounceScratch_.data(), floats);  // already counted in indirect's
-    file->append(bounceScratch_.data(), floats);
-  }
+  if (forwardBounces_ >= 2) cleanForwardedBounces(segment, floats);
+  for (const auto& [k, file] : bounceFiles_) file->append(cleanBounce(segment, k, floats), floats);
   for (std::size_t p = 0; p < segment.pixelCount; ++p) {
     double* out = &steady_[(segment.firstPixel + p) * kChannels];
     const float* in = &scratch_[p * pixelFloats];
@@ -76,22 +72,35 @@ void OutputSink::consume(const capture::Segment& segment) {
       for (int32_t c = 0; c < kChannels; ++c) out[c] += in[t * kChannels + c];
     }
   }
-  if (forward_) forward_(forwardedSpan(segment, floats));
+  if (forward_) forward_(forwardedSpan(segment));
 }
 
-sensors::PixelSpan OutputSink::forwardedSpan(const capture::Segment& segment, std::size_t floats) {
+void OutputSink::cleanForwardedBounces(const capture::Segment& segment, std::size_t floats) {
+  forwardedBounces_.resize(static_cast<std::size_t>(forwardBounces_));
+  for (int32_t k = 1; k <= forwardBounces_; ++k) {
+    const float* bounce = segment.component(capture::bounceComponent(k));
+    std::vector<float>& copy = forwardedBounces_[k - 1];
+    copy.assign(bounce, bounce + floats);
+    zeroNonFinite(copy.data(), floats);  // counted in indirect's
+  }
+}
+
+const float* OutputSink::cleanBounce(const capture::Segment& segment, int32_t k,
+                                     std::size_t floats) {
+  // The sensors' copy when they take bounce k (cleaned once per segment).
+  if (forwardBounces_ >= 2 && k <= forwardBounces_) return forwardedBounces_[k - 1].data();
+  const float* bounce = segment.component(capture::bounceComponent(k));
+  bounceScratch_.assign(bounce, bounce + floats);
+  zeroNonFinite(bounceScratch_.data(), floats);  // already counted in indirect's
+  return bounceScratch_.data();
+}
+
+sensors::PixelSpan OutputSink::forwardedSpan(const capture::Segment& segment) const {
   sensors::PixelSpan span{
       segment.firstPixel, segment.pixelCount, scratch_.data(), directScratch_.data(), {}};
   if (forwardBounces_ == 1) span.bounces.push_back(indirectScratch_.data());
   if (forwardBounces_ >= 2) {
-    forwardedBounces_.resize(static_cast<std::size_t>(forwardBounces_));
-    for (int32_t k = 1; k <= forwardBounces_; ++k) {
-      const float* bounce = segment.component(capture::bounceComponent(k));
-      std::vector<float>& copy = forwardedBounces_[k - 1];
-      copy.assign(bounce, bounce + floats);
-      zeroNonFinite(copy.data(), floats);  // counted in indirect's
-      span.bounces.push_back(copy.data());
-    }
+    for (const std::vector<float>& b : forwardedBounces_) span.bounces.push_back(b.data());
   }
   return span;
 }

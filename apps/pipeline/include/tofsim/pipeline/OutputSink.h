@@ -51,7 +51,13 @@ class OutputSink : public capture::SegmentSink {
   std::size_t nonFiniteValues() const { return nonFinite_; }
 
  private:
-  sensors::PixelSpan forwardedSpan(const capture::Segment& segment, std::size_t floats);
+  /// Bounces 1..forwardBounces_ (>= 2) into forwardedBounces_, non-finite zeroed.
+  void cleanForwardedBounces(const capture::Segment& segment, std::size_t floats);
+  /// Bounce k with non-finite values zeroed, for bounce<k>.npy: the sensors'
+  /// copy when they take it, else cleaned into bounceScratch_.
+  const float* cleanBounce(const capture::Segment& segment, int32_t k, std::size_t floats);
+  /// The segment as the sensors see it (after consume cleaned it).
+  sensors::PixelSpan forwardedSpan(const capture::Segment& segment) const;
 
   int32_t width_, height_;
   TimeAxis axis_;
