@@ -52,6 +52,30 @@ TEST_F(TextConfigTest, IntegerKeysTakeIntegralFloatsOnly) {
   }
 }
 
+// YAML lets any node be a mapping key (`? [a, b]: 1`); a config key is a name.
+// The fuzzer found the unread-key check aborting on one (CI, fuzz_config).
+TEST_F(TextConfigTest, KeysThatAreNotNamesAreLocatedErrors) {
+  struct Case {
+    std::string extra;
+    std::string key;
+    int line;
+  };
+  const Case cases[] = {
+      {"  bins: 8\n? [a, b]: 1\n", "", 6},
+      {"  bins: 8\n  ? {x: 1}: 2\n", "time", 6},
+      {"  bins: 8\n? position: [0.3, 0.5]\n", "", 6},
+      {"  bins: 8\noutput:\n  plot_ranges:\n    ? [depth]: [0, 1]\n", "output.plot_ranges", 8},
+      {"  bins: 8\nsensors:\n  - {type: spad, ? [pde]: 0.5}\n", "sensors[0]", 7},
+  };
+  for (const Case& c : cases) {
+    const InputError e = errorOf(config(c.extra), "<string>");
+    EXPECT_EQ(e.key(), c.key) << c.extra;
+    EXPECT_EQ(e.location().line, c.line) << c.extra;
+    EXPECT_NE(std::string(e.what()).find("a key must be a plain name"), std::string::npos)
+        << e.what();
+  }
+}
+
 TEST_F(TextConfigTest, SensorTextParsesOneSensorWithLocatedErrors) {
   const sensors::SensorSpec spec =
       parseSensorText(R"({"type": "spad", "cycles": 100000.0, "pde": 0.5})", "<sensor>");

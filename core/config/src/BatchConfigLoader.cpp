@@ -47,17 +47,16 @@ void markAll(const ConfigNode& node) {
   if (node.isSequence()) {
     for (const ConfigNode& e : node.elements()) markAll(e);
   } else if (node.isMap()) {
-    for (const auto& kv : node.yaml()) markAll(node.child(kv.first.as<std::string>()));
+    for (const std::string& key : node.keys()) markAll(node.child(key));
   }
 }
 
 std::vector<Override> setOf(const ConfigNode& node) {
   if (!node.isMap()) node.fail("must be a mapping of key.path: value");
   std::vector<Override> out;
-  for (const auto& kv : node.yaml()) {
-    const std::string key = kv.first.as<std::string>();
+  for (const std::string& key : node.keys()) {
     markAll(node.child(key));
-    out.push_back(Override{key, flowText(kv.second)});
+    out.push_back(Override{key, flowText(node.child(key).yaml())});
   }
   return out;
 }
@@ -67,8 +66,7 @@ std::vector<Axis> sweepAxes(const ConfigNode& sweep) {
   if (!sweep.isMap()) sweep.fail("must be a mapping with product: and/or zip:");
   if (const auto product = sweep.optionalChild("product")) {
     if (!product->isMap()) product->fail("must map config keys to lists of values");
-    for (const auto& kv : product->yaml()) {
-      const std::string key = kv.first.as<std::string>();
+    for (const std::string& key : product->keys()) {
       axes.push_back(Axis{{key}, {}});
       for (const std::string& v : valuesOf(product->child(key))) axes.back().values.push_back({v});
     }
@@ -78,8 +76,7 @@ std::vector<Axis> sweepAxes(const ConfigNode& sweep) {
     if (!zip->isMap()) zip->fail("must map config keys to lists of equal length");
     Axis axis;
     std::string firstKey;
-    for (const auto& kv : zip->yaml()) {
-      const std::string key = kv.first.as<std::string>();
+    for (const std::string& key : zip->keys()) {
       const std::vector<std::string> values = valuesOf(zip->child(key));
       if (axis.keys.empty()) {
         axis.values.resize(values.size());

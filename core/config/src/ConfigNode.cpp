@@ -119,6 +119,22 @@ FileLoc ConfigNode::locate(const YAML::Node& node, const std::string& path) cons
 
 FileLoc ConfigNode::location() const { return locate(node_, path_); }
 
+// yaml-cpp accepts any node as a mapping key; a config key is a name.
+std::string ConfigNode::keyName(const YAML::Node& key, const std::string& parentPath) const {
+  if (!key.IsScalar()) {
+    throw InputError(locate(key, parentPath), parentPath,
+                     "a key must be a plain name, not a mapping, sequence or null");
+  }
+  return key.Scalar();
+}
+
+std::vector<std::string> ConfigNode::keys() const {
+  std::vector<std::string> out;
+  if (!node_.IsMap()) return out;
+  for (const auto& entry : node_) out.push_back(keyName(entry.first, path_));
+  return out;
+}
+
 FileLoc ConfigNode::locationOf(const std::string& key) const {
   const YAML::Node value = lookup(key);
   return value ? locate(value, pathOf(key)) : location();
@@ -294,7 +310,7 @@ void ConfigNode::collectUnused(const YAML::Node& node, const std::string& path) 
   }
   if (!node.IsMap()) return;
   for (const auto& entry : node) {
-    const std::string key = entry.first.as<std::string>();
+    const std::string key = keyName(entry.first, path);
     const std::string p = path.empty() ? key : path + "." + key;
     if (!shared_->usedPaths.count(p)) {
       throw InputError(locate(entry.first, p), p, "unknown key");

@@ -32,6 +32,9 @@ class ConfigNode {
   std::optional<ConfigNode> optionalChild(const std::string& key) const;
   /// Elements of a sequence node.
   std::vector<ConfigNode> elements() const;
+  /// The keys of a mapping node, in file order. A key that is itself a
+  /// mapping or a sequence (YAML's `? [a, b]: ...`) is a located error.
+  std::vector<std::string> keys() const;
 
   // Typed scalars. `get` returns `fallback` when the key is absent; `require`
   // throws. Wrong types throw with the location of the offending value.
@@ -80,6 +83,7 @@ class ConfigNode {
     std::vector<std::pair<std::string, std::string>> overrideSources;
   };
   FileLoc locate(const YAML::Node& node, const std::string& path) const;
+  std::string keyName(const YAML::Node& key, const std::string& parentPath) const;
   ConfigNode(YAML::Node node, std::string path, std::shared_ptr<Shared> shared);
   YAML::Node lookup(const std::string& key) const;
   void collectUnused(const YAML::Node& node, const std::string& path) const;

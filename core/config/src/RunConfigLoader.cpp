@@ -267,8 +267,7 @@ void parseOutput(const ConfigNode& node, const RunConfig& config, OutputConfig& 
     if (!ranges->isMap()) {
       ranges->fail("expected a mapping of picture name -> [lo, hi]");
     }
-    for (const auto& entry : ranges->yaml()) {
-      const std::string name = entry.first.as<std::string>();
+    for (const std::string& name : ranges->keys()) {
       const std::vector<double> r = ranges->getDoubles(name, 2, {});
       if (!(std::isfinite(r[0]) && std::isfinite(r[1]) && r[0] < r[1])) {
         ranges->failKey(name, "must be [lo, hi] with lo < hi");
