@@ -78,6 +78,7 @@ std::string transientMetadataJson(const config::RunConfig& config, const capture
                 {"segments", result.segments},
                 {"vpls", result.vpls},
                 {"vpl_batches", result.vplBatches},
+                {"sampled_pixels", result.sampledPixels},
                 {"peak_gpu_bytes", result.peakGpuBytes},
                 {"energy_outside_time_axis", result.offAxis.total()},
                 {"energy_before_axis", result.offAxis.before},

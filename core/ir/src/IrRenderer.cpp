@@ -7,6 +7,7 @@
 #include "MemoryPlan.h"
 #include "tofsim/capture/DirectLightView.h"
 #include "tofsim/ir/BounceVpls.h"
+#include "tofsim/ir/SampledPixels.h"
 #include "tofsim/ir/SegmentStream.h"
 #include "tofsim/util/Error.h"
 
@@ -155,10 +156,16 @@ RenderResult IrRenderer::render(const RenderJob& job, SegmentSink& sink,
   validateJob(job, limits);
   RenderResult result;
 
-  const std::vector<float> positions = backend.prepareSurfaces(job);
+  const CentreSurfaces centres = backend.prepareSurfaces(job);
+  const std::vector<float>& positions = centres.positions;
   TOFSIM_CHECK_EQ(positions.size(),
                   static_cast<std::size_t>(job.camera.width) * job.camera.height * 4);
   result.depth_m = depthFromPositions(positions, job.camera);
+  if (job.settings.adaptive_pixel_samples && job.settings.pixel_samples > 1) {
+    const std::vector<uint8_t> sampled = sampledPixels(centres, job.camera.width, job.camera.height);
+    result.sampledPixels = static_cast<std::size_t>(std::count(sampled.begin(), sampled.end(), 1));
+    backend.setSampledPixels(sampled);
+  }
   // Bounce 1 from the backend's RSM, later bounces traced from it here, so
   // both backends gather the same VPLs of every bounce; bounced.firstOfBounce
   // keeps which VPLs are of which bounce (for bounce-resolved output).

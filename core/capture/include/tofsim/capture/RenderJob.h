@@ -27,6 +27,9 @@ struct RenderResult {
   std::size_t segments = 0;
   std::size_t vpls = 0;
   std::size_t vplBatches = 0;
+  /// Pixels that took N x N sub-pixel samples (render.adaptive_pixel_samples;
+  /// 0 otherwise).
+  std::size_t sampledPixels = 0;
   std::size_t peakGpuBytes = 0;
   double seconds = 0.0;
   /// Radiance that arrived before the first or after the last bin (summed over
