@@ -84,7 +84,15 @@ bool buildPrimitive(const GltfDocument& doc, const PrimitiveRef& ref, const glm:
   const bool flip = glm::determinant(glm::dmat3(world)) < 0.0;
   const glm::dmat3 normalMatrix = glm::transpose(glm::inverse(glm::dmat3(world)));
   std::vector<glm::dvec3> p(pos.size());
-  for (std::size_t i = 0; i < pos.size(); ++i) p[i] = glm::dvec3(world * glm::dvec4(pos[i], 1.0));
+  for (std::size_t i = 0; i < pos.size(); ++i) {
+    p[i] = glm::dvec3(world * glm::dvec4(pos[i], 1.0));
+    // Finite in the file, but the node transforms may carry it past float's
+    // range, where the scene stores it (found by fuzz_gltf).
+    if (!finite(glm::dvec3(glm::vec3(p[i])))) {
+      fail("accessor[" + std::to_string(prim.position) + "] POSITION element " +
+           std::to_string(i) + " is beyond the float range after the node transforms");
+    }
+  }
 
   const bool flat = nrm.empty();
   if (flat) ++report.flatNormalPrimitives;
