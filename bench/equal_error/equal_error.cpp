@@ -91,6 +91,7 @@ struct IrCase {
   int rsm;
   bool footprint;
   int pixelSamples;
+  bool adaptive = false;  ///< render.adaptive_pixel_samples
 };
 
 std::vector<IrCase> irCases(bool box) {
@@ -107,11 +108,21 @@ std::vector<IrCase> irCases(bool box) {
     }
   }
   if (!box) return cases;
-  // Against the pixel-area truth the silhouettes need sub-pixel samples.
+  // Against the pixel-area truth the silhouettes need sub-pixel samples:
+  // everywhere (2 x 2), and only at the G-buffer's edges (2 x 2, 3 x 3 and
+  // 4 x 4 with RSM 32^2).
   for (std::size_t i = 0; i < 4; ++i) {
     IrCase supersampled = cases[i];
     supersampled.pixelSamples = 2;
     cases.push_back(supersampled);
+  }
+  for (const int n : {2, 3, 4}) {
+    for (const std::size_t i : {std::size_t{0}, std::size_t{2}}) {
+      IrCase adaptive = cases[i];
+      adaptive.pixelSamples = n;
+      adaptive.adaptive = true;
+      cases.push_back(adaptive);
+    }
   }
   return cases;
 }
@@ -185,12 +196,16 @@ int main(int argc, char** argv) {
     irJob.settings.pixel_footprint = c.footprint;
     irJob.settings.indirect.vpl_footprint = c.footprint;
     irJob.settings.pixel_samples = c.pixelSamples;
+    irJob.settings.adaptive_pixel_samples = c.adaptive;
     const ir::IrRenderer renderer = makeIr();
     const Measured m =
         measure(irJob, truth, [&](capture::VolumeCollector& out) { renderer.render(irJob, out); });
     const std::string setting = std::string(c.name) + ", RSM " + std::to_string(c.rsm) + "^2" +
                                 (c.footprint ? ", footprint" : ", no footprint") +
-                                (c.pixelSamples > 1 ? ", pixel_samples 2" : "");
+                                (c.pixelSamples > 1
+                                     ? ", pixel_samples " + std::to_string(c.pixelSamples) +
+                                           (c.adaptive ? " at edges" : "")
+                                     : "");
     std::printf("| IR | %s | %.2f | %.4f | %.4f |\n", setting.c_str(), m.seconds,
                 m.error.steadyRelativeL1, m.error.transientRelativeL1);
     irRuns.emplace_back(setting, m);
