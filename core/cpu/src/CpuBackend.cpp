@@ -369,9 +369,17 @@ void CpuBackend::gatherTile(std::size_t tile, std::size_t firstVpl, std::size_t 
           if (c.footprint) {
             // physics::depositNarrow / depositWide, from the block's precomputed terms.
             const int32_t narrowBins = t.count[k];
-            for (int32_t j = 0; j < narrowBins; ++j) {
+            const int32_t vectorBins = std::min(narrowBins, kVectorNarrowBins);
+            for (int32_t j = 0; j < vectorBins; ++j) {
               physics::depositNarrowBin(histogram, bins, t.first[k] + j, t.mass[j][k], energy,
                                         lost);
+            }
+            if (narrowBins > kVectorNarrowBins) {
+              const glm::vec3 kernel(t.centre[k], t.wide[k], t.narrow[k]);
+              for (int32_t j = kVectorNarrowBins; j < narrowBins; ++j) {
+                physics::depositNarrowBin(histogram, bins, t.first[k] + j,
+                                          physics::footprintNarrowMass(kernel, j), energy, lost);
+              }
             }
             if (narrowBins == 0) {
               physics::depositWide(footprintOf(i), bins,
