@@ -188,6 +188,7 @@ int main(int argc, char** argv) {
       "| renderer | setting | seconds | steady rel. L1 | transient rel. L1 "
       "|\n|---|---|---|---|---|\n");
   std::vector<std::pair<std::string, Measured>> irRuns;
+  std::vector<capture::PassSeconds> irPasses;
   for (const IrCase& c : irCases(box)) {
     capture::RenderJob irJob = job;
     irJob.settings.indirect.visibility = c.visibility;
@@ -198,8 +199,11 @@ int main(int argc, char** argv) {
     irJob.settings.pixel_samples = c.pixelSamples;
     irJob.settings.adaptive_pixel_samples = c.adaptive;
     const ir::IrRenderer renderer = makeIr();
-    const Measured m =
-        measure(irJob, truth, [&](capture::VolumeCollector& out) { renderer.render(irJob, out); });
+    capture::RenderResult result;
+    const Measured m = measure(irJob, truth, [&](capture::VolumeCollector& out) {
+      result = renderer.render(irJob, out);
+    });
+    irPasses.push_back(result.passSeconds);
     const std::string setting = std::string(c.name) + ", RSM " + std::to_string(c.rsm) + "^2" +
                                 (c.footprint ? ", footprint" : ", no footprint") +
                                 (c.pixelSamples > 1
@@ -210,6 +214,16 @@ int main(int argc, char** argv) {
                 m.error.steadyRelativeL1, m.error.transientRelativeL1);
     irRuns.emplace_back(setting, m);
   }
+  std::printf(
+      "\n| IR setting | surfaces | VPLs | visibility | direct | indirect | read-back | other "
+      "|\n|---|---|---|---|---|---|---|---|\n");
+  for (std::size_t i = 0; i < irRuns.size(); ++i) {
+    const capture::PassSeconds& p = irPasses[i];
+    std::printf("| %s | %.3f | %.3f | %.3f | %.3f | %.3f | %.3f | %.3f |\n",
+                irRuns[i].first.c_str(), p.surfaces, p.vpls, p.visibility, p.direct, p.indirect,
+                p.readBack, p.other);
+  }
+  std::printf("\n");
   std::vector<std::pair<double, double>> timeError;
   for (int spp = 1; spp <= 4096; spp *= 2) {
     const Measured m = referenceRun(job, truth, spp, filter, bounces);
