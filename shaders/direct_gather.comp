@@ -1,14 +1,17 @@
 #version 450 core
 // Direct transient light: one thread per pixel of the segment, over the
-// pixel's PIXEL_SAMPLES^2 G-buffer samples in order. A sample's surface point
-// x receives the light's impulse after |l - x| and reflects it (Lambertian, or
-// with GLTF_MATERIALS the glTF BRDF of gltf_brdf.glsl) to the camera after |x - c|; the radiance lands in the bin of the full optical
-// path eta * (|l - x| + |x - c|), or eta * |l - x| when the camera delay is
-// unwarped. With PIXEL_FOOTPRINT it is spread instead over that path's
-// distribution across the sample's sub-pixel (footprint_deposit.glsl). Each
-// bin has this thread as its only writer, so the result does not depend on
-// scheduling. The sample loop runs at most 16^2 times, far below llvmpipe's
-// 65535 loop trips per invocation.
+// pixel's G-buffer samples in order: its PIXEL_SAMPLES^2 sub-pixel samples, or
+// with ADAPTIVE_SAMPLES one centre sample where the mask says so
+// (surface_samples.glsl). A sample's surface point x receives the light's
+// impulse after |l - x| and reflects it (Lambertian, or with GLTF_MATERIALS
+// the glTF BRDF of gltf_brdf.glsl) to the camera after |x - c|; the radiance
+// lands in the bin of the full optical path eta * (|l - x| + |x - c|), or
+// eta * |l - x| when the camera delay is unwarped. With PIXEL_FOOTPRINT it is
+// spread instead over that path's distribution across the sample's footprint
+// (its sub-pixel, or the whole pixel for a centre sample;
+// footprint_deposit.glsl). Each bin has this thread as its only writer, so the
+// result does not depend on scheduling. The sample loop runs at most 16^2
+// times, far below llvmpipe's 65535 loop trips per invocation.
 layout(local_size_x = TOFSIM_WORK_GROUP_SIZE) in;
 
 #include "light.glsl"
@@ -29,21 +32,18 @@ uniform float uBinWidth_m;
 uniform float uIndexOfRefraction;
 uniform int uCameraUnwarp;
 uniform vec3 uCameraPosition_world;
-uniform float uSampleWeight;  // 1 / PIXEL_SAMPLES^2: the sample's share of the pixel
 
 #ifdef PIXEL_FOOTPRINT
 #define FOOTPRINT_HISTOGRAM direct
 #include "footprint_deposit.glsl"
 #endif
 
-// Adds sample s of pixel `local` (at image position xy).
-void gatherSample(uint local, ivec2 xy, int s, inout float lostBefore, inout float lostAfter) {
-  ivec2 texel = sampleTexel(xy, s);
-  vec4 position = texelFetch(uGPosition, texel, 0);
-  if (position.w == 0.0) return;
-  vec3 x = position.xyz;
-  vec3 n = texelFetch(uGNormal, texel, 0).xyz;
-  vec3 albedo = texelFetch(uGAlbedo, texel, 0).rgb;
+// Adds sample g of pixel `local`.
+void gatherSample(uint local, SurfaceSample g, inout float lostBefore, inout float lostAfter) {
+  if (g.position.w == 0.0) return;
+  vec3 x = g.position.xyz;
+  vec3 n = g.normal;
+  vec3 albedo = g.albedo;
 
   vec3 toLight = uLightPosition_world - x;
   float dLight = length(toLight);
@@ -54,7 +54,7 @@ void gatherSample(uint local, ivec2 xy, int s, inout float lostBefore, inout flo
   if (profile <= 0.0 || !visibleFromLight(x, cosX)) return;
 
 #ifdef GLTF_MATERIALS
-  vec2 metallicRoughness = texelFetch(uGMetallicRoughness, texel, 0).rg;
+  vec2 metallicRoughness = g.metallicRoughness;
   vec3 wCamera = normalize(uCameraPosition_world - x);
   vec3 radiance = gltfDirect(n, wLight, wCamera, albedo, metallicRoughness.x, metallicRoughness.y,
                              uLightIntensity_W_per_sr, profile, cosX, dLight);
@@ -65,17 +65,17 @@ void gatherSample(uint local, ivec2 xy, int s, inout float lostBefore, inout flo
   float path_m = directPathLength(uIndexOfRefraction, dLight, dCamera);
 #ifdef PIXEL_FOOTPRINT
   vec3 dxdu, dxdv;
-  surfaceStepsAcrossSample(x, n, dxdu, dxdv);
+  surfaceStepsAcrossSample(x, n, g.wholePixel, dxdu, dxdv);
   vec2 steps = pathStepsAcrossPixel(
       opticalPathGradient(x, uLightPosition_world, uCameraPosition_world, uIndexOfRefraction,
                           uCameraUnwarp != 0),
       dxdu, dxdv);
   vec3 kernel = footprintKernel(path_m, steps, uStart_m, uBinWidth_m);
-  depositContribution(local, kernel, radiance * uSampleWeight, lostBefore, lostAfter);
+  depositContribution(local, kernel, radiance * g.weight, lostBefore, lostAfter);
 #else
   // Point sampling: one sample gives the bytes of before sub-pixel samples.
 #if PIXEL_SAMPLES > 1
-  radiance = radiance * uSampleWeight;
+  radiance = radiance * g.weight;
 #endif
   int bin = binOfPath(path_m, uStart_m, uBinWidth_m);
   if (bin < 0 || bin >= uBins) {
@@ -102,9 +102,12 @@ void main() {
   float lostBefore = outside[2u * local];
   float lostAfter = outside[2u * local + 1u];
 #if PIXEL_SAMPLES == 1
-  gatherSample(local, xy, 0, lostBefore, lostAfter);
+  gatherSample(local, pixelSample(xy, 1, 0), lostBefore, lostAfter);
 #else
-  for (int s = 0; s < kSamplesPerPixel; ++s) gatherSample(local, xy, s, lostBefore, lostAfter);
+  int samples = samplesOfPixel(pixel);
+  for (int s = 0; s < samples; ++s) {
+    gatherSample(local, pixelSample(xy, samples, s), lostBefore, lostAfter);
+  }
 #endif
   outside[2u * local] = lostBefore;
   outside[2u * local + 1u] = lostAfter;

@@ -7,7 +7,9 @@
 // volumes agree to float rounding.
 //
 // The including gather defines FOOTPRINT_HISTOGRAM (the name of its float
-// volume array) and declares uBins and uCameraPosition_world.
+// volume array) and declares uBins and uCameraPosition_world. A sample's
+// footprint is its sub-pixel (uSampleStepX/Y), or with ADAPTIVE_SAMPLES, for a
+// masked-out pixel's one centre sample, the whole pixel (uPixelStepX/Y).
 //
 // llvmpipe ends every loop of an invocation after 65535 iterations in total
 // (see indirect_gather.comp): the up to FOOTPRINT_DIRECT_BINS narrow bins and
@@ -30,13 +32,28 @@ layout(std430, binding = TOFSIM_SSBO_FOOTPRINT_WRITTEN) buffer FootprintWritten 
 uniform vec3 uCameraForward;  // the camera's unit view axis
 uniform vec3 uSampleStepX;    // Camera::rayStepAlongX() / pixel_samples: one sub-pixel step
 uniform vec3 uSampleStepY;    // Camera::rayStepAlongY() / pixel_samples
+#ifdef ADAPTIVE_SAMPLES
+// Camera::rayStepAlongX() / Y(), unscaled: the step of a masked-out pixel's
+// one centre sample, whose footprint is the whole pixel (surface_samples.glsl).
+uniform vec3 uPixelStepX;
+uniform vec3 uPixelStepY;
+#endif
 
-// The surface point's steps across the sample's sub-pixel (dx/du, dx/dv),
-// from the ray differentials on its tangent plane.
-void surfaceStepsAcrossSample(vec3 x, vec3 n, out vec3 dxdu, out vec3 dxdv) {
+// The surface point's steps across the sample's footprint (dx/du, dx/dv),
+// from the ray differentials on its tangent plane: the sample's sub-pixel, or
+// with wholePixel (only with ADAPTIVE_SAMPLES) the whole pixel.
+void surfaceStepsAcrossSample(vec3 x, vec3 n, bool wholePixel, out vec3 dxdu, out vec3 dxdv) {
   vec3 toSurface = x - uCameraPosition_world;
-  dxdu = surfaceStepAcrossPixel(toSurface, uCameraForward, uSampleStepX, n);
-  dxdv = surfaceStepAcrossPixel(toSurface, uCameraForward, uSampleStepY, n);
+  vec3 stepX = uSampleStepX;
+  vec3 stepY = uSampleStepY;
+#ifdef ADAPTIVE_SAMPLES
+  if (wholePixel) {
+    stepX = uPixelStepX;
+    stepY = uPixelStepY;
+  }
+#endif
+  dxdu = surfaceStepAcrossPixel(toSurface, uCameraForward, stepX, n);
+  dxdv = surfaceStepAcrossPixel(toSurface, uCameraForward, stepY, n);
 }
 
 // Narrow kernel: bin first + j (j < count) gets the mass between its edges

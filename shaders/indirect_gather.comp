@@ -1,13 +1,16 @@
 #version 450 core
 // One indirect bounce (Eqs. 6, 7, 15, 17): one thread per pixel loops over the
-// batch's VPLs in index order and, for each, over the pixel's PIXEL_SAMPLES^2
-// G-buffer samples, and adds each contribution to the bin of its full optical
-// path  t_l + eta (|x_l - x| + |x - c|); with PIXEL_FOOTPRINT it is spread
-// over that path's distribution across the sample's sub-pixel and the VPL's
-// patch (footprint_deposit.glsl). Being the only writer of its pixel's bins,
-// and adding in a fixed order (VPL, then sample: an order that does not
-// depend on where the batches and dispatches split the VPLs), makes the sum
-// reproducible bit for bit whatever the batch and segment sizes.
+// batch's VPLs in index order and, for each, over the pixel's G-buffer samples
+// (its PIXEL_SAMPLES^2 sub-pixel samples, or with ADAPTIVE_SAMPLES one centre
+// sample where the mask says so: surface_samples.glsl), and adds each
+// contribution to the bin of its full optical path  t_l + eta (|x_l - x| +
+// |x - c|); with PIXEL_FOOTPRINT it is spread over that path's distribution
+// across the sample's footprint (its sub-pixel, or the whole pixel for a
+// centre sample) and the VPL's patch (footprint_deposit.glsl). Being the
+// only writer of its pixel's bins, and adding in a fixed order (VPL, then
+// sample: an order that does not depend on where the batches and dispatches
+// split the VPLs), makes the sum reproducible bit for bit whatever the batch
+// and segment sizes.
 // With GLTF_MATERIALS (render.materials: gltf) both ends of a contribution
 // carry the glTF BRDF (gltf_brdf.glsl): the VPL's toward x for the direction
 // its light arrived from (clamped at uVplBrdfClamp), and x's toward the
@@ -47,7 +50,6 @@ uniform uint uVplCount;     // VPLs in this dispatch
 uniform uint uIsmFirstVpl;  // first VPL whose ISM is at the start of the ISM buffer
 uniform float uGeometryClamp;  // <= 0: no clamping
 uniform float uSceneScale_m;
-uniform float uSampleWeight;  // 1 / PIXEL_SAMPLES^2: the sample's share of the pixel
 
 #ifdef PIXEL_FOOTPRINT
 #define FOOTPRINT_HISTOGRAM indirect
@@ -57,7 +59,8 @@ uniform float uSampleWeight;  // 1 / PIXEL_SAMPLES^2: the sample's share of the 
 // llvmpipe stops every loop of an invocation after 65535 iterations in total
 // (its infinite-loop guard), silently, and counts loop entries too. The
 // renderer sizes dispatches to stay well below (counting the sample loop and
-// the shadow rays per VPL: IndirectLight::vplsPerDispatch); an invocation that still
+// the shadow rays per VPL: IndirectLight::vplsPerDispatch, for a pixel of
+// PIXEL_SAMPLES^2 samples, the most any takes); an invocation that still
 // comes within a factor of two raises this flag so the render fails loudly
 // instead of losing light.
 const uint kLoopTripLimit = 30000u;
@@ -92,29 +95,28 @@ struct Sample {
 #endif
   float cameraPath;   // eta |x - c|, or 0 when unwarped
 #ifdef PIXEL_FOOTPRINT
-  vec3 dxdu, dxdv;    // the surface's steps across the sub-pixel
+  vec3 dxdu, dxdv;    // the surface's steps across the sample's footprint
 #endif
 };
 
-Sample loadSample(ivec2 xy, int s) {
+// Sample s of the pixel at xy, which takes `samples` (samplesOfPixel).
+Sample loadSample(ivec2 xy, int samples, int s) {
   Sample o;
-  ivec2 texel = sampleTexel(xy, s);
-  vec4 position = texelFetch(uGPosition, texel, 0);
-  o.lit = position.w != 0.0;
-  o.x = position.xyz;
-  o.n = texelFetch(uGNormal, texel, 0).xyz;
-  o.brdf = texelFetch(uGAlbedo, texel, 0).rgb / PI;
+  SurfaceSample g = pixelSample(xy, samples, s);
+  o.lit = g.position.w != 0.0;
+  o.x = g.position.xyz;
+  o.n = g.normal;
+  o.brdf = g.albedo / PI;
 #if defined(PIXEL_FOOTPRINT) || PIXEL_SAMPLES > 1
-  o.brdf = o.brdf * uSampleWeight;  // as the CPU's PixelSurface::brdf
+  o.brdf = o.brdf * g.weight;  // as the CPU's PixelSurface::brdf
 #endif
 #ifdef GLTF_MATERIALS
-  o.baseColor = texelFetch(uGAlbedo, texel, 0).rgb;
-  vec2 metallicRoughness = texelFetch(uGMetallicRoughness, texel, 0).rg;
-  o.metallic = metallicRoughness.x;
-  o.roughness = metallicRoughness.y;
+  o.baseColor = g.albedo;
+  o.metallic = g.metallicRoughness.x;
+  o.roughness = g.metallicRoughness.y;
   o.toCamera = normalize(uCameraPosition_world - o.x);
 #if defined(PIXEL_FOOTPRINT) || PIXEL_SAMPLES > 1
-  o.weight = uSampleWeight;
+  o.weight = g.weight;
 #else
   o.weight = 1.0;
 #endif
@@ -122,7 +124,7 @@ Sample loadSample(ivec2 xy, int s) {
   o.cameraPath = cameraPathLength(uCameraUnwarp != 0, uIndexOfRefraction,
                                   length(o.x - uCameraPosition_world));
 #ifdef PIXEL_FOOTPRINT
-  surfaceStepsAcrossSample(o.x, o.n, o.dxdu, o.dxdv);
+  surfaceStepsAcrossSample(o.x, o.n, g.wholePixel, o.dxdu, o.dxdv);
 #endif
   return o;
 }
@@ -194,8 +196,13 @@ void main() {
 #endif
   uint iterations = 0u;
 #if PIXEL_SAMPLES == 1
-  Sample at = loadSample(xy, 0);
+  Sample at = loadSample(xy, 1, 0);
   if (!at.lit) return;
+#else
+  // A masked-out pixel's one centre sample goes through the loop below: the
+  // additions of PIXEL_SAMPLES == 1 (VPL by VPL), in fewer loop trips than
+  // the N^2 the dispatch is sized for.
+  int samples = samplesOfPixel(pixel);
 #endif
   for (uint k = 0u; k < uVplCount; ++k) {
     ++iterations;
@@ -205,9 +212,9 @@ void main() {
 #else
     // Samples re-read per VPL: a VPL-major order keeps the bytes independent
     // of the dispatch split, and the G-buffer reads are cheap next to a VPL.
-    for (int s = 0; s < kSamplesPerPixel; ++s) {
+    for (int s = 0; s < samples; ++s) {
       ++iterations;
-      Sample at = loadSample(xy, s);
+      Sample at = loadSample(xy, samples, s);
       if (at.lit) gatherVpl(local, at, k, vpl, lostBefore, lostAfter, iterations);
     }
 #endif

@@ -4,6 +4,14 @@
 // pixel (x, y) is texel (x N + i, y N + j), rasterized at the sub-pixel centre
 // ((i + 1/2)/N - 1/2, (j + 1/2)/N - 1/2), the CPU backend's SurfaceImage
 // order. With N = 1 it is the pixel-centre G-buffer of before.
+//
+// With ADAPTIVE_SAMPLES (render.adaptive_pixel_samples, N > 1) a per-pixel
+// mask picks each pixel's samples: 1, its N x N sub-samples as above; 0, one
+// sample read from the pixel-centre G-buffer (the W x H maps of
+// pixel_samples: 1), standing for the whole pixel (weight 1, the whole pixel's
+// footprint). Which maps a sample comes from is decided here only
+// (samplesOfPixel, pixelSample), so both gathers sample the same pixels the
+// same way.
 #ifndef TOFSIM_SURFACE_SAMPLES_GLSL
 #define TOFSIM_SURFACE_SAMPLES_GLSL
 
@@ -18,10 +26,77 @@ layout(binding = TOFSIM_UNIT_G_ALBEDO) uniform sampler2D uGAlbedo;
 #ifdef GLTF_MATERIALS
 layout(binding = TOFSIM_UNIT_G_METALLIC_ROUGHNESS) uniform sampler2D uGMetallicRoughness;  // rg
 #endif
+uniform float uSampleWeight;  // 1 / PIXEL_SAMPLES^2: a sub-sample's share of the pixel
+
+#ifdef ADAPTIVE_SAMPLES
+layout(binding = TOFSIM_UNIT_CENTRE_POSITION) uniform sampler2D uCentrePosition;
+layout(binding = TOFSIM_UNIT_CENTRE_NORMAL) uniform sampler2D uCentreNormal;
+layout(binding = TOFSIM_UNIT_CENTRE_ALBEDO) uniform sampler2D uCentreAlbedo;
+#ifdef GLTF_MATERIALS
+layout(binding = TOFSIM_UNIT_CENTRE_METALLIC_ROUGHNESS) uniform sampler2D uCentreMetallicRoughness;
+#endif
+// Per pixel of the image (not of the segment): 1 = N x N samples, 0 = its centre.
+layout(std430, binding = TOFSIM_SSBO_SAMPLED_PIXELS) readonly buffer SampledPixels {
+  uint sampledPixels[];
+};
+#endif
 
 // G-buffer texel of sample s of the pixel at image position pixelXy.
 ivec2 sampleTexel(ivec2 pixelXy, int s) {
   return pixelXy * PIXEL_SAMPLES + ivec2(s % PIXEL_SAMPLES, s / PIXEL_SAMPLES);
+}
+
+// One sample's G-buffer texels and what it stands for.
+struct SurfaceSample {
+  vec4 position;  // xyz world, w = 1 on a surface, 0 else
+  vec3 normal;    // unit, facing the camera
+  vec3 albedo;
+#ifdef GLTF_MATERIALS
+  vec2 metallicRoughness;
+#endif
+  float weight;     // share of the pixel: uSampleWeight, 1 for a whole-pixel sample
+  bool wholePixel;  // its footprint is the whole pixel, not a sub-pixel (footprint_deposit.glsl)
+};
+
+// Samples the pixel (image index `pixel`) takes, in order 0, 1, ...
+int samplesOfPixel(uint pixel) {
+#ifdef ADAPTIVE_SAMPLES
+  if (sampledPixels[pixel] == 0u) return 1;
+#endif
+  return kSamplesPerPixel;
+}
+
+// Sample s of the pixel at image position xy, which takes `samples`
+// (samplesOfPixel) samples.
+SurfaceSample pixelSample(ivec2 xy, int samples, int s) {
+  SurfaceSample o;
+#ifdef ADAPTIVE_SAMPLES
+  // Only a masked-out pixel takes one sample when N > 1: the pixel_samples: 1
+  // sample, from the centre maps.
+  if (samples == 1) {
+    o.position = texelFetch(uCentrePosition, xy, 0);
+    o.normal = texelFetch(uCentreNormal, xy, 0).xyz;
+    o.albedo = texelFetch(uCentreAlbedo, xy, 0).rgb;
+#ifdef GLTF_MATERIALS
+    o.metallicRoughness = texelFetch(uCentreMetallicRoughness, xy, 0).rg;
+#endif
+    o.weight = 1.0;
+    o.wholePixel = true;
+    return o;
+  }
+#endif
+  ivec2 texel = sampleTexel(xy, s);
+  o.position = texelFetch(uGPosition, texel, 0);
+  o.normal = texelFetch(uGNormal, texel, 0).xyz;
+  o.albedo = texelFetch(uGAlbedo, texel, 0).rgb;
+#ifdef GLTF_MATERIALS
+  o.metallicRoughness = texelFetch(uGMetallicRoughness, texel, 0).rg;
+#endif
+  o.weight = uSampleWeight;
+  // With N = 1 the one sample is the whole pixel, and uSampleStepX/Y are its
+  // steps: either choice of footprint steps gives the same numbers.
+  o.wholePixel = false;
+  return o;
 }
 
 #endif  // TOFSIM_SURFACE_SAMPLES_GLSL

@@ -91,6 +91,7 @@ struct IrCase {
   int rsm;
   bool footprint;
   int pixelSamples;
+  bool adaptive = false;  ///< render.adaptive_pixel_samples
 };
 
 std::vector<IrCase> irCases(bool box) {
@@ -107,11 +108,21 @@ std::vector<IrCase> irCases(bool box) {
     }
   }
   if (!box) return cases;
-  // Against the pixel-area truth the silhouettes need sub-pixel samples.
+  // Against the pixel-area truth the silhouettes need sub-pixel samples:
+  // everywhere (2 x 2), and only at the G-buffer's edges (2 x 2, 3 x 3 and
+  // 4 x 4 with RSM 32^2).
   for (std::size_t i = 0; i < 4; ++i) {
     IrCase supersampled = cases[i];
     supersampled.pixelSamples = 2;
     cases.push_back(supersampled);
+  }
+  for (const int n : {2, 3, 4}) {
+    for (const std::size_t i : {std::size_t{0}, std::size_t{2}}) {
+      IrCase adaptive = cases[i];
+      adaptive.pixelSamples = n;
+      adaptive.adaptive = true;
+      cases.push_back(adaptive);
+    }
   }
   return cases;
 }
@@ -177,6 +188,7 @@ int main(int argc, char** argv) {
       "| renderer | setting | seconds | steady rel. L1 | transient rel. L1 "
       "|\n|---|---|---|---|---|\n");
   std::vector<std::pair<std::string, Measured>> irRuns;
+  std::vector<capture::PassSeconds> irPasses;
   for (const IrCase& c : irCases(box)) {
     capture::RenderJob irJob = job;
     irJob.settings.indirect.visibility = c.visibility;
@@ -185,16 +197,33 @@ int main(int argc, char** argv) {
     irJob.settings.pixel_footprint = c.footprint;
     irJob.settings.indirect.vpl_footprint = c.footprint;
     irJob.settings.pixel_samples = c.pixelSamples;
+    irJob.settings.adaptive_pixel_samples = c.adaptive;
     const ir::IrRenderer renderer = makeIr();
-    const Measured m =
-        measure(irJob, truth, [&](capture::VolumeCollector& out) { renderer.render(irJob, out); });
+    capture::RenderResult result;
+    const Measured m = measure(irJob, truth, [&](capture::VolumeCollector& out) {
+      result = renderer.render(irJob, out);
+    });
+    irPasses.push_back(result.passSeconds);
     const std::string setting = std::string(c.name) + ", RSM " + std::to_string(c.rsm) + "^2" +
                                 (c.footprint ? ", footprint" : ", no footprint") +
-                                (c.pixelSamples > 1 ? ", pixel_samples 2" : "");
+                                (c.pixelSamples > 1
+                                     ? ", pixel_samples " + std::to_string(c.pixelSamples) +
+                                           (c.adaptive ? " at edges" : "")
+                                     : "");
     std::printf("| IR | %s | %.2f | %.4f | %.4f |\n", setting.c_str(), m.seconds,
                 m.error.steadyRelativeL1, m.error.transientRelativeL1);
     irRuns.emplace_back(setting, m);
   }
+  std::printf(
+      "\n| IR setting | surfaces | VPLs | visibility | direct | indirect | read-back | other "
+      "|\n|---|---|---|---|---|---|---|---|\n");
+  for (std::size_t i = 0; i < irRuns.size(); ++i) {
+    const capture::PassSeconds& p = irPasses[i];
+    std::printf("| %s | %.3f | %.3f | %.3f | %.3f | %.3f | %.3f | %.3f |\n",
+                irRuns[i].first.c_str(), p.surfaces, p.vpls, p.visibility, p.direct, p.indirect,
+                p.readBack, p.other);
+  }
+  std::printf("\n");
   std::vector<std::pair<double, double>> timeError;
   for (int spp = 1; spp <= 4096; spp *= 2) {
     const Measured m = referenceRun(job, truth, spp, filter, bounces);

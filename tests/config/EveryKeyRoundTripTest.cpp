@@ -54,6 +54,7 @@ render:
   strict: true
   pixel_footprint: false
   pixel_samples: 3
+  adaptive_pixel_samples: true
   materials: gltf
   indirect:
     enabled: false

@@ -3,11 +3,13 @@
 // what is discrete: which pixels see a surface, how many VPLs, in which order;
 // within float tolerance in the values), and volumes that agree, both rendered
 // through the one IR driver, on the plane, the corner and the Cornell box,
-// with point pixels and pixel footprints, one sample per pixel and 2 x 2.
+// with point pixels and pixel footprints, one sample per pixel and 2 x 2, and
+// 2 x 2 at the edges only (render.adaptive_pixel_samples).
 // Needs a GL context (llvmpipe in CI).
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "GpuScene.h"
@@ -20,6 +22,7 @@
 #include "tofsim/capture/VolumeCollector.h"
 #include "tofsim/cpu/CpuBackend.h"
 #include "tofsim/ir/IrRenderer.h"
+#include "tofsim/ir/SampledPixels.h"
 #include "tofsim/reference/RayScene.h"
 #include "tofsim/render/GlBackend.h"
 #include "tofsim/scene/GltfLoader.h"
@@ -180,6 +183,7 @@ void expectSameVolumes(const capture::RenderJob& job, double steadyTol, double t
   const Rendered gl = renderOn(std::make_unique<render::GlBackend>(test::glTestContext()), job);
   const Rendered cpu = renderOn(std::make_unique<CpuBackend>(CpuBackendOptions{2, true}), job);
   EXPECT_EQ(cpu.result.vpls, gl.result.vpls);
+  EXPECT_EQ(cpu.result.sampledPixels, gl.result.sampledPixels);
   const struct {
     const char* name;
     const TransientVolume& cpu;
@@ -296,6 +300,51 @@ TEST(CpuMatchesGlGLTest, CornellBoxVolumes) {
     } else {
       expectSameVolumesForEachPixelModel(job, 1e-2, 1e-2);
     }
+  }
+}
+
+// render.adaptive_pixel_samples: each backend's centre G-buffer picks the
+// sampled pixels (ir::sampledPixels); they must agree, or a pixel would take
+// one sample on one backend and N x N on the other.
+void expectSameSampledPixels(const capture::RenderJob& job) {
+  render::GlBackend gl(test::glTestContext());
+  CpuBackend cpu({2, true});
+  const int32_t w = job.camera.width, h = job.camera.height;
+  const std::vector<uint8_t> onCpu = ir::sampledPixels(cpu.prepareSurfaces(job), w, h);
+  EXPECT_EQ(onCpu, ir::sampledPixels(gl.prepareSurfaces(job), w, h));
+  EXPECT_GT(std::count(onCpu.begin(), onCpu.end(), 1), 0);
+}
+
+TEST(CpuMatchesGlGLTest, AdaptiveSamplesPickTheSamePixels) {
+  expectSameSampledPixels(test::CornerJob(24).job);
+  const scene::Scene scene = scene::loadGltf(TOFSIM_SOURCE_DIR "/configs/scenes/cornell_box.gltf");
+  expectSameSampledPixels(test::cornellBoxJob(scene, 32, 300, 0.01));
+}
+
+// And the volumes agree as the uniform sampling's do (expectSameVolumes:
+// exact visibility and ISMs, the footprint, 2 x 2 at the edges).
+TEST(CpuMatchesGlGLTest, CornerAndCornellBoxVolumesWithAdaptiveSamples) {
+  test::CornerJob corner(24);
+  corner.job.settings.indirect.rsm_resolution = 16;
+  corner.job.settings.indirect.points_per_vpl = 500;
+  corner.job.settings.shadow_map_resolution = 512;
+  const scene::Scene scene = scene::loadGltf(TOFSIM_SOURCE_DIR "/configs/scenes/cornell_box.gltf");
+  capture::RenderJob box = test::cornellBoxJob(scene, 32, 300, 0.01);
+  box.settings.shadow_map_resolution = 512;
+  box.settings.indirect.rsm_resolution = 16;
+  box.settings.indirect.ism_resolution = 32;
+  box.settings.indirect.points_per_vpl = 1000;
+  for (capture::Visibility v : {capture::Visibility::Exact, capture::Visibility::Ism}) {
+    SCOPED_TRACE(v == capture::Visibility::Ism ? "ism" : "exact");
+    for (capture::RenderJob* job : {&corner.job, &box}) {
+      job->settings.indirect.visibility = v;
+      job->settings.pixel_samples = 2;
+      job->settings.adaptive_pixel_samples = true;
+    }
+    expectSameVolumes(corner.job, 1e-3, 1e-3);
+    // The box's ISMs: as CornellBoxVolumes.
+    const double boxTol = v == capture::Visibility::Ism ? 3e-2 : 1e-2;
+    expectSameVolumes(box, boxTol, boxTol);
   }
 }
 

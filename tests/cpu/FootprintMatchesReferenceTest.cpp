@@ -39,6 +39,8 @@ VolumeCollector renderReference(const RenderJob& job, int samples) {
 struct Errors {
   double footprint = 0.0;   ///< total transient relative L1, IR with footprint vs reference
   double footprint3 = 0.0;  ///< the same with 3 x 3 sub-pixel samples (silhouettes)
+  double adaptive3 = 0.0;   ///< 3 x 3 samples only at edges (render.adaptive_pixel_samples)
+  double sampledShare = 0.0;  ///< the share of pixels that took them
   double point = 0.0;       ///< the same with point pixels
   double noise = 0.0;       ///< reference vs reference with another seed
 };
@@ -57,12 +59,21 @@ Errors transientErrors(RenderJob job, int samples) {
   samples3.settings.pixel_samples = 3;
   e.footprint3 =
       compare::compareVolumes(renderIr(samples3).total(), ref.total()).transientRelativeL1;
+  samples3.settings.adaptive_pixel_samples = true;
+  VolumeCollector adaptive(job.camera.width, job.camera.height, job.settings.time, 3);
+  const RenderResult adaptiveResult =
+      ir::IrRenderer(std::make_unique<CpuBackend>(CpuBackendOptions{2, true}))
+          .render(samples3, adaptive);
+  e.adaptive3 = compare::compareVolumes(adaptive.total(), ref.total()).transientRelativeL1;
+  e.sampledShare = static_cast<double>(adaptiveResult.sampledPixels) /
+                   (static_cast<double>(job.camera.width) * job.camera.height);
   job.settings.pixel_footprint = false;
   e.point = compare::compareVolumes(renderIr(job).total(), ref.total()).transientRelativeL1;
   std::printf(
       "transient relative L1 vs the box-filter reference: footprint %.4f, with 3 x 3 "
-      "samples %.4f, point pixels %.4f (reference seed-to-seed %.4f)\n",
-      e.footprint, e.footprint3, e.point, e.noise);
+      "samples %.4f, 3 x 3 at edges only %.4f (%.0f %% of the pixels), point pixels %.4f "
+      "(reference seed-to-seed %.4f)\n",
+      e.footprint, e.footprint3, e.adaptive3, 100.0 * e.sampledShare, e.point, e.noise);
   return e;
 }
 

@@ -78,6 +78,7 @@ std::string transientMetadataJson(const config::RunConfig& config, const capture
                 {"segments", result.segments},
                 {"vpls", result.vpls},
                 {"vpl_batches", result.vplBatches},
+                {"sampled_pixels", result.sampledPixels},
                 {"peak_gpu_bytes", result.peakGpuBytes},
                 {"energy_outside_time_axis", result.offAxis.total()},
                 {"energy_before_axis", result.offAxis.before},
@@ -86,6 +87,11 @@ std::string transientMetadataJson(const config::RunConfig& config, const capture
                 {"fraction_before_axis", lost.before},
                 {"fraction_after_axis", lost.after},
                 {"rejected_non_finite_values", result.nonFiniteRejected}};
+  const capture::PassSeconds& pass = result.passSeconds;
+  j["stats"]["pass_seconds"] = {{"surfaces", pass.surfaces},   {"vpls", pass.vpls},
+                                {"visibility", pass.visibility}, {"direct", pass.direct},
+                                {"indirect", pass.indirect},     {"read_back", pass.readBack},
+                                {"other", pass.other}};
   return j.dump(2) + "\n";
 }
 

@@ -15,27 +15,41 @@ double tanHalfFovY(const Camera& c) {
   return std::tan(glm::radians(static_cast<double>(c.fov_y_deg)) * 0.5);
 }
 
-// Image-plane coordinates at unit distance of pixel (x, y)'s centre.
-glm::dvec2 planePoint(const Camera& c, double x, double y) {
-  const double tanHalf = tanHalfFovY(c);
-  const double aspect = static_cast<double>(c.width) / c.height;
-  const double u = (2.0 * (x + 0.5) / c.width - 1.0) * tanHalf * aspect;
-  const double v = (1.0 - 2.0 * (y + 0.5) / c.height) * tanHalf;
-  return {u, v};
-}
 }  // namespace
 
+PixelRays::PixelRays(const Camera& camera)
+    : forward_(camera.forward()),
+      right_(camera.right()),
+      up_(camera.up()),
+      tanHalf_(tanHalfFovY(camera)),
+      aspect_(static_cast<double>(camera.width) / camera.height),
+      width_(camera.width),
+      height_(camera.height) {}
+
+glm::dvec2 PixelRays::planePoint(double x, double y) const {
+  const double u = (2.0 * (x + 0.5) / width_ - 1.0) * tanHalf_ * aspect_;
+  const double v = (1.0 - 2.0 * (y + 0.5) / height_) * tanHalf_;
+  return {u, v};
+}
+
+glm::vec3 PixelRays::towards(double x, double y) const {
+  const glm::dvec2 p = planePoint(x, y);
+  return glm::normalize(forward_ + static_cast<float>(p.x) * right_ +
+                        static_cast<float>(p.y) * up_);
+}
+
+glm::vec3 PixelRays::direction(int32_t x, int32_t y) const { return towards(x, y); }
+
+glm::vec3 PixelRays::direction(int32_t x, int32_t y, glm::vec2 offset) const {
+  return towards(x + static_cast<double>(offset.x), y + static_cast<double>(offset.y));
+}
+
 glm::vec3 Camera::pixelDirection(int32_t x, int32_t y) const {
-  const glm::dvec2 p = planePoint(*this, x, y);
-  return glm::normalize(glm::vec3(forward()) + static_cast<float>(p.x) * right() +
-                        static_cast<float>(p.y) * up());
+  return PixelRays(*this).direction(x, y);
 }
 
 glm::vec3 Camera::pixelDirection(int32_t x, int32_t y, glm::vec2 offset) const {
-  const glm::dvec2 p =
-      planePoint(*this, x + static_cast<double>(offset.x), y + static_cast<double>(offset.y));
-  return glm::normalize(glm::vec3(forward()) + static_cast<float>(p.x) * right() +
-                        static_cast<float>(p.y) * up());
+  return PixelRays(*this).direction(x, y, offset);
 }
 
 glm::vec3 Camera::rayStepAlongX() const {
@@ -52,7 +66,7 @@ double Camera::pixelSolidAngle_sr(int32_t x, int32_t y) const {
   // A pixel of area dA on the unit-distance plane subtends dA cos^3(theta).
   const double tanHalf = tanHalfFovY(*this);
   const double pixelSide = 2.0 * tanHalf / height;
-  const glm::dvec2 p = planePoint(*this, x, y);
+  const glm::dvec2 p = PixelRays(*this).planePoint(x, y);
   const double r2 = 1.0 + p.x * p.x + p.y * p.y;
   return pixelSide * pixelSide / (r2 * std::sqrt(r2));
 }

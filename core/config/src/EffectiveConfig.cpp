@@ -61,6 +61,7 @@ YAML::Node renderNode(const RunConfig& config) {
   n["strict"] = config.strict;
   n["pixel_footprint"] = r.pixel_footprint;
   n["pixel_samples"] = r.pixel_samples;
+  n["adaptive_pixel_samples"] = r.adaptive_pixel_samples;
   n["materials"] = r.materials == capture::MaterialModel::Gltf ? "gltf" : "lambertian";
   YAML::Node i;
   i["enabled"] = r.indirect.enabled;

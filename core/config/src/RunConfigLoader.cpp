@@ -187,6 +187,7 @@ void parseRender(const ConfigNode& node, RunConfig& out) {
   r.memory_budget_bytes = static_cast<std::size_t>(budget);
   r.pixel_footprint = node.getBool("pixel_footprint", r.pixel_footprint);
   r.pixel_samples = static_cast<int32_t>(intInRange(node, "pixel_samples", r.pixel_samples, 1, 16));
+  r.adaptive_pixel_samples = node.getBool("adaptive_pixel_samples", r.adaptive_pixel_samples);
   const std::string materials = node.getString("materials", "lambertian");
   if (materials == "lambertian" || materials == "gltf") {
     r.materials =

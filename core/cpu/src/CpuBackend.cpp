@@ -46,29 +46,46 @@ ir::DeviceLimits CpuBackend::limits() const {
   return {1 << 16, std::size_t{1} << 40, std::size_t{1} << 32};
 }
 
-std::vector<float> CpuBackend::prepareSurfaces(const capture::RenderJob& job) {
+ir::CentreSurfaces CpuBackend::prepareSurfaces(const capture::RenderJob& job) {
   TOFSIM_CHECK(job.scene != nullptr);
   job_ = job;
   vpls_.reset();  // a new render: nothing of the previous one survives
   ism_.reset();
+  centres_.reset();
   scene_ = std::make_unique<reference::RayScene>(*job.scene, threads_);
   const int32_t samples = job.settings.pixel_samples;
   surfaces_ = std::make_unique<SurfaceImage>(traceSurfaces(*scene_, job.camera, threads_, samples));
   const scene::Bounds b = job.scene->bounds();
   sceneScale_m_ = std::max(glm::length(b.max - b.min), 1e-6f);
-  // The driver's G-buffer (depth, the light seen by the camera) is the pixel
-  // centres', whatever the sub-pixel samples.
-  const SurfaceImage centres =
-      samples == 1 ? SurfaceImage{} : traceSurfaces(*scene_, job.camera, threads_, 1);
-  const SurfaceImage& image = samples == 1 ? *surfaces_ : centres;
-  std::vector<float> positions(image.size() * 4);
-  for (std::size_t i = 0; i < image.size(); ++i) {
-    for (int k = 0; k < 4; ++k) positions[i * 4 + k] = image.position[i][k];
+  // The driver's G-buffer (depth, the light seen by the camera, the adaptive
+  // samples' edges) is the pixel centres', whatever the sub-pixel samples;
+  // adaptive sampling keeps it for the pixels that take one sample.
+  if (samples > 1) {
+    centres_ = std::make_unique<SurfaceImage>(traceSurfaces(*scene_, job.camera, threads_, 1));
   }
-  return positions;
+  const SurfaceImage& image = samples == 1 ? *surfaces_ : *centres_;
+  ir::CentreSurfaces out;
+  out.positions.resize(image.size() * 4);
+  out.normals.resize(image.size() * 4);
+  for (std::size_t i = 0; i < image.size(); ++i) {
+    for (int k = 0; k < 4; ++k) {
+      out.positions[i * 4 + k] = image.position[i][k];
+      out.normals[i * 4 + k] = image.normal[i][k];
+    }
+  }
+  if (!job.settings.adaptive_pixel_samples) centres_.reset();
+  return out;
 }
 
-std::size_t CpuBackend::samplesPerPixel() const {
+void CpuBackend::setSampledPixels(const std::vector<uint8_t>& sampled) {
+  TOFSIM_CHECK_MSG(centres_ != nullptr && surfaces_ != nullptr,
+                   "setSampledPixels needs adaptive_pixel_samples with pixel_samples > 1");
+  TOFSIM_CHECK_EQ(sampled.size(), centres_->side.size());
+  surfaces_ = std::make_unique<SurfaceImage>(adaptiveSurfaces(*centres_, *surfaces_, sampled));
+  centres_.reset();
+}
+
+std::size_t CpuBackend::maxSamplesPerPixel() const {
   const auto n = static_cast<std::size_t>(job_.settings.pixel_samples);
   return n * n;
 }
@@ -116,8 +133,9 @@ void CpuBackend::allocate(std::size_t pixelsPerSegment, std::size_t vplsPerBatch
   // zero and integratePixel clears what it read.
   footprint_.reset(job_.settings.pixel_footprint ? new double[floats] : nullptr);
   footprintWritten_.assign(pixelsPerSegment, 0);
-  segmentSurfaces_.resize(pixelsPerSegment * samplesPerPixel());
-  segmentLit_.resize(pixelsPerSegment * samplesPerPixel());
+  segmentSurfaces_.resize(pixelsPerSegment * maxSamplesPerPixel());
+  segmentLit_.resize(pixelsPerSegment * maxSamplesPerPixel());
+  segmentFirstSample_.resize(pixelsPerSegment + 1);
   if (ism_) ism_->allocate(vplsPerBatch);
 }
 
@@ -142,33 +160,47 @@ void CpuBackend::beginSegment(std::size_t firstPixel, std::size_t count) {
   const capture::RenderSettings& s = job_.settings;
   const capture::Camera& camera = job_.camera;
   const auto eta = static_cast<float>(s.index_of_refraction);
-  const std::size_t perPixel = samplesPerPixel();
-  // Each sample stands for 1 / N^2 of the pixel and its footprint is its
-  // sub-pixel: the ray steps shrink by N.
-  const float weight = 1.0f / static_cast<float>(perPixel);
-  const float side = 1.0f / static_cast<float>(s.pixel_samples);
   const glm::vec3 forward = camera.forward();
-  const glm::vec3 stepX = camera.rayStepAlongX() * side, stepY = camera.rayStepAlongY() * side;
-  for (std::size_t i = 0; i < count * perPixel; ++i) {
-    const std::size_t p = firstPixel * perPixel + i;
-    segmentLit_[i] = surfaces_->position[p].w != 0.0f;
-    PixelSurface& surface = segmentSurfaces_[i];
-    surface.x = glm::vec3(surfaces_->position[p]);
-    surface.n = glm::vec3(surfaces_->normal[p]);
-    surface.brdf = glm::vec3(surfaces_->albedo[p]) / physics::PI * weight;
-    if (s.materials == capture::MaterialModel::Gltf) {
-      surface.baseColor = glm::vec3(surfaces_->albedo[p]);
-      surface.metallic = surfaces_->metallicRoughness[p].x;
-      surface.roughness = surfaces_->metallicRoughness[p].y;
-      surface.toCamera = glm::normalize(camera.position_world - surface.x);
-      surface.weight = weight;
-    }
-    surface.cameraPath_m = physics::cameraPathLength(
-        s.camera_unwarp, eta, glm::length(surface.x - camera.position_world));
-    const glm::vec3 toSurface = surface.x - camera.position_world;
-    surface.dxdu = physics::surfaceStepAcrossPixel(toSurface, forward, stepX, surface.n);
-    surface.dxdv = physics::surfaceStepAcrossPixel(toSurface, forward, stepY, surface.n);
+  firstSample_ = surfaces_->firstSample[firstPixel];
+  for (std::size_t i = 0; i <= count; ++i) {
+    segmentFirstSample_[i] = surfaces_->firstSample[firstPixel + i] - firstSample_;
   }
+  for (std::size_t pixel = 0; pixel < count; ++pixel) {
+    // Each of a pixel's N x N samples stands for 1 / N^2 of it and its
+    // footprint is its sub-pixel: the ray steps shrink by N (N = 1: the
+    // pixel-centre sample of pixel_samples: 1, the same float operations).
+    const int32_t n = surfaces_->side[firstPixel + pixel];
+    const float weight = 1.0f / static_cast<float>(static_cast<std::size_t>(n) * n);
+    const float side = 1.0f / static_cast<float>(n);
+    const glm::vec3 stepX = camera.rayStepAlongX() * side, stepY = camera.rayStepAlongY() * side;
+    for (std::size_t i = segmentFirstSample_[pixel]; i < segmentFirstSample_[pixel + 1]; ++i) {
+      fillSurface(i, weight, forward, stepX, stepY, eta);
+    }
+  }
+}
+
+void CpuBackend::fillSurface(std::size_t i, float weight, const glm::vec3& forward,
+                             const glm::vec3& stepX, const glm::vec3& stepY, float eta) {
+  const capture::RenderSettings& s = job_.settings;
+  const capture::Camera& camera = job_.camera;
+  const std::size_t p = firstSample_ + i;
+  segmentLit_[i] = surfaces_->position[p].w != 0.0f;
+  PixelSurface& surface = segmentSurfaces_[i];
+  surface.x = glm::vec3(surfaces_->position[p]);
+  surface.n = glm::vec3(surfaces_->normal[p]);
+  surface.brdf = glm::vec3(surfaces_->albedo[p]) / physics::PI * weight;
+  if (s.materials == capture::MaterialModel::Gltf) {
+    surface.baseColor = glm::vec3(surfaces_->albedo[p]);
+    surface.metallic = surfaces_->metallicRoughness[p].x;
+    surface.roughness = surfaces_->metallicRoughness[p].y;
+    surface.toCamera = glm::normalize(camera.position_world - surface.x);
+    surface.weight = weight;
+  }
+  surface.cameraPath_m = physics::cameraPathLength(
+      s.camera_unwarp, eta, glm::length(surface.x - camera.position_world));
+  const glm::vec3 toSurface = surface.x - camera.position_world;
+  surface.dxdu = physics::surfaceStepAcrossPixel(toSurface, forward, stepX, surface.n);
+  surface.dxdv = physics::surfaceStepAcrossPixel(toSurface, forward, stepY, surface.n);
 }
 
 double* CpuBackend::footprintOf(std::size_t i) {
@@ -205,16 +237,17 @@ void CpuBackend::gatherDirectTile(std::size_t tile) {
   const auto start_m = static_cast<float>(s.time.start_m());
   const auto width_m = static_cast<float>(s.time.bin_width_m());
   const auto eta = static_cast<float>(s.index_of_refraction);
-  const std::size_t perPixel = samplesPerPixel();
-  const float weight = 1.0f / static_cast<float>(perPixel);
   const std::size_t end = std::min(pixelCount_, (tile + 1) * kTilePixels);
   for (std::size_t i = tile * kTilePixels; i < end; ++i) {
     float* histogram = &direct_[i * bins * kChannels];
     physics::OffAxisSums& lost = outside_[i];
-    for (std::size_t sample = i * perPixel; sample < (i + 1) * perPixel; ++sample) {
+    const std::size_t perPixel = segmentFirstSample_[i + 1] - segmentFirstSample_[i];
+    const float weight = 1.0f / static_cast<float>(perPixel);
+    for (std::size_t sample = segmentFirstSample_[i]; sample < segmentFirstSample_[i + 1];
+         ++sample) {
       if (!segmentLit_[sample]) continue;
       // The steps of direct_gather.comp.
-      const std::size_t p = firstPixel_ * perPixel + sample;
+      const std::size_t p = firstSample_ + sample;
       const PixelSurface& surface = segmentSurfaces_[sample];
       const glm::vec3 x = surface.x, n = surface.n;
       const glm::vec3 toLight = light.position_world - x;
@@ -299,29 +332,30 @@ void CpuBackend::gatherTile(std::size_t tile, std::size_t firstVpl, std::size_t 
   const bool exact = indirectVisibility_ && s.indirect.visibility == capture::Visibility::Exact;
   const float eps = 1e-4f * sceneScale_m_;  // as indirect_gather.comp's exact visibility
   const VplArrays& v = *vpls_;
-  const std::size_t perPixel = samplesPerPixel();
   // One block of terms per sample: contributions are added VPL by VPL and,
   // for each VPL, sample by sample, so the order of the additions (and the
   // bytes) does not depend on where the blocks and batches start.
-  std::vector<VplTerms> terms(perPixel);
+  std::vector<VplTerms> terms(maxSamplesPerPixel());
   const std::size_t end = std::min(pixelCount_, (tile + 1) * kTilePixels);
   for (std::size_t first = firstVpl; first < firstVpl + count; first += kVplBlock) {
     const std::size_t n = std::min(kVplBlock, firstVpl + count - first);
     for (std::size_t i = tile * kTilePixels; i < end; ++i) {
       float* histogram = &indirect_[i * bins * kChannels];
       physics::OffAxisSums& lost = outside_[i];
+      const std::size_t firstOfPixel = segmentFirstSample_[i];
+      const std::size_t perPixel = segmentFirstSample_[i + 1] - firstOfPixel;
       for (std::size_t s = 0; s < perPixel; ++s) {
-        if (segmentLit_[i * perPixel + s]) {
-          vplTerms(segmentSurfaces_[i * perPixel + s], v, first, n, c, terms[s]);
+        if (segmentLit_[firstOfPixel + s]) {
+          vplTerms(segmentSurfaces_[firstOfPixel + s], v, first, n, c, terms[s]);
         }
       }
       for (std::size_t k = 0; k < n; ++k) {
         for (std::size_t s = 0; s < perPixel; ++s) {
-          if (!segmentLit_[i * perPixel + s]) continue;
+          if (!segmentLit_[firstOfPixel + s]) continue;
           const VplTerms& t = terms[s];
           const int32_t bin = t.bin[k];
           if (bin == kNoLight) continue;
-          const PixelSurface& surface = segmentSurfaces_[i * perPixel + s];
+          const PixelSurface& surface = segmentSurfaces_[firstOfPixel + s];
           const std::size_t vpl = first + k;
           if (exact) {
             const glm::vec3 from = glm::vec3(v.px[vpl], v.py[vpl], v.pz[vpl]) +
@@ -335,9 +369,17 @@ void CpuBackend::gatherTile(std::size_t tile, std::size_t firstVpl, std::size_t 
           if (c.footprint) {
             // physics::depositNarrow / depositWide, from the block's precomputed terms.
             const int32_t narrowBins = t.count[k];
-            for (int32_t j = 0; j < narrowBins; ++j) {
+            const int32_t vectorBins = std::min(narrowBins, kVectorNarrowBins);
+            for (int32_t j = 0; j < vectorBins; ++j) {
               physics::depositNarrowBin(histogram, bins, t.first[k] + j, t.mass[j][k], energy,
                                         lost);
+            }
+            if (narrowBins > kVectorNarrowBins) {
+              const glm::vec3 kernel(t.centre[k], t.wide[k], t.narrow[k]);
+              for (int32_t j = kVectorNarrowBins; j < narrowBins; ++j) {
+                physics::depositNarrowBin(histogram, bins, t.first[k] + j,
+                                          physics::footprintNarrowMass(kernel, j), energy, lost);
+              }
             }
             if (narrowBins == 0) {
               physics::depositWide(footprintOf(i), bins,

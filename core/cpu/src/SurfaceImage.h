@@ -17,7 +17,11 @@ namespace tofsim::cpu {
 struct SurfaceImage {
   int32_t width = 0;
   int32_t height = 0;
-  int32_t samplesPerSide = 1;                ///< N: sample s of pixel p is entry p * N * N + s
+  /// Pixel p's samples are entries [firstSample[p], firstSample[p + 1]), a
+  /// side[p] x side[p] grid of its sub-pixels (side 1: the pixel centre);
+  /// traceSurfaces gives every pixel the same N, adaptiveSurfaces mixes 1 and N.
+  std::vector<std::size_t> firstSample;
+  std::vector<int32_t> side;
   std::vector<glm::vec4> position;           ///< xyz world, w = 1 on a surface, 0 else
   std::vector<glm::vec4> normal;             ///< xyz unit shading normal facing the viewpoint
   std::vector<glm::vec4> albedo;             ///< rgb diffuse albedo, a = 1
@@ -25,6 +29,9 @@ struct SurfaceImage {
   std::vector<glm::vec2> metallicRoughness;  ///< (metallic, roughness), render.materials: gltf
 
   std::size_t size() const { return position.size(); }
+  std::size_t samplesOf(std::size_t pixel) const {
+    return firstSample[pixel + 1] - firstSample[pixel];
+  }
 };
 
 /// Camera G-buffer: pixel (x, y), row 0 at the top, through
@@ -33,5 +40,10 @@ struct SurfaceImage {
 /// ((i + 1/2) / N - 1/2, (j + 1/2) / N - 1/2), entry j * N + i.
 SurfaceImage traceSurfaces(const reference::RayScene& scene, const capture::Camera& camera,
                            int threads, int32_t samplesPerSide = 1);
+
+/// render.adaptive_pixel_samples: pixel p's samples from `subSamples` (N x N
+/// per pixel) where sampled[p] is 1, else its one entry of `centres`.
+SurfaceImage adaptiveSurfaces(const SurfaceImage& centres, const SurfaceImage& subSamples,
+                              const std::vector<uint8_t>& sampled);
 
 }  // namespace tofsim::cpu

@@ -7,6 +7,7 @@
 #include "MemoryPlan.h"
 #include "tofsim/capture/DirectLightView.h"
 #include "tofsim/ir/BounceVpls.h"
+#include "tofsim/ir/SampledPixels.h"
 #include "tofsim/ir/SegmentStream.h"
 #include "tofsim/util/Error.h"
 
@@ -56,6 +57,20 @@ std::vector<GatherStep> planGathers(const BouncedVpls& bounced, std::size_t vpls
   return steps;
 }
 
+// Adds the wall seconds since the last lap (or construction) to a pass's sum.
+class PassClock {
+ public:
+  void lap(double& seconds) {
+    const auto now = std::chrono::steady_clock::now();
+    seconds += std::chrono::duration<double>(now - last_).count();
+    last_ = now;
+  }
+  void restart() { last_ = std::chrono::steady_clock::now(); }
+
+ private:
+  std::chrono::steady_clock::time_point last_ = std::chrono::steady_clock::now();
+};
+
 // One segment: the direct gather, then every VPL batch in increasing order
 // (building its visibility unless it is still resident), then the read-back.
 // With several bounces, each bounce's light is read out after its batches
@@ -65,7 +80,7 @@ class SegmentPasses {
  public:
   SegmentPasses(IrBackend& backend, const MemoryPlan& plan, std::size_t vplCount,
                 std::size_t floatsPerPixel, std::vector<GatherStep> steps, std::size_t bounces,
-                const ProgressCallback& progress, AxisLoss& offAxis)
+                const ProgressCallback& progress, AxisLoss& offAxis, PassSeconds& passSeconds)
       : backend_(backend),
         plan_(plan),
         vplCount_(vplCount),
@@ -73,13 +88,17 @@ class SegmentPasses {
         steps_(std::move(steps)),
         bounces_(bounces),
         progress_(progress),
-        offAxis_(offAxis) {}
+        offAxis_(offAxis),
+        seconds_(passSeconds) {}
 
   void operator()(const SegmentBuffers& buffers) {
     const std::size_t workUnits = plan_.segments.segmentCount * (1 + steps_.size());
     std::size_t done = buffers.index * (1 + steps_.size());
+    PassClock clock;
     backend_.beginSegment(buffers.pixels.first, buffers.pixels.count);
+    clock.lap(seconds_.readBack);  // clearing the accumulators, when needed
     backend_.gatherDirect();
+    clock.lap(seconds_.direct);
     if (progress_) progress_(++done, workUnits, "segment/VPL-batch passes");
     const bool resolved = bounces_ > 1;
     std::size_t b = 0;
@@ -90,16 +109,21 @@ class SegmentPasses {
         if (residentBatch_ != step.batch) {
           const std::size_t first = step.batch * plan_.vplsPerBatch;
           backend_.buildVisibility(first, std::min(plan_.vplsPerBatch, vplCount_ - first));
+          clock.lap(seconds_.visibility);
         }
         residentBatch_ = step.batch;
         backend_.gatherIndirect(step.first, step.count);
+        clock.lap(seconds_.indirect);
         if (progress_) progress_(++done, workUnits, "segment/VPL-batch passes");
+        clock.restart();  // the progress callback is not a pass
       }
       if (resolved && k + 1 < bounces_) backend_.takeIndirect(buffers.components[2 + k]);
+      clock.lap(seconds_.readBack);
     }
     float* lastIndirect = buffers.components[resolved ? 1 + bounces_ : 1];
     backend_.readSegment(buffers.components[0], lastIndirect, offAxis_);
     if (resolved) sumBounces(buffers);
+    clock.lap(seconds_.readBack);
   }
 
  private:
@@ -121,6 +145,7 @@ class SegmentPasses {
   std::size_t bounces_;
   const ProgressCallback& progress_;
   AxisLoss& offAxis_;
+  PassSeconds& seconds_;
   std::size_t residentBatch_ = static_cast<std::size_t>(-1);
 };
 
@@ -155,16 +180,25 @@ RenderResult IrRenderer::render(const RenderJob& job, SegmentSink& sink,
   validateJob(job, limits);
   RenderResult result;
 
-  const std::vector<float> positions = backend.prepareSurfaces(job);
+  PassClock clock;
+  const CentreSurfaces centres = backend.prepareSurfaces(job);
+  const std::vector<float>& positions = centres.positions;
   TOFSIM_CHECK_EQ(positions.size(),
                   static_cast<std::size_t>(job.camera.width) * job.camera.height * 4);
   result.depth_m = depthFromPositions(positions, job.camera);
+  if (job.settings.adaptive_pixel_samples && job.settings.pixel_samples > 1) {
+    const std::vector<uint8_t> sampled = sampledPixels(centres, job.camera.width, job.camera.height);
+    result.sampledPixels = static_cast<std::size_t>(std::count(sampled.begin(), sampled.end(), 1));
+    backend.setSampledPixels(sampled);
+  }
+  clock.lap(result.passSeconds.surfaces);
   // Bounce 1 from the backend's RSM, later bounces traced from it here, so
   // both backends gather the same VPLs of every bounce; bounced.firstOfBounce
   // keeps which VPLs are of which bounce (for bounce-resolved output).
   const BouncedVpls bounced = withLaterBounces(job, backend.generateVpls(job));
   const std::vector<Vpl>& vpls = bounced.vpls;
   backend.setVpls(vpls);
+  clock.lap(result.passSeconds.vpls);
 
   const MemoryPlan plan =
       planMemory(job, limits, backend.fixedBytes(), vpls.size(), backend.visibilityBytesPerVpl());
@@ -178,7 +212,8 @@ RenderResult IrRenderer::render(const RenderJob& job, SegmentSink& sink,
   const auto bounces = static_cast<std::size_t>(bounced.bounces());
   SegmentPasses passes(backend, plan, vpls.size(),
                        static_cast<std::size_t>(job.settings.time.bins) * kChannels,
-                       planGathers(bounced, plan.vplsPerBatch), bounces, progress, result.offAxis);
+                       planGathers(bounced, plan.vplsPerBatch), bounces, progress, result.offAxis,
+                       result.passSeconds);
   std::vector<std::string_view> names = {kDirect, kIndirect};
   if (bounces > 1) {
     for (std::size_t k = 1; k <= bounces; ++k)
@@ -192,6 +227,9 @@ RenderResult IrRenderer::render(const RenderJob& job, SegmentSink& sink,
   }
   result.seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  PassSeconds& s = result.passSeconds;
+  s.other = std::max(0.0, result.seconds - (s.surfaces + s.vpls + s.visibility + s.direct +
+                                            s.indirect + s.readBack));
   return result;
 }
 

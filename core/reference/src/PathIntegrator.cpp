@@ -20,6 +20,7 @@ PathIntegrator::PathIntegrator(const RayScene& scene, const capture::RenderJob& 
                                ContinuationSampling sampling)
     : scene_(scene),
       job_(job),
+      rays_(job.camera),
       bounces_(bounces),
       samplesPerPixel_(samplesPerPixel),
       pixelFilter_(pixelFilter),
@@ -137,7 +138,7 @@ void PathIntegrator::renderPixelCentre(int32_t x, int32_t y, PixelOutput& out,
                                        std::vector<double>& scratch) const {
   const capture::Camera& camera = job_.camera;
   const glm::vec3 eye = camera.position_world;
-  const std::optional<SurfaceHit> primary = scene_.intersect(eye, camera.pixelDirection(x, y));
+  const std::optional<SurfaceHit> primary = scene_.intersect(eye, rays_.direction(x, y));
   if (!primary) return;
   const SurfaceHit& hit = *primary;
   const double cameraLeg_m = glm::length(hit.position_world - eye);
@@ -192,7 +193,7 @@ void PathIntegrator::renderPixelArea(int32_t x, int32_t y, PixelOutput& out,
   const capture::Camera& camera = job_.camera;
   const glm::vec3 eye = camera.position_world;
   // The depth image stays the centre's, as the G-buffer's.
-  if (const auto centre = scene_.intersect(eye, camera.pixelDirection(x, y))) {
+  if (const auto centre = scene_.intersect(eye, rays_.direction(x, y))) {
     out.depth_m = static_cast<float>(glm::length(centre->position_world - eye));
   }
   const std::size_t floats = static_cast<std::size_t>(job_.settings.time.bins) * kChannels;
@@ -205,7 +206,7 @@ void PathIntegrator::renderPixelArea(int32_t x, int32_t y, PixelOutput& out,
   for (int32_t s = 0; s < samplesPerPixel_; ++s) {
     const glm::vec2 offset = stratifiedPixelOffset(s, samplesPerPixel_, rng);
     const std::optional<SurfaceHit> hit =
-        scene_.intersect(eye, camera.pixelDirection(x, y, offset));
+        scene_.intersect(eye, rays_.direction(x, y, offset));
     if (!hit) continue;  // a silhouette pixel: this part of it sees nothing
     const double toCamera_m =
         job_.settings.camera_unwarp ? 0.0 : glm::length(hit->position_world - eye);

@@ -73,6 +73,7 @@ class PathIntegrator {
 
   const RayScene& scene_;
   const capture::RenderJob& job_;
+  capture::PixelRays rays_;  ///< the camera rays, frame computed once
   int32_t bounces_;
   int32_t samplesPerPixel_;
   PixelFilter pixelFilter_;

@@ -58,6 +58,12 @@ void configureGather(const gl::Program& program, const RenderJob& job) {
     program.set("uCameraForward", job.camera.forward());
     program.set("uSampleStepX", job.camera.rayStepAlongX() * side);
     program.set("uSampleStepY", job.camera.rayStepAlongY() * side);
+    // A masked-out pixel's one centre sample spans the whole pixel: the
+    // steps of pixel_samples: 1 (whose side is 1), unscaled.
+    if (gpu::adaptiveSamples(s)) {
+      program.set("uPixelStepX", job.camera.rayStepAlongX());
+      program.set("uPixelStepY", job.camera.rayStepAlongY());
+    }
   }
 }
 
@@ -90,12 +96,34 @@ struct GlBackend::Passes {
   std::size_t pixelCount() const {
     return static_cast<std::size_t>(job.camera.width) * job.camera.height;
   }
+  bool gltf() const { return job.settings.materials == capture::MaterialModel::Gltf; }
+
+  // The gathers' G-buffer: the samples', and with adaptive samples the
+  // centres' and the mask that picks between them (surface_samples.glsl).
+  void bindSurfaces() const {
+    gbuffer.position.bindUnit(gpu::kGPosition);
+    gbuffer.normal.bindUnit(gpu::kGNormal);
+    gbuffer.albedo.bindUnit(gpu::kGAlbedo);
+    if (gltf()) gbuffer.metallicRoughness.bindUnit(gpu::kGMetallicRoughness);
+    if (!centres) return;
+    centres->position.bindUnit(gpu::kCentrePosition);
+    centres->normal.bindUnit(gpu::kCentreNormal);
+    centres->albedo.bindUnit(gpu::kCentreAlbedo);
+    if (gltf()) centres->metallicRoughness.bindUnit(gpu::kCentreMetallicRoughness);
+    sampledPixels.bindBase(GL_SHADER_STORAGE_BUFFER, gpu::kSampledPixels);
+  }
 
   RenderJob job;
   ViewBounds bounds;
   GpuScene gpuScene;
   int32_t samplesPerSide;  ///< render.pixel_samples
   SurfaceMaps gbuffer;     ///< the samples': (width N) x (height N), surface_samples.glsl
+  /// render.adaptive_pixel_samples (N > 1) only: the W x H pixel-centre
+  /// G-buffer, the one sample of a masked-out pixel, and the mask, one uint
+  /// per pixel (an SSBO indexed by the pixel index the gathers already hold;
+  /// 4 bytes a pixel is small next to the N^2 x 64 of the G-buffer).
+  std::unique_ptr<SurfaceMaps> centres;
+  gl::Buffer sampledPixels;
   LightShadowMap shadowMap;
   gl::Program directGather;
   std::unique_ptr<IndirectLight> indirectLight;  ///< null without VPLs
@@ -130,7 +158,7 @@ ir::DeviceLimits GlBackend::limits() const {
   return limits;
 }
 
-std::vector<float> GlBackend::prepareSurfaces(const RenderJob& job) {
+ir::CentreSurfaces GlBackend::prepareSurfaces(const RenderJob& job) {
   passes_.reset();  // the previous render's GL objects go first
   const Camera& camera = job.camera;
   const int32_t n = job.settings.pixel_samples;
@@ -146,19 +174,32 @@ std::vector<float> GlBackend::prepareSurfaces(const RenderJob& job) {
   const glm::vec2 range = depthRange(p.bounds.lo, p.bounds.hi, camera.position_world);
   const glm::mat4 viewProjection = camera.projection(range.x, range.y) * camera.view();
   p.gbuffer.render(p.gpuScene, viewProjection, camera.position_world);
-  // The driver's G-buffer (depth, the light seen by the camera) is the pixel
-  // centres', whatever the sub-pixel samples: with several, a W x H one only
-  // for this download.
-  std::vector<float> positions(p.pixelCount() * 4);
+  // The driver's G-buffer (depth, the light seen by the camera, the adaptive
+  // samples' edges) is the pixel centres', whatever the sub-pixel samples:
+  // with several, a W x H one, rasterized as pixel_samples: 1 rasterizes its
+  // G-buffer, only for this download unless adaptive samples read it too.
+  ir::CentreSurfaces surfaces;
+  surfaces.positions.resize(p.pixelCount() * 4);
+  surfaces.normals.resize(p.pixelCount() * 4);
   const auto download = [&](const SurfaceMaps& maps) {
-    maps.position.download(GL_RGBA, GL_FLOAT, positions.size() * sizeof(float), positions.data());
+    maps.position.download(GL_RGBA, GL_FLOAT, surfaces.positions.size() * sizeof(float),
+                           surfaces.positions.data());
+    maps.normal.download(GL_RGBA, GL_FLOAT, surfaces.normals.size() * sizeof(float),
+                         surfaces.normals.data());
   };
   if (n == 1) {
     download(p.gbuffer);
   } else {
-    SurfaceMaps centres(camera.width, camera.height);
-    centres.render(p.gpuScene, viewProjection, camera.position_world);
-    download(centres);
+    const bool adaptive = gpu::adaptiveSamples(job.settings);
+    auto centres = std::make_unique<SurfaceMaps>(camera.width, camera.height, adaptive && p.gltf());
+    centres->render(p.gpuScene, viewProjection, camera.position_world);
+    download(*centres);
+    if (adaptive) {
+      p.centres = std::move(centres);
+      // Until setSampledPixels: every pixel takes its N x N samples.
+      p.sampledPixels = gl::Buffer(p.pixelCount() * sizeof(uint32_t));
+      p.sampledPixels.fill(1u);
+    }
   }
   p.shadowMap.render(p.gpuScene);
 
@@ -167,7 +208,18 @@ std::vector<float> GlBackend::prepareSurfaces(const RenderJob& job) {
   setLightUniforms(p.directGather, job.light);
   p.shadowMap.bind(p.directGather);
   configureGather(p.directGather, job);
-  return positions;
+  return surfaces;
+}
+
+void GlBackend::setSampledPixels(const std::vector<uint8_t>& sampled) {
+  Passes& p = passes();
+  TOFSIM_CHECK_MSG(p.centres != nullptr,
+                   "setSampledPixels needs render.adaptive_pixel_samples with pixel_samples > 1");
+  TOFSIM_CHECK_EQ(sampled.size(), p.pixelCount());
+  // Widened to the shader's uint: an 8-bit SSBO element would need
+  // GL_EXT_shader_8bit_storage, which GL 4.5 does not promise.
+  const std::vector<uint32_t> words(sampled.begin(), sampled.end());
+  p.sampledPixels.upload(0, words.size() * sizeof(uint32_t), words.data());
 }
 
 std::vector<ir::Vpl> GlBackend::generateVpls(const RenderJob& job) {
@@ -191,13 +243,14 @@ void GlBackend::setVpls(const std::vector<ir::Vpl>& vpls) {
 std::size_t GlBackend::fixedBytes() const {
   const Passes& p = passes();
   // The G-buffer: four RGBA32F-sized targets per sample, and an RG32F one
-  // with render.materials: gltf.
-  const auto samples = static_cast<std::size_t>(p.samplesPerSide) * p.samplesPerSide;
-  const std::size_t floatsPerSample =
-      4 * 4 + (p.job.settings.materials == capture::MaterialModel::Gltf ? 2 : 0);
+  // with render.materials: gltf; with adaptive samples as much again per
+  // pixel for the centres' maps, and the mask's uint.
+  auto samples = static_cast<std::size_t>(p.samplesPerSide) * p.samplesPerSide;
+  if (p.centres) ++samples;
+  const std::size_t floatsPerSample = 4 * 4 + (p.gltf() ? 2 : 0);
   std::size_t bytes = p.gpuScene.bytes() +
                       p.pixelCount() * samples * floatsPerSample * sizeof(float) +
-                      p.shadowMap.bytes();
+                      p.shadowMap.bytes() + p.sampledPixels.size();
   if (p.indirectLight) bytes += p.indirectLight->fixedBytes();
   return bytes;
 }
@@ -247,12 +300,7 @@ void GlBackend::beginSegment(std::size_t firstPixel, std::size_t count) {
 
 void GlBackend::gatherDirect() {
   Passes& p = passes();
-  p.gbuffer.position.bindUnit(gpu::kGPosition);
-  p.gbuffer.normal.bindUnit(gpu::kGNormal);
-  p.gbuffer.albedo.bindUnit(gpu::kGAlbedo);
-  if (p.job.settings.materials == capture::MaterialModel::Gltf) {
-    p.gbuffer.metallicRoughness.bindUnit(gpu::kGMetallicRoughness);
-  }
+  p.bindSurfaces();
   p.directGather.use();
   p.shadowMap.bind(p.directGather);
   p.directGather.set("uFirstPixel", static_cast<unsigned>(p.firstPixel));
@@ -268,12 +316,7 @@ void GlBackend::gatherDirect() {
 void GlBackend::gatherIndirect(std::size_t firstVpl, std::size_t count) {
   Passes& p = passes();
   TOFSIM_CHECK(p.indirectLight != nullptr);
-  p.gbuffer.position.bindUnit(gpu::kGPosition);
-  p.gbuffer.normal.bindUnit(gpu::kGNormal);
-  p.gbuffer.albedo.bindUnit(gpu::kGAlbedo);
-  if (p.job.settings.materials == capture::MaterialModel::Gltf) {
-    p.gbuffer.metallicRoughness.bindUnit(gpu::kGMetallicRoughness);
-  }
+  p.bindSurfaces();
   p.indirectLight->gather(firstVpl, count, p.firstPixel, p.segmentPixels);
 }
 

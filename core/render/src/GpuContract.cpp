@@ -19,6 +19,7 @@ std::vector<std::pair<std::string, std::string>> shaderDefines() {
       {"TOFSIM_SSBO_FOOTPRINT", n(kFootprint)},
       {"TOFSIM_SSBO_FOOTPRINT_WRITTEN", n(kFootprintWritten)},
       {"TOFSIM_SSBO_FOOTPRINT_VOLUME", n(kFootprintVolume)},
+      {"TOFSIM_SSBO_SAMPLED_PIXELS", n(kSampledPixels)},
       {"TOFSIM_UNIT_G_POSITION", n(kGPosition)},
       {"TOFSIM_UNIT_G_NORMAL", n(kGNormal)},
       {"TOFSIM_UNIT_G_ALBEDO", n(kGAlbedo)},
@@ -26,6 +27,10 @@ std::vector<std::pair<std::string, std::string>> shaderDefines() {
       {"TOFSIM_UNIT_ALBEDO_TEXTURE", n(kAlbedoTexture)},
       {"TOFSIM_UNIT_G_METALLIC_ROUGHNESS", n(kGMetallicRoughness)},
       {"TOFSIM_UNIT_METALLIC_ROUGHNESS_TEXTURE", n(kMetallicRoughnessTexture)},
+      {"TOFSIM_UNIT_CENTRE_POSITION", n(kCentrePosition)},
+      {"TOFSIM_UNIT_CENTRE_NORMAL", n(kCentreNormal)},
+      {"TOFSIM_UNIT_CENTRE_ALBEDO", n(kCentreAlbedo)},
+      {"TOFSIM_UNIT_CENTRE_METALLIC_ROUGHNESS", n(kCentreMetallicRoughness)},
       {"TOFSIM_ATTRIB_POSITION", n(kPositionAttribute)},
       {"TOFSIM_ATTRIB_NORMAL", n(kNormalAttribute)},
       {"TOFSIM_ATTRIB_UV", n(kUvAttribute)},
@@ -42,6 +47,9 @@ std::vector<std::pair<std::string, std::string>> gatherDefines(const capture::Re
   if (s.pixel_footprint) defines.emplace_back("PIXEL_FOOTPRINT", "1");
   if (s.pixel_footprint && s.indirect.vpl_footprint) defines.emplace_back("VPL_FOOTPRINT", "1");
   if (s.materials == capture::MaterialModel::Gltf) defines.emplace_back("GLTF_MATERIALS", "1");
+  // Only with sub-samples to skip: every other render compiles the gathers
+  // of before, which read no mask.
+  if (adaptiveSamples(s)) defines.emplace_back("ADAPTIVE_SAMPLES", "1");
   return defines;
 }
 

@@ -39,6 +39,7 @@ enum StorageBinding : uint32_t {
   kFootprint,         ///< segment's footprint difference buffer: bins x 3 doubles per pixel
   kFootprintWritten,  ///< one uint per pixel: its difference buffer holds entries
   kFootprintVolume,   ///< the volume footprint_integrate.comp adds the buffer to
+  kSampledPixels,     ///< one uint per pixel: 1 = N x N samples, 0 = its centre (ADAPTIVE_SAMPLES)
 };
 
 /// Texture units (TOFSIM_UNIT_...).
@@ -50,6 +51,11 @@ enum TextureUnit : uint32_t {
   kAlbedoTexture,             ///< a material's base-colour texture (gbuffer.frag)
   kGMetallicRoughness,        ///< camera G-buffer: metallic, roughness (render.materials: gltf)
   kMetallicRoughnessTexture,  ///< a material's metallic-roughness texture (gbuffer.frag)
+  // The pixel-centre G-buffer of the one-sample pixels (ADAPTIVE_SAMPLES).
+  kCentrePosition,           ///< world position
+  kCentreNormal,             ///< normal
+  kCentreAlbedo,             ///< albedo
+  kCentreMetallicRoughness,  ///< metallic, roughness (render.materials: gltf)
 };
 
 /// Vertex attribute locations of gbuffer.vert (TOFSIM_ATTRIB_...).
@@ -64,11 +70,19 @@ std::vector<std::pair<std::string, std::string>> shaderDefines();
 
 /// The gathers' variant of `settings` (direct_gather.comp, indirect_gather.comp):
 /// PIXEL_SAMPLES (render.pixel_samples), PIXEL_FOOTPRINT, VPL_FOOTPRINT,
-/// GLTF_MATERIALS (render.materials: gltf). As defines, so that
-/// render.pixel_footprint: false compiles the point-sampling shader of before
-/// and render.materials: lambertian the Lambertian one.
+/// GLTF_MATERIALS (render.materials: gltf), ADAPTIVE_SAMPLES
+/// (render.adaptive_pixel_samples with pixel_samples > 1). As defines, so that
+/// render.pixel_footprint: false compiles the point-sampling shader of before,
+/// render.materials: lambertian the Lambertian one, and a render without
+/// adaptive samples the shader that reads no per-pixel mask.
 std::vector<std::pair<std::string, std::string>> gatherDefines(
     const capture::RenderSettings& settings);
+
+/// render.adaptive_pixel_samples in effect: with pixel_samples > 1 only (one
+/// sample per pixel has nothing to skip). The gathers' ADAPTIVE_SAMPLES.
+inline bool adaptiveSamples(const capture::RenderSettings& settings) {
+  return settings.adaptive_pixel_samples && settings.pixel_samples > 1;
+}
 
 /// A program from embedded shaders with the contract's defines, then `extra`.
 gl::Program makeProgram(const std::vector<gl::ShaderStage>& stages,

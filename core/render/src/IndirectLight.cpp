@@ -104,7 +104,9 @@ void IndirectLight::bindSceneBuffers() const {
 std::size_t IndirectLight::vplsPerDispatch() const {
   // Per VPL: its own trip, then per sample one trip of the sample loop (none
   // with one sample: no loop) and a shadow ray's; the footprint's deposits
-  // are straight-line code (footprint_deposit.glsl) and cost none.
+  // are straight-line code (footprint_deposit.glsl) and cost none. With
+  // adaptive samples a masked-out pixel loops over one sample, not N^2: the
+  // N^2 pixels stay the worst case this counts.
   const std::size_t shadowRay =
       settings_.visibility == capture::Visibility::Exact ? tripsPerShadowRay_ : 0;
   const std::size_t perSample = (samplesPerPixel_ > 1 ? 1 : 0) + shadowRay;

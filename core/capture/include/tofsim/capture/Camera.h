@@ -40,4 +40,25 @@ struct Camera {
   glm::mat4 projection(float near_m, float far_m) const;
 };
 
+/// Camera::pixelDirection for many rays (a path tracer's, a G-buffer's): the
+/// camera's frame and image-plane scale computed once instead of per ray, by
+/// the same float operations, so the directions have the same bits.
+class PixelRays {
+ public:
+  explicit PixelRays(const Camera& camera);
+  glm::vec3 direction(int32_t x, int32_t y) const;
+  glm::vec3 direction(int32_t x, int32_t y, glm::vec2 offset) const;
+  /// Image-plane coordinates at unit distance of pixel position (x, y),
+  /// pixel centres at integers.
+  glm::dvec2 planePoint(double x, double y) const;
+
+ private:
+  glm::vec3 towards(double x, double y) const;
+
+  glm::vec3 forward_, right_, up_;
+  double tanHalf_ = 0.0;  ///< tan(fov_y / 2): the image plane's half height at unit distance
+  double aspect_ = 1.0;
+  int32_t width_ = 1, height_ = 1;
+};
+
 }  // namespace tofsim::capture

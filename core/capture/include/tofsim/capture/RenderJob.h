@@ -21,14 +21,33 @@ struct RenderJob {
   RenderSettings settings;
 };
 
+/// Wall seconds of instant radiosity's passes: where a render's time goes
+/// (all 0 for the reference). The GL backend's passes run asynchronously, so
+/// there their time shows where the driver waits, mostly in readBack.
+struct PassSeconds {
+  double surfaces = 0.0;    ///< scene, camera G-buffer, shadow map; the adaptive samples' mask
+  double vpls = 0.0;        ///< RSM VPLs, later bounces, making them resident
+  double visibility = 0.0;  ///< the VPL batches' ISMs
+  double direct = 0.0;      ///< direct gathers
+  double indirect = 0.0;    ///< indirect gathers
+  double readBack = 0.0;    ///< segments and bounces read out, bounces summed
+  /// The rest of RenderResult::seconds: the plan, allocation, and the sinks
+  /// (files, sensors) that consume the segments.
+  double other = 0.0;
+};
+
 /// Ground truth of the first surface each pixel sees, and what the render did.
 struct RenderResult {
   Image depth_m;  ///< camera-to-surface distance, 1 channel; 0 where no surface
   std::size_t segments = 0;
   std::size_t vpls = 0;
   std::size_t vplBatches = 0;
+  /// Pixels that took N x N sub-pixel samples (render.adaptive_pixel_samples;
+  /// 0 otherwise).
+  std::size_t sampledPixels = 0;
   std::size_t peakGpuBytes = 0;
   double seconds = 0.0;
+  PassSeconds passSeconds;
   /// Radiance that arrived before the first or after the last bin (summed over
   /// channels); it is in neither the volume nor the steady image.
   AxisLoss offAxis;

@@ -64,6 +64,10 @@ struct RenderSettings {
   bool pixel_footprint = true;
   /// N x N stratified G-buffer samples per pixel, averaged.
   int32_t pixel_samples = 1;
+  /// With pixel_samples N > 1: the N x N samples only in pixels at an edge of
+  /// the centre G-buffer (ir::sampledPixels); one sample at the centre, with
+  /// weight 1 and the whole pixel's footprint, everywhere else.
+  bool adaptive_pixel_samples = false;
   MaterialModel materials = MaterialModel::Lambertian;
   IndirectSettings indirect;
 };

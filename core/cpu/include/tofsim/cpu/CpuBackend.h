@@ -56,7 +56,8 @@ class CpuBackend : public ir::IrBackend {
 
   std::string description() const override;
   ir::DeviceLimits limits() const override;
-  std::vector<float> prepareSurfaces(const capture::RenderJob& job) override;
+  ir::CentreSurfaces prepareSurfaces(const capture::RenderJob& job) override;
+  void setSampledPixels(const std::vector<uint8_t>& sampled) override;
   std::vector<ir::Vpl> generateVpls(const capture::RenderJob& job) override;
   void setVpls(const std::vector<ir::Vpl>& vpls) override;
   std::size_t fixedBytes() const override;
@@ -81,17 +82,30 @@ class CpuBackend : public ir::IrBackend {
   /// The segment's histograms in `from` out to `to` (with the indirect
   /// light's wide footprint kernels summed in, pixel by pixel), and zeroed.
   void moveOut(std::vector<float>& from, float* to, bool integrateFootprints);
-  std::size_t samplesPerPixel() const;
+  /// render.pixel_samples squared: the most samples a pixel takes.
+  std::size_t maxSamplesPerPixel() const;
+  /// segmentSurfaces_[i] and segmentLit_[i] from the segment's sample i, a
+  /// sample of `weight` (1 / its pixel's samples) whose footprint spans the
+  /// ray steps stepX, stepY.
+  void fillSurface(std::size_t i, float weight, const glm::vec3& forward, const glm::vec3& stepX,
+                   const glm::vec3& stepY, float eta);
 
   int threads_ = 1;
   bool indirectVisibility_ = true;
   capture::RenderJob job_;
   std::unique_ptr<reference::RayScene> scene_;
-  std::unique_ptr<SurfaceImage> surfaces_;  ///< render.pixel_samples^2 samples per pixel
+  std::unique_ptr<SurfaceImage> surfaces_;  ///< every pixel's samples (SurfaceImage::firstSample)
+  /// The pixel centres', kept from prepareSurfaces to setSampledPixels for
+  /// render.adaptive_pixel_samples.
+  std::unique_ptr<SurfaceImage> centres_;
   std::unique_ptr<VplArrays> vpls_;
   std::unique_ptr<CpuIsm> ism_;
   std::vector<PixelSurface> segmentSurfaces_;  ///< per sample of the segment's pixels
   std::vector<unsigned char> segmentLit_;      ///< 1 where the sample sees a surface
+  /// Segment pixel i's samples are [segmentFirstSample_[i], [i + 1]) of the
+  /// two above, surfaces_ entries from firstSample_ on.
+  std::vector<std::size_t> segmentFirstSample_;
+  std::size_t firstSample_ = 0;
   std::vector<float> direct_, indirect_;
   /// direct_ and indirect_ hold zeros (after allocate and readSegment).
   bool accumulatorsZero_ = false;

@@ -6,7 +6,8 @@
 // implements the same and reuses all of the planning.
 //
 // Call order, per render (IrRenderer::render):
-//   limits, prepareSurfaces, generateVpls, setVpls, fixedBytes,
+//   limits, prepareSurfaces, [setSampledPixels: render.adaptive_pixel_samples
+//   with pixel_samples > 1 only], generateVpls, setVpls, fixedBytes,
 //   visibilityBytesPerVpl, allocate, then for each segment (increasing pixel
 //   ranges): beginSegment, gatherDirect, for each VPL batch b (increasing):
 //   buildVisibility (only when batch b is not already resident: with one batch
@@ -72,6 +73,13 @@ struct Vpl {
   glm::vec4 material{0.0f};
 };
 
+/// The camera G-buffer at the pixel centres, as prepareSurfaces returns it:
+/// RGBA floats per pixel, row-major, row 0 at the top.
+struct CentreSurfaces {
+  std::vector<float> positions;  ///< xyz world, w = 1 on a surface, 0 else
+  std::vector<float> normals;    ///< xyz unit shading normal facing the camera, w = 0
+};
+
 /// Bytes of a VPL as the Lambertian gathers read it (Vpl without incoming
 /// and material).
 constexpr std::size_t kLambertianVplBytes = 5 * sizeof(glm::vec4);
@@ -82,11 +90,18 @@ class IrBackend {
   /// The device, e.g. "llvmpipe (LLVM 15.0.6, 256 bits)" or "CPU (2 threads)".
   virtual std::string description() const = 0;
   virtual DeviceLimits limits() const = 0;
-  /// Scene upload, camera G-buffer of every pixel, light shadow map. Returns
-  /// the G-buffer's world positions, RGBA per pixel (w = 1 on a surface, 0
-  /// else), row 0 at the top: the driver derives the depth image and the
-  /// DirectLightView from it. Starts a new render: drops any earlier one's state.
-  virtual std::vector<float> prepareSurfaces(const capture::RenderJob& job) = 0;
+  /// Scene upload, camera G-buffer of every pixel (every sub-pixel sample),
+  /// light shadow map. Returns the pixel centres' G-buffer: the driver derives
+  /// the depth image, the DirectLightView and the adaptive samples' edge
+  /// pixels from it. Starts a new render: drops any earlier one's state.
+  virtual CentreSurfaces prepareSurfaces(const capture::RenderJob& job) = 0;
+  /// render.adaptive_pixel_samples with render.pixel_samples N > 1 only,
+  /// right after prepareSurfaces: one entry per pixel (row-major, row 0 at
+  /// the top), 1 where the pixel takes its N x N sub-pixel samples, 0 where it
+  /// takes one sample at its centre with weight 1 and the whole pixel's
+  /// footprint, as render.pixel_samples: 1 computes it. Without this call
+  /// every pixel takes the N x N samples.
+  virtual void setSampledPixels(const std::vector<uint8_t>& sampled) = 0;
   /// VPLs of the job's light from the reflective shadow map, in texel order
   /// (faces +X..-Z), empty when indirect light is off or nothing is lit.
   virtual std::vector<Vpl> generateVpls(const capture::RenderJob& job) = 0;

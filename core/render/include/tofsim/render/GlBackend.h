@@ -2,7 +2,9 @@
 // ir::IrBackend on OpenGL 4.5: the camera's G-buffer and the light's shadow
 // map by rasterization, VPLs from a reflective shadow map, imperfect shadow
 // maps (or BVH shadow rays) for their visibility, and compute-shader gathers
-// with one thread per pixel. The driver (ir::IrRenderer) plans and loops; this
+// with one thread per pixel, over each pixel's N x N sub-pixel samples (or,
+// with render.adaptive_pixel_samples, its one centre sample where the
+// driver's mask says so). The driver (ir::IrRenderer) plans and loops; this
 // class only runs the passes.
 
 #include <memory>
@@ -25,7 +27,8 @@ class GlBackend : public ir::IrBackend {
 
   std::string description() const override;
   ir::DeviceLimits limits() const override;
-  std::vector<float> prepareSurfaces(const capture::RenderJob& job) override;
+  ir::CentreSurfaces prepareSurfaces(const capture::RenderJob& job) override;
+  void setSampledPixels(const std::vector<uint8_t>& sampled) override;
   std::vector<ir::Vpl> generateVpls(const capture::RenderJob& job) override;
   void setVpls(const std::vector<ir::Vpl>& vpls) override;
   std::size_t fixedBytes() const override;

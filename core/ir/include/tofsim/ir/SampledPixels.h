@@ -1,0 +1,28 @@
+#pragma once
+// render.adaptive_pixel_samples: which pixels take their N x N sub-pixel
+// samples. The footprint of one centre sample extrapolates the centre's
+// tangent plane over the whole pixel (footprint_kernel.md); that holds where
+// the pixel's neighbourhood is that plane and fails at silhouettes, creases
+// and the border of the background, the pixels the sub-samples are for. The
+// test reads only the pixel-centre G-buffer both backends return, so they
+// sample the same pixels.
+
+#include <cstdint>
+#include <vector>
+
+#include "tofsim/ir/IrBackend.h"
+
+namespace tofsim::ir {
+
+/// Largest angle, in degrees, between a pixel's tangent plane and the
+/// direction to a neighbour's centre point, and between their normals, for
+/// the neighbour to count as the same flat surface.
+constexpr float kFlatNeighbourAngle_deg = 5.0f;
+
+/// One entry per pixel (row-major, row 0 at the top): 1 where any of the 8
+/// neighbours' centre points (those inside the image) lies off the pixel's
+/// tangent plane or has a turned normal, or where a surface pixel borders
+/// background or a background pixel borders a surface; 0 elsewhere.
+std::vector<uint8_t> sampledPixels(const CentreSurfaces& surfaces, int32_t width, int32_t height);
+
+}  // namespace tofsim::ir
