@@ -1,6 +1,7 @@
 #include "tofsim/ir/SegmentStream.h"
 
 #include <algorithm>
+#include <memory>
 
 #include "tofsim/util/Error.h"
 
@@ -12,10 +13,14 @@ void streamSegments(const SegmentPlan& plan, const TimeAxis& axis,
                     AxisLoss& offAxis, const SegmentFill& fill) {
   TOFSIM_CHECK(!names.empty() && names[0] == capture::kDirect);
   const std::size_t floatsPerPixel = static_cast<std::size_t>(axis.bins) * capture::kChannels;
-  std::vector<std::vector<float>> storage(
-      names.size(), std::vector<float>(plan.pixelsPerSegment * floatsPerPixel));
+  // Uninitialised: each segment zeroes what it uses just below, so a
+  // value-initialised vector would write every float once more.
+  std::vector<std::unique_ptr<float[]>> storage;
   SegmentBuffers buffers;
-  for (std::vector<float>& s : storage) buffers.components.push_back(s.data());
+  for (std::size_t c = 0; c < names.size(); ++c) {
+    storage.emplace_back(new float[plan.pixelsPerSegment * floatsPerPixel]);
+    buffers.components.push_back(storage.back().get());
+  }
   capture::Segment segment;
   for (std::size_t s = 0; s < plan.segmentCount; ++s) {
     buffers.index = s;
