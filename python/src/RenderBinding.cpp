@@ -196,6 +196,17 @@ py::dict toPython(Rendered& r, const TimeAxis& axis) {
   stats["off_axis_before"] = r.result.offAxis.before;
   stats["off_axis_after"] = r.result.offAxis.after;
   stats["rejected_non_finite_values"] = r.result.nonFiniteRejected;
+  stats["sampled_pixels"] = r.result.sampledPixels;
+  const capture::PassSeconds& pass = r.result.passSeconds;
+  py::dict passSeconds;
+  passSeconds["surfaces"] = pass.surfaces;
+  passSeconds["vpls"] = pass.vpls;
+  passSeconds["visibility"] = pass.visibility;
+  passSeconds["direct"] = pass.direct;
+  passSeconds["indirect"] = pass.indirect;
+  passSeconds["read_back"] = pass.readBack;
+  passSeconds["other"] = pass.other;
+  stats["pass_seconds"] = passSeconds;
   d["stats"] = stats;
   d["device"] = r.device;
   d["files"] = r.files;

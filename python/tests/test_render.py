@@ -206,3 +206,22 @@ def test_bounces_add_up_to_the_indirect_light_and_match_the_files(tmp_path):
     assert len(one.bounces) == 1 and one.bounces[0] is one.indirect
     reference = dict(single, **{"render.reference.samples_per_pixel": 1})
     assert tofsim.render(tofsim.load_config(CORNELL, reference), renderer="reference").bounces is None
+
+
+def test_adaptive_samples_are_counted_and_the_passes_timed():
+    """render.adaptive_pixel_samples: stats.sampled_pixels counts the edge
+    pixels (some, not all, on the Cornell box), as transient.json does, and
+    stats.pass_seconds splits IR's time (their sum is at most the total)."""
+    overrides = {"camera.resolution": [16, 16], "sensors": [], "output.video": False,
+                 "render.backend": "cpu", "render.indirect.rsm_resolution": 8,
+                 "render.pixel_samples": 2, "render.adaptive_pixel_samples": True}
+    stats = tofsim.render(tofsim.load_config(CORNELL, overrides)).stats
+    assert 0 < stats["sampled_pixels"] < 16 * 16
+    passes = stats["pass_seconds"]
+    assert set(passes) == {"surfaces", "vpls", "visibility", "direct", "indirect",
+                           "read_back", "other"}
+    assert all(v >= 0 for v in passes.values())
+    assert passes["indirect"] > 0
+    assert sum(passes.values()) <= stats["seconds"] * 1.000001
+    uniform = dict(overrides, **{"render.adaptive_pixel_samples": False})
+    assert tofsim.render(tofsim.load_config(CORNELL, uniform)).stats["sampled_pixels"] == 0

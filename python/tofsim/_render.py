@@ -40,7 +40,8 @@ class RenderResult:
     depth: (H, W) camera-to-surface distance, metres; 0 where no surface
     steady: (H, W, C) transient summed over time
     time: the TimeAxis of the T bins
-    stats: seconds, segments, vpls, off_axis_before/after, rejected_non_finite_values
+    stats: seconds, segments, vpls, off_axis_before/after, rejected_non_finite_values,
+        sampled_pixels (render.adaptive_pixel_samples), pass_seconds (IR's time by pass)
     device: what rendered it (GL renderer string, or the CPU reference)
     files: written files, relative to output_dir (empty without one)
     """
