@@ -1,14 +1,17 @@
 // Equal-error benchmark (issue 4): on the Cornell box, how long the CPU
 // reference path tracer needs to reach the error of a transient instant
 // radiosity render, both measured against a long-converged reference, all in
-// one run on one machine.
+// one run on one machine. Also prints where each IR render's time went
+// (RenderResult::passSeconds).
 // Usage: equal_error SCENE.gltf [resolution] [gl|cpu] [point|box] [bounces]
 //  - the IR backend, default gl (llvmpipe without a GPU);
 //  - the pixel model (issue 14), default point: the ground truth and the
 //    reference sweep use that render.reference.pixel_filter. point: IR with
 //    render.pixel_footprint false (both sample pixel centres, issue 4's
 //    bench); box: the pixel-area truth, and every IR setting is run with the
-//    footprint (vpl_footprint true) and without it (pixel_footprint false);
+//    footprint (vpl_footprint true) and without it (pixel_footprint false),
+//    with 2 x 2 samples everywhere, and with 2 x 2, 3 x 3 and 4 x 4 only at
+//    the edges (render.adaptive_pixel_samples);
 //  - bounces N (issue 15): IR with render.indirect.bounces N against the
 //    reference with N + 1 interactions (truth and sweep alike) on a longer
 //    axis, 1.5 .. 6.5 m (500 bins of 1 cm), that holds the later bounces'
