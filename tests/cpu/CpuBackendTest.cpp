@@ -95,31 +95,44 @@ TEST(CpuBackendTest, LightBeforeTheAxisIsCountedBeforeIt) {
 class CpuDeterminismTest : public ::testing::TestWithParam<capture::Visibility> {};
 
 TEST_P(CpuDeterminismTest, OneTwoAndThreeThreadsGiveTheSameBytes) {
-  test::CornerJob s(20);
-  s.job.settings.indirect.visibility = GetParam();
-  s.job.settings.indirect.rsm_resolution = 12;
-  s.job.settings.indirect.points_per_vpl = 300;
-  const CpuRender one = renderOnCpu(s.job, {1, true});
-  ASSERT_GT(one.result.vpls, 0u);
-  for (int threads : {2, 3}) {
-    const CpuRender many = renderOnCpu(s.job, {threads, true});
-    EXPECT_TRUE(sameBytes(one.volume.direct, many.volume.direct)) << threads << " threads";
-    EXPECT_TRUE(sameBytes(one.volume.indirect, many.volume.indirect)) << threads << " threads";
-    EXPECT_EQ(one.result.offAxis.before, many.result.offAxis.before);
-    EXPECT_EQ(one.result.offAxis.after, many.result.offAxis.after);
+  for (const bool adaptive : {false, true}) {
+    SCOPED_TRACE(adaptive ? "2 x 2 samples at edges" : "one sample");
+    test::CornerJob s(20);
+    s.job.settings.indirect.visibility = GetParam();
+    s.job.settings.indirect.rsm_resolution = 12;
+    s.job.settings.indirect.points_per_vpl = 300;
+    s.job.settings.pixel_samples = adaptive ? 2 : 1;
+    s.job.settings.adaptive_pixel_samples = adaptive;
+    const CpuRender one = renderOnCpu(s.job, {1, true});
+    ASSERT_GT(one.result.vpls, 0u);
+    for (int threads : {2, 3}) {
+      const CpuRender many = renderOnCpu(s.job, {threads, true});
+      EXPECT_TRUE(sameBytes(one.volume.direct, many.volume.direct)) << threads << " threads";
+      EXPECT_TRUE(sameBytes(one.volume.indirect, many.volume.indirect)) << threads << " threads";
+      EXPECT_EQ(one.result.offAxis.before, many.result.offAxis.before);
+      EXPECT_EQ(one.result.offAxis.after, many.result.offAxis.after);
+    }
   }
 }
 
 TEST_P(CpuDeterminismTest, SegmentsAndBatchesDoNotChangeTheBytes) {
   // With the pixel footprint (the default), with one and with 2 x 2 samples
-  // per pixel (whose additions must not depend on where batches start).
-  for (const int samples : {1, 2}) {
+  // per pixel (whose additions must not depend on where batches start), and
+  // 2 x 2 at the edges only (segments then hold different sample counts).
+  const struct {
+    int samples;
+    bool adaptive;
+  } models[] = {{1, false}, {2, false}, {2, true}};
+  for (const auto [samples, adaptive] : models) {
+    SCOPED_TRACE(testing::Message()
+                 << samples << " x " << samples << (adaptive ? " at edges" : ""));
     test::CornerJob s(20);
     s.job.settings.indirect.visibility = GetParam();
     s.job.settings.indirect.rsm_resolution = 12;
     s.job.settings.indirect.points_per_vpl = 300;
     s.job.settings.indirect.ism_resolution = 64;  // ~22 kB per VPL: ISMs outgrow the budget below
     s.job.settings.pixel_samples = samples;
+    s.job.settings.adaptive_pixel_samples = adaptive;
     const CpuRender whole = renderOnCpu(s.job, {2, true});
     // A budget just above what the render holds for its whole length: many
     // segments, and (with ISMs) many VPL batches.
@@ -127,6 +140,8 @@ TEST_P(CpuDeterminismTest, SegmentsAndBatchesDoNotChangeTheBytes) {
     const CpuRender split = renderOnCpu(s.job, {2, true});
     EXPECT_EQ(whole.result.segments, 1u);
     EXPECT_GT(split.result.segments, 2u);
+    EXPECT_EQ(whole.result.sampledPixels, split.result.sampledPixels);
+    if (adaptive) EXPECT_GT(whole.result.sampledPixels, 0u);
     if (GetParam() == capture::Visibility::Ism) {
       EXPECT_GT(split.result.vplBatches, 1u);
     }
