@@ -64,7 +64,8 @@ int runRenderCommand(const std::string& configPath, const std::string& outputDir
     const capture::RenderSettings& s = config.render;
     if (config.renderer != config::RendererKind::Reference && s.adaptive_pixel_samples &&
         s.pixel_samples > 1) {
-      const double pixels = static_cast<double>(config.camera.camera.width) * config.camera.camera.height;
+      const double pixels =
+          static_cast<double>(config.camera.camera.width) * config.camera.camera.height;
       std::fprintf(stderr, "render: %zu pixel(s) (%.1f %%) at edges took %d x %d samples\n",
                    summary.result.sampledPixels,
                    100.0 * static_cast<double>(summary.result.sampledPixels) / pixels,

@@ -203,16 +203,15 @@ int main(int argc, char** argv) {
     irJob.settings.adaptive_pixel_samples = c.adaptive;
     const ir::IrRenderer renderer = makeIr();
     capture::RenderResult result;
-    const Measured m = measure(irJob, truth, [&](capture::VolumeCollector& out) {
-      result = renderer.render(irJob, out);
-    });
+    const Measured m = measure(
+        irJob, truth, [&](capture::VolumeCollector& out) { result = renderer.render(irJob, out); });
     irPasses.push_back(result.passSeconds);
-    const std::string setting = std::string(c.name) + ", RSM " + std::to_string(c.rsm) + "^2" +
-                                (c.footprint ? ", footprint" : ", no footprint") +
-                                (c.pixelSamples > 1
-                                     ? ", pixel_samples " + std::to_string(c.pixelSamples) +
-                                           (c.adaptive ? " at edges" : "")
-                                     : "");
+    const std::string setting =
+        std::string(c.name) + ", RSM " + std::to_string(c.rsm) + "^2" +
+        (c.footprint ? ", footprint" : ", no footprint") +
+        (c.pixelSamples > 1
+             ? ", pixel_samples " + std::to_string(c.pixelSamples) + (c.adaptive ? " at edges" : "")
+             : "");
     std::printf("| IR | %s | %.2f | %.4f | %.4f |\n", setting.c_str(), m.seconds,
                 m.error.steadyRelativeL1, m.error.transientRelativeL1);
     irRuns.emplace_back(setting, m);

@@ -30,8 +30,8 @@ struct Render {
 Render render(const RenderJob& job) {
   Render out{VolumeCollector(job.camera.width, job.camera.height, job.settings.time, kChannels),
              {}};
-  out.result =
-      ir::IrRenderer(std::make_unique<CpuBackend>(CpuBackendOptions{2, true})).render(job, out.volume);
+  out.result = ir::IrRenderer(std::make_unique<CpuBackend>(CpuBackendOptions{2, true}))
+                   .render(job, out.volume);
   return out;
 }
 
@@ -66,7 +66,8 @@ void expectComposition(RenderJob job, int32_t n) {
   int mismatches = 0;
   for (int32_t y = 0; y < job.camera.height; ++y) {
     for (int32_t x = 0; x < job.camera.width; ++x) {
-      const Render& expected = sampled[static_cast<std::size_t>(y) * job.camera.width + x] ? all : one;
+      const Render& expected =
+          sampled[static_cast<std::size_t>(y) * job.camera.width + x] ? all : one;
       const bool same = samePixel(adaptive.volume.direct, expected.volume.direct, y, x) &&
                         samePixel(adaptive.volume.indirect, expected.volume.indirect, y, x);
       if (!same && ++mismatches <= 5) ADD_FAILURE() << "pixel " << x << "," << y;

@@ -37,12 +37,12 @@ VolumeCollector renderReference(const RenderJob& job, int samples) {
 }
 
 struct Errors {
-  double footprint = 0.0;   ///< total transient relative L1, IR with footprint vs reference
-  double footprint3 = 0.0;  ///< the same with 3 x 3 sub-pixel samples (silhouettes)
-  double adaptive3 = 0.0;   ///< 3 x 3 samples only at edges (render.adaptive_pixel_samples)
+  double footprint = 0.0;     ///< total transient relative L1, IR with footprint vs reference
+  double footprint3 = 0.0;    ///< the same with 3 x 3 sub-pixel samples (silhouettes)
+  double adaptive3 = 0.0;     ///< 3 x 3 samples only at edges (render.adaptive_pixel_samples)
   double sampledShare = 0.0;  ///< the share of pixels that took them
-  double point = 0.0;       ///< the same with point pixels
-  double noise = 0.0;       ///< reference vs reference with another seed
+  double point = 0.0;         ///< the same with point pixels
+  double noise = 0.0;         ///< reference vs reference with another seed
 };
 
 Errors transientErrors(RenderJob job, int samples) {

@@ -88,10 +88,10 @@ std::string transientMetadataJson(const config::RunConfig& config, const capture
                 {"fraction_after_axis", lost.after},
                 {"rejected_non_finite_values", result.nonFiniteRejected}};
   const capture::PassSeconds& pass = result.passSeconds;
-  j["stats"]["pass_seconds"] = {{"surfaces", pass.surfaces},   {"vpls", pass.vpls},
-                                {"visibility", pass.visibility}, {"direct", pass.direct},
-                                {"indirect", pass.indirect},     {"read_back", pass.readBack},
-                                {"other", pass.other}};
+  j["stats"]["pass_seconds"] = {
+      {"surfaces", pass.surfaces}, {"vpls", pass.vpls},         {"visibility", pass.visibility},
+      {"direct", pass.direct},     {"indirect", pass.indirect}, {"read_back", pass.readBack},
+      {"other", pass.other}};
   return j.dump(2) + "\n";
 }
 

@@ -196,8 +196,8 @@ void CpuBackend::fillSurface(std::size_t i, float weight, const glm::vec3& forwa
     surface.toCamera = glm::normalize(camera.position_world - surface.x);
     surface.weight = weight;
   }
-  surface.cameraPath_m = physics::cameraPathLength(
-      s.camera_unwarp, eta, glm::length(surface.x - camera.position_world));
+  surface.cameraPath_m = physics::cameraPathLength(s.camera_unwarp, eta,
+                                                   glm::length(surface.x - camera.position_world));
   const glm::vec3 toSurface = surface.x - camera.position_world;
   surface.dxdu = physics::surfaceStepAcrossPixel(toSurface, forward, stepX, surface.n);
   surface.dxdv = physics::surfaceStepAcrossPixel(toSurface, forward, stepY, surface.n);

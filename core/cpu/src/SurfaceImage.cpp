@@ -29,8 +29,7 @@ SurfaceImage traceSurfaces(const reference::RayScene& scene, const capture::Came
       for (std::size_t s = 0; s < perPixel; ++s) {
         const auto sx = static_cast<float>(s % n), sy = static_cast<float>(s / n);
         const glm::vec2 offset((sx + 0.5f) / n - 0.5f, (sy + 0.5f) / n - 0.5f);
-        const glm::vec3 direction =
-            n == 1 ? rays.direction(x, y) : rays.direction(x, y, offset);
+        const glm::vec3 direction = n == 1 ? rays.direction(x, y) : rays.direction(x, y, offset);
         const auto hit = scene.intersect(camera.position_world, direction);
         if (!hit) continue;
         const std::size_t i = (row * camera.width + x) * perPixel + s;

@@ -187,7 +187,8 @@ RenderResult IrRenderer::render(const RenderJob& job, SegmentSink& sink,
                   static_cast<std::size_t>(job.camera.width) * job.camera.height * 4);
   result.depth_m = depthFromPositions(positions, job.camera);
   if (job.settings.adaptive_pixel_samples && job.settings.pixel_samples > 1) {
-    const std::vector<uint8_t> sampled = sampledPixels(centres, job.camera.width, job.camera.height);
+    const std::vector<uint8_t> sampled =
+        sampledPixels(centres, job.camera.width, job.camera.height);
     result.sampledPixels = static_cast<std::size_t>(std::count(sampled.begin(), sampled.end(), 1));
     backend.setSampledPixels(sampled);
   }

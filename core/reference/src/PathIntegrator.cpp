@@ -205,8 +205,7 @@ void PathIntegrator::renderPixelArea(int32_t x, int32_t y, PixelOutput& out,
                              static_cast<uint64_t>(y) * static_cast<uint64_t>(camera.width) + x);
   for (int32_t s = 0; s < samplesPerPixel_; ++s) {
     const glm::vec2 offset = stratifiedPixelOffset(s, samplesPerPixel_, rng);
-    const std::optional<SurfaceHit> hit =
-        scene_.intersect(eye, rays_.direction(x, y, offset));
+    const std::optional<SurfaceHit> hit = scene_.intersect(eye, rays_.direction(x, y, offset));
     if (!hit) continue;  // a silhouette pixel: this part of it sees nothing
     const double toCamera_m =
         job_.settings.camera_unwarp ? 0.0 : glm::length(hit->position_world - eye);

@@ -52,8 +52,8 @@ bool buildPrimitive(const GltfDocument& doc, const PrimitiveRef& ref, const glm:
   const std::vector<glm::vec3> pos = readVec3(doc, prim.position, "POSITION");
   for (std::size_t i = 0; i < pos.size(); ++i) {
     if (!finite(pos[i])) {
-      fail("accessor[" + std::to_string(prim.position) + "] POSITION element " +
-           std::to_string(i) + " is NaN or infinite");
+      fail("accessor[" + std::to_string(prim.position) + "] POSITION element " + std::to_string(i) +
+           " is NaN or infinite");
     }
   }
   std::vector<glm::vec3> nrm;
@@ -89,8 +89,8 @@ bool buildPrimitive(const GltfDocument& doc, const PrimitiveRef& ref, const glm:
     // Finite in the file, but the node transforms may carry it past float's
     // range, where the scene stores it (found by fuzz_gltf).
     if (!finite(glm::dvec3(glm::vec3(p[i])))) {
-      fail("accessor[" + std::to_string(prim.position) + "] POSITION element " +
-           std::to_string(i) + " is beyond the float range after the node transforms");
+      fail("accessor[" + std::to_string(prim.position) + "] POSITION element " + std::to_string(i) +
+           " is beyond the float range after the node transforms");
     }
   }
 

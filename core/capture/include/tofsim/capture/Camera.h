@@ -2,9 +2,8 @@
 // A pinhole camera. Pixel (x, y) with y = 0 at the top of the image looks
 // through the centre of its pixel; all distances are metres in world space.
 
-#include <glm/glm.hpp>
-
 #include <cstdint>
+#include <glm/glm.hpp>
 
 namespace tofsim::capture {
 
