@@ -51,38 +51,48 @@ ir::CentreSurfaces CpuBackend::prepareSurfaces(const capture::RenderJob& job) {
   job_ = job;
   vpls_.reset();  // a new render: nothing of the previous one survives
   ism_.reset();
-  centres_.reset();
   scene_ = std::make_unique<reference::RayScene>(*job.scene, threads_);
-  const int32_t samples = job.settings.pixel_samples;
-  surfaces_ = std::make_unique<SurfaceImage>(traceSurfaces(*scene_, job.camera, threads_, samples));
   const scene::Bounds b = job.scene->bounds();
   sceneScale_m_ = std::max(glm::length(b.max - b.min), 1e-6f);
   // The driver's G-buffer (depth, the light seen by the camera, the adaptive
-  // samples' edges) is the pixel centres', whatever the sub-pixel samples;
-  // adaptive sampling keeps it for the pixels that take one sample.
-  if (samples > 1) {
-    centres_ = std::make_unique<SurfaceImage>(traceSurfaces(*scene_, job.camera, threads_, 1));
+  // samples' edges) is the pixel centres', whatever the sub-pixel samples.
+  // With adaptive samples the sub-samples wait for the driver's mask
+  // (setSampledPixels), so only the edge pixels' rays are traced.
+  const int32_t samples = job.settings.pixel_samples;
+  const SurfaceImage centres = traceSurfaces(*scene_, job.camera, threads_, 1);
+  subSamplesPending_ = samples > 1 && job.settings.adaptive_pixel_samples;
+  if (samples == 1 || subSamplesPending_) {
+    surfaces_ = std::make_unique<SurfaceImage>(centres);
+  } else {
+    surfaces_ =
+        std::make_unique<SurfaceImage>(traceSurfaces(*scene_, job.camera, threads_, samples));
   }
-  const SurfaceImage& image = samples == 1 ? *surfaces_ : *centres_;
   ir::CentreSurfaces out;
-  out.positions.resize(image.size() * 4);
-  out.normals.resize(image.size() * 4);
-  for (std::size_t i = 0; i < image.size(); ++i) {
+  out.positions.resize(centres.size() * 4);
+  out.normals.resize(centres.size() * 4);
+  for (std::size_t i = 0; i < centres.size(); ++i) {
     for (int k = 0; k < 4; ++k) {
-      out.positions[i * 4 + k] = image.position[i][k];
-      out.normals[i * 4 + k] = image.normal[i][k];
+      out.positions[i * 4 + k] = centres.position[i][k];
+      out.normals[i * 4 + k] = centres.normal[i][k];
     }
   }
-  if (!job.settings.adaptive_pixel_samples) centres_.reset();
   return out;
 }
 
 void CpuBackend::setSampledPixels(const std::vector<uint8_t>& sampled) {
-  TOFSIM_CHECK_MSG(centres_ != nullptr && surfaces_ != nullptr,
+  TOFSIM_CHECK_MSG(subSamplesPending_,
                    "setSampledPixels needs adaptive_pixel_samples with pixel_samples > 1");
-  TOFSIM_CHECK_EQ(sampled.size(), centres_->side.size());
-  surfaces_ = std::make_unique<SurfaceImage>(adaptiveSurfaces(*centres_, *surfaces_, sampled));
-  centres_.reset();
+  surfaces_ = std::make_unique<SurfaceImage>(
+      traceSampledPixels(*scene_, job_.camera, threads_, job_.settings.pixel_samples, sampled));
+  subSamplesPending_ = false;
+}
+
+void CpuBackend::finishSurfaces() {
+  // No mask came (IrBackend: every pixel then takes its N x N samples).
+  if (!subSamplesPending_) return;
+  surfaces_ = std::make_unique<SurfaceImage>(
+      traceSurfaces(*scene_, job_.camera, threads_, job_.settings.pixel_samples));
+  subSamplesPending_ = false;
 }
 
 std::size_t CpuBackend::maxSamplesPerPixel() const {
@@ -92,6 +102,7 @@ std::size_t CpuBackend::maxSamplesPerPixel() const {
 
 std::vector<ir::Vpl> CpuBackend::generateVpls(const capture::RenderJob& job) {
   TOFSIM_CHECK(scene_ != nullptr);  // prepareSurfaces comes first
+  finishSurfaces();
   const capture::IndirectSettings& s = job.settings.indirect;
   if (!s.enabled) return {};
   return traceRsmVpls(*scene_, job.light, s.rsm_resolution, job.settings.index_of_refraction,
@@ -123,6 +134,7 @@ std::size_t CpuBackend::fixedBytes() const {
 std::size_t CpuBackend::visibilityBytesPerVpl() const { return ism_ ? ism_->bytesPerVpl() : 0; }
 
 void CpuBackend::allocate(std::size_t pixelsPerSegment, std::size_t vplsPerBatch) {
+  finishSurfaces();
   pixelsPerSegment_ = pixelsPerSegment;
   const std::size_t floats = pixelsPerSegment * job_.settings.time.bins * kChannels;
   direct_.assign(floats, 0.0f);

@@ -5,34 +5,46 @@
 
 namespace tofsim::cpu {
 
-SurfaceImage traceSurfaces(const reference::RayScene& scene, const capture::Camera& camera,
-                           int threads, int32_t samplesPerSide) {
+namespace {
+
+// An image of `sides[p]` x `sides[p]` samples for pixel p, all empty.
+SurfaceImage emptyImage(const capture::Camera& camera, std::vector<int32_t> sides) {
   SurfaceImage image;
   image.width = camera.width;
   image.height = camera.height;
-  const int32_t n = samplesPerSide;
-  const std::size_t perPixel = static_cast<std::size_t>(n) * n;
-  const std::size_t pixelCount = static_cast<std::size_t>(camera.width) * camera.height;
-  image.side.assign(pixelCount, n);
+  const std::size_t pixelCount = sides.size();
   image.firstSample.resize(pixelCount + 1);
-  for (std::size_t p = 0; p <= pixelCount; ++p) image.firstSample[p] = p * perPixel;
-  const std::size_t pixels = pixelCount * perPixel;
-  image.position.assign(pixels, glm::vec4(0.0f));
-  image.normal.assign(pixels, glm::vec4(0.0f));
-  image.albedo.assign(pixels, glm::vec4(0.0f));
-  image.geometric.assign(pixels, glm::vec3(0.0f));
-  image.metallicRoughness.assign(pixels, glm::vec2(0.0f));
+  image.firstSample[0] = 0;
+  for (std::size_t p = 0; p < pixelCount; ++p) {
+    image.firstSample[p + 1] = image.firstSample[p] + static_cast<std::size_t>(sides[p]) *
+                                                          static_cast<std::size_t>(sides[p]);
+  }
+  image.side = std::move(sides);
+  const std::size_t samples = image.firstSample[pixelCount];
+  image.position.assign(samples, glm::vec4(0.0f));
+  image.normal.assign(samples, glm::vec4(0.0f));
+  image.albedo.assign(samples, glm::vec4(0.0f));
+  image.geometric.assign(samples, glm::vec3(0.0f));
+  image.metallicRoughness.assign(samples, glm::vec2(0.0f));
+  return image;
+}
+
+// Traces every sample of `image` (its layout set), row by row on `threads`.
+void traceInto(SurfaceImage& image, const reference::RayScene& scene, const capture::Camera& camera,
+               int threads) {
   const capture::PixelRays rays(camera);
   parallelFor(static_cast<std::size_t>(camera.height), threads, [&](std::size_t row) {
     const auto y = static_cast<int32_t>(row);
     for (int32_t x = 0; x < camera.width; ++x) {
-      for (std::size_t s = 0; s < perPixel; ++s) {
+      const std::size_t p = row * camera.width + x;
+      const int32_t n = image.side[p];
+      for (std::size_t s = 0; s < image.samplesOf(p); ++s) {
         const auto sx = static_cast<float>(s % n), sy = static_cast<float>(s / n);
         const glm::vec2 offset((sx + 0.5f) / n - 0.5f, (sy + 0.5f) / n - 0.5f);
         const glm::vec3 direction = n == 1 ? rays.direction(x, y) : rays.direction(x, y, offset);
         const auto hit = scene.intersect(camera.position_world, direction);
         if (!hit) continue;
-        const std::size_t i = (row * camera.width + x) * perPixel + s;
+        const std::size_t i = image.firstSample[p] + s;
         image.position[i] = glm::vec4(hit->position_world, 1.0f);
         image.normal[i] = glm::vec4(hit->normal_world, 0.0f);
         image.albedo[i] = glm::vec4(hit->albedo, 1.0f);
@@ -41,40 +53,26 @@ SurfaceImage traceSurfaces(const reference::RayScene& scene, const capture::Came
       }
     }
   });
+}
+
+}  // namespace
+
+SurfaceImage traceSurfaces(const reference::RayScene& scene, const capture::Camera& camera,
+                           int threads, int32_t samplesPerSide) {
+  const std::size_t pixels = static_cast<std::size_t>(camera.width) * camera.height;
+  SurfaceImage image = emptyImage(camera, std::vector<int32_t>(pixels, samplesPerSide));
+  traceInto(image, scene, camera, threads);
   return image;
 }
 
-SurfaceImage adaptiveSurfaces(const SurfaceImage& centres, const SurfaceImage& subSamples,
-                              const std::vector<uint8_t>& sampled) {
-  const std::size_t pixels = sampled.size();
-  TOFSIM_CHECK(centres.side.size() == pixels && subSamples.side.size() == pixels);
-  SurfaceImage image;
-  image.width = centres.width;
-  image.height = centres.height;
-  image.side.resize(pixels);
-  image.firstSample.resize(pixels + 1);
-  for (std::size_t p = 0; p < pixels; ++p) {
-    const SurfaceImage& from = sampled[p] ? subSamples : centres;
-    image.side[p] = from.side[p];
-    image.firstSample[p + 1] = image.firstSample[p] + from.samplesOf(p);
-  }
-  const std::size_t total = image.firstSample[pixels];
-  image.position.resize(total);
-  image.normal.resize(total);
-  image.albedo.resize(total);
-  image.geometric.resize(total);
-  image.metallicRoughness.resize(total);
-  for (std::size_t p = 0; p < pixels; ++p) {
-    const SurfaceImage& from = sampled[p] ? subSamples : centres;
-    for (std::size_t k = 0; k < from.samplesOf(p); ++k) {
-      const std::size_t to = image.firstSample[p] + k, at = from.firstSample[p] + k;
-      image.position[to] = from.position[at];
-      image.normal[to] = from.normal[at];
-      image.albedo[to] = from.albedo[at];
-      image.geometric[to] = from.geometric[at];
-      image.metallicRoughness[to] = from.metallicRoughness[at];
-    }
-  }
+SurfaceImage traceSampledPixels(const reference::RayScene& scene, const capture::Camera& camera,
+                                int threads, int32_t samplesPerSide,
+                                const std::vector<uint8_t>& sampled) {
+  TOFSIM_CHECK_EQ(sampled.size(), static_cast<std::size_t>(camera.width) * camera.height);
+  std::vector<int32_t> sides(sampled.size());
+  for (std::size_t p = 0; p < sampled.size(); ++p) sides[p] = sampled[p] ? samplesPerSide : 1;
+  SurfaceImage image = emptyImage(camera, std::move(sides));
+  traceInto(image, scene, camera, threads);
   return image;
 }
 

@@ -19,7 +19,7 @@ struct SurfaceImage {
   int32_t height = 0;
   /// Pixel p's samples are entries [firstSample[p], firstSample[p + 1]), a
   /// side[p] x side[p] grid of its sub-pixels (side 1: the pixel centre);
-  /// traceSurfaces gives every pixel the same N, adaptiveSurfaces mixes 1 and N.
+  /// traceSurfaces gives every pixel the same N, traceSampledPixels mixes 1 and N.
   std::vector<std::size_t> firstSample;
   std::vector<int32_t> side;
   std::vector<glm::vec4> position;           ///< xyz world, w = 1 on a surface, 0 else
@@ -41,9 +41,11 @@ struct SurfaceImage {
 SurfaceImage traceSurfaces(const reference::RayScene& scene, const capture::Camera& camera,
                            int threads, int32_t samplesPerSide = 1);
 
-/// render.adaptive_pixel_samples: pixel p's samples from `subSamples` (N x N
-/// per pixel) where sampled[p] is 1, else its one entry of `centres`.
-SurfaceImage adaptiveSurfaces(const SurfaceImage& centres, const SurfaceImage& subSamples,
-                              const std::vector<uint8_t>& sampled);
+/// render.adaptive_pixel_samples: N x N samples (as traceSurfaces places
+/// them) for the pixels where sampled[p] is 1, the centre's one elsewhere;
+/// only those rays are traced.
+SurfaceImage traceSampledPixels(const reference::RayScene& scene, const capture::Camera& camera,
+                                int threads, int32_t samplesPerSide,
+                                const std::vector<uint8_t>& sampled);
 
 }  // namespace tofsim::cpu

@@ -82,6 +82,9 @@ class CpuBackend : public ir::IrBackend {
   /// The segment's histograms in `from` out to `to` (with the indirect
   /// light's wide footprint kernels summed in, pixel by pixel), and zeroed.
   void moveOut(std::vector<float>& from, float* to, bool integrateFootprints);
+  /// Traces every pixel's N x N samples if adaptive samples are still waiting
+  /// for a mask that did not come.
+  void finishSurfaces();
   /// render.pixel_samples squared: the most samples a pixel takes.
   std::size_t maxSamplesPerPixel() const;
   /// segmentSurfaces_[i] and segmentLit_[i] from the segment's sample i, a
@@ -95,9 +98,9 @@ class CpuBackend : public ir::IrBackend {
   capture::RenderJob job_;
   std::unique_ptr<reference::RayScene> scene_;
   std::unique_ptr<SurfaceImage> surfaces_;  ///< every pixel's samples (SurfaceImage::firstSample)
-  /// The pixel centres', kept from prepareSurfaces to setSampledPixels for
-  /// render.adaptive_pixel_samples.
-  std::unique_ptr<SurfaceImage> centres_;
+  /// render.adaptive_pixel_samples: surfaces_ holds the centres until
+  /// setSampledPixels (or finishSurfaces) traces the sub-samples.
+  bool subSamplesPending_ = false;
   std::unique_ptr<VplArrays> vpls_;
   std::unique_ptr<CpuIsm> ism_;
   std::vector<PixelSurface> segmentSurfaces_;  ///< per sample of the segment's pixels
