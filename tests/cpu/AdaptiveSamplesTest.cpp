@@ -10,6 +10,7 @@
 #include <cstring>
 #include <memory>
 
+#include "support/CpuRender.h"
 #include "support/TestJobs.h"
 #include "tofsim/capture/VolumeCollector.h"
 #include "tofsim/cpu/CpuBackend.h"
@@ -22,18 +23,8 @@ namespace {
 
 using namespace capture;
 
-struct Render {
-  VolumeCollector volume;
-  RenderResult result;
-};
-
-Render render(const RenderJob& job) {
-  Render out{VolumeCollector(job.camera.width, job.camera.height, job.settings.time, kChannels),
-             {}};
-  out.result = ir::IrRenderer(std::make_unique<CpuBackend>(CpuBackendOptions{2, true}))
-                   .render(job, out.volume);
-  return out;
-}
+using test::CpuRender;
+using test::renderOnCpu;
 
 bool samePixel(const TransientVolume& a, const TransientVolume& b, int32_t y, int32_t x) {
   const std::size_t floats = static_cast<std::size_t>(a.bins()) * a.channels();
@@ -50,12 +41,12 @@ std::vector<uint8_t> sampledMask(const RenderJob& job) {
 void expectComposition(RenderJob job, int32_t n) {
   job.settings.pixel_samples = n;
   job.settings.adaptive_pixel_samples = true;
-  const Render adaptive = render(job);
+  const CpuRender adaptive = renderOnCpu(job);
   const std::vector<uint8_t> sampled = sampledMask(job);
   job.settings.adaptive_pixel_samples = false;
-  const Render all = render(job);
+  const CpuRender all = renderOnCpu(job);
   job.settings.pixel_samples = 1;
-  const Render one = render(job);
+  const CpuRender one = renderOnCpu(job);
 
   const auto count = static_cast<std::size_t>(std::count(sampled.begin(), sampled.end(), 1));
   EXPECT_EQ(adaptive.result.sampledPixels, count);
@@ -66,7 +57,7 @@ void expectComposition(RenderJob job, int32_t n) {
   int mismatches = 0;
   for (int32_t y = 0; y < job.camera.height; ++y) {
     for (int32_t x = 0; x < job.camera.width; ++x) {
-      const Render& expected =
+      const CpuRender& expected =
           sampled[static_cast<std::size_t>(y) * job.camera.width + x] ? all : one;
       const bool same = samePixel(adaptive.volume.direct, expected.volume.direct, y, x) &&
                         samePixel(adaptive.volume.indirect, expected.volume.indirect, y, x);
@@ -99,9 +90,9 @@ TEST_F(AdaptiveSamplesTest, EachPixelIsTheOneSampleOrTheSubSampledRendersWithPoi
 TEST_F(AdaptiveSamplesTest, OffOrWithOneSampleNothingChanges) {
   RenderJob job = test::cornellBoxJob(scene_, 16, 80, 0.02);
   job.settings.indirect.rsm_resolution = 16;
-  const Render plain = render(job);
+  const CpuRender plain = renderOnCpu(job);
   job.settings.adaptive_pixel_samples = true;  // pixel_samples 1: nothing to adapt
-  const Render adaptiveOne = render(job);
+  const CpuRender adaptiveOne = renderOnCpu(job);
   EXPECT_EQ(adaptiveOne.result.sampledPixels, 0u);
   for (int32_t y = 0; y < job.camera.height; ++y) {
     for (int32_t x = 0; x < job.camera.width; ++x) {

@@ -8,6 +8,7 @@
 #include <cstring>
 
 #include "support/ClosedForm.h"
+#include "support/CpuRender.h"
 #include "support/TestJobs.h"
 #include "tofsim/capture/VolumeCollector.h"
 #include "tofsim/cpu/CpuBackend.h"
@@ -16,19 +17,8 @@
 namespace tofsim::cpu {
 namespace {
 
-struct CpuRender {
-  capture::VolumeCollector volume;
-  capture::RenderResult result;
-};
-
-// Through the real IR driver, as `tofsim render` with render.backend=cpu does.
-CpuRender renderOnCpu(const capture::RenderJob& job, const CpuBackendOptions& options) {
-  CpuRender out{capture::VolumeCollector(job.camera.width, job.camera.height, job.settings.time,
-                                         capture::kChannels),
-                {}};
-  out.result = ir::IrRenderer(std::make_unique<CpuBackend>(options)).render(job, out.volume);
-  return out;
-}
+using test::CpuRender;
+using test::renderOnCpu;
 
 bool sameBytes(const TransientVolume& a, const TransientVolume& b) {
   return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(float)) == 0;
@@ -141,7 +131,9 @@ TEST_P(CpuDeterminismTest, SegmentsAndBatchesDoNotChangeTheBytes) {
     EXPECT_EQ(whole.result.segments, 1u);
     EXPECT_GT(split.result.segments, 2u);
     EXPECT_EQ(whole.result.sampledPixels, split.result.sampledPixels);
-    if (adaptive) EXPECT_GT(whole.result.sampledPixels, 0u);
+    if (adaptive) {
+      EXPECT_GT(whole.result.sampledPixels, 0u);
+    }
     if (GetParam() == capture::Visibility::Ism) {
       EXPECT_GT(split.result.vplBatches, 1u);
     }

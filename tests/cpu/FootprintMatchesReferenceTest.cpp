@@ -12,6 +12,7 @@
 
 #include "reference/RenderReference.h"
 #include "support/AnalyticScenes.h"
+#include "support/CpuRender.h"
 #include "support/TestJobs.h"
 #include "tofsim/capture/VolumeCollector.h"
 #include "tofsim/compare/VolumeComparison.h"
@@ -26,11 +27,7 @@ namespace {
 
 using namespace capture;
 
-VolumeCollector renderIr(const RenderJob& job) {
-  VolumeCollector out(job.camera.width, job.camera.height, job.settings.time, 3);
-  ir::IrRenderer(std::make_unique<CpuBackend>(CpuBackendOptions{2, true})).render(job, out);
-  return out;
-}
+VolumeCollector renderIr(const RenderJob& job) { return test::renderOnCpu(job).volume; }
 
 VolumeCollector renderReference(const RenderJob& job, int samples) {
   return test::renderReference(job, 2, samples, reference::PixelFilter::Box);
@@ -60,12 +57,9 @@ Errors transientErrors(RenderJob job, int samples) {
   e.footprint3 =
       compare::compareVolumes(renderIr(samples3).total(), ref.total()).transientRelativeL1;
   samples3.settings.adaptive_pixel_samples = true;
-  VolumeCollector adaptive(job.camera.width, job.camera.height, job.settings.time, 3);
-  const RenderResult adaptiveResult =
-      ir::IrRenderer(std::make_unique<CpuBackend>(CpuBackendOptions{2, true}))
-          .render(samples3, adaptive);
-  e.adaptive3 = compare::compareVolumes(adaptive.total(), ref.total()).transientRelativeL1;
-  e.sampledShare = static_cast<double>(adaptiveResult.sampledPixels) /
+  const test::CpuRender adaptive = test::renderOnCpu(samples3);
+  e.adaptive3 = compare::compareVolumes(adaptive.volume.total(), ref.total()).transientRelativeL1;
+  e.sampledShare = static_cast<double>(adaptive.result.sampledPixels) /
                    (static_cast<double>(job.camera.width) * job.camera.height);
   job.settings.pixel_footprint = false;
   e.point = compare::compareVolumes(renderIr(job).total(), ref.total()).transientRelativeL1;

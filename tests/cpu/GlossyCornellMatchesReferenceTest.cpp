@@ -20,6 +20,7 @@
 #include <utility>
 
 #include "reference/RenderReference.h"
+#include "support/CpuRender.h"
 #include "support/TestJobs.h"
 #include "tofsim/capture/VolumeCollector.h"
 #include "tofsim/compare/VolumeComparison.h"
@@ -35,9 +36,7 @@ using namespace capture;
 
 VolumeCollector renderIr(RenderJob job, int32_t bounces) {
   job.settings.indirect.bounces = bounces;
-  VolumeCollector out(job.camera.width, job.camera.height, job.settings.time, 3);
-  ir::IrRenderer(std::make_unique<CpuBackend>(CpuBackendOptions{2, true})).render(job, out);
-  return out;
+  return test::renderOnCpu(job).volume;
 }
 
 TransientVolume minus(const TransientVolume& a, const TransientVolume& b) {

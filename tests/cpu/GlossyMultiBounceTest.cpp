@@ -13,6 +13,7 @@
 #include <memory>
 
 #include "reference/RenderReference.h"
+#include "support/CpuRender.h"
 #include "support/TestJobs.h"
 #include "tofsim/capture/VolumeCollector.h"
 #include "tofsim/cpu/CpuBackend.h"
@@ -26,9 +27,7 @@ using namespace capture;
 
 double irIndirect(RenderJob job, int32_t bounces) {
   job.settings.indirect.bounces = bounces;
-  VolumeCollector out(job.camera.width, job.camera.height, job.settings.time, 3);
-  ir::IrRenderer(std::make_unique<CpuBackend>(CpuBackendOptions{2, true})).render(job, out);
-  return test::energy(out.indirect);
+  return test::energy(test::renderOnCpu(job).volume.indirect);
 }
 
 double referenceIndirect(const RenderJob& job, int32_t interactions) {

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "reference/RenderReference.h"
+#include "support/CpuRender.h"
 #include "support/TestJobs.h"
 #include "tofsim/capture/VolumeCollector.h"
 #include "tofsim/compare/VolumeComparison.h"
@@ -51,8 +52,7 @@ struct Bias {
 
 Bias biasOf(RenderJob job, double clamp, const VolumeCollector& ref) {
   job.settings.indirect.vpl_brdf_clamp_per_sr = clamp;
-  VolumeCollector ir(job.camera.width, job.camera.height, job.settings.time, 3);
-  ir::IrRenderer(std::make_unique<CpuBackend>(CpuBackendOptions{2, true})).render(job, ir);
+  const VolumeCollector ir = test::renderOnCpu(job).volume;
   const Bias b{test::energy(ir.indirect) / test::energy(ref.indirect),
                compare::compareVolumes(ir.indirect, ref.indirect).steadyRelativeL1};
   std::printf("| %g | %.3f | %.3f |\n", clamp, b.energyRatio, b.steadyL1);

@@ -14,6 +14,7 @@
 
 #include "reference/RenderReference.h"
 #include "support/AnalyticScenes.h"
+#include "support/CpuRender.h"
 #include "support/TestJobs.h"
 #include "tofsim/capture/VolumeCollector.h"
 #include "tofsim/cpu/CpuBackend.h"
@@ -27,17 +28,9 @@ namespace {
 
 using namespace capture;
 
-struct Rendered {
-  VolumeCollector volumes;
-  RenderResult result;
-};
-
-Rendered renderIr(RenderJob job, int32_t bounces, int threads = 2) {
+test::CpuRender renderIr(RenderJob job, int32_t bounces, int threads = 2) {
   job.settings.indirect.bounces = bounces;
-  Rendered out{VolumeCollector(job.camera.width, job.camera.height, job.settings.time, 3), {}};
-  out.result = ir::IrRenderer(std::make_unique<CpuBackend>(CpuBackendOptions{threads, true}))
-                   .render(job, out.volumes);
-  return out;
+  return test::renderOnCpu(job, {threads, true});
 }
 
 RenderJob exactUnclamped(RenderJob job) {
@@ -52,8 +45,8 @@ struct BounceErrors {
 };
 
 BounceErrors energyErrors(const RenderJob& job, int samples) {
-  const double ir1 = test::energy(renderIr(job, 1).volumes.indirect);
-  const double ir2 = test::energy(renderIr(job, 2).volumes.indirect);
+  const double ir1 = test::energy(renderIr(job, 1).volume.indirect);
+  const double ir2 = test::energy(renderIr(job, 2).volume.indirect);
   const double ref2 =
       test::energy(test::renderReference(job, 2, samples, reference::PixelFilter::Box).indirect);
   const double ref3 =
@@ -111,7 +104,7 @@ TEST(MultiBounceTest, ClosedBoxBounceEnergyTendsToAlbedoTimesThePreviousOne) {
   double previous = 0.0, previousBounce = 0.0;
   std::vector<double> ratio(6, 0.0);
   for (int32_t k = 1; k <= 5; ++k) {
-    const double all = test::energy(renderIr(job, k).volumes.indirect);
+    const double all = test::energy(renderIr(job, k).volume.indirect);
     const double bounce = all - previous;
     if (k > 1) ratio[k] = bounce / previousBounce;
     if (k > 1) std::printf("closed box: bounce %d / bounce %d = %.4f\n", k, k - 1, ratio[k]);
@@ -145,7 +138,7 @@ TEST(MultiBounceTest, NoBounceArrivesBeforeItsShortestUnfoldedPath) {
   job.settings.pixel_footprint = false;
   job.settings.time = TimeAxis{0.0, 0.01 / kSpeedOfLight_m_per_s, 1500};
   const TimeAxis& axis = job.settings.time;
-  std::vector<Rendered> r;
+  std::vector<test::CpuRender> r;
   for (int32_t k = 1; k <= 3; ++k) r.push_back(renderIr(job, k));
   const glm::dvec3 eye(job.camera.position_world), light(job.light.position_world);
   std::size_t checked = 0, lit = 0;
@@ -170,11 +163,11 @@ TEST(MultiBounceTest, NoBounceArrivesBeforeItsShortestUnfoldedPath) {
         ASSERT_GE(bound, directBin);
         // Bounce k alone: the VPLs of bounces < k add in the same order in
         // both renders, so where bounce k adds nothing the bins are bit-equal.
-        const TransientVolume& all = r[k - 1].volumes.indirect;
+        const TransientVolume& all = r[k - 1].volume.indirect;
         int32_t firstAny = axis.bins, firstOwn = axis.bins;
         for (int32_t t = 0; t < axis.bins; ++t) {
           for (int32_t c = 0; c < 3; ++c) {
-            const float before = k > 1 ? r[k - 2].volumes.indirect.at(y, x, t, c) : 0.0f;
+            const float before = k > 1 ? r[k - 2].volume.indirect.at(y, x, t, c) : 0.0f;
             if (all.at(y, x, t, c) != 0.0f) firstAny = std::min(firstAny, t);
             if (all.at(y, x, t, c) != before) firstOwn = std::min(firstOwn, t);
           }
@@ -201,33 +194,33 @@ TEST(MultiBounceTest, OneBounceIsTheDefaultAndIgnoresVplsPerBounce) {
   test::CornerJob s(16);
   RenderJob job = s.job;
   job.settings.indirect.vpls_per_bounce = 777;
-  const Rendered one = renderIr(job, 1);
-  const Rendered plain = renderIr(s.job, RenderSettings().indirect.bounces);
+  const test::CpuRender one = renderIr(job, 1);
+  const test::CpuRender plain = renderIr(s.job, RenderSettings().indirect.bounces);
   EXPECT_EQ(RenderSettings().indirect.bounces, 1);
   EXPECT_EQ(one.result.vpls, plain.result.vpls);
-  EXPECT_EQ(one.volumes.indirect.values(), plain.volumes.indirect.values());
-  EXPECT_EQ(one.volumes.direct.values(), plain.volumes.direct.values());
+  EXPECT_EQ(one.volume.indirect.values(), plain.volume.indirect.values());
+  EXPECT_EQ(one.volume.direct.values(), plain.volume.direct.values());
 }
 
 TEST(MultiBounceTest, ThreeBouncesGiveTheSameBytesWhateverTheThreadsAndBudget) {
   test::CornerJob s(16);  // ISM visibility: every bounce's VPLs get imperfect shadow maps
   s.job.settings.indirect.rsm_resolution = 16;
-  const Rendered a = renderIr(s.job, 3, 1);
+  const test::CpuRender a = renderIr(s.job, 3, 1);
   const std::size_t first = renderIr(s.job, 1, 1).result.vpls;
   // As many rays per later bounce as bounce 1 has VPLs; those leaving the
   // open corner make none.
   EXPECT_GT(a.result.vpls, first);
   EXPECT_LT(a.result.vpls, 3 * first);
   for (const int threads : {2, 3}) {
-    const Rendered b = renderIr(s.job, 3, threads);
-    EXPECT_EQ(a.volumes.indirect.values(), b.volumes.indirect.values()) << threads;
-    EXPECT_EQ(a.volumes.direct.values(), b.volumes.direct.values()) << threads;
+    const test::CpuRender b = renderIr(s.job, 3, threads);
+    EXPECT_EQ(a.volume.indirect.values(), b.volume.indirect.values()) << threads;
+    EXPECT_EQ(a.volume.direct.values(), b.volume.direct.values()) << threads;
   }
   RenderJob tight = s.job;
   tight.settings.memory_budget_bytes = std::size_t{2} << 20;
-  const Rendered c = renderIr(tight, 3, 3);
+  const test::CpuRender c = renderIr(tight, 3, 3);
   EXPECT_GT(c.result.vplBatches, 1u);
-  EXPECT_EQ(a.volumes.indirect.values(), c.volumes.indirect.values());
+  EXPECT_EQ(a.volume.indirect.values(), c.volume.indirect.values());
 }
 
 }  // namespace
