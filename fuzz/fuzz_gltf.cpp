@@ -1,10 +1,10 @@
 // Bytes -> .gltf (JSON) or .glb (binary, by its "glTF" magic) -> loadGltf:
 // tinygltf's parsing plus tofsim's own conversion (accessors, indices,
 // transforms, degenerate triangles, NaN/inf positions).
-#include <cmath>
 #include <cstring>
 
 #include "FuzzFile.h"
+#include "SceneInvariants.h"
 #include "tofsim/scene/GltfLoader.h"
 #include "tofsim/util/Error.h"
 
@@ -14,22 +14,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   try {
     tofsim::scene::LoadReport report;
     const tofsim::scene::Scene scene = tofsim::scene::loadGltf(path, &report);
-    // What the renderer relies on: indices in range, finite positions and
-    // cameras.
-    for (const tofsim::scene::SceneCamera& c : scene.cameras) {
-      if (!std::isfinite(c.fov_y_deg) || !std::isfinite(c.position_world.x) ||
-          !std::isfinite(c.forward_world.x) || !std::isfinite(c.up_world.x)) {
-        __builtin_trap();
-      }
-    }
-    for (const tofsim::scene::Mesh& mesh : scene.meshes) {
-      for (const uint32_t i : mesh.indices) {
-        if (i >= mesh.positions_world.size()) __builtin_trap();
-      }
-      for (const auto& p : mesh.positions_world) {
-        if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z)) __builtin_trap();
-      }
-    }
+    if (!tofsim::fuzz::renderable(scene)) __builtin_trap();
   } catch (const tofsim::InputError&) {
   }
   return 0;
