@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <thread>
+#include <utility>
 
 #include "CpuIsm.h"
 #include "GatherKernel.h"
@@ -59,14 +60,7 @@ ir::CentreSurfaces CpuBackend::prepareSurfaces(const capture::RenderJob& job) {
   // With adaptive samples the sub-samples wait for the driver's mask
   // (setSampledPixels), so only the edge pixels' rays are traced.
   const int32_t samples = job.settings.pixel_samples;
-  const SurfaceImage centres = traceSurfaces(*scene_, job.camera, threads_, 1);
-  subSamplesPending_ = samples > 1 && job.settings.adaptive_pixel_samples;
-  if (samples == 1 || subSamplesPending_) {
-    surfaces_ = std::make_unique<SurfaceImage>(centres);
-  } else {
-    surfaces_ =
-        std::make_unique<SurfaceImage>(traceSurfaces(*scene_, job.camera, threads_, samples));
-  }
+  SurfaceImage centres = traceSurfaces(*scene_, job.camera, threads_, 1);
   ir::CentreSurfaces out;
   out.positions.resize(centres.size() * 4);
   out.normals.resize(centres.size() * 4);
@@ -75,6 +69,13 @@ ir::CentreSurfaces CpuBackend::prepareSurfaces(const capture::RenderJob& job) {
       out.positions[i * 4 + k] = centres.position[i][k];
       out.normals[i * 4 + k] = centres.normal[i][k];
     }
+  }
+  subSamplesPending_ = samples > 1 && job.settings.adaptive_pixel_samples;
+  if (samples == 1 || subSamplesPending_) {
+    surfaces_ = std::make_unique<SurfaceImage>(std::move(centres));
+  } else {
+    surfaces_ =
+        std::make_unique<SurfaceImage>(traceSurfaces(*scene_, job.camera, threads_, samples));
   }
   return out;
 }
