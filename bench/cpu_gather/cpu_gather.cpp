@@ -14,6 +14,7 @@
 #include <ctime>
 #include <vector>
 
+#include "support/BackendScene.h"
 #include "support/TestJobs.h"
 #include "tofsim/capture/SegmentSink.h"
 #include "tofsim/cpu/CpuBackend.h"
@@ -47,10 +48,11 @@ GatherTimes gatherSeconds(const capture::RenderJob& job, ir::IrBackend& backend,
   const auto seconds = [](Clock::time_point a, Clock::time_point b) {
     return std::chrono::duration<double>(b - a).count();
   };
+  const test::BackendScene prepared(backend, *job.scene);
   backend.prepareSurfaces(job);
   const auto vpls = backend.generateVpls(job);
   backend.setVpls(vpls);
-  const std::size_t pixels = static_cast<std::size_t>(job.camera.width) * job.camera.height;
+  const std::size_t pixels = static_cast<std::size_t>(job.camera().width) * job.camera().height;
   backend.allocate(pixels, vpls.size());
   std::vector<float> direct(pixels * job.settings.time.bins * capture::kChannels, 1.0f),
       indirect(direct.size(), 1.0f);

@@ -54,7 +54,7 @@ struct Measured {
 
 template <typename Render>
 Measured measure(const capture::RenderJob& job, const TransientVolume& truth, Render render) {
-  capture::VolumeCollector out(job.camera.width, job.camera.height, job.settings.time, 3);
+  capture::VolumeCollector out(job.camera().width, job.camera().height, job.settings.time, 3);
   const auto start = std::chrono::steady_clock::now();
   render(out);
   const double seconds =
@@ -140,7 +140,7 @@ TransientVolume groundTruth(const capture::RenderJob& job, reference::PixelFilte
   truthSettings.bounces = bounces + 1;
   truthSettings.pixel_filter = filter;
   truthSettings.samples_per_pixel = 16384;
-  capture::VolumeCollector truthOut(job.camera.width, job.camera.height, job.settings.time, 3);
+  capture::VolumeCollector truthOut(job.camera().width, job.camera().height, job.settings.time, 3);
   const auto t0 = std::chrono::steady_clock::now();
   reference::ReferenceRenderer(truthSettings).render(truthJob, truthOut);
   const double truthSeconds =

@@ -34,7 +34,7 @@ struct Parts {
 };
 
 Parts collect(const capture::RenderJob& job, const capture::Renderer& renderer) {
-  capture::VolumeCollector out(job.camera.width, job.camera.height, job.settings.time, 3);
+  capture::VolumeCollector out(job.camera().width, job.camera().height, job.settings.time, 3);
   const auto start = std::chrono::steady_clock::now();
   renderer.render(job, out);
   Parts parts{out.total(), out.direct, out.indirect};
@@ -75,7 +75,7 @@ void compareScene(const char* title, capture::RenderJob job, int spp) {
   std::printf(
       "\n%s: %dx%d, %d bins of 100 ps from %.3f m; IR: CPU backend, exact visibility, "
       "no clamp; truth: reference, box filter, 2 bounces, %d paths/pixel, seed 99 (%.1f s)\n\n",
-      title, job.camera.width, job.camera.height, job.settings.time.bins,
+      title, job.camera().width, job.camera().height, job.settings.time.bins,
       job.settings.time.start_s * kSpeedOfLight_m_per_s, spp, truth.seconds);
   std::printf(
       "| render | seconds | total transient L1 | direct transient L1 | indirect transient L1 "

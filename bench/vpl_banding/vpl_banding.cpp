@@ -91,7 +91,7 @@ struct Render {
 Render renderIndirect(capture::RenderJob job, int rsm, bool vplFootprint) {
   job.settings.indirect.rsm_resolution = rsm;
   job.settings.indirect.vpl_footprint = vplFootprint;
-  capture::VolumeCollector out(job.camera.width, job.camera.height, job.settings.time, 3);
+  capture::VolumeCollector out(job.camera().width, job.camera().height, job.settings.time, 3);
   const auto start = std::chrono::steady_clock::now();
   const capture::RenderResult r =
       ir::IrRenderer(std::make_unique<cpu::CpuBackend>()).render(job, out);

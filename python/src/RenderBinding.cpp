@@ -96,7 +96,7 @@ Rendered renderInMemory(const config::RunConfig& config, bool quiet) {
   // bounceN (N more volumes in memory); with one, bounce 1 is the indirect light.
   const bool ir = config.renderer == config::RendererKind::InstantRadiosity;
   const int32_t bounces = ir && job.settings.indirect.enabled ? job.settings.indirect.bounces : 0;
-  capture::VolumeCollector collector(job.camera.width, job.camera.height, job.settings.time,
+  capture::VolumeCollector collector(job.camera().width, job.camera().height, job.settings.time,
                                      capture::kChannels, bounces > 1 ? bounces : 0);
   const pipeline::RendererChoice choice =
       pipeline::makeRenderer(config, gl::eglPlatformFromEnvironment());

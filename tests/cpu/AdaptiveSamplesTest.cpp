@@ -10,6 +10,7 @@
 #include <cstring>
 #include <memory>
 
+#include "support/BackendScene.h"
 #include "support/CpuRender.h"
 #include "support/TestJobs.h"
 #include "tofsim/capture/VolumeCollector.h"
@@ -35,7 +36,8 @@ bool samePixel(const TransientVolume& a, const TransientVolume& b, int32_t y, in
 // The mask the driver computes, from the backend's own centre G-buffer.
 std::vector<uint8_t> sampledMask(const RenderJob& job) {
   CpuBackend backend(CpuBackendOptions{2, true});
-  return ir::sampledPixels(backend.prepareSurfaces(job), job.camera.width, job.camera.height);
+  const test::BackendScene prepared(backend, *job.scene);
+  return ir::sampledPixels(backend.prepareSurfaces(job), job.camera().width, job.camera().height);
 }
 
 void expectComposition(RenderJob job, int32_t n) {
@@ -55,10 +57,10 @@ void expectComposition(RenderJob job, int32_t n) {
   EXPECT_GT(count, sampled.size() / 10);
   EXPECT_LT(count, sampled.size() / 2);
   int mismatches = 0;
-  for (int32_t y = 0; y < job.camera.height; ++y) {
-    for (int32_t x = 0; x < job.camera.width; ++x) {
+  for (int32_t y = 0; y < job.camera().height; ++y) {
+    for (int32_t x = 0; x < job.camera().width; ++x) {
       const CpuRender& expected =
-          sampled[static_cast<std::size_t>(y) * job.camera.width + x] ? all : one;
+          sampled[static_cast<std::size_t>(y) * job.camera().width + x] ? all : one;
       const bool same = samePixel(adaptive.volume.direct, expected.volume.direct, y, x) &&
                         samePixel(adaptive.volume.indirect, expected.volume.indirect, y, x);
       if (!same && ++mismatches <= 5) ADD_FAILURE() << "pixel " << x << "," << y;
@@ -94,8 +96,8 @@ TEST_F(AdaptiveSamplesTest, OffOrWithOneSampleNothingChanges) {
   job.settings.adaptive_pixel_samples = true;  // pixel_samples 1: nothing to adapt
   const CpuRender adaptiveOne = renderOnCpu(job);
   EXPECT_EQ(adaptiveOne.result.sampledPixels, 0u);
-  for (int32_t y = 0; y < job.camera.height; ++y) {
-    for (int32_t x = 0; x < job.camera.width; ++x) {
+  for (int32_t y = 0; y < job.camera().height; ++y) {
+    for (int32_t x = 0; x < job.camera().width; ++x) {
       ASSERT_TRUE(samePixel(plain.volume.direct, adaptiveOne.volume.direct, y, x));
       ASSERT_TRUE(samePixel(plain.volume.indirect, adaptiveOne.volume.indirect, y, x));
     }

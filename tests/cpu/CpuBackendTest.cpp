@@ -30,10 +30,10 @@ TEST(CpuBackendTest, PlaneDirectPeakIsInTheBinOfTheRoundTrip) {
   s.job.settings.indirect.enabled = false;
   const CpuRender out = renderOnCpu(s.job, {2, true});
   int checked = 0;
-  for (int y = 0; y < s.job.camera.height; ++y) {
-    for (int x = 0; x < s.job.camera.width; ++x) {
-      const glm::dvec3 p = test::hitOnPlane(s.job.camera, x, y);
-      const double r = glm::length(p - glm::dvec3(s.job.camera.position_world));
+  for (int y = 0; y < s.job.camera().height; ++y) {
+    for (int x = 0; x < s.job.camera().width; ++x) {
+      const glm::dvec3 p = test::hitOnPlane(s.job.camera(), x, y);
+      const double r = glm::length(p - glm::dvec3(s.job.camera().position_world));
       const auto expected = test::unambiguousBin(s.job.settings.time, 2.0 * r);
       if (!expected) continue;
       EXPECT_EQ(test::peakBin(out.volume.direct, y, x), *expected) << x << "," << y;
@@ -51,9 +51,9 @@ TEST(CpuBackendTest, PlaneDirectRadianceIsAlbedoOverPiTimesCosOverR2) {
   const glm::dvec3 l(s.job.light.position_world);
   const glm::dvec3 albedo(0.5, 0.4, 0.3);
   const glm::dvec3 intensity(s.job.light.intensity_W_per_sr);
-  for (int y = 0; y < s.job.camera.height; ++y) {
-    for (int x = 0; x < s.job.camera.width; ++x) {
-      const glm::dvec3 p = test::hitOnPlane(s.job.camera, x, y);
+  for (int y = 0; y < s.job.camera().height; ++y) {
+    for (int x = 0; x < s.job.camera().width; ++x) {
+      const glm::dvec3 p = test::hitOnPlane(s.job.camera(), x, y);
       const double r = glm::length(l - p);
       const double cosTheta = (l - p).z / r;
       for (int c = 0; c < 3; ++c) {

@@ -16,6 +16,7 @@
 #include "SurfaceImage.h"
 #include "SurfaceMaps.h"
 #include "Vpls.h"
+#include "support/BackendScene.h"
 #include "support/ClosedForm.h"
 #include "support/GlTestContext.h"
 #include "support/TestJobs.h"
@@ -32,8 +33,8 @@ namespace {
 
 void viewBounds(const capture::RenderJob& job, glm::vec3& lo, glm::vec3& hi) {
   const scene::Bounds b = job.scene->bounds();
-  lo = glm::min(glm::min(b.min, job.camera.position_world), job.light.position_world);
-  hi = glm::max(glm::max(b.max, job.camera.position_world), job.light.position_world);
+  lo = glm::min(glm::min(b.min, job.camera().position_world), job.light.position_world);
+  hi = glm::max(glm::max(b.max, job.camera().position_world), job.light.position_world);
 }
 
 std::vector<float> download(const gl::Texture& t, std::size_t texels) {
@@ -52,22 +53,22 @@ void expectSameGBuffer(const capture::RenderJob& job, int32_t samples = 1) {
   render::GpuScene gpuScene(*job.scene);
   glm::vec3 lo, hi;
   viewBounds(job, lo, hi);
-  const int32_t width = job.camera.width * samples, height = job.camera.height * samples;
+  const int32_t width = job.camera().width * samples, height = job.camera().height * samples;
   render::SurfaceMaps gl(width, height);
-  const glm::vec2 range = render::depthRange(lo, hi, job.camera.position_world);
-  gl.render(gpuScene, job.camera.projection(range.x, range.y) * job.camera.view(),
-            job.camera.position_world);
+  const glm::vec2 range = render::depthRange(lo, hi, job.camera().position_world);
+  gl.render(gpuScene, job.camera().projection(range.x, range.y) * job.camera().view(),
+            job.camera().position_world);
   const std::size_t pixels = static_cast<std::size_t>(width) * height;
   const auto position = download(gl.position, pixels);
   const auto normal = download(gl.normal, pixels);
   const auto albedo = download(gl.albedo, pixels);
   const reference::RayScene rays(*job.scene, 1);
-  const SurfaceImage cpu = traceSurfaces(rays, job.camera, 2, samples);
+  const SurfaceImage cpu = traceSurfaces(rays, job.camera(), 2, samples);
   const float tol = 1e-5f * glm::length(hi - lo);
   std::size_t surfaces = 0;
   for (std::size_t t = 0; t < pixels; ++t) {
     const std::size_t tx = t % width, ty = t / width;
-    const std::size_t pixel = (ty / samples) * job.camera.width + tx / samples;
+    const std::size_t pixel = (ty / samples) * job.camera().width + tx / samples;
     const std::size_t i = pixel * samples * samples + (ty % samples) * samples + tx % samples;
     ASSERT_EQ(cpu.position[i].w, position[4 * t + 3]) << "sample " << i;
     if (cpu.position[i].w == 0.0f) continue;
@@ -100,6 +101,7 @@ void expectSameVpls(const capture::RenderJob& job) {
       render::generateVpls(gpuScene, job.light, s.rsm_resolution, job.settings.index_of_refraction,
                            lo, hi, job.settings.materials == capture::MaterialModel::Gltf);
   CpuBackend backend({2, true});
+  const test::BackendScene prepared(backend, *job.scene);
   backend.prepareSurfaces(job);
   const auto cpu = backend.generateVpls(job);
   ASSERT_EQ(cpu.size(), gl.size());
@@ -168,7 +170,7 @@ struct Rendered {
 };
 
 Rendered renderOn(std::unique_ptr<ir::IrBackend> backend, const capture::RenderJob& job) {
-  Rendered out{capture::VolumeCollector(job.camera.width, job.camera.height, job.settings.time,
+  Rendered out{capture::VolumeCollector(job.camera().width, job.camera().height, job.settings.time,
                                         capture::kChannels),
                {}};
   out.result = ir::IrRenderer(std::move(backend)).render(job, out.volume);
@@ -275,8 +277,8 @@ TEST(CpuMatchesGlGLTest, GlossyCornerVolumes) {
 
 TEST(CpuMatchesGlGLTest, PlaneVolumes) {
   test::PlaneJob s;
-  s.job.camera.width = 32;
-  s.job.camera.height = 32;
+  s.job.camera().width = 32;
+  s.job.camera().height = 32;
   s.job.settings.indirect.rsm_resolution = 16;
   s.job.settings.shadow_map_resolution = 512;
   expectSameVolumesForEachPixelModel(s.job, 1e-3, 1e-2);
@@ -309,7 +311,8 @@ TEST(CpuMatchesGlGLTest, CornellBoxVolumes) {
 void expectSameSampledPixels(const capture::RenderJob& job) {
   render::GlBackend gl(test::glTestContext());
   CpuBackend cpu({2, true});
-  const int32_t w = job.camera.width, h = job.camera.height;
+  const test::BackendScene glScene(gl, *job.scene), cpuScene(cpu, *job.scene);
+  const int32_t w = job.camera().width, h = job.camera().height;
   const std::vector<uint8_t> onCpu = ir::sampledPixels(cpu.prepareSurfaces(job), w, h);
   EXPECT_EQ(onCpu, ir::sampledPixels(gl.prepareSurfaces(job), w, h));
   EXPECT_GT(std::count(onCpu.begin(), onCpu.end(), 1), 0);

@@ -60,7 +60,7 @@ Errors transientErrors(RenderJob job, int samples) {
   const test::CpuRender adaptive = test::renderOnCpu(samples3);
   e.adaptive3 = compare::compareVolumes(adaptive.volume.total(), ref.total()).transientRelativeL1;
   e.sampledShare = static_cast<double>(adaptive.result.sampledPixels) /
-                   (static_cast<double>(job.camera.width) * job.camera.height);
+                   (static_cast<double>(job.camera().width) * job.camera().height);
   job.settings.pixel_footprint = false;
   e.point = compare::compareVolumes(renderIr(job).total(), ref.total()).transientRelativeL1;
   std::printf(

@@ -92,10 +92,10 @@ TEST(MultiBounceTest, ClosedBoxBounceEnergyTendsToAlbedoTimesThePreviousOne) {
   const scene::Scene box = test::makeClosedBox(2.0f, glm::vec3(rho));
   RenderJob job;
   job.scene = &box;
-  job.camera.position_world = {0.1f, -0.2f, 0.6f};
-  job.camera.look_at_world = {-0.2f, 0.1f, -1.0f};
-  job.camera.fov_y_deg = 90.0f;
-  job.camera.width = job.camera.height = 16;
+  job.camera().position_world = {0.1f, -0.2f, 0.6f};
+  job.camera().look_at_world = {-0.2f, 0.1f, -1.0f};
+  job.camera().fov_y_deg = 90.0f;
+  job.camera().width = job.camera().height = 16;
   job.light.position_world = {0.4f, 0.5f, -0.3f};
   job.light.intensity_W_per_sr = glm::vec3(1.0f);
   job.settings.time = TimeAxis{0.0, 0.02 / kSpeedOfLight_m_per_s, 1500};  // 0 .. 30 m
@@ -140,14 +140,14 @@ TEST(MultiBounceTest, NoBounceArrivesBeforeItsShortestUnfoldedPath) {
   const TimeAxis& axis = job.settings.time;
   std::vector<test::CpuRender> r;
   for (int32_t k = 1; k <= 3; ++k) r.push_back(renderIr(job, k));
-  const glm::dvec3 eye(job.camera.position_world), light(job.light.position_world);
+  const glm::dvec3 eye(job.camera().position_world), light(job.light.position_world);
   std::size_t checked = 0, lit = 0;
   std::vector<int32_t> slack(4, axis.bins);
-  for (int32_t y = 0; y < job.camera.height; ++y) {
-    for (int32_t x = 0; x < job.camera.width; ++x) {
+  for (int32_t y = 0; y < job.camera().height; ++y) {
+    for (int32_t x = 0; x < job.camera().width; ++x) {
       const double depth = r[0].result.depth_m.at(y, x, 0);
       if (depth <= 0.0) continue;
-      const glm::dvec3 p = eye + depth * glm::dvec3(job.camera.pixelDirection(x, y));
+      const glm::dvec3 p = eye + depth * glm::dvec3(job.camera().pixelDirection(x, y));
       const bool onFloor = std::abs(p.y) < 1e-3;
       ASSERT_TRUE(onFloor || std::abs(p.z + 1.0) < 1e-3) << x << " " << y;
       const double toCamera = glm::length(p - eye);

@@ -145,7 +145,8 @@ TEST_F(GlWrappersGLTest, RenderersSetOnlyUniformsTheirShadersDeclare) {
        {capture::Visibility::Ism, capture::Visibility::Exact}) {
     test::CornerJob s(8);  // direct and indirect light: every pass and shader
     s.job.settings.indirect.visibility = visibility;
-    capture::VolumeCollector out(s.job.camera.width, s.job.camera.height, s.job.settings.time, 3);
+    capture::VolumeCollector out(s.job.camera().width, s.job.camera().height, s.job.settings.time,
+                                 3);
     render::TransientRenderer(test::glTestContext()).render(s.job, out);
   }
 }

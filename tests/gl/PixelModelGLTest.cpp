@@ -22,7 +22,7 @@ namespace {
 using namespace capture;
 
 VolumeCollector renderOnGl(const RenderJob& job, RenderResult* result = nullptr) {
-  VolumeCollector out(job.camera.width, job.camera.height, job.settings.time, kChannels);
+  VolumeCollector out(job.camera().width, job.camera().height, job.settings.time, kChannels);
   ir::IrRenderer renderer(std::make_unique<GlBackend>(test::glTestContext()));
   const RenderResult r = renderer.render(job, out);
   if (result != nullptr) *result = r;
@@ -31,17 +31,17 @@ VolumeCollector renderOnGl(const RenderJob& job, RenderResult* result = nullptr)
 
 TEST(PixelModelGLTest, PointPixelsPutAHeadOnPlanesLightInTheBinOfTheCentre) {
   test::PlaneJob s;
-  s.job.camera.look_at_world = {0.0f, 0.0f, 0.0f};  // head-on, 1.5 m above z = 0
+  s.job.camera().look_at_world = {0.0f, 0.0f, 0.0f};  // head-on, 1.5 m above z = 0
   s.job.settings.pixel_footprint = false;
   s.job.settings.indirect.enabled = false;
   const VolumeCollector out = renderOnGl(s.job);
   const TimeAxis& axis = s.job.settings.time;
   const double start_m = axis.start_m(), width_m = axis.bin_width_m();
   int checked = 0;
-  for (int y = 0; y < s.job.camera.height; ++y) {
-    for (int x = 0; x < s.job.camera.width; ++x) {
+  for (int y = 0; y < s.job.camera().height; ++y) {
+    for (int x = 0; x < s.job.camera().width; ++x) {
       // The centre ray meets the plane at t = 1.5 / -d.z; light at the camera.
-      const glm::dvec3 d(s.job.camera.pixelDirection(x, y));
+      const glm::dvec3 d(s.job.camera().pixelDirection(x, y));
       const double bins = (2.0 * 1.5 / -d.z - start_m) / width_m;
       int lit = 0, at = -1;
       for (int t = 0; t < axis.bins; ++t) {
@@ -53,7 +53,7 @@ TEST(PixelModelGLTest, PointPixelsPutAHeadOnPlanesLightInTheBinOfTheCentre) {
       ++checked;
     }
   }
-  EXPECT_GT(checked, s.job.camera.width * s.job.camera.height * 9 / 10);
+  EXPECT_GT(checked, s.job.camera().width * s.job.camera().height * 9 / 10);
 }
 
 TEST(PixelModelGLTest, FootprintsWithSubPixelSamplesGiveTheSameBytesWhateverTheBudget) {

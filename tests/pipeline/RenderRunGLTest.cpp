@@ -90,7 +90,7 @@ TEST_F(RenderRunGLTest, EffectiveConfigRecordsTheGltfCameraThatWasUsed) {
   const config::RunConfig original = config::loadRunConfig(kConfig, {});
   ASSERT_FALSE(original.camera.gltf_camera.empty()) << "the demo uses its glTF camera";
   const scene::Scene scene = scene::loadGltf(original.scene_file);
-  const capture::Camera used = pipeline::makeRenderJob(original, scene).camera;
+  const capture::Camera used = pipeline::makeRenderJob(original, scene).camera();
   const capture::Camera recorded =
       config::loadRunConfig(out / "config.effective.yaml", {}).camera.camera;
   EXPECT_NE(original.camera.camera.position_world, used.position_world) << "not the defaults";

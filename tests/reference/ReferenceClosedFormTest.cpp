@@ -30,17 +30,14 @@ ReferenceSettings directOnly() {
   return s;
 }
 
-
-
-
 TEST(ReferenceClosedFormTest, PeakLandsInTheBinOfTheRoundTripPath) {
   test::PlaneJob s;
   const VolumeCollector out = test::renderReference(s.job, directOnly());
   int checked = 0;
-  for (int y = 0; y < s.job.camera.height; ++y) {
-    for (int x = 0; x < s.job.camera.width; ++x) {
+  for (int y = 0; y < s.job.camera().height; ++y) {
+    for (int x = 0; x < s.job.camera().width; ++x) {
       const double r =
-          glm::length(hitOnPlane(s.job.camera, x, y) - glm::dvec3(s.job.camera.position_world));
+          glm::length(hitOnPlane(s.job.camera(), x, y) - glm::dvec3(s.job.camera().position_world));
       const auto expected = unambiguousBin(s.job.settings.time, 2.0 * r);
       if (!expected) continue;
       EXPECT_EQ(peakBin(out.direct, y, x), *expected) << "pixel " << x << "," << y;
@@ -58,14 +55,14 @@ TEST(ReferenceClosedFormTest, SteadyRadianceFollowsCosineOverDistanceSquared) {
   const glm::dvec3 l(s.job.light.position_world);
   const glm::dvec3 albedo(0.5, 0.4, 0.3);
   const glm::dvec3 intensity(s.job.light.intensity_W_per_sr);
-  for (int y = 0; y < s.job.camera.height; ++y) {
-    for (int x = 0; x < s.job.camera.width; ++x) {
-      const glm::dvec3 p = hitOnPlane(s.job.camera, x, y);
+  for (int y = 0; y < s.job.camera().height; ++y) {
+    for (int x = 0; x < s.job.camera().width; ++x) {
+      const glm::dvec3 p = hitOnPlane(s.job.camera(), x, y);
       const double r = glm::length(l - p);
       const double cosTheta = (l - p).z / r;
       // The depth the renderer reports is the camera-to-surface distance.
       EXPECT_NEAR(result.depth_m.at(y, x, 0),
-                  glm::length(p - glm::dvec3(s.job.camera.position_world)), 1e-5);
+                  glm::length(p - glm::dvec3(s.job.camera().position_world)), 1e-5);
       for (int c = 0; c < 3; ++c) {
         const double expected = albedo[c] / kPi * intensity[c] * cosTheta / (r * r);
         EXPECT_NEAR(steady.at(y, x, c), expected, 0.01 * expected) << x << "," << y;
@@ -81,10 +78,10 @@ TEST(ReferenceClosedFormTest, CameraUnwarpShiftsPeaksByTheCameraDelay) {
   s.job.settings.camera_unwarp = true;
   const VolumeCollector out = test::renderReference(s.job, directOnly());
   int checked = 0;
-  for (int y = 0; y < s.job.camera.height; ++y) {
-    for (int x = 0; x < s.job.camera.width; ++x) {
+  for (int y = 0; y < s.job.camera().height; ++y) {
+    for (int x = 0; x < s.job.camera().width; ++x) {
       const double r =
-          glm::length(hitOnPlane(s.job.camera, x, y) - glm::dvec3(s.job.camera.position_world));
+          glm::length(hitOnPlane(s.job.camera(), x, y) - glm::dvec3(s.job.camera().position_world));
       const auto expected = unambiguousBin(s.job.settings.time, r);  // light -> surface only
       if (!expected) continue;
       EXPECT_EQ(peakBin(out.direct, y, x), *expected);
@@ -100,10 +97,10 @@ TEST(ReferenceClosedFormTest, IndexOfRefractionStretchesTheOpticalPath) {
   s.job.settings.time = TimeAxis{3.5 / kSpeedOfLight_m_per_s, 0.002 / kSpeedOfLight_m_per_s, 1500};
   const VolumeCollector out = test::renderReference(s.job, directOnly());
   int checked = 0;
-  for (int y = 0; y < s.job.camera.height; y += 3) {
-    for (int x = 0; x < s.job.camera.width; x += 3) {
+  for (int y = 0; y < s.job.camera().height; y += 3) {
+    for (int x = 0; x < s.job.camera().width; x += 3) {
       const double r =
-          glm::length(hitOnPlane(s.job.camera, x, y) - glm::dvec3(s.job.camera.position_world));
+          glm::length(hitOnPlane(s.job.camera(), x, y) - glm::dvec3(s.job.camera().position_world));
       const auto expected = unambiguousBin(s.job.settings.time, 1.33 * 2.0 * r);
       if (!expected) continue;
       EXPECT_EQ(peakBin(out.direct, y, x), *expected);
@@ -115,16 +112,16 @@ TEST(ReferenceClosedFormTest, IndexOfRefractionStretchesTheOpticalPath) {
 
 TEST(ReferenceClosedFormTest, NoEnergyBeforeTheDirectPath) {
   test::PlaneJob s;
-  ReferenceSettings settings;  // two bounces: a single plane has no indirect light
+  ReferenceSettings settings;                  // two bounces: a single plane has no indirect light
   settings.pixel_filter = PixelFilter::Point;  // compares pixel centres
   settings.samples_per_pixel = 4;
   settings.threads = 2;
   const VolumeCollector out = test::renderReference(s.job, settings);
   const TransientVolume total = out.total();
-  for (int y = 0; y < s.job.camera.height; ++y) {
-    for (int x = 0; x < s.job.camera.width; ++x) {
+  for (int y = 0; y < s.job.camera().height; ++y) {
+    for (int x = 0; x < s.job.camera().width; ++x) {
       const double r =
-          glm::length(hitOnPlane(s.job.camera, x, y) - glm::dvec3(s.job.camera.position_world));
+          glm::length(hitOnPlane(s.job.camera(), x, y) - glm::dvec3(s.job.camera().position_world));
       const int firstAllowed = s.job.settings.time.binOf((2.0 * r - 1e-6) / kSpeedOfLight_m_per_s);
       for (int t = 0; t < firstAllowed; ++t) {
         for (int c = 0; c < 3; ++c)
@@ -140,19 +137,19 @@ TEST(ReferenceClosedFormTest, OccluderCastsAnExactShadow) {
   const float occluderZ = 0.75f, occluderSize = 0.6f;
   test::addQuad(s.scene, glm::vec3(0.0f, 0.0f, occluderZ), glm::vec3(0, 0, 1), occluderSize,
                 glm::vec3(0.5f));
-  s.job.camera.position_world = {1.2f, 0.3f, 1.6f};
-  s.job.camera.look_at_world = {0.0f, 0.0f, 0.0f};
+  s.job.camera().position_world = {1.2f, 0.3f, 1.6f};
+  s.job.camera().look_at_world = {0.0f, 0.0f, 0.0f};
   s.job.light.position_world = {0.0f, 0.0f, 1.5f};
   s.job.settings.time = TimeAxis{0.0, 0.01 / kSpeedOfLight_m_per_s, 1000};
   const Image steady = steadyImage(test::renderReference(s.job, directOnly()).direct);
   int shadowed = 0, lit = 0;
   const glm::dvec3 l(s.job.light.position_world);
   const double half = occluderSize / 2.0;
-  for (int y = 0; y < s.job.camera.height; ++y) {
-    for (int x = 0; x < s.job.camera.width; ++x) {
-      const glm::dvec3 onOccluder = hitOnPlane(s.job.camera, x, y, occluderZ);
+  for (int y = 0; y < s.job.camera().height; ++y) {
+    for (int x = 0; x < s.job.camera().width; ++x) {
+      const glm::dvec3 onOccluder = hitOnPlane(s.job.camera(), x, y, occluderZ);
       if (std::abs(onOccluder.x) < half + 0.01 && std::abs(onOccluder.y) < half + 0.01) continue;
-      const glm::dvec3 p = hitOnPlane(s.job.camera, x, y);
+      const glm::dvec3 p = hitOnPlane(s.job.camera(), x, y);
       if (std::max(std::abs(p.x), std::abs(p.y)) > 2.9) continue;
       const glm::dvec3 q = l + (p - l) * ((occluderZ - l.z) / (p.z - l.z));
       const double m = std::max(std::abs(q.x), std::abs(q.y));
@@ -175,12 +172,12 @@ TEST(ReferenceClosedFormTest, LightInViewLandsInItsPixelAtItsDistance) {
   s.job.light.position_world = {0.2f, 0.1f, 0.5f};  // between the camera and the plane
   s.job.settings.time = TimeAxis{0.0, 0.01 / kSpeedOfLight_m_per_s, 600};
   const VolumeCollector out = test::renderReference(s.job, directOnly());
-  const glm::ivec2 xy = s.job.camera.project(s.job.light.position_world);
+  const glm::ivec2 xy = s.job.camera().project(s.job.light.position_world);
   ASSERT_GE(xy.x, 0);
-  const double d =
-      glm::length(glm::dvec3(s.job.light.position_world) - glm::dvec3(s.job.camera.position_world));
+  const double d = glm::length(glm::dvec3(s.job.light.position_world) -
+                               glm::dvec3(s.job.camera().position_world));
   const int bin = s.job.settings.time.binOf(d / kSpeedOfLight_m_per_s);
-  const double solidAngle = s.job.camera.pixelSolidAngle_sr(xy.x, xy.y);
+  const double solidAngle = s.job.camera().pixelSolidAngle_sr(xy.x, xy.y);
   for (int c = 0; c < 3; ++c) {
     const double expected = s.job.light.intensity_W_per_sr[c] / (d * d * solidAngle);
     EXPECT_NEAR(out.direct.at(xy.y, xy.x, bin, c), expected, 1e-4 * expected);
@@ -190,7 +187,7 @@ TEST(ReferenceClosedFormTest, LightInViewLandsInItsPixelAtItsDistance) {
 TEST(ReferenceClosedFormTest, LightBehindTheSurfaceIsHidden) {
   test::PlaneJob s;
   s.job.light.position_world = {0.2f, 0.1f, -0.5f};  // behind the plane, inside the view
-  ASSERT_GE(s.job.camera.project(s.job.light.position_world).x, 0);
+  ASSERT_GE(s.job.camera().project(s.job.light.position_world).x, 0);
   const VolumeCollector out = test::renderReference(s.job, directOnly());
   // The plane is lit from behind only: two-sided, but facing the camera it
   // turns away from the light, so nothing reaches the camera at all.
@@ -233,9 +230,9 @@ TEST(ReferenceClosedFormTest, SpotLightProfileMatchesTheLightModel) {
   const Image steady = steadyImage(test::renderReference(s.job, directOnly()).direct);
   const glm::dvec3 l(s.job.light.position_world);
   int inside = 0, outside = 0;
-  for (int y = 0; y < s.job.camera.height; ++y) {
-    for (int x = 0; x < s.job.camera.width; ++x) {
-      const glm::dvec3 p = hitOnPlane(s.job.camera, x, y);
+  for (int y = 0; y < s.job.camera().height; ++y) {
+    for (int x = 0; x < s.job.camera().width; ++x) {
+      const glm::dvec3 p = hitOnPlane(s.job.camera(), x, y);
       const double r = glm::length(l - p);
       const double profile = s.job.light.angularProfile(glm::vec3((p - l) / r));
       const double expected = 0.5 / kPi * 2.0 * profile * ((l - p).z / r) / (r * r);

@@ -27,18 +27,18 @@ TEST(ReferenceIndirectTest, NoIndirectEnergyBeforeTheShortestTwoBouncePath) {
   settings.threads = 2;
   RenderResult result;
   const VolumeCollector out = test::renderReference(s.job, settings, &result);
-  const glm::dvec3 c(s.job.camera.position_world), l(s.job.light.position_world);
+  const glm::dvec3 c(s.job.camera().position_world), l(s.job.light.position_world);
   // One indirect bounce goes through the other plane; over the whole (infinite)
   // plane the shortest light -> plane -> x path is |mirror(l) - x|.
   const glm::dvec3 lInWall = mirror(l, {0, 0, -1}, {0, 0, 1});
   const glm::dvec3 lInFloor = mirror(l, {0, 0, 0}, {0, 1, 0});
   double indirectTotal = 0.0;
   int pixels = 0, tight = 0;
-  for (int y = 0; y < s.job.camera.height; ++y) {
-    for (int x = 0; x < s.job.camera.width; ++x) {
+  for (int y = 0; y < s.job.camera().height; ++y) {
+    for (int x = 0; x < s.job.camera().width; ++x) {
       const float depth = result.depth_m.at(y, x, 0);
       if (depth == 0.0f) continue;
-      const glm::dvec3 p = c + glm::dvec3(s.job.camera.pixelDirection(x, y)) * double(depth);
+      const glm::dvec3 p = c + glm::dvec3(s.job.camera().pixelDirection(x, y)) * double(depth);
       const bool onFloor = std::abs(p.y) < 1e-4;
       const double shortest = glm::length((onFloor ? lInWall : lInFloor) - p) + glm::length(p - c);
       const int firstAllowed = s.job.settings.time.binOf((shortest - 1e-6) / kSpeedOfLight_m_per_s);
@@ -105,14 +105,14 @@ TEST(ReferenceIndirectTest, OneBounceMatchesQuadratureOverTheOtherPlane) {
   settings.threads = 2;
   RenderResult result;
   const Image steady = steadyImage(test::renderReference(s.job, settings, &result).indirect);
-  const glm::dvec3 c(s.job.camera.position_world);
+  const glm::dvec3 c(s.job.camera().position_world);
   double rendered = 0.0, expected = 0.0;
   int checked = 0;
-  for (int y = 0; y < s.job.camera.height; ++y) {
-    for (int x = 0; x < s.job.camera.width; ++x) {
+  for (int y = 0; y < s.job.camera().height; ++y) {
+    for (int x = 0; x < s.job.camera().width; ++x) {
       const float depth = result.depth_m.at(y, x, 0);
       if (depth == 0.0f) continue;
-      const glm::dvec3 p = c + glm::dvec3(s.job.camera.pixelDirection(x, y)) * double(depth);
+      const glm::dvec3 p = c + glm::dvec3(s.job.camera().pixelDirection(x, y)) * double(depth);
       const bool onFloor = std::abs(p.y) < 1e-4;
       // Near the shared edge the integrand peaks and the 6.7 mm grid is too coarse.
       if ((onFloor ? p.z + 1.0 : p.y) < 0.2) continue;

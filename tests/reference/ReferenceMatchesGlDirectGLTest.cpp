@@ -38,7 +38,7 @@ int litBin(const TransientVolume& v, int y, int x) {
 void expectSameDirectLight(RenderJob job) {
   job.settings.indirect.enabled = false;
   job.settings.pixel_footprint = false;  // compares pixel centres (point pixels)
-  VolumeCollector gl(job.camera.width, job.camera.height, job.settings.time, 3);
+  VolumeCollector gl(job.camera().width, job.camera().height, job.settings.time, 3);
   render::TransientRenderer(test::glTestContext()).render(job, gl);
   ReferenceSettings settings;
   settings.pixel_filter = PixelFilter::Point;  // compares pixel centres
@@ -50,8 +50,8 @@ void expectSameDirectLight(RenderJob job) {
   EXPECT_LT(metrics.steadyRelativeL1, 1e-4);
   const Image steadyGl = steadyImage(gl.direct), steadyRef = steadyImage(ref.direct);
   int lit = 0, binFlips = 0, close = 0;
-  for (int y = 0; y < job.camera.height; ++y) {
-    for (int x = 0; x < job.camera.width; ++x) {
+  for (int y = 0; y < job.camera().height; ++y) {
+    for (int x = 0; x < job.camera().width; ++x) {
       bool pixelClose = true;
       for (int c = 0; c < 3; ++c) {
         const float r = steadyRef.at(y, x, c), g = steadyGl.at(y, x, c);
@@ -67,8 +67,8 @@ void expectSameDirectLight(RenderJob job) {
       if (bGl != bRef) ++binFlips;
     }
   }
-  EXPECT_GT(lit, job.camera.width * job.camera.height / 2);
-  EXPECT_GE(close, job.camera.width * job.camera.height * 98 / 100) << "pixels within 1e-4";
+  EXPECT_GT(lit, job.camera().width * job.camera().height / 2);
+  EXPECT_GE(close, job.camera().width * job.camera().height * 98 / 100) << "pixels within 1e-4";
   EXPECT_LE(binFlips, lit / 50) << "more than 2% of pixels in a neighbouring bin";
 }
 

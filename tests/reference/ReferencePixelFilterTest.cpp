@@ -23,11 +23,11 @@ constexpr double kPi = 3.14159265358979323846;
 std::vector<double> subPixelQuadrature(const capture::RenderJob& job, int x, int y, int n) {
   const TimeAxis& axis = job.settings.time;
   std::vector<double> h(static_cast<std::size_t>(axis.bins), 0.0);
-  const glm::dvec3 c(job.camera.position_world);
+  const glm::dvec3 c(job.camera().position_world);
   for (int i = 0; i < n; ++i) {
     for (int j = 0; j < n; ++j) {
       const glm::vec2 offset((i + 0.5f) / n - 0.5f, (j + 0.5f) / n - 0.5f);
-      const glm::dvec3 d(job.camera.pixelDirection(x, y, offset));
+      const glm::dvec3 d(job.camera().pixelDirection(x, y, offset));
       const glm::dvec3 hit = c + d * (-c.z / d.z);  // the plane z = 0, light at the camera
       const double r = glm::length(hit - c);
       const double radiance = 0.5 / kPi * job.light.intensity_W_per_sr.r * (c.z / r) / (r * r);
@@ -69,8 +69,8 @@ TEST(ReferencePixelFilterTest, BoxIntegratesThePixelAreaPointSamplesItsCentre) {
   const capture::VolumeCollector boxed = test::renderReference(s.job, box);
   const capture::VolumeCollector centred = test::renderReference(s.job, point);
   std::vector<double> boxL1, pointL1, boxEnergy;
-  for (int y = 1; y < s.job.camera.height; y += 4) {
-    for (int x = 1; x < s.job.camera.width; x += 4) {
+  for (int y = 1; y < s.job.camera().height; y += 4) {
+    for (int x = 1; x < s.job.camera().width; x += 4) {
       const std::vector<double> truth = subPixelQuadrature(s.job, x, y, 64);
       const Comparison b = compare(boxed.direct, x, y, truth);
       boxL1.push_back(b.l1);

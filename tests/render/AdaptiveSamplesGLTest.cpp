@@ -15,6 +15,7 @@
 #include <cstring>
 #include <memory>
 
+#include "support/BackendScene.h"
 #include "support/GlTestContext.h"
 #include "support/TestJobs.h"
 #include "tofsim/capture/VolumeCollector.h"
@@ -35,6 +36,9 @@ class HandMaskedBackend : public ir::IrBackend {
 
   std::string description() const override { return gl_.description(); }
   ir::DeviceLimits limits() const override { return gl_.limits(); }
+  void setScene(const scene::Scene& scene, const reference::RayScene& rays) override {
+    gl_.setScene(scene, rays);
+  }
   ir::CentreSurfaces prepareSurfaces(const capture::RenderJob& job) override {
     return gl_.prepareSurfaces(job);
   }
@@ -74,7 +78,7 @@ class HandMaskedBackend : public ir::IrBackend {
 
 capture::VolumeCollector render(const capture::RenderJob& job,
                                 std::unique_ptr<ir::IrBackend> backend) {
-  capture::VolumeCollector volume(job.camera.width, job.camera.height, job.settings.time,
+  capture::VolumeCollector volume(job.camera().width, job.camera().height, job.settings.time,
                                   capture::kChannels);
   ir::IrRenderer(std::move(backend)).render(job, volume);
   return volume;
@@ -171,7 +175,7 @@ TEST(AdaptiveSamplesGLTest, EachPixelIsOneSampleOrNxNAsItsMaskSays) {
     capture::RenderJob job = box.job(v.visibility, v.samples);
     job.settings.pixel_footprint = v.footprint;
     job.settings.materials = v.materials;
-    const std::vector<uint8_t> mask = blockMask(job.camera.width, job.camera.height);
+    const std::vector<uint8_t> mask = blockMask(job.camera().width, job.camera().height);
     const capture::VolumeCollector adaptive = renderMasked(job, mask);
     const capture::VolumeCollector many = renderGl(job);
     job.settings.pixel_samples = 1;
@@ -189,13 +193,14 @@ TEST(AdaptiveSamplesGLTest, TheDriversEdgePixelsTakeNxNSamples) {
   const CornellBox box;
   capture::RenderJob job = box.job(capture::Visibility::Ism, 2);
   GlBackend backend(test::glTestContext());
+  const test::BackendScene prepared(backend, *job.scene);
   const std::vector<uint8_t> mask =
-      ir::sampledPixels(backend.prepareSurfaces(job), job.camera.width, job.camera.height);
+      ir::sampledPixels(backend.prepareSurfaces(job), job.camera().width, job.camera().height);
   const auto sampled = static_cast<std::size_t>(std::count(mask.begin(), mask.end(), 1));
   EXPECT_GT(sampled, mask.size() / 10);
   EXPECT_LT(sampled, mask.size() * 3 / 4);  // 16 x 16: edges are most of the box
   job.settings.adaptive_pixel_samples = true;
-  capture::VolumeCollector adaptive(job.camera.width, job.camera.height, job.settings.time,
+  capture::VolumeCollector adaptive(job.camera().width, job.camera().height, job.settings.time,
                                     capture::kChannels);
   const capture::RenderResult result =
       ir::IrRenderer(std::make_unique<GlBackend>(test::glTestContext())).render(job, adaptive);
@@ -213,8 +218,8 @@ TEST(AdaptiveSamplesGLTest, AnAllOnesMaskGivesTheBytesOfNxNSamples) {
   for (capture::Visibility visibility : {capture::Visibility::Ism, capture::Visibility::Exact}) {
     SCOPED_TRACE(visibility == capture::Visibility::Ism ? "ism" : "exact");
     const capture::RenderJob job = box.job(visibility, 2);
-    const std::vector<uint8_t> ones(static_cast<std::size_t>(job.camera.width) * job.camera.height,
-                                    1);
+    const std::vector<uint8_t> ones(
+        static_cast<std::size_t>(job.camera().width) * job.camera().height, 1);
     const capture::VolumeCollector adaptive = renderMasked(job, ones);
     const capture::VolumeCollector many = renderGl(job);
     ASSERT_EQ(adaptive.direct.size(), many.direct.size());

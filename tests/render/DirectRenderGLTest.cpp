@@ -31,7 +31,7 @@ using PlaneSetup = test::PlaneJob;
 class DirectRenderGLTest : public test::BackendTest {
  protected:
   VolumeCollector renderJob(const RenderJob& job) const {
-    VolumeCollector collector(job.camera.width, job.camera.height, job.settings.time, 3);
+    VolumeCollector collector(job.camera().width, job.camera().height, job.settings.time, 3);
     renderer()->render(job, collector);
     return collector;
   }
@@ -42,10 +42,10 @@ TEST_P(DirectRenderGLTest, PeakLandsInTheBinOfTheRoundTripPath) {
   s.job.settings.pixel_footprint = false;  // compares pixel centres' paths (point pixels)
   const VolumeCollector out = renderJob(s.job);
   int checked = 0;
-  for (int y = 0; y < s.job.camera.height; ++y) {
-    for (int x = 0; x < s.job.camera.width; ++x) {
-      const glm::dvec3 p = hitOnPlane(s.job.camera, x, y);
-      const double r = glm::length(p - glm::dvec3(s.job.camera.position_world));
+  for (int y = 0; y < s.job.camera().height; ++y) {
+    for (int x = 0; x < s.job.camera().width; ++x) {
+      const glm::dvec3 p = hitOnPlane(s.job.camera(), x, y);
+      const double r = glm::length(p - glm::dvec3(s.job.camera().position_world));
       const auto expected = unambiguousBin(s.job.settings.time, 2.0 * r);
       if (!expected) continue;
       EXPECT_EQ(peakBin(out.direct, y, x), *expected) << "pixel " << x << "," << y;
@@ -63,15 +63,15 @@ TEST_P(DirectRenderGLTest, SteadyRadianceFollowsCosineOverDistanceSquared) {
   const glm::dvec3 albedo(0.5, 0.4, 0.3);
   const glm::dvec3 intensity(s.job.light.intensity_W_per_sr);
   const auto expectedRadiance = [&](int x, int y, int c) {
-    const glm::dvec3 p = hitOnPlane(s.job.camera, x, y);
+    const glm::dvec3 p = hitOnPlane(s.job.camera(), x, y);
     const glm::dvec3 toLight = l - p;
     const double r = glm::length(toLight);
     const double cosTheta = toLight.z / r;
     return albedo[c] / kPi * intensity[c] * cosTheta / (r * r);
   };
-  const int cx = s.job.camera.width / 2, cy = s.job.camera.height / 2;
-  for (int y = 0; y < s.job.camera.height; ++y) {
-    for (int x = 0; x < s.job.camera.width; ++x) {
+  const int cx = s.job.camera().width / 2, cy = s.job.camera().height / 2;
+  for (int y = 0; y < s.job.camera().height; ++y) {
+    for (int x = 0; x < s.job.camera().width; ++x) {
       for (int c = 0; c < 3; ++c) {
         // Absolute value and ratio to the centre pixel, both within 1%.
         EXPECT_NEAR(steady.at(y, x, c), expectedRadiance(x, y, c),
@@ -91,10 +91,10 @@ TEST_P(DirectRenderGLTest, CameraUnwarpShiftsPeaksByTheCameraDelay) {
   s.job.settings.camera_unwarp = true;
   const VolumeCollector out = renderJob(s.job);
   int checked = 0;
-  for (int y = 0; y < s.job.camera.height; ++y) {
-    for (int x = 0; x < s.job.camera.width; ++x) {
-      const glm::dvec3 p = hitOnPlane(s.job.camera, x, y);
-      const double r = glm::length(p - glm::dvec3(s.job.camera.position_world));
+  for (int y = 0; y < s.job.camera().height; ++y) {
+    for (int x = 0; x < s.job.camera().width; ++x) {
+      const glm::dvec3 p = hitOnPlane(s.job.camera(), x, y);
+      const double r = glm::length(p - glm::dvec3(s.job.camera().position_world));
       // Round trip 2r minus the camera leg r: only the light -> surface path.
       const auto expected = unambiguousBin(s.job.settings.time, 2.0 * r - r);
       if (!expected) continue;
@@ -110,10 +110,10 @@ TEST_P(DirectRenderGLTest, NoEnergyBeforeTheDirectPath) {
   s.job.settings.pixel_footprint = false;  // compares pixel centres' paths (point pixels)
   const VolumeCollector out = renderJob(s.job);
   const TransientVolume total = out.total();
-  for (int y = 0; y < s.job.camera.height; ++y) {
-    for (int x = 0; x < s.job.camera.width; ++x) {
-      const glm::dvec3 p = hitOnPlane(s.job.camera, x, y);
-      const double r = glm::length(p - glm::dvec3(s.job.camera.position_world));
+  for (int y = 0; y < s.job.camera().height; ++y) {
+    for (int x = 0; x < s.job.camera().width; ++x) {
+      const glm::dvec3 p = hitOnPlane(s.job.camera(), x, y);
+      const double r = glm::length(p - glm::dvec3(s.job.camera().position_world));
       const int firstAllowed = s.job.settings.time.binOf((2.0 * r - 1e-6) / kSpeedOfLight_m_per_s);
       for (int t = 0; t < firstAllowed; ++t) {
         for (int c = 0; c < 3; ++c)
@@ -129,20 +129,20 @@ TEST_P(DirectRenderGLTest, OccluderRemovesDirectLightBehindIt) {
   test::addQuad(s.scene, glm::vec3(0.0f, 0.0f, occluderZ), glm::vec3(0, 0, 1), occluderSize,
                 glm::vec3(0.5f));
   s.job.light.position_world = {0.0f, 0.0f, 1.5f};
-  s.job.camera.position_world = {1.2f, 0.3f, 1.6f};
-  s.job.camera.look_at_world = {0.0f, 0.0f, 0.0f};
+  s.job.camera().position_world = {1.2f, 0.3f, 1.6f};
+  s.job.camera().look_at_world = {0.0f, 0.0f, 0.0f};
   s.job.settings.shadow_map_resolution = 512;
   s.job.settings.time = TimeAxis{0.0, 0.01 / kSpeedOfLight_m_per_s, 1000};
   const VolumeCollector out = renderJob(s.job);
   const Image steady = steadyImage(out.direct);
   int shadowed = 0, lit = 0;
   const glm::dvec3 l(s.job.light.position_world);
-  for (int y = 0; y < s.job.camera.height; ++y) {
-    for (int x = 0; x < s.job.camera.width; ++x) {
-      const glm::dvec3 onOccluder = hitOnPlane(s.job.camera, x, y, occluderZ);
+  for (int y = 0; y < s.job.camera().height; ++y) {
+    for (int x = 0; x < s.job.camera().width; ++x) {
+      const glm::dvec3 onOccluder = hitOnPlane(s.job.camera(), x, y, occluderZ);
       const double half = occluderSize / 2.0;
       if (std::abs(onOccluder.x) < half + 0.05 && std::abs(onOccluder.y) < half + 0.05) continue;
-      const glm::dvec3 p = hitOnPlane(s.job.camera, x, y);
+      const glm::dvec3 p = hitOnPlane(s.job.camera(), x, y);
       if (std::max(std::abs(p.x), std::abs(p.y)) > 2.9) continue;  // beyond the plane's edge
       // Where the segment light -> p crosses the occluder's plane.
       const glm::dvec3 q = l + (p - l) * ((occluderZ - l.z) / (p.z - l.z));
@@ -164,10 +164,10 @@ TEST_P(DirectRenderGLTest, SameJobGivesIdenticalBytesWhateverTheMemoryBudget) {
   PlaneSetup s;
   s.job.settings.shadow_map_resolution = 256;
   const auto render = [&](VolumeCollector& out) { return renderer()->render(s.job, out); };
-  VolumeCollector a(s.job.camera.width, s.job.camera.height, s.job.settings.time, 3);
+  VolumeCollector a(s.job.camera().width, s.job.camera().height, s.job.settings.time, 3);
   EXPECT_EQ(render(a).segments, 1u);
   s.job.settings.memory_budget_bytes = 8 << 20;  // forces many segments
-  VolumeCollector b(s.job.camera.width, s.job.camera.height, s.job.settings.time, 3);
+  VolumeCollector b(s.job.camera().width, s.job.camera().height, s.job.settings.time, 3);
   EXPECT_GT(render(b).segments, 4u);
   ASSERT_EQ(a.direct.size(), b.direct.size());
   EXPECT_EQ(0, std::memcmp(a.direct.data(), b.direct.data(), a.direct.size() * sizeof(float)));

@@ -31,7 +31,7 @@ constexpr float kIntensity = 5.0f;
 class FootprintRenderGLTest : public test::BackendTest {
  protected:
   VolumeCollector renderJob(const RenderJob& job) const {
-    VolumeCollector collector(job.camera.width, job.camera.height, job.settings.time, 3);
+    VolumeCollector collector(job.camera().width, job.camera().height, job.settings.time, 3);
     renderer()->render(job, collector);
     return collector;
   }
@@ -46,14 +46,14 @@ struct GrazingPlane {
   GrazingPlane() {
     const double grazing = 10.0 * kPi / 180.0;
     job.scene = &scene;
-    job.camera.position_world = {0.0f, 0.0f, 0.5f};
-    job.camera.look_at_world =
-        job.camera.position_world + glm::vec3(0.0f, static_cast<float>(std::cos(grazing)),
-                                              -static_cast<float>(std::sin(grazing)));
-    job.camera.up_world = {0.0f, 0.0f, 1.0f};
-    job.camera.fov_y_deg = 40.0f;
-    job.camera.width = job.camera.height = 64;
-    job.light.position_world = job.camera.position_world;
+    job.camera().position_world = {0.0f, 0.0f, 0.5f};
+    job.camera().look_at_world =
+        job.camera().position_world + glm::vec3(0.0f, static_cast<float>(std::cos(grazing)),
+                                                -static_cast<float>(std::sin(grazing)));
+    job.camera().up_world = {0.0f, 0.0f, 1.0f};
+    job.camera().fov_y_deg = 40.0f;
+    job.camera().width = job.camera().height = 64;
+    job.light.position_world = job.camera().position_world;
     job.light.intensity_W_per_sr = glm::vec3(kIntensity);
     job.settings.indirect.enabled = false;
     job.settings.shadow_map_resolution = 512;
@@ -66,9 +66,9 @@ struct GrazingPlane {
 // when a corner of the pixel misses the plane or leaves the axis.
 std::vector<double> quadrature(const RenderJob& job, int px, int py, int sub) {
   const TimeAxis& axis = job.settings.time;
-  const glm::dvec3 c(job.camera.position_world);
+  const glm::dvec3 c(job.camera().position_world);
   const auto hit = [&](glm::vec2 offset, glm::dvec3& x) {
-    const glm::dvec3 d(job.camera.pixelDirection(px, py, offset));
+    const glm::dvec3 d(job.camera().pixelDirection(px, py, offset));
     if (d.z >= 0.0) return false;
     x = c + d * (-c.z / d.z);
     const double f =
@@ -133,17 +133,17 @@ TEST_P(FootprintRenderGLTest, HeadOnPlaneKeepsThePeakBinAndPointSamplingsEnergy)
   test::PlaneJob s;
   s.job.settings.indirect.enabled = false;
   // Straight down, the centre's path (3.0026 m) mid-bin.
-  s.job.camera.position_world = s.job.light.position_world = {0.0f, 0.0f, 1.5013f};
-  s.job.camera.look_at_world = {0.0f, 0.0f, 0.0f};
-  s.job.camera.width = 41;
-  s.job.camera.height = 31;
-  s.job.camera.fov_y_deg = 40.0f;
+  s.job.camera().position_world = s.job.light.position_world = {0.0f, 0.0f, 1.5013f};
+  s.job.camera().look_at_world = {0.0f, 0.0f, 0.0f};
+  s.job.camera().width = 41;
+  s.job.camera().height = 31;
+  s.job.camera().fov_y_deg = 40.0f;
   const VolumeCollector footprint = renderJob(s.job);
   s.job.settings.pixel_footprint = false;
   const VolumeCollector point = renderJob(s.job);
   // The centre pixel: the path is stationary there, its kernel within a bin.
-  const glm::dvec3 p = test::hitOnPlane(s.job.camera, 20, 15);
-  const double r = glm::length(p - glm::dvec3(s.job.camera.position_world));
+  const glm::dvec3 p = test::hitOnPlane(s.job.camera(), 20, 15);
+  const double r = glm::length(p - glm::dvec3(s.job.camera().position_world));
   ASSERT_TRUE(test::unambiguousBin(s.job.settings.time, 2.0 * r));
   EXPECT_EQ(test::peakBin(footprint.direct, 15, 20),
             *test::unambiguousBin(s.job.settings.time, 2.0 * r));
@@ -167,8 +167,8 @@ TEST_P(FootprintRenderGLTest, PointPixelsPutAllOfAPixelsLightInOneBin) {
   s.job.settings.indirect.enabled = false;
   s.job.settings.pixel_footprint = false;
   const VolumeCollector out = renderJob(s.job);
-  for (int y = 0; y < s.job.camera.height; ++y) {
-    for (int x = 0; x < s.job.camera.width; ++x) {
+  for (int y = 0; y < s.job.camera().height; ++y) {
+    for (int x = 0; x < s.job.camera().width; ++x) {
       int lit = 0;
       for (int t = 0; t < out.direct.bins(); ++t) lit += out.direct.at(y, x, t, 0) > 0;
       ASSERT_LE(lit, 1) << x << "," << y;
@@ -181,7 +181,7 @@ TEST_P(FootprintRenderGLTest, SubPixelSamplesKeepTheQuadraturesShapeAndEnergy) {
   // pixel is the mean of its samples'. On the grazing plane both the 1 and
   // the 3 x 3 render must match the quadrature; 3 x 3 at least as well.
   GrazingPlane s;
-  s.job.camera.width = s.job.camera.height = 24;
+  s.job.camera().width = s.job.camera().height = 24;
   s.job.settings.pixel_samples = 3;
   const VolumeCollector three = renderJob(s.job);
   s.job.settings.pixel_samples = 1;

@@ -51,13 +51,13 @@ const Glossy kCases[] = {{0.0f, 0.3f}, {0.0f, 0.6f}, {0.0f, 1.0f}, {1.0f, 0.3f},
 // largest ratio of a pixel's radiance to the Lambertian one (the highlight)
 // and counts the pixels off by more than 1% in `failures`.
 double expectClosedForm(const GlossyPlane& s, const Glossy& g, const Image& steady, int& failures) {
-  const dvec3 light(s.job.light.position_world), eye(s.job.camera.position_world);
+  const dvec3 light(s.job.light.position_world), eye(s.job.camera().position_world);
   const dvec3 base(s.scene.materials[0].albedo), intensity(s.job.light.intensity_W_per_sr);
   const dvec3 n(0, 0, 1);
   double peak = 0.0;
-  for (int y = 0; y < s.job.camera.height; ++y) {
-    for (int x = 0; x < s.job.camera.width; ++x) {
-      const dvec3 p = test::hitOnPlane(s.job.camera, x, y);
+  for (int y = 0; y < s.job.camera().height; ++y) {
+    for (int x = 0; x < s.job.camera().width; ++x) {
+      const dvec3 p = test::hitOnPlane(s.job.camera(), x, y);
       const double r = glm::length(light - p);
       const dvec3 l = (light - p) / r, v = glm::normalize(eye - p);
       const dvec3 f = test::expectedGltfBrdf(n, l, v, base, g.metallic, g.roughness);
@@ -81,7 +81,8 @@ class GlossyDirectGLTest : public test::BackendTest {};
 TEST_P(GlossyDirectGLTest, SteadyRadianceIsTheBrdfTimesIntensityCosineOverDistanceSquared) {
   for (const Glossy& g : kCases) {
     GlossyPlane s(g);
-    capture::VolumeCollector out(s.job.camera.width, s.job.camera.height, s.job.settings.time, 3);
+    capture::VolumeCollector out(s.job.camera().width, s.job.camera().height, s.job.settings.time,
+                                 3);
     renderer()->render(s.job, out);
     int failures = 0;
     const double peak = expectClosedForm(s, g, steadyImage(out.direct), failures);
@@ -123,7 +124,7 @@ TEST_P(GlossyDirectGLTest, CornellBoxKeepsItsBytesUnderTheLambertianDefault) {
   job.settings.shadow_map_resolution = 128;
   ASSERT_EQ(job.settings.materials, capture::MaterialModel::Lambertian);
   const auto render = [&](const capture::RenderJob& j) {
-    capture::VolumeCollector out(j.camera.width, j.camera.height, j.settings.time, 3);
+    capture::VolumeCollector out(j.camera().width, j.camera().height, j.settings.time, 3);
     renderer()->render(j, out);
     return out;
   };

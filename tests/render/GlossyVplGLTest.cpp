@@ -14,6 +14,7 @@
 #include <algorithm>
 #include <memory>
 
+#include "support/BackendScene.h"
 #include "support/ClosedForm.h"
 #include "support/ExpectedGltfBrdf.h"
 #include "support/TestBackends.h"
@@ -70,7 +71,8 @@ struct OneVplPlane : test::PlaneJob {
 
 // The steady indirect image (rgb per pixel, row-major) of the VPL alone.
 std::vector<double> gatherOne(ir::IrBackend& backend, const OneVplPlane& s) {
-  const auto pixels = static_cast<std::size_t>(s.job.camera.width) * s.job.camera.height;
+  const auto pixels = static_cast<std::size_t>(s.job.camera().width) * s.job.camera().height;
+  const test::BackendScene prepared(backend, *s.job.scene);
   backend.prepareSurfaces(s.job);
   backend.setVpls({s.vpl});
   backend.allocate(pixels, 1);
@@ -100,14 +102,14 @@ TEST_P(GlossyVplGLTest, OneVplOnAPlaneIsBothBrdfsTimesPowerAndGeometryTerm) {
     const OneVplPlane s(c);
     const auto backend = makeBackend(GetParam());
     const std::vector<double> steady = gatherOne(*backend, s);
-    const dvec3 eye(s.job.camera.position_world), x0(s.vpl.positionPath), nVpl(s.vpl.normal);
+    const dvec3 eye(s.job.camera().position_world), x0(s.vpl.positionPath), nVpl(s.vpl.normal);
     const dvec3 incoming(s.vpl.incoming), vplBase(s.vpl.material), power(s.vpl.flux);
     const dvec3 planeBase(s.scene.materials[0].albedo), n(0, 0, 1);
     int failures = 0;
     double peak = 0.0;
-    for (int y = 0; y < s.job.camera.height; ++y) {
-      for (int x = 0; x < s.job.camera.width; ++x) {
-        const dvec3 p = test::hitOnPlane(s.job.camera, x, y);
+    for (int y = 0; y < s.job.camera().height; ++y) {
+      for (int x = 0; x < s.job.camera().width; ++x) {
+        const dvec3 p = test::hitOnPlane(s.job.camera(), x, y);
         const double dist = glm::length(p - x0);
         const dvec3 d = (p - x0) / dist;
         dvec3 fVpl =
@@ -117,7 +119,7 @@ TEST_P(GlossyVplGLTest, OneVplOnAPlaneIsBothBrdfsTimesPowerAndGeometryTerm) {
         const dvec3 fX = test::expectedGltfBrdf(n, -d, glm::normalize(eye - p), planeBase,
                                                 c.planeMetallic, c.planeRoughness);
         const double g = glm::dot(nVpl, d) * -d.z / (dist * dist);
-        const std::size_t i = static_cast<std::size_t>(y) * s.job.camera.width + x;
+        const std::size_t i = static_cast<std::size_t>(y) * s.job.camera().width + x;
         for (int k = 0; k < 3; ++k) {
           const double expected = fX[k] * fVpl[k] * power[k] * g;
           if (std::abs(steady[i * 3 + k] - expected) <= 0.01 * expected + 1e-12) continue;
@@ -148,6 +150,7 @@ TEST_P(GlossyVplGLTest, RsmVplsRecordTheDirectionToTheLightAndTheMaterial) {
     capture::RenderJob job = s.job;
     job.settings.materials = m;
     const auto backend = makeBackend(GetParam());
+    const test::BackendScene prepared(*backend, *job.scene);
     backend->prepareSurfaces(job);
     return backend->generateVpls(job);
   };

@@ -28,11 +28,11 @@ struct CornerSetup {
   RenderJob job;
   CornerSetup() {
     job.scene = &scene;
-    job.camera.position_world = {0.0f, 1.0f, 2.6f};
-    job.camera.look_at_world = {0.0f, 0.2f, 0.8f};
-    job.camera.fov_y_deg = 40.0f;
-    job.camera.width = 16;
-    job.camera.height = 16;
+    job.camera().position_world = {0.0f, 1.0f, 2.6f};
+    job.camera().look_at_world = {0.0f, 0.2f, 0.8f};
+    job.camera().fov_y_deg = 40.0f;
+    job.camera().width = 16;
+    job.camera().height = 16;
     job.light.position_world = {0.3f, 0.8f, 1.2f};
     job.light.intensity_W_per_sr = glm::vec3(1.0f);
     job.settings.time = TimeAxis{0.0, 0.005 / kSpeedOfLight_m_per_s, 1600};
@@ -47,7 +47,7 @@ struct CornerSetup {
 class IndirectRenderGLTest : public test::BackendTest {
  protected:
   VolumeCollector renderJob(const RenderJob& job, RenderResult* result = nullptr) const {
-    VolumeCollector collector(job.camera.width, job.camera.height, job.settings.time, 3);
+    VolumeCollector collector(job.camera().width, job.camera().height, job.settings.time, 3);
     const RenderResult r = renderer()->render(job, collector);
     if (result) *result = r;
     return collector;
@@ -92,9 +92,9 @@ TEST_P(IndirectRenderGLTest, CornerIndirectMatchesNumericalOneBounceIntegral) {
   const VolumeCollector out = renderJob(s.job);
   const Image steady = steadyImage(out.indirect);
   int checked = 0;
-  for (int y = 0; y < s.job.camera.height; y += 3) {
-    for (int x = 0; x < s.job.camera.width; x += 3) {
-      const auto p = floorPoint(s.job.camera, x, y);
+  for (int y = 0; y < s.job.camera().height; y += 3) {
+    for (int x = 0; x < s.job.camera().width; x += 3) {
+      const auto p = floorPoint(s.job.camera(), x, y);
       if (!p || p->z < 0.3) continue;  // near the edge VPL sampling is coarse
       for (int c = 0; c < 3; ++c) {
         const double expected = wallBounce(s, *p, c);
@@ -112,11 +112,11 @@ TEST_P(IndirectRenderGLTest, NoIndirectEnergyBeforeTheShortestWallPath) {
   s.job.settings.pixel_footprint = false;  // compares pixel centres' paths (point pixels)
   s.job.settings.indirect.visibility = Visibility::Ism;
   const VolumeCollector out = renderJob(s.job);
-  const glm::dvec3 l(s.job.light.position_world), c(s.job.camera.position_world);
+  const glm::dvec3 l(s.job.light.position_world), c(s.job.camera().position_world);
   int checked = 0;
-  for (int y = 0; y < s.job.camera.height; ++y) {
-    for (int x = 0; x < s.job.camera.width; ++x) {
-      const auto p = floorPoint(s.job.camera, x, y);
+  for (int y = 0; y < s.job.camera().height; ++y) {
+    for (int x = 0; x < s.job.camera().width; ++x) {
+      const auto p = floorPoint(s.job.camera(), x, y);
       if (!p) continue;
       // Shortest light -> wall -> floor point: reflect the light in the wall plane z = 0.
       const glm::dvec3 mirrored(l.x, l.y, -l.z);

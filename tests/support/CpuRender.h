@@ -19,9 +19,10 @@ struct CpuRender {
 
 inline CpuRender renderOnCpu(const capture::RenderJob& job,
                              const cpu::CpuBackendOptions& options = {2, true}) {
-  CpuRender out{capture::VolumeCollector(job.camera.width, job.camera.height, job.settings.time,
-                                         capture::kChannels),
-                {}};
+  CpuRender out{
+      capture::VolumeCollector(capture::imageWidth(job.imager), capture::imageHeight(job.imager),
+                               job.settings.time, capture::kChannels),
+      {}};
   out.result = ir::IrRenderer(std::make_unique<cpu::CpuBackend>(options)).render(job, out.volume);
   return out;
 }

@@ -16,12 +16,12 @@ struct PlaneJob {
   capture::RenderJob job;
   PlaneJob() {
     job.scene = &scene;
-    job.camera.position_world = {0.0f, 0.0f, 1.5f};
-    job.camera.look_at_world = {0.2f, 0.1f, 0.0f};
-    job.camera.fov_y_deg = 60.0f;
-    job.camera.width = 40;
-    job.camera.height = 30;
-    job.light.position_world = job.camera.position_world;
+    job.camera().position_world = {0.0f, 0.0f, 1.5f};
+    job.camera().look_at_world = {0.2f, 0.1f, 0.0f};
+    job.camera().fov_y_deg = 60.0f;
+    job.camera().width = 40;
+    job.camera().height = 30;
+    job.light.position_world = job.camera().position_world;
     job.light.intensity_W_per_sr = glm::vec3(2.0f, 1.0f, 0.5f);
     job.settings.time = TimeAxis{2.5 / kSpeedOfLight_m_per_s, 0.002 / kSpeedOfLight_m_per_s, 1200};
   }
@@ -38,11 +38,11 @@ struct CornerJob {
     addQuad(scene, glm::vec3(0.0f, 1.0f, -1.0f), glm::vec3(0, 0, 1), 2.0f,
             glm::vec3(0.3f, 0.8f, 0.4f));
     job.scene = &scene;
-    job.camera.position_world = {0.3f, 1.2f, 2.0f};
-    job.camera.look_at_world = {0.0f, 0.4f, -0.5f};
-    job.camera.fov_y_deg = 55.0f;
-    job.camera.width = side;
-    job.camera.height = side;
+    job.camera().position_world = {0.3f, 1.2f, 2.0f};
+    job.camera().look_at_world = {0.0f, 0.4f, -0.5f};
+    job.camera().fov_y_deg = 55.0f;
+    job.camera().width = side;
+    job.camera().height = side;
     job.light.position_world = {0.5f, 1.5f, 0.5f};
     job.light.intensity_W_per_sr = glm::vec3(3.0f);
     job.settings.time = TimeAxis{0.0, 0.01 / kSpeedOfLight_m_per_s, 1000};
@@ -56,10 +56,10 @@ inline capture::RenderJob cornellBoxJob(const scene::Scene& scene, int32_t resol
                                         double binWidth_m) {
   capture::RenderJob job;
   job.scene = &scene;
-  job.camera.position_world = {0.278f, 0.273f, -0.8f};
-  job.camera.look_at_world = {0.278f, 0.273f, 0.0f};
-  job.camera.fov_y_deg = 39.3f;
-  job.camera.width = job.camera.height = resolution;
+  job.camera().position_world = {0.278f, 0.273f, -0.8f};
+  job.camera().look_at_world = {0.278f, 0.273f, 0.0f};
+  job.camera().fov_y_deg = 39.3f;
+  job.camera().width = job.camera().height = resolution;
   job.light.type = capture::Light::Type::Spot;
   job.light.position_world = {0.328f, 0.273f, -0.8f};
   job.light.direction_world = {0.0f, 0.0f, 1.0f};

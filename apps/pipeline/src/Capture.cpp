@@ -29,19 +29,19 @@ const scene::SceneCamera& findCamera(const config::RunConfig& config, const scen
 capture::RenderJob makeRenderJob(const config::RunConfig& config, const scene::Scene& scene) {
   capture::RenderJob job;
   job.scene = &scene;
-  job.camera = config.camera.camera;
+  job.camera() = config.camera.camera;
   job.settings = config.render;
   job.settings.indirect.trace_threads = config.cpu_threads;
   if (!config.camera.gltf_camera.empty()) {
     const scene::SceneCamera& c = findCamera(config, scene);
-    job.camera.position_world = c.position_world;
-    job.camera.look_at_world = c.position_world + c.forward_world;
-    job.camera.up_world = c.up_world;
-    job.camera.fov_y_deg = c.fov_y_deg;
+    job.camera().position_world = c.position_world;
+    job.camera().look_at_world = c.position_world + c.forward_world;
+    job.camera().up_world = c.up_world;
+    job.camera().fov_y_deg = c.fov_y_deg;
   }
   job.light = config.light.light;
   if (config.light.attach_to_camera) {
-    const capture::Camera& cam = job.camera;
+    const capture::Camera& cam = job.camera();
     const glm::vec3 offset = config.light.offset_camera_m;
     job.light.position_world = cam.position_world + offset.x * cam.right() + offset.y * cam.up() +
                                offset.z * cam.forward();

@@ -16,7 +16,7 @@ std::string transientMetadataJson(const config::RunConfig& config, const capture
                                   const capture::RenderResult& result, const std::string& backend,
                                   const std::string& device) {
   const TimeAxis& axis = job.settings.time;
-  const capture::Camera& cam = job.camera;
+  const capture::Camera& cam = job.camera();
   const capture::Light& light = job.light;
   nlohmann::json j;
   j["format"] = "tofsim transient volume";

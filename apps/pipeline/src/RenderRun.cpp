@@ -152,7 +152,7 @@ void writeOutputs(const config::RunConfig& config, const capture::RenderJob& job
   // (cwtof multipath_by_order) is given the sensors whether or not the
   // components are saved; `tofsim sense` needs the files (direct.npy,
   // bounce<k>.npy) to redo it.
-  const sensors::VolumeShape shape{job.camera.width, job.camera.height, capture::kChannels,
+  const sensors::VolumeShape shape{job.camera().width, job.camera().height, capture::kChannels,
                                    job.settings.time};
   const std::optional<int32_t> bounces = sensorBounces(config);
   std::optional<SensorStreams> sensorStreams;
@@ -166,7 +166,7 @@ void writeOutputs(const config::RunConfig& config, const capture::RenderJob& job
       if (spill) spill->append(s);
     };
   }
-  OutputSink sink(dir, out, job.camera.width, job.camera.height, job.settings.time, forward,
+  OutputSink sink(dir, out, job.camera().width, job.camera().height, job.settings.time, forward,
                   bounces.value_or(0));
   const capture::ProgressCallback onProgress = [&](std::size_t done, std::size_t total,
                                                    const std::string& what) {
@@ -201,7 +201,8 @@ void writeOutputs(const config::RunConfig& config, const capture::RenderJob& job
   }
   if (out.depth) {
     io::writeDepthExr(dir / "depth.exr", summary.result.depth_m);  // channels Y and Z
-    io::writeNpy(dir / "depth.npy", {std::size_t(job.camera.height), std::size_t(job.camera.width)},
+    io::writeNpy(dir / "depth.npy",
+                 {std::size_t(job.camera().height), std::size_t(job.camera().width)},
                  summary.result.depth_m.data.data());
     imaging::ColorScale scale;  // over the surfaces: 0 (no surface) is not a depth
     scale.nonPositiveIsNoData = true;
@@ -237,7 +238,7 @@ void writeOutputs(const config::RunConfig& config, const capture::RenderJob& job
   // What was used: a glTF camera's position, view and field of view, not the
   // config's defaults, so the file reproduces the run without the glTF camera too.
   config::RunConfig used = config;
-  used.camera.camera = job.camera;
+  used.camera.camera = job.camera();
   writeFileAtomically(dir / "config.effective.yaml", config::effectiveConfigYaml(used));
   summary.files.push_back("config.effective.yaml");
   if (options.batchManifest) {

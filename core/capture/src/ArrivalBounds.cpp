@@ -51,9 +51,10 @@ double longestThroughCorners(const glm::dvec3& light, const glm::dvec3& camera,
 // Whether the light can be seen straight by the camera: it projects into the
 // image and the spot cone points at the camera (occlusion is not known here).
 bool lightMayBeSeen(const RenderJob& job) {
-  const glm::vec3 toCamera = job.camera.position_world - job.light.position_world;
+  if (pinhole(job.imager) == nullptr) return false;  // as directLightView
+  const glm::vec3 toCamera = job.camera().position_world - job.light.position_world;
   const float d = glm::length(toCamera);
-  if (d <= 1e-6f || job.camera.project(job.light.position_world).x < 0) return false;
+  if (d <= 1e-6f || job.camera().project(job.light.position_world).x < 0) return false;
   return job.light.angularProfile(toCamera / d) > 0.0f;
 }
 
@@ -64,10 +65,10 @@ double ArrivalBounds::longest_s() const { return longest_m / kSpeedOfLight_m_per
 
 ArrivalBounds arrivalBounds(const RenderJob& job, int32_t surfaceVertices) {
   TOFSIM_CHECK(job.scene != nullptr && surfaceVertices >= 1);
-  const bool unwarp = job.settings.camera_unwarp;
+  const bool unwarp = job.settings.camera_unwarp || !lastLegCounts(job.imager);
   const double eta = job.settings.index_of_refraction;
   const glm::dvec3 light(job.light.position_world);
-  const glm::dvec3 camera(job.camera.position_world);
+  const glm::dvec3 camera(viewpoint(job.imager));
   ArrivalBounds bounds;
   if (job.scene->triangleCount() > 0) {
     const scene::Bounds box = job.scene->bounds();

@@ -5,7 +5,7 @@
 namespace tofsim::capture {
 
 DirectLightView directLightView(const RenderJob& job, const std::vector<float>& positions) {
-  const int32_t width = job.camera.width;
+  const int32_t width = imageWidth(job.imager);
   return directLightView(job, [&](int32_t x, int32_t y) -> std::optional<glm::vec3> {
     const float* p = &positions[(static_cast<std::size_t>(y) * width + x) * 4];
     if (p[3] == 0.0f) return std::nullopt;
@@ -15,7 +15,9 @@ DirectLightView directLightView(const RenderJob& job, const std::vector<float>& 
 
 DirectLightView directLightView(const RenderJob& job, const FirstSurface& firstSurface) {
   DirectLightView view;
-  const Camera& camera = job.camera;
+  // Only a pinhole images the light itself; a point set's points are surfaces.
+  if (pinhole(job.imager) == nullptr) return view;
+  const Camera& camera = job.camera();
   const glm::vec3 toCamera = camera.position_world - job.light.position_world;
   const float d = glm::length(toCamera);
   if (d <= 1e-6f) return view;  // a light at the camera's pinhole is not seen
@@ -38,8 +40,8 @@ DirectLightView directLightView(const RenderJob& job, const FirstSurface& firstS
   return view;
 }
 
-AxisLoss DirectLightView::addTo(std::size_t firstPixel, std::size_t pixelCount, const TimeAxis& axis,
-                              int channels, float* direct) const {
+AxisLoss DirectLightView::addTo(std::size_t firstPixel, std::size_t pixelCount,
+                                const TimeAxis& axis, int channels, float* direct) const {
   AxisLoss lost;
   if (!visible || pixel < firstPixel || pixel >= firstPixel + pixelCount) return lost;
   if (bin < 0) {

@@ -47,20 +47,25 @@ ir::DeviceLimits CpuBackend::limits() const {
   return {1 << 16, std::size_t{1} << 40, std::size_t{1} << 32};
 }
 
+void CpuBackend::setScene(const scene::Scene& scene, const reference::RayScene& rays) {
+  scene_ = &rays;
+  const scene::Bounds b = scene.bounds();
+  sceneScale_m_ = std::max(glm::length(b.max - b.min), 1e-6f);
+}
+
 ir::CentreSurfaces CpuBackend::prepareSurfaces(const capture::RenderJob& job) {
   TOFSIM_CHECK(job.scene != nullptr);
+  TOFSIM_CHECK_MSG(scene_ != nullptr, "setScene must come first");
   job_ = job;
+  dropLastLeg_ = job.settings.camera_unwarp || !capture::lastLegCounts(job.imager);
   vpls_.reset();  // a new render: nothing of the previous one survives
   ism_.reset();
-  scene_ = std::make_unique<reference::RayScene>(*job.scene, threads_);
-  const scene::Bounds b = job.scene->bounds();
-  sceneScale_m_ = std::max(glm::length(b.max - b.min), 1e-6f);
   // The driver's G-buffer (depth, the light seen by the camera, the adaptive
   // samples' edges) is the pixel centres', whatever the sub-pixel samples.
   // With adaptive samples the sub-samples wait for the driver's mask
   // (setSampledPixels), so only the edge pixels' rays are traced.
   const int32_t samples = job.settings.pixel_samples;
-  SurfaceImage centres = traceSurfaces(*scene_, job.camera, threads_, 1);
+  SurfaceImage centres = traceSurfaces(*scene_, job.imager, threads_, 1);
   ir::CentreSurfaces out;
   out.positions.resize(centres.size() * 4);
   out.normals.resize(centres.size() * 4);
@@ -75,7 +80,7 @@ ir::CentreSurfaces CpuBackend::prepareSurfaces(const capture::RenderJob& job) {
     surfaces_ = std::make_unique<SurfaceImage>(std::move(centres));
   } else {
     surfaces_ =
-        std::make_unique<SurfaceImage>(traceSurfaces(*scene_, job.camera, threads_, samples));
+        std::make_unique<SurfaceImage>(traceSurfaces(*scene_, job.imager, threads_, samples));
   }
   return out;
 }
@@ -84,7 +89,7 @@ void CpuBackend::setSampledPixels(const std::vector<uint8_t>& sampled) {
   TOFSIM_CHECK_MSG(subSamplesPending_,
                    "setSampledPixels needs adaptive_pixel_samples with pixel_samples > 1");
   surfaces_ = std::make_unique<SurfaceImage>(
-      traceSampledPixels(*scene_, job_.camera, threads_, job_.settings.pixel_samples, sampled));
+      traceSampledPixels(*scene_, job_.imager, threads_, job_.settings.pixel_samples, sampled));
   subSamplesPending_ = false;
 }
 
@@ -92,7 +97,7 @@ void CpuBackend::finishSurfaces() {
   // No mask came (IrBackend: every pixel then takes its N x N samples).
   if (!subSamplesPending_) return;
   surfaces_ = std::make_unique<SurfaceImage>(
-      traceSurfaces(*scene_, job_.camera, threads_, job_.settings.pixel_samples));
+      traceSurfaces(*scene_, job_.imager, threads_, job_.settings.pixel_samples));
   subSamplesPending_ = false;
 }
 
@@ -171,9 +176,7 @@ void CpuBackend::beginSegment(std::size_t firstPixel, std::size_t count) {
   accumulatorsZero_ = false;
   std::fill_n(outside_.begin(), count, physics::OffAxisSums{});
   const capture::RenderSettings& s = job_.settings;
-  const capture::Camera& camera = job_.camera;
   const auto eta = static_cast<float>(s.index_of_refraction);
-  const glm::vec3 forward = camera.forward();
   firstSample_ = surfaces_->firstSample[firstPixel];
   for (std::size_t i = 0; i <= count; ++i) {
     segmentFirstSample_[i] = surfaces_->firstSample[firstPixel + i] - firstSample_;
@@ -184,18 +187,17 @@ void CpuBackend::beginSegment(std::size_t firstPixel, std::size_t count) {
     // pixel-centre sample of pixel_samples: 1, the same float operations).
     const int32_t n = surfaces_->side[firstPixel + pixel];
     const float weight = 1.0f / static_cast<float>(static_cast<std::size_t>(n) * n);
-    const float side = 1.0f / static_cast<float>(n);
-    const glm::vec3 stepX = camera.rayStepAlongX() * side, stepY = camera.rayStepAlongY() * side;
+    const capture::PixelSteps steps(job_.imager, 1.0f / static_cast<float>(n));
     for (std::size_t i = segmentFirstSample_[pixel]; i < segmentFirstSample_[pixel + 1]; ++i) {
-      fillSurface(i, weight, forward, stepX, stepY, eta);
+      fillSurface(i, weight, steps, eta);
     }
   }
 }
 
-void CpuBackend::fillSurface(std::size_t i, float weight, const glm::vec3& forward,
-                             const glm::vec3& stepX, const glm::vec3& stepY, float eta) {
+void CpuBackend::fillSurface(std::size_t i, float weight, const capture::PixelSteps& steps,
+                             float eta) {
+  const glm::vec3 viewpoint = capture::viewpoint(job_.imager);
   const capture::RenderSettings& s = job_.settings;
-  const capture::Camera& camera = job_.camera;
   const std::size_t p = firstSample_ + i;
   segmentLit_[i] = surfaces_->position[p].w != 0.0f;
   PixelSurface& surface = segmentSurfaces_[i];
@@ -206,14 +208,14 @@ void CpuBackend::fillSurface(std::size_t i, float weight, const glm::vec3& forwa
     surface.baseColor = glm::vec3(surfaces_->albedo[p]);
     surface.metallic = surfaces_->metallicRoughness[p].x;
     surface.roughness = surfaces_->metallicRoughness[p].y;
-    surface.toCamera = glm::normalize(camera.position_world - surface.x);
+    surface.toCamera = glm::normalize(viewpoint - surface.x);
     surface.weight = weight;
   }
-  surface.cameraPath_m = physics::cameraPathLength(s.camera_unwarp, eta,
-                                                   glm::length(surface.x - camera.position_world));
-  const glm::vec3 toSurface = surface.x - camera.position_world;
-  surface.dxdu = physics::surfaceStepAcrossPixel(toSurface, forward, stepX, surface.n);
-  surface.dxdv = physics::surfaceStepAcrossPixel(toSurface, forward, stepY, surface.n);
+  surface.cameraPath_m =
+      physics::cameraPathLength(dropLastLeg_, eta, glm::length(surface.x - viewpoint));
+  const capture::FootprintSteps footprint = steps.at(surface.x, surface.n);
+  surface.dxdu = footprint.dxdu;
+  surface.dxdv = footprint.dxdv;
 }
 
 double* CpuBackend::footprintOf(std::size_t i) {
@@ -250,6 +252,7 @@ void CpuBackend::gatherDirectTile(std::size_t tile) {
   const auto start_m = static_cast<float>(s.time.start_m());
   const auto width_m = static_cast<float>(s.time.bin_width_m());
   const auto eta = static_cast<float>(s.index_of_refraction);
+  const glm::vec3 viewpoint = capture::viewpoint(job_.imager);
   const std::size_t end = std::min(pixelCount_, (tile + 1) * kTilePixels);
   for (std::size_t i = tile * kTilePixels; i < end; ++i) {
     float* histogram = &direct_[i * bins * kChannels];
@@ -278,19 +281,18 @@ void CpuBackend::gatherDirectTile(std::size_t tile) {
       glm::vec3 radiance;
       if (gltf) {
         const glm::vec2 mr = surfaces_->metallicRoughness[p];
-        const glm::vec3 wCamera = glm::normalize(job_.camera.position_world - x);
+        const glm::vec3 wCamera = glm::normalize(viewpoint - x);
         radiance = physics::gltfDirect(n, wLight, wCamera, albedo, mr.x, mr.y,
                                        light.intensity_W_per_sr, profile, cosX, dLight);
       } else {
         radiance =
             physics::lambertianDirect(albedo, light.intensity_W_per_sr, profile, cosX, dLight);
       }
-      const float dCamera = s.camera_unwarp ? 0.0f : glm::length(x - job_.camera.position_world);
+      const float dCamera = dropLastLeg_ ? 0.0f : glm::length(x - viewpoint);
       const float path_m = physics::directPathLength(eta, dLight, dCamera);
       if (s.pixel_footprint) {
         const glm::vec2 steps = physics::pathStepsAcrossPixel(
-            physics::opticalPathGradient(x, light.position_world, job_.camera.position_world, eta,
-                                         s.camera_unwarp),
+            physics::opticalPathGradient(x, light.position_world, viewpoint, eta, dropLastLeg_),
             surface.dxdu, surface.dxdv);
         const glm::vec3 kernel = physics::footprintKernel(path_m, steps, start_m, width_m);
         const glm::vec3 value = radiance * weight;
@@ -337,10 +339,10 @@ void CpuBackend::gatherTile(std::size_t tile, std::size_t firstVpl, std::size_t 
   c.geometryClamp = static_cast<float>(s.indirect.geometry_term_clamp_per_m2);
   c.footprint = s.pixel_footprint;
   c.vplFootprint = s.pixel_footprint && s.indirect.vpl_footprint;
-  c.cameraUnwarp = s.camera_unwarp;
+  c.cameraUnwarp = dropLastLeg_;
   c.gltf = s.materials == capture::MaterialModel::Gltf;
   c.vplBrdfClamp = static_cast<float>(s.indirect.vpl_brdf_clamp_per_sr);
-  c.camera = job_.camera.position_world;
+  c.camera = capture::viewpoint(job_.imager);
   c.bins = bins;
   const bool exact = indirectVisibility_ && s.indirect.visibility == capture::Visibility::Exact;
   const float eps = 1e-4f * sceneScale_m_;  // as indirect_gather.comp's exact visibility

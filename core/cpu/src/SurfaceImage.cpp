@@ -8,10 +8,10 @@ namespace tofsim::cpu {
 namespace {
 
 // An image of `sides[p]` x `sides[p]` samples for pixel p, all empty.
-SurfaceImage emptyImage(const capture::Camera& camera, std::vector<int32_t> sides) {
+SurfaceImage emptyImage(const capture::Imager& imager, std::vector<int32_t> sides) {
   SurfaceImage image;
-  image.width = camera.width;
-  image.height = camera.height;
+  image.width = capture::imageWidth(imager);
+  image.height = capture::imageHeight(imager);
   const std::size_t pixelCount = sides.size();
   image.firstSample.resize(pixelCount + 1);
   image.firstSample[0] = 0;
@@ -30,19 +30,19 @@ SurfaceImage emptyImage(const capture::Camera& camera, std::vector<int32_t> side
 }
 
 // Traces every sample of `image` (its layout set), row by row on `threads`.
-void traceInto(SurfaceImage& image, const reference::RayScene& scene, const capture::Camera& camera,
+void traceInto(SurfaceImage& image, const reference::RayScene& scene, const capture::Imager& imager,
                int threads) {
-  const capture::PixelRays rays(camera);
-  parallelFor(static_cast<std::size_t>(camera.height), threads, [&](std::size_t row) {
+  const capture::PrimaryRays rays(imager);
+  parallelFor(static_cast<std::size_t>(image.height), threads, [&](std::size_t row) {
     const auto y = static_cast<int32_t>(row);
-    for (int32_t x = 0; x < camera.width; ++x) {
-      const std::size_t p = row * camera.width + x;
+    for (int32_t x = 0; x < image.width; ++x) {
+      const std::size_t p = row * image.width + x;
       const int32_t n = image.side[p];
       for (std::size_t s = 0; s < image.samplesOf(p); ++s) {
         const auto sx = static_cast<float>(s % n), sy = static_cast<float>(s / n);
         const glm::vec2 offset((sx + 0.5f) / n - 0.5f, (sy + 0.5f) / n - 0.5f);
-        const glm::vec3 direction = n == 1 ? rays.direction(x, y) : rays.direction(x, y, offset);
-        const auto hit = scene.intersect(camera.position_world, direction);
+        const capture::PrimaryRay ray = n == 1 ? rays.ray(x, y) : rays.ray(x, y, offset);
+        const auto hit = scene.intersect(ray.origin, ray.direction);
         if (!hit) continue;
         const std::size_t i = image.firstSample[p] + s;
         image.position[i] = glm::vec4(hit->position_world, 1.0f);
@@ -57,22 +57,24 @@ void traceInto(SurfaceImage& image, const reference::RayScene& scene, const capt
 
 }  // namespace
 
-SurfaceImage traceSurfaces(const reference::RayScene& scene, const capture::Camera& camera,
+SurfaceImage traceSurfaces(const reference::RayScene& scene, const capture::Imager& imager,
                            int threads, int32_t samplesPerSide) {
-  const std::size_t pixels = static_cast<std::size_t>(camera.width) * camera.height;
-  SurfaceImage image = emptyImage(camera, std::vector<int32_t>(pixels, samplesPerSide));
-  traceInto(image, scene, camera, threads);
+  const std::size_t pixels =
+      static_cast<std::size_t>(capture::imageWidth(imager)) * capture::imageHeight(imager);
+  SurfaceImage image = emptyImage(imager, std::vector<int32_t>(pixels, samplesPerSide));
+  traceInto(image, scene, imager, threads);
   return image;
 }
 
-SurfaceImage traceSampledPixels(const reference::RayScene& scene, const capture::Camera& camera,
+SurfaceImage traceSampledPixels(const reference::RayScene& scene, const capture::Imager& imager,
                                 int threads, int32_t samplesPerSide,
                                 const std::vector<uint8_t>& sampled) {
-  TOFSIM_CHECK_EQ(sampled.size(), static_cast<std::size_t>(camera.width) * camera.height);
+  TOFSIM_CHECK_EQ(sampled.size(), static_cast<std::size_t>(capture::imageWidth(imager)) *
+                                      capture::imageHeight(imager));
   std::vector<int32_t> sides(sampled.size());
   for (std::size_t p = 0; p < sampled.size(); ++p) sides[p] = sampled[p] ? samplesPerSide : 1;
-  SurfaceImage image = emptyImage(camera, std::move(sides));
-  traceInto(image, scene, camera, threads);
+  SurfaceImage image = emptyImage(imager, std::move(sides));
+  traceInto(image, scene, imager, threads);
   return image;
 }
 

@@ -1,6 +1,7 @@
 #include "tofsim/ir/BounceVpls.h"
 
 #include <algorithm>
+#include <memory>
 #include <optional>
 #include <thread>
 
@@ -149,7 +150,12 @@ std::vector<Vpl> traceBounce(const reference::RayScene& scene, const std::vector
   return children;
 }
 
-BouncedVpls withLaterBounces(const capture::RenderJob& job, std::vector<Vpl> firstBounce) {
+namespace {
+
+// withLaterBounces with the scene given, or built here from job.scene (null)
+// only when a later bounce is traced.
+BouncedVpls traceLaterBounces(const capture::RenderJob& job, const reference::RayScene* given,
+                              std::vector<Vpl> firstBounce) {
   const capture::IndirectSettings& s = job.settings.indirect;
   TOFSIM_CHECK(s.bounces >= 1);
   BouncedVpls out;
@@ -161,7 +167,9 @@ BouncedVpls withLaterBounces(const capture::RenderJob& job, std::vector<Vpl> fir
   }
   const std::size_t count =
       s.vpls_per_bounce > 0 ? static_cast<std::size_t>(s.vpls_per_bounce) : out.vpls.size();
-  const reference::RayScene scene(*job.scene, 0);
+  std::unique_ptr<reference::RayScene> built;
+  if (given == nullptr) built = std::make_unique<reference::RayScene>(*job.scene, 0);
+  const reference::RayScene& scene = given != nullptr ? *given : *built;
   const BounceTracing tracing{s.russian_roulette, s.trace_threads};
   const BounceMaterials materials{job.settings.materials == capture::MaterialModel::Gltf,
                                   static_cast<float>(s.vpl_brdf_clamp_per_sr)};
@@ -175,6 +183,17 @@ BouncedVpls withLaterBounces(const capture::RenderJob& job, std::vector<Vpl> fir
     out.firstOfBounce.push_back(out.vpls.size());
   }
   return out;
+}
+
+}  // namespace
+
+BouncedVpls withLaterBounces(const capture::RenderJob& job, const reference::RayScene& scene,
+                             std::vector<Vpl> firstBounce) {
+  return traceLaterBounces(job, &scene, std::move(firstBounce));
+}
+
+BouncedVpls withLaterBounces(const capture::RenderJob& job, std::vector<Vpl> firstBounce) {
+  return traceLaterBounces(job, nullptr, std::move(firstBounce));
 }
 
 }  // namespace tofsim::ir

@@ -9,6 +9,7 @@
 #include "tofsim/ir/BounceVpls.h"
 #include "tofsim/ir/SampledPixels.h"
 #include "tofsim/ir/SegmentStream.h"
+#include "tofsim/reference/RayScene.h"
 #include "tofsim/util/Error.h"
 
 namespace tofsim::ir {
@@ -17,13 +18,15 @@ using namespace capture;  // the job description types
 
 namespace {
 
-Image depthFromPositions(const std::vector<float>& positions, const Camera& camera) {
-  Image depth(camera.width, camera.height, 1);
-  for (int32_t y = 0; y < camera.height; ++y) {
-    for (int32_t x = 0; x < camera.width; ++x) {
-      const float* p = &positions[(static_cast<std::size_t>(y) * camera.width + x) * 4];
+Image depthFromPositions(const std::vector<float>& positions, const Imager& imager) {
+  const int32_t width = imageWidth(imager), height = imageHeight(imager);
+  const glm::vec3 origin = viewpoint(imager);
+  Image depth(width, height, 1);
+  for (int32_t y = 0; y < height; ++y) {
+    for (int32_t x = 0; x < width; ++x) {
+      const float* p = &positions[(static_cast<std::size_t>(y) * width + x) * 4];
       if (p[3] == 0.0f) continue;
-      depth.at(y, x, 0) = glm::length(glm::vec3(p[0], p[1], p[2]) - camera.position_world);
+      depth.at(y, x, 0) = glm::length(glm::vec3(p[0], p[1], p[2]) - origin);
     }
   }
   return depth;
@@ -170,6 +173,19 @@ IrRenderer::IrRenderer(std::unique_ptr<IrBackend> backend) : backend_(std::move(
   TOFSIM_CHECK(backend_ != nullptr);
 }
 
+IrRenderer::~IrRenderer() = default;
+
+void IrRenderer::sceneChanged() const { scene_ = nullptr; }
+
+void IrRenderer::prepareScene(const scene::Scene& scene) const {
+  // The backend drops its view of the old scene before the rays go.
+  scene_ = nullptr;
+  rays_ = std::make_unique<reference::RayScene>(scene, 0);
+  backend_->setScene(scene, *rays_);
+  scene_ = &scene;
+  ++scenePreparations_;
+}
+
 std::string IrRenderer::description() const { return backend_->description(); }
 
 RenderResult IrRenderer::render(const RenderJob& job, SegmentSink& sink,
@@ -181,14 +197,14 @@ RenderResult IrRenderer::render(const RenderJob& job, SegmentSink& sink,
   RenderResult result;
 
   PassClock clock;
+  if (job.scene != scene_) prepareScene(*job.scene);
   const CentreSurfaces centres = backend.prepareSurfaces(job);
   const std::vector<float>& positions = centres.positions;
-  TOFSIM_CHECK_EQ(positions.size(),
-                  static_cast<std::size_t>(job.camera.width) * job.camera.height * 4);
-  result.depth_m = depthFromPositions(positions, job.camera);
+  const int32_t width = imageWidth(job.imager), height = imageHeight(job.imager);
+  TOFSIM_CHECK_EQ(positions.size(), static_cast<std::size_t>(width) * height * 4);
+  result.depth_m = depthFromPositions(positions, job.imager);
   if (job.settings.adaptive_pixel_samples && job.settings.pixel_samples > 1) {
-    const std::vector<uint8_t> sampled =
-        sampledPixels(centres, job.camera.width, job.camera.height);
+    const std::vector<uint8_t> sampled = sampledPixels(centres, width, height);
     result.sampledPixels = static_cast<std::size_t>(std::count(sampled.begin(), sampled.end(), 1));
     backend.setSampledPixels(sampled);
   }
@@ -196,7 +212,7 @@ RenderResult IrRenderer::render(const RenderJob& job, SegmentSink& sink,
   // Bounce 1 from the backend's RSM, later bounces traced from it here, so
   // both backends gather the same VPLs of every bounce; bounced.firstOfBounce
   // keeps which VPLs are of which bounce (for bounce-resolved output).
-  const BouncedVpls bounced = withLaterBounces(job, backend.generateVpls(job));
+  const BouncedVpls bounced = withLaterBounces(job, *rays_, backend.generateVpls(job));
   const std::vector<Vpl>& vpls = bounced.vpls;
   backend.setVpls(vpls);
   clock.lap(result.passSeconds.vpls);

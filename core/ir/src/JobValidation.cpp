@@ -13,12 +13,22 @@ namespace {
 
 // The sides of the G-buffer, the shadow map and the RSM.
 void validateImageSides(const RenderJob& job, const DeviceLimits& limits) {
-  const Camera& c = job.camera;
+  const int32_t width = imageWidth(job.imager), height = imageHeight(job.imager);
   const std::string maxTexture = std::to_string(limits.maxImageSide);
-  if (c.width > limits.maxImageSide || c.height > limits.maxImageSide) {
-    throw InputError("camera.resolution " + std::to_string(c.width) + "x" +
-                     std::to_string(c.height) + " exceeds the GL implementation's texture limit " +
-                     maxTexture);
+  if (width < 1 || height < 1) {
+    throw InputError("the image has " + std::to_string(width) + "x" + std::to_string(height) +
+                     " pixels: it needs at least one");
+  }
+  if (width > limits.maxImageSide || height > limits.maxImageSide) {
+    throw InputError("camera.resolution " + std::to_string(width) + "x" + std::to_string(height) +
+                     " exceeds the GL implementation's texture limit " + maxTexture);
+  }
+  if (const auto* points = std::get_if<PointSetImager>(&job.imager);
+      points != nullptr &&
+      points->points_world.size() != static_cast<std::size_t>(width) * height) {
+    throw InputError("the point-set imager lays out " + std::to_string(width) + "x" +
+                     std::to_string(height) + " pixels but holds " +
+                     std::to_string(points->points_world.size()) + " points");
   }
   if (job.settings.shadow_map_resolution > limits.maxImageSide) {
     throw InputError("render.shadow_map_resolution " +

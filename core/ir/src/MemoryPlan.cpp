@@ -49,7 +49,8 @@ MemoryPlan planMemory(const capture::RenderJob& job, const DeviceLimits& limits,
     plan.batchCount = (vplCount + plan.vplsPerBatch - 1) / plan.vplsPerBatch;
     budget -= plan.vplsPerBatch * visibilityBytesPerVpl;
   }
-  const std::size_t pixelCount = static_cast<std::size_t>(job.camera.width) * job.camera.height;
+  const std::size_t pixelCount =
+      static_cast<std::size_t>(imageWidth(job.imager)) * imageHeight(job.imager);
   PixelBuffers pixel;
   pixel.floatsPerPixel = static_cast<std::size_t>(job.settings.time.bins) * capture::kChannels;
   pixel.footprintBuffers = job.settings.pixel_footprint ? 1 : 0;

@@ -20,7 +20,7 @@ PathIntegrator::PathIntegrator(const RayScene& scene, const capture::RenderJob& 
                                ContinuationSampling sampling)
     : scene_(scene),
       job_(job),
-      rays_(job.camera),
+      rays_(job.camera()),
       bounces_(bounces),
       samplesPerPixel_(samplesPerPixel),
       pixelFilter_(pixelFilter),
@@ -136,7 +136,7 @@ void PathIntegrator::traceContinuation(const SurfaceHit& hit, const glm::vec3& t
 
 void PathIntegrator::renderPixelCentre(int32_t x, int32_t y, PixelOutput& out,
                                        std::vector<double>& scratch) const {
-  const capture::Camera& camera = job_.camera;
+  const capture::Camera& camera = job_.camera();
   const glm::vec3 eye = camera.position_world;
   const std::optional<SurfaceHit> primary = scene_.intersect(eye, rays_.direction(x, y));
   if (!primary) return;
@@ -190,7 +190,7 @@ void PathIntegrator::addDirect(const SurfaceHit& hit, const glm::vec3& toCamera,
 
 void PathIntegrator::renderPixelArea(int32_t x, int32_t y, PixelOutput& out,
                                      std::vector<double>& scratch) const {
-  const capture::Camera& camera = job_.camera;
+  const capture::Camera& camera = job_.camera();
   const glm::vec3 eye = camera.position_world;
   // The depth image stays the centre's, as the G-buffer's.
   if (const auto centre = scene_.intersect(eye, rays_.direction(x, y))) {

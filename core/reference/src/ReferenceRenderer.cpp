@@ -31,7 +31,10 @@ void validate(const ReferenceSettings& s, const RenderJob& job) {
   if (s.threads < 0) {
     throw InputError("reference.threads must be >= 0 (got " + std::to_string(s.threads) + ")");
   }
-  if (job.camera.width < 1 || job.camera.height < 1) {
+  if (pinhole(job.imager) == nullptr) {
+    throw InputError("the reference path tracer renders pinhole cameras only");
+  }
+  if (job.camera().width < 1 || job.camera().height < 1) {
     throw InputError("camera resolution must be at least 1x1");
   }
   const TimeAxis& axis = job.settings.time;
@@ -49,19 +52,19 @@ int32_t threadCount(int32_t requested) {
 // buffers, at least one; capped at a few rows per thread so progress is
 // reported often and the sink can write while little is held.
 int32_t rowsPerSegment(const RenderJob& job, int32_t threads) {
-  const std::size_t rowBytes = static_cast<std::size_t>(job.camera.width) * job.settings.time.bins *
-                               kChannels * sizeof(float) * 2;
+  const std::size_t rowBytes = static_cast<std::size_t>(job.camera().width) *
+                               job.settings.time.bins * kChannels * sizeof(float) * 2;
   const std::size_t byBudget =
       std::max<std::size_t>(1, job.settings.memory_budget_bytes / rowBytes);
   const std::size_t cap = std::max<std::size_t>(16, static_cast<std::size_t>(threads) * 4);
   return static_cast<int32_t>(
-      std::min({byBudget, cap, static_cast<std::size_t>(job.camera.height)}));
+      std::min({byBudget, cap, static_cast<std::size_t>(job.camera().height)}));
 }
 
 // The light seen straight by the camera: only the first surface at its pixel
 // matters, traced on demand.
 DirectLightView lightSeenByCamera(const RenderJob& job, const RayScene& scene) {
-  const Camera& camera = job.camera;
+  const Camera& camera = job.camera();
   return directLightView(job, [&](int32_t x, int32_t y) -> std::optional<glm::vec3> {
     const auto hit = scene.intersect(camera.position_world, camera.pixelDirection(x, y));
     if (!hit) return std::nullopt;
@@ -79,7 +82,7 @@ RenderResult ReferenceRenderer::render(const RenderJob& job, SegmentSink& sink,
                                        const ProgressCallback& progress) const {
   const auto started = std::chrono::steady_clock::now();
   validate(settings_, job);
-  const Camera& camera = job.camera;
+  const Camera& camera = job.camera();
   const TimeAxis& axis = job.settings.time;
   const int32_t threads = threadCount(settings_.threads);
   const int32_t bounces = job.settings.indirect.enabled ? settings_.bounces : 1;

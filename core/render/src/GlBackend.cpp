@@ -32,8 +32,8 @@ namespace {
 struct ViewBounds {
   explicit ViewBounds(const RenderJob& job) {
     const scene::Bounds b = job.scene->bounds();
-    lo = glm::min(glm::min(b.min, job.camera.position_world), job.light.position_world);
-    hi = glm::max(glm::max(b.max, job.camera.position_world), job.light.position_world);
+    lo = glm::min(glm::min(b.min, job.camera().position_world), job.light.position_world);
+    hi = glm::max(glm::max(b.max, job.camera().position_world), job.light.position_world);
   }
   glm::vec3 lo, hi;
 };
@@ -41,13 +41,13 @@ struct ViewBounds {
 // Uniforms shared by the direct and indirect gathers: image, time axis, camera.
 void configureGather(const gl::Program& program, const RenderJob& job) {
   const TimeAxis& axis = job.settings.time;
-  program.set("uImageWidth", job.camera.width);
+  program.set("uImageWidth", job.camera().width);
   program.set("uBins", axis.bins);
   program.set("uStart_m", static_cast<float>(axis.start_m()));
   program.set("uBinWidth_m", static_cast<float>(axis.bin_width_m()));
   program.set("uIndexOfRefraction", static_cast<float>(job.settings.index_of_refraction));
   program.set("uCameraUnwarp", job.settings.camera_unwarp ? 1 : 0);
-  program.set("uCameraPosition_world", job.camera.position_world);
+  program.set("uCameraPosition_world", job.camera().position_world);
   const RenderSettings& s = job.settings;
   const int32_t n = s.pixel_samples;
   // Each sample stands for 1 / N^2 of the pixel (as the CPU backend weighs it).
@@ -55,14 +55,14 @@ void configureGather(const gl::Program& program, const RenderJob& job) {
   if (s.pixel_footprint) {
     // A sample's footprint is its sub-pixel: the ray steps shrink by N.
     const float side = 1.0f / static_cast<float>(n);
-    program.set("uCameraForward", job.camera.forward());
-    program.set("uSampleStepX", job.camera.rayStepAlongX() * side);
-    program.set("uSampleStepY", job.camera.rayStepAlongY() * side);
+    program.set("uCameraForward", job.camera().forward());
+    program.set("uSampleStepX", job.camera().rayStepAlongX() * side);
+    program.set("uSampleStepY", job.camera().rayStepAlongY() * side);
     // A masked-out pixel's one centre sample spans the whole pixel: the
     // steps of pixel_samples: 1 (whose side is 1), unscaled.
     if (gpu::adaptiveSamples(s)) {
-      program.set("uPixelStepX", job.camera.rayStepAlongX());
-      program.set("uPixelStepY", job.camera.rayStepAlongY());
+      program.set("uPixelStepX", job.camera().rayStepAlongX());
+      program.set("uPixelStepY", job.camera().rayStepAlongY());
     }
   }
 }
@@ -81,20 +81,36 @@ void configureIndirectGather(const gl::Program& program, const RenderJob& job) {
 
 }  // namespace
 
+// The scene's GL objects, made once per scene (setScene): the geometry, and
+// the triangle soup with its BVH the indirect gathers' visibility walks,
+// built when a render first has VPLs.
+struct GlBackend::SceneObjects {
+  explicit SceneObjects(const scene::Scene& s) : scene(s), gpuScene(s) {}
+  const scene::TriangleSoup& soup() {
+    if (!triangleSoup)
+      triangleSoup = std::make_unique<scene::TriangleSoup>(scene::buildTriangleSoup(scene));
+    return *triangleSoup;
+  }
+
+  const scene::Scene& scene;
+  GpuScene gpuScene;
+  std::unique_ptr<scene::TriangleSoup> triangleSoup;
+};
+
 // One render's GL objects, in the order they are made.
 struct GlBackend::Passes {
-  explicit Passes(const RenderJob& renderJob)
+  Passes(const RenderJob& renderJob, const GpuScene& scene)
       : job(renderJob),
         bounds(job),
-        gpuScene(*job.scene),
+        gpuScene(scene),
         samplesPerSide(job.settings.pixel_samples),
-        gbuffer(job.camera.width * samplesPerSide, job.camera.height * samplesPerSide,
+        gbuffer(job.camera().width * samplesPerSide, job.camera().height * samplesPerSide,
                 job.settings.materials == capture::MaterialModel::Gltf),
         shadowMap(job.settings.shadow_map_resolution, job.light.position_world, bounds.lo,
                   bounds.hi) {}
 
   std::size_t pixelCount() const {
-    return static_cast<std::size_t>(job.camera.width) * job.camera.height;
+    return static_cast<std::size_t>(job.camera().width) * job.camera().height;
   }
   bool gltf() const { return job.settings.materials == capture::MaterialModel::Gltf; }
 
@@ -115,9 +131,9 @@ struct GlBackend::Passes {
 
   RenderJob job;
   ViewBounds bounds;
-  GpuScene gpuScene;
-  int32_t samplesPerSide;  ///< render.pixel_samples
-  SurfaceMaps gbuffer;     ///< the samples': (width N) x (height N), surface_samples.glsl
+  const GpuScene& gpuScene;  ///< the backend's (SceneObjects)
+  int32_t samplesPerSide;    ///< render.pixel_samples
+  SurfaceMaps gbuffer;       ///< the samples': (width N) x (height N), surface_samples.glsl
   /// render.adaptive_pixel_samples (N > 1) only: the W x H pixel-centre
   /// G-buffer, the one sample of a masked-out pixel, and the mask, one uint
   /// per pixel (an SSBO indexed by the pixel index the gathers already hold;
@@ -158,9 +174,24 @@ ir::DeviceLimits GlBackend::limits() const {
   return limits;
 }
 
+void GlBackend::setScene(const scene::Scene& scene, const reference::RayScene& /*rays*/) {
+  passes_.reset();  // a render's objects refer to the scene's
+  sceneObjects_.reset();
+  sceneObjects_ = std::make_unique<SceneObjects>(scene);
+}
+
 ir::CentreSurfaces GlBackend::prepareSurfaces(const RenderJob& job) {
   passes_.reset();  // the previous render's GL objects go first
-  const Camera& camera = job.camera;
+  TOFSIM_CHECK_MSG(sceneObjects_ != nullptr && &sceneObjects_->scene == job.scene,
+                   "setScene with the job's scene must come first");
+  if (pinhole(job.imager) == nullptr) {
+    // Given samples (the driver's traced primary hits) are not read by the GL
+    // gathers yet: issue 22 item 2 leaves that path for the GL backend open.
+    throw InputError(
+        "the GL backend rasterizes pinhole cameras only; a point-set imager renders with "
+        "render.backend: cpu");
+  }
+  const Camera& camera = job.camera();
   const int32_t n = job.settings.pixel_samples;
   const int32_t maxSide = context_.limits().maxTextureSize;
   if (n > 1 && (camera.width * n > maxSide || camera.height * n > maxSide)) {
@@ -169,7 +200,7 @@ ir::CentreSurfaces GlBackend::prepareSurfaces(const RenderJob& job) {
                      std::to_string(n) + " exceeds the GL texture limit " +
                      std::to_string(maxSide) + " for the sub-pixel G-buffer");
   }
-  passes_ = std::make_unique<Passes>(job);
+  passes_ = std::make_unique<Passes>(job, sceneObjects_->gpuScene);
   Passes& p = *passes_;
   const glm::vec2 range = depthRange(p.bounds.lo, p.bounds.hi, camera.position_world);
   const glm::mat4 viewProjection = camera.projection(range.x, range.y) * camera.view();
@@ -235,8 +266,7 @@ void GlBackend::setVpls(const std::vector<ir::Vpl>& vpls) {
   Passes& p = passes();
   p.indirectLight.reset();
   if (vpls.empty()) return;
-  p.indirectLight =
-      std::make_unique<IndirectLight>(scene::buildTriangleSoup(*p.job.scene), vpls, p.job.settings);
+  p.indirectLight = std::make_unique<IndirectLight>(sceneObjects_->soup(), vpls, p.job.settings);
   configureIndirectGather(p.indirectLight->gatherProgram(), p.job);
 }
 

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "tofsim/capture/Camera.h"
+#include "tofsim/capture/Imager.h"
 #include "tofsim/capture/Light.h"
 #include "tofsim/capture/RenderSettings.h"
 #include "tofsim/scene/Scene.h"
@@ -16,9 +17,15 @@ namespace tofsim::capture {
 
 struct RenderJob {
   const scene::Scene* scene = nullptr;
-  Camera camera;
+  Imager imager;  ///< what the pixels see; a pinhole camera by default
   Light light;
   RenderSettings settings;
+
+  /// The imager's pinhole camera, for code that only knows cameras (the GL
+  /// rasterizer, the reference's pixel filter, the pipeline's camera
+  /// metadata); std::bad_variant_access for any other imager.
+  Camera& camera() { return std::get<Camera>(imager); }
+  const Camera& camera() const { return std::get<Camera>(imager); }
 };
 
 /// Wall seconds of instant radiosity's passes: where a render's time goes

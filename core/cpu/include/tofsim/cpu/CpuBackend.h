@@ -56,6 +56,7 @@ class CpuBackend : public ir::IrBackend {
 
   std::string description() const override;
   ir::DeviceLimits limits() const override;
+  void setScene(const scene::Scene& scene, const reference::RayScene& rays) override;
   ir::CentreSurfaces prepareSurfaces(const capture::RenderJob& job) override;
   void setSampledPixels(const std::vector<uint8_t>& sampled) override;
   std::vector<ir::Vpl> generateVpls(const capture::RenderJob& job) override;
@@ -88,15 +89,17 @@ class CpuBackend : public ir::IrBackend {
   /// render.pixel_samples squared: the most samples a pixel takes.
   std::size_t maxSamplesPerPixel() const;
   /// segmentSurfaces_[i] and segmentLit_[i] from the segment's sample i, a
-  /// sample of `weight` (1 / its pixel's samples) whose footprint spans the
-  /// ray steps stepX, stepY.
-  void fillSurface(std::size_t i, float weight, const glm::vec3& forward, const glm::vec3& stepX,
-                   const glm::vec3& stepY, float eta);
+  /// sample of `weight` (1 / its pixel's samples) whose footprint the
+  /// imager's `steps` give.
+  void fillSurface(std::size_t i, float weight, const capture::PixelSteps& steps, float eta);
 
   int threads_ = 1;
   bool indirectVisibility_ = true;
   capture::RenderJob job_;
-  std::unique_ptr<reference::RayScene> scene_;
+  /// The last leg is not timed: render.camera_unwarp, or an imager whose
+  /// last leg does not count (capture::lastLegCounts).
+  bool dropLastLeg_ = false;
+  const reference::RayScene* scene_ = nullptr;  ///< the driver's (setScene)
   std::unique_ptr<SurfaceImage> surfaces_;  ///< every pixel's samples (SurfaceImage::firstSample)
   /// render.adaptive_pixel_samples: surfaces_ holds the centres until
   /// setSampledPixels (or finishSurfaces) traces the sub-samples.

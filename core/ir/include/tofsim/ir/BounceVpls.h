@@ -2,9 +2,9 @@
 // VPLs of the indirect bounces after the first (Keller 1997, "Instant
 // radiosity"): the RSM gives bounce 1; the VPLs of bounce k + 1 continue the
 // light paths of those of bounce k by cosine-weighted directions (sampled
-// from the VPL's BRDF for glossy VPLs) traced against the scene, so every VPL still carries its flux and its whole optical
-// path from the light, and the gather needs nothing new. Backend-independent:
-// the rays are Embree's whatever device gathers.
+// from the VPL's BRDF for glossy VPLs) traced against the scene, so every VPL still carries its
+// flux and its whole optical path from the light, and the gather needs nothing new.
+// Backend-independent: the rays are Embree's whatever device gathers.
 
 #include <cstddef>
 #include <cstdint>
@@ -73,11 +73,14 @@ std::vector<Vpl> traceBounce(const reference::RayScene& scene, const std::vector
                              const BounceMaterials& materials = {});
 
 /// Bounce 1 (`firstBounce`, the backend's RSM VPLs) followed by bounces
-/// 2..job.settings.indirect.bounces, traced through a RayScene of job.scene
-/// built here (only when there is a later bounce and light to continue), on
-/// indirect.trace_threads threads. Bounce 2 traces vpls_per_bounce rays (0:
-/// as many as bounce 1 has VPLs), and so does every later bounce, or with
-/// russian_roulette as many as the bounce before kept.
+/// 2..job.settings.indirect.bounces, traced through `scene` (the driver's
+/// RayScene of job.scene), on indirect.trace_threads threads. Bounce 2 traces vpls_per_bounce rays
+/// (0: as many as bounce 1 has VPLs), and so does every later bounce, or with russian_roulette as
+/// many as the bounce before kept.
+BouncedVpls withLaterBounces(const capture::RenderJob& job, const reference::RayScene& scene,
+                             std::vector<Vpl> firstBounce);
+/// The same through a RayScene of job.scene built here (only when there is a
+/// later bounce and light to continue): for callers without a driver.
 BouncedVpls withLaterBounces(const capture::RenderJob& job, std::vector<Vpl> firstBounce);
 
 }  // namespace tofsim::ir

@@ -5,7 +5,9 @@
 // passes. The GL backend (render::GlBackend) implements it; a CPU backend
 // implements the same and reuses all of the planning.
 //
-// Call order, per render (IrRenderer::render):
+// Call order: setScene once per scene (IrRenderer::render calls it when the
+// job's scene is not the one set last, or after IrRenderer::sceneChanged),
+// then per render (IrRenderer::render):
 //   limits, prepareSurfaces, [setSampledPixels: render.adaptive_pixel_samples
 //   with pixel_samples > 1 only], generateVpls, setVpls, fixedBytes,
 //   visibilityBytesPerVpl, allocate, then for each segment (increasing pixel
@@ -37,6 +39,10 @@
 
 #include "tofsim/capture/RenderJob.h"
 #include "tofsim/volume/TimeAxis.h"
+
+namespace tofsim::reference {
+class RayScene;
+}
 
 namespace tofsim::ir {
 
@@ -90,10 +96,17 @@ class IrBackend {
   /// The device, e.g. "llvmpipe (LLVM 15.0.6, 256 bits)" or "CPU (2 threads)".
   virtual std::string description() const = 0;
   virtual DeviceLimits limits() const = 0;
-  /// Scene upload, camera G-buffer of every pixel (every sub-pixel sample),
-  /// light shadow map. Returns the pixel centres' G-buffer: the driver derives
-  /// the depth image, the DirectLightView and the adaptive samples' edge
-  /// pixels from it. Starts a new render: drops any earlier one's state.
+  /// The scene every following render sees, prepared once (GL: geometry
+  /// upload and the triangle soup's BVH; CPU: nothing but the reference):
+  /// `rays` is the driver's one Embree scene of it, which the CPU backend
+  /// traces with and the driver traces later bounces with. Both must outlive
+  /// the renders that use them; a new call replaces them.
+  virtual void setScene(const scene::Scene& scene, const reference::RayScene& rays) = 0;
+  /// One capture of the scene set last: camera G-buffer of every pixel
+  /// (every sub-pixel sample), light shadow map. Returns the pixel centres'
+  /// G-buffer: the driver derives the depth image, the DirectLightView and
+  /// the adaptive samples' edge pixels from it. Starts a new render: drops
+  /// any earlier render's state (not the scene's).
   virtual CentreSurfaces prepareSurfaces(const capture::RenderJob& job) = 0;
   /// render.adaptive_pixel_samples with render.pixel_samples N > 1 only,
   /// right after prepareSurfaces: one entry per pixel (row-major, row 0 at

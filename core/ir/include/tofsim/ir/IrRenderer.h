@@ -10,6 +10,7 @@
 // the components "direct", "indirect" and "bounce1" .. "bounceN"
 // (N = render.indirect.bounces; indirect = their float sum in bounce order).
 
+#include <cstddef>
 #include <memory>
 
 #include "tofsim/capture/Renderer.h"
@@ -20,14 +21,29 @@ namespace tofsim::ir {
 class IrRenderer : public capture::Renderer {
  public:
   explicit IrRenderer(std::unique_ptr<IrBackend> backend);
+  ~IrRenderer() override;
 
   std::string description() const override;
-  /// Not thread-safe: the backend holds one render's state at a time.
+  /// Not thread-safe: the backend holds one render's state at a time. The
+  /// scene is prepared (IrBackend::setScene, one Embree BVH) when job.scene
+  /// is not the scene of the last render, so a sequence of captures of one
+  /// scene (laser positions of a scan, lights, cameras) prepares it once.
   capture::RenderResult render(const capture::RenderJob& job, capture::SegmentSink& sink,
                                const capture::ProgressCallback& progress = {}) const override;
+  /// The held scene was changed in place (an animation's next frame): the
+  /// next render prepares it again.
+  void sceneChanged() const;
+  /// How many times a scene was prepared (for tests and statistics).
+  std::size_t scenePreparations() const { return scenePreparations_; }
 
  private:
+  void prepareScene(const scene::Scene& scene) const;
+
   std::unique_ptr<IrBackend> backend_;
+  // The prepared scene; mutable because render is const (Renderer's interface).
+  mutable const scene::Scene* scene_ = nullptr;
+  mutable std::unique_ptr<reference::RayScene> rays_;
+  mutable std::size_t scenePreparations_ = 0;
 };
 
 }  // namespace tofsim::ir

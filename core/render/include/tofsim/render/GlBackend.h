@@ -27,6 +27,7 @@ class GlBackend : public ir::IrBackend {
 
   std::string description() const override;
   ir::DeviceLimits limits() const override;
+  void setScene(const scene::Scene& scene, const reference::RayScene& rays) override;
   ir::CentreSurfaces prepareSurfaces(const capture::RenderJob& job) override;
   void setSampledPixels(const std::vector<uint8_t>& sampled) override;
   std::vector<ir::Vpl> generateVpls(const capture::RenderJob& job) override;
@@ -42,11 +43,14 @@ class GlBackend : public ir::IrBackend {
   void readSegment(float* direct, float* indirect, AxisLoss& offAxis) override;
 
  private:
-  struct Passes;  // one render's GL objects (GlBackend.cpp)
+  struct SceneObjects;  // the scene's GL objects, kept across renders (GlBackend.cpp)
+  struct Passes;        // one render's GL objects (GlBackend.cpp)
   Passes& passes() const;
 
   std::unique_ptr<gl::Context> ownedContext_;
   gl::Context& context_;
+  // Declared before passes_: a render's objects go first.
+  std::unique_ptr<SceneObjects> sceneObjects_;
   std::unique_ptr<Passes> passes_;
 };
 

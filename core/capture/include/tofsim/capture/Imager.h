@@ -1,0 +1,107 @@
+#pragma once
+// What a capture's pixels look at, whatever renders it: a pinhole camera, or a
+// set of points on the scene's surfaces seen from one origin (the relay-wall
+// points of a non-line-of-sight scan, or any list of points). Each kind says
+// its primary ray per sample, the surface's step across one of its pixels
+// (the pixel footprint, pbrt-v4's Approximate_dp_dxy idea) and, for the
+// pinhole only, the view-projection a rasterizer can draw its G-buffer with.
+// A new kind (a lens with distortion) is one more alternative and its
+// functions here.
+
+#include <cstdint>
+#include <glm/glm.hpp>
+#include <optional>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include "tofsim/capture/Camera.h"
+
+namespace tofsim::scene {
+struct Scene;
+}
+
+namespace tofsim::capture {
+
+/// Points on the scene's surfaces, each one pixel of a width x height image
+/// (row-major, row 0 first; an N x 1 image for a plain list), seen from
+/// origin_world: a pixel's primary ray runs from the origin towards its
+/// point, and its light's last leg from the surface it hits back to the
+/// origin (the SPAD or streak camera focused on the point).
+struct PointSetImager {
+  int32_t width = 0;
+  int32_t height = 1;
+  std::vector<glm::vec3> points_world;  ///< width * height, row-major
+  glm::vec3 origin_world{0.0f};
+  /// false: the last leg takes no time, the arrival is timed at the point (y-tal's
+  /// account_first_and_last_bounces: false for the wall-to-sensor leg).
+  bool last_leg_counts = true;
+  /// One pixel's extent on the surface: the step from a point to the next
+  /// along its row (u) and down its column (v). Zero: the points are point
+  /// samples (the footprint is then a delta, as render.pixel_footprint: false).
+  glm::vec3 step_u_world{0.0f};
+  glm::vec3 step_v_world{0.0f};
+};
+
+using Imager = std::variant<Camera, PointSetImager>;
+
+int32_t imageWidth(const Imager& imager);
+int32_t imageHeight(const Imager& imager);
+/// Where the primary rays start and the last leg ends.
+glm::vec3 viewpoint(const Imager& imager);
+/// Whether the last leg (surface -> viewpoint) is part of the optical path;
+/// render.camera_unwarp drops it for every imager.
+bool lastLegCounts(const Imager& imager);
+/// The pinhole, or null for an imager a rasterizer cannot draw.
+const Camera* pinhole(const Imager& imager);
+
+struct PrimaryRay {
+  glm::vec3 origin;
+  glm::vec3 direction;  ///< unit
+};
+
+/// Primary rays of an imager, with what they share computed once (a
+/// pinhole's frame, as capture::PixelRays, whose directions these are bit for
+/// bit).
+class PrimaryRays {
+ public:
+  explicit PrimaryRays(const Imager& imager);
+  /// Through the centre of pixel (x, y).
+  PrimaryRay ray(int32_t x, int32_t y) const;
+  /// Through the point `offset` (pixels, in [-1/2, 1/2]^2, +x right, +y
+  /// down) from pixel (x, y)'s centre.
+  PrimaryRay ray(int32_t x, int32_t y, glm::vec2 offset) const;
+
+ private:
+  const Imager& imager_;
+  std::optional<PixelRays> pinholeRays_;
+};
+
+/// The surface's steps across one of the imager's pixels (or across a
+/// sub-pixel of side `side` pixels): the footprint's dx/du, dx/dv.
+struct FootprintSteps {
+  glm::vec3 dxdu{0.0f};
+  glm::vec3 dxdv{0.0f};
+};
+class PixelSteps {
+ public:
+  PixelSteps(const Imager& imager, float side);
+  /// At surface point x with unit normal n.
+  FootprintSteps at(const glm::vec3& x, const glm::vec3& n) const;
+
+ private:
+  bool pinhole_ = false;
+  glm::vec3 origin_{0.0f}, forward_{0.0f};
+  glm::vec3 stepX_{0.0f}, stepY_{0.0f};  ///< pinhole: ray steps; point set: surface steps
+};
+
+/// A width x height grid of points at the centres of the cells of the
+/// rectangle the mesh `meshName` spans in its plane, seen from origin_world:
+/// a relay wall's scan points. u runs along the mesh's first edge, v along
+/// the in-plane normal to it, row 0 at the largest v. Throws InputError
+/// naming the mesh when it does not exist or is not planar.
+PointSetImager gridOnPlanarMesh(const scene::Scene& scene, const std::string& meshName,
+                                int32_t width, int32_t height, const glm::vec3& origin_world,
+                                bool lastLegCounts = true);
+
+}  // namespace tofsim::capture

@@ -1,0 +1,137 @@
+#include "tofsim/capture/Imager.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "tofsim/physics/FootprintKernel.h"
+#include "tofsim/scene/Scene.h"
+#include "tofsim/util/Error.h"
+
+namespace tofsim::capture {
+
+namespace {
+template <class... F>
+struct Overloaded : F... {
+  using F::operator()...;
+};
+}  // namespace
+
+int32_t imageWidth(const Imager& imager) {
+  return std::visit([](const auto& i) { return i.width; }, imager);
+}
+
+int32_t imageHeight(const Imager& imager) {
+  return std::visit([](const auto& i) { return i.height; }, imager);
+}
+
+glm::vec3 viewpoint(const Imager& imager) {
+  return std::visit(Overloaded{[](const Camera& c) { return c.position_world; },
+                               [](const PointSetImager& p) { return p.origin_world; }},
+                    imager);
+}
+
+bool lastLegCounts(const Imager& imager) {
+  const auto* points = std::get_if<PointSetImager>(&imager);
+  return points == nullptr || points->last_leg_counts;
+}
+
+const Camera* pinhole(const Imager& imager) { return std::get_if<Camera>(&imager); }
+
+PrimaryRays::PrimaryRays(const Imager& imager) : imager_(imager) {
+  if (const Camera* camera = pinhole(imager)) pinholeRays_.emplace(*camera);
+}
+
+PrimaryRay PrimaryRays::ray(int32_t x, int32_t y) const {
+  if (pinholeRays_) return {viewpoint(imager_), pinholeRays_->direction(x, y)};
+  const auto& points = std::get<PointSetImager>(imager_);
+  const glm::vec3 target = points.points_world[static_cast<std::size_t>(y) * points.width + x];
+  return {points.origin_world, glm::normalize(target - points.origin_world)};
+}
+
+PrimaryRay PrimaryRays::ray(int32_t x, int32_t y, glm::vec2 offset) const {
+  if (pinholeRays_) return {viewpoint(imager_), pinholeRays_->direction(x, y, offset)};
+  const auto& points = std::get<PointSetImager>(imager_);
+  const glm::vec3 target = points.points_world[static_cast<std::size_t>(y) * points.width + x] +
+                           offset.x * points.step_u_world + offset.y * points.step_v_world;
+  return {points.origin_world, glm::normalize(target - points.origin_world)};
+}
+
+PixelSteps::PixelSteps(const Imager& imager, float side) {
+  if (const Camera* c = pinhole(imager)) {
+    pinhole_ = true;
+    origin_ = c->position_world;
+    forward_ = c->forward();
+    stepX_ = c->rayStepAlongX() * side;
+    stepY_ = c->rayStepAlongY() * side;
+  } else {
+    // The points' own spacing: the cell each point stands for.
+    const auto& p = std::get<PointSetImager>(imager);
+    stepX_ = p.step_u_world * side;
+    stepY_ = p.step_v_world * side;
+  }
+}
+
+FootprintSteps PixelSteps::at(const glm::vec3& x, const glm::vec3& n) const {
+  if (!pinhole_) return {stepX_, stepY_};
+  // The pinhole's ray differentials carried to the surface (footprint_kernel.md).
+  const glm::vec3 toSurface = x - origin_;
+  return {physics::surfaceStepAcrossPixel(toSurface, forward_, stepX_, n),
+          physics::surfaceStepAcrossPixel(toSurface, forward_, stepY_, n)};
+}
+
+PointSetImager gridOnPlanarMesh(const scene::Scene& scene, const std::string& meshName,
+                                int32_t width, int32_t height, const glm::vec3& origin_world,
+                                bool lastLegCounts) {
+  const auto mesh = std::find_if(scene.meshes.begin(), scene.meshes.end(),
+                                 [&](const scene::Mesh& m) { return m.name == meshName; });
+  if (mesh == scene.meshes.end()) {
+    throw InputError("no mesh named '" + meshName + "' in the scene for the point grid");
+  }
+  if (width < 1 || height < 1) {
+    throw InputError("the point grid on '" + meshName + "' needs at least 1 x 1 points (got " +
+                     std::to_string(width) + " x " + std::to_string(height) + ")");
+  }
+  if (mesh->indices.size() < 3) throw InputError("mesh '" + meshName + "' has no triangle");
+  const glm::vec3 a = mesh->positions_world[mesh->indices[0]];
+  const glm::vec3 b = mesh->positions_world[mesh->indices[1]];
+  const glm::vec3 c = mesh->positions_world[mesh->indices[2]];
+  const glm::vec3 u = glm::normalize(b - a);
+  const glm::vec3 normal = glm::normalize(glm::cross(b - a, c - a));
+  const glm::vec3 v = glm::cross(normal, u);
+  float uMin = std::numeric_limits<float>::max(), vMin = uMin;
+  float uMax = -uMin, vMax = -uMin, offPlane = 0.0f, extent = 0.0f;
+  for (const glm::vec3& p : mesh->positions_world) {
+    const glm::vec3 d = p - a;
+    uMin = std::min(uMin, glm::dot(d, u));
+    uMax = std::max(uMax, glm::dot(d, u));
+    vMin = std::min(vMin, glm::dot(d, v));
+    vMax = std::max(vMax, glm::dot(d, v));
+    offPlane = std::max(offPlane, std::fabs(glm::dot(d, normal)));
+    extent = std::max(extent, glm::length(d));
+  }
+  if (offPlane > 1e-4f * std::max(extent, 1e-6f)) {
+    throw InputError("mesh '" + meshName + "' is not planar (a vertex lies " +
+                     std::to_string(offPlane) + " m off its first triangle's plane)");
+  }
+  PointSetImager grid;
+  grid.width = width;
+  grid.height = height;
+  grid.origin_world = origin_world;
+  grid.last_leg_counts = lastLegCounts;
+  const float du = (uMax - uMin) / static_cast<float>(width);
+  const float dv = (vMax - vMin) / static_cast<float>(height);
+  grid.step_u_world = u * du;
+  grid.step_v_world = -v * dv;  // rows run down the image: towards smaller v
+  grid.points_world.reserve(static_cast<std::size_t>(width) * height);
+  for (int32_t j = 0; j < height; ++j) {
+    for (int32_t i = 0; i < width; ++i) {
+      const float pu = uMin + (static_cast<float>(i) + 0.5f) * du;
+      const float pv = vMax - (static_cast<float>(j) + 0.5f) * dv;
+      grid.points_world.push_back(a + pu * u + pv * v);
+    }
+  }
+  return grid;
+}
+
+}  // namespace tofsim::capture
