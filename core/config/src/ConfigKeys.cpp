@@ -1,6 +1,12 @@
 // The declared config keys (ConfigKeys.h). The README tables are checked
-// against this file by tests/config/ConfigKeysTest.cpp: change both together.
+// against these rows by tests/config/ConfigKeysTest.cpp: change both together.
+// Sensor parameters are declared in their tables (sensors/SensorFields.h).
 #include "tofsim/config/ConfigKeys.h"
+
+#include <iterator>
+
+#include "FieldDoc.h"
+#include "tofsim/sensors/SensorFields.h"
 
 namespace tofsim::config {
 
@@ -155,7 +161,9 @@ const ConfigKey kRunConfigKeys[] = {
     {"output.plot_ranges", "map of [lo, hi]", "lo < hi", "{}", "unit of the picture",
      "fixed colour ranges, so pictures compare across runs: key = the PNG's path without `.png` (`depth`, `steady`, `sensors/<sensor>/<output>`), e.g. `{depth: [0.5, 3], sensors/cwtof/cwtof_mpi_error: [-0.05, 0.05]}`; `steady` maps lo..hi to black..white; a key that names no picture of the run is warned about; a sensor picture's JSON records the range it was drawn with, fixed or automatic (`picture.range`, `sensors/README.md`)"},
 };
-const ConfigKey kSensorConfigKeys[] = {
+// The keys of a sensor entry itself, and the one-of-two channel keys; every
+// other sensor key's row comes from its parameter table (SensorFields.h).
+const ConfigKey kSensorEntryKeys[] = {
     {"common.type", "string", "", "required", "-",
      "`streak`, `spad` or `cwtof`"},
     {"common.name", "string", "", "the type", "-",
@@ -164,85 +172,23 @@ const ConfigKey kSensorConfigKeys[] = {
      "volume channel used when `channel_weights` is absent"},
     {"common.channel_weights", "list of numbers", "", "none", "-",
      "weighted sum of the channels instead (one weight per channel)"},
-    {"common.source_scale", "number", ">= 0", "1", "-",
-     "laser energy per pulse (SPAD, streak) or per exposure (CW-ToF) relative to the render's light"},
-    {"common.etendue", "number", "> 0", "1", "m^2 sr",
-     "pixel area x solid angle of the aperture"},
-    {"common.optics_transmission", "number", "in [0, 1]", "1", "-",
-     "lens and filter transmission"},
-    {"common.quantum_efficiency", "number", "in [0, 1]", "1", "-",
-     "photo-electrons per photon (leave 1 for SPAD, which has `pde`)"},
-    {"common.wavelength", "length", ">= 0", "0", "m",
-     "0: the volume's values already count photons; > 0: energy is converted to photons with lambda / (h c)"},
-    {"bins.bin_width", "duration", "> 0", "the render's", "s",
-     "instrument bin width"},
-    {"bins.bin_offset", "duration", "", "the render's `time.start`", "s",
-     "leading edge of bin 0"},
-    {"bins.bins", "int", ">= 1", "enough to reach the render's end (with the defaults: the render's `time.bins`)", "-",
-     "number of instrument bins"},
-    {"streak.rows", "list of ints", "", "all rows", "pixel",
-     "image rows to record"},
-    {"streak.time_fwhm", "duration", ">= 0", "0", "s",
-     "temporal PSF FWHM (Gaussian)"},
-    {"streak.spatial_fwhm", "number", ">= 0", "0", "pixel",
-     "spatial blur FWHM along x (Gaussian)"},
-    {"streak.shot_noise", "bool", "", "true", "-",
-     "Poisson photo-electron noise"},
-    {"streak.read_noise", "number", ">= 0", "0", "e- RMS",
-     "Gaussian read noise"},
-    {"streak.gain", "number", "> 0", "1", "ADU / e-",
-     "output scale"},
-    {"streak.saturation", "number", "> 0", "65535", "ADU",
-     "clipping level"},
-    {"streak.colormap", "string", "", "inferno", "-",
-     "colormap of the PNGs"},
-    {"spad.mode", "string", "", "synchronous", "-",
-     "`synchronous` (first photon, pile-up) or `free_running`"},
-    {"spad.cycles", "int", ">= 1", "10000", "-",
-     "laser cycles N"},
-    {"spad.pulse_fwhm", "duration", ">= 0", "0", "s",
-     "Gaussian laser pulse FWHM"},
-    {"spad.jitter_fwhm", "duration", ">= 0", "0", "s",
-     "Gaussian timing jitter FWHM"},
-    {"spad.jitter_tail_fraction", "number", "in [0, 1]", "0", "-",
-     "fraction of detections with an exponential delay"},
-    {"spad.jitter_tail", "duration", ">= 0", "0", "s",
-     "time constant of that delay"},
-    {"spad.pde", "number", "in [0, 1]", "0.3", "-",
-     "photon detection efficiency (signal and ambient)"},
-    {"spad.ambient_rate", "rate", ">= 0", "0", "photons / s",
-     "ambient photons reaching the pixel (\"2 MHz\" or 2e6)"},
-    {"spad.dark_count_rate", "rate", ">= 0", "0", "counts / s",
-     "dark counts"},
-    {"spad.dead_time", "duration", ">= 0", "0", "s",
-     "free-running dead time, rounded to TDC bins"},
-    {"spad.plot_pixels", "list of [x, y]", "", "centre pixel", "pixel",
-     "pixels drawn in `spad_histograms`"},
-    {"spad.colormap", "string", "", "turbo", "-",
-     "colormap of the PNGs"},
-    {"cwtof.frequencies", "list of frequencies", "> 0", "[\"20 MHz\"]", "Hz",
-     "modulation frequencies"},
-    {"cwtof.phase_steps", "int", ">= 3", "4", "-",
-     "phase steps N per frequency"},
-    {"cwtof.waveform", "string", "", "sine", "-",
-     "`sine` or `square` (50 % duty)"},
-    {"cwtof.ambient", "number", ">= 0", "0", "e-",
-     "ambient photo-electrons per raw image and pixel"},
-    {"cwtof.shot_noise", "bool", "", "true", "-",
-     "Poisson noise on the raw images"},
-    {"cwtof.read_noise", "number", ">= 0", "0", "e- RMS",
-     "Gaussian read noise per raw image"},
-    {"cwtof.max_depth", "length", ">= 0", "0 (automatic)", "m",
-     "unwrapping search range"},
-    {"cwtof.colormap", "string", "", "turbo", "-",
-     "colormap of the PNGs"},
-    {"cwtof.multipath_by_order", "bool", "", "false", "-",
-     "also the depth error of direct + bounces 1..k against the ground truth for every order k = 0..N (`cwtof_multipath_error_by_order`); needs `output.depth` and a renderer that resolves bounces (see \"Multipath error by bounce order\" above)"},
 };
 // clang-format on
 }  // namespace
 
 std::span<const ConfigKey> runConfigKeys() { return kRunConfigKeys; }
-std::span<const ConfigKey> sensorConfigKeys() { return kSensorConfigKeys; }
+std::span<const ConfigKey> sensorConfigKeys() {
+  static const DocRows rows = [] {
+    DocRows r;
+    r.keys.assign(std::begin(kSensorEntryKeys), std::end(kSensorEntryKeys));
+    addDocRows<sensors::Radiometry>(r, "common", sensors::kRadiometryFields);
+    addDocRows<sensors::InstrumentBins>(r, "bins", sensors::kBinsFields);
+    addDocRows<sensors::StreakParams>(r, "streak", sensors::kStreakFields);
+    addDocRows<sensors::SpadParams>(r, "spad", sensors::kSpadFields);
+    addDocRows<sensors::CwTofParams>(r, "cwtof", sensors::kCwTofFields);
+    return r;
+  }();
+  return rows.keys;
+}
 
 }  // namespace tofsim::config
