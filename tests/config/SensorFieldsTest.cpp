@@ -64,8 +64,12 @@ TEST(SensorFieldsTest, RowsComeFromTheTables) {
       EXPECT_STREQ(key.range, "in [0, 1]");
       EXPECT_STREQ(key.defaultValue, "0.3");
     }
-    if (path == "cwtof.phase_steps") EXPECT_STREQ(key.range, ">= 3");
-    if (path == "spad.mode") EXPECT_STREQ(key.defaultValue, "synchronous");
+    if (path == "cwtof.phase_steps") {
+      EXPECT_STREQ(key.range, ">= 3");
+    }
+    if (path == "spad.mode") {
+      EXPECT_STREQ(key.defaultValue, "synchronous");
+    }
     paths.push_back(path);
   }
   const std::set<std::string> unique(paths.begin(), paths.end());
