@@ -20,8 +20,8 @@ void fieldsJson(nlohmann::ordered_json& j, const Table& table, const S& s, Custo
       const auto& value = s.*entry.member;
       if constexpr (std::is_same_v<K, sensors::Number> || std::is_same_v<K, sensors::Duration> ||
                     std::is_same_v<K, sensors::Length> || std::is_same_v<K, sensors::Rate> ||
-                    std::is_same_v<K, sensors::Integer> || std::is_same_v<K, sensors::Flag> ||
-                    std::is_same_v<K, sensors::Text>) {
+                    std::is_same_v<K, sensors::Integer> || std::is_same_v<K, sensors::IntegerIn> ||
+                    std::is_same_v<K, sensors::Flag> || std::is_same_v<K, sensors::Text>) {
         j[entry.info.json] = value;
       } else if constexpr (std::is_same_v<K, sensors::OptionalDuration>) {
         static_assert(!sizeof(K), "an optional value has no JSON form: resolve it first");

@@ -6,6 +6,7 @@
 #include <iterator>
 
 #include "FieldDoc.h"
+#include "RunFields.h"
 #include "tofsim/sensors/SensorFields.h"
 
 namespace tofsim::config {
@@ -96,30 +97,9 @@ const ConfigKey kRunConfigKeys[] = {
      "indirect light (instant radiosity: VPLs), below"},
     {"render.reference", "mapping", "", "defaults", "-",
      "the CPU path tracer's settings (`renderer: reference`), below"},
-    {"render.indirect.enabled", "bool", "", "true", "-",
-     "render indirect light"},
-    {"render.indirect.rsm_resolution", "int", "in [1, 4096]", "32", "pixel",
-     "reflective shadow map side; VPLs = its square per light view (one view for spots up to 60° half angle, six cube faces otherwise; texels that see no lit surface make none); at most 4,194,304 VPLs"},
-    {"render.indirect.ism_resolution", "int", "in [4, 4096]", "32", "pixel",
-     "side of each VPL's paraboloid depth map"},
-    {"render.indirect.points_per_vpl", "int", "in [1, 2^24]", "1000", "-",
-     "ISM points splatted per VPL"},
-    {"render.indirect.ism_pull_push", "bool", "", "true", "-",
-     "fill ISM holes by pull-push"},
-    {"render.indirect.visibility", "string", "", "ism", "-",
-     "VPL visibility: `ism` (imperfect shadow maps) or `exact`"},
-    {"render.indirect.geometry_clamp", "number", "", "100", "1/m^2",
-     "upper bound of cos cos / d^2; <= 0 disables clamping"},
-    {"render.indirect.vpl_brdf_clamp", "number", "", "0", "1/sr",
-     "`materials: gltf`: upper bound of each channel of a VPL's BRDF value toward the point it lights (and of its BRDF weight where a later bounce continues its path): bounds the spikes of smooth VPLs, at the cost of the energy above it (README.md, \"Materials\", measured bias); <= 0 disables clamping"},
-    {"render.indirect.vpl_footprint", "bool", "", "true", "-",
-     "spread each VPL's light over the path variation across its RSM texel's patch (no temporal banding from few VPLs); only with `pixel_footprint: true`"},
-    {"render.indirect.bounces", "int", "in [1, 8]", "1", "-",
-     "indirect bounces: 1 = the RSM's VPLs only; k adds VPLs of bounces 2..k, each traced (Embree) from the VPLs of the bounce before, in a cosine-weighted direction (with `materials: gltf`, sampled from the VPL's BRDF, README.md \"Materials\"); `indirect` holds all bounces. Compare with `reference.bounces: k + 1`"},
-    {"render.indirect.vpls_per_bounce", "int", "in [0, 2^22]", "0", "-",
-     "VPLs traced for each bounce after the first (chosen among the bounce before's in proportion to their power); 0 = as many as the first bounce has; rays that leave the scene make none. The total of all bounces is at most 4,194,304"},
-    {"render.indirect.russian_roulette", "bool", "", "false", "-",
-     "Russian roulette on bounces 2..k: a traced VPL survives with probability q = the largest albedo channel at its hit, its flux divided by q (unbiased), and each bounce after the second traces as many rays as the bounce before kept VPLs; fewer VPLs, more noise. `false`: every later bounce traces `vpls_per_bounce`"},
+};
+// render.indirect.* come from kIndirectFields (RunFields.h), spliced in here.
+const ConfigKey kRunConfigKeysAfterIndirect[] = {
     {"render.reference.bounces", "int", "in [1, 64]", "2", "-",
      "surface interactions per path: 1 direct only, 2 direct + one indirect bounce, n"},
     {"render.reference.samples_per_pixel", "int", "in [1, 2^24]", "64", "-",
@@ -176,7 +156,17 @@ const ConfigKey kSensorEntryKeys[] = {
 // clang-format on
 }  // namespace
 
-std::span<const ConfigKey> runConfigKeys() { return kRunConfigKeys; }
+std::span<const ConfigKey> runConfigKeys() {
+  static const DocRows rows = [] {
+    DocRows r;
+    r.keys.assign(std::begin(kRunConfigKeys), std::end(kRunConfigKeys));
+    addDocRows<capture::IndirectSettings>(r, "render.indirect", kIndirectFields);
+    r.keys.insert(r.keys.end(), std::begin(kRunConfigKeysAfterIndirect),
+                  std::end(kRunConfigKeysAfterIndirect));
+    return r;
+  }();
+  return rows.keys;
+}
 std::span<const ConfigKey> sensorConfigKeys() {
   static const DocRows rows = [] {
     DocRows r;

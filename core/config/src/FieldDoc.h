@@ -23,6 +23,16 @@ struct DocRows {
 };
 
 namespace detail {
+/// An integer bound as the docs write it: 2^k for a power of two from 2^20 on.
+inline std::string boundText(long long v) {
+  if (v >= (1LL << 20) && (v & (v - 1)) == 0) {
+    int k = 0;
+    while ((1LL << k) < v) ++k;
+    return "2^" + std::to_string(k);
+  }
+  return std::to_string(v);
+}
+
 struct KindDoc {
   const char* type;
   std::string range;
@@ -41,6 +51,8 @@ KindDoc kindDoc(const K& kind) {
     return {"rate", rangeText(kind.range), "1/s"};
   } else if constexpr (std::is_same_v<K, sensors::Integer>) {
     return {"int", ">= " + std::to_string(kind.atLeast), "-"};
+  } else if constexpr (std::is_same_v<K, sensors::IntegerIn>) {
+    return {"int", "in [" + boundText(kind.min) + ", " + boundText(kind.max) + "]", "-"};
   } else if constexpr (std::is_same_v<K, sensors::Flag>) {
     return {"bool", "", "-"};
   } else if constexpr (std::is_same_v<K, sensors::OptionalDuration>) {
@@ -57,7 +69,8 @@ std::string defaultText(const K& kind, const T& value) {
     return value ? "true" : "false";
   } else if constexpr (std::is_same_v<K, sensors::Text>) {
     return value;
-  } else if constexpr (std::is_same_v<K, sensors::Integer>) {
+  } else if constexpr (std::is_same_v<K, sensors::Integer> ||
+                       std::is_same_v<K, sensors::IntegerIn>) {
     return std::to_string(value);
   } else if constexpr (std::is_same_v<K, sensors::OptionalDuration>) {
     return value ? durationText(*value) : "unset";

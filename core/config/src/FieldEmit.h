@@ -19,7 +19,8 @@ void emitValue(YAML::Node& n, const char* key, const K& kind, const sensors::Inf
                const T& value) {
   if constexpr (std::is_same_v<K, sensors::OptionalDuration>) {
     if (value) n[key] = durationText(*value);
-  } else if constexpr (std::is_same_v<K, sensors::Flag> || std::is_same_v<K, sensors::Text>) {
+  } else if constexpr (std::is_same_v<K, sensors::Flag> || std::is_same_v<K, sensors::Text> ||
+                       std::is_same_v<K, sensors::IntegerIn>) {
     n[key] = value;
   } else if constexpr (std::is_same_v<K, sensors::Number> || std::is_same_v<K, sensors::Rate> ||
                        std::is_same_v<K, sensors::Duration> || std::is_same_v<K, sensors::Length> ||

@@ -56,6 +56,13 @@ void parseValue(const ConfigNode& n, const char* key, const K& kind, T& value) {
     if (kind.atLeast > 1 && v < kind.atLeast) {
       n.failKey(key, "must be >= " + std::to_string(kind.atLeast));
     }
+  } else if constexpr (std::is_same_v<K, sensors::IntegerIn>) {
+    const long long v = n.getInt(key, value);
+    if (v < kind.min || v > kind.max) {
+      n.failKey(key, "must be in [" + std::to_string(kind.min) + ", " + std::to_string(kind.max) +
+                         "] (got " + std::to_string(v) + ")");
+    }
+    value = static_cast<T>(v);
   } else if constexpr (std::is_same_v<K, sensors::Flag>) {
     value = n.getBool(key, value);
   } else if constexpr (std::is_same_v<K, sensors::Text>) {

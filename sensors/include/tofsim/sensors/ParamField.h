@@ -53,6 +53,11 @@ struct Integer {
   long long max = 2147483647;
   long long atLeast = 1;
 };
+/// An integer in [min, max] ("must be in [min, max]"): the run config's form.
+struct IntegerIn {
+  long long min;
+  long long max;
+};
 struct Flag {};              ///< bool
 struct Text {};              ///< std::string
 struct OptionalDuration {};  ///< std::optional<double> seconds; unset = from the render
