@@ -24,21 +24,24 @@ class RunConfigFieldsTest : public test::TempDirTest {
   }
 };
 
-TEST_F(RunConfigFieldsTest, IndirectDocumentedDefaultsReadBackAsTheStructDefaults) {
-  const std::string prefix = "render.indirect.";
+TEST_F(RunConfigFieldsTest, TableDocumentedDefaultsReadBackAsTheStructDefaults) {
   const std::string defaults = effective("");
   int checked = 0;
-  for (const ConfigKey& key : runConfigKeys()) {
-    const std::string path = key.path;
-    if (path.rfind(prefix, 0) != 0) continue;
-    const std::string name = path.substr(prefix.size());
-    SCOPED_TRACE(path + ": " + key.defaultValue);
-    EXPECT_EQ(effective("render:\n  indirect:\n    " + name + ": " + key.defaultValue + "\n"),
-              defaults)
-        << "the documented default of `" << path << "` is not the struct's";
-    ++checked;
+  for (const std::string section : {"indirect", "reference"}) {
+    const std::string prefix = "render." + section + ".";
+    for (const ConfigKey& key : runConfigKeys()) {
+      const std::string path = key.path;
+      if (path.rfind(prefix, 0) != 0) continue;
+      const std::string name = path.substr(prefix.size());
+      SCOPED_TRACE(path + ": " + key.defaultValue);
+      EXPECT_EQ(
+          effective("render:\n  " + section + ":\n    " + name + ": " + key.defaultValue + "\n"),
+          defaults)
+          << "the documented default of `" << path << "` is not the struct's";
+      ++checked;
+    }
   }
-  EXPECT_EQ(checked, 12);
+  EXPECT_EQ(checked, 12 + 5);
 }
 
 }  // namespace

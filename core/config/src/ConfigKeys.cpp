@@ -98,19 +98,9 @@ const ConfigKey kRunConfigKeys[] = {
     {"render.reference", "mapping", "", "defaults", "-",
      "the CPU path tracer's settings (`renderer: reference`), below"},
 };
-// render.indirect.* come from kIndirectFields (RunFields.h), spliced in here.
-const ConfigKey kRunConfigKeysAfterIndirect[] = {
-    {"render.reference.bounces", "int", "in [1, 64]", "2", "-",
-     "surface interactions per path: 1 direct only, 2 direct + one indirect bounce, n"},
-    {"render.reference.samples_per_pixel", "int", "in [1, 2^24]", "64", "-",
-     "paths per pixel (with `pixel_filter: box`, also the direct term's sub-pixel samples)"},
-    {"render.reference.threads", "int", "in [0, 4096]", "0", "-",
-     "worker threads, 0 = all hardware threads"},
-    {"render.reference.pixel_filter", "string", "", "box", "-",
-     "`box`: a pixel integrates its area (stratified, jittered sub-pixel points, one per path); "
-     "`point`: one ray through the pixel centre, the G-buffer's view (closed-form tests)"},
-    {"render.reference.sampling", "string", "", "brdf", "-",
-     "continuation at glTF surfaces (`render.materials: gltf`): `brdf` draws from a mixture of the cosine lobe and GGX visible normals weighted by the mixture's pdf (one-sample MIS); `cosine`: cosine sampling weighted by pi f (noisier on glossy surfaces; the bytes of before). Lambertian surfaces are cosine-sampled either way"},
+// render.indirect.* and render.reference.* come from their tables (RunFields.h),
+// spliced in here.
+const ConfigKey kRunConfigKeysAfterRender[] = {
     {"output.directory", "string", "", "out", "-",
      "output folder (`-o` overrides)"},
     {"output.transient", "bool", "", "true", "-",
@@ -161,8 +151,9 @@ std::span<const ConfigKey> runConfigKeys() {
     DocRows r;
     r.keys.assign(std::begin(kRunConfigKeys), std::end(kRunConfigKeys));
     addDocRows<capture::IndirectSettings>(r, "render.indirect", kIndirectFields);
-    r.keys.insert(r.keys.end(), std::begin(kRunConfigKeysAfterIndirect),
-                  std::end(kRunConfigKeysAfterIndirect));
+    addDocRows<ReferenceConfig>(r, "render.reference", kReferenceFields);
+    r.keys.insert(r.keys.end(), std::begin(kRunConfigKeysAfterRender),
+                  std::end(kRunConfigKeysAfterRender));
     return r;
   }();
   return rows.keys;

@@ -69,12 +69,7 @@ YAML::Node renderNode(const RunConfig& config) {
   emitFields(i, kIndirectFields, r.indirect);
   n["indirect"] = i;
   YAML::Node ref;
-  ref["bounces"] = config.reference.bounces;
-  ref["samples_per_pixel"] = config.reference.samples_per_pixel;
-  ref["threads"] = config.reference.threads;
-  ref["pixel_filter"] =
-      config.reference.pixel_filter == ReferencePixelFilter::Box ? "box" : "point";
-  ref["sampling"] = config.reference.sampling == ReferenceSampling::Brdf ? "brdf" : "cosine";
+  emitFields(ref, kReferenceFields, config.reference);
   n["reference"] = ref;
   return n;
 }

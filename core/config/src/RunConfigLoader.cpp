@@ -177,23 +177,7 @@ void parseRender(const ConfigNode& node, RunConfig& out) {
   }
   if (const auto indirect = node.optionalChild("indirect")) parseIndirect(*indirect, r.indirect);
   if (const auto reference = node.optionalChild("reference")) {
-    ReferenceConfig& ref = out.reference;
-    ref.bounces = static_cast<int32_t>(intInRange(*reference, "bounces", ref.bounces, 1, 64));
-    ref.samples_per_pixel = static_cast<int32_t>(
-        intInRange(*reference, "samples_per_pixel", ref.samples_per_pixel, 1, 1 << 24));
-    ref.threads = static_cast<int32_t>(intInRange(*reference, "threads", ref.threads, 0, 4096));
-    const std::string filter = reference->getString("pixel_filter", "box");
-    if (filter == "box" || filter == "point") {
-      ref.pixel_filter = filter == "box" ? ReferencePixelFilter::Box : ReferencePixelFilter::Point;
-    } else {
-      reference->failKey("pixel_filter", "must be box or point (got '" + filter + "')");
-    }
-    const std::string sampling = reference->getString("sampling", "brdf");
-    if (sampling == "brdf" || sampling == "cosine") {
-      ref.sampling = sampling == "brdf" ? ReferenceSampling::Brdf : ReferenceSampling::Cosine;
-    } else {
-      reference->failKey("sampling", "must be brdf or cosine (got '" + sampling + "')");
-    }
+    parseFields(*reference, kReferenceFields, out.reference);
   }
 }
 

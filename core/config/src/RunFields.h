@@ -2,7 +2,7 @@
 // Private to the config module: the run config's parameter tables, in the
 // vocabulary of the sensor tables (sensors/ParamField.h), visited by the same
 // parse, emit and doc functions (Field*.h). Defaults are the structs'
-// initialisers. So far `render.indirect`; the other sections are still
+// initialisers. So far `render.indirect` and `render.reference`; the other sections are still
 // hand-written in RunConfigLoader.cpp and EffectiveConfig.cpp because their
 // defaults are literals in the parser, not struct initialisers, and their keys
 // mix vectors, angles and cross-field checks.
@@ -11,6 +11,7 @@
 #include <tuple>
 
 #include "tofsim/capture/RenderSettings.h"
+#include "tofsim/config/RunConfig.h"
 #include "tofsim/sensors/ParamField.h"
 
 namespace tofsim::config {
@@ -52,6 +53,25 @@ inline constexpr auto kIndirectFields = std::tuple{
           {.doc = "VPLs traced for each bounce after the first (chosen among the bounce before's in proportion to their power); 0 = as many as the first bounce has; rays that leave the scene make none. The total of all bounces is at most 4,194,304"}},
     Field{"russian_roulette", &capture::IndirectSettings::russian_roulette, Flag{},
           {.doc = "Russian roulette on bounces 2..k: a traced VPL survives with probability q = the largest albedo channel at its hit, its flux divided by q (unbiased), and each bounce after the second traces as many rays as the bounce before kept VPLs; fewer VPLs, more noise. `false`: every later bounce traces `vpls_per_bounce`"}},
+};
+
+inline constexpr std::array<Name<ReferencePixelFilter>, 2> kPixelFilterNames{
+    {{"box", ReferencePixelFilter::Box}, {"point", ReferencePixelFilter::Point}}};
+inline constexpr std::array<Name<ReferenceSampling>, 2> kReferenceSamplingNames{
+    {{"brdf", ReferenceSampling::Brdf}, {"cosine", ReferenceSampling::Cosine}}};
+
+inline constexpr auto kReferenceFields = std::tuple{
+    Field{"bounces", &ReferenceConfig::bounces, IntegerIn{1, 64},
+          {.doc = "surface interactions per path: 1 direct only, 2 direct + one indirect bounce, n"}},
+    Field{"samples_per_pixel", &ReferenceConfig::samples_per_pixel, IntegerIn{1, 1 << 24},
+          {.doc = "paths per pixel (with `pixel_filter: box`, also the direct term's sub-pixel samples)"}},
+    Field{"threads", &ReferenceConfig::threads, IntegerIn{0, 4096},
+          {.doc = "worker threads, 0 = all hardware threads"}},
+    Field{"pixel_filter", &ReferenceConfig::pixel_filter, Choice<ReferencePixelFilter>{kPixelFilterNames},
+          {.doc = "`box`: a pixel integrates its area (stratified, jittered sub-pixel points, one per path); "
+                  "`point`: one ray through the pixel centre, the G-buffer's view (closed-form tests)"}},
+    Field{"sampling", &ReferenceConfig::sampling, Choice<ReferenceSampling>{kReferenceSamplingNames},
+          {.doc = "continuation at glTF surfaces (`render.materials: gltf`): `brdf` draws from a mixture of the cosine lobe and GGX visible normals weighted by the mixture's pdf (one-sample MIS); `cosine`: cosine sampling weighted by pi f (noisier on glossy surfaces; the bytes of before). Lambertian surfaces are cosine-sampled either way"}},
 };
 // clang-format on
 
