@@ -15,7 +15,8 @@
 
 namespace tofsim::config {
 
-/// Owns the text of generated rows (ConfigKey holds const char*).
+/// Owns the text of generated rows (ConfigKey holds const char*). A deque:
+/// its strings never move as rows are added, so the pointers stay valid.
 struct DocRows {
   std::deque<std::string> text;
   std::vector<ConfigKey> keys;

@@ -2,7 +2,6 @@
 // units parseSensors reads.
 #include <yaml-cpp/yaml.h>
 
-#include <cmath>
 #include <string>
 #include <string_view>
 #include <type_traits>

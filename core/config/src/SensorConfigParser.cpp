@@ -9,7 +9,6 @@
 #include "ConfigNode.h"
 #include "FieldParse.h"
 #include "SensorConfigType.h"
-#include "ShortestNumber.h"
 #include "tofsim/config/SensorConfig.h"
 #include "tofsim/config/Units.h"
 #include "tofsim/sensors/SensorFields.h"
