@@ -1,8 +1,11 @@
 #include "SensorParametersJson.h"
 
+#include <string_view>
 #include <type_traits>
 
+#include "FieldJson.h"
 #include "tofsim/sensors/Common.h"
+#include "tofsim/sensors/SensorFields.h"
 
 namespace tofsim::pipeline {
 
@@ -12,21 +15,19 @@ using namespace tofsim::sensors;
 
 json commonJson(const SensorCommon& c) {
   json j;
+  // `channel` or `channel_weights`: one choice of two keys, by hand.
   if (c.channel.weights.empty()) {
     j["channel"] = c.channel.index;
   } else {
     j["channel_weights"] = c.channel.weights;
   }
-  const Radiometry& r = c.radiometry;
-  j["source_scale"] = r.source_scale;
-  j["etendue_m2sr"] = r.etendue_m2sr;
-  j["optics_transmission"] = r.optics_transmission;
-  j["quantum_efficiency"] = r.quantum_efficiency;
-  j["wavelength_m"] = r.wavelength_m;
-  j["photoelectrons_per_unit"] = r.photoelectronsPerUnit();
+  fieldsJson(j, kRadiometryFields, c.radiometry);
+  j["photoelectrons_per_unit"] = c.radiometry.photoelectronsPerUnit();
   return j;
 }
 
+// The axis resolved against the render, not the config's values (kBinsFields
+// holds "unset" for "from the render"): by hand.
 json binsJson(const InstrumentBins& bins, const TimeAxis& render) {
   const TimeAxis axis = resolveBins(bins, render);
   return {{"bin_width_s", axis.bin_width_s}, {"bin_offset_s", axis.start_s}, {"bins", axis.bins}};
@@ -35,45 +36,29 @@ json binsJson(const InstrumentBins& bins, const TimeAxis& render) {
 // One overload per model: a model without one does not compile (the visit below).
 json modelJson(const StreakParams& p, const TimeAxis& render) {
   json j = binsJson(p.bins, render);
-  j["rows"] = p.rows;
-  j["time_fwhm_s"] = p.time_fwhm_s;
-  j["spatial_fwhm_px"] = p.spatial_fwhm_px;
-  j["shot_noise"] = p.shot_noise;
-  j["read_noise_e"] = p.read_noise_e;
-  j["gain_adu_per_e"] = p.gain_adu_per_e;
-  j["saturation_adu"] = p.saturation_adu;
-  j["colormap"] = p.colormap;
+  fieldsJson(j, kStreakFields, p, [&](std::string_view key) {
+    if (key == "rows") j["rows"] = p.rows;
+  });
   return j;
 }
 
 json modelJson(const SpadParams& p, const TimeAxis& render) {
   json j = binsJson(p.bins, render);
-  j["mode"] = p.mode == SpadMode::Synchronous ? "synchronous" : "free_running";
-  j["cycles"] = p.cycles;
-  j["pulse_fwhm_s"] = p.pulse_fwhm_s;
-  j["jitter_fwhm_s"] = p.jitter_fwhm_s;
-  j["jitter_tail_fraction"] = p.jitter_tail_fraction;
-  j["jitter_tail_s"] = p.jitter_tail_s;
-  j["pde"] = p.pde;
-  j["ambient_rate_per_s"] = p.ambient_rate_per_s;
-  j["dark_count_rate_per_s"] = p.dark_count_rate_per_s;
-  j["dead_time_s"] = p.dead_time_s;
-  j["plot_pixels_xy"] = json::array();
-  for (const auto& [x, y] : p.plot_pixels) j["plot_pixels_xy"].push_back({x, y});
-  j["colormap"] = p.colormap;
+  fieldsJson(j, kSpadFields, p, [&](std::string_view key) {
+    if (key != "plot_pixels") return;
+    j["plot_pixels_xy"] = json::array();
+    for (const auto& [x, y] : p.plot_pixels) j["plot_pixels_xy"].push_back({x, y});
+  });
   return j;
 }
 
 json modelJson(const CwTofParams& p, const TimeAxis& render) {
   json j;
-  j["frequencies_Hz"] = p.frequencies_Hz;
-  j["phase_steps"] = p.phase_steps;
-  j["waveform"] = p.waveform == Waveform::Sine ? "sine" : "square";
-  j["ambient_e"] = p.ambient_e;
-  j["shot_noise"] = p.shot_noise;
-  j["read_noise_e"] = p.read_noise_e;
-  j["max_depth_m"] = p.max_depth_m;
-  j["multipath_by_order"] = p.multipath_by_order;
+  fieldsJson(j, kCwTofFields, p, [&](std::string_view key) {
+    if (key == "frequencies") j["frequencies_Hz"] = p.frequencies_Hz;
+  });
+  // Derived values, then colormap last, as the metadata has always been ordered.
+  j.erase("colormap");
   const double k = render.depthPerSecond_m_per_s();
   j["depth_range_m"] = depthRange_m(p, k);
   json ranges = json::array();

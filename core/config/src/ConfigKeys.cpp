@@ -1,6 +1,13 @@
 // The declared config keys (ConfigKeys.h). The README tables are checked
-// against this file by tests/config/ConfigKeysTest.cpp: change both together.
+// against these rows by tests/config/ConfigKeysTest.cpp: change both together.
+// Sensor parameters are declared in their tables (sensors/SensorFields.h).
 #include "tofsim/config/ConfigKeys.h"
+
+#include <iterator>
+
+#include "FieldDoc.h"
+#include "RunFields.h"
+#include "tofsim/sensors/SensorFields.h"
 
 namespace tofsim::config {
 
@@ -90,41 +97,10 @@ const ConfigKey kRunConfigKeys[] = {
      "indirect light (instant radiosity: VPLs), below"},
     {"render.reference", "mapping", "", "defaults", "-",
      "the CPU path tracer's settings (`renderer: reference`), below"},
-    {"render.indirect.enabled", "bool", "", "true", "-",
-     "render indirect light"},
-    {"render.indirect.rsm_resolution", "int", "in [1, 4096]", "32", "pixel",
-     "reflective shadow map side; VPLs = its square per light view (one view for spots up to 60° half angle, six cube faces otherwise; texels that see no lit surface make none); at most 4,194,304 VPLs"},
-    {"render.indirect.ism_resolution", "int", "in [4, 4096]", "32", "pixel",
-     "side of each VPL's paraboloid depth map"},
-    {"render.indirect.points_per_vpl", "int", "in [1, 2^24]", "1000", "-",
-     "ISM points splatted per VPL"},
-    {"render.indirect.ism_pull_push", "bool", "", "true", "-",
-     "fill ISM holes by pull-push"},
-    {"render.indirect.visibility", "string", "", "ism", "-",
-     "VPL visibility: `ism` (imperfect shadow maps) or `exact`"},
-    {"render.indirect.geometry_clamp", "number", "", "100", "1/m^2",
-     "upper bound of cos cos / d^2; <= 0 disables clamping"},
-    {"render.indirect.vpl_brdf_clamp", "number", "", "0", "1/sr",
-     "`materials: gltf`: upper bound of each channel of a VPL's BRDF value toward the point it lights (and of its BRDF weight where a later bounce continues its path): bounds the spikes of smooth VPLs, at the cost of the energy above it (README.md, \"Materials\", measured bias); <= 0 disables clamping"},
-    {"render.indirect.vpl_footprint", "bool", "", "true", "-",
-     "spread each VPL's light over the path variation across its RSM texel's patch (no temporal banding from few VPLs); only with `pixel_footprint: true`"},
-    {"render.indirect.bounces", "int", "in [1, 8]", "1", "-",
-     "indirect bounces: 1 = the RSM's VPLs only; k adds VPLs of bounces 2..k, each traced (Embree) from the VPLs of the bounce before, in a cosine-weighted direction (with `materials: gltf`, sampled from the VPL's BRDF, README.md \"Materials\"); `indirect` holds all bounces. Compare with `reference.bounces: k + 1`"},
-    {"render.indirect.vpls_per_bounce", "int", "in [0, 2^22]", "0", "-",
-     "VPLs traced for each bounce after the first (chosen among the bounce before's in proportion to their power); 0 = as many as the first bounce has; rays that leave the scene make none. The total of all bounces is at most 4,194,304"},
-    {"render.indirect.russian_roulette", "bool", "", "false", "-",
-     "Russian roulette on bounces 2..k: a traced VPL survives with probability q = the largest albedo channel at its hit, its flux divided by q (unbiased), and each bounce after the second traces as many rays as the bounce before kept VPLs; fewer VPLs, more noise. `false`: every later bounce traces `vpls_per_bounce`"},
-    {"render.reference.bounces", "int", "in [1, 64]", "2", "-",
-     "surface interactions per path: 1 direct only, 2 direct + one indirect bounce, n"},
-    {"render.reference.samples_per_pixel", "int", "in [1, 2^24]", "64", "-",
-     "paths per pixel (with `pixel_filter: box`, also the direct term's sub-pixel samples)"},
-    {"render.reference.threads", "int", "in [0, 4096]", "0", "-",
-     "worker threads, 0 = all hardware threads"},
-    {"render.reference.pixel_filter", "string", "", "box", "-",
-     "`box`: a pixel integrates its area (stratified, jittered sub-pixel points, one per path); "
-     "`point`: one ray through the pixel centre, the G-buffer's view (closed-form tests)"},
-    {"render.reference.sampling", "string", "", "brdf", "-",
-     "continuation at glTF surfaces (`render.materials: gltf`): `brdf` draws from a mixture of the cosine lobe and GGX visible normals weighted by the mixture's pdf (one-sample MIS); `cosine`: cosine sampling weighted by pi f (noisier on glossy surfaces; the bytes of before). Lambertian surfaces are cosine-sampled either way"},
+};
+// render.indirect.* and render.reference.* come from their tables (RunFields.h),
+// spliced in here.
+const ConfigKey kRunConfigKeysAfterRender[] = {
     {"output.directory", "string", "", "out", "-",
      "output folder (`-o` overrides)"},
     {"output.transient", "bool", "", "true", "-",
@@ -155,7 +131,9 @@ const ConfigKey kRunConfigKeys[] = {
     {"output.plot_ranges", "map of [lo, hi]", "lo < hi", "{}", "unit of the picture",
      "fixed colour ranges, so pictures compare across runs: key = the PNG's path without `.png` (`depth`, `steady`, `sensors/<sensor>/<output>`), e.g. `{depth: [0.5, 3], sensors/cwtof/cwtof_mpi_error: [-0.05, 0.05]}`; `steady` maps lo..hi to black..white; a key that names no picture of the run is warned about; a sensor picture's JSON records the range it was drawn with, fixed or automatic (`picture.range`, `sensors/README.md`)"},
 };
-const ConfigKey kSensorConfigKeys[] = {
+// The keys of a sensor entry itself, and the one-of-two channel keys; every
+// other sensor key's row comes from its parameter table (SensorFields.h).
+const ConfigKey kSensorEntryKeys[] = {
     {"common.type", "string", "", "required", "-",
      "`streak`, `spad` or `cwtof`"},
     {"common.name", "string", "", "the type", "-",
@@ -164,85 +142,34 @@ const ConfigKey kSensorConfigKeys[] = {
      "volume channel used when `channel_weights` is absent"},
     {"common.channel_weights", "list of numbers", "", "none", "-",
      "weighted sum of the channels instead (one weight per channel)"},
-    {"common.source_scale", "number", ">= 0", "1", "-",
-     "laser energy per pulse (SPAD, streak) or per exposure (CW-ToF) relative to the render's light"},
-    {"common.etendue", "number", "> 0", "1", "m^2 sr",
-     "pixel area x solid angle of the aperture"},
-    {"common.optics_transmission", "number", "in [0, 1]", "1", "-",
-     "lens and filter transmission"},
-    {"common.quantum_efficiency", "number", "in [0, 1]", "1", "-",
-     "photo-electrons per photon (leave 1 for SPAD, which has `pde`)"},
-    {"common.wavelength", "length", ">= 0", "0", "m",
-     "0: the volume's values already count photons; > 0: energy is converted to photons with lambda / (h c)"},
-    {"bins.bin_width", "duration", "> 0", "the render's", "s",
-     "instrument bin width"},
-    {"bins.bin_offset", "duration", "", "the render's `time.start`", "s",
-     "leading edge of bin 0"},
-    {"bins.bins", "int", ">= 1", "enough to reach the render's end (with the defaults: the render's `time.bins`)", "-",
-     "number of instrument bins"},
-    {"streak.rows", "list of ints", "", "all rows", "pixel",
-     "image rows to record"},
-    {"streak.time_fwhm", "duration", ">= 0", "0", "s",
-     "temporal PSF FWHM (Gaussian)"},
-    {"streak.spatial_fwhm", "number", ">= 0", "0", "pixel",
-     "spatial blur FWHM along x (Gaussian)"},
-    {"streak.shot_noise", "bool", "", "true", "-",
-     "Poisson photo-electron noise"},
-    {"streak.read_noise", "number", ">= 0", "0", "e- RMS",
-     "Gaussian read noise"},
-    {"streak.gain", "number", "> 0", "1", "ADU / e-",
-     "output scale"},
-    {"streak.saturation", "number", "> 0", "65535", "ADU",
-     "clipping level"},
-    {"streak.colormap", "string", "", "inferno", "-",
-     "colormap of the PNGs"},
-    {"spad.mode", "string", "", "synchronous", "-",
-     "`synchronous` (first photon, pile-up) or `free_running`"},
-    {"spad.cycles", "int", ">= 1", "10000", "-",
-     "laser cycles N"},
-    {"spad.pulse_fwhm", "duration", ">= 0", "0", "s",
-     "Gaussian laser pulse FWHM"},
-    {"spad.jitter_fwhm", "duration", ">= 0", "0", "s",
-     "Gaussian timing jitter FWHM"},
-    {"spad.jitter_tail_fraction", "number", "in [0, 1]", "0", "-",
-     "fraction of detections with an exponential delay"},
-    {"spad.jitter_tail", "duration", ">= 0", "0", "s",
-     "time constant of that delay"},
-    {"spad.pde", "number", "in [0, 1]", "0.3", "-",
-     "photon detection efficiency (signal and ambient)"},
-    {"spad.ambient_rate", "rate", ">= 0", "0", "photons / s",
-     "ambient photons reaching the pixel (\"2 MHz\" or 2e6)"},
-    {"spad.dark_count_rate", "rate", ">= 0", "0", "counts / s",
-     "dark counts"},
-    {"spad.dead_time", "duration", ">= 0", "0", "s",
-     "free-running dead time, rounded to TDC bins"},
-    {"spad.plot_pixels", "list of [x, y]", "", "centre pixel", "pixel",
-     "pixels drawn in `spad_histograms`"},
-    {"spad.colormap", "string", "", "turbo", "-",
-     "colormap of the PNGs"},
-    {"cwtof.frequencies", "list of frequencies", "> 0", "[\"20 MHz\"]", "Hz",
-     "modulation frequencies"},
-    {"cwtof.phase_steps", "int", ">= 3", "4", "-",
-     "phase steps N per frequency"},
-    {"cwtof.waveform", "string", "", "sine", "-",
-     "`sine` or `square` (50 % duty)"},
-    {"cwtof.ambient", "number", ">= 0", "0", "e-",
-     "ambient photo-electrons per raw image and pixel"},
-    {"cwtof.shot_noise", "bool", "", "true", "-",
-     "Poisson noise on the raw images"},
-    {"cwtof.read_noise", "number", ">= 0", "0", "e- RMS",
-     "Gaussian read noise per raw image"},
-    {"cwtof.max_depth", "length", ">= 0", "0 (automatic)", "m",
-     "unwrapping search range"},
-    {"cwtof.colormap", "string", "", "turbo", "-",
-     "colormap of the PNGs"},
-    {"cwtof.multipath_by_order", "bool", "", "false", "-",
-     "also the depth error of direct + bounces 1..k against the ground truth for every order k = 0..N (`cwtof_multipath_error_by_order`); needs `output.depth` and a renderer that resolves bounces (see \"Multipath error by bounce order\" above)"},
 };
 // clang-format on
 }  // namespace
 
-std::span<const ConfigKey> runConfigKeys() { return kRunConfigKeys; }
-std::span<const ConfigKey> sensorConfigKeys() { return kSensorConfigKeys; }
+std::span<const ConfigKey> runConfigKeys() {
+  static const DocRows rows = [] {
+    DocRows r;
+    r.keys.assign(std::begin(kRunConfigKeys), std::end(kRunConfigKeys));
+    addDocRows<capture::IndirectSettings>(r, "render.indirect", kIndirectFields);
+    addDocRows<ReferenceConfig>(r, "render.reference", kReferenceFields);
+    r.keys.insert(r.keys.end(), std::begin(kRunConfigKeysAfterRender),
+                  std::end(kRunConfigKeysAfterRender));
+    return r;
+  }();
+  return rows.keys;
+}
+std::span<const ConfigKey> sensorConfigKeys() {
+  static const DocRows rows = [] {
+    DocRows r;
+    r.keys.assign(std::begin(kSensorEntryKeys), std::end(kSensorEntryKeys));
+    addDocRows<sensors::Radiometry>(r, "common", sensors::kRadiometryFields);
+    addDocRows<sensors::InstrumentBins>(r, "bins", sensors::kBinsFields);
+    addDocRows<sensors::StreakParams>(r, "streak", sensors::kStreakFields);
+    addDocRows<sensors::SpadParams>(r, "spad", sensors::kSpadFields);
+    addDocRows<sensors::CwTofParams>(r, "cwtof", sensors::kCwTofFields);
+    return r;
+  }();
+  return rows.keys;
+}
 
 }  // namespace tofsim::config

@@ -3,6 +3,8 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include "FieldEmit.h"
+#include "RunFields.h"
 #include "ShortestNumber.h"
 #include "tofsim/config/RunConfig.h"
 #include "tofsim/config/SensorConfig.h"
@@ -64,26 +66,10 @@ YAML::Node renderNode(const RunConfig& config) {
   n["adaptive_pixel_samples"] = r.adaptive_pixel_samples;
   n["materials"] = r.materials == capture::MaterialModel::Gltf ? "gltf" : "lambertian";
   YAML::Node i;
-  i["enabled"] = r.indirect.enabled;
-  i["rsm_resolution"] = r.indirect.rsm_resolution;
-  i["ism_resolution"] = r.indirect.ism_resolution;
-  i["points_per_vpl"] = r.indirect.points_per_vpl;
-  i["ism_pull_push"] = r.indirect.ism_pull_push;
-  i["visibility"] = r.indirect.visibility == capture::Visibility::Exact ? "exact" : "ism";
-  i["geometry_clamp"] = shortest(r.indirect.geometry_term_clamp_per_m2);
-  i["vpl_brdf_clamp"] = shortest(r.indirect.vpl_brdf_clamp_per_sr);
-  i["vpl_footprint"] = r.indirect.vpl_footprint;
-  i["bounces"] = r.indirect.bounces;
-  i["vpls_per_bounce"] = r.indirect.vpls_per_bounce;
-  i["russian_roulette"] = r.indirect.russian_roulette;
+  emitFields(i, kIndirectFields, r.indirect);
   n["indirect"] = i;
   YAML::Node ref;
-  ref["bounces"] = config.reference.bounces;
-  ref["samples_per_pixel"] = config.reference.samples_per_pixel;
-  ref["threads"] = config.reference.threads;
-  ref["pixel_filter"] =
-      config.reference.pixel_filter == ReferencePixelFilter::Box ? "box" : "point";
-  ref["sampling"] = config.reference.sampling == ReferenceSampling::Brdf ? "brdf" : "cosine";
+  emitFields(ref, kReferenceFields, config.reference);
   n["reference"] = ref;
   return n;
 }

@@ -4,7 +4,9 @@
 #include <variant>
 
 #include "ConfigNode.h"
+#include "FieldParse.h"
 #include "RunConfigYaml.h"
+#include "RunFields.h"
 #include "ShortestNumber.h"
 #include "tofsim/config/RunConfig.h"
 #include "tofsim/config/SensorConfig.h"
@@ -123,29 +125,7 @@ void parseTime(const ConfigNode& node, capture::RenderSettings& r) {
 }
 
 void parseIndirect(const ConfigNode& node, capture::IndirectSettings& s) {
-  s.enabled = node.getBool("enabled", s.enabled);
-  s.rsm_resolution =
-      static_cast<int32_t>(intInRange(node, "rsm_resolution", s.rsm_resolution, 1, 4096));
-  s.ism_resolution =
-      static_cast<int32_t>(intInRange(node, "ism_resolution", s.ism_resolution, 4, 4096));
-  s.points_per_vpl =
-      static_cast<int32_t>(intInRange(node, "points_per_vpl", s.points_per_vpl, 1, 1 << 24));
-  s.ism_pull_push = node.getBool("ism_pull_push", s.ism_pull_push);
-  const std::string vis = node.getString("visibility", "ism");
-  if (vis == "ism") {
-    s.visibility = capture::Visibility::Ism;
-  } else if (vis == "exact") {
-    s.visibility = capture::Visibility::Exact;
-  } else {
-    node.failKey("visibility", "must be ism or exact (got '" + vis + "')");
-  }
-  s.geometry_term_clamp_per_m2 = node.getDouble("geometry_clamp", s.geometry_term_clamp_per_m2);
-  s.vpl_brdf_clamp_per_sr = node.getDouble("vpl_brdf_clamp", s.vpl_brdf_clamp_per_sr);
-  s.vpl_footprint = node.getBool("vpl_footprint", s.vpl_footprint);
-  s.bounces = static_cast<int32_t>(intInRange(node, "bounces", s.bounces, 1, 8));
-  s.vpls_per_bounce =
-      static_cast<int32_t>(intInRange(node, "vpls_per_bounce", s.vpls_per_bounce, 0, 1 << 22));
-  s.russian_roulette = node.getBool("russian_roulette", s.russian_roulette);
+  parseFields(node, kIndirectFields, s);
 }
 
 // render.renderer and render.backend.
@@ -197,23 +177,7 @@ void parseRender(const ConfigNode& node, RunConfig& out) {
   }
   if (const auto indirect = node.optionalChild("indirect")) parseIndirect(*indirect, r.indirect);
   if (const auto reference = node.optionalChild("reference")) {
-    ReferenceConfig& ref = out.reference;
-    ref.bounces = static_cast<int32_t>(intInRange(*reference, "bounces", ref.bounces, 1, 64));
-    ref.samples_per_pixel = static_cast<int32_t>(
-        intInRange(*reference, "samples_per_pixel", ref.samples_per_pixel, 1, 1 << 24));
-    ref.threads = static_cast<int32_t>(intInRange(*reference, "threads", ref.threads, 0, 4096));
-    const std::string filter = reference->getString("pixel_filter", "box");
-    if (filter == "box" || filter == "point") {
-      ref.pixel_filter = filter == "box" ? ReferencePixelFilter::Box : ReferencePixelFilter::Point;
-    } else {
-      reference->failKey("pixel_filter", "must be box or point (got '" + filter + "')");
-    }
-    const std::string sampling = reference->getString("sampling", "brdf");
-    if (sampling == "brdf" || sampling == "cosine") {
-      ref.sampling = sampling == "brdf" ? ReferenceSampling::Brdf : ReferenceSampling::Cosine;
-    } else {
-      reference->failKey("sampling", "must be brdf or cosine (got '" + sampling + "')");
-    }
+    parseFields(*reference, kReferenceFields, out.reference);
   }
 }
 

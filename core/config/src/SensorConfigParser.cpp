@@ -2,48 +2,21 @@
 #include <cstdio>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <variant>
 
 #include "ConfigNode.h"
+#include "FieldParse.h"
 #include "SensorConfigType.h"
-#include "ShortestNumber.h"
 #include "tofsim/config/SensorConfig.h"
 #include "tofsim/config/Units.h"
+#include "tofsim/sensors/SensorFields.h"
 
 namespace tofsim::config {
 
 namespace {
 using namespace tofsim::sensors;
-
-std::string number(double v) { return shortest(v); }
-
-double positive(const ConfigNode& n, const std::string& key, double value) {
-  if (n.has(key) && !(value > 0.0)) n.failKey(key, "must be > 0 (got " + number(value) + ")");
-  return value;
-}
-
-double nonNegative(const ConfigNode& n, const std::string& key, double value) {
-  if (n.has(key) && !(value >= 0.0)) n.failKey(key, "must be >= 0 (got " + number(value) + ")");
-  return value;
-}
-
-double fraction(const ConfigNode& n, const std::string& key, double value) {
-  if (n.has(key) && !(value >= 0.0 && value <= 1.0)) {
-    n.failKey(key, "must be in [0, 1] (got " + number(value) + ")");
-  }
-  return value;
-}
-
-long long positiveInt(const ConfigNode& n, const std::string& key, long long fallback,
-                      long long max = 2147483647) {
-  const long long v = n.getInt(key, fallback);
-  if (n.has(key) && (v < 1 || v > max)) {
-    n.failKey(key, "must be an integer in [1, " + std::to_string(max) + "] (got " +
-                       std::to_string(v) + ")");
-  }
-  return v;
-}
 
 int32_t intElement(const ConfigNode& e) {
   const double v = e.asDouble();
@@ -53,6 +26,7 @@ int32_t intElement(const ConfigNode& e) {
 
 SensorCommon parseCommon(const ConfigNode& n) {
   SensorCommon c;
+  // `channel` or `channel_weights`: one choice of two keys, by hand.
   const long long channel = n.getInt("channel", 0);
   if (channel < 0) n.failKey("channel", "must be >= 0 (got " + std::to_string(channel) + ")");
   c.channel.index = static_cast<int32_t>(channel);
@@ -60,22 +34,13 @@ SensorCommon parseCommon(const ConfigNode& n) {
     for (const ConfigNode& e : w->elements()) c.channel.weights.push_back(e.asDouble());
     if (c.channel.weights.empty()) w->fail("must list one weight per volume channel");
   }
-  Radiometry& r = c.radiometry;
-  r.source_scale = nonNegative(n, "source_scale", n.getDouble("source_scale", r.source_scale));
-  r.etendue_m2sr = positive(n, "etendue", n.getDouble("etendue", r.etendue_m2sr));
-  r.optics_transmission =
-      fraction(n, "optics_transmission", n.getDouble("optics_transmission", r.optics_transmission));
-  r.quantum_efficiency =
-      fraction(n, "quantum_efficiency", n.getDouble("quantum_efficiency", r.quantum_efficiency));
-  r.wavelength_m = nonNegative(n, "wavelength", n.getLength_m("wavelength", r.wavelength_m));
+  parseFields(n, kRadiometryFields, c.radiometry);
   return c;
 }
 
 InstrumentBins parseBins(const ConfigNode& n) {
   InstrumentBins b;
-  b.bin_width_s = positive(n, "bin_width", n.getDuration_s("bin_width", b.bin_width_s));
-  if (n.has("bin_offset")) b.offset_s = n.getDuration_s("bin_offset", 0.0);
-  b.count = static_cast<int32_t>(positiveInt(n, "bins", b.count));
+  parseFields(n, kBinsFields, b);
   return b;
 }
 
@@ -86,20 +51,15 @@ StreakParams SensorConfigType<StreakParams>::parse(const ConfigNode& n) {
   StreakParams p;
   p.common = parseCommon(n);
   p.bins = parseBins(n);
-  if (auto rows = n.optionalChild("rows")) {
-    for (const ConfigNode& e : rows->elements()) {
-      p.rows.push_back(intElement(e));
-      if (p.rows.back() < 0) e.fail("row must be >= 0");
+  parseFields(n, kStreakFields, p, [&](std::string_view key) {
+    if (key != "rows") return;
+    if (auto rows = n.optionalChild("rows")) {  // a list: by hand
+      for (const ConfigNode& e : rows->elements()) {
+        p.rows.push_back(intElement(e));
+        if (p.rows.back() < 0) e.fail("row must be >= 0");
+      }
     }
-  }
-  p.time_fwhm_s = nonNegative(n, "time_fwhm", n.getDuration_s("time_fwhm", p.time_fwhm_s));
-  p.spatial_fwhm_px =
-      nonNegative(n, "spatial_fwhm", n.getDouble("spatial_fwhm", p.spatial_fwhm_px));
-  p.shot_noise = n.getBool("shot_noise", p.shot_noise);
-  p.read_noise_e = nonNegative(n, "read_noise", n.getDouble("read_noise", p.read_noise_e));
-  p.gain_adu_per_e = positive(n, "gain", n.getDouble("gain", p.gain_adu_per_e));
-  p.saturation_adu = positive(n, "saturation", n.getDouble("saturation", p.saturation_adu));
-  p.colormap = n.getString("colormap", p.colormap);
+  });
   return p;
 }
 
@@ -118,34 +78,16 @@ SpadParams SensorConfigType<SpadParams>::parse(const ConfigNode& n) {
   SpadParams p;
   p.common = parseCommon(n);
   p.bins = parseBins(n);
-  const std::string mode = n.getString("mode", "synchronous");
-  if (mode == "synchronous") {
-    p.mode = SpadMode::Synchronous;
-  } else if (mode == "free_running") {
-    p.mode = SpadMode::FreeRunning;
-  } else {
-    n.failKey("mode", "must be synchronous or free_running (got '" + mode + "')");
-  }
-  p.cycles = positiveInt(n, "cycles", p.cycles, 1'000'000'000'000LL);
-  p.pulse_fwhm_s = nonNegative(n, "pulse_fwhm", n.getDuration_s("pulse_fwhm", p.pulse_fwhm_s));
-  p.jitter_fwhm_s = nonNegative(n, "jitter_fwhm", n.getDuration_s("jitter_fwhm", p.jitter_fwhm_s));
-  p.jitter_tail_fraction = fraction(n, "jitter_tail_fraction",
-                                    n.getDouble("jitter_tail_fraction", p.jitter_tail_fraction));
-  p.jitter_tail_s = nonNegative(n, "jitter_tail", n.getDuration_s("jitter_tail", p.jitter_tail_s));
-  p.pde = fraction(n, "pde", n.getDouble("pde", p.pde));
-  p.ambient_rate_per_s =
-      nonNegative(n, "ambient_rate", n.getFrequency_Hz("ambient_rate", p.ambient_rate_per_s));
-  p.dark_count_rate_per_s = nonNegative(
-      n, "dark_count_rate", n.getFrequency_Hz("dark_count_rate", p.dark_count_rate_per_s));
-  p.dead_time_s = nonNegative(n, "dead_time", n.getDuration_s("dead_time", p.dead_time_s));
-  if (auto pixels = n.optionalChild("plot_pixels")) {
-    for (const ConfigNode& e : pixels->elements()) {
-      if (!e.isSequence() || e.yaml().size() != 2) e.fail("expected [x, y]");
-      const std::vector<ConfigNode> xy = e.elements();
-      p.plot_pixels.push_back({intElement(xy[0]), intElement(xy[1])});
+  parseFields(n, kSpadFields, p, [&](std::string_view key) {
+    if (key != "plot_pixels") return;
+    if (auto pixels = n.optionalChild("plot_pixels")) {  // a list of pairs: by hand
+      for (const ConfigNode& e : pixels->elements()) {
+        if (!e.isSequence() || e.yaml().size() != 2) e.fail("expected [x, y]");
+        const std::vector<ConfigNode> xy = e.elements();
+        p.plot_pixels.push_back({intElement(xy[0]), intElement(xy[1])});
+      }
     }
-  }
-  p.colormap = n.getString("colormap", p.colormap);
+  });
   return p;
 }
 
@@ -164,38 +106,26 @@ void SensorConfigType<SpadParams>::checkImage(const ConfigNode& n, const SpadPar
 CwTofParams SensorConfigType<CwTofParams>::parse(const ConfigNode& n) {
   CwTofParams p;
   p.common = parseCommon(n);
-  if (auto freqs = n.optionalChild("frequencies")) {
-    p.frequencies_Hz.clear();
-    const std::vector<ConfigNode> list =
-        freqs->isSequence() ? freqs->elements() : std::vector<ConfigNode>{*freqs};
-    for (const ConfigNode& e : list) {
-      double f = 0.0;
-      try {
-        f = parseFrequency_Hz(e.asString());
-      } catch (const std::invalid_argument& err) {
-        e.fail(err.what());
+  parseFields(n, kCwTofFields, p, [&](std::string_view key) {
+    if (key != "frequencies") return;
+    // A frequency or a list of them, each with its own located error: by hand.
+    if (auto freqs = n.optionalChild("frequencies")) {
+      p.frequencies_Hz.clear();
+      const std::vector<ConfigNode> list =
+          freqs->isSequence() ? freqs->elements() : std::vector<ConfigNode>{*freqs};
+      for (const ConfigNode& e : list) {
+        double f = 0.0;
+        try {
+          f = parseFrequency_Hz(e.asString());
+        } catch (const std::invalid_argument& err) {
+          e.fail(err.what());
+        }
+        if (!(f > 0.0)) e.fail("frequency must be > 0 (got " + e.asString() + ")");
+        p.frequencies_Hz.push_back(f);
       }
-      if (!(f > 0.0)) e.fail("frequency must be > 0 (got " + e.asString() + ")");
-      p.frequencies_Hz.push_back(f);
+      if (p.frequencies_Hz.empty()) freqs->fail("must list at least one frequency");
     }
-    if (p.frequencies_Hz.empty()) freqs->fail("must list at least one frequency");
-  }
-  p.phase_steps = static_cast<int32_t>(positiveInt(n, "phase_steps", p.phase_steps, 1024));
-  if (p.phase_steps < 3) n.failKey("phase_steps", "must be >= 3");
-  const std::string waveform = n.getString("waveform", "sine");
-  if (waveform == "sine") {
-    p.waveform = Waveform::Sine;
-  } else if (waveform == "square") {
-    p.waveform = Waveform::Square;
-  } else {
-    n.failKey("waveform", "must be sine or square (got '" + waveform + "')");
-  }
-  p.ambient_e = nonNegative(n, "ambient", n.getDouble("ambient", p.ambient_e));
-  p.shot_noise = n.getBool("shot_noise", p.shot_noise);
-  p.read_noise_e = nonNegative(n, "read_noise", n.getDouble("read_noise", p.read_noise_e));
-  p.max_depth_m = nonNegative(n, "max_depth", n.getLength_m("max_depth", p.max_depth_m));
-  p.colormap = n.getString("colormap", p.colormap);
-  p.multipath_by_order = n.getBool("multipath_by_order", p.multipath_by_order);
+  });
   return p;
 }
 

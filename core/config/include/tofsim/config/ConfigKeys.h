@@ -2,7 +2,9 @@
 // Every config key, declared once: path, type, range, default, unit and a
 // one-line doc. The key tables of configs/README.md and sensors/README.md are
 // checked against these lists by a test (ConfigKeysTest), as are the keys the
-// effective-config writer emits and the loader accepts.
+// effective-config writer emits and the loader accepts. The rows of sensor
+// parameters and of render.indirect / render.reference are made from their
+// field tables (sensors/SensorFields.h, core/config/src/RunFields.h).
 
 #include <span>
 

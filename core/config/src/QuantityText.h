@@ -1,0 +1,41 @@
+#pragma once
+// Private to the config module: values as a config writes them ("100 ps",
+// "20 MHz"), for the effective config and the key docs, and a Range as the
+// docs and the errors say it ("in [0, 1]", ">= 0").
+
+#include <cmath>
+#include <string>
+#include <utility>
+
+#include "ShortestNumber.h"
+#include "tofsim/sensors/ParamField.h"
+
+namespace tofsim::config {
+
+/// "100 ps": the largest unit giving a magnitude >= 1 that reads back exactly.
+inline std::string durationText(double s) {
+  if (s == 0.0) return "0 s";
+  const std::pair<double, const char*> units[] = {{1.0, "s"},   {1e-3, "ms"},  {1e-6, "us"},
+                                                  {1e-9, "ns"}, {1e-12, "ps"}, {1e-15, "fs"}};
+  for (const auto& [scale, name] : units) {
+    if (std::abs(s) >= scale) return withUnit(s, scale, name, "s");
+  }
+  return withUnit(s, 1e-15, "fs", "s");
+}
+
+inline std::string frequencyText(double hz) {
+  if (hz >= 1e9) return withUnit(hz, 1e9, "GHz", "Hz");
+  if (hz >= 1e6) return withUnit(hz, 1e6, "MHz", "Hz");
+  if (hz >= 1e3) return withUnit(hz, 1e3, "kHz", "Hz");
+  return shortest(hz) + " Hz";
+}
+
+/// "> 0", ">= 0", "in [0, 1]"; "" for any value.
+inline std::string rangeText(const sensors::Range& r) {
+  if (r.any()) return "";
+  const std::string lo = shortest(r.min);
+  if (r.max == sensors::kAnyValue.max) return (r.minExclusive ? "> " : ">= ") + lo;
+  return std::string("in ") + (r.minExclusive ? "(" : "[") + lo + ", " + shortest(r.max) + "]";
+}
+
+}  // namespace tofsim::config

@@ -1,0 +1,119 @@
+#pragma once
+// Every sensor parameter, declared once: config key, member, kind, range,
+// unit, JSON key and doc (ParamField.h). The config parser, the effective-config
+// writer, the key docs (ConfigKeys) and the sensor JSON metadata all visit these
+// tables, in this order; defaults are the structs' initialisers. Adding a
+// parameter: a member with its default in the params struct, one line here, and
+// its use in the model (sensors/README.md, "Adding a parameter").
+
+#include <array>
+#include <tuple>
+
+#include "tofsim/sensors/Common.h"
+#include "tofsim/sensors/CwTof.h"
+#include "tofsim/sensors/ParamField.h"
+#include "tofsim/sensors/Spad.h"
+#include "tofsim/sensors/Streak.h"
+
+namespace tofsim::sensors {
+
+// clang-format off
+/// SensorCommon::radiometry (`channel` / `channel_weights` are one choice of
+/// two keys: hand-written in the config parser, emitter and JSON).
+inline constexpr auto kRadiometryFields = std::tuple{
+    Field{"source_scale", &Radiometry::source_scale, Number{kNonNegative},
+          {.json = "source_scale", .doc = "laser energy per pulse (SPAD, streak) or per exposure (CW-ToF) relative to the render's light"}},
+    Field{"etendue", &Radiometry::etendue_m2sr, Number{kPositive},
+          {.unit = "m^2 sr", .json = "etendue_m2sr", .doc = "pixel area x solid angle of the aperture"}},
+    Field{"optics_transmission", &Radiometry::optics_transmission, Number{kFraction},
+          {.json = "optics_transmission", .doc = "lens and filter transmission"}},
+    Field{"quantum_efficiency", &Radiometry::quantum_efficiency, Number{kFraction},
+          {.json = "quantum_efficiency", .doc = "photo-electrons per photon (leave 1 for SPAD, which has `pde`)"}},
+    Field{"wavelength", &Radiometry::wavelength_m, Length{kNonNegative},
+          {.json = "wavelength_m", .doc = "0: the volume's values already count photons; > 0: energy is converted to photons with lambda / (h c)"}},
+};
+
+/// InstrumentBins of streak and SPAD. The sensor JSON gives the axis resolved
+/// against the render instead (bin_width_s, bin_offset_s, bins), so it does
+/// not visit this table.
+inline constexpr auto kBinsFields = std::tuple{
+    Field{"bin_width", &InstrumentBins::bin_width_s, Duration{kPositive},
+          {.doc = "instrument bin width", .unset = "the render's"}},
+    Field{"bin_offset", &InstrumentBins::offset_s, OptionalDuration{},
+          {.doc = "leading edge of bin 0", .unset = "the render's `time.start`"}},
+    Field{"bins", &InstrumentBins::count, Integer{},
+          {.doc = "number of instrument bins", .unset = "enough to reach the render's end (with the defaults: the render's `time.bins`)"}},
+};
+
+inline constexpr auto kStreakFields = std::tuple{
+    Custom{"rows", "list of ints", "", "all rows", "pixel", "image rows to record"},
+    Field{"time_fwhm", &StreakParams::time_fwhm_s, Duration{kNonNegative},
+          {.json = "time_fwhm_s", .doc = "temporal PSF FWHM (Gaussian)"}},
+    Field{"spatial_fwhm", &StreakParams::spatial_fwhm_px, Number{kNonNegative},
+          {.unit = "pixel", .json = "spatial_fwhm_px", .doc = "spatial blur FWHM along x (Gaussian)"}},
+    Field{"shot_noise", &StreakParams::shot_noise, Flag{},
+          {.json = "shot_noise", .doc = "Poisson photo-electron noise"}},
+    Field{"read_noise", &StreakParams::read_noise_e, Number{kNonNegative},
+          {.unit = "e- RMS", .json = "read_noise_e", .doc = "Gaussian read noise"}},
+    Field{"gain", &StreakParams::gain_adu_per_e, Number{kPositive},
+          {.unit = "ADU / e-", .json = "gain_adu_per_e", .doc = "output scale"}},
+    Field{"saturation", &StreakParams::saturation_adu, Number{kPositive},
+          {.unit = "ADU", .json = "saturation_adu", .doc = "clipping level"}},
+    Field{"colormap", &StreakParams::colormap, Text{},
+          {.json = "colormap", .doc = "colormap of the PNGs"}},
+};
+
+inline constexpr std::array<Name<SpadMode>, 2> kSpadModeNames{
+    {{"synchronous", SpadMode::Synchronous}, {"free_running", SpadMode::FreeRunning}}};
+
+inline constexpr auto kSpadFields = std::tuple{
+    Field{"mode", &SpadParams::mode, Choice<SpadMode>{kSpadModeNames},
+          {.json = "mode", .doc = "`synchronous` (first photon, pile-up) or `free_running`"}},
+    Field{"cycles", &SpadParams::cycles, Integer{.max = 1'000'000'000'000LL},
+          {.json = "cycles", .doc = "laser cycles N"}},
+    Field{"pulse_fwhm", &SpadParams::pulse_fwhm_s, Duration{kNonNegative},
+          {.json = "pulse_fwhm_s", .doc = "Gaussian laser pulse FWHM"}},
+    Field{"jitter_fwhm", &SpadParams::jitter_fwhm_s, Duration{kNonNegative},
+          {.json = "jitter_fwhm_s", .doc = "Gaussian timing jitter FWHM"}},
+    Field{"jitter_tail_fraction", &SpadParams::jitter_tail_fraction, Number{kFraction},
+          {.json = "jitter_tail_fraction", .doc = "fraction of detections with an exponential delay"}},
+    Field{"jitter_tail", &SpadParams::jitter_tail_s, Duration{kNonNegative},
+          {.json = "jitter_tail_s", .doc = "time constant of that delay"}},
+    Field{"pde", &SpadParams::pde, Number{kFraction},
+          {.json = "pde", .doc = "photon detection efficiency (signal and ambient)"}},
+    Field{"ambient_rate", &SpadParams::ambient_rate_per_s, Rate{kNonNegative},
+          {.unit = "photons / s", .json = "ambient_rate_per_s", .doc = "ambient photons reaching the pixel (\"2 MHz\" or 2e6)"}},
+    Field{"dark_count_rate", &SpadParams::dark_count_rate_per_s, Rate{kNonNegative},
+          {.unit = "counts / s", .json = "dark_count_rate_per_s", .doc = "dark counts"}},
+    Field{"dead_time", &SpadParams::dead_time_s, Duration{kNonNegative},
+          {.json = "dead_time_s", .doc = "free-running dead time, rounded to TDC bins"}},
+    Custom{"plot_pixels", "list of [x, y]", "", "centre pixel", "pixel", "pixels drawn in `spad_histograms`"},
+    Field{"colormap", &SpadParams::colormap, Text{},
+          {.json = "colormap", .doc = "colormap of the PNGs"}},
+};
+
+inline constexpr std::array<Name<Waveform>, 2> kWaveformNames{
+    {{"sine", Waveform::Sine}, {"square", Waveform::Square}}};
+
+inline constexpr auto kCwTofFields = std::tuple{
+    Custom{"frequencies", "list of frequencies", "> 0", "[\"20 MHz\"]", "Hz", "modulation frequencies"},
+    Field{"phase_steps", &CwTofParams::phase_steps, Integer{.max = 1024, .atLeast = 3},
+          {.json = "phase_steps", .doc = "phase steps N per frequency"}},
+    Field{"waveform", &CwTofParams::waveform, Choice<Waveform>{kWaveformNames},
+          {.json = "waveform", .doc = "`sine` or `square` (50 % duty)"}},
+    Field{"ambient", &CwTofParams::ambient_e, Number{kNonNegative},
+          {.unit = "e-", .json = "ambient_e", .doc = "ambient photo-electrons per raw image and pixel"}},
+    Field{"shot_noise", &CwTofParams::shot_noise, Flag{},
+          {.json = "shot_noise", .doc = "Poisson noise on the raw images"}},
+    Field{"read_noise", &CwTofParams::read_noise_e, Number{kNonNegative},
+          {.unit = "e- RMS", .json = "read_noise_e", .doc = "Gaussian read noise per raw image"}},
+    Field{"max_depth", &CwTofParams::max_depth_m, Length{kNonNegative},
+          {.json = "max_depth_m", .doc = "unwrapping search range", .note = "automatic"}},
+    Field{"colormap", &CwTofParams::colormap, Text{},
+          {.json = "colormap", .doc = "colormap of the PNGs"}},
+    Field{"multipath_by_order", &CwTofParams::multipath_by_order, Flag{},
+          {.json = "multipath_by_order", .doc = "also the depth error of direct + bounces 1..k against the ground truth for every order k = 0..N (`cwtof_multipath_error_by_order`); needs `output.depth` and a renderer that resolves bounces (see \"Multipath error by bounce order\" above)"}},
+};
+// clang-format on
+
+}  // namespace tofsim::sensors

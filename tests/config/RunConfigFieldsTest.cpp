@@ -1,0 +1,48 @@
+// The run config's parameter tables (core/config/src/RunFields.h) against the
+// structs: the documented default of every table key, written into a config,
+// must give the same effective config as leaving the key out.
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <string>
+
+#include "support/TempDir.h"
+#include "tofsim/config/ConfigKeys.h"
+#include "tofsim/config/RunConfig.h"
+
+namespace tofsim::config {
+namespace {
+
+class RunConfigFieldsTest : public test::TempDirTest {
+ protected:
+  std::string effective(const std::string& extra) {
+    std::ofstream(dir_ / "scene.gltf") << "{}";
+    std::ofstream(dir_ / "c.yaml") << "scene: scene.gltf\ncamera: {}\nlight: {}\ntime: {}\n"
+                                   << extra;
+    return effectiveConfigYaml(loadRunConfig(dir_ / "c.yaml"));
+  }
+};
+
+TEST_F(RunConfigFieldsTest, TableDocumentedDefaultsReadBackAsTheStructDefaults) {
+  const std::string defaults = effective("");
+  int checked = 0;
+  for (const std::string section : {"indirect", "reference"}) {
+    const std::string prefix = "render." + section + ".";
+    for (const ConfigKey& key : runConfigKeys()) {
+      const std::string path = key.path;
+      if (path.rfind(prefix, 0) != 0) continue;
+      const std::string name = path.substr(prefix.size());
+      SCOPED_TRACE(path + ": " + key.defaultValue);
+      EXPECT_EQ(
+          effective("render:\n  " + section + ":\n    " + name + ": " + key.defaultValue + "\n"),
+          defaults)
+          << "the documented default of `" << path << "` is not the struct's";
+      ++checked;
+    }
+  }
+  EXPECT_EQ(checked, 12 + 5);
+}
+
+}  // namespace
+}  // namespace tofsim::config
