@@ -25,11 +25,6 @@ namespace {
 constexpr int kChannels = capture::kChannels;
 constexpr std::size_t kTilePixels = 16;  // pixels per task: their histograms stay in L2
 
-int resolveThreads(int requested) {
-  if (requested > 0) return requested;
-  return static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-}
-
 }  // namespace
 
 CpuBackend::CpuBackend(const CpuBackendOptions& options)

@@ -132,9 +132,7 @@ std::vector<Vpl> traceBounce(const reference::RayScene& scene, const std::vector
   const auto eta = static_cast<float>(indexOfRefraction);
   std::vector<std::optional<Vpl>> slots(count);
   const std::size_t tasks = (count + kRaysPerTask - 1) / kRaysPerTask;
-  const int threads = tracing.threads > 0
-                          ? tracing.threads
-                          : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  const int threads = resolveThreads(tracing.threads);
   parallelFor(tasks, threads, [&](std::size_t task) {
     const std::size_t end = std::min(count, (task + 1) * kRaysPerTask);
     for (std::size_t j = task * kRaysPerTask; j < end; ++j) {

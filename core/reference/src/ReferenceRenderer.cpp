@@ -1,10 +1,8 @@
 #include "tofsim/reference/ReferenceRenderer.h"
 
 #include <algorithm>
-#include <atomic>
 #include <chrono>
 #include <string>
-#include <thread>
 #include <vector>
 
 #include "PathIntegrator.h"
@@ -12,6 +10,7 @@
 #include "tofsim/ir/SegmentStream.h"
 #include "tofsim/reference/RayScene.h"
 #include "tofsim/util/Error.h"
+#include "tofsim/util/ParallelFor.h"
 
 namespace tofsim::reference {
 
@@ -41,11 +40,6 @@ void validate(const ReferenceSettings& s, const RenderJob& job) {
   if (axis.bins < 1 || !(axis.bin_width_s > 0.0)) {
     throw InputError("time axis needs bins >= 1 and bin_width > 0");
   }
-}
-
-int32_t threadCount(int32_t requested) {
-  if (requested > 0) return requested;
-  return static_cast<int32_t>(std::max(1u, std::thread::hardware_concurrency()));
 }
 
 // Rows per segment: as many as the memory budget allows for the two float
@@ -84,7 +78,7 @@ RenderResult ReferenceRenderer::render(const RenderJob& job, SegmentSink& sink,
   validate(settings_, job);
   const Camera& camera = job.camera();
   const TimeAxis& axis = job.settings.time;
-  const int32_t threads = threadCount(settings_.threads);
+  const int32_t threads = resolveThreads(settings_.threads);
   const int32_t bounces = job.settings.indirect.enabled ? settings_.bounces : 1;
 
   const RayScene rayScene(*job.scene, threads);
@@ -107,28 +101,23 @@ RenderResult ReferenceRenderer::render(const RenderJob& job, SegmentSink& sink,
         // Segments are whole rows: pixelsPerSegment is a multiple of the width.
         const int32_t firstRow = static_cast<int32_t>(segment.pixels.first / camera.width);
         const int32_t rowCount = static_cast<int32_t>(segment.pixels.count / camera.width);
-        // Workers take rows dynamically; each pixel writes only its own slots and
-        // draws from its own generator, so the bytes do not depend on scheduling.
-        std::atomic<int32_t> nextRow{0};
-        const auto work = [&] {
+        // Workers take rows dynamically (the shared pool, which hands a
+        // worker's exception to this thread); each pixel writes only its own
+        // slots and draws from its own generator, so the bytes do not depend
+        // on scheduling.
+        parallelFor(static_cast<std::size_t>(rowCount), threads, [&](std::size_t row) {
+          const auto r = static_cast<int32_t>(row);
           std::vector<double> scratch;
-          for (int32_t r = nextRow++; r < rowCount; r = nextRow++) {
-            for (int32_t x = 0; x < camera.width; ++x) {
-              const std::size_t local = static_cast<std::size_t>(r) * camera.width + x;
-              PixelOutput out;
-              out.direct = segment.components[0] + local * pixelFloats;
-              out.indirect = segment.components[1] + local * pixelFloats;
-              integrator.renderPixel(x, firstRow + r, out, scratch);
-              result.depth_m.at(firstRow + r, x, 0) = out.depth_m;
-              outside[local] = out.offAxis;
-            }
+          for (int32_t x = 0; x < camera.width; ++x) {
+            const std::size_t local = static_cast<std::size_t>(r) * camera.width + x;
+            PixelOutput out;
+            out.direct = segment.components[0] + local * pixelFloats;
+            out.indirect = segment.components[1] + local * pixelFloats;
+            integrator.renderPixel(x, firstRow + r, out, scratch);
+            result.depth_m.at(firstRow + r, x, 0) = out.depth_m;
+            outside[local] = out.offAxis;
           }
-        };
-        std::vector<std::thread> pool;
-        const int32_t helpers = std::min(threads, rowCount) - 1;
-        for (int32_t t = 0; t < helpers; ++t) pool.emplace_back(work);
-        work();
-        for (std::thread& t : pool) t.join();
+        });
         // Summed in pixel order, so the total is independent of the thread count.
         for (std::size_t i = 0; i < segment.pixels.count; ++i) result.offAxis += outside[i];
         if (progress) progress(segment.index + 1, plan.segmentCount, "segments");

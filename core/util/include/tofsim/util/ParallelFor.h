@@ -5,7 +5,8 @@
 // pixels, each the only writer of its pixels' bins, and the later bounces'
 // tasks fixed runs of rays, each writing its own children's slots, which
 // makes the bytes independent of the thread count and of the schedule.
-// Header-only: a user links Threads::Threads.
+// Header-only: a user links Threads::Threads. The one thread pool of tofsim:
+// the CPU backend, the later bounces, the reference and the sensors use it.
 
 #include <algorithm>
 #include <atomic>
@@ -16,6 +17,12 @@
 #include <vector>
 
 namespace tofsim {
+
+/// A thread count as configs give it: 0 (or less) = every core.
+inline int resolveThreads(int requested) {
+  if (requested > 0) return requested;
+  return static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+}
 
 template <typename Task>
 void parallelFor(std::size_t tasks, int threads, const Task& task) {
@@ -41,6 +48,16 @@ void parallelFor(std::size_t tasks, int threads, const Task& task) {
   work();
   for (std::thread& t : pool) t.join();
   if (error) std::rethrow_exception(error);
+}
+
+/// task(begin, end) over [0, count) cut into fixed blocks of `block` items
+/// (the last one shorter), on parallelFor: the blocks do not depend on the
+/// thread count.
+template <typename Task>
+void parallelForBlocks(std::size_t count, std::size_t block, int threads, const Task& task) {
+  const std::size_t blocks = (count + block - 1) / block;
+  parallelFor(blocks, threads,
+              [&](std::size_t b) { task(b * block, std::min(count, (b + 1) * block)); });
 }
 
 }  // namespace tofsim
