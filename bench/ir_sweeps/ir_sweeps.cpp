@@ -8,13 +8,15 @@
 #include <chrono>
 #include <cstdio>
 #include <cstring>
+#include <memory>
 #include <string>
 #include <vector>
 
+#include "support/TestJobs.h"  // the Cornell box job shared with the tests
 #include "tofsim/capture/SegmentSink.h"
 #include "tofsim/gl/Context.h"
-#include "tofsim/render/TransientRenderer.h"
-#include "support/TestJobs.h"  // the Cornell box job shared with the tests
+#include "tofsim/ir/IrRenderer.h"
+#include "tofsim/render/GlBackend.h"
 #include "tofsim/scene/GltfLoader.h"
 #include "tofsim/volume/PhysicalConstants.h"
 
@@ -51,13 +53,14 @@ int main(int argc, char** argv) {
   const bool quick = argc > 2 && std::strcmp(argv[2], "--quick") == 0;
   const scene::Scene scene = scene::loadGltf(argv[1]);
   gl::Context context;
-  render::TransientRenderer renderer(context);
+  const ir::IrRenderer renderer(std::make_unique<render::GlBackend>(context));
   const int resolution = quick ? 64 : 128;
   // Base of the paper's Fig. 5: 128^2 RSM, 128^2 ISM, 2000 points per VPL;
   // Fig. 4 varies the duration at 128^2 RSM, 64^2 ISM, 4000 points.
   const int baseRsm = quick ? 32 : 128, baseIsm = quick ? 32 : 128, basePoints = quick ? 500 : 2000;
   std::vector<Case> cases;
-  for (int bins : {125, 250, 500, 1000}) cases.push_back({"duration", bins, baseRsm, quick ? 32 : 64, quick ? 500 : 4000});
+  for (int bins : {125, 250, 500, 1000})
+    cases.push_back({"duration", bins, baseRsm, quick ? 32 : 64, quick ? 500 : 4000});
   for (int rsm : {16, 32, 64, 128}) {
     if (!quick || rsm <= 32) cases.push_back({"rsm", 250, rsm, baseIsm, basePoints});
   }
@@ -65,12 +68,14 @@ int main(int argc, char** argv) {
     if (!quick || ism <= 64) cases.push_back({"ism", 250, baseRsm, ism, basePoints});
   }
   for (int points : {500, 1000, 2000, 4000, 8000}) {
-    if (!quick || points <= 1000) cases.push_back({"points_per_vpl", 250, baseRsm, baseIsm, points});
+    if (!quick || points <= 1000)
+      cases.push_back({"points_per_vpl", 250, baseRsm, baseIsm, points});
   }
   std::printf("device: %s\nimage: %dx%d, Cornell box, spot light at the camera\n\n",
               context.description().c_str(), resolution, resolution);
-  std::printf("| sweep | bins | RSM | ISM | points/VPL | VPLs | batches | segments | seconds | "
-              "VPL-pixel gathers/s | peak GPU MiB |\n");
+  std::printf(
+      "| sweep | bins | RSM | ISM | points/VPL | VPLs | batches | segments | seconds | "
+      "VPL-pixel gathers/s | peak GPU MiB |\n");
   std::printf("|---|---|---|---|---|---|---|---|---|---|---|\n");
   for (const Case& c : cases) {
     capture::RenderJob job = baseJob(scene, resolution, c.bins);
@@ -80,9 +85,9 @@ int main(int argc, char** argv) {
     CountingSink sink;
     const capture::RenderResult r = renderer.render(job, sink);
     const double gathers = static_cast<double>(r.vpls) * resolution * resolution;
-    std::printf("| %s | %d | %d | %d | %d | %zu | %zu | %zu | %.2f | %.3g | %.1f |\n", c.sweep.c_str(),
-                c.bins, c.rsm, c.ism, c.points, r.vpls, r.vplBatches, r.segments, r.seconds,
-                gathers / r.seconds, r.peakGpuBytes / 1048576.0);
+    std::printf("| %s | %d | %d | %d | %d | %zu | %zu | %zu | %.2f | %.3g | %.1f |\n",
+                c.sweep.c_str(), c.bins, c.rsm, c.ism, c.points, r.vpls, r.vplBatches, r.segments,
+                r.seconds, gathers / r.seconds, r.peakGpuBytes / 1048576.0);
     std::fflush(stdout);
   }
   return 0;

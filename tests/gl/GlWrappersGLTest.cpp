@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cstring>
+#include <memory>
 #include <type_traits>
 #include <vector>
 
@@ -17,7 +18,8 @@
 #include "tofsim/gl/Framebuffer.h"
 #include "tofsim/gl/Program.h"
 #include "tofsim/gl/Texture.h"
-#include "tofsim/render/TransientRenderer.h"
+#include "tofsim/ir/IrRenderer.h"
+#include "tofsim/render/GlBackend.h"
 
 namespace tofsim::gl {
 namespace {
@@ -147,7 +149,7 @@ TEST_F(GlWrappersGLTest, RenderersSetOnlyUniformsTheirShadersDeclare) {
     s.job.settings.indirect.visibility = visibility;
     capture::VolumeCollector out(s.job.camera().width, s.job.camera().height, s.job.settings.time,
                                  3);
-    render::TransientRenderer(test::glTestContext()).render(s.job, out);
+    ir::IrRenderer(std::make_unique<render::GlBackend>(test::glTestContext())).render(s.job, out);
   }
 }
 

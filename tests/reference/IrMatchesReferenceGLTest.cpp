@@ -6,13 +6,15 @@
 #include <gtest/gtest.h>
 
 #include <cstdio>
+#include <memory>
 
 #include "support/GlTestContext.h"
 #include "support/TestJobs.h"
 #include "tofsim/capture/VolumeCollector.h"
 #include "tofsim/compare/VolumeComparison.h"
+#include "tofsim/ir/IrRenderer.h"
 #include "tofsim/reference/ReferenceRenderer.h"
-#include "tofsim/render/TransientRenderer.h"
+#include "tofsim/render/GlBackend.h"
 #include "tofsim/scene/GltfLoader.h"
 #include "tofsim/volume/PhysicalConstants.h"
 
@@ -37,7 +39,7 @@ TEST(IrMatchesReferenceGLTest, CornellBoxSteadyAndTransientAgree) {
   const scene::Scene scene = scene::loadGltf(TOFSIM_SOURCE_DIR "/configs/scenes/cornell_box.gltf");
   const RenderJob job = cornellJob(scene);
   VolumeCollector ir(24, 24, job.settings.time, 3), ref(24, 24, job.settings.time, 3);
-  render::TransientRenderer(test::glTestContext()).render(job, ir);
+  ir::IrRenderer(std::make_unique<render::GlBackend>(test::glTestContext())).render(job, ir);
   reference::ReferenceSettings settings;
   settings.pixel_filter = reference::PixelFilter::Point;  // compares pixel centres
   settings.bounces = 2;
@@ -54,10 +56,11 @@ TEST(IrMatchesReferenceGLTest, CornellBoxSteadyAndTransientAgree) {
 
   const compare::VolumeComparison total = compare::compareVolumes(ir.total(), ref.total());
   const compare::VolumeComparison indirect = compare::compareVolumes(ir.indirect, ref.indirect);
-  std::printf("IR vs reference: total steady L1 %.4f, transient L1 %.4f; indirect steady L1 %.4f, "
-              "transient L1 %.4f\n",
-              total.steadyRelativeL1, total.transientRelativeL1, indirect.steadyRelativeL1,
-              indirect.transientRelativeL1);
+  std::printf(
+      "IR vs reference: total steady L1 %.4f, transient L1 %.4f; indirect steady L1 %.4f, "
+      "transient L1 %.4f\n",
+      total.steadyRelativeL1, total.transientRelativeL1, indirect.steadyRelativeL1,
+      indirect.transientRelativeL1);
   double eIr = 0, eRef = 0;
   for (float v : ir.indirect.values()) eIr += v;
   for (float v : ref.indirect.values()) eRef += v;

@@ -11,12 +11,14 @@
 
 #include <cmath>
 #include <cstdlib>
+#include <memory>
 
 #include "../support/GlTestContext.h"
 #include "RenderReference.h"
 #include "support/ClosedForm.h"
 #include "tofsim/compare/VolumeComparison.h"
-#include "tofsim/render/TransientRenderer.h"
+#include "tofsim/ir/IrRenderer.h"
+#include "tofsim/render/GlBackend.h"
 
 namespace tofsim::reference {
 namespace {
@@ -39,7 +41,7 @@ void expectSameDirectLight(RenderJob job) {
   job.settings.indirect.enabled = false;
   job.settings.pixel_footprint = false;  // compares pixel centres (point pixels)
   VolumeCollector gl(job.camera().width, job.camera().height, job.settings.time, 3);
-  render::TransientRenderer(test::glTestContext()).render(job, gl);
+  ir::IrRenderer(std::make_unique<render::GlBackend>(test::glTestContext())).render(job, gl);
   ReferenceSettings settings;
   settings.pixel_filter = PixelFilter::Point;  // compares pixel centres
   settings.bounces = 1;
