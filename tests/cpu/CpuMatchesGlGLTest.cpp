@@ -97,9 +97,9 @@ void expectSameVpls(const capture::RenderJob& job) {
   glm::vec3 lo, hi;
   viewBounds(job, lo, hi);
   const capture::IndirectSettings& s = job.settings.indirect;
-  const auto gl =
-      render::generateVpls(gpuScene, job.light, s.rsm_resolution, job.settings.index_of_refraction,
-                           lo, hi, job.settings.materials == capture::MaterialModel::Gltf);
+  const auto gl = render::generateVpls(gpuScene, job.light, s.rsm_resolution,
+                                       job.settings.time.index_of_refraction, lo, hi,
+                                       job.settings.materials == capture::MaterialModel::Gltf);
   CpuBackend backend({2, true});
   const test::BackendScene prepared(backend, *job.scene);
   backend.prepareSurfaces(job);

@@ -27,13 +27,13 @@ TEST(ArrivalBoundsTest, PlaneClosedForms) {
   EXPECT_NEAR(b.longest_m, 9.0 + 6.0 * std::sqrt(2.0), 1e-5);
   EXPECT_NEAR(b.longest_s(), b.longest_m / kSpeedOfLight_m_per_s, 1e-18);
 
-  job.settings.camera_unwarp = true;  // the surface -> camera leg is dropped
+  job.settings.time.camera_unwarp = true;  // the surface -> camera leg is dropped
   b = capture::arrivalBounds(job, 1);
   EXPECT_NEAR(b.shortest_m, 1.5, 1e-6);
   EXPECT_NEAR(b.longest_m, 4.5, 1e-6);
 
-  job.settings.camera_unwarp = false;
-  job.settings.index_of_refraction = 1.5;  // optical path = eta x length
+  job.settings.time.camera_unwarp = false;
+  job.settings.time.index_of_refraction = 1.5;  // optical path = eta x length
   b = capture::arrivalBounds(job, 1);
   EXPECT_NEAR(b.shortest_m, 4.5, 1e-6);
   EXPECT_NEAR(b.longest_m, 13.5, 1e-6);
@@ -61,7 +61,7 @@ TEST(ArrivalBoundsTest, ReferenceLightLiesWithinTheBounds) {
   test::CornerJob corner(12);
   for (bool unwarp : {false, true}) {
     capture::RenderJob job = corner.job;
-    job.settings.camera_unwarp = unwarp;
+    job.settings.time.camera_unwarp = unwarp;
     const capture::ArrivalBounds b = capture::arrivalBounds(job, 3);
     const double width_s = 0.005 / kSpeedOfLight_m_per_s;
     job.settings.time.start_s = b.shortest_s();

@@ -75,7 +75,7 @@ TEST(ReferenceClosedFormTest, SteadyRadianceFollowsCosineOverDistanceSquared) {
 TEST(ReferenceClosedFormTest, CameraUnwarpShiftsPeaksByTheCameraDelay) {
   test::PlaneJob s;
   s.job.settings.time = TimeAxis{1.0 / kSpeedOfLight_m_per_s, 0.002 / kSpeedOfLight_m_per_s, 1200};
-  s.job.settings.camera_unwarp = true;
+  s.job.settings.time.camera_unwarp = true;
   const VolumeCollector out = test::renderReference(s.job, directOnly());
   int checked = 0;
   for (int y = 0; y < s.job.camera().height; ++y) {
@@ -93,8 +93,8 @@ TEST(ReferenceClosedFormTest, CameraUnwarpShiftsPeaksByTheCameraDelay) {
 
 TEST(ReferenceClosedFormTest, IndexOfRefractionStretchesTheOpticalPath) {
   test::PlaneJob s;
-  s.job.settings.index_of_refraction = 1.33;
   s.job.settings.time = TimeAxis{3.5 / kSpeedOfLight_m_per_s, 0.002 / kSpeedOfLight_m_per_s, 1500};
+  s.job.settings.time.index_of_refraction = 1.33;
   const VolumeCollector out = test::renderReference(s.job, directOnly());
   int checked = 0;
   for (int y = 0; y < s.job.camera().height; y += 3) {

@@ -85,8 +85,8 @@ TEST(ReferenceMatchesGlDirectGLTest, CornerUnderASpotLightWithUnwarping) {
   s.job.light.direction_world = glm::normalize(glm::vec3(-0.5f, -1.2f, -1.0f));
   s.job.light.cone_half_angle_deg = 50.0f;
   s.job.light.cone_falloff_deg = 10.0f;
-  s.job.settings.camera_unwarp = true;
-  s.job.settings.index_of_refraction = 1.2;
+  s.job.settings.time.camera_unwarp = true;
+  s.job.settings.time.index_of_refraction = 1.2;
   expectSameDirectLight(s.job);
 }
 

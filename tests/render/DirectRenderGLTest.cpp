@@ -88,7 +88,7 @@ TEST_P(DirectRenderGLTest, CameraUnwarpShiftsPeaksByTheCameraDelay) {
   PlaneSetup s;
   s.job.settings.pixel_footprint = false;  // compares pixel centres' paths (point pixels)
   s.job.settings.time = TimeAxis{1.0 / kSpeedOfLight_m_per_s, 0.002 / kSpeedOfLight_m_per_s, 1200};
-  s.job.settings.camera_unwarp = true;
+  s.job.settings.time.camera_unwarp = true;
   const VolumeCollector out = renderJob(s.job);
   int checked = 0;
   for (int y = 0; y < s.job.camera().height; ++y) {

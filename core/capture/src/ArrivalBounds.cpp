@@ -65,8 +65,8 @@ double ArrivalBounds::longest_s() const { return longest_m / kSpeedOfLight_m_per
 
 ArrivalBounds arrivalBounds(const RenderJob& job, int32_t surfaceVertices) {
   TOFSIM_CHECK(job.scene != nullptr && surfaceVertices >= 1);
-  const bool unwarp = job.settings.camera_unwarp || !lastLegCounts(job.imager);
-  const double eta = job.settings.index_of_refraction;
+  const bool unwarp = job.settings.time.camera_unwarp || !lastLegCounts(job.imager);
+  const double eta = job.settings.time.index_of_refraction;
   const glm::dvec3 light(job.light.position_world);
   const glm::dvec3 camera(viewpoint(job.imager));
   ArrivalBounds bounds;

@@ -35,7 +35,8 @@ DirectLightView directLightView(const RenderJob& job, const FirstSurface& firstS
   view.radiance = job.light.intensity_W_per_sr *
                   static_cast<float>(profile / (static_cast<double>(d) * d * solidAngle));
   // Unwarped time is the time at the scene point; the source itself emits at 0.
-  const double path_m = job.settings.camera_unwarp ? 0.0 : job.settings.index_of_refraction * d;
+  const double path_m =
+      job.settings.time.camera_unwarp ? 0.0 : job.settings.time.index_of_refraction * d;
   view.bin = job.settings.time.binOf(path_m / kSpeedOfLight_m_per_s);
   return view;
 }

@@ -117,8 +117,8 @@ std::string effectiveConfigYaml(const RunConfig& config) {
   time["start"] = picoseconds(config.render.time.start_s);
   time["bin_width"] = picoseconds(config.render.time.bin_width_s);
   time["bins"] = config.render.time.bins;
-  time["index_of_refraction"] = shortest(config.render.index_of_refraction);
-  time["camera_unwarp"] = config.render.camera_unwarp;
+  time["index_of_refraction"] = shortest(config.render.time.index_of_refraction);
+  time["camera_unwarp"] = config.render.time.camera_unwarp;
   root["time"] = time;
   root["render"] = renderNode(config);
   root["output"] = outputNode(config.output);

@@ -114,14 +114,11 @@ void parseTime(const ConfigNode& node, capture::RenderSettings& r) {
   r.time.bin_width_s = node.getDuration_s("bin_width", 10e-12);
   requirePositive(node, "bin_width", r.time.bin_width_s);
   r.time.bins = static_cast<int32_t>(intInRange(node, "bins", 512, 1, 1 << 20));
-  r.index_of_refraction = node.getDouble("index_of_refraction", 1.0);
-  if (!(r.index_of_refraction >= 1.0)) node.failKey("index_of_refraction", "must be >= 1");
-  r.camera_unwarp = node.getBool("camera_unwarp", false);
-  // The renderers read RenderSettings' own fields; the axis carries the same
-  // two values to the volume and the sensors (depth = (c / eta) t / legs).
-  // Both are set here, from one parse, so they cannot disagree.
-  r.time.index_of_refraction = r.index_of_refraction;
-  r.time.camera_unwarp = r.camera_unwarp;
+  // One place for both: the renderers and the sensors (depth = (c / eta) t /
+  // legs) read the axis's.
+  r.time.index_of_refraction = node.getDouble("index_of_refraction", 1.0);
+  if (!(r.time.index_of_refraction >= 1.0)) node.failKey("index_of_refraction", "must be >= 1");
+  r.time.camera_unwarp = node.getBool("camera_unwarp", false);
 }
 
 void parseIndirect(const ConfigNode& node, capture::IndirectSettings& s) {

@@ -52,7 +52,7 @@ ir::CentreSurfaces CpuBackend::prepareSurfaces(const capture::RenderJob& job) {
   TOFSIM_CHECK(job.scene != nullptr);
   TOFSIM_CHECK_MSG(scene_ != nullptr, "setScene must come first");
   job_ = job;
-  dropLastLeg_ = job.settings.camera_unwarp || !capture::lastLegCounts(job.imager);
+  dropLastLeg_ = job.settings.time.camera_unwarp || !capture::lastLegCounts(job.imager);
   vpls_.reset();  // a new render: nothing of the previous one survives
   ism_.reset();
   // The driver's G-buffer (depth, the light seen by the camera, the adaptive
@@ -106,7 +106,7 @@ std::vector<ir::Vpl> CpuBackend::generateVpls(const capture::RenderJob& job) {
   finishSurfaces();
   const capture::IndirectSettings& s = job.settings.indirect;
   if (!s.enabled) return {};
-  return traceRsmVpls(*scene_, job.light, s.rsm_resolution, job.settings.index_of_refraction,
+  return traceRsmVpls(*scene_, job.light, s.rsm_resolution, job.settings.time.index_of_refraction,
                       job.settings.materials == capture::MaterialModel::Gltf, threads_);
 }
 
@@ -171,7 +171,7 @@ void CpuBackend::beginSegment(std::size_t firstPixel, std::size_t count) {
   accumulatorsZero_ = false;
   std::fill_n(outside_.begin(), count, physics::OffAxisSums{});
   const capture::RenderSettings& s = job_.settings;
-  const auto eta = static_cast<float>(s.index_of_refraction);
+  const auto eta = static_cast<float>(s.time.index_of_refraction);
   firstSample_ = surfaces_->firstSample[firstPixel];
   for (std::size_t i = 0; i <= count; ++i) {
     segmentFirstSample_[i] = surfaces_->firstSample[firstPixel + i] - firstSample_;
@@ -246,7 +246,7 @@ void CpuBackend::gatherDirectTile(std::size_t tile) {
   const int bins = s.time.bins;
   const auto start_m = static_cast<float>(s.time.start_m());
   const auto width_m = static_cast<float>(s.time.bin_width_m());
-  const auto eta = static_cast<float>(s.index_of_refraction);
+  const auto eta = static_cast<float>(s.time.index_of_refraction);
   const glm::vec3 viewpoint = capture::viewpoint(job_.imager);
   const std::size_t end = std::min(pixelCount_, (tile + 1) * kTilePixels);
   for (std::size_t i = tile * kTilePixels; i < end; ++i) {
@@ -330,7 +330,7 @@ void CpuBackend::gatherTile(std::size_t tile, std::size_t firstVpl, std::size_t 
   GatherConstants c;
   c.start_m = static_cast<float>(s.time.start_m());
   c.binWidth_m = static_cast<float>(s.time.bin_width_m());
-  c.indexOfRefraction = static_cast<float>(s.index_of_refraction);
+  c.indexOfRefraction = static_cast<float>(s.time.index_of_refraction);
   c.geometryClamp = static_cast<float>(s.indirect.geometry_term_clamp_per_m2);
   c.footprint = s.pixel_footprint;
   c.vplFootprint = s.pixel_footprint && s.indirect.vpl_footprint;

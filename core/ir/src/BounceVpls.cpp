@@ -176,7 +176,7 @@ BouncedVpls traceLaterBounces(const capture::RenderJob& job, const reference::Ra
     // Russian roulette ends paths: bounce 3 on traces one ray per VPL kept.
     const std::size_t rays = s.russian_roulette && bounce > 2 ? parents.size() : count;
     parents = traceBounce(scene, parents, rays, bounce, job.settings.seed,
-                          job.settings.index_of_refraction, tracing, materials);
+                          job.settings.time.index_of_refraction, tracing, materials);
     out.vpls.insert(out.vpls.end(), parents.begin(), parents.end());
     out.firstOfBounce.push_back(out.vpls.size());
   }

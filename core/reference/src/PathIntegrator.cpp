@@ -57,7 +57,7 @@ PathIntegrator::Radiance PathIntegrator::lightReflectedAt(const SurfaceHit& hit,
 }
 
 int32_t PathIntegrator::binOfPath(double path_m) const {
-  const double optical_m = job_.settings.index_of_refraction * path_m;
+  const double optical_m = job_.settings.time.index_of_refraction * path_m;
   return job_.settings.time.binOf(optical_m / kSpeedOfLight_m_per_s);
 }
 
@@ -144,7 +144,7 @@ void PathIntegrator::renderPixelCentre(int32_t x, int32_t y, PixelOutput& out,
   const double cameraLeg_m = glm::length(hit.position_world - eye);
   out.depth_m = static_cast<float>(cameraLeg_m);
   // Unwarped time is the time at the first surface: drop the surface -> camera leg.
-  const double toCamera_m = job_.settings.camera_unwarp ? 0.0 : cameraLeg_m;
+  const double toCamera_m = job_.settings.time.camera_unwarp ? 0.0 : cameraLeg_m;
   const std::size_t floats = static_cast<std::size_t>(job_.settings.time.bins) * kChannels;
 
   // Bounce 1: exact, no sampling.
@@ -208,7 +208,7 @@ void PathIntegrator::renderPixelArea(int32_t x, int32_t y, PixelOutput& out,
     const std::optional<SurfaceHit> hit = scene_.intersect(eye, rays_.direction(x, y, offset));
     if (!hit) continue;  // a silhouette pixel: this part of it sees nothing
     const double toCamera_m =
-        job_.settings.camera_unwarp ? 0.0 : glm::length(hit->position_world - eye);
+        job_.settings.time.camera_unwarp ? 0.0 : glm::length(hit->position_world - eye);
     const glm::vec3 toCamera = glm::normalize(eye - hit->position_world);
     addDirect(*hit, toCamera, toCamera_m, direct, outside);
     if (bounces_ >= 2) traceContinuation(*hit, toCamera, toCamera_m, rng, indirect, outside);

@@ -45,8 +45,8 @@ void configureGather(const gl::Program& program, const RenderJob& job) {
   program.set("uBins", axis.bins);
   program.set("uStart_m", static_cast<float>(axis.start_m()));
   program.set("uBinWidth_m", static_cast<float>(axis.bin_width_m()));
-  program.set("uIndexOfRefraction", static_cast<float>(job.settings.index_of_refraction));
-  program.set("uCameraUnwarp", job.settings.camera_unwarp ? 1 : 0);
+  program.set("uIndexOfRefraction", static_cast<float>(job.settings.time.index_of_refraction));
+  program.set("uCameraUnwarp", job.settings.time.camera_unwarp ? 1 : 0);
   program.set("uCameraPosition_world", job.camera().position_world);
   const RenderSettings& s = job.settings;
   const int32_t n = s.pixel_samples;
@@ -258,7 +258,7 @@ std::vector<ir::Vpl> GlBackend::generateVpls(const RenderJob& job) {
   if (!s.enabled) return {};
   const Passes& p = passes();
   return render::generateVpls(p.gpuScene, job.light, s.rsm_resolution,
-                              job.settings.index_of_refraction, p.bounds.lo, p.bounds.hi,
+                              job.settings.time.index_of_refraction, p.bounds.lo, p.bounds.hi,
                               job.settings.materials == capture::MaterialModel::Gltf);
 }
 

@@ -51,9 +51,10 @@ struct IndirectSettings {
 };
 
 struct RenderSettings {
-  TimeAxis time;                         ///< arrival-time histogram bins
-  double index_of_refraction = 1.0;      ///< of the medium filling the scene
-  bool camera_unwarp = false;            ///< drop the surface -> camera delay
+  /// Arrival-time histogram bins, and how optical path becomes time: the
+  /// medium's index of refraction and camera_unwarp (drop the surface ->
+  /// camera delay) live there only, read by the renderers and the sensors.
+  TimeAxis time;
   int32_t shadow_map_resolution = 1024;  ///< per cube face of the light's shadow map
   /// Bytes of GPU memory the volume segments and ISM batches may use.
   std::size_t memory_budget_bytes = std::size_t{512} << 20;
