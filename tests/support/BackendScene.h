@@ -12,7 +12,7 @@ namespace tofsim::test {
 class BackendScene {
  public:
   BackendScene(ir::IrBackend& backend, const scene::Scene& scene) : rays_(scene, 0) {
-    backend.setScene(scene, rays_);
+    backend.setScene(scene, &rays_);
   }
 
  private:

@@ -42,8 +42,9 @@ ir::DeviceLimits CpuBackend::limits() const {
   return {1 << 16, std::size_t{1} << 40, std::size_t{1} << 32};
 }
 
-void CpuBackend::setScene(const scene::Scene& scene, const reference::RayScene& rays) {
-  scene_ = &rays;
+void CpuBackend::setScene(const scene::Scene& scene, const reference::RayScene* rays) {
+  TOFSIM_CHECK_MSG(rays != nullptr, "the CPU backend traces the driver's RayScene");
+  scene_ = rays;
   const scene::Bounds b = scene.bounds();
   sceneScale_m_ = std::max(glm::length(b.max - b.min), 1e-6f);
 }

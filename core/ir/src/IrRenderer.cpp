@@ -177,12 +177,16 @@ IrRenderer::~IrRenderer() = default;
 
 void IrRenderer::sceneChanged() const { scene_ = nullptr; }
 
+const reference::RayScene& IrRenderer::rays() const {
+  TOFSIM_CHECK(scene_ != nullptr);
+  if (!rays_) rays_ = std::make_unique<reference::RayScene>(*scene_, 0);
+  return *rays_;
+}
+
 void IrRenderer::prepareScene(const scene::Scene& scene) const {
-  // The backend drops its view of the old scene before the rays go.
-  scene_ = nullptr;
-  rays_ = std::make_unique<reference::RayScene>(scene, 0);
-  backend_->setScene(scene, *rays_);
+  rays_.reset();  // the old scene's; built again only when something traces
   scene_ = &scene;
+  backend_->setScene(scene, backend_->tracesRays() ? &rays() : nullptr);
   ++scenePreparations_;
 }
 
@@ -212,7 +216,9 @@ RenderResult IrRenderer::render(const RenderJob& job, SegmentSink& sink,
   // Bounce 1 from the backend's RSM, later bounces traced from it here, so
   // both backends gather the same VPLs of every bounce; bounced.firstOfBounce
   // keeps which VPLs are of which bounce (for bounce-resolved output).
-  const BouncedVpls bounced = withLaterBounces(job, *rays_, backend.generateVpls(job));
+  const BouncedVpls bounced = job.settings.indirect.bounces > 1
+                                  ? withLaterBounces(job, rays(), backend.generateVpls(job))
+                                  : withLaterBounces(job, backend.generateVpls(job));
   const std::vector<Vpl>& vpls = bounced.vpls;
   backend.setVpls(vpls);
   clock.lap(result.passSeconds.vpls);

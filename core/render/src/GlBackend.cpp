@@ -174,7 +174,7 @@ ir::DeviceLimits GlBackend::limits() const {
   return limits;
 }
 
-void GlBackend::setScene(const scene::Scene& scene, const reference::RayScene& /*rays*/) {
+void GlBackend::setScene(const scene::Scene& scene, const reference::RayScene* /*rays*/) {
   passes_.reset();  // a render's objects refer to the scene's
   sceneObjects_.reset();
   sceneObjects_ = std::make_unique<SceneObjects>(scene);

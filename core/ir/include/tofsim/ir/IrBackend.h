@@ -96,12 +96,17 @@ class IrBackend {
   /// The device, e.g. "llvmpipe (LLVM 15.0.6, 256 bits)" or "CPU (2 threads)".
   virtual std::string description() const = 0;
   virtual DeviceLimits limits() const = 0;
+  /// Whether the backend traces the scene with Embree rays (setScene then
+  /// gets the driver's RayScene; otherwise the driver builds none unless a
+  /// later bounce needs it).
+  virtual bool tracesRays() const { return false; }
   /// The scene every following render sees, prepared once (GL: geometry
   /// upload and the triangle soup's BVH; CPU: nothing but the reference):
-  /// `rays` is the driver's one Embree scene of it, which the CPU backend
-  /// traces with and the driver traces later bounces with. Both must outlive
-  /// the renders that use them; a new call replaces them.
-  virtual void setScene(const scene::Scene& scene, const reference::RayScene& rays) = 0;
+  /// `rays` is the driver's one Embree scene of it when tracesRays(), which
+  /// the CPU backend traces with and the driver traces later bounces with,
+  /// null otherwise. Both must outlive the renders that use them; a new call
+  /// replaces them.
+  virtual void setScene(const scene::Scene& scene, const reference::RayScene* rays) = 0;
   /// One capture of the scene set last: camera G-buffer of every pixel
   /// (every sub-pixel sample), light shadow map. Returns the pixel centres'
   /// G-buffer: the driver derives the depth image, the DirectLightView and

@@ -38,6 +38,8 @@ class IrRenderer : public capture::Renderer {
 
  private:
   void prepareScene(const scene::Scene& scene) const;
+  /// The held scene's RayScene, built on first use.
+  const reference::RayScene& rays() const;
 
   std::unique_ptr<IrBackend> backend_;
   // The prepared scene; mutable because render is const (Renderer's interface).

@@ -45,8 +45,7 @@ struct PixelBuffers {
 
 /// Segments as large as the budget, the device's buffer limit and pass limit
 /// allow. Throws InputError when the budget cannot hold one pixel.
-SegmentPlan planSegments(std::size_t pixelCount, const PixelBuffers& pixel,
-                         std::size_t budgetBytes, std::size_t maxBufferBytes,
-                         std::size_t maxPixelsPerPass);
+SegmentPlan planSegments(std::size_t pixelCount, const PixelBuffers& pixel, std::size_t budgetBytes,
+                         std::size_t maxBufferBytes, std::size_t maxPixelsPerPass);
 
 }  // namespace tofsim::ir
