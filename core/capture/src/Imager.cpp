@@ -15,6 +15,9 @@ template <class... F>
 struct Overloaded : F... {
   using F::operator()...;
 };
+// Clang 14 (the fuzz build) has no aggregate deduction, C++20's P1816.
+template <class... F>
+Overloaded(F...) -> Overloaded<F...>;
 }  // namespace
 
 int32_t imageWidth(const Imager& imager) {
