@@ -129,6 +129,14 @@ TEST_F(ConfigKeysWriterTest, EffectiveConfigWritesEveryDeclaredKey) {
   const RunConfig c = loadRunConfig(dir_ / "c.yaml");
   std::set<std::string> written;
   leafPaths(YAML::Load(effectiveConfigYaml(c)), "", written);
+  // An nlos capture instead of the camera and the light: its keys, exhaustive
+  // (the laser grid) and single (the laser point).
+  for (const char* scan : {"exhaustive", "single"}) {
+    std::ofstream(dir_ / "n.yaml") << "scene: scene.gltf\nnlos: {relay_wall: w, scan: " << scan
+                                   << ", sensor_origin: [0, 0, 1], laser_origin: [0, 0, 1]}\n"
+                                      "time: {}\n";
+    leafPaths(YAML::Load(effectiveConfigYaml(loadRunConfig(dir_ / "n.yaml"))), "", written);
+  }
   written.erase("");
   std::set<std::string> declared;
   for (const ConfigKey& k : runConfigKeys()) declared.insert(k.path);

@@ -94,6 +94,29 @@ sensors:
   - type: spad
 )";
 
+// The nlos keys (instead of camera and light); laser_point is single's.
+const char* kMinimalNlos =
+    "scene: scene.gltf\nnlos: {relay_wall: w, sensor_origin: [0, 0, 1], laser_origin: [0, 0, 1]}\n"
+    "time: {}\n";
+const char* kEveryNlosKey = R"(scene: scene.gltf
+nlos:
+  relay_wall: wall
+  scan: exhaustive
+  sensor_grid: [8, 4]
+  laser_grid: [2, 3]
+  laser_aperture: [[0.25, 0.125], [0.75, 0.5]]
+  sensor_origin: [0.5, 0.25, 1]
+  laser_origin: [-0.5, 0.25, 1]
+  laser_power: [2, 3, 4]
+  laser_falloff: projector
+  account_first_and_last_bounces: true
+  hdf5: false
+time: {bins: 64}
+)";
+const char* kSingleNlos =
+    "scene: scene.gltf\nnlos: {relay_wall: w, scan: single, laser_point: [0.25, 0.75], "
+    "sensor_origin: [0, 0, 1], laser_origin: [0, 0, 1]}\ntime: {}\n";
+
 // The node at a dotted key path, or an undefined node.
 YAML::Node at(const YAML::Node& root, const std::string& path) {
   YAML::Node node = YAML::Clone(root);
@@ -129,7 +152,8 @@ TEST_F(EveryKeyRoundTripTest, EveryDeclaredKeyIsNonDefaultAndSurvivesTheRoundTri
   for (const ConfigKey& key : runConfigKeys()) {
     const std::string type = key.type;
     if (type == "mapping" || std::string(key.path) == "sensors") continue;
-    if (std::string(key.defaultValue) == "required") continue;  // no default to differ from
+    if (std::string(key.path).rfind("nlos.", 0) == 0) continue;  // NlosKeysSurviveTheRoundTrip
+    if (std::string(key.defaultValue) == "required") continue;   // no default to differ from
     const YAML::Node value = at(effective, key.path);
     ASSERT_TRUE(value.IsDefined()) << key.path << " is not in the effective config";
     EXPECT_NE(text(value), text(at(defaults, key.path)))
@@ -137,6 +161,32 @@ TEST_F(EveryKeyRoundTripTest, EveryDeclaredKeyIsNonDefaultAndSurvivesTheRoundTri
   }
   const RunConfig again = load(written, "again.yaml");
   EXPECT_EQ(effectiveConfigYaml(again), written);
+}
+
+TEST_F(EveryKeyRoundTripTest, NlosKeysAreNonDefaultAndSurviveTheRoundTrip) {
+  const YAML::Node defaults =
+      YAML::Load(effectiveConfigYaml(load(kMinimalNlos, "minimal_nlos.yaml")));
+  for (const char* yaml : {kEveryNlosKey, kSingleNlos}) {
+    const std::string written = effectiveConfigYaml(load(yaml, "nlos.yaml"));
+    const YAML::Node effective = YAML::Load(written);
+    EXPECT_FALSE(effective["camera"].IsDefined());
+    EXPECT_FALSE(effective["light"].IsDefined());
+    const RunConfig again = load(written, "again.yaml");
+    EXPECT_EQ(effectiveConfigYaml(again), written);
+  }
+  const YAML::Node every = YAML::Load(effectiveConfigYaml(load(kEveryNlosKey, "every.yaml")));
+  const YAML::Node single = YAML::Load(effectiveConfigYaml(load(kSingleNlos, "single.yaml")));
+  for (const ConfigKey& key : runConfigKeys()) {
+    const std::string path = key.path;
+    if (path.rfind("nlos.", 0) != 0) continue;
+    const YAML::Node value = at(path == "nlos.laser_point" ? single : every, path);
+    ASSERT_TRUE(value.IsDefined()) << path << " is not in the effective config";
+    if (std::string(key.defaultValue) == "required") continue;
+    const YAML::Node fallback = at(defaults, path);
+    if (fallback.IsDefined()) {
+      EXPECT_NE(text(value), text(fallback)) << path << " has its default value in the test config";
+    }
+  }
 }
 
 }  // namespace

@@ -4,6 +4,7 @@
 #include <optional>
 
 #include "BinMajorSpill.h"
+#include "NlosRun.h"
 #include "tofsim/capture/VolumeCollector.h"
 #include "tofsim/imaging/Pictures.h"
 #include "tofsim/imaging/Video.h"
@@ -99,6 +100,7 @@ bool keepAcrossRenders(const std::string& name) { return name == "log.txt"; }
 }  // namespace
 
 RunSummary runRender(const config::RunConfig& config, const RunOptions& options) {
+  if (config.nlos) return runNlosRender(config, options);
   Progress progress("render", options.quiet);
   scene::LoadReport report;
   const scene::Scene scene = scene::loadGltf(config.scene_file, &report);

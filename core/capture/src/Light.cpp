@@ -9,6 +9,7 @@ namespace tofsim::capture {
 
 float Light::angularProfile(const glm::vec3& direction) const {
   if (type == Type::Point) return 1.0f;
+  if (type == Type::Lambertian) return std::max(0.0f, glm::dot(direction, direction_world));
   // The same falloff as spotProfile() in shaders/light.glsl: one copy of the math.
   const float cosAngle = glm::dot(direction, direction_world);
   const float cosOuter = std::cos(glm::radians(cone_half_angle_deg));

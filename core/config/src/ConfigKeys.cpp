@@ -6,6 +6,7 @@
 #include <iterator>
 
 #include "FieldDoc.h"
+#include "NlosFields.h"
 #include "RunFields.h"
 #include "tofsim/sensors/SensorFields.h"
 
@@ -17,9 +18,11 @@ const ConfigKey kRunConfigKeys[] = {
     {"scene", "string", "", "required", "-",
      "glTF file, relative to the config's folder"},
     {"camera", "mapping", "", "required", "-",
-     "see below (`{}` for all defaults)"},
+     "see below (`{}` for all defaults); not with `nlos`"},
     {"light", "mapping", "", "required", "-",
-     "see below"},
+     "see below; not with `nlos`"},
+    {"nlos", "mapping", "", "none", "-",
+     "a non-line-of-sight relay-wall scan instead of `camera` and `light`, see below"},
     {"time", "mapping", "", "required", "-",
      "see below"},
     {"render", "mapping", "", "defaults", "-",
@@ -152,6 +155,7 @@ std::span<const ConfigKey> runConfigKeys() {
     r.keys.assign(std::begin(kRunConfigKeys), std::end(kRunConfigKeys));
     addDocRows<capture::IndirectSettings>(r, "render.indirect", kIndirectFields);
     addDocRows<ReferenceConfig>(r, "render.reference", kReferenceFields);
+    addDocRows<NlosConfig>(r, "nlos", kNlosFields);
     r.keys.insert(r.keys.end(), std::begin(kRunConfigKeysAfterRender),
                   std::end(kRunConfigKeysAfterRender));
     return r;

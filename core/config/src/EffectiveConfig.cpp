@@ -4,6 +4,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include "FieldEmit.h"
+#include "NlosFields.h"
 #include "RunFields.h"
 #include "ShortestNumber.h"
 #include "tofsim/config/RunConfig.h"
@@ -34,6 +35,40 @@ YAML::Node cameraNode(const CameraConfig& c) {
   res.push_back(c.camera.height);
   res.SetStyle(YAML::EmitterStyle::Flow);
   n["resolution"] = res;
+  return n;
+}
+
+YAML::Node flowPair(double a, double b) {
+  YAML::Node n(YAML::NodeType::Sequence);
+  n.push_back(shortest(a));
+  n.push_back(shortest(b));
+  n.SetStyle(YAML::EmitterStyle::Flow);
+  return n;
+}
+
+YAML::Node nlosNode(const NlosConfig& c) {
+  YAML::Node n;
+  emitFields(n, kNlosFields, c, [&](const std::string& key) {
+    if (key == "sensor_grid") {
+      n[key] = flowPair(c.sensor_grid[0], c.sensor_grid[1]);
+    } else if (key == "laser_grid" && c.scan == NlosScan::Exhaustive) {
+      n[key] = flowPair(c.laser_grid[0], c.laser_grid[1]);
+    } else if (key == "laser_point" && c.scan == NlosScan::Single) {
+      n[key] = flowPair(c.laser_point.x, c.laser_point.y);
+    } else if (key == "laser_aperture" && c.scan == NlosScan::Exhaustive) {
+      YAML::Node a(YAML::NodeType::Sequence);
+      a.push_back(flowPair(c.laser_aperture_start.x, c.laser_aperture_start.y));
+      a.push_back(flowPair(c.laser_aperture_end.x, c.laser_aperture_end.y));
+      a.SetStyle(YAML::EmitterStyle::Flow);
+      n[key] = a;
+    } else if (key == "sensor_origin") {
+      n[key] = vec(c.sensor_origin);
+    } else if (key == "laser_origin") {
+      n[key] = vec(c.laser_origin);
+    } else if (key == "laser_power") {
+      n[key] = vec(c.laser_power_W);
+    }
+  });
   return n;
 }
 
@@ -111,8 +146,12 @@ YAML::Node outputNode(const OutputConfig& o) {
 std::string effectiveConfigYaml(const RunConfig& config) {
   YAML::Node root;
   root["scene"] = std::filesystem::absolute(config.scene_file).lexically_normal().string();
-  root["camera"] = cameraNode(config.camera);
-  root["light"] = lightNode(config.light);
+  if (config.nlos) {
+    root["nlos"] = nlosNode(*config.nlos);
+  } else {
+    root["camera"] = cameraNode(config.camera);
+    root["light"] = lightNode(config.light);
+  }
   YAML::Node time;
   time["start"] = picoseconds(config.render.time.start_s);
   time["bin_width"] = picoseconds(config.render.time.bin_width_s);
@@ -121,7 +160,13 @@ std::string effectiveConfigYaml(const RunConfig& config) {
   time["camera_unwarp"] = config.render.time.camera_unwarp;
   root["time"] = time;
   root["render"] = renderNode(config);
-  root["output"] = outputNode(config.output);
+  YAML::Node output = outputNode(config.output);
+  if (config.nlos) {  // the keys an nlos capture reads (RunConfigLoader's checkNlosRun)
+    YAML::Node kept;
+    for (const char* key : {"directory", "transient", "max_bytes"}) kept[key] = output[key];
+    output = kept;
+  }
+  root["output"] = output;
   root["sensors"] = sensorsToYaml(config.sensors);
   YAML::Emitter out;
   out << root;

@@ -5,6 +5,7 @@
 
 #include "ConfigNode.h"
 #include "FieldParse.h"
+#include "NlosConfigParser.h"
 #include "RunConfigYaml.h"
 #include "RunFields.h"
 #include "ShortestNumber.h"
@@ -323,8 +324,11 @@ constexpr long long kMaxVpls = 1LL << 22;
 void checkVplCount(const ConfigNode& root, const RunConfig& config) {
   const capture::Light& light = config.light.light;
   const capture::IndirectSettings& s = config.render.indirect;
+  // As ir::rsmViews.
   const long long faces =
-      light.type == capture::Light::Type::Spot && light.cone_half_angle_deg <= 60.0f ? 1 : 6;
+      light.type == capture::Light::Type::Lambertian                                   ? 5
+      : light.type == capture::Light::Type::Spot && light.cone_half_angle_deg <= 60.0f ? 1
+                                                                                       : 6;
   const long long side = s.rsm_resolution;
   const long long first = faces * side * side;
   // Every later bounce traces vpls_per_bounce (0: as many as the first) VPLs.
@@ -337,6 +341,37 @@ void checkVplCount(const ConfigNode& root, const RunConfig& config) {
     if (later > 0) what += " + " + std::to_string(later) + " of later bounces";
     indirect.failKey(later > 0 ? "bounces" : "rsm_resolution",
                      what + ", more than the limit of " + std::to_string(kMaxVpls));
+  }
+}
+
+// What an nlos capture cannot do (yet): the outputs of a camera image, the
+// renderers that know only pinholes, the sensors.
+void checkNlosRun(const ConfigNode& root, const RunConfig& config) {
+  if (const auto output = root.optionalChild("output")) {
+    for (const char* key :
+         {"steady", "depth", "frames", "video", "frame_pngs", "components", "video_tone_map",
+          "video_stride", "video_window", "video_fps", "plot_ranges"}) {
+      if (output->has(key)) {
+        output->failKey(key,
+                        "does not apply to an nlos capture (it writes H.npy, its grids and "
+                        "capture.hdf5: configs/README.md, `nlos`)");
+      }
+    }
+  }
+  if (const auto render = root.optionalChild("render")) {
+    if (config.renderer != RendererKind::InstantRadiosity) {
+      render->failKey("renderer",
+                      "an nlos capture renders with `ir` (the reference path tracer "
+                      "looks through pinhole cameras only)");
+    }
+    if (config.backend == IrBackendKind::Gl) {
+      render->failKey("backend",
+                      "an nlos capture renders with the CPU backend (the GL backend "
+                      "rasterizes pinhole cameras only): use `cpu` or `auto`");
+    }
+  }
+  if (root.has("sensors") && !root.child("sensors").elements().empty()) {
+    root.failKey("sensors", "sensors do not run on nlos captures yet; H is written as rendered");
   }
 }
 
@@ -374,8 +409,22 @@ RunConfig loadRunConfigYaml(YAML::Node yaml, const std::filesystem::path& file,
   if (!std::filesystem::exists(config.scene_file, ec)) {
     root.failKey("scene", "scene file not found: " + config.scene_file.string());
   }
-  parseCamera(root.child("camera"), config.camera);
-  parseLight(root.child("light"), config.light);
+  if (const auto nlos = root.optionalChild("nlos")) {
+    config.nlos = parseNlos(*nlos);
+    for (const char* key : {"camera", "light"}) {
+      if (root.has(key)) {
+        root.failKey(key,
+                     "an nlos capture looks at the relay wall from nlos.sensor_origin and is "
+                     "lit by nlos.laser_*: remove `" +
+                         std::string(key) + "`");
+      }
+    }
+    config.light.light.type = capture::Light::Type::Lambertian;
+    config.light.light.intensity_W_per_sr = config.nlos->laser_power_W;
+  } else {
+    parseCamera(root.child("camera"), config.camera);
+    parseLight(root.child("light"), config.light);
+  }
   if (const auto time = root.optionalChild("time")) {
     parseTime(*time, config.render);
   } else {
@@ -384,6 +433,7 @@ RunConfig loadRunConfigYaml(YAML::Node yaml, const std::filesystem::path& file,
   if (const auto render = root.optionalChild("render")) parseRender(*render, config);
   checkVplCount(root, config);
   if (const auto output = root.optionalChild("output")) parseOutput(*output, config, config.output);
+  if (config.nlos) checkNlosRun(root, config);
   if (const auto list = root.optionalChild("sensors")) {
     // parseSensors reports unknown keys inside each sensor itself; the keys it
     // read are shared with `root`, so the check below neither repeats nor

@@ -7,6 +7,7 @@
 
 #include "CpuIsm.h"
 #include "GatherKernel.h"
+#include "LitBounds.h"
 #include "ParallelFor.h"
 #include "RsmVpls.h"
 #include "SurfaceImage.h"
@@ -45,6 +46,7 @@ ir::DeviceLimits CpuBackend::limits() const {
 void CpuBackend::setScene(const scene::Scene& scene, const reference::RayScene* rays) {
   TOFSIM_CHECK_MSG(rays != nullptr, "the CPU backend traces the driver's RayScene");
   scene_ = rays;
+  litBounds_ = std::make_unique<LitBounds>(scene);
   const scene::Bounds b = scene.bounds();
   sceneScale_m_ = std::max(glm::length(b.max - b.min), 1e-6f);
 }
@@ -108,7 +110,8 @@ std::vector<ir::Vpl> CpuBackend::generateVpls(const capture::RenderJob& job) {
   const capture::IndirectSettings& s = job.settings.indirect;
   if (!s.enabled) return {};
   return traceRsmVpls(*scene_, job.light, s.rsm_resolution, job.settings.time.index_of_refraction,
-                      job.settings.materials == capture::MaterialModel::Gltf, threads_);
+                      job.settings.materials == capture::MaterialModel::Gltf, threads_,
+                      litBounds_->of(job.light));
 }
 
 void CpuBackend::setVpls(const std::vector<ir::Vpl>& vpls) {
@@ -238,6 +241,7 @@ void CpuBackend::gatherDirectTile(std::size_t tile) {
   const capture::RenderSettings& s = job_.settings;
   const capture::Light& light = job_.light;
   const bool spot = light.type == capture::Light::Type::Spot;
+  const bool cosine = light.type == capture::Light::Type::Lambertian;
   const bool gltf = s.materials == capture::MaterialModel::Gltf;
   // As LightUniforms.cpp hands them to light.glsl.
   const glm::vec3 axis = glm::normalize(light.direction_world);
@@ -267,8 +271,9 @@ void CpuBackend::gatherDirectTile(std::size_t tile) {
       const glm::vec3 wLight = toLight / dLight;
       const float cosX = glm::dot(n, wLight);
       if (cosX <= 0.0f) continue;
-      const float profile =
-          spot ? physics::spotFalloff(glm::dot(-wLight, axis), cosOuter, cosInner) : 1.0f;
+      const float profile = spot ? physics::spotFalloff(glm::dot(-wLight, axis), cosOuter, cosInner)
+                            : cosine ? std::max(0.0f, glm::dot(-wLight, axis))
+                                     : 1.0f;
       if (profile <= 0.0f) continue;
       const glm::vec3 g = surfaces_->geometric[p];
       const glm::vec3 offset = (glm::dot(g, toLight) < 0.0f ? -g : g) * scene_->epsilon_m();

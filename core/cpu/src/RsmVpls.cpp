@@ -2,6 +2,7 @@
 
 #include <optional>
 
+#include "LitBounds.h"
 #include "ParallelFor.h"
 #include "tofsim/ir/RsmTexels.h"
 
@@ -13,8 +14,13 @@ namespace {
 // nothing when the texel sees no lit surface: a ray where the GL rasterises.
 std::optional<ir::Vpl> texelVpl(const reference::RayScene& scene, const capture::Light& light,
                                 const ir::RsmView& v, int resolution, int x, int y, double eta,
-                                bool gltf) {
+                                bool gltf, const std::optional<scene::Bounds>& lit) {
   const glm::vec3 direction = ir::rsmTexelDirection(v, resolution, x, y);
+  // A Lambertian light's side views look half behind it: no ray there.
+  if (light.type == capture::Light::Type::Lambertian && light.angularProfile(direction) <= 0.0f) {
+    return std::nullopt;
+  }
+  if (lit && !rayMeetsBox(light.position_world, direction, *lit)) return std::nullopt;
   const auto hit = scene.intersect(light.position_world, direction);
   if (!hit) return std::nullopt;
   return ir::rsmTexelVpl(
@@ -26,8 +32,8 @@ std::optional<ir::Vpl> texelVpl(const reference::RayScene& scene, const capture:
 }  // namespace
 
 std::vector<ir::Vpl> traceRsmVpls(const reference::RayScene& scene, const capture::Light& light,
-                                  int resolution, double indexOfRefraction, bool gltf,
-                                  int threads) {
+                                  int resolution, double indexOfRefraction, bool gltf, int threads,
+                                  const std::optional<scene::Bounds>& lit) {
   std::vector<ir::Vpl> vpls;
   for (const ir::RsmView& view : ir::rsmViews(light)) {
     // Rows in parallel, then appended in texel order.
@@ -35,7 +41,7 @@ std::vector<ir::Vpl> traceRsmVpls(const reference::RayScene& scene, const captur
     parallelFor(rows.size(), threads, [&](std::size_t row) {
       for (int x = 0; x < resolution; ++x) {
         const auto vpl = texelVpl(scene, light, view, resolution, x, static_cast<int>(row),
-                                  indexOfRefraction, gltf);
+                                  indexOfRefraction, gltf, lit);
         if (vpl) rows[row].push_back(*vpl);
       }
     });

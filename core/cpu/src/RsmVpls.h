@@ -7,8 +7,10 @@
 // differ only where a triangle edge crosses a texel centre (the rasterizer's
 // tie rule) and in float rounding of the hit point. Unlike the GL, surfaces
 // closer to the light than its near plane (1e-4 of the scene's far distance)
-// are not clipped. `gltf`: glossy VPLs (ir::rsmTexelVpl).
+// are not clipped. `gltf`: glossy VPLs (ir::rsmTexelVpl). `lit`: texels whose
+// ray misses this box trace no ray (LitBounds.h).
 
+#include <optional>
 #include <vector>
 
 #include "tofsim/capture/Light.h"
@@ -19,6 +21,7 @@ namespace tofsim::cpu {
 
 std::vector<ir::Vpl> traceRsmVpls(const reference::RayScene& scene, const capture::Light& light,
                                   int rsmResolution, double indexOfRefraction, bool gltf,
-                                  int threads);
+                                  int threads,
+                                  const std::optional<scene::Bounds>& lit = std::nullopt);
 
 }  // namespace tofsim::cpu

@@ -35,6 +35,17 @@ std::vector<RsmView> rsmViews(const capture::Light& light) {
     const glm::vec3 up = std::abs(dir.y) < 0.99f ? glm::vec3(0, 1, 0) : glm::vec3(1, 0, 0);
     return {lookAtView(dir, up, half)};
   }
+  if (light.type == capture::Light::Type::Lambertian) {
+    // The hemisphere in front of the emitter: a cube about its normal without
+    // the back face; the side faces' back halves get no VPL (profile 0).
+    const glm::vec3 n = glm::normalize(light.direction_world);
+    const glm::vec3 t = glm::normalize(
+        glm::cross(n, std::abs(n.y) < 0.99f ? glm::vec3(0, 1, 0) : glm::vec3(1, 0, 0)));
+    const glm::vec3 b = glm::cross(n, t);
+    const float quarter = glm::radians(45.0f);
+    return {lookAtView(n, b, quarter), lookAtView(t, n, quarter), lookAtView(-t, n, quarter),
+            lookAtView(b, n, quarter), lookAtView(-b, n, quarter)};
+  }
   const glm::vec3 forward[6] = {{1, 0, 0},  {-1, 0, 0}, {0, 1, 0},
                                 {0, -1, 0}, {0, 0, 1},  {0, 0, -1}};
   const glm::vec3 up[6] = {{0, -1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}, {0, -1, 0}, {0, -1, 0}};

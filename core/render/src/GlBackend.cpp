@@ -191,6 +191,12 @@ ir::CentreSurfaces GlBackend::prepareSurfaces(const RenderJob& job) {
         "the GL backend rasterizes pinhole cameras only; a point-set imager renders with "
         "render.backend: cpu");
   }
+  if (job.light.type == capture::Light::Type::Lambertian) {
+    // light.glsl's profile and cube shadow map know point and spot lights.
+    throw InputError(
+        "the GL backend lights with point and spot lights; a Lambertian (laser "
+        "spot) light renders with render.backend: cpu");
+  }
   const Camera& camera = job.camera();
   const int32_t n = job.settings.pixel_samples;
   const int32_t maxSide = context_.limits().maxTextureSize;

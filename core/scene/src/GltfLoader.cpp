@@ -51,8 +51,9 @@ Scene loadGltf(const std::filesystem::path& path, LoadReport* reportOut) {
         scene.cameras.push_back(detail::convertCamera(camera, instance));
         if (!usable(scene.cameras.back())) {
           throw InputError(FileLoc{doc.file}, "node[" + std::to_string(instance.node) + "]",
-                           "camera '" + camera.name + "' has a degenerate transform, or a yfov "
-                           "outside (0, 180) degrees or a negative aspectRatio");
+                           "camera '" + camera.name +
+                               "' has a degenerate transform, or a yfov "
+                               "outside (0, 180) degrees or a negative aspectRatio");
         }
       } else {
         ++report.orthographicCameras;
@@ -75,6 +76,7 @@ Scene loadGltf(const std::filesystem::path& path, LoadReport* reportOut) {
       Mesh mesh;
       mesh.name = meshDesc.name.empty() ? "mesh_" + std::to_string(node.mesh) : meshDesc.name;
       if (meshDesc.primitives.size() > 1) mesh.name += "/" + std::to_string(p);
+      mesh.node = node.name;
       if (!detail::buildPrimitive(doc, ref, instance.world, mesh, report) || mesh.indices.empty()) {
         continue;
       }

@@ -1,15 +1,18 @@
 #pragma once
-// A point or spot light emitting one impulse at t = 0.
+// A point or spot light, or a cosine emitter, emitting one impulse at t = 0.
 
 #include <glm/glm.hpp>
 
 namespace tofsim::capture {
 
 struct Light {
-  enum class Type { Point, Spot };
+  /// Lambertian: a cosine emitter facing direction_world, intensity
+  /// intensity_W_per_sr * max(0, cos) -- the spot a laser makes on a relay
+  /// wall, seen from the hidden scene (a non-line-of-sight capture's light).
+  enum class Type { Point, Spot, Lambertian };
   Type type = Type::Point;
   glm::vec3 position_world{0.0f};
-  glm::vec3 direction_world{0.0f, 0.0f, -1.0f};  ///< unit; spot lights only
+  glm::vec3 direction_world{0.0f, 0.0f, -1.0f};  ///< unit; spot and Lambertian lights
   /// Spot: full intensity inside cone_half_angle_deg - cone_falloff_deg, a
   /// smooth (smoothstep) falloff to zero at cone_half_angle_deg.
   float cone_half_angle_deg = 30.0f;
@@ -19,7 +22,7 @@ struct Light {
   glm::vec3 intensity_W_per_sr{1.0f};
 
   /// Fraction of the intensity emitted towards `direction` (unit): 1 for point
-  /// lights, the cone profile for spots.
+  /// lights, the cone profile for spots, the cosine for Lambertian lights.
   float angularProfile(const glm::vec3& direction) const;
 };
 

@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <glm/glm.hpp>
 #include <map>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -15,6 +16,7 @@
 #include "tofsim/capture/Camera.h"
 #include "tofsim/capture/Light.h"
 #include "tofsim/capture/RenderSettings.h"
+#include "tofsim/config/NlosConfig.h"
 #include "tofsim/sensors/SensorSpec.h"
 
 namespace tofsim::config {
@@ -92,6 +94,10 @@ struct RunConfig {
   std::filesystem::path scene_file;  ///< resolved against the config's folder
   CameraConfig camera;
   LightConfig light;
+  /// A non-line-of-sight relay-wall scan instead of a camera and a light
+  /// (NlosConfig.h); `light` then holds the laser spot's emitter (a
+  /// Lambertian light, placed per laser point by the pipeline).
+  std::optional<NlosConfig> nlos;
   capture::RenderSettings render;
   RendererKind renderer = RendererKind::InstantRadiosity;
   IrBackendKind backend = IrBackendKind::Auto;  ///< render.backend (IR only)

@@ -45,6 +45,7 @@ struct CpuBackendOptions {
 };
 
 class CpuIsm;
+class LitBounds;
 struct PixelSurface;
 struct SurfaceImage;
 struct VplArrays;
@@ -101,6 +102,7 @@ class CpuBackend : public ir::IrBackend {
   /// last leg does not count (capture::lastLegCounts).
   bool dropLastLeg_ = false;
   const reference::RayScene* scene_ = nullptr;  ///< the driver's (setScene)
+  std::unique_ptr<LitBounds> litBounds_;        ///< of the scene set (setScene)
   std::unique_ptr<SurfaceImage> surfaces_;  ///< every pixel's samples (SurfaceImage::firstSample)
   /// render.adaptive_pixel_samples: surfaces_ holds the centres until
   /// setSampledPixels (or finishSurfaces) traces the sub-samples.

@@ -37,6 +37,7 @@ struct Material {
 /// One triangle list with one material, in world space.
 struct Mesh {
   std::string name;
+  std::string node;  ///< the glTF node that placed it (its name; empty if unnamed)
   std::vector<glm::vec3> positions_world;
   std::vector<glm::vec3> normals_world;  ///< unit length, one per position
   std::vector<glm::vec2> uvs;            ///< empty, or one per position

@@ -1,0 +1,38 @@
+#pragma once
+// Renders a non-line-of-sight scan: each laser position is one capture of the
+// scene, prepared once per renderer; the light that left the wall at the
+// laser spot and came back to a sensor point (the indirect light: the laser
+// spot's own direct return is not in H, as in y-tal) is summed over R, G and
+// B into that point's histogram of H.
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "tofsim/capture/RenderJob.h"
+#include "tofsim/config/RunConfig.h"
+#include "tofsim/pipeline/NlosScan.h"
+#include "tofsim/volume/TimeAxis.h"
+
+namespace tofsim::pipeline {
+
+struct NlosVolume {
+  TimeAxis axis;
+  std::vector<std::size_t> shape;  ///< {T, sx, sy} or {T, lx, ly, sx, sy}
+  std::vector<float> H;            ///< row-major in `shape`: time slowest, as y-tal holds it
+  std::size_t captures = 0;
+  std::size_t scenePreparations = 0;  ///< one per renderer that ran
+  std::size_t vpls = 0;               ///< summed over the captures
+  double seconds = 0.0;
+  std::string device;
+};
+
+/// Confocal scans (one point per capture) run their captures in parallel, one
+/// single-threaded renderer per worker; the others one capture after another
+/// on every core. The bytes are the same either way (the CPU backend's do not
+/// depend on its thread count).
+NlosVolume renderNlosScan(const config::RunConfig& config, const scene::Scene& scene,
+                          const NlosScanGeometry& scan,
+                          const capture::ProgressCallback& progress = {});
+
+}  // namespace tofsim::pipeline

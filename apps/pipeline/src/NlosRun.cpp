@@ -1,0 +1,149 @@
+#include "NlosRun.h"
+
+#include <nlohmann/json.hpp>
+
+#include "SensorParametersJson.h"
+#include "tofsim/io/Npy.h"
+#include "tofsim/pipeline/Manifest.h"
+#include "tofsim/pipeline/NlosRender.h"
+#include "tofsim/pipeline/NlosScan.h"
+#include "tofsim/pipeline/Progress.h"
+#include "tofsim/pipeline/Version.h"
+#include "tofsim/scene/GltfLoader.h"
+#include "tofsim/util/AtomicFile.h"
+#include "tofsim/util/Error.h"
+#include "tofsim/util/Interrupt.h"
+#include "tofsim/util/StagedFolder.h"
+
+namespace tofsim::pipeline {
+
+namespace {
+
+nlohmann::ordered_json vec(const glm::vec3& v) { return {v.x, v.y, v.z}; }
+
+std::vector<float> flat(const std::vector<glm::vec3>& points) {
+  std::vector<float> out;
+  out.reserve(points.size() * 3);
+  for (const glm::vec3& p : points) out.insert(out.end(), {p.x, p.y, p.z});
+  return out;
+}
+
+std::vector<std::string> hAxes(const NlosScanGeometry& scan) {
+  if (scan.scan == config::NlosScan::Exhaustive) return {"t", "lx", "ly", "sx", "sy"};
+  return {"t", "sx", "sy"};
+}
+
+std::string nlosMetadataJson(const config::RunConfig& config, const NlosScanGeometry& scan,
+                             const NlosVolume& volume, const std::vector<std::string>& files) {
+  const config::NlosConfig& nlos = *config.nlos;
+  nlohmann::ordered_json j;
+  j["format"] = "tofsim nlos capture";
+  j["tofsim_version"] = kVersion;
+  j["files"] = files;
+  j["scan"] = config::nlosScanName(nlos.scan);
+  j["shape"] = volume.shape;
+  j["axes"] = hAxes(scan);
+  j["axes_doc"] =
+      "H[t][sx][sy] (single, confocal) or H[t][lx][ly][sx][sy] (exhaustive): time bin t, laser "
+      "point (lx, ly), sensor point (sx, sy) of the grids (x index major, x along the wall's "
+      "x_axis, y along its y_axis); float32, C order; y-tal's T_Sx_Sy / T_Lx_Ly_Sx_Sy";
+  j["value_unit"] = "W m^-2 sr^-1";
+  j["value_doc"] =
+      "radiance at the sensor point towards sensor_origin arriving within the bin, summed over "
+      "R, G and B (as tal render's H), for an impulse of the laser at t = 0; only light that "
+      "left the wall at the laser spot and came back (the spot's own direct return is not in H)";
+  j["time"] = timeAxisJson(volume.axis);
+  j["t_start_m"] = volume.axis.start_m();
+  j["delta_t_m"] = volume.axis.bin_width_m();
+  j["t_accounts_first_and_last_bounces"] = nlos.account_first_and_last_bounces;
+  j["time_doc"] =
+      nlos.account_first_and_last_bounces
+          ? "optical path from laser_origin to the sensor point's return at sensor_origin"
+          : "optical path from the laser spot l on the wall to the sensor point s (the legs "
+            "laser_origin -> l and s -> sensor_origin are not counted)";
+  j["relay_wall"] = {{"name", scan.wall.name},          {"centre", vec(scan.wall.centre_world)},
+                     {"x_axis", vec(scan.wall.x_axis)}, {"y_axis", vec(scan.wall.y_axis)},
+                     {"normal", vec(scan.wall.normal)}, {"width_m", scan.wall.width_m},
+                     {"height_m", scan.wall.height_m}};
+  j["sensor_origin"] = vec(scan.sensorOrigin);
+  j["laser_origin"] = vec(scan.laserOrigin);
+  j["sensor_grid"] = scan.sensorGrid;
+  j["laser_grid"] = scan.laserGrid;
+  j["laser_power_W"] = vec(nlos.laser_power_W);
+  j["laser_falloff"] =
+      nlos.laser_falloff == config::LaserFalloff::Projector ? "projector" : "collimated";
+  j["stats"] = {{"render_seconds", volume.seconds},
+                {"captures", volume.captures},
+                {"scene_preparations", volume.scenePreparations},
+                {"vpls", volume.vpls},
+                {"device", volume.device}};
+  return j.dump(2) + "\n";
+}
+
+void writeOutputs(const config::RunConfig& config, const NlosScanGeometry& scan,
+                  const NlosVolume& volume, const RunOptions& options,
+                  const std::filesystem::path& dir, RunSummary& summary) {
+  const auto grid = [](const std::array<int32_t, 2>& g) {
+    return io::NpyShape{std::size_t(g[0]), std::size_t(g[1]), 3};
+  };
+  std::vector<std::string>& files = summary.files;
+  if (config.output.transient) {
+    io::writeNpy(dir / "H.npy", volume.shape, volume.H.data());
+    files.push_back("H.npy");
+  }
+  io::writeNpy(dir / "sensor_grid_xyz.npy", grid(scan.sensorGrid), flat(scan.sensorPoints).data());
+  files.push_back("sensor_grid_xyz.npy");
+  io::writeNpy(dir / "laser_grid_xyz.npy", grid(scan.laserGrid), flat(scan.laserPoints).data());
+  files.push_back("laser_grid_xyz.npy");
+  std::vector<std::string> listed = files;
+  listed.push_back("config.effective.yaml");
+  writeFileAtomically(dir / "H.json", nlosMetadataJson(config, scan, volume, listed));
+  files.push_back("H.json");
+  writeFileAtomically(dir / "config.effective.yaml", config::effectiveConfigYaml(config));
+  files.push_back("config.effective.yaml");
+  if (options.batchManifest) {  // last: it exists only once the files it lists do
+    writeManifest(dir, options.batchManifest->runName, files, options.batchManifest->inputs);
+    files.push_back(kManifestName);
+  }
+}
+
+// H's bytes against output.max_bytes, before rendering.
+void checkSize(const config::RunConfig& config, const NlosScanGeometry& scan) {
+  double bytes = 4.0 * config.render.time.bins;
+  for (std::size_t n : scan.pointShape()) bytes *= static_cast<double>(n);
+  if (config.nlos->hdf5) bytes *= 2.0;  // H.npy and capture.hdf5 (compressed: at most)
+  if (bytes > static_cast<double>(config.output.max_bytes)) {
+    throw InputError(FileLoc{config.config_file.string()}, "output.max_bytes",
+                     "the capture's H would take " + std::to_string(bytes / 1048576.0) +
+                         " MiB (time.bins x the grids' points x 4 B), more than max_bytes");
+  }
+}
+
+}  // namespace
+
+RunSummary runNlosRender(const config::RunConfig& config, const RunOptions& options) {
+  Progress progress("render", options.quiet);
+  const scene::Scene scene = scene::loadGltf(config.scene_file);
+  const NlosScanGeometry scan = planNlosScan(config, scene);
+  checkSize(config, scan);
+  RunSummary summary;
+  summary.outputDirectory =
+      options.outputDirectory.empty() ? config.output.directory : options.outputDirectory;
+  StagedFolder folder(summary.outputDirectory, [](const std::string& n) { return n == "log.txt"; });
+  const NlosVolume volume = renderNlosScan(
+      config, scene, scan, [&](std::size_t done, std::size_t total, const std::string& what) {
+        progress.update(done, total, what);
+      });
+  summary.backend = "cpu";
+  summary.device = volume.device;
+  summary.result.seconds = volume.seconds;
+  summary.result.vpls = volume.vpls;
+  progress.message("nlos: " + std::to_string(volume.captures) + " laser position(s), " +
+                   std::to_string(volume.scenePreparations) + " scene preparation(s)");
+  writeOutputs(config, scan, volume, options, folder.staging(), summary);
+  throwIfInterrupted();
+  folder.commit();
+  return summary;
+}
+
+}  // namespace tofsim::pipeline
