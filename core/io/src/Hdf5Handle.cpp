@@ -25,6 +25,10 @@ void throwH5(const std::filesystem::path& path, const std::string& field, const 
   std::string detail;
   H5Ewalk2(H5E_DEFAULT, H5E_WALK_UPWARD, keepFirst, &detail);
   H5Eclear2(H5E_DEFAULT);
+  // One line, as InputError's what() is (HDF5's messages embed ctime's '\n').
+  for (char& ch : detail) {
+    if (ch == '\n') ch = ' ';
+  }
   throw InputError(FileLoc{path.string()}, field,
                    detail.empty() ? what : what + " (HDF5: " + detail + ")");
 }

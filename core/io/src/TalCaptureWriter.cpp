@@ -1,16 +1,15 @@
 // writeTalCapture: the 14 datasets of y-tal's layout, each with the dtype
-// h5py gives the value tal render writes, into a temporary renamed into place.
-#include <fcntl.h>
-#include <unistd.h>
-
+// h5py gives the value tal render writes, built in memory and written through
+// AtomicFile (a temporary renamed into place).
 #include <algorithm>
 #include <cstdint>
 #include <string>
-#include <system_error>
+#include <vector>
 
 #include "Hdf5Handle.h"
 #include "TalLayout.h"
 #include "tofsim/io/TalCapture.h"
+#include "tofsim/util/AtomicFile.h"
 #include "tofsim/util/Error.h"
 
 namespace tofsim::io {
@@ -23,44 +22,6 @@ using detail::H5File;
 using detail::H5PropList;
 using detail::H5Space;
 using detail::H5Type;
-
-/// "<path>.tmp-<pid>" beside the final file (same directory, so the rename is
-/// atomic), removed on destruction unless commit() renamed it into place.
-class TemporaryFile {
- public:
-  explicit TemporaryFile(std::filesystem::path finalPath) : final_(std::move(finalPath)) {
-    temp_ = final_;
-    temp_ += ".tmp-" + std::to_string(::getpid());
-  }
-  ~TemporaryFile() {
-    std::error_code ec;
-    if (!committed_) std::filesystem::remove(temp_, ec);
-  }
-  TemporaryFile(const TemporaryFile&) = delete;
-  TemporaryFile& operator=(const TemporaryFile&) = delete;
-
-  const std::filesystem::path& path() const { return temp_; }
-
-  /// fsync, then rename: a crash after the rename must not expose a file
-  /// whose data never reached the disk (HDF5's close only write()s).
-  void commit() {
-    const int fd = ::open(temp_.c_str(), O_RDONLY);
-    const bool synced = fd >= 0 && ::fsync(fd) == 0;
-    if (fd >= 0) ::close(fd);
-    if (!synced) throw InputError(FileLoc{final_.string()}, "", "cannot sync the written file");
-    std::error_code ec;
-    std::filesystem::rename(temp_, final_, ec);
-    if (ec) {
-      throw InputError(FileLoc{final_.string()}, "", "cannot rename into place: " + ec.message());
-    }
-    committed_ = true;
-  }
-
- private:
-  std::filesystem::path final_;
-  std::filesystem::path temp_;
-  bool committed_ = false;
-};
 
 // One chunk holds the whole time axis of a few neighbouring points,
 // {T, 1, ..., 1, k}: reading one point's histogram H[:, i, j] (tal's
@@ -179,11 +140,23 @@ void writeGrid(Writer& w, const TalGrid& grid, const std::string& prefix) {
 
 void writeTalCapture(const std::filesystem::path& path, const TalCapture& capture) {
   detail::validateTalCapture(capture, path);
+  // The temporary first: a missing directory fails before any compression.
+  AtomicFile out(path);
   const detail::H5QuietErrors quiet;
-  TemporaryFile temp(path);  // declared first: destroyed after the file is closed
+  // HDF5 builds the file in memory (the core driver, no backing store) and
+  // tofsim writes the image. On a file on disk, a failed write (disk full)
+  // makes H5Fclose fail and leaves the file open inside HDF5 1.10, which then
+  // crashes at exit trying to flush it again; in memory nothing can fail half
+  // way, and AtomicFile turns a short write into an error, removing the
+  // temporary. Costs one extra copy of the (compressed) file in memory.
+  std::vector<unsigned char> image;
   {
-    H5File file(H5Fcreate(temp.path().c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT));
-    if (!file.valid()) detail::throwH5(path, "", "cannot create " + temp.path().string());
+    const H5PropList fapl(
+        h5Check(H5Pcreate(H5P_FILE_ACCESS), path, "", "cannot make a file access list"));
+    h5Check(H5Pset_fapl_core(fapl.get(), std::size_t{64} << 20, false), path, "",
+            "cannot select HDF5's in-memory driver");
+    const H5File file(H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, fapl.get()));
+    if (!file.valid()) detail::throwH5(path, "", "cannot create the file in memory");
     Writer w(file.get(), path);
     w.compressedFloats("H", capture.H_shape, capture.H.data());
     w.enumInt32("H_format", detail::kTalHFormatMembers, static_cast<int32_t>(capture.H_format));
@@ -195,11 +168,17 @@ void writeTalCapture(const std::filesystem::path& path, const TalCapture& captur
     w.float64Scalar("t_start", capture.t_start_m);
     w.h5pyBool("t_accounts_first_and_last_bounces", capture.t_accounts_first_and_last_bounces);
     w.utf8String("scene_info", capture.scene_info_yaml);
-    // Closing flushes the metadata and the last chunks: a failure here (disk
-    // full) is a failed write.
-    if (!file.close()) detail::throwH5(path, "", "cannot finish writing the file");
+    // Flush first: H5Fget_file_image alone leaves metadata in HDF5's cache
+    // out of the image (the file then fails to open: "bad object header").
+    h5Check(H5Fflush(file.get(), H5F_SCOPE_GLOBAL), path, "", "cannot finish the file");
+    const ssize_t size =
+        h5Check(H5Fget_file_image(file.get(), nullptr, 0), path, "", "cannot finish the file");
+    image.resize(static_cast<std::size_t>(size));
+    h5Check(H5Fget_file_image(file.get(), image.data(), image.size()), path, "",
+            "cannot finish the file");
   }
-  temp.commit();
+  out.write(image.data(), image.size());
+  out.commit();
 }
 
 }  // namespace tofsim::io
