@@ -165,15 +165,16 @@ TEST_F(TalCaptureTest, FailedWriteLeavesTheOldFileIntact) {
   EXPECT_EQ(filesInDir(), std::vector<std::string>{"c.hdf5"});
 }
 
-// A failure after the temporary exists (the temporary's name is taken by a
-// directory HDF5 cannot create a file over): the old file stays, nothing is left.
-TEST_F(TalCaptureTest, FailureDuringWriteLeavesTheOldFileAndNoTemporary) {
+// The temporary cannot be created (its name is taken by a directory): the
+// old file stays, and the directory, not ours, is not removed.
+TEST_F(TalCaptureTest, UncreatableTemporaryLeavesTheOldFile) {
   const auto path = dir_ / "c.hdf5";
   writeTalCapture(path, confocalSample());
   auto blocker = path;
   blocker += ".tmp-" + std::to_string(::getpid());
   std::filesystem::create_directory(blocker);
   EXPECT_THROW(writeTalCapture(path, exhaustiveSample()), InputError);
+  EXPECT_TRUE(std::filesystem::is_directory(blocker));
   std::filesystem::remove(blocker);
   expectCaptureEq(readTalCapture(path), confocalSample());
   EXPECT_EQ(filesInDir(), std::vector<std::string>{"c.hdf5"});

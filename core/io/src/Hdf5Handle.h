@@ -1,8 +1,8 @@
 #pragma once
 // Private to tofsim_io: HDF5's C API with owned identifiers and exceptions.
 // Every hid_t the io code opens lives in an H5Handle, so an exception on any
-// path closes what was opened (a file left open would keep its temporary
-// alive and block the rename or the removal). HDF5's predefined types
+// path closes what was opened (HDF5 keeps an unclosed file, and the memory of
+// an in-memory one, until the process exits). HDF5's predefined types
 // (H5T_NATIVE_FLOAT, ...) are not owned and never wrapped.
 
 #include <hdf5.h>
