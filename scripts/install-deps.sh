@@ -9,7 +9,9 @@ packages=(
   libglm-dev libtinygltf-dev nlohmann-json3-dev libyaml-cpp-dev libcli11-dev
   libopenexr-dev libopencv-dev libgtest-dev
   libembree-dev                                      # the CPU reference path tracer
+  libhdf5-dev                                        # NLOS captures in y-tal's HDF5 layout (core/io)
   python3-dev pybind11-dev python3-numpy python3-pytest  # the Python module and its tests
+  python3-h5py                                       # tests/io/tal_capture_h5py.py: the captures as h5py sees them
 )
 
 missing=()
