@@ -2,6 +2,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "NlosTalFile.h"
 #include "SensorParametersJson.h"
 #include "tofsim/io/Npy.h"
 #include "tofsim/pipeline/Manifest.h"
@@ -95,6 +96,10 @@ void writeOutputs(const config::RunConfig& config, const NlosScanGeometry& scan,
   files.push_back("sensor_grid_xyz.npy");
   io::writeNpy(dir / "laser_grid_xyz.npy", grid(scan.laserGrid), flat(scan.laserPoints).data());
   files.push_back("laser_grid_xyz.npy");
+  if (config.nlos->hdf5) {
+    io::writeTalCapture(dir / "capture.hdf5", talCaptureOf(config, scan, volume));
+    files.push_back("capture.hdf5");
+  }
   std::vector<std::string> listed = files;
   listed.push_back("config.effective.yaml");
   writeFileAtomically(dir / "H.json", nlosMetadataJson(config, scan, volume, listed));
