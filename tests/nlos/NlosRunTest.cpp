@@ -1,0 +1,140 @@
+// `tofsim render` of an nlos config through the pipeline: the files it writes
+// (H.npy, H.json, the grids, capture.hdf5 in y-tal's layout) agree with each
+// other and with the render, and bad input stops the run before anything is
+// written.
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "support/TempDir.h"
+#include "tofsim/config/RunConfig.h"
+#include "tofsim/io/Npy.h"
+#include "tofsim/io/TalCapture.h"
+#include "tofsim/pipeline/RenderRun.h"
+#include "tofsim/util/Error.h"
+
+namespace tofsim::pipeline {
+namespace {
+
+const std::filesystem::path kConfigs = std::filesystem::path(TOFSIM_SOURCE_DIR) / "configs";
+
+// The example scene (a letter T and a patch behind a 1 m wall), a small scan.
+std::string smallScan(const std::string& scan, const std::string& extra = "") {
+  return "scene: scenes/nlos_letter.gltf\n"
+         "nlos:\n"
+         "  relay_wall: wall\n"
+         "  scan: " +
+         scan +
+         "\n"
+         "  sensor_grid: [6, 5]\n"
+         "  sensor_origin: [-0.5, 0, 0.25]\n"
+         "  laser_origin: [-0.4, 0.1, 0.25]\n" +
+         extra +
+         "time: {start: 0.5 m, bin_width: 2 cm, bins: 128}\n"
+         "render: {indirect: {rsm_resolution: 32, visibility: exact}}\n";
+}
+
+class NlosRunTest : public test::TempDirTest {
+ protected:
+  RunSummary run(const std::string& yaml) {
+    const config::RunConfig c = config::loadRunConfigText(yaml, kConfigs / "test_nlos.yaml");
+    RunOptions options;
+    options.outputDirectory = dir_ / "out";
+    options.quiet = true;
+    return runRender(c, options);
+  }
+};
+
+TEST_F(NlosRunTest, TheHdf5HoldsWhatTheNpyFilesAndTheJsonSay) {
+  const RunSummary s = run(smallScan("exhaustive", "  laser_grid: [2, 3]\n"));
+  const std::filesystem::path out = dir_ / "out";
+  for (const char* f : {"H.npy", "H.json", "sensor_grid_xyz.npy", "laser_grid_xyz.npy",
+                        "capture.hdf5", "config.effective.yaml"}) {
+    EXPECT_TRUE(std::filesystem::exists(out / f)) << f;
+  }
+  const io::NpyArray h = io::readNpy(out / "H.npy");
+  EXPECT_EQ(h.shape, (std::vector<std::size_t>{128, 2, 3, 6, 5}));
+  const io::TalCapture tal = io::readTalCapture(out / "capture.hdf5");
+  EXPECT_EQ(tal.H_shape, h.shape);
+  EXPECT_EQ(tal.H, h.data);
+  EXPECT_EQ(tal.H_format, io::TalHFormat::T_Lx_Ly_Sx_Sy);
+  double energy = 0.0;
+  for (float v : h.data) energy += v;
+  EXPECT_GT(energy, 0.0);
+  EXPECT_NEAR(tal.delta_t_m, 0.02, 1e-12);
+  EXPECT_NEAR(tal.t_start_m, 0.5, 1e-12);
+  EXPECT_FALSE(tal.t_accounts_first_and_last_bounces);
+  EXPECT_EQ(tal.sensor_grid.shape, (std::vector<std::size_t>{6, 5, 3}));
+  EXPECT_EQ(tal.laser_grid.shape, (std::vector<std::size_t>{2, 3, 3}));
+  EXPECT_EQ(tal.sensor_grid.xyz, io::readNpy(out / "sensor_grid_xyz.npy").data);
+  EXPECT_EQ(tal.laser_grid.xyz, io::readNpy(out / "laser_grid_xyz.npy").data);
+  // tal's grid: a 1 m wall at z = 0 sampled at cell centres, x index major.
+  EXPECT_FLOAT_EQ(tal.sensor_grid.xyz[0], -0.5f + 0.5f / 6.0f);
+  EXPECT_FLOAT_EQ(tal.sensor_grid.xyz[1], -0.5f + 0.5f / 5.0f);
+  EXPECT_FLOAT_EQ(tal.sensor_grid.xyz[3 * 1 + 1], -0.5f + 1.5f / 5.0f);  // (0, 1): y steps first
+  EXPECT_EQ(tal.sensor_grid.normals[2], 1.0f);
+  EXPECT_EQ(tal.sensor_xyz, (std::array<float, 3>{-0.5f, 0.0f, 0.25f}));
+  EXPECT_EQ(tal.laser_xyz, (std::array<float, 3>{-0.4f, 0.1f, 0.25f}));
+  EXPECT_NE(tal.scene_info_yaml.find("tofsim_version"), std::string::npos);
+  EXPECT_NE(tal.scene_info_yaml.find("relay_wall: wall"), std::string::npos);
+  nlohmann::json j;
+  std::ifstream(out / "H.json") >> j;
+  EXPECT_EQ(j["axes"], (nlohmann::json{"t", "lx", "ly", "sx", "sy"}));
+  EXPECT_EQ(j["scan"], "exhaustive");
+  EXPECT_EQ(j["stats"]["captures"], 6);
+  EXPECT_NEAR(j["delta_t_m"].get<double>(), 0.02, 1e-12);
+  EXPECT_EQ(s.files.size(), 6u);
+}
+
+TEST_F(NlosRunTest, ConfocalFileIsConfocalAndHdf5CanBeLeftOut) {
+  run(smallScan("confocal", "  hdf5: false\n"));
+  const std::filesystem::path out = dir_ / "out";
+  EXPECT_FALSE(std::filesystem::exists(out / "capture.hdf5"));
+  EXPECT_EQ(io::readNpy(out / "H.npy").shape, (std::vector<std::size_t>{128, 6, 5}));
+  EXPECT_EQ(io::readNpy(out / "laser_grid_xyz.npy").data,
+            io::readNpy(out / "sensor_grid_xyz.npy").data);
+}
+
+// Each bad input fails with the config's file, line and key, and leaves no
+// output folder behind.
+TEST_F(NlosRunTest, BadInputIsALocatedErrorAndWritesNothing) {
+  const struct {
+    std::string yaml;
+    std::string expected;
+  } cases[] = {
+      {smallScan("confocal", "  relay_wall: ghost\n"), "nlos.relay_wall"},
+      {smallScan("confocal", "  laser_origin: [0, 0, -1]\n"), "nlos.laser_origin"},
+      {smallScan("confocal", "  sensor_grid: [0, 4]\n"), "nlos.sensor_grid"},
+      {smallScan("confocal", "  laser_grid: [2, 2]\n"), "nlos.laser_grid"},
+      {smallScan("single", "  laser_point: [1.5, 0.5]\n"), "nlos.laser_point"},
+      {smallScan("sideways"), "nlos.scan"},
+      {smallScan("confocal") + "camera: {}\n", "camera"},
+      {smallScan("confocal") + "output: {video: true}\n", "output.video"},
+  };
+  for (const auto& c : cases) {
+    SCOPED_TRACE(c.expected);
+    try {
+      // Duplicate keys are YAML errors; the later key must replace the earlier
+      // one, so drop the default line the case overrides.
+      std::string yaml = c.yaml;
+      for (const char* key : {"relay_wall", "laser_origin", "sensor_grid"}) {
+        const std::string line = std::string("  ") + key + ":";
+        const std::size_t first = yaml.find(line), last = yaml.rfind(line);
+        if (first != last) yaml.erase(first, yaml.find('\n', first) - first + 1);
+      }
+      run(yaml);
+      ADD_FAILURE() << "no error";
+    } catch (const InputError& e) {
+      const std::string what = e.what();
+      EXPECT_NE(what.find(c.expected), std::string::npos) << what;
+      EXPECT_NE(what.find("test_nlos.yaml:"), std::string::npos) << what;  // file:line
+    }
+    EXPECT_FALSE(std::filesystem::exists(dir_ / "out" / "H.npy"));
+  }
+}
+
+}  // namespace
+}  // namespace tofsim::pipeline
