@@ -16,6 +16,7 @@
 
 #include "Arrays.h"
 #include "Bindings.h"
+#include "NlosBinding.h"
 #include "tofsim/capture/VolumeCollector.h"
 #include "tofsim/io/Npy.h"
 #include "tofsim/pipeline/AxisReport.h"
@@ -216,6 +217,10 @@ py::dict toPython(Rendered& r, const TimeAxis& axis) {
 py::dict render(const config::RunConfig& config, const std::optional<std::string>& outputDir,
                 bool quiet) {
   const bool mainThread = onMainThread();
+  if (config.nlos) {
+    SigintScope sigint(mainThread);
+    return renderNlos(config, outputDir, quiet);
+  }
   Rendered r;
   {
     py::gil_scoped_release released;

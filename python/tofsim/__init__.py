@@ -14,12 +14,13 @@ bad input raises ConfigError (a ValueError) with file, line, column and key.
 
 from ._tofsim import Config, ConfigError
 from ._config import load_config
-from ._render import RenderResult, TimeAxis, render
+from ._render import NlosResult, RenderResult, TimeAxis, render
 from ._sense import SensorResult, SensorWarning, sense
 
 __all__ = [
     "Config",
     "ConfigError",
+    "NlosResult",
     "RenderResult",
     "SensorResult",
     "SensorWarning",

@@ -59,8 +59,43 @@ class RenderResult:
     output_dir: object = None
 
 
+@dataclass
+class NlosResult:
+    """What tofsim.render returns for an `nlos:` config (configs/README.md,
+    `nlos`), in y-tal's vocabulary (tal.io.read_capture's fields).
+
+    H: float32, (T, sx, sy) for single and confocal scans, (T, lx, ly, sx, sy)
+      for exhaustive ones: radiance per bin at each sensor point, summed over
+      R, G, B; None with output_dir when output.transient is false
+    H_format: "T_Sx_Sy" or "T_Lx_Ly_Sx_Sy"
+    scan: "single", "confocal" or "exhaustive"
+    sensor_grid_xyz, laser_grid_xyz: (X, Y, 3) wall points, x index major
+    wall_normal, sensor_xyz, laser_xyz: [x, y, z]
+    t_accounts_first_and_last_bounces: the time convention (nlos.account_first_and_last_bounces)
+    time: the TimeAxis of the T bins (start_m, bin_width_m: y-tal's t_start, delta_t)
+    stats: seconds, captures (laser positions), vpls
+    device, files, output_dir: as for RenderResult
+    """
+
+    H: object
+    H_format: str
+    scan: str
+    sensor_grid_xyz: object
+    laser_grid_xyz: object
+    wall_normal: list
+    sensor_xyz: list
+    laser_xyz: list
+    t_accounts_first_and_last_bounces: bool
+    time: TimeAxis
+    stats: dict
+    device: str
+    files: list
+    output_dir: object = None
+
+
 def render(config, renderer=None, backend=None, output_dir=None, quiet=True):
-    """Renders a config (a Config, or anything load_config takes).
+    """Renders a config (a Config, or anything load_config takes): a
+    RenderResult, or an NlosResult for a config with `nlos:`.
 
     renderer: "ir" or "reference", overriding render.renderer.
     backend: overrides render.backend (rejected as an unknown key where this
@@ -82,4 +117,6 @@ def render(config, renderer=None, backend=None, output_dir=None, quiet=True):
     out = _tofsim._render(config, None if output_dir is None else str(output_dir), quiet)
     out["time"] = TimeAxis(**out["time"])
     out["output_dir"] = output_dir
+    if "H_format" in out:
+        return NlosResult(**out)
     return RenderResult(**out)
