@@ -30,6 +30,7 @@ void checkParams(const SpadParams& p) {
   TOFSIM_CHECK(p.pde >= 0.0 && p.pde <= 1.0);
   TOFSIM_CHECK(p.ambient_rate_per_s >= 0.0 && p.dark_count_rate_per_s >= 0.0);
   TOFSIM_CHECK(p.dead_time_s >= 0.0);
+  TOFSIM_CHECK(p.gate_width_s >= 0.0);
 }
 
 // Per-cycle flux of one pixel from its render bins (signal in photo-electrons).
@@ -42,6 +43,15 @@ void fluxFromSignal(const std::vector<double>& signal, const TimeAxis& render, c
   const double background =
       p.pde * p.ambient_rate_per_s * axis.bin_width_s + p.dark_count_rate_per_s * axis.bin_width_s;
   for (double& f : flux) f = p.pde * std::max(0.0, f) + background;
+  if (p.gate_width_s > 0.0) {
+    // The armed fraction of each bin: a disarmed detector sees nothing, so the
+    // first-photon and dead-time laws run on the gated flux alone.
+    const double g0 = p.gate_start_s, g1 = p.gate_start_s + p.gate_width_s;
+    for (int32_t i = 0; i < axis.bins; ++i) {
+      const double b0 = axis.start_s + i * axis.bin_width_s, b1 = b0 + axis.bin_width_s;
+      flux[i] *= std::max(0.0, std::min(b1, g1) - std::max(b0, g0)) / axis.bin_width_s;
+    }
+  }
 }
 
 SensorOutput image(const std::string& name, int32_t H, int32_t W, std::vector<float> data,

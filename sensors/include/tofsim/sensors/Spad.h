@@ -34,6 +34,12 @@ struct SpadParams {
   double ambient_rate_per_s = 0.0;     ///< ambient photons arriving at the pixel, 1/s (PDE applies)
   double dark_count_rate_per_s = 0.0;  ///< dark counts, 1/s
   double dead_time_s = 0.0;            ///< free-running: non-paralysable, rounded to TDC bins
+  /// Time gating: the detector is armed only in [gate_start, gate_start +
+  /// gate_width) of each cycle (times as the TDC's), so light, ambient and
+  /// dark counts outside cause no detection and no pile-up; a bin the gate
+  /// edge crosses is armed for its covered fraction. 0 width: always armed.
+  double gate_start_s = 0.0;
+  double gate_width_s = 0.0;
   std::vector<std::array<int32_t, 2>> plot_pixels;  ///< (x, y) pixels to plot; empty = centre
   std::string colormap = "turbo";
 };
