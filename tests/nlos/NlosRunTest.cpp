@@ -86,7 +86,7 @@ TEST_F(NlosRunTest, TheHdf5HoldsWhatTheNpyFilesAndTheJsonSay) {
   EXPECT_EQ(j["scan"], "exhaustive");
   EXPECT_EQ(j["stats"]["captures"], 6);
   EXPECT_NEAR(j["delta_t_m"].get<double>(), 0.02, 1e-12);
-  EXPECT_EQ(s.files.size(), 6u);
+  EXPECT_EQ(s.files.size(), 7u);
 }
 
 TEST_F(NlosRunTest, ConfocalFileIsConfocalAndHdf5CanBeLeftOut) {
@@ -96,6 +96,53 @@ TEST_F(NlosRunTest, ConfocalFileIsConfocalAndHdf5CanBeLeftOut) {
   EXPECT_EQ(io::readNpy(out / "H.npy").shape, (std::vector<std::size_t>{128, 6, 5}));
   EXPECT_EQ(io::readNpy(out / "laser_grid_xyz.npy").data,
             io::readNpy(out / "sensor_grid_xyz.npy").data);
+}
+
+// A SPAD per sensor point sees H plus the laser spot's first bounce (at path
+// 0 in a confocal scan); gated after it, it counts nothing there and the
+// hidden light instead; its counts come back as a y-tal file on its TDC axis.
+TEST_F(NlosRunTest, AGatedSpadKeepsTheFirstBounceOutAndWritesItsNoisyH) {
+  const std::string spad =
+      "sensors:\n"
+      "  - {type: spad, name: open, cycles: 20000, pde: 0.5, source_scale: 1}\n"
+      "  - {type: spad, name: gated, cycles: 20000, pde: 0.5, source_scale: 1,\n"
+      "     gate_start: 0.9 m, gate_width: 2 m}\n";
+  std::string yaml = smallScan("confocal") + spad;
+  yaml.replace(yaml.find("start: 0.5 m"), 12, "start: 0 m");  // the spot's return at path 0
+  run(yaml);
+  const std::filesystem::path out = dir_ / "out";
+  const io::NpyArray first = io::readNpy(out / "first_bounce.npy");
+  const io::NpyArray h = io::readNpy(out / "H.npy");
+  ASSERT_EQ(first.shape, h.shape);
+  // The first bounce: bin 0 of every point holds the spot's return, nothing after it.
+  const std::size_t points = 30;
+  for (std::size_t p = 0; p < points; ++p) {
+    EXPECT_GT(first.data[0 * points + p], 1.0f) << p;
+    for (std::size_t t = 1; t < 128; ++t) ASSERT_EQ(first.data[t * points + p], 0.0f);
+  }
+  const io::NpyArray open = io::readNpy(out / "sensors/open/spad_counts.npy");
+  const io::NpyArray gated = io::readNpy(out / "sensors/gated/spad_counts.npy");
+  ASSERT_EQ(open.shape, (std::vector<std::size_t>{6, 5, 128}));
+  double openFirst = 0.0, gatedBefore = 0.0, openHidden = 0.0, gatedHidden = 0.0;
+  for (std::size_t p = 0; p < points; ++p) {
+    openFirst += open.data[p * 128];
+    for (std::size_t t = 0; t < 128; ++t) {
+      const bool beforeGate = 0.02 * (t + 1) <= 0.9;
+      if (beforeGate) gatedBefore += gated.data[p * 128 + t];
+      if (t >= 50) {  // the letter, 0.5 m behind the wall, from 1 m of path
+        openHidden += open.data[p * 128 + t];
+        gatedHidden += gated.data[p * 128 + t];
+      }
+    }
+  }
+  EXPECT_GT(openFirst, 0.9 * 20000 * points);  // the first bounce takes almost every cycle
+  EXPECT_EQ(gatedBefore, 0.0);
+  EXPECT_GT(gatedHidden, 10.0 * openHidden + 100.0);  // the hidden light, no longer blinded
+  const io::TalCapture noisy = io::readTalCapture(out / "sensors/gated/capture.hdf5");
+  EXPECT_EQ(noisy.H_shape, (std::vector<std::size_t>{128, 6, 5}));
+  EXPECT_NEAR(noisy.delta_t_m, 0.02, 1e-9);
+  EXPECT_NEAR(noisy.t_start_m, 0.0, 1e-9);
+  EXPECT_EQ(noisy.H[60 * points + 7], gated.data[7 * 128 + 60]);  // (t, point) <- (point, t)
 }
 
 // Each bad input fails with the config's file, line and key, and leaves no

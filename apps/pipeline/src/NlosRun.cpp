@@ -2,6 +2,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "NlosFirstBounce.h"
+#include "NlosSensors.h"
 #include "NlosTalFile.h"
 #include "SensorParametersJson.h"
 #include "tofsim/io/Npy.h"
@@ -49,6 +51,10 @@ std::string nlosMetadataJson(const config::RunConfig& config, const NlosScanGeom
       "point (lx, ly), sensor point (sx, sy) of the grids (x index major, x along the wall's "
       "x_axis, y along its y_axis); float32, C order; y-tal's T_Sx_Sy / T_Lx_Ly_Sx_Sy";
   j["value_unit"] = "W m^-2 sr^-1";
+  j["first_bounce_doc"] =
+      "first_bounce.npy (H's shape): the laser spot's own return, the spot's radiance averaged "
+      "over the sensor point's grid cell where the cell holds the spot (every point of a confocal "
+      "scan), in the bin of its path; not in H or capture.hdf5; the sensors see H + first_bounce";
   j["value_doc"] =
       "radiance at the sensor point towards sensor_origin arriving within the bin, summed over "
       "R, G and B (as tal render's H), for an impulse of the laser at t = 0; only light that "
@@ -82,8 +88,9 @@ std::string nlosMetadataJson(const config::RunConfig& config, const NlosScanGeom
 }
 
 void writeOutputs(const config::RunConfig& config, const NlosScanGeometry& scan,
-                  const NlosVolume& volume, const RunOptions& options,
-                  const std::filesystem::path& dir, RunSummary& summary) {
+                  const NlosVolume& volume, const std::vector<float>& firstBounce,
+                  const RunOptions& options, const std::filesystem::path& dir,
+                  const Progress& progress, RunSummary& summary) {
   const auto grid = [](const std::array<int32_t, 2>& g) {
     return io::NpyShape{std::size_t(g[0]), std::size_t(g[1]), 3};
   };
@@ -91,6 +98,8 @@ void writeOutputs(const config::RunConfig& config, const NlosScanGeometry& scan,
   if (config.output.transient) {
     io::writeNpy(dir / "H.npy", volume.shape, volume.H.data());
     files.push_back("H.npy");
+    io::writeNpy(dir / "first_bounce.npy", volume.shape, firstBounce.data());
+    files.push_back("first_bounce.npy");
   }
   io::writeNpy(dir / "sensor_grid_xyz.npy", grid(scan.sensorGrid), flat(scan.sensorPoints).data());
   files.push_back("sensor_grid_xyz.npy");
@@ -99,6 +108,9 @@ void writeOutputs(const config::RunConfig& config, const NlosScanGeometry& scan,
   if (config.nlos->hdf5) {
     io::writeTalCapture(dir / "capture.hdf5", talCaptureOf(config, scan, volume));
     files.push_back("capture.hdf5");
+  }
+  for (std::string& f : runNlosSensors(config, scan, volume, firstBounce, dir, progress)) {
+    files.push_back(std::move(f));
   }
   std::vector<std::string> listed = files;
   listed.push_back("config.effective.yaml");
@@ -145,7 +157,8 @@ RunSummary runNlosRender(const config::RunConfig& config, const RunOptions& opti
   summary.result.vpls = volume.vpls;
   progress.message("nlos: " + std::to_string(volume.captures) + " laser position(s), " +
                    std::to_string(volume.scenePreparations) + " scene preparation(s)");
-  writeOutputs(config, scan, volume, options, folder.staging(), summary);
+  const std::vector<float> firstBounce = nlosFirstBounce(config, scan, scene, volume.axis);
+  writeOutputs(config, scan, volume, firstBounce, options, folder.staging(), progress, summary);
   throwIfInterrupted();
   folder.commit();
   return summary;

@@ -370,9 +370,6 @@ void checkNlosRun(const ConfigNode& root, const RunConfig& config) {
                       "rasterizes pinhole cameras only): use `cpu` or `auto`");
     }
   }
-  if (root.has("sensors") && !root.child("sensors").elements().empty()) {
-    root.failKey("sensors", "sensors do not run on nlos captures yet; H is written as rendered");
-  }
 }
 
 }  // namespace
@@ -440,7 +437,16 @@ RunConfig loadRunConfigYaml(YAML::Node yaml, const std::filesystem::path& file,
     // misses them.
     config.sensors = parseSensors(*list);
     checkSensorNames(*list, config.sensors);
-    checkSensorsFitImage(*list, config.sensors, config.camera.camera);
+    // An nlos capture's sensor image: a row per sensor x (and laser point), a
+    // column per sensor y (apps/pipeline NlosSensors.h).
+    capture::Camera image = config.camera.camera;
+    if (config.nlos) {
+      const NlosConfig& n = *config.nlos;
+      const int32_t lasers = n.scan == NlosScan::Exhaustive ? n.laser_grid[0] * n.laser_grid[1] : 1;
+      image.width = n.sensor_grid[1];
+      image.height = n.sensor_grid[0] * lasers;
+    }
+    checkSensorsFitImage(*list, config.sensors, image);
     checkBounceOrders(*list, config);
   }
   root.reportUnusedKeys();
