@@ -7,8 +7,10 @@
 #include "tofsim/capture/VolumeCollector.h"
 #include "tofsim/ir/IrRenderer.h"
 #include "tofsim/pipeline/RendererFactory.h"
+#include "tofsim/reference/ReferenceRenderer.h"
 #include "tofsim/util/Interrupt.h"
 #include "tofsim/util/ParallelFor.h"
+#include "tofsim/util/Random.h"
 
 namespace tofsim::pipeline {
 
@@ -17,41 +19,79 @@ namespace {
 // Fewer points per capture than this: parallel over captures instead.
 constexpr std::size_t kPointsForParallelGather = 256;
 
-// Renderers handed to the workers, each made on first need and kept, so each
-// prepares the scene once.
+reference::ReferenceSettings referenceSettings(const config::RunConfig& config, int threads) {
+  reference::ReferenceSettings settings = makeReferenceSettings(config);
+  settings.threads = threads;
+  return settings;
+}
+
+// One worker's renderer, IR over the CPU backend or the reference path
+// tracer, made on first need and kept, so that it prepares the scene once.
+struct Worker {
+  std::unique_ptr<ir::IrRenderer> ir;
+  std::unique_ptr<reference::ReferenceRenderer> reference;
+  const capture::Renderer& renderer() const {
+    if (ir) return *ir;
+    return *reference;
+  }
+  std::size_t scenePreparations() const {
+    return ir ? ir->scenePreparations() : reference->scenePreparations();
+  }
+};
+
+// The workers' renderers, handed out one per running capture.
 class RendererPool {
  public:
-  RendererPool(int backendThreads) : backendThreads_(backendThreads) {}
-  std::unique_ptr<ir::IrRenderer> take() {
+  RendererPool(const config::RunConfig& config, int rendererThreads)
+      : config_(config), rendererThreads_(rendererThreads) {}
+  Worker take() {
     {
       const std::lock_guard<std::mutex> lock(mutex_);
       if (!free_.empty()) {
-        auto r = std::move(free_.back());
+        Worker w = std::move(free_.back());
         free_.pop_back();
-        return r;
+        return w;
       }
     }
-    return std::make_unique<ir::IrRenderer>(
-        makeIrBackend(config::IrBackendKind::Cpu, gl::EglPlatform::Auto, backendThreads_));
+    Worker w;
+    if (config_.renderer == config::RendererKind::Reference) {
+      w.reference = std::make_unique<reference::ReferenceRenderer>(
+          referenceSettings(config_, rendererThreads_));
+    } else {
+      w.ir = std::make_unique<ir::IrRenderer>(
+          makeIrBackend(config::IrBackendKind::Cpu, gl::EglPlatform::Auto, rendererThreads_));
+    }
+    return w;
   }
-  void give(std::unique_ptr<ir::IrRenderer> r) {
+  void give(Worker w) {
     const std::lock_guard<std::mutex> lock(mutex_);
-    free_.push_back(std::move(r));
+    free_.push_back(std::move(w));
   }
   std::size_t scenePreparations() const {
     std::size_t n = 0;
-    for (const auto& r : free_) n += r->scenePreparations();
+    for (const auto& w : free_) n += w.scenePreparations();
     return n;
   }
-  std::string description() const { return free_.empty() ? "" : free_.front()->description(); }
+  std::string description() const {
+    return free_.empty() ? "" : free_.front().renderer().description();
+  }
 
  private:
-  int backendThreads_;
+  const config::RunConfig& config_;
+  int rendererThreads_;
   std::mutex mutex_;
-  std::vector<std::unique_ptr<ir::IrRenderer>> free_;
+  std::vector<Worker> free_;
 };
 
 }  // namespace
+
+uint64_t nlosCaptureSeed(uint64_t seed, std::size_t capture) {
+  // Pcg32::forUnit's mix of (seed, index), one level up: capture c's pixels
+  // draw from forUnit(nlosCaptureSeed(seed, c), pixel).
+  uint64_t index = capture;
+  uint64_t mix = seed ^ splitMix64(index);
+  return splitMix64(mix);
+}
 
 NlosVolume renderNlosScan(const config::RunConfig& config, const scene::Scene& scene,
                           const NlosScanGeometry& scan, const capture::ProgressCallback& progress) {
@@ -66,11 +106,12 @@ NlosVolume renderNlosScan(const config::RunConfig& config, const scene::Scene& s
   for (std::size_t n : scan.pointShape()) out.shape.push_back(n);
   out.H.assign(bins * points, 0.0f);
 
-  const int threads = resolveThreads(config.cpu_threads);
+  const bool reference = config.renderer == config::RendererKind::Reference;
+  const int threads = resolveThreads(reference ? config.reference.threads : config.cpu_threads);
   const bool overCaptures = perCapture < kPointsForParallelGather && out.captures > 1;
   const int workers = overCaptures ? threads : 1;
   const int backendThreads = overCaptures ? 1 : threads;
-  RendererPool pool(backendThreads);
+  RendererPool pool(config, backendThreads);
   std::mutex progressMutex;
   std::size_t done = 0, vpls = 0;
 
@@ -87,11 +128,13 @@ NlosVolume renderNlosScan(const config::RunConfig& config, const scene::Scene& s
     // Points are points: no sub-pixel samples (their steps are zero).
     job.settings.pixel_samples = 1;
     job.settings.adaptive_pixel_samples = false;
+    // The reference's paths: their own per laser position (see nlosCaptureSeed).
+    if (reference) job.settings.seed = nlosCaptureSeed(config.render.seed, c);
     capture::VolumeCollector collector(static_cast<int32_t>(perCapture), 1, job.settings.time,
                                        capture::kChannels);
-    std::unique_ptr<ir::IrRenderer> renderer = pool.take();
-    const capture::RenderResult result = renderer->render(job, collector);
-    pool.give(std::move(renderer));
+    Worker worker = pool.take();
+    const capture::RenderResult result = worker.renderer().render(job, collector);
+    pool.give(std::move(worker));
     // H[t, point] = R + G + B of the indirect light (tal render's sum).
     const float* v = collector.indirect.data();
     for (std::size_t k = 0; k < perCapture; ++k) {

@@ -79,6 +79,7 @@ std::string nlosMetadataJson(const config::RunConfig& config, const NlosScanGeom
   j["laser_power_W"] = vec(nlos.laser_power_W);
   j["laser_falloff"] =
       nlos.laser_falloff == config::LaserFalloff::Projector ? "projector" : "collimated";
+  j["renderer"] = config.renderer == config::RendererKind::Reference ? "reference" : "ir";
   j["stats"] = {{"render_seconds", volume.seconds},
                 {"captures", volume.captures},
                 {"scene_preparations", volume.scenePreparations},
@@ -151,7 +152,7 @@ RunSummary runNlosRender(const config::RunConfig& config, const RunOptions& opti
       config, scene, scan, [&](std::size_t done, std::size_t total, const std::string& what) {
         progress.update(done, total, what);
       });
-  summary.backend = "cpu";
+  summary.backend = config.renderer == config::RendererKind::Reference ? "reference" : "cpu";
   summary.device = volume.device;
   summary.result.seconds = volume.seconds;
   summary.result.vpls = volume.vpls;

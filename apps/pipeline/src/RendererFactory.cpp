@@ -22,19 +22,24 @@ std::unique_ptr<ir::IrBackend> makeIrBackend(config::IrBackendKind backend,
   return std::make_unique<render::GlBackend>(std::make_unique<gl::Context>(eglPlatform));
 }
 
+reference::ReferenceSettings makeReferenceSettings(const config::RunConfig& config) {
+  reference::ReferenceSettings settings;
+  settings.bounces = config.reference.bounces;
+  settings.samples_per_pixel = config.reference.samples_per_pixel;
+  settings.threads = config.reference.threads;
+  settings.pixel_filter = config.reference.pixel_filter == config::ReferencePixelFilter::Box
+                              ? reference::PixelFilter::Box
+                              : reference::PixelFilter::Point;
+  settings.sampling = config.reference.sampling == config::ReferenceSampling::Brdf
+                          ? reference::ContinuationSampling::BrdfMixture
+                          : reference::ContinuationSampling::Cosine;
+  return settings;
+}
+
 RendererChoice makeRenderer(const config::RunConfig& config, gl::EglPlatform eglPlatform) {
   if (config.renderer == config::RendererKind::Reference) {
-    reference::ReferenceSettings settings;
-    settings.bounces = config.reference.bounces;
-    settings.samples_per_pixel = config.reference.samples_per_pixel;
-    settings.threads = config.reference.threads;
-    settings.pixel_filter = config.reference.pixel_filter == config::ReferencePixelFilter::Box
-                                ? reference::PixelFilter::Box
-                                : reference::PixelFilter::Point;
-    settings.sampling = config.reference.sampling == config::ReferenceSampling::Brdf
-                            ? reference::ContinuationSampling::BrdfMixture
-                            : reference::ContinuationSampling::Cosine;
-    return {std::make_unique<reference::ReferenceRenderer>(settings), "reference"};
+    return {std::make_unique<reference::ReferenceRenderer>(makeReferenceSettings(config)),
+            "reference"};
   }
   const config::IrBackendKind backend = resolveIrBackend(config.backend);
   return {std::make_unique<ir::IrRenderer>(makeIrBackend(backend, eglPlatform, config.cpu_threads)),

@@ -344,8 +344,8 @@ void checkVplCount(const ConfigNode& root, const RunConfig& config) {
   }
 }
 
-// What an nlos capture cannot do (yet): the outputs of a camera image, the
-// renderers that know only pinholes, the sensors.
+// What an nlos capture cannot do (yet): the outputs of a camera image, the GL
+// backend (it rasterizes pinholes only), the sensors.
 void checkNlosRun(const ConfigNode& root, const RunConfig& config) {
   if (const auto output = root.optionalChild("output")) {
     for (const char* key :
@@ -359,11 +359,6 @@ void checkNlosRun(const ConfigNode& root, const RunConfig& config) {
     }
   }
   if (const auto render = root.optionalChild("render")) {
-    if (config.renderer != RendererKind::InstantRadiosity) {
-      render->failKey("renderer",
-                      "an nlos capture renders with `ir` (the reference path tracer "
-                      "looks through pinhole cameras only)");
-    }
     if (config.backend == IrBackendKind::Gl) {
       render->failKey("backend",
                       "an nlos capture renders with the CPU backend (the GL backend "

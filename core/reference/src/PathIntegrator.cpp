@@ -13,6 +13,16 @@ namespace tofsim::reference {
 namespace {
 constexpr double kPi = 3.14159265358979323846;
 constexpr int kChannels = 3;
+
+// Points without extent are points: a box filter over them would only jitter
+// every primary ray by zero (and spend draws doing it).
+PixelFilter effectiveFilter(const capture::Imager& imager, PixelFilter requested) {
+  const auto* points = std::get_if<capture::PointSetImager>(&imager);
+  if (points == nullptr) return requested;
+  const bool zeroSteps =
+      points->step_u_world == glm::vec3(0.0f) && points->step_v_world == glm::vec3(0.0f);
+  return zeroSteps ? PixelFilter::Point : requested;
+}
 }  // namespace
 
 PathIntegrator::PathIntegrator(const RayScene& scene, const capture::RenderJob& job,
@@ -20,10 +30,13 @@ PathIntegrator::PathIntegrator(const RayScene& scene, const capture::RenderJob& 
                                ContinuationSampling sampling)
     : scene_(scene),
       job_(job),
-      rays_(job.camera()),
+      rays_(job.imager),
+      viewpoint_(capture::viewpoint(job.imager)),
+      dropLastLeg_(job.settings.time.camera_unwarp || !capture::lastLegCounts(job.imager)),
+      width_(capture::imageWidth(job.imager)),
       bounces_(bounces),
       samplesPerPixel_(samplesPerPixel),
-      pixelFilter_(pixelFilter),
+      pixelFilter_(effectiveFilter(job.imager, pixelFilter)),
       gltf_(job.settings.materials == capture::MaterialModel::Gltf),
       sampling_(sampling) {}
 
@@ -54,6 +67,10 @@ PathIntegrator::Radiance PathIntegrator::lightReflectedAt(const SurfaceHit& hit,
   out.path_m = d;
   out.valid = true;
   return out;
+}
+
+double PathIntegrator::lastLeg_m(double surfaceToViewpoint_m) const {
+  return dropLastLeg_ ? 0.0 : surfaceToViewpoint_m;
 }
 
 int32_t PathIntegrator::binOfPath(double path_m) const {
@@ -136,15 +153,15 @@ void PathIntegrator::traceContinuation(const SurfaceHit& hit, const glm::vec3& t
 
 void PathIntegrator::renderPixelCentre(int32_t x, int32_t y, PixelOutput& out,
                                        std::vector<double>& scratch) const {
-  const capture::Camera& camera = job_.camera();
-  const glm::vec3 eye = camera.position_world;
-  const std::optional<SurfaceHit> primary = scene_.intersect(eye, rays_.direction(x, y));
+  const glm::vec3 eye = viewpoint_;
+  const std::optional<SurfaceHit> primary = scene_.intersect(eye, rays_.ray(x, y).direction);
   if (!primary) return;
   const SurfaceHit& hit = *primary;
   const double cameraLeg_m = glm::length(hit.position_world - eye);
   out.depth_m = static_cast<float>(cameraLeg_m);
-  // Unwarped time is the time at the first surface: drop the surface -> camera leg.
-  const double toCamera_m = job_.settings.time.camera_unwarp ? 0.0 : cameraLeg_m;
+  // Unwarped time (or a point set timed at its points) is the time at the
+  // first surface: drop the surface -> viewpoint leg.
+  const double toCamera_m = lastLeg_m(cameraLeg_m);
   const std::size_t floats = static_cast<std::size_t>(job_.settings.time.bins) * kChannels;
 
   // Bounce 1: exact, no sampling.
@@ -164,8 +181,7 @@ void PathIntegrator::renderPixelCentre(int32_t x, int32_t y, PixelOutput& out,
   // Bounces 2..n: fixed-depth cosine-sampled paths with next-event estimation.
   scratch.assign(floats, 0.0);
   AxisLoss outside;
-  Pcg32 rng = Pcg32::forUnit(job_.settings.seed,
-                             static_cast<uint64_t>(y) * static_cast<uint64_t>(camera.width) + x);
+  Pcg32 rng = Pcg32::forUnit(job_.settings.seed, pixelIndex(x, y));
   for (int32_t s = 0; s < samplesPerPixel_; ++s) {
     traceContinuation(hit, toCamera, toCamera_m, rng, scratch.data(), outside);
   }
@@ -190,10 +206,9 @@ void PathIntegrator::addDirect(const SurfaceHit& hit, const glm::vec3& toCamera,
 
 void PathIntegrator::renderPixelArea(int32_t x, int32_t y, PixelOutput& out,
                                      std::vector<double>& scratch) const {
-  const capture::Camera& camera = job_.camera();
-  const glm::vec3 eye = camera.position_world;
+  const glm::vec3 eye = viewpoint_;
   // The depth image stays the centre's, as the G-buffer's.
-  if (const auto centre = scene_.intersect(eye, rays_.direction(x, y))) {
+  if (const auto centre = scene_.intersect(eye, rays_.ray(x, y).direction)) {
     out.depth_m = static_cast<float>(glm::length(centre->position_world - eye));
   }
   const std::size_t floats = static_cast<std::size_t>(job_.settings.time.bins) * kChannels;
@@ -201,14 +216,12 @@ void PathIntegrator::renderPixelArea(int32_t x, int32_t y, PixelOutput& out,
   double* direct = scratch.data();
   double* indirect = direct + floats;
   AxisLoss outside;
-  Pcg32 rng = Pcg32::forUnit(job_.settings.seed,
-                             static_cast<uint64_t>(y) * static_cast<uint64_t>(camera.width) + x);
+  Pcg32 rng = Pcg32::forUnit(job_.settings.seed, pixelIndex(x, y));
   for (int32_t s = 0; s < samplesPerPixel_; ++s) {
     const glm::vec2 offset = stratifiedPixelOffset(s, samplesPerPixel_, rng);
-    const std::optional<SurfaceHit> hit = scene_.intersect(eye, rays_.direction(x, y, offset));
+    const std::optional<SurfaceHit> hit = scene_.intersect(eye, rays_.ray(x, y, offset).direction);
     if (!hit) continue;  // a silhouette pixel: this part of it sees nothing
-    const double toCamera_m =
-        job_.settings.time.camera_unwarp ? 0.0 : glm::length(hit->position_world - eye);
+    const double toCamera_m = lastLeg_m(glm::length(hit->position_world - eye));
     const glm::vec3 toCamera = glm::normalize(eye - hit->position_world);
     addDirect(*hit, toCamera, toCamera_m, direct, outside);
     if (bounces_ >= 2) traceContinuation(*hit, toCamera, toCamera_m, rng, indirect, outside);

@@ -1,6 +1,7 @@
 #pragma once
 // The per-pixel estimator of the reference renderer. Accumulates one pixel's
-// direct and indirect histograms; knows nothing of threads or segments.
+// direct and indirect histograms; knows nothing of threads or segments, nor
+// of the imager's kind: its primary rays come from capture::PrimaryRays.
 
 #include <cstdint>
 #include <vector>
@@ -15,13 +16,15 @@ namespace tofsim::reference {
 struct PixelOutput {
   float* direct = nullptr;    ///< T * 3 floats, zeroed by the caller
   float* indirect = nullptr;  ///< T * 3 floats, zeroed by the caller
-  float depth_m = 0.0f;       ///< camera-to-surface distance; 0 when no surface
+  float depth_m = 0.0f;       ///< viewpoint-to-surface distance; 0 when no surface
   AxisLoss offAxis;           ///< radiance (summed over channels) off the time axis
 };
 
 class PathIntegrator {
  public:
-  /// bounces >= 1; samplesPerPixel >= 1.
+  /// bounces >= 1; samplesPerPixel >= 1. A point set whose points have no
+  /// extent (zero steps) is always rendered with the point filter: its
+  /// pixels are points, there is no area to jitter over.
   PathIntegrator(const RayScene& scene, const capture::RenderJob& job, int32_t bounces,
                  int32_t samplesPerPixel, PixelFilter pixelFilter,
                  ContinuationSampling sampling = ContinuationSampling::BrdfMixture);
@@ -71,9 +74,20 @@ class PathIntegrator {
   /// refraction), -1 when it falls off the axis. Same rule as TimeAxis::binOf.
   int32_t binOfPath(double path_m) const;
 
+  /// Length of the last leg (surface -> viewpoint, metres) that counts in
+  /// the time: 0 with camera_unwarp or a point set that drops it.
+  double lastLeg_m(double surfaceToViewpoint_m) const;
+  /// Row-major index of pixel (x, y): its generator's unit.
+  uint64_t pixelIndex(int32_t x, int32_t y) const {
+    return static_cast<uint64_t>(y) * static_cast<uint64_t>(width_) + static_cast<uint64_t>(x);
+  }
+
   const RayScene& scene_;
   const capture::RenderJob& job_;
-  capture::PixelRays rays_;  ///< the camera rays, frame computed once
+  capture::PrimaryRays rays_;  ///< the imager's rays, a pinhole's frame computed once
+  glm::vec3 viewpoint_;
+  bool dropLastLeg_;
+  int32_t width_;
   int32_t bounces_;
   int32_t samplesPerPixel_;
   PixelFilter pixelFilter_;

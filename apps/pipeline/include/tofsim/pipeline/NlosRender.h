@@ -6,6 +6,7 @@
 // B into that point's histogram of H.
 
 #include <cstddef>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -27,10 +28,18 @@ struct NlosVolume {
   std::string device;
 };
 
-/// Confocal scans (one point per capture) run their captures in parallel, one
-/// single-threaded renderer per worker; the others one capture after another
-/// on every core. The bytes are the same either way (the CPU backend's do not
-/// depend on its thread count).
+/// The seed capture `capture` (its index in the scan, NlosScanGeometry's
+/// order) renders with under render.renderer: reference, from render.seed:
+/// each laser position draws its own paths, the same whatever the thread
+/// count or the order the captures run in. (IR's captures all use render.seed.)
+uint64_t nlosCaptureSeed(uint64_t seed, std::size_t capture);
+
+/// Renders with IR over the CPU backend (render.cpu_threads), or the
+/// reference path tracer (render.renderer: reference, render.reference.*,
+/// its threads from render.reference.threads). Confocal scans (one point per
+/// capture) run their captures in parallel, one single-threaded renderer per
+/// worker; the others one capture after another on every core. The bytes are
+/// the same either way (neither renderer's depend on its thread count).
 NlosVolume renderNlosScan(const config::RunConfig& config, const scene::Scene& scene,
                           const NlosScanGeometry& scan,
                           const capture::ProgressCallback& progress = {});

@@ -11,6 +11,7 @@
 #include "tofsim/config/RunConfig.h"
 #include "tofsim/gl/Context.h"
 #include "tofsim/ir/IrBackend.h"
+#include "tofsim/reference/ReferenceRenderer.h"
 
 namespace tofsim::pipeline {
 
@@ -23,6 +24,9 @@ config::IrBackendKind resolveIrBackend(config::IrBackendKind requested);
 /// `eglPlatform`, or the CPU backend on `cpuThreads` threads (0: every core).
 std::unique_ptr<ir::IrBackend> makeIrBackend(config::IrBackendKind backend,
                                              gl::EglPlatform eglPlatform, int cpuThreads = 0);
+
+/// The reference path tracer's settings from render.reference.*.
+reference::ReferenceSettings makeReferenceSettings(const config::RunConfig& config);
 
 /// What renders a run, for the log and transient.json.
 struct RendererChoice {

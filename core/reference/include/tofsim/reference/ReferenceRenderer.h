@@ -17,10 +17,15 @@
 // Deterministic: every pixel draws from its own generator seeded with
 // (RenderSettings::seed, pixel index), so the bytes depend neither on the
 // thread count nor on scheduling.
+// Any capture::Imager: a pinhole camera, or a point set (the relay-wall points
+// of an NLOS scan: primary rays from its origin, the last leg timed or not by
+// capture::lastLegCounts; points without extent take the point filter).
 
 #include <cstdint>
+#include <memory>
 
 #include "tofsim/capture/Renderer.h"
+#include "tofsim/reference/RayScene.h"
 
 namespace tofsim::reference {
 
@@ -63,14 +68,27 @@ class ReferenceRenderer : public capture::Renderer {
   /// the other IndirectSettings (VPLs, ISMs) and shadow_map_resolution do not
   /// apply. memory_budget_bytes bounds the host buffers of one segment.
   /// Segments go through the shared segment loop (ir::streamSegments).
-  /// Throws InputError for invalid settings.
+  /// Throws InputError for invalid settings. Not thread-safe: the scene's
+  /// BVH is built when job.scene is not the last render's scene and kept, so
+  /// a sequence of captures of one scene (an NLOS scan's laser positions)
+  /// builds it once.
   capture::RenderResult render(const capture::RenderJob& job, capture::SegmentSink& sink,
                                const capture::ProgressCallback& progress = {}) const override;
+  /// The held scene was changed in place: the next render builds it again.
+  void sceneChanged() const;
+  /// How many times a scene's BVH was built (for tests and statistics).
+  std::size_t scenePreparations() const { return scenePreparations_; }
 
   const ReferenceSettings& settings() const { return settings_; }
 
  private:
+  const RayScene& rays(const scene::Scene& scene, int32_t threads) const;
+
   ReferenceSettings settings_;
+  // The prepared scene; mutable because render is const (Renderer's interface).
+  mutable const scene::Scene* scene_ = nullptr;
+  mutable std::unique_ptr<RayScene> rays_;
+  mutable std::size_t scenePreparations_ = 0;
 };
 
 }  // namespace tofsim::reference
