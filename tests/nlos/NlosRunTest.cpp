@@ -160,6 +160,8 @@ TEST_F(NlosRunTest, BadInputIsALocatedErrorAndWritesNothing) {
       {smallScan("sideways"), "nlos.scan"},
       {smallScan("confocal") + "camera: {}\n", "camera"},
       {smallScan("confocal") + "output: {video: true}\n", "output.video"},
+      {smallScan("confocal") + "sensors: [{type: spad, gate_start: 50 ns, gate_width: 1 ns}]\n",
+       "sensors[0].gate_start"},
   };
   for (const auto& c : cases) {
     SCOPED_TRACE(c.expected);

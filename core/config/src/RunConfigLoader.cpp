@@ -11,6 +11,8 @@
 #include "ShortestNumber.h"
 #include "tofsim/config/RunConfig.h"
 #include "tofsim/config/SensorConfig.h"
+#include "tofsim/sensors/Common.h"
+#include "tofsim/sensors/Spad.h"
 
 namespace tofsim::config {
 
@@ -300,6 +302,26 @@ void checkBounceOrders(const ConfigNode& list, const RunConfig& config) {
   }
 }
 
+// A SPAD gate must open inside the TDC's window (its bins on the render's
+// axis), or the detector never counts.
+void checkSpadGates(const ConfigNode& list, const RunConfig& config) {
+  const std::vector<ConfigNode> elements = list.elements();
+  for (std::size_t i = 0; i < config.sensors.size(); ++i) {
+    const auto* spad = std::get_if<sensors::SpadParams>(&config.sensors[i].params);
+    if (!spad || spad->gate_width_s <= 0.0) continue;
+    const TimeAxis tdc = sensors::resolveBins(spad->bins, config.render.time);
+    const double g0 = spad->gate_start_s, g1 = g0 + spad->gate_width_s;
+    if (!(g1 > tdc.start_s && g0 < tdc.end_s())) {
+      elements[i].failKey("gate_start", "the gate [" + shortest(g0 * 1e9) + ", " +
+                                            shortest(g1 * 1e9) +
+                                            ") ns lies outside the TDC's "
+                                            "window [" +
+                                            shortest(tdc.start_s * 1e9) + ", " +
+                                            shortest(tdc.end_s() * 1e9) + ") ns");
+    }
+  }
+}
+
 // "sensors.0.bins" -> "sensors[0].bins", the form ConfigNode paths take.
 std::string nodePath(const std::string& keyPath) {
   std::string out;
@@ -443,6 +465,7 @@ RunConfig loadRunConfigYaml(YAML::Node yaml, const std::filesystem::path& file,
     }
     checkSensorsFitImage(*list, config.sensors, image);
     checkBounceOrders(*list, config);
+    checkSpadGates(*list, config);
   }
   root.reportUnusedKeys();
   return config;
