@@ -1,4 +1,4 @@
-// tofsim.Config: a run config validated by core/config exactly as the CLI
+// tofsim.Config: a run config validated by apps/config exactly as the CLI
 // validates it (loadRunConfig / loadRunConfigText), read-only from Python.
 
 #include <pybind11/stl.h>

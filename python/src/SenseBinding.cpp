@@ -1,6 +1,6 @@
 // _sense: one sensor model (streak, SPAD, CW-ToF; sensors/) on any (H, W, T, C)
 // float32 transient, tofsim's or another renderer's. The sensor comes as JSON
-// text in the config's sensor format and is parsed by core/config's sensor
+// text in the config's sensor format and is parsed by apps/config's sensor
 // parser, so its validation and defaults are the CLI's.
 
 #include <pybind11/stl.h>

@@ -1,4 +1,4 @@
-// The run config's parameter tables (core/config/src/RunFields.h) against the
+// The run config's parameter tables (apps/config/src/RunFields.h) against the
 // structs: the documented default of every table key, written into a config,
 // must give the same effective config as leaving the key out.
 

@@ -24,7 +24,7 @@
 #include "tofsim/cpu/CpuBackend.h"
 #include "tofsim/ir/IrRenderer.h"
 #include "tofsim/ir/SampledPixels.h"
-#include "tofsim/reference/RayScene.h"
+#include "tofsim/rays/RayScene.h"
 #include "tofsim/render/GlBackend.h"
 #include "tofsim/scene/GltfLoader.h"
 
@@ -62,7 +62,7 @@ void expectSameGBuffer(const capture::RenderJob& job, int32_t samples = 1) {
   const auto position = download(gl.position, pixels);
   const auto normal = download(gl.normal, pixels);
   const auto albedo = download(gl.albedo, pixels);
-  const reference::RayScene rays(*job.scene, 1);
+  const rays::RayScene rays(*job.scene, 1);
   const SurfaceImage cpu = traceSurfaces(rays, job.camera(), 2, samples);
   const float tol = 1e-5f * glm::length(hi - lo);
   std::size_t surfaces = 0;

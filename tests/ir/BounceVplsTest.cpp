@@ -13,7 +13,7 @@
 
 #include "support/AnalyticScenes.h"
 #include "tofsim/ir/BounceVpls.h"
-#include "tofsim/reference/RayScene.h"
+#include "tofsim/rays/RayScene.h"
 
 namespace tofsim::ir {
 namespace {
@@ -31,7 +31,7 @@ glm::dvec3 totalFlux(const std::vector<Vpl>& vpls) {
 TEST(BounceVplsTest, ClosedBoxBounceCarriesAlbedoTimesTheParentsPowerInTheirColours) {
   const float rho = 0.6f;
   const scene::Scene box = test::makeClosedBox(2.0f, glm::vec3(rho));
-  const reference::RayScene scene(box, 1);
+  const rays::RayScene scene(box, 1);
   // A red parent of power 1 on the floor and a blue one of power 3 on a wall:
   // systematic resampling gives them 1/4 and 3/4 of the children (+-1).
   const std::vector<Vpl> parents = {vplAt({0.2f, -1.0f, 0.1f}, {0, 1, 0}, {1, 0, 0}, 2.0f),
@@ -56,7 +56,7 @@ TEST(BounceVplsTest, ClosedBoxBounceCarriesAlbedoTimesTheParentsPowerInTheirColo
 
 TEST(BounceVplsTest, PathGrowsByEtaTimesTheLegFromTheParent) {
   const scene::Scene box = test::makeClosedBox(2.0f, glm::vec3(0.5f));
-  const reference::RayScene scene(box, 1);
+  const rays::RayScene scene(box, 1);
   const glm::vec3 p(0.0f, -1.0f, 0.0f);
   const std::vector<Vpl> parents = {vplAt(p, {0, 1, 0}, glm::vec3(1.0f), 3.0f)};
   const double eta = 1.33;
@@ -78,7 +78,7 @@ TEST(BounceVplsTest, PathGrowsByEtaTimesTheLegFromTheParent) {
 
 TEST(BounceVplsTest, RaysThatLeaveTheSceneMakeNoVpl) {
   const scene::Scene plane = test::makePlane(2.0f);
-  const reference::RayScene scene(plane, 1);
+  const rays::RayScene scene(plane, 1);
   // On the only surface, shooting away from it: every ray escapes.
   const std::vector<Vpl> parents = {vplAt({0, 0, 0}, {0, 0, 1}, glm::vec3(1.0f), 1.0f)};
   EXPECT_TRUE(traceBounce(scene, parents, 100, 2, 1, 1.0).empty());

@@ -14,7 +14,7 @@
 #include "support/AnalyticScenes.h"
 #include "support/ExpectedGltfBrdf.h"
 #include "tofsim/ir/BounceVpls.h"
-#include "tofsim/reference/RayScene.h"
+#include "tofsim/rays/RayScene.h"
 
 namespace tofsim::ir {
 namespace {
@@ -41,7 +41,7 @@ glm::dvec3 directionalAlbedo(const glm::dvec3& l, const glm::dvec3& base, double
 TEST(GlossyBounceVplsTest, ChildrenCarryTheParentsPowerTimesItsDirectionalAlbedo) {
   scene::Scene box = test::makeClosedBox(2.0f, glm::vec3(0.6f, 0.5f, 0.4f));
   for (scene::Material& m : box.materials) m.metallic = 0.3f, m.roughness = 0.5f;
-  const reference::RayScene scene(box, 1);
+  const rays::RayScene scene(box, 1);
   const glm::vec3 incoming = glm::normalize(glm::vec3(0.5f, 1.0f, 0.2f));
   Vpl parent{glm::vec4(0.2f, -1.0f, 0.1f, 2.0f), glm::vec4(0, 1, 0, 0),
              glm::vec4(1.0f, 0.5f, 0.25f, 0.0f)};       // the power it received, W

@@ -6,11 +6,11 @@
 #include <vector>
 
 #include "tofsim/capture/SegmentSink.h"
-#include "tofsim/ir/SegmentPlan.h"
-#include "tofsim/ir/SegmentStream.h"
+#include "tofsim/capture/SegmentPlan.h"
+#include "tofsim/capture/SegmentStream.h"
 #include "tofsim/util/Error.h"
 
-namespace tofsim::ir {
+namespace tofsim::capture {
 namespace {
 
 constexpr std::size_t kHuge = std::size_t(1) << 40;
@@ -110,4 +110,4 @@ TEST(SegmentStreamTest, SegmentsArriveInOrderWithTheLightSeenStraightAdded) {
 }
 
 }  // namespace
-}  // namespace tofsim::ir
+}  // namespace tofsim::capture

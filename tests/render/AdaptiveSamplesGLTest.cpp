@@ -36,7 +36,7 @@ class HandMaskedBackend : public ir::IrBackend {
 
   std::string description() const override { return gl_.description(); }
   ir::DeviceLimits limits() const override { return gl_.limits(); }
-  void setScene(const scene::Scene& scene, const reference::RayScene* rays) override {
+  void setScene(const scene::Scene& scene, const rays::RayScene* rays) override {
     gl_.setScene(scene, rays);
   }
   ir::CentreSurfaces prepareSurfaces(const capture::RenderJob& job) override {

@@ -4,7 +4,7 @@
 // renders it.
 
 #include "tofsim/ir/IrBackend.h"
-#include "tofsim/reference/RayScene.h"
+#include "tofsim/rays/RayScene.h"
 #include "tofsim/scene/Scene.h"
 
 namespace tofsim::test {
@@ -16,7 +16,7 @@ class BackendScene {
   }
 
  private:
-  reference::RayScene rays_;
+  rays::RayScene rays_;
 };
 
 }  // namespace tofsim::test

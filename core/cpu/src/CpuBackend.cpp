@@ -16,7 +16,7 @@
 #include "tofsim/physics/FootprintBuffer.h"
 #include "tofsim/physics/GltfBrdf.h"
 #include "tofsim/physics/TransientPhysics.h"
-#include "tofsim/reference/RayScene.h"
+#include "tofsim/rays/RayScene.h"
 #include "tofsim/util/Error.h"
 
 namespace tofsim::cpu {
@@ -43,7 +43,7 @@ ir::DeviceLimits CpuBackend::limits() const {
   return {1 << 16, std::size_t{1} << 40, std::size_t{1} << 32};
 }
 
-void CpuBackend::setScene(const scene::Scene& scene, const reference::RayScene* rays) {
+void CpuBackend::setScene(const scene::Scene& scene, const rays::RayScene* rays) {
   TOFSIM_CHECK_MSG(rays != nullptr, "the CPU backend traces the driver's RayScene");
   scene_ = rays;
   litBounds_ = std::make_unique<LitBounds>(scene);
@@ -146,7 +146,7 @@ void CpuBackend::allocate(std::size_t pixelsPerSegment, std::size_t vplsPerBatch
   indirect_.assign(floats, 0.0f);
   accumulatorsZero_ = true;
   outside_.assign(pixelsPerSegment, physics::OffAxisSums{});
-  // The plan counted the footprint buffers (ir::PixelBuffers); they start
+  // The plan counted the footprint buffers (capture::PixelBuffers); they start
   // zero and integratePixel clears what it read.
   footprint_.reset(job_.settings.pixel_footprint ? new double[floats] : nullptr);
   footprintWritten_.assign(pixelsPerSegment, 0);

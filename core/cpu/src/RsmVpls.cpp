@@ -12,7 +12,7 @@ namespace {
 
 // The VPL of texel (x, y) of a view (row 0 at the bottom, as GL stores it), or
 // nothing when the texel sees no lit surface: a ray where the GL rasterises.
-std::optional<ir::Vpl> texelVpl(const reference::RayScene& scene, const capture::Light& light,
+std::optional<ir::Vpl> texelVpl(const rays::RayScene& scene, const capture::Light& light,
                                 const ir::RsmView& v, int resolution, int x, int y, double eta,
                                 bool gltf, const std::optional<scene::Bounds>& lit) {
   const glm::vec3 direction = ir::rsmTexelDirection(v, resolution, x, y);
@@ -31,7 +31,7 @@ std::optional<ir::Vpl> texelVpl(const reference::RayScene& scene, const capture:
 
 }  // namespace
 
-std::vector<ir::Vpl> traceRsmVpls(const reference::RayScene& scene, const capture::Light& light,
+std::vector<ir::Vpl> traceRsmVpls(const rays::RayScene& scene, const capture::Light& light,
                                   int resolution, double indexOfRefraction, bool gltf, int threads,
                                   const std::optional<scene::Bounds>& lit) {
   std::vector<ir::Vpl> vpls;

@@ -15,11 +15,11 @@
 
 #include "tofsim/capture/Light.h"
 #include "tofsim/ir/IrBackend.h"
-#include "tofsim/reference/RayScene.h"
+#include "tofsim/rays/RayScene.h"
 
 namespace tofsim::cpu {
 
-std::vector<ir::Vpl> traceRsmVpls(const reference::RayScene& scene, const capture::Light& light,
+std::vector<ir::Vpl> traceRsmVpls(const rays::RayScene& scene, const capture::Light& light,
                                   int rsmResolution, double indexOfRefraction, bool gltf,
                                   int threads,
                                   const std::optional<scene::Bounds>& lit = std::nullopt);

@@ -30,7 +30,7 @@ SurfaceImage emptyImage(const capture::Imager& imager, std::vector<int32_t> side
 }
 
 // Traces every sample of `image` (its layout set), row by row on `threads`.
-void traceInto(SurfaceImage& image, const reference::RayScene& scene, const capture::Imager& imager,
+void traceInto(SurfaceImage& image, const rays::RayScene& scene, const capture::Imager& imager,
                int threads) {
   const capture::PrimaryRays rays(imager);
   parallelFor(static_cast<std::size_t>(image.height), threads, [&](std::size_t row) {
@@ -57,7 +57,7 @@ void traceInto(SurfaceImage& image, const reference::RayScene& scene, const capt
 
 }  // namespace
 
-SurfaceImage traceSurfaces(const reference::RayScene& scene, const capture::Imager& imager,
+SurfaceImage traceSurfaces(const rays::RayScene& scene, const capture::Imager& imager,
                            int threads, int32_t samplesPerSide) {
   const std::size_t pixels =
       static_cast<std::size_t>(capture::imageWidth(imager)) * capture::imageHeight(imager);
@@ -66,7 +66,7 @@ SurfaceImage traceSurfaces(const reference::RayScene& scene, const capture::Imag
   return image;
 }
 
-SurfaceImage traceSampledPixels(const reference::RayScene& scene, const capture::Imager& imager,
+SurfaceImage traceSampledPixels(const rays::RayScene& scene, const capture::Imager& imager,
                                 int threads, int32_t samplesPerSide,
                                 const std::vector<uint8_t>& sampled) {
   TOFSIM_CHECK_EQ(sampled.size(), static_cast<std::size_t>(capture::imageWidth(imager)) *

@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "tofsim/capture/Imager.h"
-#include "tofsim/reference/RayScene.h"
+#include "tofsim/rays/RayScene.h"
 
 namespace tofsim::cpu {
 
@@ -38,13 +38,13 @@ struct SurfaceImage {
 /// ray (capture::PrimaryRays; a pinhole's Camera::pixelDirection); with samplesPerSide N > 1, N x N
 /// samples per pixel at the centres of its sub-pixels, sub-pixel (i, j) at offset
 /// ((i + 1/2) / N - 1/2, (j + 1/2) / N - 1/2), entry j * N + i.
-SurfaceImage traceSurfaces(const reference::RayScene& scene, const capture::Imager& imager,
+SurfaceImage traceSurfaces(const rays::RayScene& scene, const capture::Imager& imager,
                            int threads, int32_t samplesPerSide = 1);
 
 /// render.adaptive_pixel_samples: N x N samples (as traceSurfaces places
 /// them) for the pixels where sampled[p] is 1, the centre's one elsewhere;
 /// only those rays are traced.
-SurfaceImage traceSampledPixels(const reference::RayScene& scene, const capture::Imager& imager,
+SurfaceImage traceSampledPixels(const rays::RayScene& scene, const capture::Imager& imager,
                                 int threads, int32_t samplesPerSide,
                                 const std::vector<uint8_t>& sampled);
 

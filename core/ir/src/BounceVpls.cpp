@@ -7,8 +7,8 @@
 
 #include "tofsim/physics/GltfBrdf.h"
 #include "tofsim/physics/GltfSampling.h"
-#include "tofsim/reference/RayScene.h"
-#include "tofsim/reference/Sampling.h"
+#include "tofsim/rays/RayScene.h"
+#include "tofsim/rays/Sampling.h"
 #include "tofsim/util/Error.h"
 #include "tofsim/util/ParallelFor.h"
 #include "tofsim/util/Random.h"
@@ -41,7 +41,7 @@ physics::GltfBounce continuationOf(const Vpl& parent, Pcg32& rng,
   if (!materials.gltf) {
     const float u1 = rng.nextFloat();
     const float u2 = rng.nextFloat();
-    return {reference::cosineSampleHemisphere(n, u1, u2), glm::vec3(1.0f)};
+    return {rays::cosineSampleHemisphere(n, u1, u2), glm::vec3(1.0f)};
   }
   const float uLobe = rng.nextFloat();
   const float u1 = rng.nextFloat();
@@ -55,7 +55,7 @@ physics::GltfBounce continuationOf(const Vpl& parent, Pcg32& rng,
 // along w with the continuation's weight: it receives the parent's share
 // times that weight, comes in from -w, and carries the hit's material.
 std::optional<Vpl> glossyChild(const glm::vec3& share, const physics::GltfBounce& c,
-                               const reference::SurfaceHit& hit, float path_m) {
+                               const rays::SurfaceHit& hit, float path_m) {
   const glm::vec3 power = share * c.weight;
   if (!(power.r + power.g + power.b > 0.0f)) return std::nullopt;
   Vpl child{glm::vec4(hit.position_world, path_m), glm::vec4(hit.normal_world, 0.0f),
@@ -68,7 +68,7 @@ std::optional<Vpl> glossyChild(const glm::vec3& share, const physics::GltfBounce
 // Child `index`'s light path continued from `parent`, whose power share is
 // `share` (rgb: the parent's flux scaled to total power / count; W/sr, or W
 // for glossy VPLs).
-std::optional<Vpl> shootChild(const reference::RayScene& scene, const Vpl& parent,
+std::optional<Vpl> shootChild(const rays::RayScene& scene, const Vpl& parent,
                               const glm::vec3& share, int32_t bounce, uint64_t seed,
                               std::size_t index, float eta, const BounceTracing& tracing,
                               const BounceMaterials& materials) {
@@ -103,7 +103,7 @@ constexpr std::size_t kRaysPerTask = 256;
 
 }  // namespace
 
-std::vector<Vpl> traceBounce(const reference::RayScene& scene, const std::vector<Vpl>& parents,
+std::vector<Vpl> traceBounce(const rays::RayScene& scene, const std::vector<Vpl>& parents,
                              std::size_t count, int32_t bounce, uint64_t seed,
                              double indexOfRefraction, const BounceTracing& tracing,
                              const BounceMaterials& materials) {
@@ -152,7 +152,7 @@ namespace {
 
 // withLaterBounces with the scene given, or built here from job.scene (null)
 // only when a later bounce is traced.
-BouncedVpls traceLaterBounces(const capture::RenderJob& job, const reference::RayScene* given,
+BouncedVpls traceLaterBounces(const capture::RenderJob& job, const rays::RayScene* given,
                               std::vector<Vpl> firstBounce) {
   const capture::IndirectSettings& s = job.settings.indirect;
   TOFSIM_CHECK(s.bounces >= 1);
@@ -165,9 +165,9 @@ BouncedVpls traceLaterBounces(const capture::RenderJob& job, const reference::Ra
   }
   const std::size_t count =
       s.vpls_per_bounce > 0 ? static_cast<std::size_t>(s.vpls_per_bounce) : out.vpls.size();
-  std::unique_ptr<reference::RayScene> built;
-  if (given == nullptr) built = std::make_unique<reference::RayScene>(*job.scene, 0);
-  const reference::RayScene& scene = given != nullptr ? *given : *built;
+  std::unique_ptr<rays::RayScene> built;
+  if (given == nullptr) built = std::make_unique<rays::RayScene>(*job.scene, 0);
+  const rays::RayScene& scene = given != nullptr ? *given : *built;
   const BounceTracing tracing{s.russian_roulette, s.trace_threads};
   const BounceMaterials materials{job.settings.materials == capture::MaterialModel::Gltf,
                                   static_cast<float>(s.vpl_brdf_clamp_per_sr)};
@@ -185,7 +185,7 @@ BouncedVpls traceLaterBounces(const capture::RenderJob& job, const reference::Ra
 
 }  // namespace
 
-BouncedVpls withLaterBounces(const capture::RenderJob& job, const reference::RayScene& scene,
+BouncedVpls withLaterBounces(const capture::RenderJob& job, const rays::RayScene& scene,
                              std::vector<Vpl> firstBounce) {
   return traceLaterBounces(job, &scene, std::move(firstBounce));
 }

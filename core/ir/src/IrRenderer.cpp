@@ -8,8 +8,8 @@
 #include "tofsim/capture/DirectLightView.h"
 #include "tofsim/ir/BounceVpls.h"
 #include "tofsim/ir/SampledPixels.h"
-#include "tofsim/ir/SegmentStream.h"
-#include "tofsim/reference/RayScene.h"
+#include "tofsim/capture/SegmentStream.h"
+#include "tofsim/rays/RayScene.h"
 #include "tofsim/util/Error.h"
 
 namespace tofsim::ir {
@@ -177,9 +177,9 @@ IrRenderer::~IrRenderer() = default;
 
 void IrRenderer::sceneChanged() const { scene_ = nullptr; }
 
-const reference::RayScene& IrRenderer::rays() const {
+const rays::RayScene& IrRenderer::rays() const {
   TOFSIM_CHECK(scene_ != nullptr);
-  if (!rays_) rays_ = std::make_unique<reference::RayScene>(*scene_, 0);
+  if (!rays_) rays_ = std::make_unique<rays::RayScene>(*scene_, 0);
   return *rays_;
 }
 

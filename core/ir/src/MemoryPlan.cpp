@@ -51,11 +51,11 @@ MemoryPlan planMemory(const capture::RenderJob& job, const DeviceLimits& limits,
   }
   const std::size_t pixelCount =
       static_cast<std::size_t>(imageWidth(job.imager)) * imageHeight(job.imager);
-  PixelBuffers pixel;
+  capture::PixelBuffers pixel;
   pixel.floatsPerPixel = static_cast<std::size_t>(job.settings.time.bins) * capture::kChannels;
   pixel.footprintBuffers = job.settings.pixel_footprint ? 1 : 0;
   plan.segments =
-      planSegments(pixelCount, pixel, budget, limits.maxBufferBytes, limits.maxPixelsPerPass);
+      capture::planSegments(pixelCount, pixel, budget, limits.maxBufferBytes, limits.maxPixelsPerPass);
   plan.peakBytes = total - budget + plan.segments.bytesPerSegment;
   return plan;
 }

@@ -7,12 +7,12 @@
 
 #include "tofsim/capture/RenderJob.h"
 #include "tofsim/ir/IrBackend.h"
-#include "tofsim/ir/SegmentPlan.h"
+#include "tofsim/capture/SegmentPlan.h"
 
 namespace tofsim::ir {
 
 struct MemoryPlan {
-  SegmentPlan segments;
+  capture::SegmentPlan segments;
   std::size_t vplsPerBatch = 0;  ///< 0 without VPLs
   std::size_t batchCount = 0;    ///< 0 without VPLs
   std::size_t peakBytes = 0;     ///< fixed + one batch + one segment

@@ -5,10 +5,13 @@
 
 #include "tofsim/physics/GltfBrdf.h"
 #include "tofsim/physics/GltfSampling.h"
-#include "tofsim/reference/Sampling.h"
+#include "tofsim/rays/Sampling.h"
 #include "tofsim/volume/PhysicalConstants.h"
 
 namespace tofsim::reference {
+
+using rays::cosineSampleHemisphere;
+using rays::stratifiedPixelOffset;
 
 namespace {
 constexpr double kPi = 3.14159265358979323846;

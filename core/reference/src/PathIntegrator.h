@@ -7,11 +7,13 @@
 #include <vector>
 
 #include "tofsim/capture/RenderJob.h"
-#include "tofsim/reference/RayScene.h"
+#include "tofsim/rays/RayScene.h"
 #include "tofsim/reference/ReferenceRenderer.h"
 #include "tofsim/util/Random.h"
 
 namespace tofsim::reference {
+
+using rays::SurfaceHit;
 
 struct PixelOutput {
   float* direct = nullptr;    ///< T * 3 floats, zeroed by the caller

@@ -7,8 +7,8 @@
 
 #include "PathIntegrator.h"
 #include "tofsim/capture/DirectLightView.h"
-#include "tofsim/ir/SegmentStream.h"
-#include "tofsim/reference/RayScene.h"
+#include "tofsim/capture/SegmentStream.h"
+#include "tofsim/rays/RayScene.h"
 #include "tofsim/util/Error.h"
 #include "tofsim/util/ParallelFor.h"
 
@@ -106,13 +106,13 @@ RenderResult ReferenceRenderer::render(const RenderJob& job, SegmentSink& sink,
   result.depth_m = Image(width, height, 1);
   const std::size_t pixelFloats = static_cast<std::size_t>(axis.bins) * kChannels;
   const int32_t rows = rowsPerSegment(job, threads);
-  const ir::SegmentPlan plan =
-      ir::fixedSegments(static_cast<std::size_t>(width) * height,
+  const capture::SegmentPlan plan =
+      capture::fixedSegments(static_cast<std::size_t>(width) * height,
                         static_cast<std::size_t>(rows) * width, pixelFloats * 2 * sizeof(float));
   std::vector<AxisLoss> outside(static_cast<std::size_t>(width) * rows);
 
-  ir::streamSegments(plan, axis, {kDirect, kIndirect}, lightView, sink, result.offAxis,
-                     [&](const ir::SegmentBuffers& segment) {
+  capture::streamSegments(plan, axis, {kDirect, kIndirect}, lightView, sink, result.offAxis,
+                     [&](const capture::SegmentBuffers& segment) {
                        // Segments are whole rows: pixelsPerSegment is a multiple of the width.
                        const int32_t firstRow = static_cast<int32_t>(segment.pixels.first / width);
                        const int32_t rowCount = static_cast<int32_t>(segment.pixels.count / width);

@@ -174,7 +174,7 @@ ir::DeviceLimits GlBackend::limits() const {
   return limits;
 }
 
-void GlBackend::setScene(const scene::Scene& scene, const reference::RayScene* /*rays*/) {
+void GlBackend::setScene(const scene::Scene& scene, const rays::RayScene* /*rays*/) {
   passes_.reset();  // a render's objects refer to the scene's
   sceneObjects_.reset();
   sceneObjects_ = std::make_unique<SceneObjects>(scene);
@@ -305,7 +305,7 @@ void GlBackend::allocate(std::size_t pixelsPerSegment, std::size_t vplsPerBatch)
   p.indirectVolume = gl::Buffer(floats * sizeof(float));
   p.outsideAxis = gl::Buffer(pixelsPerSegment * 2 * sizeof(float));
   p.outside.resize(pixelsPerSegment * 2);
-  // The plan counted the difference buffer (ir::PixelBuffers::footprintBuffers).
+  // The plan counted the difference buffer (capture::PixelBuffers::footprintBuffers).
   p.footprint.reset();
   if (p.job.settings.pixel_footprint) {
     p.footprint = std::make_unique<PixelFootprint>(pixelsPerSegment, p.job.settings.time.bins);

@@ -2,7 +2,7 @@
 // The vocabulary of a parameter table (SensorFields.h): one entry per config
 // key of a params struct, with its kind, range, unit and doc. Plain data, no
 // YAML or JSON: the config module parses, emits and documents from the same
-// entries (core/config/src/Field*.h), the pipeline writes the sensor JSON
+// entries (apps/config/src/Field*.h), the pipeline writes the sensor JSON
 // (apps/pipeline/src/FieldJson.h). The default of a field is never written
 // here: it is the struct's own initialiser, read from a default-constructed
 // struct.

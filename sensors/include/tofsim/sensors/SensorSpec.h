@@ -9,7 +9,7 @@
 namespace tofsim::sensors {
 
 /// Every model, once. A new alternative needs a SensorType<> specialisation
-/// (checked here) and a config descriptor (checked in core/config).
+/// (checked here) and a config descriptor (checked in apps/config).
 using SensorParams = std::variant<StreakParams, SpadParams, CwTofParams>;
 
 namespace detail {

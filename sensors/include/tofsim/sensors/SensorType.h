@@ -4,7 +4,7 @@
 // type by hand. A SensorParams alternative without a complete descriptor does
 // not compile (SensorSpec.h checks every alternative against SensorModel);
 // its config side (parse, emit, checks against the image) is checked the
-// same way in core/config (SensorConfigType.h), which alone may use yaml-cpp.
+// same way in apps/config (SensorConfigType.h), which alone may use yaml-cpp.
 
 #include <concepts>
 #include <cstdint>

@@ -28,7 +28,7 @@
 #include "tofsim/capture/RenderJob.h"
 #include "tofsim/ir/IrBackend.h"
 
-namespace tofsim::reference {
+namespace tofsim::rays {
 class RayScene;
 }
 namespace tofsim::physics {
@@ -58,7 +58,7 @@ class CpuBackend : public ir::IrBackend {
   std::string description() const override;
   ir::DeviceLimits limits() const override;
   bool tracesRays() const override { return true; }
-  void setScene(const scene::Scene& scene, const reference::RayScene* rays) override;
+  void setScene(const scene::Scene& scene, const rays::RayScene* rays) override;
   ir::CentreSurfaces prepareSurfaces(const capture::RenderJob& job) override;
   void setSampledPixels(const std::vector<uint8_t>& sampled) override;
   std::vector<ir::Vpl> generateVpls(const capture::RenderJob& job) override;
@@ -101,7 +101,7 @@ class CpuBackend : public ir::IrBackend {
   /// The last leg is not timed: render.camera_unwarp, or an imager whose
   /// last leg does not count (capture::lastLegCounts).
   bool dropLastLeg_ = false;
-  const reference::RayScene* scene_ = nullptr;  ///< the driver's (setScene)
+  const rays::RayScene* scene_ = nullptr;  ///< the driver's (setScene)
   std::unique_ptr<LitBounds> litBounds_;        ///< of the scene set (setScene)
   std::unique_ptr<SurfaceImage> surfaces_;  ///< every pixel's samples (SurfaceImage::firstSample)
   /// render.adaptive_pixel_samples: surfaces_ holds the centres until

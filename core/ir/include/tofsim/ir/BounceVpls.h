@@ -13,7 +13,7 @@
 #include "tofsim/capture/RenderJob.h"
 #include "tofsim/ir/IrBackend.h"
 
-namespace tofsim::reference {
+namespace tofsim::rays {
 class RayScene;
 }
 
@@ -67,7 +67,7 @@ struct BounceMaterials {
 /// clamped by brdfClamp; a w below the surface ends the path; the parents
 /// are still picked by the power they received, which stays unbiased), and
 /// records -w and its hit's material.
-std::vector<Vpl> traceBounce(const reference::RayScene& scene, const std::vector<Vpl>& parents,
+std::vector<Vpl> traceBounce(const rays::RayScene& scene, const std::vector<Vpl>& parents,
                              std::size_t count, int32_t bounce, uint64_t seed,
                              double indexOfRefraction, const BounceTracing& tracing = {},
                              const BounceMaterials& materials = {});
@@ -77,7 +77,7 @@ std::vector<Vpl> traceBounce(const reference::RayScene& scene, const std::vector
 /// RayScene of job.scene), on indirect.trace_threads threads. Bounce 2 traces vpls_per_bounce rays
 /// (0: as many as bounce 1 has VPLs), and so does every later bounce, or with russian_roulette as
 /// many as the bounce before kept.
-BouncedVpls withLaterBounces(const capture::RenderJob& job, const reference::RayScene& scene,
+BouncedVpls withLaterBounces(const capture::RenderJob& job, const rays::RayScene& scene,
                              std::vector<Vpl> firstBounce);
 /// The same through a RayScene of job.scene built here (only when there is a
 /// later bounce and light to continue): for callers without a driver.

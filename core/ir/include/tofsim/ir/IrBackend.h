@@ -40,7 +40,7 @@
 #include "tofsim/capture/RenderJob.h"
 #include "tofsim/volume/TimeAxis.h"
 
-namespace tofsim::reference {
+namespace tofsim::rays {
 class RayScene;
 }
 
@@ -106,7 +106,7 @@ class IrBackend {
   /// the CPU backend traces with and the driver traces later bounces with,
   /// null otherwise. Both must outlive the renders that use them; a new call
   /// replaces them.
-  virtual void setScene(const scene::Scene& scene, const reference::RayScene* rays) = 0;
+  virtual void setScene(const scene::Scene& scene, const rays::RayScene* rays) = 0;
   /// One capture of the scene set last: camera G-buffer of every pixel
   /// (every sub-pixel sample), light shadow map. Returns the pixel centres'
   /// G-buffer: the driver derives the depth image, the DirectLightView and

@@ -39,12 +39,12 @@ class IrRenderer : public capture::Renderer {
  private:
   void prepareScene(const scene::Scene& scene) const;
   /// The held scene's RayScene, built on first use.
-  const reference::RayScene& rays() const;
+  const rays::RayScene& rays() const;
 
   std::unique_ptr<IrBackend> backend_;
   // The prepared scene; mutable because render is const (Renderer's interface).
   mutable const scene::Scene* scene_ = nullptr;
-  mutable std::unique_ptr<reference::RayScene> rays_;
+  mutable std::unique_ptr<rays::RayScene> rays_;
   mutable std::size_t scenePreparations_ = 0;
 };
 

@@ -25,9 +25,11 @@
 #include <memory>
 
 #include "tofsim/capture/Renderer.h"
-#include "tofsim/reference/RayScene.h"
+#include "tofsim/rays/RayScene.h"
 
 namespace tofsim::reference {
+
+using rays::RayScene;
 
 /// What a pixel integrates: its whole area (box) or the ray through its centre
 /// (point, the G-buffer's view: kept for closed-form tests at pixel centres).
@@ -67,7 +69,7 @@ class ReferenceRenderer : public capture::Renderer {
   /// in order. RenderSettings::indirect.enabled = false renders bounce 1 only;
   /// the other IndirectSettings (VPLs, ISMs) and shadow_map_resolution do not
   /// apply. memory_budget_bytes bounds the host buffers of one segment.
-  /// Segments go through the shared segment loop (ir::streamSegments).
+  /// Segments go through the shared segment loop (capture::streamSegments).
   /// Throws InputError for invalid settings. Not thread-safe: the scene's
   /// BVH is built when job.scene is not the last render's scene and kept, so
   /// a sequence of captures of one scene (an NLOS scan's laser positions)

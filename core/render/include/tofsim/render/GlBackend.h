@@ -27,7 +27,7 @@ class GlBackend : public ir::IrBackend {
 
   std::string description() const override;
   ir::DeviceLimits limits() const override;
-  void setScene(const scene::Scene& scene, const reference::RayScene* rays) override;
+  void setScene(const scene::Scene& scene, const rays::RayScene* rays) override;
   ir::CentreSurfaces prepareSurfaces(const capture::RenderJob& job) override;
   void setSampledPixels(const std::vector<uint8_t>& sampled) override;
   std::vector<ir::Vpl> generateVpls(const capture::RenderJob& job) override;

@@ -8,7 +8,7 @@
 #include "tofsim/physics/HemisphereSampling.h"
 #include "tofsim/util/Random.h"
 
-namespace tofsim::reference {
+namespace tofsim::rays {
 
 // The hemisphere sampling moved to core/physics (shared with the glTF BRDF
 // sampling); the names stay here for the reference and IR's bounce VPLs.
@@ -30,4 +30,4 @@ inline glm::vec2 stratifiedPixelOffset(int32_t index, int32_t count, Pcg32& rng)
           (static_cast<float>(index / side) + jy) * cell - 0.5f};
 }
 
-}  // namespace tofsim::reference
+}  // namespace tofsim::rays

@@ -4,7 +4,7 @@
 // checked against these lists by a test (ConfigKeysTest), as are the keys the
 // effective-config writer emits and the loader accepts. The rows of sensor
 // parameters and of render.indirect / render.reference are made from their
-// field tables (sensors/SensorFields.h, core/config/src/RunFields.h).
+// field tables (sensors/SensorFields.h, apps/config/src/RunFields.h).
 
 #include <span>
 

@@ -1,4 +1,4 @@
-#include "tofsim/reference/RayScene.h"
+#include "tofsim/rays/RayScene.h"
 
 #include <algorithm>
 #include <cmath>
@@ -8,7 +8,7 @@
 #include "tofsim/scene/TextureSampling.h"
 #include "tofsim/util/Error.h"
 
-namespace tofsim::reference {
+namespace tofsim::rays {
 
 namespace {
 
@@ -141,4 +141,4 @@ glm::vec3 RayScene::offsetOrigin(const SurfaceHit& hit, const glm::vec3& towards
   return hit.position_world + n * epsilon_m_;
 }
 
-}  // namespace tofsim::reference
+}  // namespace tofsim::rays

@@ -6,7 +6,7 @@
 
 #include <cstddef>
 
-namespace tofsim::ir {
+namespace tofsim::capture {
 
 struct PixelRange {
   std::size_t first = 0;
@@ -48,4 +48,4 @@ struct PixelBuffers {
 SegmentPlan planSegments(std::size_t pixelCount, const PixelBuffers& pixel, std::size_t budgetBytes,
                          std::size_t maxBufferBytes, std::size_t maxPixelsPerPass);
 
-}  // namespace tofsim::ir
+}  // namespace tofsim::capture

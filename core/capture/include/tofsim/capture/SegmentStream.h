@@ -11,9 +11,9 @@
 
 #include "tofsim/capture/DirectLightView.h"
 #include "tofsim/capture/SegmentSink.h"
-#include "tofsim/ir/SegmentPlan.h"
+#include "tofsim/capture/SegmentPlan.h"
 
-namespace tofsim::ir {
+namespace tofsim::capture {
 
 /// One segment's buffers while a renderer fills them: one per component, in
 /// the order of the names given to streamSegments, pixels.count * T * C
@@ -35,4 +35,4 @@ void streamSegments(const SegmentPlan& plan, const TimeAxis& axis,
                     const capture::DirectLightView& lightView, capture::SegmentSink& sink,
                     AxisLoss& offAxis, const SegmentFill& fill);
 
-}  // namespace tofsim::ir
+}  // namespace tofsim::capture

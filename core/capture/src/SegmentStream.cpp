@@ -1,11 +1,11 @@
-#include "tofsim/ir/SegmentStream.h"
+#include "tofsim/capture/SegmentStream.h"
 
 #include <algorithm>
 #include <memory>
 
 #include "tofsim/util/Error.h"
 
-namespace tofsim::ir {
+namespace tofsim::capture {
 
 void streamSegments(const SegmentPlan& plan, const TimeAxis& axis,
                     const std::vector<std::string_view>& names,
@@ -40,4 +40,4 @@ void streamSegments(const SegmentPlan& plan, const TimeAxis& axis,
   }
 }
 
-}  // namespace tofsim::ir
+}  // namespace tofsim::capture

@@ -1,11 +1,11 @@
-#include "tofsim/ir/SegmentPlan.h"
+#include "tofsim/capture/SegmentPlan.h"
 
 #include <algorithm>
 #include <string>
 
 #include "tofsim/util/Error.h"
 
-namespace tofsim::ir {
+namespace tofsim::capture {
 
 PixelRange SegmentPlan::segment(std::size_t s) const {
   TOFSIM_CHECK_LT(s, segmentCount);
@@ -57,4 +57,4 @@ SegmentPlan planSegments(std::size_t pixelCount, const PixelBuffers& pixel,
   return fixedSegments(pixelCount, pixels, pixelBytes);
 }
 
-}  // namespace tofsim::ir
+}  // namespace tofsim::capture

@@ -10,7 +10,7 @@
 
 #include "tofsim/scene/Scene.h"
 
-namespace tofsim::reference {
+namespace tofsim::rays {
 
 struct SurfaceHit {
   float distance_m = 0.0f;  ///< along the (unit) ray direction
@@ -51,4 +51,4 @@ class RayScene {
   float epsilon_m_ = 1e-5f;
 };
 
-}  // namespace tofsim::reference
+}  // namespace tofsim::rays
