@@ -2,6 +2,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "TimeAxisJson.h"
 #include "tofsim/pipeline/AxisReport.h"
 #include "tofsim/pipeline/Version.h"
 #include "tofsim/volume/PhysicalConstants.h"
@@ -33,24 +34,12 @@ std::string transientMetadataJson(const config::RunConfig& config, const capture
       "radiance arriving within the bin for an impulse of the light at t = 0 (the scene's "
       "impulse response); summing over t gives the steady-state radiance under a continuous "
       "light of the same intensity";
-  j["time"] = {
-      {"start_s", axis.start_s},
-      {"bin_width_s", axis.bin_width_s},
-      {"bins", axis.bins},
-      {"start_m", axis.start_m()},
-      {"bin_width_m", axis.bin_width_m()},
-      {"bin_doc", "bin t covers [start + t * bin_width, start + (t + 1) * bin_width)"},
-      {"length_doc", "metres are optical path length: c * time, c = 299792458 m/s"},
-      {"index_of_refraction", axis.index_of_refraction},
-      {"camera_unwarp", axis.camera_unwarp},
-      {"depth_doc", axis.camera_unwarp
-                        ? "depth = (c / index_of_refraction) * time (one leg: light -> surface)"
-                        : "depth = (c / index_of_refraction) * time / 2 (light at the camera)"},
-      {"time_origin",
-       axis.camera_unwarp
-           ? "emission at the light; the surface -> camera delay is removed (time at the surface)"
-           : "emission at the light; arrival at the camera"},
-  };
+  nlohmann::ordered_json time = timeAxisJson(axis);
+  time["time_origin"] =
+      axis.camera_unwarp
+          ? "emission at the light; the surface -> camera delay is removed (time at the surface)"
+          : "emission at the light; arrival at the camera";
+  j["time"] = time;
   j["camera"] = {{"position_m", vec(cam.position_world)},
                  {"look_at_m", vec(cam.look_at_world)},
                  {"up", vec(cam.up_world)},

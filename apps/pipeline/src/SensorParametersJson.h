@@ -6,6 +6,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "TimeAxisJson.h"
 #include "tofsim/sensors/SensorSpec.h"
 #include "tofsim/volume/TimeAxis.h"
 
@@ -15,9 +16,5 @@ namespace tofsim::pipeline {
 /// instrument bins (their unset parts follow the render's axis).
 nlohmann::ordered_json sensorParametersJson(const sensors::SensorParams& params,
                                             const TimeAxis& render);
-
-/// {start_s, bin_width_s, bins, end_s, and the same in metres of optical path
-/// and of depth}: how to turn a bin index into a time and a distance.
-nlohmann::ordered_json timeAxisJson(const TimeAxis& axis);
 
 }  // namespace tofsim::pipeline
