@@ -130,6 +130,48 @@ RunSummary runRender(const config::RunConfig& config, const RunOptions& options)
 }
 
 namespace {
+void writeSteady(const std::filesystem::path& dir, const Image& steady, PlotRanges& ranges,
+                 std::vector<std::string>& files) {
+  io::writeExr(dir / "steady.exr", steady, {"R", "G", "B"});
+  imaging::writeToneMappedPng(dir / "steady.png", steady, imaging::ToneMap::Global,
+                              ranges.take("steady"));
+  files.push_back("steady.exr");
+  files.push_back("steady.png");
+}
+
+void writeDepth(const std::filesystem::path& dir, const Image& depth_m, PlotRanges& ranges,
+                std::vector<std::string>& files) {
+  io::writeDepthExr(dir / "depth.exr", depth_m);  // channels Y and Z
+  io::writeNpy(dir / "depth.npy", {std::size_t(depth_m.height), std::size_t(depth_m.width)},
+               depth_m.data.data());
+  imaging::ColorScale scale;  // over the surfaces: 0 (no surface) is not a depth
+  scale.nonPositiveIsNoData = true;
+  scale.noDataLabel = "no surface";
+  scale.range = ranges.take("depth");
+  imaging::writeColormappedPng(dir / "depth.png", depth_m, "depth [m]", scale);
+  files.push_back("depth.exr");
+  files.push_back("depth.npy");
+  files.push_back("depth.png");
+}
+
+// The run's record: the effective config and, for a batch, the manifest.
+void writeRecord(const config::RunConfig& config, const capture::RenderJob& job,
+                 const RunOptions& options, const std::filesystem::path& dir,
+                 std::vector<std::string>& files) {
+  // What was used: a glTF camera's position, view and field of view, not the
+  // config's defaults, so the file reproduces the run without the glTF camera too.
+  config::RunConfig used = config;
+  used.camera.camera = job.camera();
+  writeFileAtomically(dir / "config.effective.yaml", config::effectiveConfigYaml(used));
+  files.push_back("config.effective.yaml");
+  if (options.batchManifest) {
+    // Last: it lists the files above with their checksums, so it exists
+    // only once all of them do.
+    writeManifest(dir, options.batchManifest->runName, files, options.batchManifest->inputs);
+    files.push_back(kManifestName);
+  }
+}
+
 // Renders with the configured renderer (see RendererFactory.h).
 capture::RenderResult renderVolume(const config::RunConfig& config, const capture::RenderJob& job,
                                    const RunOptions& options, capture::SegmentSink& sink,
@@ -193,28 +235,8 @@ void writeOutputs(const config::RunConfig& config, const capture::RenderJob& job
   for (const int32_t k : out.bounces)
     summary.files.push_back("bounce" + std::to_string(k) + ".npy");
   PlotRanges ranges(out.plot_ranges);
-  if (out.steady) {
-    const Image steady = sink.steady();
-    io::writeExr(dir / "steady.exr", steady, {"R", "G", "B"});
-    imaging::writeToneMappedPng(dir / "steady.png", steady, imaging::ToneMap::Global,
-                                ranges.take("steady"));
-    summary.files.push_back("steady.exr");
-    summary.files.push_back("steady.png");
-  }
-  if (out.depth) {
-    io::writeDepthExr(dir / "depth.exr", summary.result.depth_m);  // channels Y and Z
-    io::writeNpy(dir / "depth.npy",
-                 {std::size_t(job.camera().height), std::size_t(job.camera().width)},
-                 summary.result.depth_m.data.data());
-    imaging::ColorScale scale;  // over the surfaces: 0 (no surface) is not a depth
-    scale.nonPositiveIsNoData = true;
-    scale.noDataLabel = "no surface";
-    scale.range = ranges.take("depth");
-    imaging::writeColormappedPng(dir / "depth.png", summary.result.depth_m, "depth [m]", scale);
-    summary.files.push_back("depth.exr");
-    summary.files.push_back("depth.npy");
-    summary.files.push_back("depth.png");
-  }
+  if (out.steady) writeSteady(dir, sink.steady(), ranges, summary.files);
+  if (out.depth) writeDepth(dir, summary.result.depth_m, ranges, summary.files);
   if (spill) {
     const imaging::BinFrames frames = spill->frames();
     if (out.frames) writeFrames(dir, frames, summary.files);
@@ -237,19 +259,7 @@ void writeOutputs(const config::RunConfig& config, const capture::RenderJob& job
     std::erase_if(untaken, [](const std::string& k) { return k.rfind("sensors/", 0) == 0; });
   }
   warnUntakenPlotRanges(untaken);
-  // What was used: a glTF camera's position, view and field of view, not the
-  // config's defaults, so the file reproduces the run without the glTF camera too.
-  config::RunConfig used = config;
-  used.camera.camera = job.camera();
-  writeFileAtomically(dir / "config.effective.yaml", config::effectiveConfigYaml(used));
-  summary.files.push_back("config.effective.yaml");
-  if (options.batchManifest) {
-    // Last: it lists the files above with their checksums, so it exists
-    // only once all of them do.
-    writeManifest(dir, options.batchManifest->runName, summary.files,
-                  options.batchManifest->inputs);
-    summary.files.push_back(kManifestName);
-  }
+  writeRecord(config, job, options, dir, summary.files);
 }
 }  // namespace
 
