@@ -6,6 +6,7 @@
 
 #include "ParallelPixels.h"
 #include "PeakDepth.h"
+#include "SpadEventEngine.h"
 #include "SpadSampling.h"
 #include "tofsim/sensors/Random.h"
 #include "tofsim/sensors/TimeKernel.h"
@@ -31,6 +32,9 @@ void checkParams(const SpadParams& p) {
   TOFSIM_CHECK(p.ambient_rate_per_s >= 0.0 && p.dark_count_rate_per_s >= 0.0);
   TOFSIM_CHECK(p.dead_time_s >= 0.0);
   TOFSIM_CHECK(p.gate_width_s >= 0.0);
+  TOFSIM_CHECK(p.afterpulse_probability >= 0.0 && p.afterpulse_probability <= 1.0);
+  TOFSIM_CHECK(p.afterpulse_probability == 0.0 || p.mode == SpadMode::FreeRunning);
+  TOFSIM_CHECK(p.afterpulse_delay_s > 0.0);
 }
 
 // Per-cycle flux of one pixel from its render bins (signal in photo-electrons).
@@ -178,6 +182,11 @@ class SpadStream final : public SensorStream {
     const auto N = static_cast<uint64_t>(p_.cycles);
     if (p_.mode == SpadMode::Synchronous) {
       detail::firstPhotonHistogram(s.flux, N, rng, s.firstPhoton, s.h);
+    } else if (p_.afterpulse_probability > 0.0) {
+      // Afterpulses correlate the bins: the exact event engine draws the pixel.
+      s.h.assign(static_cast<std::size_t>(K), 0.0);
+      detail::spadEvents(s.flux, N, deadBins_, rng, s.h,
+                         {p_.afterpulse_probability, p_.afterpulse_delay_s / axis_.bin_width_s});
     } else {
       const std::vector<double> m = freeRunningProbabilities(s.flux, deadBins_);
       s.h.resize(static_cast<std::size_t>(K));

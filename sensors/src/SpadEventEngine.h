@@ -17,6 +17,16 @@
 
 namespace tofsim::sensors::detail {
 
+/// Afterpulses, free-running mode: each avalanche leaves with `probability`
+/// one trapped carrier whose release, an Exp(delay_bins) time after the end
+/// of the hold-off, is a detection unless a photon comes first; the next
+/// avalanche clears the traps of the last (Bernoulli afterpulsing with one
+/// exponential delay, the renewal model of the closed form in the tests).
+struct Afterpulsing {
+  double probability = 0.0;
+  double delay_bins = 1.0;
+};
+
 /// `flux[i]`: expected detections per cycle in TDC bin i (PDE applied, the
 /// laser period = the TDC range). Adds to `h` (flux.size() bins) the
 /// detections of `cycles` cycles:
@@ -25,6 +35,6 @@ namespace tofsim::sensors::detail {
 ///  - deadBins >= 0: free-running, every detection, each followed by
 ///    deadBins dead bins that may run into the next cycles (non-paralysable).
 void spadEvents(const std::vector<double>& flux, uint64_t cycles, int32_t deadBins, Rng& rng,
-                std::vector<double>& h);
+                std::vector<double>& h, const Afterpulsing& afterpulsing = {});
 
 }  // namespace tofsim::sensors::detail

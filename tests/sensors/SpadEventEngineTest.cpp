@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "SpadEventEngine.h"
+#include "TestVolumes.h"
 #include "support/ChiSquare.h"
 #include "tofsim/sensors/Spad.h"
 
@@ -98,6 +99,131 @@ TEST(SpadEventEngineTest, ConstantFluxGivesTheNonParalysableRate) {
     const double expected = n * 50 * q / (1.0 + dead * q);
     EXPECT_NEAR(total, expected, 5.0 * std::sqrt(expected)) << dead;
   }
+}
+
+// Afterpulsing on a constant flux f per bin, d dead bins, an afterpulse with
+// probability p and an Exp(tau) delay from the end of the hold-off: the
+// detector is live again at bin boundaries, so the intervals between those
+// are i.i.d. floor(W) + d + 1 with W ~ Exp(f + 1/tau) (an afterpulse pending,
+// probability p) or Exp(f), and E floor(W) = e^-l / (1 - e^-l): the renewal
+// rate 1 / (d + 1 + p g(f + 1/tau) + (1 - p) g(f)) detections per bin.
+double renewalRate(double f, int32_t d, double p, double tau) {
+  const auto g = [](double l) { return std::exp(-l) / -std::expm1(-l); };
+  return 1.0 / (d + 1 + p * g(f + 1.0 / tau) + (1.0 - p) * g(f));
+}
+
+TEST(SpadEventEngineTest, AfterpulsesFollowTheRenewalRate) {
+  const double f = 0.01;
+  const std::vector<double> flux(40, f);
+  const uint64_t cycles = 100000;
+  const double bins = 40.0 * cycles;
+  for (const auto& [p, tau] : {std::pair{0.3, 5.0}, std::pair{0.6, 40.0}}) {
+    Rng rng(21, 1);
+    std::vector<double> h(flux.size(), 0.0);
+    detail::spadEvents(flux, cycles, 4, rng, h, {p, tau});
+    double total = 0.0;
+    for (double c : h) total += c;
+    const double expected = bins * renewalRate(f, 4, p, tau);
+    // Renewal counts: variance ~ mean x (interval variance / mean^2) < mean here.
+    EXPECT_NEAR(total, expected, 5.0 * std::sqrt(expected)) << p << " " << tau;
+    // Fails when mis-parametrised: the same counts against p x 1.2 and against no afterpulsing.
+    EXPECT_GT(std::fabs(total - bins * renewalRate(f, 4, 1.2 * p, tau)), 5.0 * std::sqrt(expected));
+    EXPECT_GT(std::fabs(total - bins * renewalRate(f, 4, 0.0, tau)), 5.0 * std::sqrt(expected));
+  }
+}
+
+// After a bright pulse, afterpulses make a tail: each live start with an
+// afterpulse pending (probability p after every avalanche, the pulse's and the
+// afterpulses' own) detects floor(D) bins later, D ~ Exp(tau), and is live
+// again d + 1 bins after that. The expected counts per bin by that recursion
+// over live starts; nothing else fires in the tail.
+std::vector<double> expectedTail(int32_t firstLive, int32_t bins, int32_t dead, double p,
+                                 double tau) {
+  std::vector<double> pendingAt(bins + dead + 2, 0.0), counts(bins, 0.0);
+  pendingAt[firstLive] = p;
+  const double stay = std::exp(-1.0 / tau);
+  for (int32_t b = firstLive; b < bins; ++b) {
+    double inBin = pendingAt[b] * (1.0 - stay);  // detects in bin b, b + 1, ...
+    for (int32_t k = b; k < bins && inBin > 1e-15; ++k, inBin *= stay) {
+      counts[k] += inBin;
+      pendingAt[k + dead + 1] += inBin * p;
+    }
+  }
+  return counts;
+}
+
+TEST(SpadEventEngineTest, AfterpulsesMakeATailAsTheirRenewalPredicts) {
+  std::vector<double> flux(400, 0.0);
+  flux[10] = 8.0;  // every cycle detects here (but for e^-8)
+  const int32_t dead = 5;
+  const double tau = 30.0, p = 0.5;
+  const double cycles = 200000;
+  Rng rng(22, 1);
+  std::vector<double> h(flux.size(), 0.0);
+  detail::spadEvents(flux, 200000, dead, rng, h, {p, tau});
+  const std::vector<double> law = expectedTail(16, 400, dead, p, tau);
+  const auto chiOf = [&](const std::vector<double>& expected) {
+    double chi = 0.0;
+    int dof = 0;
+    for (int b = 16; b < 200; b += 8) {
+      double observed = 0.0, e = 0.0;
+      for (int k = b; k < b + 8; ++k) {
+        observed += h[k];
+        e += cycles * expected[k];
+      }
+      chi += (observed - e) * (observed - e) / e;
+      ++dof;
+    }
+    return std::pair{chi, dof};
+  };
+  const auto [chi, dof] = chiOf(law);
+  EXPECT_LT(chi, tofsim::test::chiSquareQuantile(dof, 3.09));
+  // A delay 10 % longer is rejected.
+  const auto [off, offDof] = chiOf(expectedTail(16, 400, dead, p, 1.1 * tau));
+  EXPECT_GT(off, tofsim::test::chiSquareQuantile(offDof, 3.09));
+  EXPECT_EQ(h[11], 0.0);  // dead after the pulse
+}
+
+// The SPAD model with afterpulsing (free-running) draws its pixels with the
+// engine: its counts show the tail the recursion predicts, pooled over pixels.
+TEST(SpadEventEngineTest, TheSpadModelsAfterpulsesAreTheEngines) {
+  const double w = 10e-12;
+  TransientVolume v = test::makeVolume(4, 4, 0.0, w, 400);
+  for (int y = 0; y < 4; ++y)
+    for (int x = 0; x < 4; ++x) v.at(y, x, 10, 0) = 8.0f;
+  SpadParams p;
+  p.mode = SpadMode::FreeRunning;
+  p.cycles = 20000;
+  p.pde = 1.0;
+  p.dead_time_s = 5 * w;
+  p.afterpulse_probability = 0.5;
+  p.afterpulse_delay_s = 30 * w;
+  const std::vector<SensorOutput> outs = runSpad(v, p, 5);
+  const SensorOutput& c = test::array(outs, "spad_counts");
+  std::vector<double> h(400, 0.0);
+  for (std::size_t i = 0; i < c.data.size(); ++i) h[i % 400] += c.data[i];
+  const std::vector<double> law = expectedTail(16, 400, 5, 0.5, 30.0);
+  double chi = 0.0;
+  int dof = 0;
+  for (int b = 16; b < 200; b += 8) {
+    double observed = 0.0, e = 0.0;
+    for (int k = b; k < b + 8; ++k) {
+      observed += h[k];
+      e += 16.0 * 20000 * law[k];
+    }
+    chi += (observed - e) * (observed - e) / e;
+    ++dof;
+  }
+  EXPECT_LT(chi, tofsim::test::chiSquareQuantile(dof, 3.09));
+  // Without afterpulses the tail is empty.
+  p.afterpulse_probability = 0.0;
+  const std::vector<SensorOutput> plain = runSpad(v, p, 5);
+  double tail = 0.0;
+  const SensorOutput& pc = test::array(plain, "spad_counts");
+  for (std::size_t i = 0; i < pc.data.size(); ++i) {
+    if (i % 400 >= 16) tail += pc.data[i];
+  }
+  EXPECT_EQ(tail, 0.0);
 }
 
 TEST(SpadEventEngineTest, NoFluxNoEventsAndTheSameSeedTheSameCounts) {

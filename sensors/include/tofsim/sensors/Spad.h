@@ -40,6 +40,12 @@ struct SpadParams {
   /// edge crosses is armed for its covered fraction. 0 width: always armed.
   double gate_start_s = 0.0;
   double gate_width_s = 0.0;
+  /// Free-running afterpulsing: each avalanche leaves a trapped carrier with
+  /// this probability, released an Exp(afterpulse_delay) time after the end of
+  /// the hold-off as a detection unless a photon comes first (the exact event
+  /// engine, SpadEventEngine.h, draws these pixels). 0: none.
+  double afterpulse_probability = 0.0;
+  double afterpulse_delay_s = 10e-9;
   std::vector<std::array<int32_t, 2>> plot_pixels;  ///< (x, y) pixels to plot; empty = centre
   std::string colormap = "turbo";
 };
