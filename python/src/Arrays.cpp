@@ -9,6 +9,16 @@ namespace py = pybind11;
 
 namespace tofsim::python {
 
+py::dict timeAxisDict(const TimeAxis& axis) {
+  py::dict time;
+  time["start_s"] = axis.start_s;
+  time["bin_width_s"] = axis.bin_width_s;
+  time["bins"] = axis.bins;
+  time["start_m"] = axis.start_m();
+  time["bin_width_m"] = axis.bin_width_m();
+  return time;
+}
+
 py::array_t<float> ownedArray(std::vector<float>&& values, const std::vector<py::ssize_t>& shape) {
   auto* owned = new std::vector<float>(std::move(values));
   py::capsule base(owned, [](void* p) { delete static_cast<std::vector<float>*>(p); });

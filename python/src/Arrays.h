@@ -21,6 +21,9 @@ pybind11::array_t<float> ownedArray(std::vector<float>&& values,
 /// (H, W, T, C).
 pybind11::array_t<float> volumeArray(TransientVolume&& volume);
 
+/// {start_s, bin_width_s, bins, start_m, bin_width_m}: tofsim.TimeAxis's fields.
+pybind11::dict timeAxisDict(const TimeAxis& axis);
+
 /// A copy of an (H, W, T, C) float32 array as a volume on `axis` (whose bins
 /// must be T); channels named R, G, B for three, C0, C1, ... otherwise.
 TransientVolume volumeFromArray(const FloatArray& array, const TimeAxis& axis, const char* what);

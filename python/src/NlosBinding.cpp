@@ -23,12 +23,6 @@ namespace tofsim::python {
 
 namespace {
 
-std::vector<float> flat(const std::vector<glm::vec3>& points) {
-  std::vector<float> out;
-  for (const glm::vec3& p : points) out.insert(out.end(), {p.x, p.y, p.z});
-  return out;
-}
-
 py::list vec(const glm::vec3& v) {
   py::list l;
   for (int i = 0; i < 3; ++i) l.append(v[i]);
@@ -80,20 +74,14 @@ py::dict renderNlos(const config::RunConfig& config, const std::optional<std::st
   d["H_format"] = exhaustive ? "T_Lx_Ly_Sx_Sy" : "T_Sx_Sy";
   d["scan"] = config::nlosScanName(scan.scan);
   d["sensor_grid_xyz"] =
-      ownedArray(flat(scan.sensorPoints), {scan.sensorGrid[0], scan.sensorGrid[1], 3});
+      ownedArray(pipeline::flatXyz(scan.sensorPoints), {scan.sensorGrid[0], scan.sensorGrid[1], 3});
   d["laser_grid_xyz"] =
-      ownedArray(flat(scan.laserPoints), {scan.laserGrid[0], scan.laserGrid[1], 3});
+      ownedArray(pipeline::flatXyz(scan.laserPoints), {scan.laserGrid[0], scan.laserGrid[1], 3});
   d["wall_normal"] = vec(scan.wall.normal);
   d["sensor_xyz"] = vec(scan.sensorOrigin);
   d["laser_xyz"] = vec(scan.laserOrigin);
   d["t_accounts_first_and_last_bounces"] = config.nlos->account_first_and_last_bounces;
-  py::dict time;
-  time["start_s"] = volume.axis.start_s;
-  time["bin_width_s"] = volume.axis.bin_width_s;
-  time["bins"] = volume.axis.bins;
-  time["start_m"] = volume.axis.start_m();
-  time["bin_width_m"] = volume.axis.bin_width_m();
-  d["time"] = time;
+  d["time"] = timeAxisDict(volume.axis);
   py::dict stats;
   stats["seconds"] = volume.seconds;
   stats["captures"] = volume.captures;

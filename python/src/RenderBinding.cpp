@@ -183,13 +183,7 @@ py::dict toPython(Rendered& r, const TimeAxis& axis) {
                     ? py::object(py::none())
                     : py::object(ownedArray(std::move(r.steady.data),
                                             {r.steady.height, r.steady.width, r.steady.channels}));
-  py::dict time;
-  time["start_s"] = axis.start_s;
-  time["bin_width_s"] = axis.bin_width_s;
-  time["bins"] = axis.bins;
-  time["start_m"] = axis.start_m();
-  time["bin_width_m"] = axis.bin_width_m();
-  d["time"] = time;
+  d["time"] = timeAxisDict(axis);
   py::dict stats;
   stats["seconds"] = r.result.seconds;
   stats["segments"] = r.result.segments;

@@ -185,5 +185,24 @@ TEST_F(NlosRunTest, BadInputIsALocatedErrorAndWritesNothing) {
   }
 }
 
+// A capture whose files would not fit output.max_bytes fails before
+// rendering, naming the key and the files, and the earlier results stay.
+TEST_F(NlosRunTest, OutputsOverMaxBytesFailBeforeRenderingAndLeaveEarlierResults) {
+  const std::string limit = "output: {max_bytes: 100 KiB}\n";
+  run(smallScan("confocal") + limit);  // H: 128 x 6 x 5 x 4 B = 15 KiB, three files fit
+  std::string larger = smallScan("confocal") + limit;
+  larger.replace(larger.find("[6, 5]"), 6, "[60, 5]");  // ten times that do not
+  try {
+    run(larger);
+    ADD_FAILURE() << "no error";
+  } catch (const InputError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("output.max_bytes"), std::string::npos) << what;
+    EXPECT_NE(what.find("H.npy"), std::string::npos) << what;
+  }
+  EXPECT_EQ(io::readNpy(dir_ / "out" / "sensor_grid_xyz.npy").shape,
+            (std::vector<std::size_t>{6, 5, 3}));
+}
+
 }  // namespace
 }  // namespace tofsim::pipeline

@@ -2,6 +2,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "KeptAcrossRenders.h"
 #include "NlosFirstBounce.h"
 #include "NlosSensors.h"
 #include "NlosTalFile.h"
@@ -10,6 +11,7 @@
 #include "tofsim/pipeline/Manifest.h"
 #include "tofsim/pipeline/NlosRender.h"
 #include "tofsim/pipeline/NlosScan.h"
+#include "tofsim/pipeline/OutputEstimate.h"
 #include "tofsim/pipeline/Progress.h"
 #include "tofsim/pipeline/Version.h"
 #include "tofsim/scene/GltfLoader.h"
@@ -23,13 +25,6 @@ namespace tofsim::pipeline {
 namespace {
 
 nlohmann::ordered_json vec(const glm::vec3& v) { return {v.x, v.y, v.z}; }
-
-std::vector<float> flat(const std::vector<glm::vec3>& points) {
-  std::vector<float> out;
-  out.reserve(points.size() * 3);
-  for (const glm::vec3& p : points) out.insert(out.end(), {p.x, p.y, p.z});
-  return out;
-}
 
 std::vector<std::string> hAxes(const NlosScanGeometry& scan) {
   if (scan.scan == config::NlosScan::Exhaustive) return {"t", "lx", "ly", "sx", "sy"};
@@ -102,9 +97,10 @@ void writeOutputs(const config::RunConfig& config, const NlosScanGeometry& scan,
     io::writeNpy(dir / "first_bounce.npy", volume.shape, firstBounce.data());
     files.push_back("first_bounce.npy");
   }
-  io::writeNpy(dir / "sensor_grid_xyz.npy", grid(scan.sensorGrid), flat(scan.sensorPoints).data());
+  io::writeNpy(dir / "sensor_grid_xyz.npy", grid(scan.sensorGrid),
+               flatXyz(scan.sensorPoints).data());
   files.push_back("sensor_grid_xyz.npy");
-  io::writeNpy(dir / "laser_grid_xyz.npy", grid(scan.laserGrid), flat(scan.laserPoints).data());
+  io::writeNpy(dir / "laser_grid_xyz.npy", grid(scan.laserGrid), flatXyz(scan.laserPoints).data());
   files.push_back("laser_grid_xyz.npy");
   if (config.nlos->hdf5) {
     io::writeTalCapture(dir / "capture.hdf5", talCaptureOf(config, scan, volume));
@@ -125,16 +121,20 @@ void writeOutputs(const config::RunConfig& config, const NlosScanGeometry& scan,
   }
 }
 
-// H's bytes against output.max_bytes, before rendering.
-void checkSize(const config::RunConfig& config, const NlosScanGeometry& scan) {
-  double bytes = 4.0 * config.render.time.bins;
-  for (std::size_t n : scan.pointShape()) bytes *= static_cast<double>(n);
-  if (config.nlos->hdf5) bytes *= 2.0;  // H.npy and capture.hdf5 (compressed: at most)
-  if (bytes > static_cast<double>(config.output.max_bytes)) {
-    throw InputError(FileLoc{config.config_file.string()}, "output.max_bytes",
-                     "the capture's H would take " + std::to_string(bytes / 1048576.0) +
-                         " MiB (time.bins x the grids' points x 4 B), more than max_bytes");
+// The capture's files by size, for output.max_bytes and the free space:
+// H.npy and first_bounce.npy exactly, capture.hdf5 at most H's bytes
+// (compressed).
+OutputEstimate nlosOutputs(const config::RunConfig& config, const NlosScanGeometry& scan) {
+  std::uintmax_t hBytes = 4u * static_cast<std::uintmax_t>(config.render.time.bins);
+  for (std::size_t n : scan.pointShape()) hBytes *= n;
+  const std::string keys = "time.bins, nlos.sensor_grid, nlos.laser_grid";
+  OutputEstimate estimate;
+  if (config.output.transient) {
+    estimate.items.push_back({"H.npy", hBytes, keys});
+    estimate.items.push_back({"first_bounce.npy", hBytes, keys});
   }
+  if (config.nlos->hdf5) estimate.items.push_back({"capture.hdf5", hBytes, keys});
+  return estimate;
 }
 
 }  // namespace
@@ -143,11 +143,11 @@ RunSummary runNlosRender(const config::RunConfig& config, const RunOptions& opti
   Progress progress("render", options.quiet);
   const scene::Scene scene = scene::loadGltf(config.scene_file);
   const NlosScanGeometry scan = planNlosScan(config, scene);
-  checkSize(config, scan);
   RunSummary summary;
   summary.outputDirectory =
       options.outputDirectory.empty() ? config.output.directory : options.outputDirectory;
-  StagedFolder folder(summary.outputDirectory, [](const std::string& n) { return n == "log.txt"; });
+  StagedFolder folder(summary.outputDirectory, keptAcrossRenders);
+  checkOutputsFit(nlosOutputs(config, scan), config, folder.staging());
   const NlosVolume volume = renderNlosScan(
       config, scene, scan, [&](std::size_t done, std::size_t total, const std::string& what) {
         progress.update(done, total, what);

@@ -80,6 +80,13 @@ NlosCapture NlosScanGeometry::capture(std::size_t i, const config::RunConfig& co
   return c;
 }
 
+std::vector<float> flatXyz(const std::vector<glm::vec3>& points) {
+  std::vector<float> out;
+  out.reserve(points.size() * 3);
+  for (const glm::vec3& p : points) out.insert(out.end(), {p.x, p.y, p.z});
+  return out;
+}
+
 NlosScanGeometry planNlosScan(const config::RunConfig& config, const scene::Scene& scene) {
   const config::NlosConfig& nlos = *config.nlos;
   NlosScanGeometry g;

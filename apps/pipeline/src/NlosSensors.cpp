@@ -3,6 +3,7 @@
 #include <cstdio>
 
 #include "NlosTalFile.h"
+#include "SensorReport.h"
 #include "tofsim/pipeline/PlotRanges.h"
 #include "tofsim/pipeline/SensorWriter.h"
 #include "tofsim/sensors/RunSensor.h"
@@ -64,15 +65,10 @@ std::vector<std::string> runNlosSensors(const config::RunConfig& config,
     std::vector<sensors::SensorOutput> outputs;
     try {
       run.warnings = sensors::sensorWarnings(spec, volume.axis, nullptr);
-      for (const std::string& w : run.warnings) {
-        std::fprintf(stderr, "tofsim: warning: sensor '%s' (%s): %s\n", spec.name.c_str(),
-                     sensors::sensorTypeName(spec.params), w.c_str());
-      }
+      printSensorWarnings(spec, run.warnings);
       outputs = sensors::runSensor(spec, {&input, nullptr, nullptr, nullptr, config.render.seed});
     } catch (const InputError& e) {
-      throw InputError(
-          FileLoc{config.config_file.string()}, "sensors[" + std::to_string(i) + "]",
-          "sensor '" + spec.name + "' (" + sensors::sensorTypeName(spec.params) + "): " + e.what());
+      rethrowSensorError(config, i, e);
     }
     const std::filesystem::path relative = std::filesystem::path("sensors") / spec.name;
     for (const std::string& f : writeSensorOutputs(directory / relative, outputs, run, ranges)) {

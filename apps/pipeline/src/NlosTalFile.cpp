@@ -13,10 +13,8 @@ io::TalGrid gridOf(const std::array<int32_t, 2>& size, const std::vector<glm::ve
   io::TalGrid g;
   g.format = io::TalGridFormat::X_Y_3;
   g.shape = {std::size_t(size[0]), std::size_t(size[1]), 3};
-  for (const glm::vec3& p : points) {
-    g.xyz.insert(g.xyz.end(), {p.x, p.y, p.z});
-    g.normals.insert(g.normals.end(), {normal.x, normal.y, normal.z});
-  }
+  g.xyz = flatXyz(points);
+  g.normals = flatXyz(std::vector<glm::vec3>(points.size(), normal));
   return g;
 }
 

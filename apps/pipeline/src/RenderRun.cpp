@@ -4,6 +4,7 @@
 #include <optional>
 
 #include "BinMajorSpill.h"
+#include "KeptAcrossRenders.h"
 #include "NlosRun.h"
 #include "tofsim/capture/VolumeCollector.h"
 #include "tofsim/imaging/Pictures.h"
@@ -94,9 +95,6 @@ void writeOutputs(const config::RunConfig& config, const capture::RenderJob& job
                   const RunOptions& options, const std::filesystem::path& dir, Progress& progress,
                   RunSummary& summary);
 
-// A batch's log.txt is written by the batch while this run goes: it belongs to
-// the folder, not to any one set of results.
-bool keepAcrossRenders(const std::string& name) { return name == "log.txt"; }
 }  // namespace
 
 RunSummary runRender(const config::RunConfig& config, const RunOptions& options) {
@@ -115,7 +113,7 @@ RunSummary runRender(const config::RunConfig& config, const RunOptions& options)
   // writer fails in a second. Everything is written into a staging folder
   // that replaces the earlier results only when complete: an error, Ctrl-C or
   // kill -9 before that leaves the earlier set untouched.
-  StagedFolder folder(summary.outputDirectory, keepAcrossRenders);
+  StagedFolder folder(summary.outputDirectory, keptAcrossRenders);
   checkOutputsFit(estimateOutputs(config), config, folder.staging());
   writeOutputs(config, job, options, folder.staging(), progress, summary);
   // A signal that came during the last step still means "stop": the earlier

@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <variant>
 
+#include "SensorReport.h"
 #include "tofsim/io/Npy.h"
 #include "tofsim/pipeline/AxisReport.h"
 #include "tofsim/pipeline/PlotRanges.h"
@@ -61,19 +62,6 @@ struct SensorStreams::Entry {
         meter(sensors::instrumentWindow(spec.params), shape) {}
 };
 
-namespace {
-
-// The sensor library does not know the config; say which entry failed.
-[[noreturn]] void rethrowLocated(const config::RunConfig& config, std::size_t i,
-                                 const InputError& e) {
-  const sensors::SensorSpec& spec = config.sensors[i];
-  throw InputError(
-      FileLoc{config.config_file.string()}, "sensors[" + std::to_string(i) + "]",
-      "sensor '" + spec.name + "' (" + sensors::sensorTypeName(spec.params) + "): " + e.what());
-}
-
-}  // namespace
-
 std::optional<int32_t> sensorBounces(const config::RunConfig& config) {
   const bool asked = std::any_of(config.sensors.begin(), config.sensors.end(), [](const auto& s) {
     const auto* cwtof = std::get_if<sensors::CwTofParams>(&s.params);
@@ -99,7 +87,7 @@ SensorStreams::SensorStreams(const config::RunConfig& config, const sensors::Vol
     try {
       entry->stream = sensors::openSensor(spec, shape, options);
     } catch (const InputError& e) {
-      rethrowLocated(config, i, e);
+      rethrowSensorError(config, i, e);
     }
     entries_.push_back(std::move(entry));
   }
@@ -133,16 +121,11 @@ std::vector<std::string> SensorStreams::finish(const Image* groundTruthDepth_m,
     std::vector<sensors::SensorOutput> outputs;
     SensorRunInfo run{&spec, shape_.axis, config_.render.seed, {}};
     try {
-      // Warnings go to stderr even when quiet: they say the outputs mislead.
-      // They go into the metadata too (SensorMetadata.h).
       run.warnings = sensors::sensorWarnings(spec, shape_.axis, groundTruthDepth_m);
-      for (const std::string& w : run.warnings) {
-        std::fprintf(stderr, "tofsim: warning: sensor '%s' (%s): %s\n", spec.name.c_str(),
-                     sensors::sensorTypeName(spec.params), w.c_str());
-      }
+      printSensorWarnings(spec, run.warnings);
       outputs = e->stream->finish(groundTruthDepth_m);
     } catch (const InputError& error) {
-      rethrowLocated(config_, e->index, error);
+      rethrowSensorError(config_, e->index, error);
     }
     for (const std::string& f :
          writeSensorOutputs(outputDirectory_ / e->relative, outputs, run, ranges)) {

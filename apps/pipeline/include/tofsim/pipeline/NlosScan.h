@@ -43,6 +43,10 @@ struct NlosScanGeometry {
                       const scene::Scene& scene) const;
 };
 
+/// Points as x, y, z floats one after another (the grids' .npy, HDF5 and
+/// NumPy layout).
+std::vector<float> flatXyz(const std::vector<glm::vec3>& points);
+
 /// The scan a config describes on its scene. Throws InputError at the
 /// config's key (file and line) when the wall is missing, not planar or has
 /// no area, or when an origin is not in front of the wall.
