@@ -15,6 +15,7 @@
 #include "support/TempDir.h"
 #include "tofsim/config/RunConfig.h"
 #include "tofsim/io/Npy.h"
+#include "tofsim/io/TalCapture.h"
 #include "tofsim/pipeline/SavedVolume.h"
 #include "tofsim/scene/GltfLoader.h"
 #include "tofsim/util/Error.h"
@@ -79,6 +80,15 @@ TEST_F(FuzzRegressionTest, NpyFiles) {
   const int inputs = forEachInput("npy", [&](const std::string& bytes, const fs::path&) {
     writeBytes(dir_ / "input.npy", bytes);
     io::readNpy(dir_ / "input.npy");
+  });
+  EXPECT_GT(inputs, 0);
+}
+
+// As in fuzz/fuzz_tal_capture.cpp (y-tal's NLOS capture layout, HDF5).
+TEST_F(FuzzRegressionTest, TalCaptures) {
+  const int inputs = forEachInput("tal_capture", [&](const std::string& bytes, const fs::path&) {
+    writeBytes(dir_ / "input.hdf5", bytes);
+    io::readTalCapture(dir_ / "input.hdf5");
   });
   EXPECT_GT(inputs, 0);
 }

@@ -3,6 +3,7 @@
 // (1,)) as tal render's files differ from ours there; strict in what cannot
 // mean the same (a missing field, a string where a number belongs, shapes
 // that disagree). Unknown extra keys (tal's empty volume_format) are ignored.
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <cstring>
@@ -23,6 +24,11 @@ using detail::H5Dataset;
 using detail::H5File;
 using detail::H5Space;
 using detail::H5Type;
+
+// Deflate's largest expansion (1032:1) with a margin, and what small
+// datasets may lack in storage (compact or scalar ones).
+constexpr std::size_t kMaxInflation = 1100;
+constexpr std::uintmax_t kStorageSlack = 65536;
 
 class Reader {
  public:
@@ -165,6 +171,14 @@ class Reader {
       f.count *= static_cast<std::size_t>(d);
       f.shape.push_back(static_cast<std::size_t>(d));
     }
+    // Nor may a corrupt extent make us allocate more than the file can hold:
+    // the values are on disk, deflated at most ~1032:1 (the format's limit),
+    // or are fill values of chunks never written (tal and tofsim write all).
+    const std::uintmax_t stored = H5Dget_storage_size(f.dataset.get());
+    const std::size_t valueBytes = std::max<std::size_t>(H5Tget_size(f.type.get()), 1);
+    require(f.count / kMaxInflation <= (stored + kStorageSlack) / valueBytes, name,
+            "declares " + std::to_string(f.count) + " values, more than its " +
+                std::to_string(stored) + " stored bytes can hold");
     return f;
   }
   template <class T>
