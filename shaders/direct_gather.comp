@@ -50,7 +50,7 @@ void gatherSample(uint local, SurfaceSample g, inout float lostBefore, inout flo
   vec3 wLight = toLight / dLight;
   float cosX = dot(n, wLight);
   if (cosX <= 0.0) return;
-  float profile = spotProfile(-wLight);
+  float profile = lightProfile(-wLight);
   if (profile <= 0.0 || !visibleFromLight(x, cosX)) return;
 
 #ifdef GLTF_MATERIALS

@@ -9,7 +9,10 @@
 // The including gather defines FOOTPRINT_HISTOGRAM (the name of its float
 // volume array) and declares uBins and uCameraPosition_world. A sample's
 // footprint is its sub-pixel (uSampleStepX/Y), or with ADAPTIVE_SAMPLES, for a
-// masked-out pixel's one centre sample, the whole pixel (uPixelStepX/Y).
+// masked-out pixel's one centre sample, the whole pixel (uPixelStepX/Y). With
+// SURFACE_STEPS (a point-set imager, capture::PixelSteps) these are the
+// surface's steps themselves, the same at every sample; else they are the
+// pinhole's ray steps, carried to each sample's tangent plane.
 //
 // llvmpipe ends every loop of an invocation after 65535 iterations in total
 // (see indirect_gather.comp): the up to FOOTPRINT_DIRECT_BINS narrow bins and
@@ -29,7 +32,9 @@ layout(std430, binding = TOFSIM_SSBO_FOOTPRINT_WRITTEN) buffer FootprintWritten 
   uint footprintWritten[];
 };
 
+#ifndef SURFACE_STEPS
 uniform vec3 uCameraForward;  // the camera's unit view axis
+#endif
 uniform vec3 uSampleStepX;    // Camera::rayStepAlongX() / pixel_samples: one sub-pixel step
 uniform vec3 uSampleStepY;    // Camera::rayStepAlongY() / pixel_samples
 #ifdef ADAPTIVE_SAMPLES
@@ -52,8 +57,13 @@ void surfaceStepsAcrossSample(vec3 x, vec3 n, bool wholePixel, out vec3 dxdu, ou
     stepY = uPixelStepY;
   }
 #endif
+#ifdef SURFACE_STEPS
+  dxdu = stepX;
+  dxdv = stepY;
+#else
   dxdu = surfaceStepAcrossPixel(toSurface, uCameraForward, stepX, n);
   dxdv = surfaceStepAcrossPixel(toSurface, uCameraForward, stepY, n);
+#endif
 }
 
 // Narrow kernel: bin first + j (j < count) gets the mass between its edges

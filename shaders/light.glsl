@@ -1,11 +1,13 @@
-// The point/spot light and its shadow map (a cube rendered as six layers of a
-// 2D array texture). The profile's math is spotFalloff in transient_physics.glsl.
+// The point, spot or Lambertian light and its shadow map (a cube rendered as
+// six layers of a 2D array texture). The profile's math is
+// capture::Light::angularProfile: spotFalloff in transient_physics.glsl for a
+// spot, the cosine about its direction for a Lambertian (laser spot) light.
 #include "transient_physics.glsl"
 
 uniform vec3 uLightPosition_world;
 uniform vec3 uLightDirection_world;
 uniform vec3 uLightIntensity_W_per_sr;
-uniform int uLightIsSpot;
+uniform int uLightProfile;  // 0 point, 1 spot, 2 Lambertian (LightUniforms.cpp)
 uniform float uSpotCosOuter;
 uniform float uSpotCosInner;
 
@@ -13,8 +15,9 @@ uniform mat4 uShadowViewProjection[6];
 uniform int uShadowResolution;
 layout(binding = TOFSIM_UNIT_SHADOW_MAP) uniform sampler2DArray uShadowMap;
 
-float spotProfile(vec3 direction) {
-  if (uLightIsSpot == 0) return 1.0;
+float lightProfile(vec3 direction) {
+  if (uLightProfile == 0) return 1.0;
+  if (uLightProfile == 2) return max(0.0, dot(direction, uLightDirection_world));
   return spotFalloff(dot(direction, uLightDirection_world), uSpotCosOuter, uSpotCosInner);
 }
 

@@ -13,17 +13,18 @@
 #include <cmath>
 
 #include "GpuScene.h"
-#include "SurfaceImage.h"
 #include "SurfaceMaps.h"
 #include "Vpls.h"
 #include "support/BackendScene.h"
 #include "support/ClosedForm.h"
 #include "support/GlTestContext.h"
 #include "support/TestJobs.h"
+#include "tofsim/capture/Imager.h"
 #include "tofsim/capture/VolumeCollector.h"
 #include "tofsim/cpu/CpuBackend.h"
 #include "tofsim/ir/IrRenderer.h"
 #include "tofsim/ir/SampledPixels.h"
+#include "tofsim/ir/SurfaceImage.h"
 #include "tofsim/rays/RayScene.h"
 #include "tofsim/render/GlBackend.h"
 #include "tofsim/scene/GltfLoader.h"
@@ -63,7 +64,7 @@ void expectSameGBuffer(const capture::RenderJob& job, int32_t samples = 1) {
   const auto normal = download(gl.normal, pixels);
   const auto albedo = download(gl.albedo, pixels);
   const rays::RayScene rays(*job.scene, 1);
-  const SurfaceImage cpu = traceSurfaces(rays, job.camera(), 2, samples);
+  const ir::SurfaceImage cpu = ir::traceSurfaces(rays, job.camera(), 2, samples);
   const float tol = 1e-5f * glm::length(hi - lo);
   std::size_t surfaces = 0;
   for (std::size_t t = 0; t < pixels; ++t) {
@@ -170,9 +171,10 @@ struct Rendered {
 };
 
 Rendered renderOn(std::unique_ptr<ir::IrBackend> backend, const capture::RenderJob& job) {
-  Rendered out{capture::VolumeCollector(job.camera().width, job.camera().height, job.settings.time,
-                                        capture::kChannels),
-               {}};
+  Rendered out{
+      capture::VolumeCollector(capture::imageWidth(job.imager), capture::imageHeight(job.imager),
+                               job.settings.time, capture::kChannels),
+      {}};
   out.result = ir::IrRenderer(std::move(backend)).render(job, out.volume);
   return out;
 }
@@ -273,6 +275,38 @@ TEST(CpuMatchesGlGLTest, GlossyCornerVolumes) {
     s.job.settings.shadow_map_resolution = 512;
     expectSameVolumesForEachPixelModel(s.job, 1e-3, 1e-2);
   }
+}
+
+// A point-set imager (a grid on the corner's floor seen from the camera's
+// position): the GL backend gathers from the driver's traced samples, its
+// footprints from the points' own surface steps (SURFACE_STEPS), and agrees
+// with the CPU backend under every pixel model, both visibilities, without
+// the last leg, and lit by a Lambertian (laser spot) light on the back wall.
+TEST(CpuMatchesGlGLTest, PointSetOnTheCornerFloorVolumes) {
+  test::CornerJob s(24);
+  s.job.settings.indirect.rsm_resolution = 16;
+  s.job.settings.indirect.points_per_vpl = 500;
+  s.job.settings.shadow_map_resolution = 512;
+  const glm::vec3 origin = s.job.camera().position_world;
+  for (const bool lastLeg : {true, false}) {
+    for (capture::Visibility v : {capture::Visibility::Exact, capture::Visibility::Ism}) {
+      SCOPED_TRACE(testing::Message() << (v == capture::Visibility::Ism ? "ism" : "exact")
+                                      << (lastLeg ? "" : ", no last leg"));
+      s.job.imager = capture::gridOnPlanarMesh(s.scene, "quad0", 12, 10, origin, lastLeg);
+      s.job.settings.indirect.visibility = v;
+      // The ISMs round as the box's do (CornellBoxVolumes): measured 1.1e-3.
+      expectSameVolumesForEachPixelModel(s.job, v == capture::Visibility::Ism ? 3e-3 : 1e-3, 1e-2);
+    }
+  }
+  // As in an NLOS capture: the light is a spot on the floor the points lie
+  // on, so they see none of it directly, only its VPLs on the back wall.
+  SCOPED_TRACE("Lambertian light");
+  s.job.imager = capture::gridOnPlanarMesh(s.scene, "quad0", 12, 10, origin);
+  s.job.light.type = capture::Light::Type::Lambertian;
+  s.job.light.position_world = {0.2f, 1e-5f, 0.3f};
+  s.job.light.direction_world = {0.0f, 1.0f, 0.0f};
+  s.job.settings.indirect.visibility = capture::Visibility::Exact;
+  expectSameVolumesForEachPixelModel(s.job, 1e-3, 1e-2);
 }
 
 TEST(CpuMatchesGlGLTest, PlaneVolumes) {

@@ -75,6 +75,22 @@ TEST_F(TalCaptureTest, ConfocalRoundTripIsExact) {
   EXPECT_EQ(filesInDir(), std::vector<std::string>{"confocal.hdf5"});
 }
 
+std::string bytesOf(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+// The same capture written a second later has the same bytes: HDF5 would
+// stamp each dataset with its modification time (1 s resolution) unless told
+// not to.
+TEST_F(TalCaptureTest, TheSameCaptureWrittenLaterHasTheSameBytes) {
+  const TalCapture c = confocalSample();
+  writeTalCapture(dir_ / "first.hdf5", c);
+  ::usleep(1'100'000);
+  writeTalCapture(dir_ / "second.hdf5", c);
+  EXPECT_TRUE(bytesOf(dir_ / "first.hdf5") == bytesOf(dir_ / "second.hdf5"));
+}
+
 TEST_F(TalCaptureTest, ExhaustiveRoundTripIsExact) {
   const TalCapture c = exhaustiveSample();
   writeTalCapture(dir_ / "exhaustive.hdf5", c);

@@ -21,6 +21,7 @@
 #include "tofsim/capture/VolumeCollector.h"
 #include "tofsim/ir/IrRenderer.h"
 #include "tofsim/ir/SampledPixels.h"
+#include "tofsim/ir/SurfaceImage.h"
 #include "tofsim/render/GlBackend.h"
 #include "tofsim/scene/GltfLoader.h"
 
@@ -38,6 +39,10 @@ class HandMaskedBackend : public ir::IrBackend {
   ir::DeviceLimits limits() const override { return gl_.limits(); }
   void setScene(const scene::Scene& scene, const rays::RayScene* rays) override {
     gl_.setScene(scene, rays);
+  }
+  void setSurfaces(std::unique_ptr<ir::SurfaceImage> samples,
+                   std::unique_ptr<ir::SurfaceImage> centres) override {
+    gl_.setSurfaces(std::move(samples), std::move(centres));
   }
   ir::CentreSurfaces prepareSurfaces(const capture::RenderJob& job) override {
     return gl_.prepareSurfaces(job);

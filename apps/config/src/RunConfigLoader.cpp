@@ -371,9 +371,8 @@ void checkVplCount(const ConfigNode& root, const RunConfig& config) {
   }
 }
 
-// What an nlos capture cannot do (yet): the outputs of a camera image, the GL
-// backend (it rasterizes pinholes only), the sensors.
-void checkNlosRun(const ConfigNode& root, const RunConfig& config) {
+// What an nlos capture cannot do: the outputs of a camera image.
+void checkNlosRun(const ConfigNode& root) {
   if (const auto output = root.optionalChild("output")) {
     for (const char* key :
          {"steady", "depth", "frames", "video", "frame_pngs", "components", "video_tone_map",
@@ -383,13 +382,6 @@ void checkNlosRun(const ConfigNode& root, const RunConfig& config) {
                         "does not apply to an nlos capture (it writes H.npy, its grids and "
                         "capture.hdf5: configs/README.md, `nlos`)");
       }
-    }
-  }
-  if (const auto render = root.optionalChild("render")) {
-    if (config.backend == IrBackendKind::Gl) {
-      render->failKey("backend",
-                      "an nlos capture renders with the CPU backend (the GL backend "
-                      "rasterizes pinhole cameras only): use `cpu` or `auto`");
     }
   }
 }
@@ -452,7 +444,7 @@ RunConfig loadRunConfigYaml(YAML::Node yaml, const std::filesystem::path& file,
   if (const auto render = root.optionalChild("render")) parseRender(*render, config);
   checkVplCount(root, config);
   if (const auto output = root.optionalChild("output")) parseOutput(*output, config, config.output);
-  if (config.nlos) checkNlosRun(root, config);
+  if (config.nlos) checkNlosRun(root);
   if (const auto list = root.optionalChild("sensors")) {
     // parseSensors reports unknown keys inside each sensor itself; the keys it
     // read are shared with `root`, so the check below neither repeats nor

@@ -25,8 +25,8 @@ reference::ReferenceSettings referenceSettings(const config::RunConfig& config, 
   return settings;
 }
 
-// One worker's renderer, IR over the CPU backend or the reference path
-// tracer, made on first need and kept, so that it prepares the scene once.
+// One worker's renderer, IR over its backend or the reference path tracer,
+// made on first need and kept, so that it prepares the scene once.
 struct Worker {
   std::unique_ptr<ir::IrRenderer> ir;
   std::unique_ptr<reference::ReferenceRenderer> reference;
@@ -42,8 +42,12 @@ struct Worker {
 // The workers' renderers, handed out one per running capture.
 class RendererPool {
  public:
-  RendererPool(const config::RunConfig& config, int rendererThreads)
-      : config_(config), rendererThreads_(rendererThreads) {}
+  RendererPool(const config::RunConfig& config, config::IrBackendKind backend,
+               gl::EglPlatform eglPlatform, int rendererThreads)
+      : config_(config),
+        backend_(backend),
+        eglPlatform_(eglPlatform),
+        rendererThreads_(rendererThreads) {}
   Worker take() {
     {
       const std::lock_guard<std::mutex> lock(mutex_);
@@ -58,8 +62,8 @@ class RendererPool {
       w.reference = std::make_unique<reference::ReferenceRenderer>(
           referenceSettings(config_, rendererThreads_));
     } else {
-      w.ir = std::make_unique<ir::IrRenderer>(
-          makeIrBackend(config::IrBackendKind::Cpu, gl::EglPlatform::Auto, rendererThreads_));
+      w.ir =
+          std::make_unique<ir::IrRenderer>(makeIrBackend(backend_, eglPlatform_, rendererThreads_));
     }
     return w;
   }
@@ -78,6 +82,8 @@ class RendererPool {
 
  private:
   const config::RunConfig& config_;
+  config::IrBackendKind backend_;
+  gl::EglPlatform eglPlatform_;
   int rendererThreads_;
   std::mutex mutex_;
   std::vector<Worker> free_;
@@ -94,7 +100,8 @@ uint64_t nlosCaptureSeed(uint64_t seed, std::size_t capture) {
 }
 
 NlosVolume renderNlosScan(const config::RunConfig& config, const scene::Scene& scene,
-                          const NlosScanGeometry& scan, const capture::ProgressCallback& progress) {
+                          const NlosScanGeometry& scan, const capture::ProgressCallback& progress,
+                          gl::EglPlatform eglPlatform) {
   const auto start = std::chrono::steady_clock::now();
   NlosVolume out;
   out.axis = config.render.time;
@@ -108,10 +115,15 @@ NlosVolume renderNlosScan(const config::RunConfig& config, const scene::Scene& s
 
   const bool reference = config.renderer == config::RendererKind::Reference;
   const int threads = resolveThreads(reference ? config.reference.threads : config.cpu_threads);
-  const bool overCaptures = perCapture < kPointsForParallelGather && out.captures > 1;
+  const config::IrBackendKind backend =
+      reference ? config::IrBackendKind::Cpu : resolveIrBackend(config.backend);
+  out.backend = reference ? "reference" : config::irBackendName(backend);
+  // One GL context, current on this thread: its captures one after another.
+  const bool gl = backend == config::IrBackendKind::Gl;
+  const bool overCaptures = !gl && perCapture < kPointsForParallelGather && out.captures > 1;
   const int workers = overCaptures ? threads : 1;
   const int backendThreads = overCaptures ? 1 : threads;
-  RendererPool pool(config, backendThreads);
+  RendererPool pool(config, backend, eglPlatform, backendThreads);
   std::mutex progressMutex;
   std::size_t done = 0, vpls = 0;
 

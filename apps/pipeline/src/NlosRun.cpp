@@ -149,10 +149,12 @@ RunSummary runNlosRender(const config::RunConfig& config, const RunOptions& opti
   StagedFolder folder(summary.outputDirectory, keptAcrossRenders);
   checkOutputsFit(nlosOutputs(config, scan), config, folder.staging());
   const NlosVolume volume = renderNlosScan(
-      config, scene, scan, [&](std::size_t done, std::size_t total, const std::string& what) {
+      config, scene, scan,
+      [&](std::size_t done, std::size_t total, const std::string& what) {
         progress.update(done, total, what);
-      });
-  summary.backend = config.renderer == config::RendererKind::Reference ? "reference" : "cpu";
+      },
+      options.eglPlatform);
+  summary.backend = volume.backend;
   summary.device = volume.device;
   summary.result.seconds = volume.seconds;
   summary.result.vpls = volume.vpls;

@@ -10,9 +10,9 @@
 #include "LitBounds.h"
 #include "ParallelFor.h"
 #include "RsmVpls.h"
-#include "SurfaceImage.h"
 #include "VplArrays.h"
 #include "tofsim/capture/SegmentSink.h"
+#include "tofsim/ir/SurfaceImage.h"
 #include "tofsim/physics/FootprintBuffer.h"
 #include "tofsim/physics/GltfBrdf.h"
 #include "tofsim/physics/TransientPhysics.h"
@@ -20,6 +20,10 @@
 #include "tofsim/util/Error.h"
 
 namespace tofsim::cpu {
+
+using ir::SurfaceImage;
+using ir::traceSampledPixels;
+using ir::traceSurfaces;
 
 namespace {
 
@@ -64,15 +68,7 @@ ir::CentreSurfaces CpuBackend::prepareSurfaces(const capture::RenderJob& job) {
   // (setSampledPixels), so only the edge pixels' rays are traced.
   const int32_t samples = job.settings.pixel_samples;
   SurfaceImage centres = traceSurfaces(*scene_, job.imager, threads_, 1);
-  ir::CentreSurfaces out;
-  out.positions.resize(centres.size() * 4);
-  out.normals.resize(centres.size() * 4);
-  for (std::size_t i = 0; i < centres.size(); ++i) {
-    for (int k = 0; k < 4; ++k) {
-      out.positions[i * 4 + k] = centres.position[i][k];
-      out.normals[i * 4 + k] = centres.normal[i][k];
-    }
-  }
+  ir::CentreSurfaces out = ir::centresOf(centres);
   subSamplesPending_ = samples > 1 && job.settings.adaptive_pixel_samples;
   if (samples == 1 || subSamplesPending_) {
     surfaces_ = std::make_unique<SurfaceImage>(std::move(centres));
@@ -81,6 +77,11 @@ ir::CentreSurfaces CpuBackend::prepareSurfaces(const capture::RenderJob& job) {
         std::make_unique<SurfaceImage>(traceSurfaces(*scene_, job.imager, threads_, samples));
   }
   return out;
+}
+
+void CpuBackend::setSurfaces(std::unique_ptr<SurfaceImage> /*samples*/,
+                             std::unique_ptr<SurfaceImage> /*centres*/) {
+  TOFSIM_CHECK_MSG(false, "the CPU backend traces its own surface samples (tracesRays)");
 }
 
 void CpuBackend::setSampledPixels(const std::vector<uint8_t>& sampled) {

@@ -118,6 +118,14 @@ class Writer {
 
   void write(const char* name, hid_t fileType, hid_t space, hid_t memType, const void* data,
              hid_t dcpl = H5P_DEFAULT) {
+    H5PropList own;
+    if (dcpl == H5P_DEFAULT) {
+      own = H5PropList(check(H5Pcreate(H5P_DATASET_CREATE), name, "cannot make its properties"));
+      dcpl = own.get();
+    }
+    // Without the objects' modification times: the same capture gives the
+    // same bytes (HDF5 stamps every dataset's header with the clock).
+    check(H5Pset_obj_track_times(dcpl, 0), name, "cannot turn off its time stamps");
     const H5Dataset dataset(
         check(H5Dcreate2(file_, name, fileType, space, H5P_DEFAULT, dcpl, H5P_DEFAULT), name,
               "cannot create the dataset"));

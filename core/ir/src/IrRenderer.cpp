@@ -6,9 +6,10 @@
 #include "JobValidation.h"
 #include "MemoryPlan.h"
 #include "tofsim/capture/DirectLightView.h"
+#include "tofsim/capture/SegmentStream.h"
 #include "tofsim/ir/BounceVpls.h"
 #include "tofsim/ir/SampledPixels.h"
-#include "tofsim/capture/SegmentStream.h"
+#include "tofsim/ir/SurfaceImage.h"
 #include "tofsim/rays/RayScene.h"
 #include "tofsim/util/Error.h"
 
@@ -202,6 +203,17 @@ RenderResult IrRenderer::render(const RenderJob& job, SegmentSink& sink,
 
   PassClock clock;
   if (job.scene != scene_) prepareScene(*job.scene);
+  if (pinhole(job.imager) == nullptr && !backend.tracesRays()) {
+    // What a rasterizer cannot draw, the driver traces (the same rays the
+    // CPU backend traces for itself) and the backend gathers from.
+    const int threads = job.settings.indirect.trace_threads;
+    const int32_t n = job.settings.pixel_samples;
+    auto samples = std::make_unique<SurfaceImage>(traceSurfaces(rays(), job.imager, threads, n));
+    std::unique_ptr<SurfaceImage> centres;
+    if (n > 1)
+      centres = std::make_unique<SurfaceImage>(traceSurfaces(rays(), job.imager, threads, 1));
+    backend.setSurfaces(std::move(samples), std::move(centres));
+  }
   const CentreSurfaces centres = backend.prepareSurfaces(job);
   const std::vector<float>& positions = centres.positions;
   const int32_t width = imageWidth(job.imager), height = imageHeight(job.imager);

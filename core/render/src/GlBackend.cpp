@@ -14,6 +14,7 @@
 #include "tofsim/gl/Check.h"
 #include "tofsim/gl/Compute.h"
 #include "tofsim/gl/Context.h"
+#include "tofsim/ir/SurfaceImage.h"
 #include "tofsim/physics/FootprintKernel.h"
 #include "tofsim/util/Error.h"
 
@@ -28,41 +29,48 @@ static_assert(physics::FOOTPRINT_DIRECT_BINS == 16 && physics::FOOTPRINT_SLOTS =
 
 namespace {
 
-// Scene bounds grown to hold the camera and the light, for depth ranges.
+// Scene bounds grown to hold the viewpoint and the light, for depth ranges.
 struct ViewBounds {
   explicit ViewBounds(const RenderJob& job) {
     const scene::Bounds b = job.scene->bounds();
-    lo = glm::min(glm::min(b.min, job.camera().position_world), job.light.position_world);
-    hi = glm::max(glm::max(b.max, job.camera().position_world), job.light.position_world);
+    const glm::vec3 eye = viewpoint(job.imager);
+    lo = glm::min(glm::min(b.min, eye), job.light.position_world);
+    hi = glm::max(glm::max(b.max, eye), job.light.position_world);
   }
   glm::vec3 lo, hi;
 };
 
-// Uniforms shared by the direct and indirect gathers: image, time axis, camera.
+// Uniforms shared by the direct and indirect gathers: image, time axis,
+// imager (its viewpoint, whether its last leg counts, its footprint steps).
 void configureGather(const gl::Program& program, const RenderJob& job) {
   const TimeAxis& axis = job.settings.time;
-  program.set("uImageWidth", job.camera().width);
+  program.set("uImageWidth", imageWidth(job.imager));
   program.set("uBins", axis.bins);
   program.set("uStart_m", static_cast<float>(axis.start_m()));
   program.set("uBinWidth_m", static_cast<float>(axis.bin_width_m()));
   program.set("uIndexOfRefraction", static_cast<float>(job.settings.time.index_of_refraction));
-  program.set("uCameraUnwarp", job.settings.time.camera_unwarp ? 1 : 0);
-  program.set("uCameraPosition_world", job.camera().position_world);
+  // The CPU backend's dropLastLeg_: unwarped, or a last leg that takes no time.
+  const bool dropLastLeg = job.settings.time.camera_unwarp || !lastLegCounts(job.imager);
+  program.set("uCameraUnwarp", dropLastLeg ? 1 : 0);
+  program.set("uCameraPosition_world", viewpoint(job.imager));
   const RenderSettings& s = job.settings;
   const int32_t n = s.pixel_samples;
   // Each sample stands for 1 / N^2 of the pixel (as the CPU backend weighs it).
   if (s.pixel_footprint || n > 1) program.set("uSampleWeight", 1.0f / static_cast<float>(n * n));
   if (s.pixel_footprint) {
-    // A sample's footprint is its sub-pixel: the ray steps shrink by N.
-    const float side = 1.0f / static_cast<float>(n);
-    program.set("uCameraForward", job.camera().forward());
-    program.set("uSampleStepX", job.camera().rayStepAlongX() * side);
-    program.set("uSampleStepY", job.camera().rayStepAlongY() * side);
+    // A sample's footprint is its sub-pixel: the steps shrink by N.
+    const PixelSteps sample(job.imager, 1.0f / static_cast<float>(n));
+    if (const Camera* camera = pinhole(job.imager)) {
+      program.set("uCameraForward", camera->forward());
+    }
+    program.set("uSampleStepX", sample.stepU());
+    program.set("uSampleStepY", sample.stepV());
     // A masked-out pixel's one centre sample spans the whole pixel: the
     // steps of pixel_samples: 1 (whose side is 1), unscaled.
     if (gpu::adaptiveSamples(s)) {
-      program.set("uPixelStepX", job.camera().rayStepAlongX());
-      program.set("uPixelStepY", job.camera().rayStepAlongY());
+      const PixelSteps pixel(job.imager, 1.0f);
+      program.set("uPixelStepX", pixel.stepU());
+      program.set("uPixelStepY", pixel.stepV());
     }
   }
 }
@@ -104,13 +112,13 @@ struct GlBackend::Passes {
         bounds(job),
         gpuScene(scene),
         samplesPerSide(job.settings.pixel_samples),
-        gbuffer(job.camera().width * samplesPerSide, job.camera().height * samplesPerSide,
+        gbuffer(imageWidth(job.imager) * samplesPerSide, imageHeight(job.imager) * samplesPerSide,
                 job.settings.materials == capture::MaterialModel::Gltf),
         shadowMap(job.settings.shadow_map_resolution, job.light.position_world, bounds.lo,
                   bounds.hi) {}
 
   std::size_t pixelCount() const {
-    return static_cast<std::size_t>(job.camera().width) * job.camera().height;
+    return static_cast<std::size_t>(imageWidth(job.imager)) * imageHeight(job.imager);
   }
   bool gltf() const { return job.settings.materials == capture::MaterialModel::Gltf; }
 
@@ -180,34 +188,47 @@ void GlBackend::setScene(const scene::Scene& scene, const rays::RayScene* /*rays
   sceneObjects_ = std::make_unique<SceneObjects>(scene);
 }
 
+void GlBackend::setSurfaces(std::unique_ptr<ir::SurfaceImage> samples,
+                            std::unique_ptr<ir::SurfaceImage> centres) {
+  TOFSIM_CHECK(samples != nullptr);
+  givenSamples_ = std::move(samples);
+  givenCentres_ = std::move(centres);
+}
+
 ir::CentreSurfaces GlBackend::prepareSurfaces(const RenderJob& job) {
   passes_.reset();  // the previous render's GL objects go first
   TOFSIM_CHECK_MSG(sceneObjects_ != nullptr && &sceneObjects_->scene == job.scene,
                    "setScene with the job's scene must come first");
-  if (pinhole(job.imager) == nullptr) {
-    // Given samples (the driver's traced primary hits) are not read by the GL
-    // gathers yet: issue 22 item 2 leaves that path for the GL backend open.
-    throw InputError(
-        "the GL backend rasterizes pinhole cameras only; a point-set imager renders with "
-        "render.backend: cpu");
-  }
-  if (job.light.type == capture::Light::Type::Lambertian) {
-    // light.glsl's profile and cube shadow map know point and spot lights.
-    throw InputError(
-        "the GL backend lights with point and spot lights; a Lambertian (laser "
-        "spot) light renders with render.backend: cpu");
-  }
-  const Camera& camera = job.camera();
   const int32_t n = job.settings.pixel_samples;
+  const int32_t width = imageWidth(job.imager), height = imageHeight(job.imager);
   const int32_t maxSide = context_.limits().maxTextureSize;
-  if (n > 1 && (camera.width * n > maxSide || camera.height * n > maxSide)) {
-    throw InputError("camera.resolution " + std::to_string(camera.width) + "x" +
-                     std::to_string(camera.height) + " times render.pixel_samples " +
-                     std::to_string(n) + " exceeds the GL texture limit " +
-                     std::to_string(maxSide) + " for the sub-pixel G-buffer");
+  if (n > 1 && (width * n > maxSide || height * n > maxSide)) {
+    throw InputError("camera.resolution " + std::to_string(width) + "x" + std::to_string(height) +
+                     " times render.pixel_samples " + std::to_string(n) +
+                     " exceeds the GL texture limit " + std::to_string(maxSide) +
+                     " for the sub-pixel G-buffer");
   }
   passes_ = std::make_unique<Passes>(job, sceneObjects_->gpuScene);
   Passes& p = *passes_;
+  ir::CentreSurfaces surfaces =
+      pinhole(job.imager) != nullptr ? rasterizeSurfaces(p) : loadGivenSurfaces(p);
+  if (gpu::adaptiveSamples(job.settings)) {
+    // Until setSampledPixels: every pixel takes its N x N samples.
+    p.sampledPixels = gl::Buffer(p.pixelCount() * sizeof(uint32_t));
+    p.sampledPixels.fill(1u);
+  }
+  p.shadowMap.render(p.gpuScene);
+
+  p.directGather =
+      gpu::makeProgram({{GL_COMPUTE_SHADER, "direct_gather.comp"}}, gpu::gatherDefines(job));
+  setLightUniforms(p.directGather, job.light);
+  p.shadowMap.bind(p.directGather);
+  configureGather(p.directGather, job);
+  return surfaces;
+}
+
+ir::CentreSurfaces GlBackend::rasterizeSurfaces(Passes& p) const {
+  const Camera& camera = p.job.camera();
   const glm::vec2 range = depthRange(p.bounds.lo, p.bounds.hi, camera.position_world);
   const glm::mat4 viewProjection = camera.projection(range.x, range.y) * camera.view();
   p.gbuffer.render(p.gpuScene, viewProjection, camera.position_world);
@@ -224,28 +245,31 @@ ir::CentreSurfaces GlBackend::prepareSurfaces(const RenderJob& job) {
     maps.normal.download(GL_RGBA, GL_FLOAT, surfaces.normals.size() * sizeof(float),
                          surfaces.normals.data());
   };
-  if (n == 1) {
+  if (p.samplesPerSide == 1) {
     download(p.gbuffer);
-  } else {
-    const bool adaptive = gpu::adaptiveSamples(job.settings);
-    auto centres = std::make_unique<SurfaceMaps>(camera.width, camera.height, adaptive && p.gltf());
-    centres->render(p.gpuScene, viewProjection, camera.position_world);
-    download(*centres);
-    if (adaptive) {
-      p.centres = std::move(centres);
-      // Until setSampledPixels: every pixel takes its N x N samples.
-      p.sampledPixels = gl::Buffer(p.pixelCount() * sizeof(uint32_t));
-      p.sampledPixels.fill(1u);
-    }
+    return surfaces;
   }
-  p.shadowMap.render(p.gpuScene);
-
-  p.directGather = gpu::makeProgram({{GL_COMPUTE_SHADER, "direct_gather.comp"}},
-                                    gpu::gatherDefines(job.settings));
-  setLightUniforms(p.directGather, job.light);
-  p.shadowMap.bind(p.directGather);
-  configureGather(p.directGather, job);
+  const bool adaptive = gpu::adaptiveSamples(p.job.settings);
+  auto centres = std::make_unique<SurfaceMaps>(camera.width, camera.height, adaptive && p.gltf());
+  centres->render(p.gpuScene, viewProjection, camera.position_world);
+  download(*centres);
+  if (adaptive) p.centres = std::move(centres);
   return surfaces;
+}
+
+ir::CentreSurfaces GlBackend::loadGivenSurfaces(Passes& p) {
+  TOFSIM_CHECK_MSG(givenSamples_ != nullptr,
+                   "an imager that is not a pinhole needs setSurfaces before prepareSurfaces");
+  const std::unique_ptr<ir::SurfaceImage> samples = std::move(givenSamples_);
+  const std::unique_ptr<ir::SurfaceImage> centres = std::move(givenCentres_);
+  p.gbuffer.load(*samples, p.samplesPerSide);
+  if (p.samplesPerSide == 1) return ir::centresOf(*samples);
+  TOFSIM_CHECK_MSG(centres != nullptr, "setSurfaces needs the pixel centres' samples with N > 1");
+  if (gpu::adaptiveSamples(p.job.settings)) {
+    p.centres = std::make_unique<SurfaceMaps>(samples->width, samples->height, p.gltf());
+    p.centres->load(*centres, 1);
+  }
+  return ir::centresOf(*centres);
 }
 
 void GlBackend::setSampledPixels(const std::vector<uint8_t>& sampled) {
@@ -272,7 +296,7 @@ void GlBackend::setVpls(const std::vector<ir::Vpl>& vpls) {
   Passes& p = passes();
   p.indirectLight.reset();
   if (vpls.empty()) return;
-  p.indirectLight = std::make_unique<IndirectLight>(sceneObjects_->soup(), vpls, p.job.settings);
+  p.indirectLight = std::make_unique<IndirectLight>(sceneObjects_->soup(), vpls, p.job);
   configureIndirectGather(p.indirectLight->gatherProgram(), p.job);
 }
 

@@ -41,7 +41,8 @@ std::vector<std::pair<std::string, std::string>> shaderDefines() {
   };
 }
 
-std::vector<std::pair<std::string, std::string>> gatherDefines(const capture::RenderSettings& s) {
+std::vector<std::pair<std::string, std::string>> gatherDefines(const capture::RenderJob& job) {
+  const capture::RenderSettings& s = job.settings;
   std::vector<std::pair<std::string, std::string>> defines = {
       {"PIXEL_SAMPLES", std::to_string(s.pixel_samples)}};
   if (s.pixel_footprint) defines.emplace_back("PIXEL_FOOTPRINT", "1");
@@ -50,6 +51,9 @@ std::vector<std::pair<std::string, std::string>> gatherDefines(const capture::Re
   // Only with sub-samples to skip: every other render compiles the gathers
   // of before, which read no mask.
   if (adaptiveSamples(s)) defines.emplace_back("ADAPTIVE_SAMPLES", "1");
+  if (s.pixel_footprint && capture::pinhole(job.imager) == nullptr) {
+    defines.emplace_back("SURFACE_STEPS", "1");
+  }
   return defines;
 }
 

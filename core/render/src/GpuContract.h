@@ -14,6 +14,7 @@
 #include <utility>
 #include <vector>
 
+#include "tofsim/capture/RenderJob.h"
 #include "tofsim/capture/RenderSettings.h"
 #include "tofsim/capture/SegmentSink.h"
 #include "tofsim/gl/Program.h"
@@ -68,15 +69,15 @@ enum FragmentOutput : int { kOutPosition, kOutNormal, kOutAlbedo, kOutMetallicRo
 /// The contract as (TOFSIM_NAME, value) defines.
 std::vector<std::pair<std::string, std::string>> shaderDefines();
 
-/// The gathers' variant of `settings` (direct_gather.comp, indirect_gather.comp):
+/// The gathers' variant of the job (direct_gather.comp, indirect_gather.comp):
 /// PIXEL_SAMPLES (render.pixel_samples), PIXEL_FOOTPRINT, VPL_FOOTPRINT,
 /// GLTF_MATERIALS (render.materials: gltf), ADAPTIVE_SAMPLES
-/// (render.adaptive_pixel_samples with pixel_samples > 1). As defines, so that
-/// render.pixel_footprint: false compiles the point-sampling shader of before,
-/// render.materials: lambertian the Lambertian one, and a render without
-/// adaptive samples the shader that reads no per-pixel mask.
-std::vector<std::pair<std::string, std::string>> gatherDefines(
-    const capture::RenderSettings& settings);
+/// (render.adaptive_pixel_samples with pixel_samples > 1), SURFACE_STEPS (a
+/// footprint over an imager whose steps are the surface's: a point set). As
+/// defines, so that render.pixel_footprint: false compiles the point-sampling
+/// shader of before, render.materials: lambertian the Lambertian one, and a
+/// render without adaptive samples the shader that reads no per-pixel mask.
+std::vector<std::pair<std::string, std::string>> gatherDefines(const capture::RenderJob& job);
 
 /// render.adaptive_pixel_samples in effect: with pixel_samples > 1 only (one
 /// sample per pixel has nothing to skip). The gathers' ADAPTIVE_SAMPLES.

@@ -20,9 +20,9 @@ namespace {
 // Measured on the Cornell box: light went missing above ~45000 of our trips.
 constexpr std::size_t kTripsPerDispatch = 20000;
 
-std::vector<std::pair<std::string, std::string>> gatherDefines(const capture::RenderSettings& s) {
-  std::vector<std::pair<std::string, std::string>> defines = gpu::gatherDefines(s);
-  if (s.indirect.visibility == capture::Visibility::Exact) {
+std::vector<std::pair<std::string, std::string>> gatherDefines(const capture::RenderJob& job) {
+  std::vector<std::pair<std::string, std::string>> defines = gpu::gatherDefines(job);
+  if (job.settings.indirect.visibility == capture::Visibility::Exact) {
     defines.emplace_back("EXACT_VISIBILITY", "1");
   }
   return defines;
@@ -45,7 +45,12 @@ gl::Buffer vplBufferOf(const std::vector<ir::Vpl>& vpls, bool gltf) {
 }  // namespace
 
 IndirectLight::IndirectLight(const TriangleSoup& soup, const std::vector<ir::Vpl>& vpls,
-                             const capture::RenderSettings& settings)
+                             const capture::RenderJob& job)
+    : IndirectLight(soup, vpls, job.settings, gatherDefines(job)) {}
+
+IndirectLight::IndirectLight(const TriangleSoup& soup, const std::vector<ir::Vpl>& vpls,
+                             const capture::RenderSettings& settings,
+                             const std::vector<std::pair<std::string, std::string>>& defines)
     : settings_(settings.indirect),
       seed_(settings.seed),
       samplesPerPixel_(static_cast<std::size_t>(settings.pixel_samples) * settings.pixel_samples),
@@ -54,8 +59,7 @@ IndirectLight::IndirectLight(const TriangleSoup& soup, const std::vector<ir::Vpl
       // A shadow ray visits about two nodes per level and a few leaves.
       tripsPerShadowRay_(std::min<std::size_t>(soup.bvh.size() + soup.triangleCount(),
                                                4 * static_cast<std::size_t>(soup.bvhDepth) + 16)),
-      gather_(gpu::makeProgram({{GL_COMPUTE_SHADER, "indirect_gather.comp"}},
-                               gatherDefines(settings))) {
+      gather_(gpu::makeProgram({{GL_COMPUTE_SHADER, "indirect_gather.comp"}}, defines)) {
   TOFSIM_CHECK(!vpls.empty() && triangleCount_ > 0);
   corners_ = gl::Buffer(soup.corners.size() * sizeof(glm::vec4), soup.corners.data(), 0);
   areaCdf_ = gl::Buffer(soup.areaCdf.size() * sizeof(float), soup.areaCdf.data(), 0);

@@ -6,9 +6,11 @@
 // a BVH replace the ISMs.
 
 #include <cstddef>
+#include <string>
+#include <utility>
 #include <vector>
 
-#include "tofsim/capture/RenderSettings.h"
+#include "tofsim/capture/RenderJob.h"
 #include "tofsim/gl/Buffer.h"
 #include "tofsim/gl/Program.h"
 #include "tofsim/ir/IrBackend.h"
@@ -21,10 +23,10 @@ using scene::TriangleSoup;
 
 class IndirectLight {
  public:
-  /// The gather's variant (pixel samples, footprints) and the ISM seed come
-  /// from `settings`.
+  /// The gather's variant (pixel samples, footprints, the imager's kind) and
+  /// the ISM seed come from the job.
   IndirectLight(const TriangleSoup& soup, const std::vector<ir::Vpl>& vpls,
-                const capture::RenderSettings& settings);
+                const capture::RenderJob& job);
 
   std::size_t vplCount() const { return vplCount_; }
   /// GPU bytes that do not depend on the batch size (geometry, VPLs).
@@ -45,6 +47,9 @@ class IndirectLight {
               std::size_t pixelCount);
 
  private:
+  IndirectLight(const TriangleSoup& soup, const std::vector<ir::Vpl>& vpls,
+                const capture::RenderSettings& settings,
+                const std::vector<std::pair<std::string, std::string>>& defines);
   void bindSceneBuffers() const;
   /// VPLs one gather dispatch may loop over (see kLoopTripLimit in the shader).
   std::size_t vplsPerDispatch() const;

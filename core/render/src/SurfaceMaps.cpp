@@ -6,6 +6,8 @@
 #include "GpuContract.h"
 #include "GpuScene.h"
 #include "tofsim/gl/Check.h"
+#include "tofsim/ir/SurfaceImage.h"
+#include "tofsim/util/Error.h"
 
 namespace tofsim::render {
 
@@ -56,6 +58,35 @@ void SurfaceMaps::render(const GpuScene& scene, const glm::mat4& viewProjection,
              withMetallicRoughness_ ? GpuScene::Materials::SetGltf : GpuScene::Materials::Set);
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   TOFSIM_GL_CHECK("SurfaceMaps::render");
+}
+
+void SurfaceMaps::load(const ir::SurfaceImage& samples, int32_t samplesPerSide) {
+  const int32_t n = samplesPerSide;
+  TOFSIM_CHECK(position.width() == samples.width * n && position.height() == samples.height * n);
+  const auto texels = static_cast<std::size_t>(position.width()) * position.height();
+  std::vector<glm::vec4> positions(texels), normals(texels), albedos(texels);
+  std::vector<glm::vec2> metallicRoughnesses(withMetallicRoughness_ ? texels : 0);
+  for (int32_t y = 0; y < samples.height; ++y) {
+    for (int32_t x = 0; x < samples.width; ++x) {
+      const auto pixel = static_cast<std::size_t>(y) * samples.width + x;
+      TOFSIM_CHECK_EQ(samples.side[pixel], n);
+      for (int32_t s = 0; s < n * n; ++s) {
+        const std::size_t from = samples.firstSample[pixel] + static_cast<std::size_t>(s);
+        const auto to = static_cast<std::size_t>(y * n + s / n) * position.width() +
+                        static_cast<std::size_t>(x * n + s % n);
+        positions[to] = samples.position[from];
+        normals[to] = samples.normal[from];
+        albedos[to] = samples.albedo[from];
+        if (withMetallicRoughness_) metallicRoughnesses[to] = samples.metallicRoughness[from];
+      }
+    }
+  }
+  position.upload2D(GL_RGBA, GL_FLOAT, positions.data());
+  normal.upload2D(GL_RGBA, GL_FLOAT, normals.data());
+  albedo.upload2D(GL_RGBA, GL_FLOAT, albedos.data());
+  if (withMetallicRoughness_)
+    metallicRoughness.upload2D(GL_RG, GL_FLOAT, metallicRoughnesses.data());
+  TOFSIM_GL_CHECK("SurfaceMaps::load");
 }
 
 glm::vec2 depthRange(const glm::vec3& lo, const glm::vec3& hi, const glm::vec3& eye) {

@@ -13,6 +13,11 @@
 namespace tofsim::render {
 
 class GpuScene;
+}  // namespace tofsim::render
+namespace tofsim::ir {
+struct SurfaceImage;
+}  // namespace tofsim::ir
+namespace tofsim::render {
 
 struct SurfaceMaps {
   gl::Texture position;  ///< RGBA32F: xyz world, w = 1 on a surface
@@ -28,6 +33,11 @@ struct SurfaceMaps {
   /// Rasterizes the scene with `viewProjection` from `viewpoint_world`.
   void render(const GpuScene& scene, const glm::mat4& viewProjection,
               const glm::vec3& viewpoint_world);
+  /// Takes traced samples instead (an imager a rasterizer cannot draw):
+  /// every pixel's samplesPerSide^2 samples, laid out as the gathers read a
+  /// rasterized G-buffer (surface_samples.glsl: sample j N + i of pixel
+  /// (x, y) at texel (x N + i, y N + j)).
+  void load(const ir::SurfaceImage& samples, int32_t samplesPerSide);
 
  private:
   gl::Framebuffer framebuffer_;

@@ -12,6 +12,7 @@
 
 #include "tofsim/capture/RenderJob.h"
 #include "tofsim/config/RunConfig.h"
+#include "tofsim/gl/Context.h"
 #include "tofsim/pipeline/NlosScan.h"
 #include "tofsim/volume/TimeAxis.h"
 
@@ -26,6 +27,7 @@ struct NlosVolume {
   std::size_t vpls = 0;               ///< summed over the captures
   double seconds = 0.0;
   std::string device;
+  std::string backend;  ///< "cpu" or "gl" (render.backend, auto decided), or "reference"
 };
 
 /// The seed capture `capture` (its index in the scan, NlosScanGeometry's
@@ -34,14 +36,17 @@ struct NlosVolume {
 /// count or the order the captures run in. (IR's captures all use render.seed.)
 uint64_t nlosCaptureSeed(uint64_t seed, std::size_t capture);
 
-/// Renders with IR over the CPU backend (render.cpu_threads), or the
-/// reference path tracer (render.renderer: reference, render.reference.*,
-/// its threads from render.reference.threads). Confocal scans (one point per
+/// Renders with IR over render.backend (the CPU one with render.cpu_threads,
+/// or GL on an EGL context of `eglPlatform`), or the reference path tracer
+/// (render.renderer: reference, render.reference.*, its threads from
+/// render.reference.threads). On the CPU, confocal scans (one point per
 /// capture) run their captures in parallel, one single-threaded renderer per
-/// worker; the others one capture after another on every core. The bytes are
-/// the same either way (neither renderer's depend on its thread count).
+/// worker; the others (and every GL scan, on its one context) one capture
+/// after another. The bytes are the same either way (neither renderer's
+/// depend on its thread count).
 NlosVolume renderNlosScan(const config::RunConfig& config, const scene::Scene& scene,
                           const NlosScanGeometry& scan,
-                          const capture::ProgressCallback& progress = {});
+                          const capture::ProgressCallback& progress = {},
+                          gl::EglPlatform eglPlatform = gl::EglPlatform::Auto);
 
 }  // namespace tofsim::pipeline

@@ -88,6 +88,12 @@ class PixelSteps {
   PixelSteps(const Imager& imager, float side);
   /// At surface point x with unit normal n.
   FootprintSteps at(const glm::vec3& x, const glm::vec3& n) const;
+  /// What `at` starts from, for a device that computes it itself
+  /// (footprint_deposit.glsl): a pinhole's ray steps across the (sub-)pixel,
+  /// or a point set's surface steps, which `at` returns as they are.
+  bool carriedToSurface() const { return pinhole_; }
+  const glm::vec3& stepU() const { return stepX_; }
+  const glm::vec3& stepV() const { return stepY_; }
 
  private:
   bool pinhole_ = false;

@@ -47,7 +47,6 @@ struct CpuBackendOptions {
 class CpuIsm;
 class LitBounds;
 struct PixelSurface;
-struct SurfaceImage;
 struct VplArrays;
 
 class CpuBackend : public ir::IrBackend {
@@ -60,6 +59,9 @@ class CpuBackend : public ir::IrBackend {
   bool tracesRays() const override { return true; }
   void setScene(const scene::Scene& scene, const rays::RayScene* rays) override;
   ir::CentreSurfaces prepareSurfaces(const capture::RenderJob& job) override;
+  /// Never called: the CPU backend traces every imager's samples itself.
+  void setSurfaces(std::unique_ptr<ir::SurfaceImage> samples,
+                   std::unique_ptr<ir::SurfaceImage> centres) override;
   void setSampledPixels(const std::vector<uint8_t>& sampled) override;
   std::vector<ir::Vpl> generateVpls(const capture::RenderJob& job) override;
   void setVpls(const std::vector<ir::Vpl>& vpls) override;
@@ -102,8 +104,9 @@ class CpuBackend : public ir::IrBackend {
   /// last leg does not count (capture::lastLegCounts).
   bool dropLastLeg_ = false;
   const rays::RayScene* scene_ = nullptr;  ///< the driver's (setScene)
-  std::unique_ptr<LitBounds> litBounds_;        ///< of the scene set (setScene)
-  std::unique_ptr<SurfaceImage> surfaces_;  ///< every pixel's samples (SurfaceImage::firstSample)
+  std::unique_ptr<LitBounds> litBounds_;   ///< of the scene set (setScene)
+  std::unique_ptr<ir::SurfaceImage>
+      surfaces_;  ///< every pixel's samples (SurfaceImage::firstSample)
   /// render.adaptive_pixel_samples: surfaces_ holds the centres until
   /// setSampledPixels (or finishSurfaces) traces the sub-samples.
   bool subSamplesPending_ = false;

@@ -8,7 +8,8 @@
 // Call order: setScene once per scene (IrRenderer::render calls it when the
 // job's scene is not the one set last, or after IrRenderer::sceneChanged),
 // then per render (IrRenderer::render):
-//   limits, prepareSurfaces, [setSampledPixels: render.adaptive_pixel_samples
+//   limits, [setSurfaces: an imager that cannot be rasterized, on a backend
+//   that does not trace rays], prepareSurfaces, [setSampledPixels: render.adaptive_pixel_samples
 //   with pixel_samples > 1 only], generateVpls, setVpls, fixedBytes,
 //   visibilityBytesPerVpl, allocate, then for each segment (increasing pixel
 //   ranges): beginSegment, gatherDirect, for each VPL batch b (increasing):
@@ -34,6 +35,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <glm/glm.hpp>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -45,6 +47,8 @@ class RayScene;
 }
 
 namespace tofsim::ir {
+
+struct SurfaceImage;
 
 /// The device's limits the plan and the validation respect.
 struct DeviceLimits {
@@ -113,6 +117,14 @@ class IrBackend {
   /// the adaptive samples' edge pixels from it. Starts a new render: drops
   /// any earlier render's state (not the scene's).
   virtual CentreSurfaces prepareSurfaces(const capture::RenderJob& job) = 0;
+  /// Only for an imager a rasterizer cannot draw (capture::pinhole is null)
+  /// on a backend that does not trace rays, right before prepareSurfaces:
+  /// the surface samples the driver traced with its RayScene (traceSurfaces
+  /// at render.pixel_samples N) and, with N > 1, the pixel centres' (N = 1;
+  /// null otherwise), kept for prepareSurfaces, which takes them instead of
+  /// rasterizing.
+  virtual void setSurfaces(std::unique_ptr<SurfaceImage> samples,
+                           std::unique_ptr<SurfaceImage> centres) = 0;
   /// render.adaptive_pixel_samples with render.pixel_samples N > 1 only,
   /// right after prepareSurfaces: one entry per pixel (row-major, row 0 at
   /// the top), 1 where the pixel takes its N x N sub-pixel samples, 0 where it

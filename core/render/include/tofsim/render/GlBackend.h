@@ -1,7 +1,8 @@
 #pragma once
-// ir::IrBackend on OpenGL 4.5: the camera's G-buffer and the light's shadow
-// map by rasterization, VPLs from a reflective shadow map, imperfect shadow
-// maps (or BVH shadow rays) for their visibility, and compute-shader gathers
+// ir::IrBackend on OpenGL 4.5: the camera's G-buffer by rasterization (or,
+// for an imager a rasterizer cannot draw, the driver's traced samples loaded
+// into it: setSurfaces), the light's shadow map by rasterization, VPLs from a reflective shadow
+// map, imperfect shadow maps (or BVH shadow rays) for their visibility, and compute-shader gathers
 // with one thread per pixel, over each pixel's N x N sub-pixel samples (or,
 // with render.adaptive_pixel_samples, its one centre sample where the
 // driver's mask says so). The driver (ir::IrRenderer) plans and loops; this
@@ -28,6 +29,10 @@ class GlBackend : public ir::IrBackend {
   std::string description() const override;
   ir::DeviceLimits limits() const override;
   void setScene(const scene::Scene& scene, const rays::RayScene* rays) override;
+  /// Keeps the driver's traced samples for the next prepareSurfaces, which
+  /// loads them into the G-buffer instead of rasterizing it.
+  void setSurfaces(std::unique_ptr<ir::SurfaceImage> samples,
+                   std::unique_ptr<ir::SurfaceImage> centres) override;
   ir::CentreSurfaces prepareSurfaces(const capture::RenderJob& job) override;
   void setSampledPixels(const std::vector<uint8_t>& sampled) override;
   std::vector<ir::Vpl> generateVpls(const capture::RenderJob& job) override;
@@ -46,12 +51,17 @@ class GlBackend : public ir::IrBackend {
   struct SceneObjects;  // the scene's GL objects, kept across renders (GlBackend.cpp)
   struct Passes;        // one render's GL objects (GlBackend.cpp)
   Passes& passes() const;
+  /// prepareSurfaces' G-buffer of a pinhole: rasterized.
+  ir::CentreSurfaces rasterizeSurfaces(Passes& p) const;
+  /// prepareSurfaces' G-buffer of another imager: setSurfaces' samples.
+  ir::CentreSurfaces loadGivenSurfaces(Passes& p);
 
   std::unique_ptr<gl::Context> ownedContext_;
   gl::Context& context_;
   // Declared before passes_: a render's objects go first.
   std::unique_ptr<SceneObjects> sceneObjects_;
   std::unique_ptr<Passes> passes_;
+  std::unique_ptr<ir::SurfaceImage> givenSamples_, givenCentres_;  ///< setSurfaces', until used
 };
 
 }  // namespace tofsim::render

@@ -1,9 +1,10 @@
-#include "SurfaceImage.h"
+#include "tofsim/ir/SurfaceImage.h"
 
-#include "ParallelFor.h"
+#include "tofsim/rays/RayScene.h"
 #include "tofsim/util/Error.h"
+#include "tofsim/util/ParallelFor.h"
 
-namespace tofsim::cpu {
+namespace tofsim::ir {
 
 namespace {
 
@@ -57,8 +58,8 @@ void traceInto(SurfaceImage& image, const rays::RayScene& scene, const capture::
 
 }  // namespace
 
-SurfaceImage traceSurfaces(const rays::RayScene& scene, const capture::Imager& imager,
-                           int threads, int32_t samplesPerSide) {
+SurfaceImage traceSurfaces(const rays::RayScene& scene, const capture::Imager& imager, int threads,
+                           int32_t samplesPerSide) {
   const std::size_t pixels =
       static_cast<std::size_t>(capture::imageWidth(imager)) * capture::imageHeight(imager);
   SurfaceImage image = emptyImage(imager, std::vector<int32_t>(pixels, samplesPerSide));
@@ -78,4 +79,18 @@ SurfaceImage traceSampledPixels(const rays::RayScene& scene, const capture::Imag
   return image;
 }
 
-}  // namespace tofsim::cpu
+CentreSurfaces centresOf(const SurfaceImage& centres) {
+  TOFSIM_CHECK_EQ(centres.size(), static_cast<std::size_t>(centres.width) * centres.height);
+  CentreSurfaces out;
+  out.positions.resize(centres.size() * 4);
+  out.normals.resize(centres.size() * 4);
+  for (std::size_t i = 0; i < centres.size(); ++i) {
+    for (int k = 0; k < 4; ++k) {
+      out.positions[i * 4 + k] = centres.position[i][k];
+      out.normals[i * 4 + k] = centres.normal[i][k];
+    }
+  }
+  return out;
+}
+
+}  // namespace tofsim::ir

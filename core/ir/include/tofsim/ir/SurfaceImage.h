@@ -1,18 +1,26 @@
 #pragma once
 // The first surface seen through each pixel, found by one ray through the
-// pixel's centre, or through each of its N x N sub-pixel centres: the CPU
-// counterpart of the GL's rasterized SurfaceMaps, with its conventions (world
-// position with w = 1 on a surface and 0 elsewhere, unit normal facing the
-// viewpoint, albedo and metallic-roughness with textures).
+// pixel's centre, or through each of its N x N sub-pixel centres: the surface
+// samples every gather reads. The CPU backend traces them for every imager;
+// for an imager a rasterizer cannot draw (a point set) the driver traces them
+// and hands them to the GL backend (IrBackend::setSurfaces), which lays them
+// into its G-buffer textures. Their conventions are the rasterized
+// SurfaceMaps' (shaders/gbuffer.frag, read by shaders/surface_samples.glsl):
+// world position with w = 1 on a surface and 0 elsewhere, unit normal facing
+// the viewpoint, albedo and metallic-roughness with textures.
 
 #include <cstdint>
 #include <glm/glm.hpp>
 #include <vector>
 
 #include "tofsim/capture/Imager.h"
-#include "tofsim/rays/RayScene.h"
+#include "tofsim/ir/IrBackend.h"
 
-namespace tofsim::cpu {
+namespace tofsim::rays {
+class RayScene;
+}
+
+namespace tofsim::ir {
 
 struct SurfaceImage {
   int32_t width = 0;
@@ -38,8 +46,8 @@ struct SurfaceImage {
 /// ray (capture::PrimaryRays; a pinhole's Camera::pixelDirection); with samplesPerSide N > 1, N x N
 /// samples per pixel at the centres of its sub-pixels, sub-pixel (i, j) at offset
 /// ((i + 1/2) / N - 1/2, (j + 1/2) / N - 1/2), entry j * N + i.
-SurfaceImage traceSurfaces(const rays::RayScene& scene, const capture::Imager& imager,
-                           int threads, int32_t samplesPerSide = 1);
+SurfaceImage traceSurfaces(const rays::RayScene& scene, const capture::Imager& imager, int threads,
+                           int32_t samplesPerSide = 1);
 
 /// render.adaptive_pixel_samples: N x N samples (as traceSurfaces places
 /// them) for the pixels where sampled[p] is 1, the centre's one elsewhere;
@@ -48,4 +56,8 @@ SurfaceImage traceSampledPixels(const rays::RayScene& scene, const capture::Imag
                                 int threads, int32_t samplesPerSide,
                                 const std::vector<uint8_t>& sampled);
 
-}  // namespace tofsim::cpu
+/// The pixel centres' positions and normals, as prepareSurfaces returns
+/// them, of an image of one sample per pixel.
+CentreSurfaces centresOf(const SurfaceImage& centres);
+
+}  // namespace tofsim::ir
