@@ -33,8 +33,9 @@ uniform float uIndexOfRefraction;
 uniform int uCameraUnwarp;
 uniform vec3 uCameraPosition_world;
 
+#define GATHER_HISTOGRAM direct
+#include "bin_deposit.glsl"
 #ifdef PIXEL_FOOTPRINT
-#define FOOTPRINT_HISTOGRAM direct
 #include "footprint_deposit.glsl"
 #endif
 
@@ -45,12 +46,9 @@ void gatherSample(uint local, SurfaceSample g, inout float lostBefore, inout flo
   vec3 n = g.normal;
   vec3 albedo = g.albedo;
 
-  vec3 toLight = uLightPosition_world - x;
-  float dLight = length(toLight);
-  vec3 wLight = toLight / dLight;
-  float cosX = dot(n, wLight);
-  if (cosX <= 0.0) return;
-  float profile = lightProfile(-wLight);
+  LightArrival arrival = arrivalAt(x, n);
+  float profile = arrival.profile, cosX = arrival.cosX, dLight = arrival.dLight;
+  vec3 wLight = arrival.wLight;
   if (profile <= 0.0 || !visibleFromLight(x, cosX)) return;
 
 #ifdef GLTF_MATERIALS
@@ -77,20 +75,8 @@ void gatherSample(uint local, SurfaceSample g, inout float lostBefore, inout flo
 #if PIXEL_SAMPLES > 1
   radiance = radiance * g.weight;
 #endif
-  int bin = binOfPath(path_m, uStart_m, uBinWidth_m);
-  if (bin < 0 || bin >= uBins) {
-    float value = radiance.r + radiance.g + radiance.b;
-    if (bin < 0) {
-      lostBefore += value;
-    } else {
-      lostAfter += value;
-    }
-    return;
-  }
-  uint base = (local * uint(uBins) + uint(bin)) * uint(TOFSIM_CHANNELS);
-  direct[base + 0u] += radiance.r;
-  direct[base + 1u] += radiance.g;
-  direct[base + 2u] += radiance.b;
+  depositInBin(local, binOfPath(path_m, uStart_m, uBinWidth_m), 1.0, radiance, lostBefore,
+               lostAfter);
 #endif
 }
 

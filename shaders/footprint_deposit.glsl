@@ -6,8 +6,8 @@
 // core/physics/include/tofsim/physics/FootprintBuffer.h, so the GL and CPU
 // volumes agree to float rounding.
 //
-// The including gather defines FOOTPRINT_HISTOGRAM (the name of its float
-// volume array) and declares uBins and uCameraPosition_world. A sample's
+// The including gather defines GATHER_HISTOGRAM (the name of its float
+// volume array, bin_deposit.glsl) and declares uBins and uCameraPosition_world. A sample's
 // footprint is its sub-pixel (uSampleStepX/Y), or with ADAPTIVE_SAMPLES, for a
 // masked-out pixel's one centre sample, the whole pixel (uPixelStepX/Y). With
 // SURFACE_STEPS (a point-set imager, capture::PixelSteps) these are the
@@ -22,6 +22,7 @@
 #ifndef TOFSIM_FOOTPRINT_DEPOSIT_GLSL
 #define TOFSIM_FOOTPRINT_DEPOSIT_GLSL
 
+#include "bin_deposit.glsl"
 #include "footprint_kernel.glsl"
 
 // Per pixel of the segment: bins x TOFSIM_CHANNELS doubles, (bin, channel).
@@ -67,7 +68,7 @@ void surfaceStepsAcrossSample(vec3 x, vec3 n, bool wholePixel, out vec3 dxdu, ou
 }
 
 // Narrow kernel: bin first + j (j < count) gets the mass between its edges
-// times energy in the histogram, or off the axis (physics::depositNarrowBin).
+// times energy in the histogram, or off the axis (physics::depositInBin).
 // `lower` carries the CDF at the bin's lower edge from the previous bin, so
 // each edge is evaluated once: footprintNarrowMass(kernel, j) bit for bit.
 void footprintAddNarrowBin(uint local, vec3 kernel, int first, int count, int j, vec3 energy,
@@ -76,20 +77,7 @@ void footprintAddNarrowBin(uint local, vec3 kernel, int first, int count, int j,
   float upper = footprintNarrowEdgeCdf(kernel, j);
   float mass = upper - lower;
   lower = upper;
-  int k = first + j;
-  if (k < 0 || k >= uBins) {
-    float lost = mass * (energy.r + energy.g + energy.b);
-    if (k < 0) {
-      lostBefore += lost;
-    } else {
-      lostAfter += lost;
-    }
-    return;
-  }
-  uint i = (local * uint(uBins) + uint(k)) * uint(TOFSIM_CHANNELS);
-  FOOTPRINT_HISTOGRAM[i + 0u] += mass * energy.r;
-  FOOTPRINT_HISTOGRAM[i + 1u] += mass * energy.g;
-  FOOTPRINT_HISTOGRAM[i + 2u] += mass * energy.b;
+  depositInBin(local, first + j, mass, energy, lostBefore, lostAfter);
 }
 
 // Wide kernel: slot `slot` of the difference buffer (footprintSlotBin,

@@ -51,8 +51,9 @@ uniform uint uIsmFirstVpl;  // first VPL whose ISM is at the start of the ISM bu
 uniform float uGeometryClamp;  // <= 0: no clamping
 uniform float uSceneScale_m;
 
+#define GATHER_HISTOGRAM indirect
+#include "bin_deposit.glsl"
 #ifdef PIXEL_FOOTPRINT
-#define FOOTPRINT_HISTOGRAM indirect
 #include "footprint_deposit.glsl"
 #endif
 
@@ -164,20 +165,8 @@ void gatherVpl(uint local, Sample at, uint k, Vpl vpl, inout float lostBefore,
   vec3 kernel = footprintKernel(path_m, vec4(pixelSteps, patchSteps), uStart_m, uBinWidth_m);
   depositContribution(local, kernel, radiance, lostBefore, lostAfter);
 #else
-  int bin = binOfPath(path_m, uStart_m, uBinWidth_m);
-  if (bin < 0 || bin >= uBins) {
-    float value = radiance.r + radiance.g + radiance.b;
-    if (bin < 0) {
-      lostBefore += value;
-    } else {
-      lostAfter += value;
-    }
-    return;
-  }
-  uint i = (local * uint(uBins) + uint(bin)) * uint(TOFSIM_CHANNELS);
-  indirect[i + 0u] += radiance.r;
-  indirect[i + 1u] += radiance.g;
-  indirect[i + 2u] += radiance.b;
+  depositInBin(local, binOfPath(path_m, uStart_m, uBinWidth_m), 1.0, radiance, lostBefore,
+               lostAfter);
 #endif
 }
 

@@ -1,13 +1,13 @@
 // The point, spot or Lambertian light and its shadow map (a cube rendered as
-// six layers of a 2D array texture). The profile's math is
-// capture::Light::angularProfile: spotFalloff in transient_physics.glsl for a
-// spot, the cosine about its direction for a Lambertian (laser spot) light.
+// six layers of a 2D array texture). How it reaches a surface point is
+// lightArrival in transient_physics.glsl, which the CPU backend calls too;
+// the uniforms are capture::Light::profileTerms (LightUniforms.cpp).
 #include "transient_physics.glsl"
 
 uniform vec3 uLightPosition_world;
 uniform vec3 uLightDirection_world;
 uniform vec3 uLightIntensity_W_per_sr;
-uniform int uLightProfile;  // 0 point, 1 spot, 2 Lambertian (LightUniforms.cpp)
+uniform int uLightProfile;  // LIGHT_POINT, LIGHT_SPOT or LIGHT_LAMBERTIAN (transient_physics.glsl)
 uniform float uSpotCosOuter;
 uniform float uSpotCosInner;
 
@@ -15,10 +15,10 @@ uniform mat4 uShadowViewProjection[6];
 uniform int uShadowResolution;
 layout(binding = TOFSIM_UNIT_SHADOW_MAP) uniform sampler2DArray uShadowMap;
 
-float lightProfile(vec3 direction) {
-  if (uLightProfile == 0) return 1.0;
-  if (uLightProfile == 2) return max(0.0, dot(direction, uLightDirection_world));
-  return spotFalloff(dot(direction, uLightDirection_world), uSpotCosOuter, uSpotCosInner);
+// transient_physics.glsl's lightArrival for this light.
+LightArrival arrivalAt(vec3 x, vec3 n) {
+  return lightArrival(x, n, uLightPosition_world, uLightProfile, uLightDirection_world,
+                      uSpotCosOuter, uSpotCosInner);
 }
 
 int cubeFace(vec3 d) {

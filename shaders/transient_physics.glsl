@@ -28,6 +28,43 @@ TOFSIM_PHYSICS_FN float spotFalloff(float cosAngle, float cosOuter, float cosInn
   return s * s * (3.0f - 2.0f * s);
 }
 
+// The kinds of a light's angular profile (capture::Light::Type), as the
+// gathers' uLightProfile holds them.
+const int LIGHT_POINT = 0;
+const int LIGHT_SPOT = 1;
+const int LIGHT_LAMBERTIAN = 2;
+
+// Fraction of a light's intensity emitted towards unit `direction`: 1 for a
+// point light, the spot's falloff about its unit `axis`, the cosine about it
+// for a Lambertian emitter (a laser spot on a wall).
+TOFSIM_PHYSICS_FN float lightProfile(int kind, vec3 axis, float cosOuter, float cosInner,
+                                     vec3 direction) {
+  if (kind == LIGHT_POINT) return 1.0f;
+  if (kind == LIGHT_LAMBERTIAN) return max(0.0f, dot(direction, axis));
+  return spotFalloff(dot(direction, axis), cosOuter, cosInner);
+}
+
+// How the light reaches surface point x with unit normal n, before any
+// visibility test: unit direction and distance to the light, the cosine at x
+// and the light's profile towards x, which is 0 where x faces away from the
+// light or lies outside its profile (nothing arrives then).
+struct LightArrival {
+  vec3 wLight;
+  float dLight;
+  float cosX;
+  float profile;
+};
+TOFSIM_PHYSICS_FN LightArrival lightArrival(vec3 x, vec3 n, vec3 lightPosition, int kind,
+                                            vec3 axis, float cosOuter, float cosInner) {
+  LightArrival a;
+  vec3 toLight = lightPosition - x;
+  a.dLight = length(toLight);
+  a.wLight = toLight / a.dLight;
+  a.cosX = dot(n, a.wLight);
+  a.profile = a.cosX <= 0.0f ? 0.0f : lightProfile(kind, axis, cosOuter, cosInner, -a.wLight);
+  return a;
+}
+
 // Radiance a Lambertian surface of `albedo` at distance dLight from a point
 // light of `intensity` (W/sr) reflects towards any direction, with cosX the
 // cosine at the surface and `profile` the light's angular profile.

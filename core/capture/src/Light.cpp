@@ -18,4 +18,15 @@ float Light::angularProfile(const glm::vec3& direction) const {
   return physics::spotFalloff(cosAngle, cosOuter, cosInner);
 }
 
+Light::ProfileTerms Light::profileTerms() const {
+  ProfileTerms t;
+  t.kind = type == Type::Spot         ? physics::LIGHT_SPOT
+           : type == Type::Lambertian ? physics::LIGHT_LAMBERTIAN
+                                      : physics::LIGHT_POINT;
+  t.axis = glm::normalize(direction_world);
+  t.cosOuter = std::cos(glm::radians(cone_half_angle_deg));
+  t.cosInner = std::cos(glm::radians(std::max(0.0f, cone_half_angle_deg - cone_falloff_deg)));
+  return t;
+}
+
 }  // namespace tofsim::capture

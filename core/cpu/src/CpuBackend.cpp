@@ -241,14 +241,8 @@ void CpuBackend::gatherDirect() {
 void CpuBackend::gatherDirectTile(std::size_t tile) {
   const capture::RenderSettings& s = job_.settings;
   const capture::Light& light = job_.light;
-  const bool spot = light.type == capture::Light::Type::Spot;
-  const bool cosine = light.type == capture::Light::Type::Lambertian;
+  const capture::Light::ProfileTerms profileTerms = light.profileTerms();
   const bool gltf = s.materials == capture::MaterialModel::Gltf;
-  // As LightUniforms.cpp hands them to light.glsl.
-  const glm::vec3 axis = glm::normalize(light.direction_world);
-  const float cosOuter = std::cos(glm::radians(light.cone_half_angle_deg));
-  const float cosInner =
-      std::cos(glm::radians(std::max(0.0f, light.cone_half_angle_deg - light.cone_falloff_deg)));
   const int bins = s.time.bins;
   const auto start_m = static_cast<float>(s.time.start_m());
   const auto width_m = static_cast<float>(s.time.bin_width_m());
@@ -263,19 +257,18 @@ void CpuBackend::gatherDirectTile(std::size_t tile) {
     for (std::size_t sample = segmentFirstSample_[i]; sample < segmentFirstSample_[i + 1];
          ++sample) {
       if (!segmentLit_[sample]) continue;
-      // The steps of direct_gather.comp.
       const std::size_t p = firstSample_ + sample;
       const PixelSurface& surface = segmentSurfaces_[sample];
       const glm::vec3 x = surface.x, n = surface.n;
-      const glm::vec3 toLight = light.position_world - x;
-      const float dLight = glm::length(toLight);
-      const glm::vec3 wLight = toLight / dLight;
-      const float cosX = glm::dot(n, wLight);
-      if (cosX <= 0.0f) continue;
-      const float profile = spot ? physics::spotFalloff(glm::dot(-wLight, axis), cosOuter, cosInner)
-                            : cosine ? std::max(0.0f, glm::dot(-wLight, axis))
-                                     : 1.0f;
+      // direct_gather.comp's steps: how the light arrives (shared), whether
+      // it is visible (here a ray, there the shadow map), what x reflects.
+      const physics::LightArrival arrival =
+          physics::lightArrival(x, n, light.position_world, profileTerms.kind, profileTerms.axis,
+                                profileTerms.cosOuter, profileTerms.cosInner);
+      const float profile = arrival.profile, cosX = arrival.cosX, dLight = arrival.dLight;
+      const glm::vec3 wLight = arrival.wLight;
       if (profile <= 0.0f) continue;
+      const glm::vec3 toLight = light.position_world - x;
       const glm::vec3 g = surfaces_->geometric[p];
       const glm::vec3 offset = (glm::dot(g, toLight) < 0.0f ? -g : g) * scene_->epsilon_m();
       if (scene_->occluded(x + offset, light.position_world)) continue;
@@ -308,17 +301,8 @@ void CpuBackend::gatherDirectTile(std::size_t tile) {
       // Point sampling (render.pixel_footprint: false): the bytes of before
       // the footprint existed when there is one sample.
       const glm::vec3 value = perPixel == 1 ? radiance : radiance * weight;
-      const int bin = physics::binOfPath(path_m, start_m, width_m);
-      if (bin < 0 || bin >= bins) {
-        (bin < 0 ? lost.before : lost.after) += value.r + value.g + value.b;
-        continue;
-      }
-      float* out = histogram + static_cast<std::size_t>(bin) * kChannels;
-      if (perPixel == 1) {
-        out[0] = value.r, out[1] = value.g, out[2] = value.b;
-      } else {
-        out[0] += value.r, out[1] += value.g, out[2] += value.b;
-      }
+      physics::depositInBin(histogram, bins, physics::binOfPath(path_m, start_m, width_m), 1.0f,
+                            value, lost);
     }
     // The footprint buffer is the indirect gathers' next.
     if (s.pixel_footprint) integratePixel(i, histogram);
@@ -388,14 +372,13 @@ void CpuBackend::gatherTile(std::size_t tile, std::size_t firstVpl, std::size_t 
             const int32_t narrowBins = t.count[k];
             const int32_t vectorBins = std::min(narrowBins, kVectorNarrowBins);
             for (int32_t j = 0; j < vectorBins; ++j) {
-              physics::depositNarrowBin(histogram, bins, t.first[k] + j, t.mass[j][k], energy,
-                                        lost);
+              physics::depositInBin(histogram, bins, t.first[k] + j, t.mass[j][k], energy, lost);
             }
             if (narrowBins > kVectorNarrowBins) {
               const glm::vec3 kernel(t.centre[k], t.wide[k], t.narrow[k]);
               for (int32_t j = kVectorNarrowBins; j < narrowBins; ++j) {
-                physics::depositNarrowBin(histogram, bins, t.first[k] + j,
-                                          physics::footprintNarrowMass(kernel, j), energy, lost);
+                physics::depositInBin(histogram, bins, t.first[k] + j,
+                                      physics::footprintNarrowMass(kernel, j), energy, lost);
               }
             }
             if (narrowBins == 0) {
@@ -404,14 +387,7 @@ void CpuBackend::gatherTile(std::size_t tile, std::size_t firstVpl, std::size_t 
             }
             continue;
           }
-          if (bin < 0 || bin >= bins) {
-            (bin < 0 ? lost.before : lost.after) += energy.r + energy.g + energy.b;
-            continue;
-          }
-          float* out = histogram + static_cast<std::size_t>(bin) * kChannels;
-          out[0] += energy.r;
-          out[1] += energy.g;
-          out[2] += energy.b;
+          physics::depositInBin(histogram, bins, bin, 1.0f, energy, lost);
         }
       }
     }

@@ -24,6 +24,17 @@ struct Light {
   /// Fraction of the intensity emitted towards `direction` (unit): 1 for point
   /// lights, the cone profile for spots, the cosine for Lambertian lights.
   float angularProfile(const glm::vec3& direction) const;
+
+  /// The profile as the gathers take it (physics::lightProfile and
+  /// lightArrival in shaders/transient_physics.glsl): its kind
+  /// (physics::LIGHT_POINT...), unit axis and a spot's cone cosines.
+  struct ProfileTerms {
+    int kind = 0;
+    glm::vec3 axis{0.0f, 0.0f, -1.0f};
+    float cosOuter = 0.0f;
+    float cosInner = 0.0f;
+  };
+  ProfileTerms profileTerms() const;
 };
 
 }  // namespace tofsim::capture

@@ -79,10 +79,12 @@ struct OffAxisSums {
   float after = 0.0f;
 };
 
-/// Adds `mass` of a narrow kernel's contribution `energy` to bin k of a
-/// pixel's float histogram, or to the light off the axis.
-inline void depositNarrowBin(float* histogram, int32_t bins, int k, float mass, const vec3& energy,
-                             OffAxisSums& lost) {
+/// Adds `mass` of a contribution `energy` to bin k of a pixel's float
+/// histogram, or to the light off the axis: a narrow kernel's share of a bin,
+/// or with mass 1 a point sample's whole contribution (1 x e is e exactly).
+/// The gathers' depositInBin (shaders/bin_deposit.glsl) is its twin.
+inline void depositInBin(float* histogram, int32_t bins, int k, float mass, const vec3& energy,
+                         OffAxisSums& lost) {
   if (k < 0 || k >= bins) {
     (k < 0 ? lost.before : lost.after) += mass * (energy.r + energy.g + energy.b);
     return;
@@ -113,7 +115,7 @@ inline void depositNarrow(float* histogram, int32_t bins, const vec3& kernel, co
   float lower = 0.0f;
   for (int j = 0; j < count; ++j) {
     const float upper = footprintNarrowEdgeCdf(kernel, j);
-    depositNarrowBin(histogram, bins, first + j, upper - lower, energy, lost);
+    depositInBin(histogram, bins, first + j, upper - lower, energy, lost);
     lower = upper;
   }
 }

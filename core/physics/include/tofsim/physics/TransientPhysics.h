@@ -9,8 +9,10 @@
 namespace tofsim::physics {
 
 using glm::clamp;
+using glm::dot;
 using glm::floor;
 using glm::ivec2;
+using glm::length;
 using glm::mat3;
 using glm::max;
 using glm::min;
