@@ -4,6 +4,7 @@
 
 #include "TimeAxisJson.h"
 #include "tofsim/pipeline/AxisReport.h"
+#include "tofsim/pipeline/OutputProducts.h"
 #include "tofsim/pipeline/Version.h"
 #include "tofsim/volume/PhysicalConstants.h"
 
@@ -22,7 +23,8 @@ std::string transientMetadataJson(const config::RunConfig& config, const capture
   nlohmann::json j;
   j["format"] = "tofsim transient volume";
   j["tofsim_version"] = kVersion;
-  j["files"] = {{"transient", "transient.npy"}, {"steady", "steady.exr"}, {"depth", "depth.exr"}};
+  j["files"] = nlohmann::json::object();
+  for (const auto& [role, file] : metadataFiles()) j["files"][role] = file;
   j["shape"] = {cam.height, cam.width, axis.bins, 3};
   j["axes"] = {"y", "x", "t", "c"};
   j["axes_doc"] =
