@@ -24,6 +24,7 @@
 #include "tofsim/pipeline/Progress.h"
 #include "tofsim/pipeline/RenderCapture.h"
 #include "tofsim/pipeline/RenderRun.h"
+#include "tofsim/pipeline/RenderStats.h"
 #include "tofsim/scene/GltfLoader.h"
 #include "tofsim/util/Interrupt.h"
 
@@ -177,24 +178,10 @@ py::dict toPython(Rendered& r, const TimeAxis& axis) {
                     : py::object(ownedArray(std::move(r.steady.data),
                                             {r.steady.height, r.steady.width, r.steady.channels}));
   d["time"] = timeAxisDict(axis);
-  py::dict stats;
-  stats["seconds"] = r.result.seconds;
-  stats["segments"] = r.result.segments;
-  stats["vpls"] = r.result.vpls;
+  // transient.json's stats (one writer), and the names they had here before.
+  py::dict stats = py::module_::import("json").attr("loads")(pipeline::renderStatsText(r.result));
   stats["off_axis_before"] = r.result.offAxis.before;
   stats["off_axis_after"] = r.result.offAxis.after;
-  stats["rejected_non_finite_values"] = r.result.nonFiniteRejected;
-  stats["sampled_pixels"] = r.result.sampledPixels;
-  const capture::PassSeconds& pass = r.result.passSeconds;
-  py::dict passSeconds;
-  passSeconds["surfaces"] = pass.surfaces;
-  passSeconds["vpls"] = pass.vpls;
-  passSeconds["visibility"] = pass.visibility;
-  passSeconds["direct"] = pass.direct;
-  passSeconds["indirect"] = pass.indirect;
-  passSeconds["read_back"] = pass.readBack;
-  passSeconds["other"] = pass.other;
-  stats["pass_seconds"] = passSeconds;
   d["stats"] = stats;
   d["device"] = r.device;
   d["files"] = r.files;
