@@ -14,6 +14,7 @@
 #include "tofsim/pipeline/NlosScan.h"
 #include "tofsim/pipeline/Progress.h"
 #include "tofsim/pipeline/RenderRun.h"
+#include "tofsim/pipeline/RenderStats.h"
 #include "tofsim/scene/GltfLoader.h"
 #include "tofsim/util/Interrupt.h"
 
@@ -82,10 +83,9 @@ py::dict renderNlos(const config::RunConfig& config, const std::optional<std::st
   d["laser_xyz"] = vec(scan.laserOrigin);
   d["t_accounts_first_and_last_bounces"] = config.nlos->account_first_and_last_bounces;
   d["time"] = timeAxisDict(volume.axis);
-  py::dict stats;
+  // H.json's stats (one writer), and the name the time had here before.
+  py::dict stats = py::module_::import("json").attr("loads")(pipeline::nlosStatsText(volume));
   stats["seconds"] = volume.seconds;
-  stats["captures"] = volume.captures;
-  stats["vpls"] = volume.vpls;
   d["stats"] = stats;
   d["device"] = volume.device;
   d["files"] = files;

@@ -1,6 +1,6 @@
 // _render: a config rendered into NumPy arrays. Without an output folder the
-// volume is collected in memory (capture::VolumeCollector) from the renderer
-// the CLI would use (pipeline::makeRenderer); with one, the CLI's own run
+// volume is collected in memory (capture::VolumeCollector) through the CLI's
+// way through a render (pipeline::renderCapture); with one, the CLI's own run
 // (pipeline::runRender) writes the files and the arrays are read back from
 // them. The GIL is released while rendering; Ctrl-C interrupts it.
 
@@ -19,12 +19,12 @@
 #include "NlosBinding.h"
 #include "tofsim/capture/VolumeCollector.h"
 #include "tofsim/io/Npy.h"
-#include "tofsim/pipeline/AxisReport.h"
-#include "tofsim/pipeline/Capture.h"
-#include "tofsim/pipeline/OutputSink.h"
+#include "tofsim/pipeline/FiniteSegments.h"
+#include "tofsim/pipeline/OutputProducts.h"
 #include "tofsim/pipeline/Progress.h"
+#include "tofsim/pipeline/RenderCapture.h"
 #include "tofsim/pipeline/RenderRun.h"
-#include "tofsim/pipeline/RendererFactory.h"
+#include "tofsim/pipeline/RenderStats.h"
 #include "tofsim/scene/GltfLoader.h"
 #include "tofsim/util/Interrupt.h"
 
@@ -82,38 +82,30 @@ struct Rendered {
   std::vector<std::string> files;
 };
 
-// As the output stage does for files: a NaN or infinity never reaches the
-// arrays silently; it becomes 0 and is counted.
-std::size_t zeroNonFinite(TransientVolume& volume) {
-  return pipeline::zeroNonFinite(volume.data(), volume.values().size());
-}
-
+// The CLI's way through a render (pipeline::renderCapture: the same renderer,
+// non-finite values written as 0 and counted, the time axis checked before
+// and after under render.strict) into memory instead of files.
 Rendered renderInMemory(const config::RunConfig& config, bool quiet) {
   pipeline::Progress progress("render", quiet);
   const scene::Scene scene = scene::loadGltf(config.scene_file);
-  const capture::RenderJob job = pipeline::makeRenderJob(config, scene);
-  pipeline::checkAxisBeforeRender(config, job, false);
+  const capture::RenderJob job = pipeline::prepareCapture(config, scene);
   // IR's light by bounce: with N > 1 bounces the segments carry bounce1 ..
   // bounceN (N more volumes in memory); with one, bounce 1 is the indirect light.
   const bool ir = config.renderer == config::RendererKind::InstantRadiosity;
   const int32_t bounces = ir && job.settings.indirect.enabled ? job.settings.indirect.bounces : 0;
   capture::VolumeCollector collector(job.camera().width, job.camera().height, job.settings.time,
                                      capture::kChannels, bounces > 1 ? bounces : 0);
-  const pipeline::RendererChoice choice =
-      pipeline::makeRenderer(config, gl::eglPlatformFromEnvironment());
-  const auto& renderer = choice.renderer;
+  pipeline::CaptureConsumers consumers{{&collector}, {}};
+  for (int32_t k = 1; bounces > 1 && k <= bounces; ++k) consumers.bounces.push_back(k);
+  pipeline::RenderedCapture rendered =
+      pipeline::renderCapture(config, job, gl::eglPlatformFromEnvironment(), consumers, progress);
   Rendered r;
-  r.device = renderer->description();
-  // Progress::update throws Interrupted once SIGINT has arrived.
-  r.result = renderer->render(job, collector,
-                              [&](std::size_t done, std::size_t total, const std::string& what) {
-                                progress.update(done, total, what);
-                              });
-  throwIfInterrupted();
-  r.result.nonFiniteRejected = zeroNonFinite(collector.direct) + zeroNonFinite(collector.indirect);
-  for (TransientVolume& b : collector.bounces) zeroNonFinite(b);  // counted in indirect's
+  r.device = rendered.device;
+  r.result = std::move(rendered.result);
   r.transient = collector.total();
-  r.steady = steadyImage(*r.transient);
+  // As transient.npy: a float sum that overflowed is 0 (counted already).
+  pipeline::zeroNonFinite(r.transient->data(), r.transient->values().size());
+  r.steady = std::move(rendered.steady);
   r.direct = std::move(collector.direct);
   r.indirect = std::move(collector.indirect);
   r.bounces = std::move(collector.bounces);
@@ -142,17 +134,19 @@ Rendered renderToFolder(const config::RunConfig& config, const std::string& dire
   r.device = summary.device;
   r.files = summary.files;
   const TimeAxis& axis = config.render.time;
-  const auto wrote = [&](const char* name) {
+  const auto wrote = [&](std::string_view name) {
     return std::find(r.files.begin(), r.files.end(), name) != r.files.end();
   };
   const std::filesystem::path dir = summary.outputDirectory;
-  if (wrote("transient.npy")) r.transient = readVolume(dir / "transient.npy", axis);
-  if (wrote("direct.npy")) r.direct = readVolume(dir / "direct.npy", axis);
-  if (wrote("indirect.npy")) r.indirect = readVolume(dir / "indirect.npy", axis);
-  for (int32_t k = 1; k <= capture::kMaxBounceComponents; ++k) {
-    const std::string name = std::string(capture::bounceComponent(k)) + ".npy";
-    if (!wrote(name.c_str())) break;
-    r.bounces.push_back(*readVolume(dir / name, axis));
+  const auto read = [&](std::string_view name) {
+    return wrote(name) ? readVolume(dir / name, axis) : std::nullopt;
+  };
+  namespace files = pipeline::files;
+  r.transient = read(files::kTransient);
+  r.direct = read(files::kDirect);
+  r.indirect = read(files::kIndirect);
+  for (int32_t k = 1; k <= capture::kMaxBounceComponents && wrote(files::bounce(k)); ++k) {
+    r.bounces.push_back(*readVolume(dir / files::bounce(k), axis));
   }
   if (r.transient) r.steady = steadyImage(*r.transient);
   return r;
@@ -184,24 +178,10 @@ py::dict toPython(Rendered& r, const TimeAxis& axis) {
                     : py::object(ownedArray(std::move(r.steady.data),
                                             {r.steady.height, r.steady.width, r.steady.channels}));
   d["time"] = timeAxisDict(axis);
-  py::dict stats;
-  stats["seconds"] = r.result.seconds;
-  stats["segments"] = r.result.segments;
-  stats["vpls"] = r.result.vpls;
+  // transient.json's stats (one writer), and the names they had here before.
+  py::dict stats = py::module_::import("json").attr("loads")(pipeline::renderStatsText(r.result));
   stats["off_axis_before"] = r.result.offAxis.before;
   stats["off_axis_after"] = r.result.offAxis.after;
-  stats["rejected_non_finite_values"] = r.result.nonFiniteRejected;
-  stats["sampled_pixels"] = r.result.sampledPixels;
-  const capture::PassSeconds& pass = r.result.passSeconds;
-  py::dict passSeconds;
-  passSeconds["surfaces"] = pass.surfaces;
-  passSeconds["vpls"] = pass.vpls;
-  passSeconds["visibility"] = pass.visibility;
-  passSeconds["direct"] = pass.direct;
-  passSeconds["indirect"] = pass.indirect;
-  passSeconds["read_back"] = pass.readBack;
-  passSeconds["other"] = pass.other;
-  stats["pass_seconds"] = passSeconds;
   d["stats"] = stats;
   d["device"] = r.device;
   d["files"] = r.files;

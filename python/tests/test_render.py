@@ -225,3 +225,25 @@ def test_adaptive_samples_are_counted_and_the_passes_timed():
     assert sum(passes.values()) <= stats["seconds"] * 1.000001
     uniform = dict(overrides, **{"render.adaptive_pixel_samples": False})
     assert tofsim.render(tofsim.load_config(CORNELL, uniform)).stats["sampled_pixels"] == 0
+
+
+def test_strict_render_fails_on_light_off_the_time_axis_as_the_cli_does(plane_config, tmp_path):
+    """render.strict's check after rendering runs in memory too: an axis that
+    ends at 3.1 m of path, inside the plane's returns (only rendering shows how
+    much is cut), fails as the CLI's run (output_dir) fails, with its message;
+    without strict both warn and record the lost fraction in stats."""
+    plane_config["camera"]["resolution"] = [16, 12]
+    plane_config["time"]["bins"] = 300  # 2.5 m .. 3.1 m
+    loose = tofsim.render(plane_config)
+    assert loose.stats["fraction_after_axis"] > 0.01
+    assert loose.stats["energy_on_axis"] > 0
+    assert loose.stats["off_axis_after"] == loose.stats["energy_after_axis"]
+    plane_config["render"]["strict"] = True
+    with pytest.raises(tofsim.ConfigError) as in_memory:
+        tofsim.render(plane_config)
+    with pytest.raises(tofsim.ConfigError) as to_folder:
+        tofsim.render(plane_config, output_dir=tmp_path / "strict")
+    assert in_memory.value.key == to_folder.value.key == "time"
+    assert "of the light arrives after the last bin" in in_memory.value.message
+    assert in_memory.value.message == to_folder.value.message
+    assert not (tmp_path / "strict" / "transient.npy").exists()

@@ -40,8 +40,10 @@ class RenderResult:
     depth: (H, W) camera-to-surface distance, metres; 0 where no surface
     steady: (H, W, C) transient summed over time
     time: the TimeAxis of the T bins
-    stats: seconds, segments, vpls, off_axis_before/after, rejected_non_finite_values,
-        sampled_pixels (render.adaptive_pixel_samples), pass_seconds (IR's time by pass)
+    stats: transient.json's stats (seconds, segments, vpls, sampled_pixels
+        (render.adaptive_pixel_samples), energy_on_axis, energy_before/after_axis,
+        fraction_before/after_axis, rejected_non_finite_values, pass_seconds (IR's
+        time by pass), ...), and off_axis_before/after (= energy_before/after_axis)
     device: what rendered it (GL renderer string, or the CPU reference)
     files: written files, relative to output_dir (empty without one)
     """
@@ -73,7 +75,8 @@ class NlosResult:
     wall_normal, sensor_xyz, laser_xyz: [x, y, z]
     t_accounts_first_and_last_bounces: the time convention (nlos.account_first_and_last_bounces)
     time: the TimeAxis of the T bins (start_m, bin_width_m: y-tal's t_start, delta_t)
-    stats: seconds, captures (laser positions), vpls
+    stats: H.json's stats (render_seconds, captures (laser positions),
+        scene_preparations, vpls, device), and seconds (= render_seconds)
     device, files, output_dir: as for RenderResult
     """
 

@@ -1,5 +1,6 @@
 // NaN and infinity from the renderer (degenerate geometry, overflow) never
-// reach the output files: OutputSink writes them as 0 and counts them.
+// reach the output files: FiniteSegments writes them as 0 and counts them
+// before the file sinks and the steady image see them.
 
 #include <gtest/gtest.h>
 
@@ -8,7 +9,9 @@
 
 #include "support/TempDir.h"
 #include "tofsim/io/Npy.h"
-#include "tofsim/pipeline/OutputSink.h"
+#include "tofsim/pipeline/FiniteSegments.h"
+#include "tofsim/pipeline/SteadySink.h"
+#include "tofsim/pipeline/VolumeFileSink.h"
 
 namespace tofsim {
 namespace {
@@ -16,9 +19,6 @@ namespace {
 class NonFiniteOutputTest : public test::TempDirTest {};
 
 TEST_F(NonFiniteOutputTest, NonFiniteValuesAreZeroedAndCounted) {
-  config::OutputConfig output;
-  output.direct = true;
-  output.indirect = true;
   TimeAxis axis;
   axis.bins = 2;
   axis.bin_width_s = 1e-11;
@@ -29,22 +29,29 @@ TEST_F(NonFiniteOutputTest, NonFiniteValuesAreZeroedAndCounted) {
   direct[7] = std::numeric_limits<float>::max();  // finite, but the sum overflows
   indirect[7] = std::numeric_limits<float>::max();
 
-  pipeline::OutputSink sink(dir_, output, W, H, axis);
+  pipeline::VolumeFileSink total(dir_ / "transient.npy", pipeline::kTotal, W, H, axis);
+  pipeline::VolumeFileSink directFile(dir_ / "direct.npy", capture::kDirect, W, H, axis);
+  pipeline::VolumeFileSink indirectFile(dir_ / "indirect.npy", capture::kIndirect, W, H, axis);
+  pipeline::SteadySink steady(W, H, axis.bins);
+  capture::TeeSink tee({&total, &directFile, &indirectFile, &steady});
+  pipeline::FiniteSegments sink(tee, axis.bins, {});
   capture::Segment segment;
   segment.pixelCount = 2;
   segment.components = {{capture::kDirect, direct.data()}, {capture::kIndirect, indirect.data()}};
   sink.consume(segment);
-  sink.commit();
+  total.commit();
+  directFile.commit();
+  indirectFile.commit();
 
   EXPECT_EQ(sink.nonFiniteValues(), 3u);
   for (const char* name : {"transient.npy", "direct.npy", "indirect.npy"}) {
     for (float v : io::readNpy(dir_ / name).data) EXPECT_TRUE(std::isfinite(v)) << name;
   }
-  const io::NpyArray total = io::readNpy(dir_ / "transient.npy");
-  EXPECT_EQ(total.data[1], 0.5f);  // NaN direct dropped, indirect kept
-  EXPECT_EQ(total.data[4], 1.0f);  // inf indirect dropped, direct kept
-  EXPECT_EQ(total.data[7], 0.0f);  // overflowed sum dropped
-  for (float v : sink.steady().data) EXPECT_TRUE(std::isfinite(v));
+  const io::NpyArray totalValues = io::readNpy(dir_ / "transient.npy");
+  EXPECT_EQ(totalValues.data[1], 0.5f);  // NaN direct dropped, indirect kept
+  EXPECT_EQ(totalValues.data[4], 1.0f);  // inf indirect dropped, direct kept
+  EXPECT_EQ(totalValues.data[7], 0.0f);  // overflowed sum dropped
+  for (float v : steady.steady().data) EXPECT_TRUE(std::isfinite(v));
 }
 
 }  // namespace

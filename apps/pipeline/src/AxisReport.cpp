@@ -117,8 +117,8 @@ AxisLossFractions axisLossFractions(const capture::RenderResult& result) {
 }
 
 void checkAxisAfterRender(const config::RunConfig& config, const capture::RenderJob& job,
-                          const OutputSink& sink, capture::RenderResult& result) {
-  result.onAxisEnergy = sumOf(sink.steady());
+                          const Image& steady, capture::RenderResult& result) {
+  result.onAxisEnergy = sumOf(steady);
   const AxisLossFractions f = axisLossFractions(result);
   const TimeAxis& axis = job.settings.time;
   const bool before = f.before > kWindowLossWarning, after = f.after > kWindowLossWarning;

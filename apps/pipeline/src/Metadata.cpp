@@ -2,8 +2,10 @@
 
 #include <nlohmann/json.hpp>
 
+#include "RenderStatsJson.h"
 #include "TimeAxisJson.h"
 #include "tofsim/pipeline/AxisReport.h"
+#include "tofsim/pipeline/OutputProducts.h"
 #include "tofsim/pipeline/Version.h"
 #include "tofsim/volume/PhysicalConstants.h"
 
@@ -22,7 +24,8 @@ std::string transientMetadataJson(const config::RunConfig& config, const capture
   nlohmann::json j;
   j["format"] = "tofsim transient volume";
   j["tofsim_version"] = kVersion;
-  j["files"] = {{"transient", "transient.npy"}, {"steady", "steady.exr"}, {"depth", "depth.exr"}};
+  j["files"] = nlohmann::json::object();
+  for (const auto& [role, file] : metadataFiles()) j["files"][role] = file;
   j["shape"] = {cam.height, cam.width, axis.bins, 3};
   j["axes"] = {"y", "x", "t", "c"};
   j["axes_doc"] =
@@ -62,25 +65,7 @@ std::string transientMetadataJson(const config::RunConfig& config, const capture
   // light's bounce orders (cwtof multipath_by_order).
   j["indirect_bounces"] = surfaceVertices(config) - 1;
   j["scene"] = config.scene_file.filename().string();
-  const AxisLossFractions lost = axisLossFractions(result);
-  j["stats"] = {{"seconds", result.seconds},
-                {"segments", result.segments},
-                {"vpls", result.vpls},
-                {"vpl_batches", result.vplBatches},
-                {"sampled_pixels", result.sampledPixels},
-                {"peak_gpu_bytes", result.peakGpuBytes},
-                {"energy_outside_time_axis", result.offAxis.total()},
-                {"energy_before_axis", result.offAxis.before},
-                {"energy_after_axis", result.offAxis.after},
-                {"energy_on_axis", result.onAxisEnergy},
-                {"fraction_before_axis", lost.before},
-                {"fraction_after_axis", lost.after},
-                {"rejected_non_finite_values", result.nonFiniteRejected}};
-  const capture::PassSeconds& pass = result.passSeconds;
-  j["stats"]["pass_seconds"] = {
-      {"surfaces", pass.surfaces}, {"vpls", pass.vpls},         {"visibility", pass.visibility},
-      {"direct", pass.direct},     {"indirect", pass.indirect}, {"read_back", pass.readBack},
-      {"other", pass.other}};
+  j["stats"] = renderStatsJson(result);
   return j.dump(2) + "\n";
 }
 

@@ -6,6 +6,7 @@
 #include "NlosFirstBounce.h"
 #include "NlosSensors.h"
 #include "NlosTalFile.h"
+#include "RenderStatsJson.h"
 #include "SensorParametersJson.h"
 #include "tofsim/io/Npy.h"
 #include "tofsim/pipeline/Manifest.h"
@@ -75,11 +76,7 @@ std::string nlosMetadataJson(const config::RunConfig& config, const NlosScanGeom
   j["laser_falloff"] =
       nlos.laser_falloff == config::LaserFalloff::Projector ? "projector" : "collimated";
   j["renderer"] = config.renderer == config::RendererKind::Reference ? "reference" : "ir";
-  j["stats"] = {{"render_seconds", volume.seconds},
-                {"captures", volume.captures},
-                {"scene_preparations", volume.scenePreparations},
-                {"vpls", volume.vpls},
-                {"device", volume.device}};
+  j["stats"] = nlosStatsJson(volume);
   return j.dump(2) + "\n";
 }
 

@@ -5,18 +5,10 @@
 #include <algorithm>
 #include <cstdio>
 
+#include "tofsim/pipeline/OutputProducts.h"
 #include "tofsim/util/Error.h"
 
 namespace tofsim::pipeline {
-
-namespace {
-
-constexpr std::uintmax_t kChannels = 3;
-constexpr std::uintmax_t kNpyHeaderBytes = 128;
-// An 8-bit RGB picture as a bound for its PNG, an eighth of that per MP4 frame.
-constexpr std::uintmax_t kMp4Ratio = 8;
-
-}  // namespace
 
 std::uintmax_t OutputEstimate::totalBytes() const {
   std::uintmax_t total = 0;
@@ -24,47 +16,52 @@ std::uintmax_t OutputEstimate::totalBytes() const {
   return total;
 }
 
+namespace {
+
+// The estimate lists the volume-sized products first, then the pictures (the
+// order its message has always had, which decides it among equal sizes).
+int listingRank(Writer writer) {
+  switch (writer) {
+    case Writer::Volume:
+      return 0;
+    case Writer::Frames:
+      return 1;
+    case Writer::Video:
+      return 2;
+    case Writer::Steady:
+      return 3;
+    case Writer::Depth:
+      return 4;
+    case Writer::Metadata:
+      return 5;
+  }
+  return 5;
+}
+
+}  // namespace
+
 OutputEstimate estimateOutputs(const config::RunConfig& config) {
-  const capture::Camera& camera = config.camera.camera;
-  const TimeAxis& axis = config.render.time;
-  const std::uintmax_t w = static_cast<std::uintmax_t>(camera.width);
-  const std::uintmax_t h = static_cast<std::uintmax_t>(camera.height);
-  const std::uintmax_t bins = static_cast<std::uintmax_t>(axis.bins);
-  const std::uintmax_t volume = kNpyHeaderBytes + w * h * bins * kChannels * 4;
-  const std::string volumeKeys = "camera.resolution x time.bins";
+  std::vector<OutputProduct> products = renderProducts(config);
+  std::stable_sort(products.begin(), products.end(),
+                   [](const OutputProduct& a, const OutputProduct& b) {
+                     return listingRank(a.writer) < listingRank(b.writer);
+                   });
   const config::OutputConfig& out = config.output;
   OutputEstimate e;
-  if (out.transient) e.items.push_back({"transient.npy", volume, volumeKeys});
-  if (out.direct) e.items.push_back({"direct.npy", volume, volumeKeys + ", output.components"});
-  if (out.indirect) e.items.push_back({"indirect.npy", volume, volumeKeys + ", output.components"});
-  for (const int32_t k : out.bounces) {
-    e.items.push_back(
-        {"bounce" + std::to_string(k) + ".npy", volume, volumeKeys + ", output.components"});
+  for (const OutputProduct& p : products) {
+    e.items.insert(e.items.end(), p.sizes.begin(), p.sizes.end());
   }
-  if (out.frames) e.items.push_back({"frames/*.exr", volume, volumeKeys + ", output.frames"});
   if (out.frames || out.video || out.frame_pngs) {
-    // Disk the run needs while it goes, gone when it ends (BinMajorSpill.h).
-    e.temporaryBytes = volume - kNpyHeaderBytes;
+    // Disk the run needs while it goes, gone when it ends (BinMajorSpill.h):
+    // the volume's floats, without a header.
+    e.temporaryBytes = volumeBytes(config);
   }
-  const std::uintmax_t picture = w * h * kChannels;
-  const std::uintmax_t videoFrames = (bins + out.video_stride - 1) / out.video_stride;
-  if (out.frame_pngs) {
-    e.items.push_back(
-        {"frames/*.png", videoFrames * picture, volumeKeys + " / output.video_stride"});
-  }
-  if (out.video) {
-    e.items.push_back({"transient.mp4", videoFrames * picture / kMp4Ratio + 4096,
-                       volumeKeys + " / output.video_stride"});
-  }
-  if (out.steady)
-    e.items.push_back(
-        {"steady.exr/.png", w * h * (kChannels * 4 + kChannels), "camera.resolution"});
-  if (out.depth)
-    e.items.push_back({"depth.exr/.npy/.png", w * h * (4 + 4 + kChannels), "camera.resolution"});
+  const capture::Camera& camera = config.camera.camera;
   for (const sensors::SensorSpec& spec : config.sensors) {
-    e.items.push_back({"sensors/" + spec.name,
-                       sensors::sensorOutputBytes(spec.params, camera.width, camera.height, axis),
-                       "camera.resolution x the sensor's bins"});
+    e.items.push_back(
+        {"sensors/" + spec.name,
+         sensors::sensorOutputBytes(spec.params, camera.width, camera.height, config.render.time),
+         "camera.resolution x the sensor's bins"});
   }
   return e;
 }

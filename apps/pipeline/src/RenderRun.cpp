@@ -1,27 +1,30 @@
 #include "tofsim/pipeline/RenderRun.h"
 
+#include <algorithm>
 #include <cstdio>
+#include <functional>
+#include <memory>
 #include <optional>
 
 #include "BinMajorSpill.h"
 #include "KeptAcrossRenders.h"
 #include "NlosRun.h"
-#include "tofsim/capture/VolumeCollector.h"
+#include "tofsim/capture/VolumeCollector.h"  // defaultChannelNames
 #include "tofsim/imaging/Pictures.h"
 #include "tofsim/imaging/Video.h"
 #include "tofsim/io/DepthExr.h"
 #include "tofsim/io/Exr.h"
 #include "tofsim/io/Npy.h"
-#include "tofsim/pipeline/AxisReport.h"
-#include "tofsim/pipeline/Capture.h"
 #include "tofsim/pipeline/Manifest.h"
 #include "tofsim/pipeline/Metadata.h"
 #include "tofsim/pipeline/OutputEstimate.h"
-#include "tofsim/pipeline/OutputSink.h"
+#include "tofsim/pipeline/OutputProducts.h"
+#include "tofsim/pipeline/PixelSpanSink.h"
 #include "tofsim/pipeline/PlotRanges.h"
 #include "tofsim/pipeline/Progress.h"
-#include "tofsim/pipeline/RendererFactory.h"
+#include "tofsim/pipeline/RenderCapture.h"
 #include "tofsim/pipeline/SensorStreams.h"
+#include "tofsim/pipeline/VolumeFileSink.h"
 #include "tofsim/scene/GltfLoader.h"
 #include "tofsim/util/AtomicFile.h"
 #include "tofsim/util/Error.h"
@@ -43,25 +46,20 @@ void reportLoad(const scene::LoadReport& report, const Progress& progress) {
   }
 }
 
-void writeFrames(const std::filesystem::path& directory, const imaging::BinFrames& frames,
-                 std::vector<std::string>& files) {
+void writeFrames(const std::filesystem::path& directory, const imaging::BinFrames& frames) {
   std::filesystem::create_directories(directory / "frames");
   std::vector<std::string> channels = capture::defaultChannelNames(frames.channels);
   for (int32_t t = 0; t < frames.axis.bins; ++t) {
     throwIfInterrupted();
     Image frame(frames.width, frames.height, frames.channels);
     frames.readBin(t, frame.data.data());
-    char name[64];
-    std::snprintf(name, sizeof name, "frames/frame_%05d.exr", t);
-    io::writeExr(directory / name, frame, channels);
-    files.push_back(name);
+    io::writeExr(directory / files::frameExr(t), frame, channels);
   }
 }
 
 // transient.mp4 and/or frames/frame_NNNNN.png (the same pictures).
 void writeVideo(const std::filesystem::path& dir, const config::OutputConfig& out,
-                const imaging::BinFrames& frames, const Progress& progress,
-                std::vector<std::string>& files) {
+                const imaging::BinFrames& frames, const Progress& progress) {
   imaging::VideoOptions options;
   options.toneMap = out.video_tone_map == config::VideoToneMap::Log ? imaging::ToneMap::Log
                                                                     : imaging::ToneMap::Global;
@@ -71,16 +69,8 @@ void writeVideo(const std::filesystem::path& dir, const config::OutputConfig& ou
   progress.message(
       "video: " + std::to_string(imaging::videoFrameCount(frames.axis.bins, out.video_stride)) +
       " frame(s)");
-  imaging::writeTransientVideo(out.video ? dir / "transient.mp4" : std::filesystem::path(), frames,
+  imaging::writeTransientVideo(out.video ? dir / files::kVideo : std::filesystem::path(), frames,
                                options, out.frame_pngs ? dir / "frames" : std::filesystem::path());
-  if (out.video) files.push_back("transient.mp4");
-  if (out.frame_pngs) {
-    for (int32_t t = 0; t < frames.axis.bins; t += out.video_stride) {
-      char name[64];
-      std::snprintf(name, sizeof name, "frames/frame_%05d.png", t);
-      files.push_back(name);
-    }
-  }
 }
 
 // The video's and the frames' bin-major copy of the volume, in the staging
@@ -103,8 +93,7 @@ RunSummary runRender(const config::RunConfig& config, const RunOptions& options)
   scene::LoadReport report;
   const scene::Scene scene = scene::loadGltf(config.scene_file, &report);
   reportLoad(report, progress);
-  const capture::RenderJob job = makeRenderJob(config, scene);
-  checkAxisBeforeRender(config, job, false);  // a proven cut fails here under --strict
+  const capture::RenderJob job = prepareCapture(config, scene);  // fails under --strict
 
   RunSummary summary;
   summary.outputDirectory =
@@ -128,28 +117,21 @@ RunSummary runRender(const config::RunConfig& config, const RunOptions& options)
 }
 
 namespace {
-void writeSteady(const std::filesystem::path& dir, const Image& steady, PlotRanges& ranges,
-                 std::vector<std::string>& files) {
-  io::writeExr(dir / "steady.exr", steady, {"R", "G", "B"});
-  imaging::writeToneMappedPng(dir / "steady.png", steady, imaging::ToneMap::Global,
+void writeSteady(const std::filesystem::path& dir, const Image& steady, PlotRanges& ranges) {
+  io::writeExr(dir / files::kSteadyExr, steady, {"R", "G", "B"});
+  imaging::writeToneMappedPng(dir / files::kSteadyPng, steady, imaging::ToneMap::Global,
                               ranges.take("steady"));
-  files.push_back("steady.exr");
-  files.push_back("steady.png");
 }
 
-void writeDepth(const std::filesystem::path& dir, const Image& depth_m, PlotRanges& ranges,
-                std::vector<std::string>& files) {
-  io::writeDepthExr(dir / "depth.exr", depth_m);  // channels Y and Z
-  io::writeNpy(dir / "depth.npy", {std::size_t(depth_m.height), std::size_t(depth_m.width)},
+void writeDepth(const std::filesystem::path& dir, const Image& depth_m, PlotRanges& ranges) {
+  io::writeDepthExr(dir / files::kDepthExr, depth_m);  // channels Y and Z
+  io::writeNpy(dir / files::kDepthNpy, {std::size_t(depth_m.height), std::size_t(depth_m.width)},
                depth_m.data.data());
   imaging::ColorScale scale;  // over the surfaces: 0 (no surface) is not a depth
   scale.nonPositiveIsNoData = true;
   scale.noDataLabel = "no surface";
   scale.range = ranges.take("depth");
-  imaging::writeColormappedPng(dir / "depth.png", depth_m, "depth [m]", scale);
-  files.push_back("depth.exr");
-  files.push_back("depth.npy");
-  files.push_back("depth.png");
+  imaging::writeColormappedPng(dir / files::kDepthPng, depth_m, "depth [m]", scale);
 }
 
 // The run's record: the effective config and, for a batch, the manifest.
@@ -170,14 +152,44 @@ void writeRecord(const config::RunConfig& config, const capture::RenderJob& job,
   }
 }
 
-// Renders with the configured renderer (see RendererFactory.h).
-capture::RenderResult renderVolume(const config::RunConfig& config, const capture::RenderJob& job,
-                                   const RunOptions& options, capture::SegmentSink& sink,
-                                   const capture::ProgressCallback& progress, RunSummary& summary) {
-  const RendererChoice choice = makeRenderer(config, options.eglPlatform);
-  summary.backend = choice.backend;
-  summary.device = choice.renderer->description();
-  return choice.renderer->render(job, sink, progress);
+// The bounce components the consumers read: bounce<k>.npy's and the sensors'
+// bounces 1..N (N = 1 reads the indirect light).
+std::vector<int32_t> bouncesRead(const config::OutputConfig& out, int32_t sensorBounces) {
+  std::vector<int32_t> bounces = out.bounces;
+  for (int32_t k = 1; sensorBounces >= 2 && k <= sensorBounces; ++k) {
+    if (std::find(bounces.begin(), bounces.end(), k) == bounces.end()) bounces.push_back(k);
+  }
+  return bounces;
+}
+
+// Writes product `p` from what the render gave (its Writer::Volume files
+// were streamed while it ran).
+void writeProduct(const OutputProduct& p, const config::RunConfig& config,
+                  const capture::RenderJob& job, const std::filesystem::path& dir,
+                  const Image& steady, const RunSummary& summary,
+                  const std::function<const imaging::BinFrames&()>& binFrames, PlotRanges& ranges,
+                  const Progress& progress) {
+  switch (p.writer) {
+    case Writer::Volume:
+      break;
+    case Writer::Steady:
+      writeSteady(dir, steady, ranges);
+      break;
+    case Writer::Depth:
+      writeDepth(dir, summary.result.depth_m, ranges);
+      break;
+    case Writer::Frames:
+      writeFrames(dir, binFrames());
+      break;
+    case Writer::Video:
+      writeVideo(dir, config.output, binFrames(), progress);
+      break;
+    case Writer::Metadata:
+      writeFileAtomically(
+          dir / files::kMetadata,
+          transientMetadataJson(config, job, summary.result, summary.backend, summary.device));
+      break;
+  }
 }
 
 // Writes every output into `dir`, the staging folder.
@@ -185,6 +197,7 @@ void writeOutputs(const config::RunConfig& config, const capture::RenderJob& job
                   const RunOptions& options, const std::filesystem::path& dir, Progress& progress,
                   RunSummary& summary) {
   const config::OutputConfig& out = config.output;
+  const std::vector<OutputProduct> products = renderProducts(config);
   // The sensors see what the render saves (the total volume, plus the direct
   // component and the depth when the output writes them), so `tofsim sense`
   // on the saved folder reproduces their outputs byte for byte.
@@ -194,57 +207,49 @@ void writeOutputs(const config::RunConfig& config, const capture::RenderJob& job
   // (cwtof multipath_by_order) is given the sensors whether or not the
   // components are saved; `tofsim sense` needs the files (direct.npy,
   // bounce<k>.npy) to redo it.
-  const sensors::VolumeShape shape{job.camera().width, job.camera().height, capture::kChannels,
+  const capture::Camera& camera = job.camera();
+  const sensors::VolumeShape shape{camera.width, camera.height, capture::kChannels,
                                    job.settings.time};
   const std::optional<int32_t> bounces = sensorBounces(config);
   std::optional<SensorStreams> sensorStreams;
   if (!config.sensors.empty()) sensorStreams.emplace(config, shape, out.direct, bounces, dir);
   std::optional<BinMajorSpill> spill;
   if (out.frames || out.video || out.frame_pngs) spill.emplace(dir / kBinMajorSpillName, shape);
-  OutputSink::Forward forward;
+  std::vector<std::unique_ptr<VolumeFileSink>> volumeFiles;
+  CaptureConsumers consumers;
+  for (const OutputProduct& p : products) {
+    if (p.writer != Writer::Volume) continue;
+    volumeFiles.push_back(std::make_unique<VolumeFileSink>(
+        dir / p.files.at(0), p.component, camera.width, camera.height, job.settings.time));
+    consumers.sinks.push_back(volumeFiles.back().get());
+  }
+  std::optional<PixelSpanSink> spans;
   if (sensorStreams || spill) {
-    forward = [&](const sensors::PixelSpan& s) {
-      if (sensorStreams) sensorStreams->consume(s);
-      if (spill) spill->append(s);
-    };
+    spans.emplace(
+        [&](const sensors::PixelSpan& s) {
+          if (sensorStreams) sensorStreams->consume(s);
+          if (spill) spill->append(s);
+        },
+        bounces.value_or(0));
+    consumers.sinks.push_back(&*spans);
   }
-  OutputSink sink(dir, out, job.camera().width, job.camera().height, job.settings.time, forward,
-                  bounces.value_or(0));
-  const capture::ProgressCallback onProgress = [&](std::size_t done, std::size_t total,
-                                                   const std::string& what) {
-    progress.update(done, total, what);
-  };
-  summary.result = renderVolume(config, job, options, sink, onProgress, summary);
-  summary.result.nonFiniteRejected = sink.nonFiniteValues();
-  progress.message("device: " + summary.device + " (backend " + summary.backend + ")");
-  if (summary.result.nonFiniteRejected > 0) {
-    // Shown even with -q: the outputs differ from what the renderer produced.
-    std::fprintf(stderr,
-                 "tofsim: warning: %zu NaN/infinite volume values written as 0 "
-                 "(transient.json stats.rejected_non_finite_values)\n",
-                 summary.result.nonFiniteRejected);
-  }
-  checkAxisAfterRender(config, job, sink, summary.result);  // throws under --strict
+  consumers.bounces = bouncesRead(out, bounces.value_or(0));
+  RenderedCapture rendered =
+      renderCapture(config, job, options.eglPlatform, consumers, progress);  // throws: --strict
+  summary.backend = rendered.backend;
+  summary.device = rendered.device;
+  summary.result = std::move(rendered.result);
   if (sensorStreams) sensorStreams->checkWindows();
-  sink.commit();
-  if (out.transient) summary.files.push_back("transient.npy");
-  if (out.direct) summary.files.push_back("direct.npy");
-  if (out.indirect) summary.files.push_back("indirect.npy");
-  for (const int32_t k : out.bounces)
-    summary.files.push_back("bounce" + std::to_string(k) + ".npy");
+  for (const std::unique_ptr<VolumeFileSink>& file : volumeFiles) file->commit();
   PlotRanges ranges(out.plot_ranges);
-  if (out.steady) writeSteady(dir, sink.steady(), ranges, summary.files);
-  if (out.depth) writeDepth(dir, summary.result.depth_m, ranges, summary.files);
-  if (spill) {
-    const imaging::BinFrames frames = spill->frames();
-    if (out.frames) writeFrames(dir, frames, summary.files);
-    if (out.video || out.frame_pngs) writeVideo(dir, out, frames, progress, summary.files);
-  }
-  if (out.transient) {
-    writeFileAtomically(
-        dir / "transient.json",
-        transientMetadataJson(config, job, summary.result, summary.backend, summary.device));
-    summary.files.push_back("transient.json");
+  std::optional<imaging::BinFrames> frames;  // from the spill, when a writer first needs them
+  const std::function<const imaging::BinFrames&()> binFrames = [&]() -> const imaging::BinFrames& {
+    if (!frames) frames.emplace(spill->frames());
+    return *frames;
+  };
+  for (const OutputProduct& p : products) {
+    writeProduct(p, config, job, dir, rendered.steady, summary, binFrames, ranges, progress);
+    summary.files.insert(summary.files.end(), p.files.begin(), p.files.end());
   }
   if (sensorStreams) {
     const Image* depth = out.depth ? &summary.result.depth_m : nullptr;

@@ -11,6 +11,7 @@
 #include "tofsim/io/DepthExr.h"
 #include "tofsim/io/Exr.h"
 #include "tofsim/io/Npy.h"
+#include "tofsim/pipeline/OutputProducts.h"
 #include "tofsim/util/Error.h"
 
 namespace tofsim::pipeline {
@@ -103,7 +104,7 @@ TransientVolume readVolume(const std::filesystem::path& file, const VolumeLayout
 
 // depth.exr when present, one channel of W x H.
 std::optional<Image> readDepth(const std::filesystem::path& directory, int32_t W, int32_t H) {
-  const std::filesystem::path depthFile = directory / "depth.exr";
+  const std::filesystem::path depthFile = directory / files::kDepthExr;
   std::error_code ec;
   if (!std::filesystem::exists(depthFile, ec)) return std::nullopt;
   Image depth = io::readDepthExr(depthFile);
@@ -118,16 +119,16 @@ std::optional<Image> readDepth(const std::filesystem::path& directory, int32_t W
 }  // namespace
 
 SavedVolume loadSavedVolume(const std::filesystem::path& directory) {
-  const std::filesystem::path json = directory / "transient.json";
+  const std::filesystem::path json = directory / files::kMetadata;
   const VolumeLayout layout = readLayout(json);
-  SavedVolume saved{readVolume(directory / "transient.npy", layout, json), {}, {}};
+  SavedVolume saved{readVolume(directory / files::kTransient, layout, json), {}, {}};
   const int32_t W = saved.volume.width(), H = saved.volume.height();
   std::error_code ec;
-  if (std::filesystem::exists(directory / "direct.npy", ec)) {
-    saved.directOnly = readVolume(directory / "direct.npy", layout, json);
+  if (std::filesystem::exists(directory / files::kDirect, ec)) {
+    saved.directOnly = readVolume(directory / files::kDirect, layout, json);
     if (saved.directOnly->width() != W || saved.directOnly->height() != H ||
         saved.directOnly->channels() != saved.volume.channels()) {
-      fail(directory / "direct.npy", "shape differs from transient.npy");
+      fail(directory / files::kDirect, "shape differs from transient.npy");
     }
   }
   saved.depth_m = readDepth(directory, W, H);
@@ -154,7 +155,7 @@ int32_t savedIndirectBounces(const std::filesystem::path& file) {
 
 SavedVolumeStream::SavedVolumeStream(const std::filesystem::path& directory,
                                      const std::vector<std::string>& components) {
-  const std::filesystem::path json = directory / "transient.json";
+  const std::filesystem::path json = directory / files::kMetadata;
   const VolumeLayout layout = readLayout(json);
   const auto open = [&](const std::filesystem::path& file) {
     std::error_code ec;
@@ -163,7 +164,7 @@ SavedVolumeStream::SavedVolumeStream(const std::filesystem::path& directory,
     const std::vector<std::string> channels = checkedChannels(file, reader->shape(), layout, json);
     return std::make_pair(std::move(reader), channels.size());
   };
-  auto [volume, channels] = open(directory / "transient.npy");
+  auto [volume, channels] = open(directory / files::kTransient);
   const io::NpyShape s = volume->shape();
   shape_.height = static_cast<int32_t>(s[0]);
   shape_.width = static_cast<int32_t>(s[1]);
@@ -214,7 +215,7 @@ std::optional<TransientVolume> loadSavedComponent(const std::filesystem::path& d
   const std::filesystem::path file = directory / (name + ".npy");
   std::error_code ec;
   if (!std::filesystem::exists(file, ec)) return std::nullopt;
-  const std::filesystem::path json = directory / "transient.json";
+  const std::filesystem::path json = directory / files::kMetadata;
   return readVolume(file, readLayout(json), json);
 }
 

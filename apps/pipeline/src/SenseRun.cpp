@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cstdio>
 
+#include "tofsim/pipeline/OutputProducts.h"
 #include "tofsim/pipeline/PlotRanges.h"
 #include "tofsim/pipeline/SavedVolume.h"
 #include "tofsim/pipeline/SensorStreams.h"
@@ -57,15 +58,15 @@ std::vector<std::string> sensedComponents(const config::RunConfig& config,
                          config.config_file.string() +
                          ") needs the render's direct.npy, bounce<k>.npy and depth.exr");
   };
-  for (const char* file : {"direct.npy", "depth.exr"}) {
+  for (const std::string_view file : {files::kDirect, files::kDepthExr}) {
     if (!std::filesystem::exists(dir / file)) fail(dir / file, "not found");
   }
-  const int32_t n = savedIndirectBounces(dir / "transient.json");
+  const int32_t n = savedIndirectBounces(dir / files::kMetadata);
   for (int32_t k = 1; k <= n; ++k) {
     const std::string name = "bounce" + std::to_string(k);
     if (std::filesystem::exists(dir / (name + ".npy"))) {
       components.push_back(name);
-    } else if (n == 1 && std::filesystem::exists(dir / "indirect.npy")) {
+    } else if (n == 1 && std::filesystem::exists(dir / files::kIndirect)) {
       components.push_back("indirect");
     } else {
       fail(dir / (name + ".npy"),

@@ -13,7 +13,6 @@
 #include "tofsim/capture/ArrivalBounds.h"
 #include "tofsim/capture/RenderJob.h"
 #include "tofsim/config/RunConfig.h"
-#include "tofsim/pipeline/OutputSink.h"
 #include "tofsim/volume/TransientVolume.h"
 
 namespace tofsim::pipeline {
@@ -57,11 +56,11 @@ struct AxisLossFractions {
 AxisLossFractions axisLossFractions(const capture::RenderResult& result);
 
 /// After rendering, before the outputs are committed: records the binned
-/// energy in result.onAxisEnergy, warns (config.strict: throws InputError)
-/// when the axis lost more than kWindowLossWarning. (The sensors' windows
-/// are checked as they stream: SensorStreams::checkWindows.)
+/// energy (the sum of `steady`, the volume summed over time) in result.onAxisEnergy, warns
+/// (config.strict: throws InputError) when the axis lost more than kWindowLossWarning. (The
+/// sensors' windows are checked as they stream: SensorStreams::checkWindows.)
 void checkAxisAfterRender(const config::RunConfig& config, const capture::RenderJob& job,
-                          const OutputSink& sink, capture::RenderResult& result);
+                          const Image& steady, capture::RenderResult& result);
 
 /// Sensor `index` of the config, whose window drops the fraction `lost` of
 /// its light from a volume with time axis `axis`: warns (config.strict:

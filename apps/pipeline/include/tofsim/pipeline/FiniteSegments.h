@@ -1,0 +1,43 @@
+#pragma once
+// The first stage behind a renderer: NaN and infinity never reach the outputs
+// silently. Each segment's direct and indirect light, their float sum (the
+// total, component kTotal) and the bounces asked for are copied with every
+// value that is not finite written as 0 and counted (nonFiniteValues()), and
+// handed on as one segment to the consumers (files, sensors, arrays). The one
+// rule for every output path: the CLI's files and the Python module's arrays.
+
+#include <cstddef>
+#include <cstdint>
+#include <string_view>
+#include <vector>
+
+#include "tofsim/capture/SegmentSink.h"
+
+namespace tofsim::pipeline {
+
+/// The component direct + indirect, in float, that FiniteSegments adds:
+/// transient.npy's values.
+inline constexpr std::string_view kTotal = "total";
+
+/// Replaces NaN and +-inf by 0 in place; returns how many there were.
+std::size_t zeroNonFinite(float* values, std::size_t count);
+
+class FiniteSegments : public capture::SegmentSink {
+ public:
+  /// bounces: the bounce components (k of capture::bounceComponent) the
+  /// consumers read, cleaned too (their values are counted in indirect's).
+  FiniteSegments(capture::SegmentSink& next, int32_t bins, std::vector<int32_t> bounces);
+  void consume(const capture::Segment& segment) override;
+  /// How many values were NaN or infinite and replaced by 0 so far.
+  std::size_t nonFiniteValues() const { return nonFinite_; }
+
+ private:
+  capture::SegmentSink& next_;
+  int32_t bins_;
+  std::vector<int32_t> bounces_;
+  std::vector<float> direct_, indirect_, total_;
+  std::vector<std::vector<float>> bounceCopies_;  ///< one per bounces_ entry
+  std::size_t nonFinite_ = 0;
+};
+
+}  // namespace tofsim::pipeline

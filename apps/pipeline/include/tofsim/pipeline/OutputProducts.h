@@ -1,0 +1,68 @@
+#pragma once
+// The products of a camera render, each named once: what files it writes,
+// how large they will be, and which writer makes them. The render run writes
+// what renderProducts lists, in that order, and lists those files; the size
+// estimate (OutputEstimate.h) sums the same table; transient.json names the
+// files a reader looks for from it; readers of a saved render (`tofsim
+// sense`, the Python module) open them by these names.
+
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+#include "tofsim/config/RunConfig.h"
+#include "tofsim/pipeline/OutputEstimate.h"
+
+namespace tofsim::pipeline {
+
+/// File names of a camera render, relative to its output folder.
+namespace files {
+inline constexpr std::string_view kTransient = "transient.npy";  ///< direct + indirect
+inline constexpr std::string_view kDirect = "direct.npy";
+inline constexpr std::string_view kIndirect = "indirect.npy";
+inline constexpr std::string_view kMetadata = "transient.json";
+inline constexpr std::string_view kSteadyExr = "steady.exr";
+inline constexpr std::string_view kSteadyPng = "steady.png";
+inline constexpr std::string_view kDepthExr = "depth.exr";
+inline constexpr std::string_view kDepthNpy = "depth.npy";
+inline constexpr std::string_view kDepthPng = "depth.png";
+inline constexpr std::string_view kVideo = "transient.mp4";
+/// bounce<k>.npy: the light of exactly k indirect bounces.
+std::string bounce(int32_t k);
+/// frames/frame_NNNNN.exr and .png: time bin `bin` of the volume.
+std::string frameExr(int32_t bin);
+std::string framePng(int32_t bin);
+}  // namespace files
+
+/// Which writer makes a product (RenderRun.cpp dispatches on it).
+enum class Writer {
+  Volume,    ///< a component streamed to .npy as it is rendered (VolumeFileSink)
+  Steady,    ///< the volume summed over time: EXR and tone-mapped PNG
+  Depth,     ///< the camera-to-surface distance: EXR, .npy and colour-mapped PNG
+  Frames,    ///< one EXR per time bin, from the bin-major copy
+  Video,     ///< transient.mp4 and/or the frame PNGs, from the bin-major copy
+  Metadata,  ///< transient.json
+};
+
+struct OutputProduct {
+  Writer writer;
+  /// Writer::Volume: the segment component it streams (FiniteSegments.h).
+  std::string_view component;
+  std::vector<std::string> files;  ///< written, in order, relative to the output folder
+  std::vector<OutputItem> sizes;   ///< its lines of the size estimate
+};
+
+/// What `config` writes, in writing order (sensors, the effective config
+/// and the manifest follow them: they are not the camera's products).
+std::vector<OutputProduct> renderProducts(const config::RunConfig& config);
+
+/// Bytes of one volume's floats (H W T C float32, no header).
+std::uintmax_t volumeBytes(const config::RunConfig& config);
+
+/// transient.json's "files": the volume, the steady picture and the depth
+/// a reader looks for, by role.
+std::vector<std::pair<std::string, std::string>> metadataFiles();
+
+}  // namespace tofsim::pipeline

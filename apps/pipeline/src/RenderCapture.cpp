@@ -1,0 +1,52 @@
+#include "tofsim/pipeline/RenderCapture.h"
+
+#include <cstdio>
+
+#include "tofsim/pipeline/AxisReport.h"
+#include "tofsim/pipeline/Capture.h"
+#include "tofsim/pipeline/FiniteSegments.h"
+#include "tofsim/pipeline/RendererFactory.h"
+#include "tofsim/pipeline/SteadySink.h"
+#include "tofsim/util/Interrupt.h"
+
+namespace tofsim::pipeline {
+
+capture::RenderJob prepareCapture(const config::RunConfig& config, const scene::Scene& scene) {
+  capture::RenderJob job = makeRenderJob(config, scene);
+  checkAxisBeforeRender(config, job, false);  // a proven cut fails here under --strict
+  return job;
+}
+
+RenderedCapture renderCapture(const config::RunConfig& config, const capture::RenderJob& job,
+                              gl::EglPlatform eglPlatform, const CaptureConsumers& consumers,
+                              Progress& progress) {
+  const capture::Camera& camera = job.camera();
+  const TimeAxis& axis = job.settings.time;
+  SteadySink steady(camera.width, camera.height, axis.bins);
+  std::vector<capture::SegmentSink*> sinks = consumers.sinks;
+  sinks.push_back(&steady);
+  capture::TeeSink tee(std::move(sinks));
+  FiniteSegments finite(tee, axis.bins, consumers.bounces);
+  const RendererChoice choice = makeRenderer(config, eglPlatform);
+  RenderedCapture rendered;
+  rendered.backend = choice.backend;
+  rendered.device = choice.renderer->description();
+  rendered.result = choice.renderer->render(
+      job, finite, [&](std::size_t done, std::size_t total, const std::string& what) {
+        progress.update(done, total, what);
+      });
+  throwIfInterrupted();  // a Ctrl-C during the last segment still means "stop"
+  rendered.result.nonFiniteRejected = finite.nonFiniteValues();
+  progress.message("device: " + rendered.device + " (backend " + rendered.backend + ")");
+  if (rendered.result.nonFiniteRejected > 0) {
+    std::fprintf(stderr,
+                 "tofsim: warning: %zu NaN/infinite volume values written as 0 "
+                 "(transient.json stats.rejected_non_finite_values)\n",
+                 rendered.result.nonFiniteRejected);
+  }
+  rendered.steady = steady.steady();
+  checkAxisAfterRender(config, job, rendered.steady, rendered.result);  // throws under --strict
+  return rendered;
+}
+
+}  // namespace tofsim::pipeline
