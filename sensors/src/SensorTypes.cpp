@@ -1,4 +1,7 @@
 // The sensor descriptors of SensorType.h, one block per model.
+#include <cstdio>
+#include <string>
+
 #include "tofsim/sensors/SensorType.h"
 
 namespace tofsim::sensors {
@@ -37,9 +40,27 @@ std::unique_ptr<SensorStream> SensorType<SpadParams>::open(const SpadParams& p,
                                                            const StreamOptions& options) {
   return openSpad(p, shape, options);
 }
-std::vector<std::string> SensorType<SpadParams>::warnings(const SpadParams&, const TimeAxis&,
-                                                          const Image*) {
-  return {};
+std::vector<std::string> SensorType<SpadParams>::warnings(const SpadParams& p,
+                                                          const TimeAxis& render, const Image*) {
+  std::vector<std::string> out;
+  if (p.irf.present()) {
+    // The part of the response the window cannot hold is folded back into it
+    // (convolveConserving), so the histogram's shape misleads.
+    const TimeAxis axis = resolveBins(p.bins, render);
+    const double irfWidth = static_cast<double>(p.irf.values.size()) * p.irf.sample_width_s;
+    const double window = axis.bins * axis.bin_width_s;
+    if (irfWidth > window) {
+      const auto ps = [](double s) {
+        char text[32];
+        std::snprintf(text, sizeof text, "%.6g ps", s * 1e12);
+        return std::string(text);
+      };
+      out.push_back("the IRF spans " + ps(irfWidth) + ", wider than the TDC window of " +
+                    ps(window) + ": light it moves outside the window is folded back in (" +
+                    p.irf.file + ")");
+    }
+  }
+  return out;
 }
 std::uintmax_t SensorType<SpadParams>::outputBytes(const SpadParams& p, int32_t width,
                                                    int32_t height, const TimeAxis& render) {

@@ -1,5 +1,6 @@
 #include "tofsim/sensors/Spad.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <string>
@@ -9,6 +10,7 @@
 #include "SpadEventEngine.h"
 #include "SpadSampling.h"
 #include "tofsim/sensors/Random.h"
+#include "tofsim/sensors/SpadPixelMaps.h"
 #include "tofsim/sensors/TimeKernel.h"
 #include "tofsim/util/Error.h"
 
@@ -18,6 +20,11 @@ namespace {
 constexpr uint32_t kSpadStreamTag = 0x5350;  // "SP"
 
 BinKernel spadKernel(const SpadParams& p, const TimeAxis& axis) {
+  if (p.irf.present()) {
+    const SpadIrf& irf = p.irf;
+    const double start = irf.first_time_s - 0.5 * irf.sample_width_s - irfTimeZero_s(irf);
+    return piecewiseConstantKernel(irf.values, start, irf.sample_width_s, axis.bin_width_s);
+  }
   const double sp = fwhmToSigma(p.pulse_fwhm_s);
   const double sj = fwhmToSigma(p.jitter_fwhm_s);
   return gaussianTailKernel(std::sqrt(sp * sp + sj * sj), p.jitter_tail_fraction, p.jitter_tail_s,
@@ -35,18 +42,27 @@ void checkParams(const SpadParams& p) {
   TOFSIM_CHECK(p.afterpulse_probability >= 0.0 && p.afterpulse_probability <= 1.0);
   TOFSIM_CHECK(p.afterpulse_probability == 0.0 || p.mode == SpadMode::FreeRunning);
   TOFSIM_CHECK(p.afterpulse_delay_s > 0.0);
+  if (p.irf.present()) {
+    TOFSIM_CHECK(p.irf.sample_width_s > 0.0);
+    TOFSIM_CHECK(p.pulse_fwhm_s == 0.0 && p.jitter_fwhm_s == 0.0 && p.jitter_tail_fraction == 0.0);
+  }
+  TOFSIM_CHECK(p.pde_spread >= 0.0 && p.dark_count_log_sigma >= 0.0);
+  TOFSIM_CHECK(p.hot_pixel_fraction >= 0.0 && p.hot_pixel_fraction <= 1.0);
+  TOFSIM_CHECK(p.dead_pixel_fraction >= 0.0 && p.dead_pixel_fraction <= 1.0);
+  TOFSIM_CHECK(p.hot_pixel_rate_per_s >= 0.0);
 }
 
-// Per-cycle flux of one pixel from its render bins (signal in photo-electrons).
+// Per-cycle flux of one pixel from its render bins (signal in photo-electrons),
+// with the pixel's own PDE and dark count rate.
 void fluxFromSignal(const std::vector<double>& signal, const TimeAxis& render, const SpadParams& p,
-                    const TimeAxis& axis, const BinKernel& kernel, std::vector<double>& resampled,
-                    std::vector<double>& flux) {
+                    double pde, double dcr_per_s, const TimeAxis& axis, const BinKernel& kernel,
+                    std::vector<double>& resampled, std::vector<double>& flux) {
   resampleEnergy(signal, render, axis, resampled);
   flux.assign(resampled.size(), 0.0);
   convolveConserving(resampled.data(), axis.bins, 1, kernel, flux.data());
   const double background =
-      p.pde * p.ambient_rate_per_s * axis.bin_width_s + p.dark_count_rate_per_s * axis.bin_width_s;
-  for (double& f : flux) f = p.pde * std::max(0.0, f) + background;
+      pde * p.ambient_rate_per_s * axis.bin_width_s + dcr_per_s * axis.bin_width_s;
+  for (double& f : flux) f = pde * std::max(0.0, f) + background;
   if (p.gate_width_s > 0.0) {
     // The armed fraction of each bin: a disarmed detector sees nothing, so the
     // first-photon and dead-time laws run on the gated flux alone.
@@ -77,7 +93,33 @@ void spadFluxPerCycle(const TransientVolume& volume, const SpadParams& params, c
   checkParams(params);
   std::vector<double> signal, resampled;
   pixelSignal(volume, params.common, y, x, signal);
-  fluxFromSignal(signal, volume.axis(), params, axis, spadKernel(params, axis), resampled, flux);
+  const std::size_t px = static_cast<std::size_t>(y) * volume.width() + x;
+  const SpadPixel pixel = spadPixel(params, px);
+  fluxFromSignal(signal, volume.axis(), params, pixel.pde, pixel.dcr_per_s, axis,
+                 spadKernel(params, axis), resampled, flux);
+}
+
+double irfTimeZero_s(const SpadIrf& irf) {
+  TOFSIM_CHECK(irf.present());
+  const auto timeOf = [&](std::size_t k) {
+    return irf.first_time_s + static_cast<double>(k) * irf.sample_width_s;
+  };
+  switch (irf.t0) {
+    case SpadIrf::TimeZero::Peak:
+      return timeOf(static_cast<std::size_t>(
+          std::max_element(irf.values.begin(), irf.values.end()) - irf.values.begin()));
+    case SpadIrf::TimeZero::Centroid: {
+      double sum = 0.0, moment = 0.0;
+      for (std::size_t k = 0; k < irf.values.size(); ++k) {
+        sum += irf.values[k];
+        moment += irf.values[k] * timeOf(k);
+      }
+      return moment / sum;
+    }
+    case SpadIrf::TimeZero::Time:
+      return irf.t0_s;
+  }
+  return irf.t0_s;
 }
 
 namespace {
@@ -94,7 +136,8 @@ class SpadStream final : public SensorStream {
         kernel_(spadKernel(p, axis_)),
         deadBins_(static_cast<int32_t>(std::lround(p.dead_time_s / axis_.bin_width_s))),
         plotted_(plotPixels(p.plot_pixels, shape.height, shape.width)),
-        histograms_(plotted_.size()) {
+        histograms_(plotted_.size()),
+        maps_(spadPixelMaps(p, shape.height, shape.width)) {
     checkParams(p);
     checkChannelSelection(p.common.channel, shape.channels);
     const std::size_t HW = shape.pixelCount();
@@ -165,6 +208,19 @@ class SpadStream final : public SensorStream {
       outputs.push_back(std::move(png));
     }
     outputs.push_back(histogramPlot(plotted_, histograms_, axis_));
+    if (spadHasPixelMaps(p_)) {
+      const std::vector<std::pair<std::string, double>> counts = {
+          {"hot_pixels", static_cast<double>(maps_.hot)},
+          {"dead_pixels", static_cast<double>(maps_.dead)}};
+      outputs.push_back(image("spad_pde_map", H, W, {maps_.pde.begin(), maps_.pde.end()}, "-",
+                              "SPAD photon detection efficiency per pixel (fixed pattern)"));
+      outputs.back().attributes = counts;
+      outputs.push_back(image("spad_dcr_map", H, W,
+                              {maps_.dcr_per_s.begin(), maps_.dcr_per_s.end()}, "counts / s",
+                              "SPAD dark count rate per pixel (fixed pattern; hot pixels at "
+                              "hot_pixel_rate, dead pixels 0)"));
+      outputs.back().attributes = counts;
+    }
     return outputs;
   }
 
@@ -177,7 +233,8 @@ class SpadStream final : public SensorStream {
   void pixel(const float* values, std::size_t px, float* out, Scratch& s) const {
     const int32_t K = axis_.bins;
     pixelSignal(values, shape_.axis.bins, shape_.channels, p_.common, s.signal);
-    fluxFromSignal(s.signal, shape_.axis, p_, axis_, kernel_, s.resampled, s.flux);
+    fluxFromSignal(s.signal, shape_.axis, p_, maps_.pde[px], maps_.dcr_per_s[px], axis_, kernel_,
+                   s.resampled, s.flux);
     Rng rng(options_.seed, pixelStream(kSpadStreamTag, px));
     const auto N = static_cast<uint64_t>(p_.cycles);
     if (p_.mode == SpadMode::Synchronous) {
@@ -210,6 +267,7 @@ class SpadStream final : public SensorStream {
   const int32_t deadBins_;
   const std::vector<std::array<int32_t, 2>> plotted_;
   std::vector<std::vector<float>> histograms_;
+  const SpadPixelMaps maps_;
   SensorOutput counts_;
   std::unique_ptr<ArrayWriter> writer_;
   std::vector<float> chunk_;

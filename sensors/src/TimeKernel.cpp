@@ -9,33 +9,73 @@ namespace tofsim::sensors {
 
 namespace {
 double normalCdf(double z) { return 0.5 * std::erfc(-z / std::sqrt(2.0)); }
+double normalPdf(double z) { return std::exp(-0.5 * z * z) / std::sqrt(2.0 * M_PI); }
 
-constexpr int kSubSamples = 64;  // source positions inside a bin
+/// exp(u^2) erfc(u) for u >= 0, without overflow (asymptotic series beyond 26,
+/// relative error < 1e-13 there).
+double erfcx(double u) {
+  if (u < 26.0) return std::exp(u * u) * std::erfc(u);
+  const double v = 1.0 / (2.0 * u * u);
+  return (1.0 - v * (1.0 - 3.0 * v * (1.0 - 5.0 * v * (1.0 - 7.0 * v)))) / (u * std::sqrt(M_PI));
+}
+
 }  // namespace
 
 double fwhmToSigma(double fwhm) { return fwhm / (2.0 * std::sqrt(2.0 * std::log(2.0))); }
 
-BinKernel makeBinKernel(const std::function<double(double)>& cdf, double binWidth, double lo,
-                        double hi) {
+BinKernel makeBinKernel(const std::function<double(double)>& integratedCdf, double binWidth,
+                        double lo, double hi) {
   TOFSIM_CHECK(binWidth > 0.0 && hi >= lo);
   const auto dLo = static_cast<int32_t>(std::floor(lo / binWidth)) - 1;
   const auto dHi = static_cast<int32_t>(std::ceil(hi / binWidth)) + 1;
   BinKernel k;
   k.first = dLo;
   k.weights.assign(static_cast<std::size_t>(dHi - dLo + 1), 0.0);
+  // A source uniform in [0, w) shifted by X lands in [d w, (d + 1) w) with
+  // probability (1/w) int_0^w F((d+1)w - u) - F(dw - u) du, the second
+  // difference of G = int F.
+  double gPrev = integratedCdf((dLo - 1) * binWidth), gHere = integratedCdf(dLo * binWidth);
   double total = 0.0;
   for (int32_t d = dLo; d <= dHi; ++d) {
-    double sum = 0.0;
-    for (int s = 0; s < kSubSamples; ++s) {
-      const double u = (s + 0.5) * binWidth / kSubSamples;  // source position in its bin
-      sum += cdf((d + 1) * binWidth - u) - cdf(d * binWidth - u);
-    }
-    k.weights[d - dLo] = sum / kSubSamples;
-    total += k.weights[d - dLo];
+    const double gNext = integratedCdf((d + 1) * binWidth);
+    const double w = std::max(0.0, (gNext - gHere) - (gHere - gPrev)) / binWidth;
+    k.weights[d - dLo] = w;
+    total += w;
+    gPrev = gHere;
+    gHere = gNext;
   }
   TOFSIM_CHECK(total > 0.0);
   for (double& w : k.weights) w /= total;
   return k;
+}
+
+BinKernel piecewiseConstantKernel(const std::vector<double>& density, double start,
+                                  double sampleWidth, double binWidth) {
+  TOFSIM_CHECK(!density.empty() && sampleWidth > 0.0);
+  // Probabilities p_k of the samples, their CDF F_k and int F G_k at the
+  // leading edges; inside sample k both are polynomials (linear, quadratic).
+  const std::size_t n = density.size();
+  double sum = 0.0;
+  for (double v : density) {
+    TOFSIM_CHECK(v >= 0.0);
+    sum += v;
+  }
+  TOFSIM_CHECK(sum > 0.0);
+  std::vector<double> p(n), F(n + 1, 0.0), G(n + 1, 0.0);
+  for (std::size_t k = 0; k < n; ++k) {
+    p[k] = density[k] / sum;
+    F[k + 1] = F[k] + p[k];
+    G[k + 1] = G[k] + (F[k] + 0.5 * p[k]) * sampleWidth;
+  }
+  const double end = start + static_cast<double>(n) * sampleWidth;
+  auto integrated = [&](double x) {
+    if (x <= start) return 0.0;
+    if (x >= end) return G[n] + F[n] * (x - end);
+    const auto k = std::min(n - 1, static_cast<std::size_t>((x - start) / sampleWidth));
+    const double dx = x - (start + static_cast<double>(k) * sampleWidth);
+    return G[k] + F[k] * dx + 0.5 * p[k] / sampleWidth * dx * dx;
+  };
+  return makeBinKernel(integrated, binWidth, start, end);
 }
 
 BinKernel gaussianKernel(double sigma, double binWidth) {
@@ -46,22 +86,34 @@ BinKernel gaussianTailKernel(double sigma, double tailFraction, double tailTau, 
   TOFSIM_CHECK(sigma >= 0.0 && tailTau >= 0.0 && tailFraction >= 0.0 && tailFraction <= 1.0);
   const bool tail = tailFraction > 0.0 && tailTau > 0.0;
   if (sigma == 0.0 && !tail) return BinKernel{};
-  auto gauss = [sigma](double x) {
-    return sigma > 0.0 ? normalCdf(x / sigma) : (x >= 0.0 ? 1.0 : 0.0);
+  // Integrated CDFs G(x) = int_-inf^x F, in closed form, so the bin weights
+  // (second differences of G) are exact.
+  auto gaussG = [sigma](double x) {
+    if (sigma == 0.0) return std::max(0.0, x);
+    return x * normalCdf(x / sigma) + sigma * normalPdf(x / sigma);
   };
-  auto exGauss = [sigma, tailTau, gauss](double x) {
-    if (sigma == 0.0) return x > 0.0 ? -std::expm1(-x / tailTau) : 0.0;
+  // Exponentially modified Gaussian: F = Phi(x/s) - E(x), E = exp(-x/tau +
+  // s^2/(2 tau^2)) Phi(x/s - s/tau); int E = tau Phi(x/s) - tau E.
+  auto tailE = [sigma, tailTau](double x) {
+    if (sigma == 0.0) return x > 0.0 ? std::exp(-x / tailTau) : 1.0;
     const double z = x / sigma - sigma / tailTau;
-    const double phi = normalCdf(z);
-    if (phi == 0.0) return gauss(x);
-    return gauss(x) - std::exp(-x / tailTau + 0.5 * (sigma / tailTau) * (sigma / tailTau)) * phi;
+    if (z >= 0.0) {
+      const double r = sigma / tailTau;
+      return std::exp(-x / tailTau + 0.5 * r * r) * normalCdf(z);
+    }
+    // E = 0.5 exp(-x^2 / (2 s^2)) erfcx(-z / sqrt 2): no overflow.
+    return 0.5 * std::exp(-0.5 * (x / sigma) * (x / sigma)) * erfcx(-z / std::sqrt(2.0));
   };
-  auto cdf = [=](double x) {
-    return tail ? (1.0 - tailFraction) * gauss(x) + tailFraction * exGauss(x) : gauss(x);
+  auto exGaussG = [=](double x) {
+    if (sigma == 0.0) return x > 0.0 ? x - tailTau * (1.0 - std::exp(-x / tailTau)) : 0.0;
+    return gaussG(x) - tailTau * normalCdf(x / sigma) + tailTau * tailE(x);
+  };
+  auto integrated = [=](double x) {
+    return tail ? (1.0 - tailFraction) * gaussG(x) + tailFraction * exGaussG(x) : gaussG(x);
   };
   const double lo = -6.0 * sigma;
   const double hi = 6.0 * sigma + (tail ? 14.0 * tailTau : 0.0);
-  return makeBinKernel(cdf, binWidth, lo, hi);
+  return makeBinKernel(integrated, binWidth, lo, hi);
 }
 
 void convolveConserving(const double* in, int32_t n, int64_t stride, const BinKernel& kernel,

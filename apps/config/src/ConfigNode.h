@@ -65,6 +65,9 @@ class ConfigNode {
   FileLoc location() const;
   FileLoc locationOf(const std::string& key) const;
   const std::string& path() const { return path_; }
+  /// The document's file, as given to the root (relative paths in the config
+  /// resolve against its folder).
+  const std::string& file() const { return shared_->file; }
   std::string pathOf(const std::string& key) const;
   const YAML::Node& yaml() const { return node_; }
   bool isMap() const { return node_.IsMap(); }

@@ -7,6 +7,7 @@
 #include <type_traits>
 
 #include "FieldEmit.h"
+#include "IrfFile.h"
 #include "QuantityText.h"
 #include "SensorConfigType.h"
 #include "ShortestNumber.h"
@@ -44,6 +45,10 @@ void SensorConfigType<SpadParams>::emit(YAML::Node& n, const SpadParams& p) {
   emitCommon(n, p.common);
   emitFields(n, kBinsFields, p.bins);
   emitFields(n, kSpadFields, p, [&](std::string_view key) {
+    if (key == "irf") {
+      if (p.irf.present()) n["irf"] = irfToYaml(p.irf);
+      return;
+    }
     if (key != "plot_pixels") return;
     for (const auto& [x, y] : p.plot_pixels) {
       YAML::Node xy;

@@ -8,6 +8,7 @@
 
 #include "ConfigNode.h"
 #include "FieldParse.h"
+#include "IrfFile.h"
 #include "SensorConfigType.h"
 #include "tofsim/config/SensorConfig.h"
 #include "tofsim/config/Units.h"
@@ -79,6 +80,23 @@ SpadParams SensorConfigType<SpadParams>::parse(const ConfigNode& n) {
   p.common = parseCommon(n);
   p.bins = parseBins(n);
   parseFields(n, kSpadFields, p, [&](std::string_view key) {
+    if (key == "irf") {
+      const auto irf = n.optionalChild("irf");
+      if (!irf) return;
+      // Read before `irf` (table order); 0 is what the effective config writes.
+      const std::pair<const char*, double> replacedValues[] = {
+          {"pulse_fwhm", p.pulse_fwhm_s},
+          {"jitter_fwhm", p.jitter_fwhm_s},
+          {"jitter_tail_fraction", p.jitter_tail_fraction}};
+      for (const auto& [replaced, value] : replacedValues) {
+        if (value != 0.0) {
+          n.failKey(replaced, "`irf` replaces pulse_fwhm, jitter_fwhm and jitter_tail_*: remove `" +
+                                  std::string(replaced) + "`");
+        }
+      }
+      p.irf = parseIrf(*irf);
+      return;
+    }
     if (key != "plot_pixels") return;
     if (auto pixels = n.optionalChild("plot_pixels")) {  // a list of pairs: by hand
       for (const ConfigNode& e : pixels->elements()) {
@@ -88,6 +106,9 @@ SpadParams SensorConfigType<SpadParams>::parse(const ConfigNode& n) {
       }
     }
   });
+  if (p.hot_pixel_fraction > 0.0 && !(p.hot_pixel_rate_per_s > 0.0)) {
+    n.failKey("hot_pixel_rate", "must be > 0 when hot_pixel_fraction is set");
+  }
   return p;
 }
 

@@ -45,6 +45,20 @@ json modelJson(const StreakParams& p, const TimeAxis& render) {
 json modelJson(const SpadParams& p, const TimeAxis& render) {
   json j = binsJson(p.bins, render);
   fieldsJson(j, kSpadFields, p, [&](std::string_view key) {
+    if (key == "irf") {
+      if (!p.irf.present()) return;
+      const char* t0 = p.irf.t0 == SpadIrf::TimeZero::Peak       ? "peak"
+                       : p.irf.t0 == SpadIrf::TimeZero::Centroid ? "centroid"
+                                                                 : "time";
+      j["irf"] = {{"file", p.irf.file},
+                  {"samples", p.irf.values.size()},
+                  {"sample_width_s", p.irf.sample_width_s},
+                  {"first_time_s", p.irf.first_time_s},
+                  {"t0", t0},
+                  {"time_zero_s", irfTimeZero_s(p.irf)},
+                  {"floor", p.irf.floor}};
+      return;
+    }
     if (key != "plot_pixels") return;
     j["plot_pixels_xy"] = json::array();
     for (const auto& [x, y] : p.plot_pixels) j["plot_pixels_xy"].push_back({x, y});

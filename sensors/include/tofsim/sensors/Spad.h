@@ -21,6 +21,32 @@ namespace tofsim::sensors {
 
 enum class SpadMode { Synchronous, FreeRunning };
 
+/// A measured instrument response (the config's `irf:`), in place of the
+/// Gaussian pulse and jitter: the delay from a photon's arrival to its
+/// timestamp is distributed as `values`, constant over each sample (the
+/// sample at time t_k covers [t_k - w/2, t_k + w/2), w = sample_width_s), and
+/// transferred into the TDC bins exactly (piecewise-constant density,
+/// TimeKernel.h). The sensors library reads no file: the config layer fills
+/// `values` from the file it names.
+struct SpadIrf {
+  enum class TimeZero { Peak, Centroid, Time };
+  std::string file;              ///< the file it came from (metadata); empty: no IRF
+  double bin_width_s = 0.0;      ///< as configured (.npy); 0: from the CSV's time column
+  TimeZero t0 = TimeZero::Peak;  ///< which time of the IRF's axis is zero delay
+  double t0_s = 0.0;             ///< TimeZero::Time: that time, s
+  double floor = 0.0;            ///< subtracted from every value; values below it become 0
+  std::vector<double> values;    ///< after the floor: >= 0, sum > 0, any scale; empty: no IRF
+  double first_time_s = 0.0;     ///< t_0, the time of values[0] on the IRF's own axis
+  double sample_width_s = 0.0;   ///< w, the sample spacing, s
+
+  bool present() const { return !values.empty(); }
+};
+
+/// The time of the IRF's axis that is zero delay: the first maximum's t_k
+/// (Peak), the mean sum v_k t_k / sum v_k (Centroid, the density's exact
+/// mean), or t0_s (Time).
+double irfTimeZero_s(const SpadIrf& irf);
+
 struct SpadParams {
   SensorCommon common;  ///< radiometry gives photons at the detector per laser pulse
   InstrumentBins bins;  ///< TDC bin width, offset and count
@@ -46,13 +72,28 @@ struct SpadParams {
   /// engine, SpadEventEngine.h, draws these pixels). 0: none.
   double afterpulse_probability = 0.0;
   double afterpulse_delay_s = 10e-9;
+  SpadIrf irf;  ///< measured response; when present, pulse and jitter (all 0) are not used
+  /// Array non-uniformity, a fixed pattern drawn from fpn_seed alone (not the
+  /// noise seed: the same device under every noise seed), per pixel (y, x):
+  /// dead with probability dead_pixel_fraction (PDE and DCR 0), else hot with
+  /// probability hot_pixel_fraction (DCR = hot_pixel_rate_per_s), else DCR
+  /// log-normal with median dark_count_rate_per_s and ln-sigma
+  /// dark_count_log_sigma; PDE = pde (1 + pde_spread z) clipped to [0, 1]
+  /// (SpadPixelMaps.h).
+  int64_t fpn_seed = 0;
+  double pde_spread = 0.0;
+  double dark_count_log_sigma = 0.0;
+  double hot_pixel_fraction = 0.0;
+  double hot_pixel_rate_per_s = 0.0;
+  double dead_pixel_fraction = 0.0;
   std::vector<std::array<int32_t, 2>> plot_pixels;  ///< (x, y) pixels to plot; empty = centre
   std::string colormap = "turbo";
 };
 
 /// Expected detections per cycle in each TDC bin of pixel (y, x) if nothing
 /// were lost to pile-up or dead time: PDE * (signal * pulse * jitter + ambient)
-/// + dark. `axis` is the TDC axis (resolveBins of params.bins).
+/// + dark (signal * IRF with an IRF; the pixel's PDE and DCR of its fixed
+/// pattern). `axis` is the TDC axis (resolveBins of params.bins).
 void spadFluxPerCycle(const TransientVolume& volume, const SpadParams& params, const TimeAxis& axis,
                       int32_t y, int32_t x, std::vector<double>& flux);
 
@@ -73,7 +114,9 @@ std::vector<double> coatesEstimate(const std::vector<double>& counts, int64_t cy
 /// Outputs: "spad_counts" Array (H, W, bins); "spad_depth_peak" and
 /// "spad_depth_coates" Images (H, W) in m (plus ColorMappedImages);
 /// "spad_intensity" Image (H, W) total counts (plus ColorMappedImage);
-/// "spad_histograms" HistogramPlot (pixels, bins).
+/// "spad_histograms" HistogramPlot (pixels, bins); with a fixed pattern
+/// (spadHasPixelMaps), "spad_pde_map" and "spad_dcr_map" Images (H, W), with
+/// the attributes hot_pixels and dead_pixels.
 std::vector<SensorOutput> runSpad(const TransientVolume& volume, const SpadParams& params,
                                   uint64_t seed);
 

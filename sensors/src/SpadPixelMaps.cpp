@@ -1,0 +1,48 @@
+#include "tofsim/sensors/SpadPixelMaps.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "tofsim/sensors/Random.h"
+
+namespace tofsim::sensors {
+
+namespace {
+constexpr uint32_t kFixedPatternTag = 0x4650;  // "FP"
+}  // namespace
+
+bool spadHasPixelMaps(const SpadParams& p) {
+  return p.pde_spread > 0.0 || p.dark_count_log_sigma > 0.0 || p.hot_pixel_fraction > 0.0 ||
+         p.dead_pixel_fraction > 0.0;
+}
+
+SpadPixel spadPixel(const SpadParams& p, std::size_t px) {
+  if (!spadHasPixelMaps(p)) return {p.pde, p.dark_count_rate_per_s, SpadPixelClass::Normal};
+  Rng rng(static_cast<uint64_t>(p.fpn_seed), pixelStream(kFixedPatternTag, px));
+  const double uDead = rng.uniform(), uHot = rng.uniform();
+  const double zPde = rng.normal(), zDcr = rng.normal();
+  if (uDead < p.dead_pixel_fraction) return {0.0, 0.0, SpadPixelClass::Dead};
+  const double pde = std::clamp(p.pde * (1.0 + p.pde_spread * zPde), 0.0, 1.0);
+  if (uHot < p.hot_pixel_fraction) return {pde, p.hot_pixel_rate_per_s, SpadPixelClass::Hot};
+  return {pde, p.dark_count_rate_per_s * std::exp(p.dark_count_log_sigma * zDcr),
+          SpadPixelClass::Normal};
+}
+
+SpadPixelMaps spadPixelMaps(const SpadParams& p, int32_t height, int32_t width) {
+  const auto n = static_cast<std::size_t>(height) * static_cast<std::size_t>(width);
+  SpadPixelMaps maps;
+  maps.pde.resize(n);
+  maps.dcr_per_s.resize(n);
+  maps.kind.resize(n);
+  for (std::size_t px = 0; px < n; ++px) {
+    const SpadPixel pixel = spadPixel(p, px);
+    maps.pde[px] = pixel.pde;
+    maps.dcr_per_s[px] = pixel.dcr_per_s;
+    maps.kind[px] = pixel.kind;
+    maps.hot += pixel.kind == SpadPixelClass::Hot;
+    maps.dead += pixel.kind == SpadPixelClass::Dead;
+  }
+  return maps;
+}
+
+}  // namespace tofsim::sensors
