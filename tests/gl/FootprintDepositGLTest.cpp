@@ -55,20 +55,22 @@ void main() {
 }
 )";
 
-// footprint_deposit.glsl and the kernel it includes, pasted (a test-hook
-// source is not assembled), with the contract's bindings.
+// footprint_deposit.glsl and what it includes (the kernel, the bin deposit),
+// pasted (a test-hook source is not assembled), with the contract's bindings.
 std::string gatherSource() {
   std::string deposit = gl::embeddedShaderSource("footprint_deposit.glsl");
-  const std::string include = "#include \"footprint_kernel.glsl\"";
-  deposit.replace(deposit.find(include), include.size(), "");
+  for (const std::string include :
+       {"#include \"footprint_kernel.glsl\"", "#include \"bin_deposit.glsl\""}) {
+    deposit.replace(deposit.find(include), include.size(), "");
+  }
   std::string source = "#version 450 core\n";
   for (const auto& [name, value] : gpu::shaderDefines()) {
     source += "#define " + name + " " + value + "\n";
   }
   source += "#define CONTRIBUTIONS " + std::to_string(kPerPixel) + "\n";
-  source += "#define FOOTPRINT_HISTOGRAM volume\n";
-  return source + kGatherBuffers + gl::embeddedShaderSource("footprint_kernel.glsl") + deposit +
-         kGather;
+  source += "#define GATHER_HISTOGRAM volume\n";
+  return source + kGatherBuffers + gl::embeddedShaderSource("footprint_kernel.glsl") +
+         gl::embeddedShaderSource("bin_deposit.glsl") + deposit + kGather;
 }
 
 TEST(FootprintDepositGLTest, GatherAndIntegrationGiveTheCpuVolume) {
