@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "ConfigNode.h"
+#include "support/ShortNumber.h"
 #include "support/TempDir.h"
 #include "tofsim/config/SensorConfig.h"
 #include "tofsim/io/Npy.h"
@@ -86,11 +87,7 @@ double maxAbsDifference(const std::vector<double>& a, const std::vector<double>&
   return d;
 }
 
-std::string sci(double v) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.3g", v);
-  return text;
-}
+using tofsim::test::sci;
 
 TEST_F(SpadIrfConfigTest, GaussianIrfFilesReproduceTheJitterModel) {
   SpadParams jitter;

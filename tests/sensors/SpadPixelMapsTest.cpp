@@ -10,17 +10,14 @@
 #include <vector>
 
 #include "TestVolumes.h"
+#include "support/ShortNumber.h"
 #include "tofsim/sensors/Spad.h"
 #include "tofsim/sensors/SpadPixelMaps.h"
 
 namespace tofsim::sensors {
 namespace {
 
-std::string sci(double v) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.3g", v);
-  return text;
-}
+using tofsim::test::sci;
 
 using test::array;
 using test::makeVolume;
