@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 
+#include "tofsim/capture/RelayWall.h"
 #include "tofsim/physics/FootprintKernel.h"
 #include "tofsim/scene/Scene.h"
 #include "tofsim/util/Error.h"
@@ -86,52 +87,26 @@ FootprintSteps PixelSteps::at(const glm::vec3& x, const glm::vec3& n) const {
 PointSetImager gridOnPlanarMesh(const scene::Scene& scene, const std::string& meshName,
                                 int32_t width, int32_t height, const glm::vec3& origin_world,
                                 bool lastLegCounts) {
-  const auto mesh = std::find_if(scene.meshes.begin(), scene.meshes.end(),
-                                 [&](const scene::Mesh& m) { return m.name == meshName; });
-  if (mesh == scene.meshes.end()) {
-    throw InputError("no mesh named '" + meshName + "' in the scene for the point grid");
-  }
   if (width < 1 || height < 1) {
     throw InputError("the point grid on '" + meshName + "' needs at least 1 x 1 points (got " +
                      std::to_string(width) + " x " + std::to_string(height) + ")");
   }
-  if (mesh->indices.size() < 3) throw InputError("mesh '" + meshName + "' has no triangle");
-  const glm::vec3 a = mesh->positions_world[mesh->indices[0]];
-  const glm::vec3 b = mesh->positions_world[mesh->indices[1]];
-  const glm::vec3 c = mesh->positions_world[mesh->indices[2]];
-  const glm::vec3 u = glm::normalize(b - a);
-  const glm::vec3 normal = glm::normalize(glm::cross(b - a, c - a));
-  const glm::vec3 v = glm::cross(normal, u);
-  float uMin = std::numeric_limits<float>::max(), vMin = uMin;
-  float uMax = -uMin, vMax = -uMin, offPlane = 0.0f, extent = 0.0f;
-  for (const glm::vec3& p : mesh->positions_world) {
-    const glm::vec3 d = p - a;
-    uMin = std::min(uMin, glm::dot(d, u));
-    uMax = std::max(uMax, glm::dot(d, u));
-    vMin = std::min(vMin, glm::dot(d, v));
-    vMax = std::max(vMax, glm::dot(d, v));
-    offPlane = std::max(offPlane, std::fabs(glm::dot(d, normal)));
-    extent = std::max(extent, glm::length(d));
-  }
-  if (offPlane > 1e-4f * std::max(extent, 1e-6f)) {
-    throw InputError("mesh '" + meshName + "' is not planar (a vertex lies " +
-                     std::to_string(offPlane) + " m off its first triangle's plane)");
-  }
+  // The relay wall's plane fit and frame: one check that the node is planar.
+  const RelayWall wall = relayWallOf(scene, meshName);
   PointSetImager grid;
   grid.width = width;
   grid.height = height;
   grid.origin_world = origin_world;
   grid.last_leg_counts = lastLegCounts;
-  const float du = (uMax - uMin) / static_cast<float>(width);
-  const float dv = (vMax - vMin) / static_cast<float>(height);
-  grid.step_u_world = u * du;
-  grid.step_v_world = -v * dv;  // rows run down the image: towards smaller v
+  grid.step_u_world = wall.x_axis * (wall.width_m / static_cast<float>(width));
+  // Rows run down the image: towards the wall's -y.
+  grid.step_v_world = -wall.y_axis * (wall.height_m / static_cast<float>(height));
   grid.points_world.reserve(static_cast<std::size_t>(width) * height);
   for (int32_t j = 0; j < height; ++j) {
     for (int32_t i = 0; i < width; ++i) {
-      const float pu = uMin + (static_cast<float>(i) + 0.5f) * du;
-      const float pv = vMax - (static_cast<float>(j) + 0.5f) * dv;
-      grid.points_world.push_back(a + pu * u + pv * v);
+      grid.points_world.push_back(
+          wall.at((static_cast<float>(i) + 0.5f) / static_cast<float>(width),
+                  1.0f - (static_cast<float>(j) + 0.5f) / static_cast<float>(height)));
     }
   }
   return grid;

@@ -102,10 +102,11 @@ class PixelSteps {
 };
 
 /// A width x height grid of points at the centres of the cells of the
-/// rectangle the mesh `meshName` spans in its plane, seen from origin_world:
-/// a relay wall's scan points. u runs along the mesh's first edge, v along
-/// the in-plane normal to it, row 0 at the largest v. Throws InputError
-/// naming the mesh when it does not exist or is not planar.
+/// rectangle the node or mesh `meshName` spans in its plane, seen from
+/// origin_world: a relay wall's scan points. Its frame is the relay wall's
+/// (capture::relayWallOf): columns along the wall's x axis, row 0 at its top
+/// (largest y). Throws InputError naming the mesh when it does not exist, is
+/// not planar or has no area.
 PointSetImager gridOnPlanarMesh(const scene::Scene& scene, const std::string& meshName,
                                 int32_t width, int32_t height, const glm::vec3& origin_world,
                                 bool lastLegCounts = true);
