@@ -275,6 +275,39 @@ CpuBackend::DirectConstants CpuBackend::directConstants() const {
   return c;
 }
 
+// Called per sample: always inlined, so that the split leaves the hot
+// loop as it was (no call per sample).
+[[gnu::always_inline]] inline bool CpuBackend::directLight(const DirectConstants& c,
+                                                           std::size_t sample,
+                                                           DirectLight& out) const {
+  const std::size_t p = firstSample_ + sample;
+  const PixelSurface& surface = segmentSurfaces_[sample];
+  const glm::vec3 x = surface.x, n = surface.n;
+  // direct_gather.comp's steps: how the light arrives (shared), whether
+  // it is visible (here a ray, there the shadow map), what x reflects.
+  const physics::LightArrival arrival = physics::lightArrival(
+      x, n, c.light_world, c.profile.kind, c.profile.axis, c.profile.cosOuter, c.profile.cosInner);
+  const float profile = arrival.profile, cosX = arrival.cosX, dLight = arrival.dLight;
+  const glm::vec3 wLight = arrival.wLight;
+  if (profile <= 0.0f) return false;
+  const glm::vec3 toLight = c.light_world - x;
+  const glm::vec3 g = surfaces_->geometric[p];
+  const glm::vec3 offset = (glm::dot(g, toLight) < 0.0f ? -g : g) * scene_->epsilon_m();
+  if (scene_->occluded(x + offset, c.light_world)) return false;
+  const glm::vec3 albedo(surfaces_->albedo[p]);
+  if (c.gltf) {
+    const glm::vec2 mr = surfaces_->metallicRoughness[p];
+    const glm::vec3 wCamera = glm::normalize(c.viewpoint - x);
+    out.radiance = physics::gltfDirect(n, wLight, wCamera, albedo, mr.x, mr.y, c.intensity_W_per_sr,
+                                       profile, cosX, dLight);
+  } else {
+    out.radiance = physics::lambertianDirect(albedo, c.intensity_W_per_sr, profile, cosX, dLight);
+  }
+  const float dCamera = dropLastLeg_ ? 0.0f : glm::length(x - c.viewpoint);
+  out.path_m = physics::directPathLength(c.eta, dLight, dCamera);
+  return true;
+}
+
 void CpuBackend::gatherDirectTile(std::size_t tile) {
   const DirectConstants c = directConstants();
   const std::size_t end = std::min(pixelCount_, (tile + 1) * kTilePixels);
@@ -312,35 +345,6 @@ void CpuBackend::gatherDirectPixel(const DirectConstants& c, std::size_t i) {
   }
   // The footprint buffer is the indirect gathers' next.
   if (c.footprint) integratePixel(i, histogram);
-}
-
-bool CpuBackend::directLight(const DirectConstants& c, std::size_t sample, DirectLight& out) const {
-  const std::size_t p = firstSample_ + sample;
-  const PixelSurface& surface = segmentSurfaces_[sample];
-  const glm::vec3 x = surface.x, n = surface.n;
-  // direct_gather.comp's steps: how the light arrives (shared), whether
-  // it is visible (here a ray, there the shadow map), what x reflects.
-  const physics::LightArrival arrival = physics::lightArrival(
-      x, n, c.light_world, c.profile.kind, c.profile.axis, c.profile.cosOuter, c.profile.cosInner);
-  const float profile = arrival.profile, cosX = arrival.cosX, dLight = arrival.dLight;
-  const glm::vec3 wLight = arrival.wLight;
-  if (profile <= 0.0f) return false;
-  const glm::vec3 toLight = c.light_world - x;
-  const glm::vec3 g = surfaces_->geometric[p];
-  const glm::vec3 offset = (glm::dot(g, toLight) < 0.0f ? -g : g) * scene_->epsilon_m();
-  if (scene_->occluded(x + offset, c.light_world)) return false;
-  const glm::vec3 albedo(surfaces_->albedo[p]);
-  if (c.gltf) {
-    const glm::vec2 mr = surfaces_->metallicRoughness[p];
-    const glm::vec3 wCamera = glm::normalize(c.viewpoint - x);
-    out.radiance = physics::gltfDirect(n, wLight, wCamera, albedo, mr.x, mr.y, c.intensity_W_per_sr,
-                                       profile, cosX, dLight);
-  } else {
-    out.radiance = physics::lambertianDirect(albedo, c.intensity_W_per_sr, profile, cosX, dLight);
-  }
-  const float dCamera = dropLastLeg_ ? 0.0f : glm::length(x - c.viewpoint);
-  out.path_m = physics::directPathLength(c.eta, dLight, dCamera);
-  return true;
 }
 
 void CpuBackend::gatherIndirect(std::size_t firstVpl, std::size_t count) {
@@ -391,6 +395,31 @@ void CpuBackend::gatherTile(std::size_t tile, std::size_t firstVpl, std::size_t 
   }
 }
 
+// Called per contribution: always inlined, as directLight.
+[[gnu::always_inline]] inline void CpuBackend::depositVplFootprint(const VplTerms& t, std::size_t k,
+                                                                   const glm::vec3& energy,
+                                                                   std::size_t i, float* histogram,
+                                                                   int bins,
+                                                                   physics::OffAxisSums& lost) {
+  // physics::depositNarrow / depositWide, from the block's precomputed terms.
+  const int32_t narrowBins = t.count[k];
+  const int32_t vectorBins = std::min(narrowBins, kVectorNarrowBins);
+  for (int32_t j = 0; j < vectorBins; ++j) {
+    physics::depositInBin(histogram, bins, t.first[k] + j, t.mass[j][k], energy, lost);
+  }
+  if (narrowBins > kVectorNarrowBins) {
+    const glm::vec3 kernel(t.centre[k], t.wide[k], t.narrow[k]);
+    for (int32_t j = kVectorNarrowBins; j < narrowBins; ++j) {
+      physics::depositInBin(histogram, bins, t.first[k] + j,
+                            physics::footprintNarrowMass(kernel, j), energy, lost);
+    }
+  }
+  if (narrowBins == 0) {
+    physics::depositWide(footprintOf(i), bins, glm::vec3(t.centre[k], t.wide[k], t.narrow[k]),
+                         energy, lost);
+  }
+}
+
 void CpuBackend::gatherPixelBlock(const IndirectConstants& c, std::size_t first, std::size_t n,
                                   std::size_t i, VplTerms* terms) {
   // Locals, not reads through `c`, in the loop: the histogram's float stores
@@ -431,28 +460,6 @@ void CpuBackend::gatherPixelBlock(const IndirectConstants& c, std::size_t first,
       }
       physics::depositInBin(histogram, bins, bin, 1.0f, energy, lost);
     }
-  }
-}
-
-void CpuBackend::depositVplFootprint(const VplTerms& t, std::size_t k, const glm::vec3& energy,
-                                     std::size_t i, float* histogram, int bins,
-                                     physics::OffAxisSums& lost) {
-  // physics::depositNarrow / depositWide, from the block's precomputed terms.
-  const int32_t narrowBins = t.count[k];
-  const int32_t vectorBins = std::min(narrowBins, kVectorNarrowBins);
-  for (int32_t j = 0; j < vectorBins; ++j) {
-    physics::depositInBin(histogram, bins, t.first[k] + j, t.mass[j][k], energy, lost);
-  }
-  if (narrowBins > kVectorNarrowBins) {
-    const glm::vec3 kernel(t.centre[k], t.wide[k], t.narrow[k]);
-    for (int32_t j = kVectorNarrowBins; j < narrowBins; ++j) {
-      physics::depositInBin(histogram, bins, t.first[k] + j,
-                            physics::footprintNarrowMass(kernel, j), energy, lost);
-    }
-  }
-  if (narrowBins == 0) {
-    physics::depositWide(footprintOf(i), bins, glm::vec3(t.centre[k], t.wide[k], t.narrow[k]),
-                         energy, lost);
   }
 }
 
