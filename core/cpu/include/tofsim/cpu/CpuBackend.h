@@ -89,8 +89,9 @@ class CpuBackend : public ir::IrBackend {
   /// Segment pixel i's direct light: each lit sample's, weighted, into its bins.
   void gatherDirectPixel(const DirectConstants& c, std::size_t i);
   /// Segment sample `sample`'s unweighted direct light; false where the light
-  /// does not reach it (outside its cone or shadowed).
-  bool directLight(const DirectConstants& c, std::size_t sample, DirectLight& out) const;
+  /// does not reach it (outside its cone or shadowed). Inline (and always
+  /// inlined, in CpuBackend.cpp): it runs per sample.
+  inline bool directLight(const DirectConstants& c, std::size_t sample, DirectLight& out) const;
   /// VPLs [firstVpl, + count) into indirect_ for the segment's pixels in `tile`.
   void gatherTile(std::size_t tile, std::size_t firstVpl, std::size_t count);
   IndirectConstants indirectConstants() const;
@@ -99,9 +100,10 @@ class CpuBackend : public ir::IrBackend {
   void gatherPixelBlock(const IndirectConstants& c, std::size_t first, std::size_t n, std::size_t i,
                         VplTerms* terms);
   /// VPL k of the block `t` through its footprint kernel into pixel i's
-  /// histogram (narrow) or footprint buffer (wide).
-  void depositVplFootprint(const VplTerms& t, std::size_t k, const glm::vec3& energy, std::size_t i,
-                           float* histogram, int bins, physics::OffAxisSums& lost);
+  /// histogram (narrow) or footprint buffer (wide). Inline, as directLight.
+  inline void depositVplFootprint(const VplTerms& t, std::size_t k, const glm::vec3& energy,
+                                  std::size_t i, float* histogram, int bins,
+                                  physics::OffAxisSums& lost);
   /// Adds pixel i's footprint buffer, if written, to `histogram` and clears it.
   void integratePixel(std::size_t i, float* histogram);
   /// Pixel i's footprint buffer, zeroed first if it held nothing.
