@@ -12,20 +12,11 @@
 namespace tofsim::pipeline {
 
 namespace {
-nlohmann::json vec(const glm::vec3& v) { return {v.x, v.y, v.z}; }
-}  // namespace
 
-std::string transientMetadataJson(const config::RunConfig& config, const capture::RenderJob& job,
-                                  const capture::RenderResult& result, const std::string& backend,
-                                  const std::string& device) {
-  const TimeAxis& axis = job.settings.time;
-  const capture::Camera& cam = job.camera();
-  const capture::Light& light = job.light;
-  nlohmann::json j;
-  j["format"] = "tofsim transient volume";
-  j["tofsim_version"] = kVersion;
-  j["files"] = nlohmann::json::object();
-  for (const auto& [role, file] : metadataFiles()) j["files"][role] = file;
+nlohmann::json vec(const glm::vec3& v) { return {v.x, v.y, v.z}; }
+
+/// How transient.npy is laid out and what its values are.
+void addVolumeLayout(nlohmann::json& j, const capture::Camera& cam, const TimeAxis& axis) {
   j["shape"] = {cam.height, cam.width, axis.bins, 3};
   j["axes"] = {"y", "x", "t", "c"};
   j["axes_doc"] =
@@ -37,26 +28,53 @@ std::string transientMetadataJson(const config::RunConfig& config, const capture
       "radiance arriving within the bin for an impulse of the light at t = 0 (the scene's "
       "impulse response); summing over t gives the steady-state radiance under a continuous "
       "light of the same intensity";
+}
+
+/// The time axis, with where its zero is and which path its times measure.
+nlohmann::ordered_json timeJson(const TimeAxis& axis) {
   nlohmann::ordered_json time = timeAxisJson(axis);
   time["time_origin"] =
       axis.camera_unwarp
           ? "emission at the light; the surface -> camera delay is removed (time at the surface)"
           : "emission at the light; arrival at the camera";
-  j["time"] = time;
-  j["camera"] = {{"position_m", vec(cam.position_world)},
-                 {"look_at_m", vec(cam.look_at_world)},
-                 {"up", vec(cam.up_world)},
-                 {"fov_y_deg", cam.fov_y_deg},
-                 {"width", cam.width},
-                 {"height", cam.height},
-                 {"model", "pinhole, one ray through each pixel centre"}};
-  j["light"] = {{"type", light.type == capture::Light::Type::Spot ? "spot" : "point"},
-                {"position_m", vec(light.position_world)},
-                {"direction", vec(light.direction_world)},
-                {"cone_half_angle_deg", light.cone_half_angle_deg},
-                {"cone_falloff_deg", light.cone_falloff_deg},
-                {"intensity_W_per_sr", vec(light.intensity_W_per_sr)},
-                {"attached_to_camera", config.light.attach_to_camera}};
+  return time;
+}
+
+nlohmann::json cameraJson(const capture::Camera& cam) {
+  return {{"position_m", vec(cam.position_world)},
+          {"look_at_m", vec(cam.look_at_world)},
+          {"up", vec(cam.up_world)},
+          {"fov_y_deg", cam.fov_y_deg},
+          {"width", cam.width},
+          {"height", cam.height},
+          {"model", "pinhole, one ray through each pixel centre"}};
+}
+
+nlohmann::json lightJson(const capture::Light& light, bool attachedToCamera) {
+  return {{"type", light.type == capture::Light::Type::Spot ? "spot" : "point"},
+          {"position_m", vec(light.position_world)},
+          {"direction", vec(light.direction_world)},
+          {"cone_half_angle_deg", light.cone_half_angle_deg},
+          {"cone_falloff_deg", light.cone_falloff_deg},
+          {"intensity_W_per_sr", vec(light.intensity_W_per_sr)},
+          {"attached_to_camera", attachedToCamera}};
+}
+
+}  // namespace
+
+std::string transientMetadataJson(const config::RunConfig& config, const capture::RenderJob& job,
+                                  const capture::RenderResult& result, const std::string& backend,
+                                  const std::string& device) {
+  const TimeAxis& axis = job.settings.time;
+  nlohmann::json j;
+  j["format"] = "tofsim transient volume";
+  j["tofsim_version"] = kVersion;
+  j["files"] = nlohmann::json::object();
+  for (const auto& [role, file] : metadataFiles()) j["files"][role] = file;
+  addVolumeLayout(j, job.camera(), axis);
+  j["time"] = timeJson(axis);
+  j["camera"] = cameraJson(job.camera());
+  j["light"] = lightJson(job.light, config.light.attach_to_camera);
   j["renderer"] = config.renderer == config::RendererKind::Reference ? "reference" : "ir";
   j["backend"] = backend;
   j["device"] = device;

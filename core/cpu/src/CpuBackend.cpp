@@ -238,75 +238,113 @@ void CpuBackend::gatherDirect() {
   parallelFor(tiles, threads_, [&](std::size_t tile) { gatherDirectTile(tile); });
 }
 
-void CpuBackend::gatherDirectTile(std::size_t tile) {
+/// What the light, the time axis and the job fix for every direct sample of
+/// a tile, read once per tile.
+struct CpuBackend::DirectConstants {
+  capture::Light::ProfileTerms profile;  ///< the light's (Light::profileTerms)
+  glm::vec3 light_world{0.0f};           ///< the light's position, m
+  glm::vec3 intensity_W_per_sr{0.0f};
+  glm::vec3 viewpoint{0.0f};  ///< where the last leg ends (capture::viewpoint)
+  float start_m = 0.0f;       ///< of the time axis, as optical path
+  float width_m = 1.0f;       ///< of a bin, as optical path
+  float eta = 1.0f;           ///< index of refraction
+  int bins = 0;
+  bool gltf = false;       ///< render.materials: gltf
+  bool footprint = false;  ///< render.pixel_footprint
+};
+
+/// One sample's direct light, before its share of the pixel.
+struct CpuBackend::DirectLight {
+  glm::vec3 radiance{0.0f};
+  float path_m = 0.0f;  ///< optical path light -> x (-> viewpoint)
+};
+
+CpuBackend::DirectConstants CpuBackend::directConstants() const {
   const capture::RenderSettings& s = job_.settings;
-  const capture::Light& light = job_.light;
-  const capture::Light::ProfileTerms profileTerms = light.profileTerms();
-  const bool gltf = s.materials == capture::MaterialModel::Gltf;
-  const int bins = s.time.bins;
-  const auto start_m = static_cast<float>(s.time.start_m());
-  const auto width_m = static_cast<float>(s.time.bin_width_m());
-  const auto eta = static_cast<float>(s.time.index_of_refraction);
-  const glm::vec3 viewpoint = capture::viewpoint(job_.imager);
-  const std::size_t end = std::min(pixelCount_, (tile + 1) * kTilePixels);
-  for (std::size_t i = tile * kTilePixels; i < end; ++i) {
-    float* histogram = &direct_[i * bins * kChannels];
-    physics::OffAxisSums& lost = outside_[i];
-    const std::size_t perPixel = segmentFirstSample_[i + 1] - segmentFirstSample_[i];
-    const float weight = 1.0f / static_cast<float>(perPixel);
-    for (std::size_t sample = segmentFirstSample_[i]; sample < segmentFirstSample_[i + 1];
-         ++sample) {
-      if (!segmentLit_[sample]) continue;
-      const std::size_t p = firstSample_ + sample;
-      const PixelSurface& surface = segmentSurfaces_[sample];
-      const glm::vec3 x = surface.x, n = surface.n;
-      // direct_gather.comp's steps: how the light arrives (shared), whether
-      // it is visible (here a ray, there the shadow map), what x reflects.
-      const physics::LightArrival arrival =
-          physics::lightArrival(x, n, light.position_world, profileTerms.kind, profileTerms.axis,
-                                profileTerms.cosOuter, profileTerms.cosInner);
-      const float profile = arrival.profile, cosX = arrival.cosX, dLight = arrival.dLight;
-      const glm::vec3 wLight = arrival.wLight;
-      if (profile <= 0.0f) continue;
-      const glm::vec3 toLight = light.position_world - x;
-      const glm::vec3 g = surfaces_->geometric[p];
-      const glm::vec3 offset = (glm::dot(g, toLight) < 0.0f ? -g : g) * scene_->epsilon_m();
-      if (scene_->occluded(x + offset, light.position_world)) continue;
-      const glm::vec3 albedo(surfaces_->albedo[p]);
-      glm::vec3 radiance;
-      if (gltf) {
-        const glm::vec2 mr = surfaces_->metallicRoughness[p];
-        const glm::vec3 wCamera = glm::normalize(viewpoint - x);
-        radiance = physics::gltfDirect(n, wLight, wCamera, albedo, mr.x, mr.y,
-                                       light.intensity_W_per_sr, profile, cosX, dLight);
-      } else {
-        radiance =
-            physics::lambertianDirect(albedo, light.intensity_W_per_sr, profile, cosX, dLight);
-      }
-      const float dCamera = dropLastLeg_ ? 0.0f : glm::length(x - viewpoint);
-      const float path_m = physics::directPathLength(eta, dLight, dCamera);
-      if (s.pixel_footprint) {
-        const glm::vec2 steps = physics::pathStepsAcrossPixel(
-            physics::opticalPathGradient(x, light.position_world, viewpoint, eta, dropLastLeg_),
-            surface.dxdu, surface.dxdv);
-        const glm::vec3 kernel = physics::footprintKernel(path_m, steps, start_m, width_m);
-        const glm::vec3 value = radiance * weight;
-        if (physics::footprintIsNarrow(kernel)) {
-          physics::depositNarrow(histogram, bins, kernel, value, lost);
-        } else {
-          physics::depositWide(footprintOf(i), bins, kernel, value, lost);
-        }
-        continue;
-      }
-      // Point sampling (render.pixel_footprint: false): the bytes of before
-      // the footprint existed when there is one sample.
-      const glm::vec3 value = perPixel == 1 ? radiance : radiance * weight;
-      physics::depositInBin(histogram, bins, physics::binOfPath(path_m, start_m, width_m), 1.0f,
-                            value, lost);
-    }
-    // The footprint buffer is the indirect gathers' next.
-    if (s.pixel_footprint) integratePixel(i, histogram);
+  DirectConstants c;
+  c.profile = job_.light.profileTerms();
+  c.light_world = job_.light.position_world;
+  c.intensity_W_per_sr = job_.light.intensity_W_per_sr;
+  c.viewpoint = capture::viewpoint(job_.imager);
+  c.start_m = static_cast<float>(s.time.start_m());
+  c.width_m = static_cast<float>(s.time.bin_width_m());
+  c.eta = static_cast<float>(s.time.index_of_refraction);
+  c.bins = s.time.bins;
+  c.gltf = s.materials == capture::MaterialModel::Gltf;
+  c.footprint = s.pixel_footprint;
+  return c;
+}
+
+// Called per sample: always inlined, so that the split leaves the hot
+// loop as it was (no call per sample).
+[[gnu::always_inline]] inline bool CpuBackend::directLight(const DirectConstants& c,
+                                                           std::size_t sample,
+                                                           DirectLight& out) const {
+  const std::size_t p = firstSample_ + sample;
+  const PixelSurface& surface = segmentSurfaces_[sample];
+  const glm::vec3 x = surface.x, n = surface.n;
+  // direct_gather.comp's steps: how the light arrives (shared), whether
+  // it is visible (here a ray, there the shadow map), what x reflects.
+  const physics::LightArrival arrival = physics::lightArrival(
+      x, n, c.light_world, c.profile.kind, c.profile.axis, c.profile.cosOuter, c.profile.cosInner);
+  const float profile = arrival.profile, cosX = arrival.cosX, dLight = arrival.dLight;
+  const glm::vec3 wLight = arrival.wLight;
+  if (profile <= 0.0f) return false;
+  const glm::vec3 toLight = c.light_world - x;
+  const glm::vec3 g = surfaces_->geometric[p];
+  const glm::vec3 offset = (glm::dot(g, toLight) < 0.0f ? -g : g) * scene_->epsilon_m();
+  if (scene_->occluded(x + offset, c.light_world)) return false;
+  const glm::vec3 albedo(surfaces_->albedo[p]);
+  if (c.gltf) {
+    const glm::vec2 mr = surfaces_->metallicRoughness[p];
+    const glm::vec3 wCamera = glm::normalize(c.viewpoint - x);
+    out.radiance = physics::gltfDirect(n, wLight, wCamera, albedo, mr.x, mr.y, c.intensity_W_per_sr,
+                                       profile, cosX, dLight);
+  } else {
+    out.radiance = physics::lambertianDirect(albedo, c.intensity_W_per_sr, profile, cosX, dLight);
   }
+  const float dCamera = dropLastLeg_ ? 0.0f : glm::length(x - c.viewpoint);
+  out.path_m = physics::directPathLength(c.eta, dLight, dCamera);
+  return true;
+}
+
+void CpuBackend::gatherDirectTile(std::size_t tile) {
+  const DirectConstants c = directConstants();
+  const std::size_t end = std::min(pixelCount_, (tile + 1) * kTilePixels);
+  for (std::size_t i = tile * kTilePixels; i < end; ++i) gatherDirectPixel(c, i);
+}
+
+void CpuBackend::gatherDirectPixel(const DirectConstants& c, std::size_t i) {
+  float* histogram = &direct_[i * c.bins * kChannels];
+  physics::OffAxisSums& lost = outside_[i];
+  const std::size_t perPixel = segmentFirstSample_[i + 1] - segmentFirstSample_[i];
+  const float weight = 1.0f / static_cast<float>(perPixel);
+  for (std::size_t sample = segmentFirstSample_[i]; sample < segmentFirstSample_[i + 1]; ++sample) {
+    if (!segmentLit_[sample]) continue;
+    DirectLight light;
+    if (!directLight(c, sample, light)) continue;
+    if (c.footprint) {
+      const PixelSurface& surface = segmentSurfaces_[sample];
+      const glm::vec2 steps = physics::pathStepsAcrossPixel(
+          physics::opticalPathGradient(surface.x, c.light_world, c.viewpoint, c.eta, dropLastLeg_),
+          surface.dxdu, surface.dxdv);
+      const glm::vec3 kernel = physics::footprintKernel(light.path_m, steps, c.start_m, c.width_m);
+      const glm::vec3 value = light.radiance * weight;
+      if (physics::footprintIsNarrow(kernel)) {
+        physics::depositNarrow(histogram, c.bins, kernel, value, lost);
+      } else {
+        physics::depositWide(footprintOf(i), c.bins, kernel, value, lost);
+      }
+      continue;
+    }
+    // Point sampling (render.pixel_footprint: false): the bytes of before
+    // the footprint existed when there is one sample.
+    const glm::vec3 value = perPixel == 1 ? light.radiance : light.radiance * weight;
+    physics::depositInBin(histogram, c.bins, physics::binOfPath(light.path_m, c.start_m, c.width_m),
+                          1.0f, value, lost);
+  }
+  // The footprint buffer is the indirect gathers' next.
+  if (c.footprint) integratePixel(i, histogram);
 }
 
 void CpuBackend::gatherIndirect(std::size_t firstVpl, std::size_t count) {
@@ -315,10 +353,17 @@ void CpuBackend::gatherIndirect(std::size_t firstVpl, std::size_t count) {
   parallelFor(tiles, threads_, [&](std::size_t tile) { gatherTile(tile, firstVpl, count); });
 }
 
-void CpuBackend::gatherTile(std::size_t tile, std::size_t firstVpl, std::size_t count) {
+/// What the job fixes for every indirect contribution of a tile.
+struct CpuBackend::IndirectConstants {
+  GatherConstants kernel;  ///< vplTerms'
+  bool exact = false;      ///< render.indirect.visibility: exact, an occlusion ray each
+  float eps = 0.0f;        ///< the exact visibility rays' end offsets, m
+};
+
+CpuBackend::IndirectConstants CpuBackend::indirectConstants() const {
   const capture::RenderSettings& s = job_.settings;
-  const int bins = s.time.bins;
-  GatherConstants c;
+  IndirectConstants ic;
+  GatherConstants& c = ic.kernel;
   c.start_m = static_cast<float>(s.time.start_m());
   c.binWidth_m = static_cast<float>(s.time.bin_width_m());
   c.indexOfRefraction = static_cast<float>(s.time.index_of_refraction);
@@ -329,10 +374,14 @@ void CpuBackend::gatherTile(std::size_t tile, std::size_t firstVpl, std::size_t 
   c.gltf = s.materials == capture::MaterialModel::Gltf;
   c.vplBrdfClamp = static_cast<float>(s.indirect.vpl_brdf_clamp_per_sr);
   c.camera = capture::viewpoint(job_.imager);
-  c.bins = bins;
-  const bool exact = indirectVisibility_ && s.indirect.visibility == capture::Visibility::Exact;
-  const float eps = 1e-4f * sceneScale_m_;  // as indirect_gather.comp's exact visibility
-  const VplArrays& v = *vpls_;
+  c.bins = s.time.bins;
+  ic.exact = indirectVisibility_ && s.indirect.visibility == capture::Visibility::Exact;
+  ic.eps = 1e-4f * sceneScale_m_;  // as indirect_gather.comp's exact visibility
+  return ic;
+}
+
+void CpuBackend::gatherTile(std::size_t tile, std::size_t firstVpl, std::size_t count) {
+  const IndirectConstants c = indirectConstants();
   // One block of terms per sample: contributions are added VPL by VPL and,
   // for each VPL, sample by sample, so the order of the additions (and the
   // bytes) does not depend on where the blocks and batches start.
@@ -341,55 +390,75 @@ void CpuBackend::gatherTile(std::size_t tile, std::size_t firstVpl, std::size_t 
   for (std::size_t first = firstVpl; first < firstVpl + count; first += kVplBlock) {
     const std::size_t n = std::min(kVplBlock, firstVpl + count - first);
     for (std::size_t i = tile * kTilePixels; i < end; ++i) {
-      float* histogram = &indirect_[i * bins * kChannels];
-      physics::OffAxisSums& lost = outside_[i];
-      const std::size_t firstOfPixel = segmentFirstSample_[i];
-      const std::size_t perPixel = segmentFirstSample_[i + 1] - firstOfPixel;
-      for (std::size_t s = 0; s < perPixel; ++s) {
-        if (segmentLit_[firstOfPixel + s]) {
-          vplTerms(segmentSurfaces_[firstOfPixel + s], v, first, n, c, terms[s]);
-        }
+      gatherPixelBlock(c, first, n, i, terms.data());
+    }
+  }
+}
+
+// Called per contribution: always inlined, as directLight.
+[[gnu::always_inline]] inline void CpuBackend::depositVplFootprint(const VplTerms& t, std::size_t k,
+                                                                   const glm::vec3& energy,
+                                                                   std::size_t i, float* histogram,
+                                                                   int bins,
+                                                                   physics::OffAxisSums& lost) {
+  // physics::depositNarrow / depositWide, from the block's precomputed terms.
+  const int32_t narrowBins = t.count[k];
+  const int32_t vectorBins = std::min(narrowBins, kVectorNarrowBins);
+  for (int32_t j = 0; j < vectorBins; ++j) {
+    physics::depositInBin(histogram, bins, t.first[k] + j, t.mass[j][k], energy, lost);
+  }
+  if (narrowBins > kVectorNarrowBins) {
+    const glm::vec3 kernel(t.centre[k], t.wide[k], t.narrow[k]);
+    for (int32_t j = kVectorNarrowBins; j < narrowBins; ++j) {
+      physics::depositInBin(histogram, bins, t.first[k] + j,
+                            physics::footprintNarrowMass(kernel, j), energy, lost);
+    }
+  }
+  if (narrowBins == 0) {
+    physics::depositWide(footprintOf(i), bins, glm::vec3(t.centre[k], t.wide[k], t.narrow[k]),
+                         energy, lost);
+  }
+}
+
+void CpuBackend::gatherPixelBlock(const IndirectConstants& c, std::size_t first, std::size_t n,
+                                  std::size_t i, VplTerms* terms) {
+  // Locals, not reads through `c`, in the loop: the histogram's float stores
+  // could otherwise alias them.
+  const int bins = c.kernel.bins;
+  const bool exact = c.exact, footprint = c.kernel.footprint;
+  const float eps = c.eps;
+  const VplArrays& v = *vpls_;
+  float* histogram = &indirect_[i * bins * kChannels];
+  physics::OffAxisSums& lost = outside_[i];
+  const std::size_t firstOfPixel = segmentFirstSample_[i];
+  const std::size_t perPixel = segmentFirstSample_[i + 1] - firstOfPixel;
+  for (std::size_t s = 0; s < perPixel; ++s) {
+    if (segmentLit_[firstOfPixel + s]) {
+      vplTerms(segmentSurfaces_[firstOfPixel + s], v, first, n, c.kernel, terms[s]);
+    }
+  }
+  for (std::size_t k = 0; k < n; ++k) {
+    for (std::size_t s = 0; s < perPixel; ++s) {
+      if (!segmentLit_[firstOfPixel + s]) continue;
+      const VplTerms& t = terms[s];
+      const int32_t bin = t.bin[k];
+      if (bin == kNoLight) continue;
+      const PixelSurface& surface = segmentSurfaces_[firstOfPixel + s];
+      const std::size_t vpl = first + k;
+      if (exact) {
+        const glm::vec3 from = glm::vec3(v.px[vpl], v.py[vpl], v.pz[vpl]) +
+                               glm::vec3(v.nx[vpl], v.ny[vpl], v.nz[vpl]) * eps;
+        if (scene_->occluded(from, surface.x + surface.n * eps)) continue;
+      } else if (ism_ && !ism_->visible(vpl, glm::vec3(t.dx[k], t.dy[k], t.dz[k]), t.dist[k],
+                                        sceneScale_m_)) {
+        continue;
       }
-      for (std::size_t k = 0; k < n; ++k) {
-        for (std::size_t s = 0; s < perPixel; ++s) {
-          if (!segmentLit_[firstOfPixel + s]) continue;
-          const VplTerms& t = terms[s];
-          const int32_t bin = t.bin[k];
-          if (bin == kNoLight) continue;
-          const PixelSurface& surface = segmentSurfaces_[firstOfPixel + s];
-          const std::size_t vpl = first + k;
-          if (exact) {
-            const glm::vec3 from = glm::vec3(v.px[vpl], v.py[vpl], v.pz[vpl]) +
-                                   glm::vec3(v.nx[vpl], v.ny[vpl], v.nz[vpl]) * eps;
-            if (scene_->occluded(from, surface.x + surface.n * eps)) continue;
-          } else if (ism_ && !ism_->visible(vpl, glm::vec3(t.dx[k], t.dy[k], t.dz[k]), t.dist[k],
-                                            sceneScale_m_)) {
-            continue;
-          }
-          const glm::vec3 energy(t.r[k], t.g[k], t.b[k]);
-          if (c.footprint) {
-            // physics::depositNarrow / depositWide, from the block's precomputed terms.
-            const int32_t narrowBins = t.count[k];
-            const int32_t vectorBins = std::min(narrowBins, kVectorNarrowBins);
-            for (int32_t j = 0; j < vectorBins; ++j) {
-              physics::depositInBin(histogram, bins, t.first[k] + j, t.mass[j][k], energy, lost);
-            }
-            if (narrowBins > kVectorNarrowBins) {
-              const glm::vec3 kernel(t.centre[k], t.wide[k], t.narrow[k]);
-              for (int32_t j = kVectorNarrowBins; j < narrowBins; ++j) {
-                physics::depositInBin(histogram, bins, t.first[k] + j,
-                                      physics::footprintNarrowMass(kernel, j), energy, lost);
-              }
-            }
-            if (narrowBins == 0) {
-              physics::depositWide(footprintOf(i), bins,
-                                   glm::vec3(t.centre[k], t.wide[k], t.narrow[k]), energy, lost);
-            }
-            continue;
-          }
-          physics::depositInBin(histogram, bins, bin, 1.0f, energy, lost);
-        }
+      const glm::vec3 energy(t.r[k], t.g[k], t.b[k]);
+      if (footprint) {
+        depositVplFootprint(t, k, energy, i, histogram, bins, lost);
+        continue;
       }
+      physics::depositInBin(histogram, bins, bin, 1.0f, energy, lost);
     }
   }
 }

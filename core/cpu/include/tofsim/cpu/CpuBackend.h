@@ -48,6 +48,7 @@ class CpuIsm;
 class LitBounds;
 struct PixelSurface;
 struct VplArrays;
+struct VplTerms;
 
 class CpuBackend : public ir::IrBackend {
  public:
@@ -78,8 +79,31 @@ class CpuBackend : public ir::IrBackend {
   int threads() const { return threads_; }
 
  private:
-  void gatherTile(std::size_t tile, std::size_t firstVpl, std::size_t count);
+  struct DirectConstants;
+  struct DirectLight;
+  struct IndirectConstants;
+
+  /// The direct light of the segment's pixels in `tile`, into direct_.
   void gatherDirectTile(std::size_t tile);
+  DirectConstants directConstants() const;
+  /// Segment pixel i's direct light: each lit sample's, weighted, into its bins.
+  void gatherDirectPixel(const DirectConstants& c, std::size_t i);
+  /// Segment sample `sample`'s unweighted direct light; false where the light
+  /// does not reach it (outside its cone or shadowed). Inline (and always
+  /// inlined, in CpuBackend.cpp): it runs per sample.
+  inline bool directLight(const DirectConstants& c, std::size_t sample, DirectLight& out) const;
+  /// VPLs [firstVpl, + count) into indirect_ for the segment's pixels in `tile`.
+  void gatherTile(std::size_t tile, std::size_t firstVpl, std::size_t count);
+  IndirectConstants indirectConstants() const;
+  /// VPLs [first, + n), one block, into segment pixel i's histogram; `terms`
+  /// holds a block of terms for each of the pixel's samples.
+  void gatherPixelBlock(const IndirectConstants& c, std::size_t first, std::size_t n, std::size_t i,
+                        VplTerms* terms);
+  /// VPL k of the block `t` through its footprint kernel into pixel i's
+  /// histogram (narrow) or footprint buffer (wide). Inline, as directLight.
+  inline void depositVplFootprint(const VplTerms& t, std::size_t k, const glm::vec3& energy,
+                                  std::size_t i, float* histogram, int bins,
+                                  physics::OffAxisSums& lost);
   /// Adds pixel i's footprint buffer, if written, to `histogram` and clears it.
   void integratePixel(std::size_t i, float* histogram);
   /// Pixel i's footprint buffer, zeroed first if it held nothing.
