@@ -101,7 +101,11 @@ std::vector<std::string> runConfiguredSensors(const config::RunConfig& config,
   // components[1..]: the bounces, when a sensor asked for them.
   std::optional<int32_t> bounces;
   if (sensorBounces(config)) bounces = static_cast<int32_t>(components.size()) - 1;
-  SensorStreams streams(config, saved.shape(), withDirect, bounces, outputDirectory);
+  // The config's pinhole is the saved volume's unless it came from the glTF
+  // (then the pose is not known here: no point clouds).
+  const capture::Camera* camera =
+      config.camera.gltf_camera.empty() ? &config.camera.camera : nullptr;
+  SensorStreams streams(config, saved.shape(), withDirect, bounces, outputDirectory, camera);
   const std::size_t run = pixelsPerRun(config, saved, components);
   while (const std::size_t pixels = saved.read(run)) {
     throwIfInterrupted();
