@@ -58,15 +58,21 @@ void main() {
 // footprint_deposit.glsl and the kernel it includes, pasted (a test-hook
 // source is not assembled), with the contract's bindings.
 std::string gatherSource() {
+  // The deposit's includes, spliced in here (the kernel before the deposit,
+  // the bin deposit in its place).
   std::string deposit = gl::embeddedShaderSource("footprint_deposit.glsl");
   const std::string include = "#include \"footprint_kernel.glsl\"";
   deposit.replace(deposit.find(include), include.size(), "");
+  const std::string binInclude = "#include \"bin_deposit.glsl\"";
+  if (const std::size_t at = deposit.find(binInclude); at != std::string::npos) {
+    deposit.replace(at, binInclude.size(), gl::embeddedShaderSource("bin_deposit.glsl"));
+  }
   std::string source = "#version 450 core\n";
   for (const auto& [name, value] : gpu::shaderDefines()) {
     source += "#define " + name + " " + value + "\n";
   }
   source += "#define CONTRIBUTIONS " + std::to_string(kPerPixel) + "\n";
-  source += "#define FOOTPRINT_HISTOGRAM volume\n";
+  source += "#define GATHER_HISTOGRAM volume\n";
   return source + kGatherBuffers + gl::embeddedShaderSource("footprint_kernel.glsl") + deposit +
          kGather;
 }
