@@ -236,6 +236,7 @@ std::vector<SensorOutput> CwTofStream::finish(const Image* gt) {
   const ImageMeaning combined{{{"range_m", depthRange_}}, false};
   const ImageMeaning combinedError{{{"range_m", depthRange_}}, true};
   addImage(outs, "cwtof_depth", H, W, std::move(depth_), "m", depthTitle, cmap, combined);
+  outs[outs.size() - 2].point_cloud = SensorOutput::PointCloud{"cwtof_amplitude", ""};
   addImage(outs, "cwtof_amplitude", H, W, plane(amplitude_, 0), "photo-electrons",
            "CW-ToF amplitude at the first frequency", cmap,
            {{{"frequency_Hz", p_.frequencies_Hz[0]}}});
@@ -251,6 +252,7 @@ std::vector<SensorOutput> CwTofStream::finish(const Image* gt) {
              "CW-ToF amplitude" + at, cmap, wrapped);
     addImage(outs, "cwtof_depth_" + label, H, W, plane(wrappedDepth_, f), "m",
              "CW-ToF wrapped depth" + at + ", range " + metres(range), cmap, wrapped);
+    outs[outs.size() - 2].point_cloud = SensorOutput::PointCloud{"cwtof_amplitude_" + label, ""};
     if (gt) {
       addImage(outs, "cwtof_multipath_error_" + label, H, W, plane(mpiGtPerFrequency_, f), "m",
                "CW-ToF multipath error" + at + " (noise-free, truth wrapped into range)", cmap,

@@ -7,6 +7,7 @@
 
 #include "ParallelPixels.h"
 #include "PeakDepth.h"
+#include "SpadEstimators.h"
 #include "SpadEventEngine.h"
 #include "SpadSampling.h"
 #include "tofsim/sensors/Random.h"
@@ -50,6 +51,7 @@ void checkParams(const SpadParams& p) {
   TOFSIM_CHECK(p.hot_pixel_fraction >= 0.0 && p.hot_pixel_fraction <= 1.0);
   TOFSIM_CHECK(p.dead_pixel_fraction >= 0.0 && p.dead_pixel_fraction <= 1.0);
   TOFSIM_CHECK(p.hot_pixel_rate_per_s >= 0.0);
+  TOFSIM_CHECK(p.return_threshold_sigma > 0.0);
 }
 
 // Per-cycle flux of one pixel from its render bins (signal in photo-electrons),
@@ -137,7 +139,8 @@ class SpadStream final : public SensorStream {
         deadBins_(static_cast<int32_t>(std::lround(p.dead_time_s / axis_.bin_width_s))),
         plotted_(plotPixels(p.plot_pixels, shape.height, shape.width)),
         histograms_(plotted_.size()),
-        maps_(spadPixelMaps(p, shape.height, shape.width)) {
+        maps_(spadPixelMaps(p, shape.height, shape.width)),
+        estimator_(kernel_, axis_, p.return_threshold_sigma) {
     checkParams(p);
     checkChannelSelection(p.common.channel, shape.channels);
     const std::size_t HW = shape.pixelCount();
@@ -145,6 +148,11 @@ class SpadStream final : public SensorStream {
     depthPeak_.assign(HW, nan);
     depthCoates_.assign(HW, nan);
     intensity_.assign(HW, 0.0f);
+    depthMatched_.assign(HW, nan);
+    confidence_.assign(HW, 0.0f);
+    returns_.assign(HW, 0.0f);
+    for (auto& d : returnDepth_) d.assign(HW, nan);
+    for (auto& v : returnIntensity_) v.assign(HW, 0.0f);
     counts_.name = "spad_counts";
     counts_.kind = SensorOutput::Kind::Array;
     counts_.shape = {shape.height, shape.width, axis_.bins};
@@ -195,18 +203,39 @@ class SpadStream final : public SensorStream {
     const int32_t H = shape_.height, W = shape_.width;
     std::vector<SensorOutput> outputs;
     outputs.push_back(std::move(counts_));
-    outputs.push_back(image("spad_depth_peak", H, W, std::move(depthPeak_), "m",
-                            "SPAD depth from the histogram peak (c t / 2)"));
-    outputs.push_back(image("spad_depth_coates", H, W, std::move(depthCoates_), "m",
-                            "SPAD depth from the peak of the Coates-corrected histogram"));
+    const SensorOutput::PointCloud totals{"spad_intensity", "spad_confidence"};
+    outputs.push_back(depthImage("spad_depth_peak", std::move(depthPeak_),
+                                 "SPAD depth from the histogram peak (c t / 2)", totals));
+    outputs.push_back(depthImage("spad_depth_coates", std::move(depthCoates_),
+                                 "SPAD depth from the peak of the Coates-corrected histogram",
+                                 totals));
+    outputs.push_back(depthImage("spad_depth_matched", std::move(depthMatched_),
+                                 "SPAD depth by the log-matched filter with the instrument "
+                                 "response",
+                                 totals));
     outputs.push_back(image("spad_intensity", H, W, std::move(intensity_), "counts",
                             "SPAD total counts per pixel"));
-    for (std::size_t i = 1; i < 4; ++i) {
+    outputs.push_back(image("spad_confidence", H, W, std::move(confidence_), "-",
+                            "SPAD detection confidence (background alone gives a smaller "
+                            "matched-filter maximum with this probability)"));
+    for (std::size_t i = 1; i < 6; ++i) {
       SensorOutput png = outputs[i];
       png.kind = SensorOutput::Kind::ColorMappedImage;
       png.colormap = p_.colormap;
+      png.point_cloud.reset();
       outputs.push_back(std::move(png));
     }
+    static constexpr const char* kReturnNames[3] = {"first", "strongest", "last"};
+    for (std::size_t r = 0; r < 3; ++r) {
+      const std::string which = kReturnNames[r];
+      outputs.push_back(depthImage("spad_depth_" + which, std::move(returnDepth_[r]),
+                                   "SPAD depth of the " + which + " return (NaN: none)",
+                                   {"spad_intensity_" + which, "spad_confidence"}));
+      outputs.push_back(image("spad_intensity_" + which, H, W, std::move(returnIntensity_[r]),
+                              "counts", "SPAD signal counts of the " + which + " return"));
+    }
+    outputs.push_back(image("spad_returns", H, W, std::move(returns_), "-",
+                            "SPAD returns above return_threshold per pixel"));
     outputs.push_back(histogramPlot(plotted_, histograms_, axis_));
     if (spadHasPixelMaps(p_)) {
       const std::vector<std::pair<std::string, double>> counts = {
@@ -226,9 +255,17 @@ class SpadStream final : public SensorStream {
 
  private:
   struct Scratch {
-    std::vector<double> signal, resampled, flux, h;
+    std::vector<double> signal, resampled, flux, h, lossless;
     detail::FirstPhotonScratch firstPhoton;
+    SpadEstimator::Scratch estimates;
   };
+
+  SensorOutput depthImage(const std::string& name, std::vector<float> data,
+                          const std::string& description, SensorOutput::PointCloud cloud) const {
+    SensorOutput o = image(name, shape_.height, shape_.width, std::move(data), "m", description);
+    o.point_cloud = std::move(cloud);
+    return o;
+  }
 
   void pixel(const float* values, std::size_t px, float* out, Scratch& s) const {
     const int32_t K = axis_.bins;
@@ -257,6 +294,23 @@ class SpadStream final : public SensorStream {
     intensity_[px] = static_cast<float>(total);
     depthPeak_[px] = static_cast<float>(peakDepth_m(s.h, axis_));
     depthCoates_[px] = static_cast<float>(coatesPeakDepth_m(s.h, p_.cycles, axis_));
+    // The estimators read the detections without pile-up: N times Coates'
+    // flux in synchronous mode, the counts when free-running.
+    if (p_.mode == SpadMode::Synchronous) {
+      s.lossless = coatesEstimate(s.h, p_.cycles);
+      for (double& v : s.lossless) v *= static_cast<double>(p_.cycles);
+    } else {
+      s.lossless = s.h;
+    }
+    const SpadEstimates e = estimator_.estimate(s.lossless, s.estimates);
+    depthMatched_[px] = static_cast<float>(e.matched_depth_m);
+    confidence_[px] = static_cast<float>(e.confidence);
+    returns_[px] = static_cast<float>(e.returns);
+    const SpadReturn* returns[3] = {&e.first, &e.strongest, &e.last};
+    for (std::size_t r = 0; r < 3; ++r) {
+      returnDepth_[r][px] = static_cast<float>(returns[r]->depth_m);
+      returnIntensity_[r][px] = static_cast<float>(returns[r]->intensity);
+    }
   }
 
   const SpadParams p_;
@@ -268,11 +322,15 @@ class SpadStream final : public SensorStream {
   const std::vector<std::array<int32_t, 2>> plotted_;
   std::vector<std::vector<float>> histograms_;
   const SpadPixelMaps maps_;
+  const SpadEstimator estimator_;
   SensorOutput counts_;
   std::unique_ptr<ArrayWriter> writer_;
   std::vector<float> chunk_;
   // Written by pixel() from several threads, each pixel by one only.
-  mutable std::vector<float> depthPeak_, depthCoates_, intensity_;
+  mutable std::vector<float> depthPeak_, depthCoates_, intensity_, depthMatched_, confidence_,
+      returns_;
+  mutable std::array<std::vector<float>, 3> returnDepth_,
+      returnIntensity_;  // first, strongest, last
   std::size_t next_ = 0;
 };
 

@@ -29,7 +29,7 @@ TEST(SensorFieldsTest, DocumentedDefaultsReadBackAsTheStructDefaults) {
   // Defaults that are words, not values ("the render's", "all rows").
   const std::set<std::string> described = {
       "common.type", "common.name", "common.channel_weights", "bins.bin_width", "bins.bin_offset",
-      "bins.bins",   "streak.rows", "spad.plot_pixels",       "spad.irf"};
+      "bins.bins",   "streak.rows", "spad.plot_pixels",       "spad.irf",       "spad.preset"};
   int checked = 0;
   for (const ConfigKey& key : sensorConfigKeys()) {
     const std::string path = key.path;

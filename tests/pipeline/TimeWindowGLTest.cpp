@@ -126,8 +126,10 @@ TEST_F(TimeWindowGLTest, SensorWindowFollowsTheRenderAxisAndWarnsWhenSetShort) {
   counts("b", " --set time.bins=500");
   const io::NpyArray a = io::readNpy(dir_ / "a" / "sensors" / "spad" / "spad_counts.npy");
   const io::NpyArray b = io::readNpy(dir_ / "b" / "sensors" / "spad" / "spad_counts.npy");
-  EXPECT_EQ(a.shape, (io::NpyShape{16, 16, 700}));  // the render's time.bins
-  EXPECT_EQ(b.shape, (io::NpyShape{16, 16, 500}));  // follows --set time.bins
+  // The preset's 17 ps TDC bins up to the render's end: 7 ns / 17 ps -> 412
+  // (the render's 700 bins of 10 ps), 5 ns -> 295 (--set time.bins=500).
+  EXPECT_EQ(a.shape, (io::NpyShape{16, 16, 412}));
+  EXPECT_EQ(b.shape, (io::NpyShape{16, 16, 295}));
   // An explicit window wins and is reported: 100 TDC bins hold only the first returns.
   const CommandResult shortWindow = counts("c", " --set sensors.0.bins=100");
   EXPECT_NE(shortWindow.output.find("sensor 'spad' (spad): its instrument window drops "),

@@ -45,6 +45,10 @@ void SensorConfigType<SpadParams>::emit(YAML::Node& n, const SpadParams& p) {
   emitCommon(n, p.common);
   emitFields(n, kBinsFields, p.bins);
   emitFields(n, kSpadFields, p, [&](std::string_view key) {
+    if (key == "preset") {
+      if (!p.preset.empty()) n["preset"] = p.preset;
+      return;
+    }
     if (key == "irf") {
       if (p.irf.present()) n["irf"] = irfToYaml(p.irf);
       return;

@@ -13,6 +13,7 @@
 #include "tofsim/config/SensorConfig.h"
 #include "tofsim/config/Units.h"
 #include "tofsim/sensors/SensorFields.h"
+#include "tofsim/sensors/SpadPresets.h"
 
 namespace tofsim::config {
 
@@ -39,8 +40,7 @@ SensorCommon parseCommon(const ConfigNode& n) {
   return c;
 }
 
-InstrumentBins parseBins(const ConfigNode& n) {
-  InstrumentBins b;
+InstrumentBins parseBins(const ConfigNode& n, InstrumentBins b = {}) {
   parseFields(n, kBinsFields, b);
   return b;
 }
@@ -75,10 +75,28 @@ void SensorConfigType<StreakParams>::checkImage(const ConfigNode& n, const Strea
 }
 
 // --- spad -----------------------------------------------------------------------
+namespace {
+// `preset:` first: its values are the defaults the keys below replace.
+void applyPreset(const ConfigNode& n, SpadParams& p) {
+  if (!n.has("preset")) return;
+  const std::string name = n.getString("preset", "");
+  const SpadPreset* preset = findSpadPreset(name);
+  if (!preset) {
+    std::string known;
+    for (const SpadPreset& s : spadPresets())
+      known += (known.empty() ? "" : ", ") + std::string(s.name);
+    n.failKey("preset", "unknown SPAD preset '" + name + "' (known: " + known + ")");
+  }
+  preset->apply(p);
+  p.preset = name;
+}
+}  // namespace
+
 SpadParams SensorConfigType<SpadParams>::parse(const ConfigNode& n) {
   SpadParams p;
+  applyPreset(n, p);
   p.common = parseCommon(n);
-  p.bins = parseBins(n);
+  p.bins = parseBins(n, p.bins);
   parseFields(n, kSpadFields, p, [&](std::string_view key) {
     if (key == "irf") {
       const auto irf = n.optionalChild("irf");
@@ -89,11 +107,13 @@ SpadParams SensorConfigType<SpadParams>::parse(const ConfigNode& n) {
           {"jitter_fwhm", p.jitter_fwhm_s},
           {"jitter_tail_fraction", p.jitter_tail_fraction}};
       for (const auto& [replaced, value] : replacedValues) {
-        if (value != 0.0) {
+        if (value != 0.0 && n.has(replaced)) {
           n.failKey(replaced, "`irf` replaces pulse_fwhm, jitter_fwhm and jitter_tail_*: remove `" +
                                   std::string(replaced) + "`");
         }
       }
+      // A preset's pulse and jitter are defaults: the explicit `irf` wins.
+      p.pulse_fwhm_s = p.jitter_fwhm_s = p.jitter_tail_fraction = 0.0;
       p.irf = parseIrf(*irf);
       return;
     }

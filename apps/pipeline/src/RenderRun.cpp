@@ -212,7 +212,8 @@ void writeOutputs(const config::RunConfig& config, const capture::RenderJob& job
                                    job.settings.time};
   const std::optional<int32_t> bounces = sensorBounces(config);
   std::optional<SensorStreams> sensorStreams;
-  if (!config.sensors.empty()) sensorStreams.emplace(config, shape, out.direct, bounces, dir);
+  if (!config.sensors.empty())
+    sensorStreams.emplace(config, shape, out.direct, bounces, dir, &camera);
   std::optional<BinMajorSpill> spill;
   if (out.frames || out.video || out.frame_pngs) spill.emplace(dir / kBinMajorSpillName, shape);
   std::vector<std::unique_ptr<VolumeFileSink>> volumeFiles;

@@ -3,11 +3,15 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <optional>
+#include <string>
 
+#include "tofsim/pipeline/Capture.h"
 #include "tofsim/pipeline/OutputProducts.h"
 #include "tofsim/pipeline/PlotRanges.h"
 #include "tofsim/pipeline/SavedVolume.h"
 #include "tofsim/pipeline/SensorStreams.h"
+#include "tofsim/scene/GltfLoader.h"
 #include "tofsim/util/Error.h"
 #include "tofsim/util/Interrupt.h"
 #include "tofsim/util/StagedFolder.h"
@@ -87,6 +91,26 @@ std::size_t pixelsPerRun(const config::RunConfig& config, const SavedVolumeStrea
   return std::max<std::size_t>(1, config.render.memory_budget_bytes / pixelBytes);
 }
 
+// The pinhole the saved pixels looked through, for the point clouds, as the
+// render had it: the config's camera or the glTF camera it names (the scene
+// is read for its pose). None for a volume of another size, or when the
+// scene cannot be read (a note: the other outputs do not need it).
+std::optional<capture::Camera> senseCamera(const config::RunConfig& config,
+                                           const sensors::VolumeShape& volume,
+                                           const Progress& progress) {
+  if (config.nlos) return std::nullopt;  // wall points, not a pinhole's pixels
+  capture::Camera camera = config.camera.camera;
+  if (camera.width != volume.width || camera.height != volume.height) return std::nullopt;
+  if (config.camera.gltf_camera.empty()) return camera;
+  try {
+    const scene::Scene scene = scene::loadGltf(config.scene_file);
+    return makeRenderJob(config, scene).camera();
+  } catch (const InputError& e) {
+    progress.message(std::string("note: no point clouds (the camera's pose): ") + e.what());
+    return std::nullopt;
+  }
+}
+
 }  // namespace
 
 std::vector<std::string> runConfiguredSensors(const config::RunConfig& config,
@@ -101,7 +125,9 @@ std::vector<std::string> runConfiguredSensors(const config::RunConfig& config,
   // components[1..]: the bounces, when a sensor asked for them.
   std::optional<int32_t> bounces;
   if (sensorBounces(config)) bounces = static_cast<int32_t>(components.size()) - 1;
-  SensorStreams streams(config, saved.shape(), withDirect, bounces, outputDirectory);
+  const std::optional<capture::Camera> camera = senseCamera(config, saved.shape(), progress);
+  SensorStreams streams(config, saved.shape(), withDirect, bounces, outputDirectory,
+                        camera ? &*camera : nullptr);
   const std::size_t run = pixelsPerRun(config, saved, components);
   while (const std::size_t pixels = saved.read(run)) {
     throwIfInterrupted();

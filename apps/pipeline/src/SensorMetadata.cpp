@@ -140,6 +140,9 @@ std::vector<NamedMetadata> sensorMetadata(const SensorRunInfo& run,
     json& doc = docs[i];
     if (isPicture(o)) doc["picture"] = pictureJson(o, ranges);
     if (files) doc["files"][isPicture(o) ? "picture" : "data"] = sensorFileName(o);
+    if (files && run.camera && o.kind == SensorOutput::Kind::Image && o.point_cloud) {
+      doc["files"]["point_cloud"] = o.name + ".ply";
+    }
   }
   std::vector<NamedMetadata> result;
   for (std::size_t i = 0; i < order.size(); ++i)

@@ -1,11 +1,14 @@
 #include "SensorParametersJson.h"
 
+#include <string>
 #include <string_view>
 #include <type_traits>
+#include <vector>
 
 #include "FieldJson.h"
 #include "tofsim/sensors/Common.h"
 #include "tofsim/sensors/SensorFields.h"
+#include "tofsim/sensors/SpadPresets.h"
 
 namespace tofsim::pipeline {
 
@@ -42,9 +45,32 @@ json modelJson(const StreakParams& p, const TimeAxis& render) {
   return j;
 }
 
+// The preset's name, device, each value's source and the assumed values:
+// what of the sensor a reader can trace to a datasheet.
+json presetJson(const SpadPreset& preset) {
+  json sourced = json::object(), assumed = json::object();
+  for (const SpadPresetValue& v : preset.values) {
+    if (v.source) {
+      sourced[v.key] = v.source;
+    } else {
+      assumed[v.key] = v.note;
+    }
+  }
+  return {{"name", preset.name},
+          {"device", preset.device},
+          {"sourced", sourced},
+          {"assumed", assumed},
+          {"sources", std::vector<std::string>(preset.sources.begin(), preset.sources.end())},
+          {"note", "explicit config keys replace these values; the effective config has them all"}};
+}
+
 json modelJson(const SpadParams& p, const TimeAxis& render) {
   json j = binsJson(p.bins, render);
   fieldsJson(j, kSpadFields, p, [&](std::string_view key) {
+    if (key == "preset") {
+      if (const SpadPreset* preset = findSpadPreset(p.preset)) j["preset"] = presetJson(*preset);
+      return;
+    }
     if (key == "irf") {
       if (!p.irf.present()) return;
       const char* t0 = p.irf.t0 == SpadIrf::TimeZero::Peak       ? "peak"

@@ -73,8 +73,9 @@ std::optional<int32_t> sensorBounces(const config::RunConfig& config) {
 
 SensorStreams::SensorStreams(const config::RunConfig& config, const sensors::VolumeShape& shape,
                              bool withDirect, std::optional<int32_t> bounces,
-                             const std::filesystem::path& outputDirectory)
-    : config_(config), shape_(shape), outputDirectory_(outputDirectory) {
+                             const std::filesystem::path& outputDirectory,
+                             const capture::Camera* camera)
+    : config_(config), shape_(shape), outputDirectory_(outputDirectory), camera_(camera) {
   for (std::size_t i = 0; i < config.sensors.size(); ++i) {
     const sensors::SensorSpec& spec = config.sensors[i];
     auto entry = std::make_unique<Entry>(i, std::filesystem::path("sensors") / spec.name,
@@ -119,7 +120,7 @@ std::vector<std::string> SensorStreams::finish(const Image* groundTruthDepth_m,
     const sensors::SensorSpec& spec = config_.sensors[e->index];
     const Clock::time_point start = Clock::now();
     std::vector<sensors::SensorOutput> outputs;
-    SensorRunInfo run{&spec, shape_.axis, config_.render.seed, {}};
+    SensorRunInfo run{&spec, shape_.axis, config_.render.seed, {}, camera_};
     try {
       run.warnings = sensors::sensorWarnings(spec, shape_.axis, groundTruthDepth_m);
       printSensorWarnings(spec, run.warnings);

@@ -4,6 +4,7 @@
 #include "tofsim/imaging/Pictures.h"
 #include "tofsim/io/Exr.h"
 #include "tofsim/io/Npy.h"
+#include "tofsim/pipeline/PointCloudPly.h"
 #include "tofsim/util/AtomicFile.h"
 #include "tofsim/util/Error.h"
 
@@ -70,6 +71,27 @@ imaging::ColorScale colorScale(const SensorOutput& o, const std::string& key, Pl
   return scale;
 }
 
+// The Image `name` of `outputs` (an output's point-cloud companion), or none.
+std::optional<Image> companion(const std::vector<SensorOutput>& outputs, const std::string& name) {
+  const SensorOutput* o = sensors::findOutput(outputs, name, SensorOutput::Kind::Image);
+  if (!o) return std::nullopt;
+  return asImage(*o);
+}
+
+void writePointCloud(const std::filesystem::path& path, const SensorOutput& o, const Image& depth,
+                     const std::vector<SensorOutput>& outputs, const capture::Camera& camera) {
+  const std::optional<Image> intensity = companion(outputs, o.point_cloud->intensity);
+  const std::optional<Image> confidence = companion(outputs, o.point_cloud->confidence);
+  PointCloudImages images;
+  images.depth_m = &depth;
+  images.intensity = intensity ? &*intensity : nullptr;
+  images.confidence = confidence ? &*confidence : nullptr;
+  images.comment = "tofsim " + o.name + ": " + o.description +
+                   "; intensity: " + o.point_cloud->intensity +
+                   ", confidence: " + o.point_cloud->confidence;
+  writePointCloudPly(path, images, camera);
+}
+
 }  // namespace
 
 std::vector<std::string> writeSensorOutputs(const std::filesystem::path& directory,
@@ -93,6 +115,10 @@ std::vector<std::string> writeSensorOutputs(const std::filesystem::path& directo
       case SensorOutput::Kind::Image: {
         const Image image = asImage(o);
         io::writeExr(path, image, channelNames(image.channels));
+        if (o.point_cloud && run.camera) {
+          files.push_back(o.name + ".ply");
+          writePointCloud(directory / files.back(), o, image, outputs, *run.camera);
+        }
         break;
       }
       case SensorOutput::Kind::ColorMappedImage: {

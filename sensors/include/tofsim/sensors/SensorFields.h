@@ -67,6 +67,7 @@ inline constexpr std::array<Name<SpadMode>, 2> kSpadModeNames{
     {{"synchronous", SpadMode::Synchronous}, {"free_running", SpadMode::FreeRunning}}};
 
 inline constexpr auto kSpadFields = std::tuple{
+    Custom{"preset", "string", "", "none", "-", "device preset: its published values are the defaults of the other keys (bins included), each explicit key wins (see \"Device presets\" above)"},
     Field{"mode", &SpadParams::mode, Choice<SpadMode>{kSpadModeNames},
           {.json = "mode", .doc = "`synchronous` (first photon, pile-up) or `free_running`"}},
     Field{"cycles", &SpadParams::cycles, Integer{.max = 1'000'000'000'000LL},
@@ -108,6 +109,8 @@ inline constexpr auto kSpadFields = std::tuple{
           {.unit = "counts / s", .json = "hot_pixel_rate_per_s", .doc = "dark count rate of a hot pixel"}},
     Field{"dead_pixel_fraction", &SpadParams::dead_pixel_fraction, Number{kFraction},
           {.json = "dead_pixel_fraction", .doc = "fraction of pixels that never count (PDE and DCR 0)"}},
+    Field{"return_threshold", &SpadParams::return_threshold_sigma, Number{kPositive},
+          {.unit = "sigma", .json = "return_threshold_sigma", .doc = "first / strongest / last returns: matched-filter response this many background noise sigmas above the background (see \"Depth estimators and returns\" above)"}},
     Custom{"plot_pixels", "list of [x, y]", "", "centre pixel", "pixel", "pixels drawn in `spad_histograms`"},
     Field{"colormap", &SpadParams::colormap, Text{},
           {.json = "colormap", .doc = "colormap of the PNGs"}},

@@ -45,6 +45,15 @@ struct SensorOutput {
   std::vector<std::pair<std::string, double>> attributes;
   /// Signed values centred on 0 (errors): pictures use a diverging colour map.
   bool signed_values = false;
+  /// Image only: the values are depths in m along each pixel's ray (NaN: no
+  /// depth), and the writer also makes the point cloud `<name>.ply`, each
+  /// point with the values of the Images named here (same shape) as its
+  /// intensity and confidence (apps/pipeline, PointCloudPly.h).
+  struct PointCloud {
+    std::string intensity;
+    std::string confidence;
+  };
+  std::optional<PointCloud> point_cloud;
 
   // ColorMappedImage and HistogramPlot only.
   std::string colormap;             ///< "viridis", "inferno", "turbo", ...

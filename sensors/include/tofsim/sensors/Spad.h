@@ -48,6 +48,8 @@ struct SpadIrf {
 double irfTimeZero_s(const SpadIrf& irf);
 
 struct SpadParams {
+  /// The device preset whose values were the defaults (SpadPresets.h); empty: none.
+  std::string preset;
   SensorCommon common;  ///< radiometry gives photons at the detector per laser pulse
   InstrumentBins bins;  ///< TDC bin width, offset and count
   SpadMode mode = SpadMode::Synchronous;
@@ -86,6 +88,9 @@ struct SpadParams {
   double hot_pixel_fraction = 0.0;
   double hot_pixel_rate_per_s = 0.0;
   double dead_pixel_fraction = 0.0;
+  /// A return (first / strongest / last, SpadEstimators.h): the matched-filter
+  /// response this many background noise sigmas above the background.
+  double return_threshold_sigma = 5.0;
   std::vector<std::array<int32_t, 2>> plot_pixels;  ///< (x, y) pixels to plot; empty = centre
   std::string colormap = "turbo";
 };
@@ -111,9 +116,13 @@ std::vector<double> freeRunningProbabilities(const std::vector<double>& flux, in
 /// the remaining count reaches 0 get 0.
 std::vector<double> coatesEstimate(const std::vector<double>& counts, int64_t cycles);
 
-/// Outputs: "spad_counts" Array (H, W, bins); "spad_depth_peak" and
-/// "spad_depth_coates" Images (H, W) in m (plus ColorMappedImages);
-/// "spad_intensity" Image (H, W) total counts (plus ColorMappedImage);
+/// Outputs: "spad_counts" Array (H, W, bins); "spad_depth_peak",
+/// "spad_depth_coates" and "spad_depth_matched" Images (H, W) in m (plus
+/// ColorMappedImages); "spad_intensity" Image (H, W) total counts (plus
+/// ColorMappedImage); "spad_confidence" Image (plus ColorMappedImage);
+/// "spad_depth_{first,strongest,last}" Images in m (NaN: no return) and
+/// "spad_intensity_{first,strongest,last}" in counts, "spad_returns" (how many);
+/// every depth Image carries a point cloud (SensorOutput::point_cloud);
 /// "spad_histograms" HistogramPlot (pixels, bins); with a fixed pattern
 /// (spadHasPixelMaps), "spad_pde_map" and "spad_dcr_map" Images (H, W), with
 /// the attributes hot_pixels and dead_pixels.

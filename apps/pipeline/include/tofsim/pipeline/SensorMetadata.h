@@ -18,15 +18,21 @@
 #include "tofsim/sensors/SensorSpec.h"
 #include "tofsim/volume/TimeAxis.h"
 
+namespace tofsim::capture {
+struct Camera;
+}
+
 namespace tofsim::pipeline {
 
 /// What one sensor run was: the spec, the volume's time axis, the seed and
-/// what sensorWarnings said.
+/// what sensorWarnings said; with the pinhole camera whose pixels the sensor
+/// saw, depth Images also go out as point clouds (PointCloudPly.h).
 struct SensorRunInfo {
   const sensors::SensorSpec* spec = nullptr;
   TimeAxis render;
   uint64_t seed = 0;
   std::vector<std::string> warnings;
+  const capture::Camera* camera = nullptr;  ///< nullptr: no point clouds
 };
 
 /// One document per output name, in output order: an Image and the

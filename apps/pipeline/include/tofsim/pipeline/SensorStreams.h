@@ -39,8 +39,11 @@ class SensorStreams {
   /// bounces 1..N when `bounces` = N. A sensor that does not fit the volume
   /// (a row outside the image, ...) throws an InputError naming the config
   /// file and the sensor, before any value arrives.
+  /// With `camera` (the pinhole the pixels looked through), depth images
+  /// are also written as point clouds (PointCloudPly.h).
   SensorStreams(const config::RunConfig& config, const sensors::VolumeShape& shape, bool withDirect,
-                std::optional<int32_t> bounces, const std::filesystem::path& outputDirectory);
+                std::optional<int32_t> bounces, const std::filesystem::path& outputDirectory,
+                const capture::Camera* camera = nullptr);
   ~SensorStreams();
   SensorStreams(const SensorStreams&) = delete;
   SensorStreams& operator=(const SensorStreams&) = delete;
@@ -62,6 +65,7 @@ class SensorStreams {
   const config::RunConfig& config_;
   sensors::VolumeShape shape_;
   std::filesystem::path outputDirectory_;
+  const capture::Camera* camera_;
   std::vector<std::unique_ptr<Entry>> entries_;
 };
 

@@ -1,0 +1,104 @@
+#include "tofsim/sensors/SpadPresets.h"
+
+#include <array>
+
+namespace tofsim::sensors {
+
+namespace {
+
+// --- nlos-gated-spad: Polimi fast-gated single-pixel SPAD + PicoHarp 300 ----
+void applyNlosGated(SpadParams& p) {
+  p.mode = SpadMode::Synchronous;
+  p.bins.bin_width_s = 4e-12;
+  p.dead_time_s = 95e-9;
+  p.jitter_fwhm_s = 50e-12;
+  p.cycles = 800'000;
+  p.pde = 0.3;
+}
+constexpr std::array<SpadPresetValue, 6> kNlosGatedValues{{
+    {"mode", "[PH300] TCSPC: one start-stop time per laser sync (first photon)", nullptr},
+    {"bin_width", "[PH300] PicoHarp 300 base resolution 4 ps", nullptr},
+    {"dead_time", "[PH300] TCSPC dead time 95 ns (used in free_running mode)", nullptr},
+    {"jitter_fwhm",
+     "[MH150 p.10] SPAD jitter 50-500 ps FWHM: the lower end; [RENNA20] < 50 ps FWHM for the "
+     "fast-gated array",
+     nullptr},
+    {"cycles", nullptr, "10 ms at the 80 MHz maximum repetition rate [BUTT14]"},
+    {"pde", nullptr, "no published PDE in the sources: the library default"},
+}};
+constexpr std::array<const char*, 4> kNlosGatedSources{{
+    "[PH300] tcspc.com/doku.php/glossary:t2-mode",
+    "[MH150] easymanua.ls/picoquant/multiharp-150/manual?p=70 and ?p=10",
+    "[BUTT14] Rev. Sci. Instrum. 85, 083114 (scholar.archive.org/work/mhkqqcijonaspeelevybh7x5le)",
+    "[RENNA20] mdpi.com/2410-390X/4/2/14",
+}};
+
+// --- spad512s: Pi Imaging 512 x 512 gated SPAD array -------------------------
+void applySpad512s(SpadParams& p) {
+  p.mode = SpadMode::Synchronous;
+  p.bins.bin_width_s = 17e-12;
+  p.pde = 0.5;
+  p.dark_count_rate_per_s = 25.0;
+  p.cycles = 100'000;
+}
+constexpr std::array<SpadPresetValue, 5> kSpad512sValues{{
+    {"mode", nullptr,
+     "gated 1-bit frames are not modelled: the histogram a gate sweep samples, as first-photon "
+     "counts"},
+    {"bin_width", "[SPAD512S] gate shift 17 ps (the sweep's step, taken as the bin)", nullptr},
+    {"pde", "[SPAD512S] PDP > 50 % at 520 nm", nullptr},
+    {"dark_count_rate", "[SPAD512S] DCR < 25 cps typical", nullptr},
+    {"cycles", nullptr, "1 s of 1-bit frames at 100 kfps [SPAD512S], one pulse per frame"},
+}};
+constexpr std::array<const char*, 1> kSpad512sSources{{
+    "[SPAD512S] axiomoptics.com/products/spad512s",
+}};
+
+// --- flash-lidar-fbk256: FBK 256 x 256 flash-lidar SPAD imager --------------
+void applyFlashLidar(SpadParams& p) {
+  p.mode = SpadMode::Synchronous;
+  p.bins.bin_width_s = 250e-12;
+  p.pde = 0.28;
+  p.cycles = 10'000;
+}
+constexpr std::array<SpadPresetValue, 4> kFlashLidarValues{{
+    {"mode", "[FBK256] first-event detection", nullptr},
+    {"bin_width", "[FBK256] 250 ps bins (up to 380 m)", nullptr},
+    {"pde", nullptr,
+     "FBK256's PDE is not public: Sony IMX611's 28 % [IMX611], a smartphone dToF SPAD"},
+    {"cycles", nullptr, "the library default"},
+}};
+constexpr std::array<const char*, 2> kFlashLidarSources{{
+    "[FBK256] imagesensors.org/papers/10.60928/brmo-wf6b",
+    "[IMX611] fareastgizmos.com/featured/"
+    "sony-semiconductor-solutions-announces-spad-depth-sensor-for-smartphones-with-high-accuracy-"
+    "distance-measurement-performance.php",
+}};
+
+const std::array<SpadPreset, 3> kPresets{{
+    {"nlos-gated-spad",
+     "single-pixel fast-gated SPAD (Polimi) with a PicoHarp 300 TCSPC, as in NLOS captures; the "
+     "gate (110 ps transitions [BUTT14]) depends on the scene: set gate_start and gate_width",
+     applyNlosGated, kNlosGatedValues, kNlosGatedSources},
+    {"spad512s",
+     "Pi Imaging SPAD512S, 512 x 512 gated SPAD array (0 e- read noise, 6 ns gate [SPAD512S]); "
+     "the resolution is the camera's",
+     applySpad512s, kSpad512sValues, kSpad512sSources},
+    {"flash-lidar-fbk256",
+     "FBK 256 x 256 flash-lidar SPAD imager with first- or last-event TDCs [FBK256]; the window "
+     "(bins) is the render's",
+     applyFlashLidar, kFlashLidarValues, kFlashLidarSources},
+}};
+
+}  // namespace
+
+std::span<const SpadPreset> spadPresets() { return kPresets; }
+
+const SpadPreset* findSpadPreset(std::string_view name) {
+  for (const SpadPreset& p : kPresets) {
+    if (name == p.name) return &p;
+  }
+  return nullptr;
+}
+
+}  // namespace tofsim::sensors
