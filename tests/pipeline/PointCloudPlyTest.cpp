@@ -118,8 +118,11 @@ TEST(PointCloudPlyTest, HeaderAndValuesReadBack) {
       // The camera frame is OpenCV's: z forward along the depth, y down.
       EXPECT_NEAR(std::sqrt(p[3] * p[3] + p[4] * p[4] + p[5] * p[5]), d, 1e-6);
       EXPECT_GT(p[5], 0.0f);
-      if (y != 1) EXPECT_EQ(p[4] < 0.0f, y == 0);  // row 1 of 3 is the optical axis's
-      if (y == 1) EXPECT_NEAR(p[4], 0.0f, 1e-6);
+      if (y == 1) {  // row 1 of 3 is the optical axis's
+        EXPECT_NEAR(p[4], 0.0f, 1e-6);
+      } else {
+        EXPECT_EQ(p[4] < 0.0f, y == 0);
+      }
     }
   }
   std::printf("largest coordinate difference %.3g m\n", worst);
