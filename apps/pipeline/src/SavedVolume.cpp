@@ -11,7 +11,7 @@
 #include "tofsim/io/DepthExr.h"
 #include "tofsim/io/Exr.h"
 #include "tofsim/io/Npy.h"
-#include "tofsim/pipeline/OutputProducts.h"
+#include "tofsim/pipeline/OutputFileNames.h"
 #include "tofsim/util/Error.h"
 
 namespace tofsim::pipeline {
