@@ -11,6 +11,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "fuzz/IrfInput.h"
 #include "fuzz/SceneInvariants.h"
 #include "support/TempDir.h"
 #include "tofsim/config/RunConfig.h"
@@ -61,6 +62,17 @@ TEST_F(FuzzRegressionTest, Configs) {
   const int inputs = forEachInput("config", [&](const std::string& bytes, const fs::path&) {
     writeBytes(dir_ / "input.yaml", bytes);
     config::loadRunConfig(dir_ / "input.yaml", {});
+  });
+  EXPECT_GT(inputs, 0);
+}
+
+// As in fuzz/fuzz_irf.cpp: a SPAD's measured response, CSV or .npy.
+TEST_F(FuzzRegressionTest, IrfFiles) {
+  fs::create_directory_symlink(fs::path(TOFSIM_SOURCE_DIR) / "configs" / "scenes", dir_ / "scenes");
+  const int inputs = forEachInput("irf", [&](const std::string& bytes, const fs::path&) {
+    const auto* data = reinterpret_cast<const uint8_t*>(bytes.data());
+    const fs::path config = fuzz::writeIrfInput(dir_, data, bytes.size());
+    if (!config.empty()) config::loadRunConfig(config, {});
   });
   EXPECT_GT(inputs, 0);
 }
