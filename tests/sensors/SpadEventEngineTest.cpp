@@ -152,6 +152,24 @@ std::vector<double> expectedTail(int32_t firstLive, int32_t bins, int32_t dead, 
   return counts;
 }
 
+// Pearson's statistic of an afterpulse tail, bins [16, 200) in groups of 8,
+// against cycles x the per-cycle law: every group is a cell (the law is
+// absolute, not fitted to the total), so dof = the number of groups.
+tofsim::test::ChiSquare tailChiSquare(const std::vector<double>& h, const std::vector<double>& law,
+                                      double cycles) {
+  tofsim::test::ChiSquare fit;
+  for (int b = 16; b < 200; b += 8) {
+    double observed = 0.0, e = 0.0;
+    for (int k = b; k < b + 8; ++k) {
+      observed += h[k];
+      e += cycles * law[k];
+    }
+    fit.statistic += (observed - e) * (observed - e) / e;
+    ++fit.dof;
+  }
+  return fit;
+}
+
 TEST(SpadEventEngineTest, AfterpulsesMakeATailAsTheirRenewalPredicts) {
   std::vector<double> flux(400, 0.0);
   flux[10] = 8.0;  // every cycle detects here (but for e^-8)
@@ -162,25 +180,12 @@ TEST(SpadEventEngineTest, AfterpulsesMakeATailAsTheirRenewalPredicts) {
   std::vector<double> h(flux.size(), 0.0);
   detail::spadEvents(flux, 200000, dead, rng, h, {p, tau});
   const std::vector<double> law = expectedTail(16, 400, dead, p, tau);
-  const auto chiOf = [&](const std::vector<double>& expected) {
-    double chi = 0.0;
-    int dof = 0;
-    for (int b = 16; b < 200; b += 8) {
-      double observed = 0.0, e = 0.0;
-      for (int k = b; k < b + 8; ++k) {
-        observed += h[k];
-        e += cycles * expected[k];
-      }
-      chi += (observed - e) * (observed - e) / e;
-      ++dof;
-    }
-    return std::pair{chi, dof};
-  };
-  const auto [chi, dof] = chiOf(law);
-  EXPECT_LT(chi, tofsim::test::chiSquareQuantile(dof, 3.09));
+  const tofsim::test::ChiSquare fit = tailChiSquare(h, law, cycles);
+  EXPECT_LT(fit.statistic, tofsim::test::chiSquareQuantile(fit.dof, 3.09));
   // A delay 10 % longer is rejected.
-  const auto [off, offDof] = chiOf(expectedTail(16, 400, dead, p, 1.1 * tau));
-  EXPECT_GT(off, tofsim::test::chiSquareQuantile(offDof, 3.09));
+  const tofsim::test::ChiSquare off =
+      tailChiSquare(h, expectedTail(16, 400, dead, p, 1.1 * tau), cycles);
+  EXPECT_GT(off.statistic, tofsim::test::chiSquareQuantile(off.dof, 3.09));
   EXPECT_EQ(h[11], 0.0);  // dead after the pulse
 }
 
@@ -203,18 +208,8 @@ TEST(SpadEventEngineTest, TheSpadModelsAfterpulsesAreTheEngines) {
   std::vector<double> h(400, 0.0);
   for (std::size_t i = 0; i < c.data.size(); ++i) h[i % 400] += c.data[i];
   const std::vector<double> law = expectedTail(16, 400, 5, 0.5, 30.0);
-  double chi = 0.0;
-  int dof = 0;
-  for (int b = 16; b < 200; b += 8) {
-    double observed = 0.0, e = 0.0;
-    for (int k = b; k < b + 8; ++k) {
-      observed += h[k];
-      e += 16.0 * 20000 * law[k];
-    }
-    chi += (observed - e) * (observed - e) / e;
-    ++dof;
-  }
-  EXPECT_LT(chi, tofsim::test::chiSquareQuantile(dof, 3.09));
+  const tofsim::test::ChiSquare fit = tailChiSquare(h, law, 16.0 * 20000);
+  EXPECT_LT(fit.statistic, tofsim::test::chiSquareQuantile(fit.dof, 3.09));
   // Without afterpulses the tail is empty.
   p.afterpulse_probability = 0.0;
   const std::vector<SensorOutput> plain = runSpad(v, p, 5);
