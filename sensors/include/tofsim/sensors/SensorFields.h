@@ -66,6 +66,9 @@ inline constexpr auto kStreakFields = std::tuple{
 inline constexpr std::array<Name<SpadMode>, 2> kSpadModeNames{
     {{"synchronous", SpadMode::Synchronous}, {"free_running", SpadMode::FreeRunning}}};
 
+inline constexpr std::array<Name<CrosstalkNeighbours>, 2> kCrosstalkNeighbourNames{
+    {{"4", CrosstalkNeighbours::Four}, {"8", CrosstalkNeighbours::Eight}}};
+
 inline constexpr auto kSpadFields = std::tuple{
     Custom{"preset", "string", "", "none", "-", "device preset: its published values are the defaults of the other keys (bins included), each explicit key wins (see \"Device presets\" above)"},
     Field{"mode", &SpadParams::mode, Choice<SpadMode>{kSpadModeNames},
@@ -96,6 +99,12 @@ inline constexpr auto kSpadFields = std::tuple{
           {.json = "afterpulse_probability", .doc = "`free_running`: probability that an avalanche leaves a trapped carrier whose release is an afterpulse (the exact event engine draws such pixels); 0: none"}},
     Field{"afterpulse_delay", &SpadParams::afterpulse_delay_s, Duration{kPositive},
           {.json = "afterpulse_delay_s", .doc = "mean of the exponential release delay, counted from the end of the dead time"}},
+    Field{"crosstalk_probability", &SpadParams::crosstalk_probability, Number{kFraction},
+          {.json = "crosstalk_probability", .doc = "probability that an avalanche triggers one in each neighbouring pixel (first order, see \"Crosstalk\" above); 0: none"}},
+    Field{"crosstalk_neighbours", &SpadParams::crosstalk_neighbours, Choice<CrosstalkNeighbours>{kCrosstalkNeighbourNames},
+          {.json = "crosstalk_neighbours", .doc = "`4` (edge neighbours) or `8` (and the diagonal ones), each with `crosstalk_probability`"}},
+    Field{"crosstalk_delay", &SpadParams::crosstalk_delay_s, Duration{kNonNegative},
+          {.json = "crosstalk_delay_s", .doc = "0: prompt (the neighbour fires in the same bin); else the mean of an exponential delay"}},
     Custom{"irf", "mapping", "", "none (pulse and jitter)", "-", "measured instrument response in place of `pulse_fwhm` and `jitter_*`: `file` (.npy float32, or CSV time,value), `bin_width` (.npy), `t0` (peak, centroid or a time), `floor` (see \"Measured instrument response\" above)"},
     Field{"fpn_seed", &SpadParams::fpn_seed, IntegerIn{0, 4294967295LL},
           {.json = "fpn_seed", .doc = "seed of the array's fixed pattern (below), separate from the noise seed: the same device under every noise seed"}},

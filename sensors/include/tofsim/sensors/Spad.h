@@ -21,6 +21,10 @@ namespace tofsim::sensors {
 
 enum class SpadMode { Synchronous, FreeRunning };
 
+/// The neighbours an avalanche can trigger by crosstalk: the 4 sharing an
+/// edge, or the 8 sharing an edge or a corner (each with the same probability).
+enum class CrosstalkNeighbours { Four = 4, Eight = 8 };
+
 /// A measured instrument response (the config's `irf:`), in place of the
 /// Gaussian pulse and jitter: the delay from a photon's arrival to its
 /// timestamp is distributed as `values`, constant over each sample (the
@@ -74,6 +78,13 @@ struct SpadParams {
   /// engine, SpadEventEngine.h, draws these pixels). 0: none.
   double afterpulse_probability = 0.0;
   double afterpulse_delay_s = 10e-9;
+  /// Crosstalk: each avalanche triggers one in each of its neighbours with
+  /// this probability, after a delay (0: prompt, in the same bin; else
+  /// exponential with this mean); 0: none. Drawn on the fast path to first
+  /// order, from the neighbours' expected avalanches (SpadCrosstalk.h).
+  double crosstalk_probability = 0.0;
+  CrosstalkNeighbours crosstalk_neighbours = CrosstalkNeighbours::Four;
+  double crosstalk_delay_s = 0.0;
   SpadIrf irf;  ///< measured response; when present, pulse and jitter (all 0) are not used
   /// Array non-uniformity, a fixed pattern drawn from fpn_seed alone (not the
   /// noise seed: the same device under every noise seed), per pixel (y, x):
