@@ -43,7 +43,7 @@ TransientVolume volumeOf(int32_t w, int32_t h, int32_t bins, const Flux& flux) {
   return v;
 }
 
-// A's light: a broad return over bins 10-39 (1.4 photons per cycle in all).
+// A's light: a broad return over bins 10-39 (1.29 photons per cycle in all, P_det 0.72).
 std::vector<double> brightReturn() {
   std::vector<double> f(kBins, 0.0);
   for (int32_t t = 10; t < 40; ++t) f[t] = static_cast<float>(0.045 * (1.0 + std::sin(0.2 * t)));
@@ -246,7 +246,6 @@ TEST(SpadCrosstalkTest, ALitArrayAgreesWithTheExactAvalancheOracle) {
       const std::vector<double> fast(c.data.begin() + k * kBins3,
                                      c.data.begin() + (k + 1) * kBins3);
       addTwoSample(fast, exact[k], kCycles, t);
-
     }
     return t;
   };
