@@ -9,7 +9,7 @@ namespace tofsim::sensors::detail {
 
 namespace {
 // A hazard of 1 (an arrival certain in this bin) would be an infinite flux:
-// 1 - 1e-12 is 27.6, every cycle detects there all the same.
+// 1 - 1e-12 is 27.6 per neighbour, every cycle detects there all the same.
 constexpr double kMaxHazard = 1.0 - 1e-12;
 
 BinKernel delayKernel(double delay_s, double binWidth_s) {
@@ -73,6 +73,11 @@ void SpadCrosstalk::send(std::size_t px) {
 
 void SpadCrosstalk::receive(std::size_t px, std::vector<double>& out) const {
   out = flux(px);
+  // Per bin, the probability that no neighbour's arrival comes in it (given
+  // none before, synchronous): one logarithm per bin for all neighbours. Its
+  // rounding, 1e-16 absolute, is far below any flux that matters.
+  thread_local std::vector<double> none;
+  none.assign(out.size(), 1.0);
   const auto y = static_cast<int32_t>(px / width_), x = static_cast<int32_t>(px % width_);
   for (const auto& [dy, dx] : offsets_) {
     if (y + dy < 0 || y + dy >= height_ || x + dx < 0 || x + dx >= width_) continue;
@@ -84,9 +89,11 @@ void SpadCrosstalk::receive(std::size_t px, std::vector<double>& out) const {
       if (a <= 0.0) continue;
       const double hazard = synchronous_ ? a / std::max(1.0 - before, 1e-300) : a;
       before += a;
-      out[i] -= std::log1p(-std::min(hazard, kMaxHazard));
+      none[i] *= 1.0 - std::min(hazard, kMaxHazard);
     }
   }
+  for (int32_t i = 0; i < bins_; ++i)
+    if (none[i] < 1.0) out[i] -= std::log(none[i]);
 }
 
 std::size_t SpadCrosstalk::receivable(std::size_t sent) const {
