@@ -1,6 +1,7 @@
 // SPAD crosstalk on the streamed fast path (SpadCrosstalk.h): a dark pixel
 // next to a bright one counts the bright one's stops thinned by p, in the
-// same bin (prompt) or delayed by the exponential kernel; 4 neighbours leave
+// same bin (prompt) or delayed by the exponential kernel (free-running: wrapped
+// into the next period); 4 neighbours leave
 // the diagonal dark, 8 do not; an exact avalanche-by-avalanche simulation of
 // a lit 3 x 3 array agrees; and the bytes do not depend on spans or threads.
 
@@ -180,6 +181,51 @@ TEST(SpadCrosstalkTest, DelayedCrosstalkFollowsTheExponentialKernel) {
   prompt[i0] = p * P;
   const auto same = againstMultinomial(hB, prompt, draws);
   EXPECT_GT(same.statistic, 1e3);
+}
+
+// Free-running, no dead time: A fires in bin i with probability q_i = 1 -
+// e^(-f_i) in every period, so a dark B fires there with probability p q_i
+// exactly (delayed: p sum_j q_j kappa_((i - j) mod K), the delay wrapping
+// into the next period), each bin's count Binomial(N, pi_i). Chi-square of
+// the K independent binomials; a delay that does not wrap (arrivals past the
+// period lost, as in synchronous mode) is rejected.
+double binomialChiSquare(const std::vector<double>& h, const std::vector<double>& pi, double n) {
+  double x2 = 0.0;
+  for (std::size_t i = 0; i < h.size(); ++i) {
+    const double e = n * pi[i];
+    x2 += (h[i] - e) * (h[i] - e) / (e * (1.0 - pi[i]));
+  }
+  return x2;
+}
+
+TEST(SpadCrosstalkTest, FreeRunningDarkNeighbourCountsPTimesTheBrightPixelsDetections) {
+  const int32_t i0 = kBins - 8;  // near the end: a delayed arrival wraps
+  const double f = static_cast<float>(0.4), p = 0.1, tau = 6.0;
+  std::vector<double> a(kBins, static_cast<float>(0.01));
+  a[i0] = f;
+  SpadParams s = crosstalk(p, CrosstalkNeighbours::Four, tau * kW);
+  s.mode = SpadMode::FreeRunning;
+  const double n = 4.0 * static_cast<double>(s.cycles);
+  const std::vector<double> hB =
+      around(runSpad(volumeOf(kSide, kSide, kBins, onlyA(a)), s, 8), kEdge);
+  // kappa_d as in delayedLaw (d = 0 .. 2K: the kernel's 14 tau reach past K).
+  const double e = 1.0 - std::exp(-1.0 / tau);
+  const auto kappa = [&](int32_t d) {
+    return d == 0 ? 1.0 - tau * e : tau * e * (std::exp(1.0 / tau) - 1.0) * std::exp(-d / tau);
+  };
+  std::vector<double> wrapped(kBins, 0.0), cut(kBins, 0.0);
+  for (int32_t j = 0; j < kBins; ++j) {
+    const double q = -std::expm1(-a[j]);
+    for (int32_t d = 0; d < 2 * kBins; ++d) {
+      wrapped[(j + d) % kBins] += p * q * kappa(d);
+      if (j + d < kBins) cut[j + d] += p * q * kappa(d);
+    }
+  }
+  const double x2 = binomialChiSquare(hB, wrapped, n);
+  std::cout << "free-running: chi2 " << x2 << " / " << kBins << " dof\n";
+  EXPECT_LT(x2, chiSquareQuantile(kBins, 3.09));
+  EXPECT_GT(binomialChiSquare(hB, cut, n), chiSquareQuantile(kBins, 3.09));
+  EXPECT_GT(binomialChiSquare(hB, scaled(wrapped, 1.05), n), chiSquareQuantile(kBins, 3.09));
 }
 
 // The exact oracle: a 3 x 3 array, every pixel lit (returns at different
