@@ -1,9 +1,9 @@
 // SPAD crosstalk on the streamed fast path (SpadCrosstalk.h): a dark pixel
 // next to a bright one counts the bright one's stops thinned by p, in the
-// same bin (prompt) or delayed by the exponential kernel (free-running: wrapped
-// into the next period); 4 neighbours leave
-// the diagonal dark, 8 do not; an exact avalanche-by-avalanche simulation of
-// a lit 3 x 3 array agrees; and the bytes do not depend on spans or threads.
+// same bin (prompt) or delayed by the exponential kernel (free-running:
+// wrapped into the next period); 4 neighbours leave the diagonal dark, 8 do
+// not; an exact avalanche-by-avalanche simulation of a lit 3 x 3 array
+// agrees; and the bytes do not depend on spans or threads.
 
 #include <gtest/gtest.h>
 
