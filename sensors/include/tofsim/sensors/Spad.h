@@ -109,7 +109,8 @@ struct SpadParams {
 /// Expected detections per cycle in each TDC bin of pixel (y, x) if nothing
 /// were lost to pile-up or dead time: PDE * (signal * pulse * jitter + ambient)
 /// + dark (signal * IRF with an IRF; the pixel's PDE and DCR of its fixed
-/// pattern). `axis` is the TDC axis (resolveBins of params.bins).
+/// pattern). `axis` is the TDC axis (resolveBins of params.bins). The
+/// pixel's own light only: its neighbours' crosstalk is not in it.
 void spadFluxPerCycle(const TransientVolume& volume, const SpadParams& params, const TimeAxis& axis,
                       int32_t y, int32_t x, std::vector<double>& flux);
 
