@@ -43,12 +43,12 @@ TEST(SpadCrosstalkConfigTest, ParsesAndRoundTrips) {
   YAML::Node doc;
   doc["sensors"] = sensorsToYaml(specs);
   const ConfigNode again(doc, "effective.yaml");
-  const auto& q = std::get<SpadParams>(parseSensors(again.child("sensors"))[0].params);
+  const SpadParams q = std::get<SpadParams>(parseSensors(again.child("sensors"))[0].params);
   EXPECT_DOUBLE_EQ(q.crosstalk_probability, p.crosstalk_probability);
   EXPECT_EQ(q.crosstalk_neighbours, p.crosstalk_neighbours);
   EXPECT_DOUBLE_EQ(q.crosstalk_delay_s, p.crosstalk_delay_s);
   // The defaults: none, 4 neighbours, prompt.
-  const auto& d = std::get<SpadParams>(parse("    pde: 0.3\n")[0].params);
+  const SpadParams d = std::get<SpadParams>(parse("    pde: 0.3\n")[0].params);
   EXPECT_EQ(d.crosstalk_probability, 0.0);
   EXPECT_EQ(d.crosstalk_neighbours, CrosstalkNeighbours::Four);
   EXPECT_EQ(d.crosstalk_delay_s, 0.0);
