@@ -279,8 +279,12 @@ class SpadStream final : public SensorStream {
     } else if (p_.afterpulse_probability > 0.0) {
       // Afterpulses correlate the bins: the exact event engine draws the pixel.
       s.h.assign(static_cast<std::size_t>(K), 0.0);
-      detail::spadEvents(s.flux, N, deadBins_, rng, s.h,
-                         {p_.afterpulse_probability, p_.afterpulse_delay_s / axis_.bin_width_s});
+      detail::DetectorLaws laws;
+      laws.deadBins = deadBins_;
+      laws.stops = 0;
+      laws.afterpulses.mean = p_.afterpulse_probability;
+      laws.afterpulses.delays_bins = {p_.afterpulse_delay_s / axis_.bin_width_s};
+      detail::spadEvents(s.flux, N, laws, rng, s.h);
     } else {
       const std::vector<double> m = freeRunningProbabilities(s.flux, deadBins_);
       s.h.resize(static_cast<std::size_t>(K));
