@@ -38,7 +38,7 @@ void checkParams(const SpadParams& p) {
   TOFSIM_CHECK(p.jitter_tail_fraction >= 0.0 && p.jitter_tail_fraction <= 1.0);
   TOFSIM_CHECK(p.pde >= 0.0 && p.pde <= 1.0);
   TOFSIM_CHECK(p.ambient_rate_per_s >= 0.0 && p.dark_count_rate_per_s >= 0.0);
-  TOFSIM_CHECK(p.dead_time_s >= 0.0);
+  TOFSIM_CHECK(p.dead_time_s >= 0.0 && p.tdc_stops >= 0);
   TOFSIM_CHECK(p.gate_width_s >= 0.0);
   TOFSIM_CHECK(p.afterpulse_probability >= 0.0 && p.afterpulse_probability <= 1.0);
   TOFSIM_CHECK(p.afterpulse_probability == 0.0 || p.mode == SpadMode::FreeRunning);
@@ -74,6 +74,17 @@ void fluxFromSignal(const std::vector<double>& signal, const TimeAxis& render, c
       flux[i] *= std::max(0.0, std::min(b1, g1) - std::max(b0, g0)) / axis.bin_width_s;
     }
   }
+}
+
+// The event engine's laws of the model's detector (free-running: every
+// detection recorded).
+detail::DetectorLaws detectorLaws(const SpadParams& p, const TimeAxis& axis, int32_t deadBins) {
+  detail::DetectorLaws laws;
+  laws.deadBins = deadBins;
+  laws.stops = p.mode == SpadMode::Synchronous ? p.tdc_stops : 0;
+  laws.afterpulses.mean = p.afterpulse_probability;
+  laws.afterpulses.delays_bins = {p.afterpulse_delay_s / axis.bin_width_s};
+  return laws;
 }
 
 SensorOutput image(const std::string& name, int32_t H, int32_t W, std::vector<float> data,
@@ -137,6 +148,7 @@ class SpadStream final : public SensorStream {
         axis_(resolveBins(p.bins, shape.axis)),
         kernel_(spadKernel(p, axis_)),
         deadBins_(static_cast<int32_t>(std::lround(p.dead_time_s / axis_.bin_width_s))),
+        laws_(detectorLaws(p, axis_, deadBins_)),
         plotted_(plotPixels(p.plot_pixels, shape.height, shape.width)),
         histograms_(plotted_.size()),
         maps_(spadPixelMaps(p, shape.height, shape.width)),
@@ -267,6 +279,15 @@ class SpadStream final : public SensorStream {
     return o;
   }
 
+  // Where the fast draws are not exact: the first-photon law needs one stop,
+  // no afterpulse and a detector live again at the next pulse; the
+  // free-running binomials (exact marginals) no afterpulse.
+  bool needsEngine(const std::vector<double>& flux) const {
+    if (laws_.afterpulses.on()) return true;
+    return p_.mode == SpadMode::Synchronous &&
+           (p_.tdc_stops != 1 || !detail::deadTimeEndsInItsCycle(flux, deadBins_));
+  }
+
   void pixel(const float* values, std::size_t px, float* out, Scratch& s) const {
     const int32_t K = axis_.bins;
     pixelSignal(values, shape_.axis.bins, shape_.channels, p_.common, s.signal);
@@ -274,17 +295,13 @@ class SpadStream final : public SensorStream {
                    s.resampled, s.flux);
     Rng rng(options_.seed, pixelStream(kSpadStreamTag, px));
     const auto N = static_cast<uint64_t>(p_.cycles);
-    if (p_.mode == SpadMode::Synchronous) {
-      detail::firstPhotonHistogram(s.flux, N, rng, s.firstPhoton, s.h);
-    } else if (p_.afterpulse_probability > 0.0) {
-      // Afterpulses correlate the bins: the exact event engine draws the pixel.
+    if (needsEngine(s.flux)) {
+      // Multi-stop TDCs, dead time past the cycle's end and afterpulses
+      // correlate bins and cycles: the exact event engine draws the pixel.
       s.h.assign(static_cast<std::size_t>(K), 0.0);
-      detail::DetectorLaws laws;
-      laws.deadBins = deadBins_;
-      laws.stops = 0;
-      laws.afterpulses.mean = p_.afterpulse_probability;
-      laws.afterpulses.delays_bins = {p_.afterpulse_delay_s / axis_.bin_width_s};
-      detail::spadEvents(s.flux, N, laws, rng, s.h);
+      detail::spadEvents(s.flux, N, laws_, rng, s.h);
+    } else if (p_.mode == SpadMode::Synchronous) {
+      detail::firstPhotonHistogram(s.flux, N, rng, s.firstPhoton, s.h);
     } else {
       const std::vector<double> m = freeRunningProbabilities(s.flux, deadBins_);
       s.h.resize(static_cast<std::size_t>(K));
@@ -323,6 +340,7 @@ class SpadStream final : public SensorStream {
   const TimeAxis axis_;
   const BinKernel kernel_;
   const int32_t deadBins_;
+  const detail::DetectorLaws laws_;
   const std::vector<std::array<int32_t, 2>> plotted_;
   std::vector<std::vector<float>> histograms_;
   const SpadPixelMaps maps_;

@@ -33,6 +33,12 @@ bool later(const Event& a, const Event& b) { return b.at < a.at; }
 
 }  // namespace
 
+bool deadTimeEndsInItsCycle(const std::vector<double>& flux, int32_t deadBins) {
+  auto last = static_cast<int64_t>(flux.size()) - 1;
+  while (last >= 0 && !(flux[last] > 0.0)) --last;
+  return last + deadBins < static_cast<int64_t>(flux.size());
+}
+
 SpadDetector::SpadDetector(const std::vector<double>& flux, const DetectorLaws& laws,
                            uint64_t cycles)
     : flux_(flux),
@@ -54,14 +60,12 @@ SpadDetector::SpadDetector(const std::vector<double>& flux, const DetectorLaws& 
   }
   TOFSIM_CHECK(weights > 0.0);
   for (double& w : laws_.afterpulses.weights) w /= weights;
-  int32_t lastLit = -1;
   for (int32_t i = 0; i < K_; ++i) {
     TOFSIM_CHECK(flux[i] >= 0.0);
     cum_[i + 1] = cum_[i] + flux[i];
-    if (flux[i] > 0.0) lastLit = i;
   }
   quietAfterStops_ =
-      !ap.on() && !laws.everyAvalanche && static_cast<int64_t>(lastLit) + laws.deadBins < K_;
+      !ap.on() && !laws.everyAvalanche && deadTimeEndsInItsCycle(flux, laws.deadBins);
 }
 
 Event SpadDetector::next(Rng& rng) {

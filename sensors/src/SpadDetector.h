@@ -66,6 +66,10 @@ struct DetectorLaws {
   bool everyAvalanche = false;
 };
 
+/// No bin with flux whose dead time runs into the next cycle: then avalanches
+/// after a cycle's last stop cannot change a later cycle (without afterpulses).
+bool deadTimeEndsInItsCycle(const std::vector<double>& flux, int32_t deadBins);
+
 /// One pixel's detector over `cycles` laser cycles, flux_i expected primaries
 /// per cycle in bin i. A driver repeats: e = next(rng); stop when
 /// e.at.cycle == cycles; fire(e, rng, h); it may inject() events from other

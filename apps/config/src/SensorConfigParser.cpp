@@ -126,6 +126,9 @@ SpadParams SensorConfigType<SpadParams>::parse(const ConfigNode& n) {
       }
     }
   });
+  if (p.mode == SpadMode::FreeRunning && p.tdc_stops != 1) {
+    n.failKey("tdc_stops", "is for `mode: synchronous` (free_running records every detection)");
+  }
   if (p.hot_pixel_fraction > 0.0 && !(p.hot_pixel_rate_per_s > 0.0)) {
     n.failKey("hot_pixel_rate", "must be > 0 when hot_pixel_fraction is set");
   }

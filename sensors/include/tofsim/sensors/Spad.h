@@ -61,7 +61,13 @@ struct SpadParams {
   double pde = 0.3;                    ///< photon detection efficiency, [0, 1]
   double ambient_rate_per_s = 0.0;     ///< ambient photons arriving at the pixel, 1/s (PDE applies)
   double dark_count_rate_per_s = 0.0;  ///< dark counts, 1/s
-  double dead_time_s = 0.0;            ///< free-running: non-paralysable, rounded to TDC bins
+  /// Dead time after every avalanche (recorded or not), non-paralysable,
+  /// rounded to TDC bins; it may run into later cycles (synchronous: the
+  /// cycles it spans are lost after a detection).
+  double dead_time_s = 0.0;
+  /// Synchronous: detections the TDC records per cycle (a multi-stop TDC),
+  /// each followed by the dead time; 0: every one. 1: first photon.
+  int64_t tdc_stops = 1;
   /// Time gating: the detector is armed only in [gate_start, gate_start +
   /// gate_width) of each cycle (times as the TDC's), so light, ambient and
   /// dark counts outside cause no detection and no pile-up; a bin the gate
