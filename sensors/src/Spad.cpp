@@ -41,8 +41,10 @@ void checkParams(const SpadParams& p) {
   TOFSIM_CHECK(p.dead_time_s >= 0.0 && p.tdc_stops >= 0);
   TOFSIM_CHECK(p.gate_width_s >= 0.0);
   TOFSIM_CHECK(p.afterpulse_probability >= 0.0 && p.afterpulse_probability <= 1.0);
-  TOFSIM_CHECK(p.afterpulse_probability == 0.0 || p.mode == SpadMode::FreeRunning);
-  TOFSIM_CHECK(p.afterpulse_delay_s > 0.0);
+  TOFSIM_CHECK(!p.afterpulse_delays_s.empty());
+  for (double d : p.afterpulse_delays_s) TOFSIM_CHECK(d > 0.0);
+  TOFSIM_CHECK(p.afterpulse_weights.empty() ||
+               p.afterpulse_weights.size() == p.afterpulse_delays_s.size());
   if (p.irf.present()) {
     TOFSIM_CHECK(p.irf.sample_width_s > 0.0);
     TOFSIM_CHECK(p.pulse_fwhm_s == 0.0 && p.jitter_fwhm_s == 0.0 && p.jitter_tail_fraction == 0.0);
@@ -82,8 +84,16 @@ detail::DetectorLaws detectorLaws(const SpadParams& p, const TimeAxis& axis, int
   detail::DetectorLaws laws;
   laws.deadBins = deadBins;
   laws.stops = p.mode == SpadMode::Synchronous ? p.tdc_stops : 0;
-  laws.afterpulses.mean = p.afterpulse_probability;
-  laws.afterpulses.delays_bins = {p.afterpulse_delay_s / axis.bin_width_s};
+  detail::AfterpulseLaw& ap = laws.afterpulses;
+  ap.count = p.afterpulse_count == SpadAfterpulseCount::Poisson
+                 ? detail::AfterpulseLaw::Count::Poisson
+                 : detail::AfterpulseLaw::Count::Bernoulli;
+  ap.mean = p.afterpulse_probability;
+  ap.delays_bins.clear();
+  for (double d : p.afterpulse_delays_s) ap.delays_bins.push_back(d / axis.bin_width_s);
+  ap.weights = p.afterpulse_weights;
+  if (ap.weights.empty()) ap.weights.assign(ap.delays_bins.size(), 1.0);
+  ap.reset = p.afterpulse_traps == SpadAfterpulseTraps::Reset;
   return laws;
 }
 

@@ -216,7 +216,7 @@ TEST(SpadEventEngineTest, TheSpadModelsAfterpulsesAreTheEngines) {
   p.pde = 1.0;
   p.dead_time_s = 5 * w;
   p.afterpulse_probability = 0.5;
-  p.afterpulse_delay_s = 30 * w;
+  p.afterpulse_delays_s = {30 * w};
   const std::vector<SensorOutput> outs = runSpad(v, p, 5);
   const SensorOutput& c = test::array(outs, "spad_counts");
   std::vector<double> h(400, 0.0);

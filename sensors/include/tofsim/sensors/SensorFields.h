@@ -66,6 +66,11 @@ inline constexpr auto kStreakFields = std::tuple{
 inline constexpr std::array<Name<SpadMode>, 2> kSpadModeNames{
     {{"synchronous", SpadMode::Synchronous}, {"free_running", SpadMode::FreeRunning}}};
 
+inline constexpr std::array<Name<SpadAfterpulseCount>, 2> kAfterpulseCountNames{
+    {{"bernoulli", SpadAfterpulseCount::Bernoulli}, {"poisson", SpadAfterpulseCount::Poisson}}};
+inline constexpr std::array<Name<SpadAfterpulseTraps>, 2> kAfterpulseTrapsNames{
+    {{"reset", SpadAfterpulseTraps::Reset}, {"keep", SpadAfterpulseTraps::Keep}}};
+
 inline constexpr auto kSpadFields = std::tuple{
     Custom{"preset", "string", "", "none", "-", "device preset: its published values are the defaults of the other keys (bins included), each explicit key wins (see \"Device presets\" above)"},
     Field{"mode", &SpadParams::mode, Choice<SpadMode>{kSpadModeNames},
@@ -95,9 +100,13 @@ inline constexpr auto kSpadFields = std::tuple{
     Field{"gate_width", &SpadParams::gate_width_s, Duration{kNonNegative},
           {.json = "gate_width_s", .doc = "... for this long; no detection, no pile-up and no dark count outside (a bin the edge crosses counts its armed fraction); 0: ungated. NLOS: gate out the laser spot's first bounce"}},
     Field{"afterpulse_probability", &SpadParams::afterpulse_probability, Number{kFraction},
-          {.json = "afterpulse_probability", .doc = "`free_running`: probability that an avalanche leaves a trapped carrier whose release is an afterpulse (the exact event engine draws such pixels); 0: none"}},
-    Field{"afterpulse_delay", &SpadParams::afterpulse_delay_s, Duration{kPositive},
-          {.json = "afterpulse_delay_s", .doc = "mean of the exponential release delay, counted from the end of the dead time"}},
+          {.json = "afterpulse_probability", .doc = "afterpulses per avalanche: the probability p of one (`bernoulli`) or the mean mu (`poisson`); 0: none. The exact event engine draws such pixels"}},
+    Field{"afterpulse_count", &SpadParams::afterpulse_count, Choice<SpadAfterpulseCount>{kAfterpulseCountNames},
+          {.json = "afterpulse_count", .doc = "law of the number of afterpulses per avalanche: `bernoulli` (p) or `poisson` (mu)"}},
+    Custom{"afterpulse_delay", "duration or list of durations", "> 0", "10 ns", "s", "mean release delay after the end of the dead time: one exponential, or a mixture of exponentials with these means"},
+    Custom{"afterpulse_weights", "list of numbers", ">= 0", "equal", "-", "weights of the mixture's exponentials (one per `afterpulse_delay`, any scale)"},
+    Field{"afterpulse_traps", &SpadParams::afterpulse_traps, Choice<SpadAfterpulseTraps>{kAfterpulseTrapsNames},
+          {.json = "afterpulse_traps", .doc = "`reset`: each avalanche empties the traps of the ones before (the renewal model); `keep`: every release stays pending, lost only if it comes while the detector is dead"}},
     Custom{"irf", "mapping", "", "none (pulse and jitter)", "-", "measured instrument response in place of `pulse_fwhm` and `jitter_*`: `file` (.npy float32, or CSV time,value), `bin_width` (.npy), `t0` (peak, centroid or a time), `floor` (see \"Measured instrument response\" above)"},
     Field{"fpn_seed", &SpadParams::fpn_seed, IntegerIn{0, 4294967295LL},
           {.json = "fpn_seed", .doc = "seed of the array's fixed pattern (below), separate from the noise seed: the same device under every noise seed"}},

@@ -20,6 +20,8 @@
 namespace tofsim::sensors {
 
 enum class SpadMode { Synchronous, FreeRunning };
+enum class SpadAfterpulseCount { Bernoulli, Poisson };
+enum class SpadAfterpulseTraps { Reset, Keep };
 
 /// A measured instrument response (the config's `irf:`), in place of the
 /// Gaussian pulse and jitter: the delay from a photon's arrival to its
@@ -74,12 +76,19 @@ struct SpadParams {
   /// edge crosses is armed for its covered fraction. 0 width: always armed.
   double gate_start_s = 0.0;
   double gate_width_s = 0.0;
-  /// Free-running afterpulsing: each avalanche leaves a trapped carrier with
-  /// this probability, released an Exp(afterpulse_delay) time after the end of
-  /// the hold-off as a detection unless a photon comes first (the exact event
-  /// engine, SpadEventEngine.h, draws these pixels). 0: none.
+  /// Afterpulsing (both modes; the exact event engine, SpadEventEngine.h,
+  /// draws these pixels): each avalanche fills a Bernoulli(p) or Poisson(mu)
+  /// number of traps (afterpulse_count, p or mu = afterpulse_probability),
+  /// each released a delay after the end of its dead time, from a mixture of
+  /// exponentials of means afterpulse_delays_s and weights afterpulse_weights
+  /// (empty: equal); a release while the detector is live is an avalanche
+  /// (recorded if the TDC has a stop left), one while it is dead is lost.
+  /// Reset: each avalanche empties the traps of the ones before. 0: none.
   double afterpulse_probability = 0.0;
-  double afterpulse_delay_s = 10e-9;
+  SpadAfterpulseCount afterpulse_count = SpadAfterpulseCount::Bernoulli;
+  std::vector<double> afterpulse_delays_s = {10e-9};
+  std::vector<double> afterpulse_weights;
+  SpadAfterpulseTraps afterpulse_traps = SpadAfterpulseTraps::Reset;
   SpadIrf irf;  ///< measured response; when present, pulse and jitter (all 0) are not used
   /// Array non-uniformity, a fixed pattern drawn from fpn_seed alone (not the
   /// noise seed: the same device under every noise seed), per pixel (y, x):
