@@ -7,6 +7,7 @@
 
 #include "ParallelPixels.h"
 #include "PeakDepth.h"
+#include "SpadAfterpulseFlux.h"
 #include "SpadEstimators.h"
 #include "SpadEventEngine.h"
 #include "SpadSampling.h"
@@ -277,7 +278,7 @@ class SpadStream final : public SensorStream {
 
  private:
   struct Scratch {
-    std::vector<double> signal, resampled, flux, h, lossless;
+    std::vector<double> signal, resampled, flux, fastFlux, h, lossless;
     detail::FirstPhotonScratch firstPhoton;
     SpadEstimator::Scratch estimates;
   };
@@ -291,9 +292,18 @@ class SpadStream final : public SensorStream {
 
   // Where the fast draws are not exact: the first-photon law needs one stop,
   // no afterpulse and a detector live again at the next pulse; the
-  // free-running binomials (exact marginals) no afterpulse.
+  // free-running binomials (exact marginals) no afterpulse. `flux` is the
+  // one the fast draws would use (with `engine: fast`, afterpulses in it).
+  // `engine: fast` takes afterpulses to first order when free-running only:
+  // a synchronous avalanche's releases follow the stop it made, and extra flux
+  // on the first-photon law cannot know that (SpadFastAfterpulseTest).
+  bool firstOrderAfterpulses() const {
+    return p_.engine == SpadEngine::Fast && p_.mode == SpadMode::FreeRunning;
+  }
+
   bool needsEngine(const std::vector<double>& flux) const {
-    if (laws_.afterpulses.on()) return true;
+    if (p_.engine == SpadEngine::Exact) return true;
+    if (laws_.afterpulses.on() && !firstOrderAfterpulses()) return true;
     return p_.mode == SpadMode::Synchronous &&
            (p_.tdc_stops != 1 || !detail::deadTimeEndsInItsCycle(flux, deadBins_));
   }
@@ -305,15 +315,20 @@ class SpadStream final : public SensorStream {
                    s.resampled, s.flux);
     Rng rng(options_.seed, pixelStream(kSpadStreamTag, px));
     const auto N = static_cast<uint64_t>(p_.cycles);
-    if (needsEngine(s.flux)) {
+    const bool firstOrder = firstOrderAfterpulses() && laws_.afterpulses.on();
+    const std::vector<double>& fast =
+        firstOrder
+            ? (s.fastFlux = detail::firstOrderAfterpulseFlux(s.flux, deadBins_, laws_.afterpulses))
+            : s.flux;
+    if (needsEngine(fast)) {
       // Multi-stop TDCs, dead time past the cycle's end and afterpulses
       // correlate bins and cycles: the exact event engine draws the pixel.
       s.h.assign(static_cast<std::size_t>(K), 0.0);
       detail::spadEvents(s.flux, N, laws_, rng, s.h);
     } else if (p_.mode == SpadMode::Synchronous) {
-      detail::firstPhotonHistogram(s.flux, N, rng, s.firstPhoton, s.h);
+      detail::firstPhotonHistogram(fast, N, rng, s.firstPhoton, s.h);
     } else {
-      const std::vector<double> m = freeRunningProbabilities(s.flux, deadBins_);
+      const std::vector<double> m = freeRunningProbabilities(fast, deadBins_);
       s.h.resize(static_cast<std::size_t>(K));
       for (int32_t i = 0; i < K; ++i) s.h[i] = static_cast<double>(rng.binomial(N, m[i]));
     }

@@ -71,6 +71,9 @@ inline constexpr std::array<Name<SpadAfterpulseCount>, 2> kAfterpulseCountNames{
 inline constexpr std::array<Name<SpadAfterpulseTraps>, 2> kAfterpulseTrapsNames{
     {{"reset", SpadAfterpulseTraps::Reset}, {"keep", SpadAfterpulseTraps::Keep}}};
 
+inline constexpr std::array<Name<SpadEngine>, 3> kSpadEngineNames{
+    {{"auto", SpadEngine::Auto}, {"exact", SpadEngine::Exact}, {"fast", SpadEngine::Fast}}};
+
 inline constexpr auto kSpadFields = std::tuple{
     Custom{"preset", "string", "", "none", "-", "device preset: its published values are the defaults of the other keys (bins included), each explicit key wins (see \"Device presets\" above)"},
     Field{"mode", &SpadParams::mode, Choice<SpadMode>{kSpadModeNames},
@@ -107,6 +110,8 @@ inline constexpr auto kSpadFields = std::tuple{
     Custom{"afterpulse_weights", "list of numbers", ">= 0", "equal", "-", "weights of the mixture's exponentials (one per `afterpulse_delay`, any scale)"},
     Field{"afterpulse_traps", &SpadParams::afterpulse_traps, Choice<SpadAfterpulseTraps>{kAfterpulseTrapsNames},
           {.json = "afterpulse_traps", .doc = "`reset`: each avalanche empties the traps of the ones before (the renewal model); `keep`: every release stays pending, lost only if it comes while the detector is dead"}},
+    Field{"engine", &SpadParams::engine, Choice<SpadEngine>{kSpadEngineNames},
+          {.json = "engine", .doc = "`auto`: the exact event engine for the pixels an effect needs it for (multi-stop, dead time past the cycle, afterpulses), the fast draws elsewhere; `exact`: the engine for every pixel; `fast`: afterpulses to first order as extra flux on the fast draws (see \"Afterpulsing\" above)"}},
     Custom{"irf", "mapping", "", "none (pulse and jitter)", "-", "measured instrument response in place of `pulse_fwhm` and `jitter_*`: `file` (.npy float32, or CSV time,value), `bin_width` (.npy), `t0` (peak, centroid or a time), `floor` (see \"Measured instrument response\" above)"},
     Field{"fpn_seed", &SpadParams::fpn_seed, IntegerIn{0, 4294967295LL},
           {.json = "fpn_seed", .doc = "seed of the array's fixed pattern (below), separate from the noise seed: the same device under every noise seed"}},

@@ -22,6 +22,7 @@ namespace tofsim::sensors {
 enum class SpadMode { Synchronous, FreeRunning };
 enum class SpadAfterpulseCount { Bernoulli, Poisson };
 enum class SpadAfterpulseTraps { Reset, Keep };
+enum class SpadEngine { Auto, Exact, Fast };
 
 /// A measured instrument response (the config's `irf:`), in place of the
 /// Gaussian pulse and jitter: the delay from a photon's arrival to its
@@ -89,6 +90,12 @@ struct SpadParams {
   std::vector<double> afterpulse_delays_s = {10e-9};
   std::vector<double> afterpulse_weights;
   SpadAfterpulseTraps afterpulse_traps = SpadAfterpulseTraps::Reset;
+  /// Which draws: Auto, the exact event engine where an effect needs it
+  /// (multi-stop, dead time past the cycle, afterpulses), the fast draws
+  /// elsewhere; Exact, the engine for every pixel (the reference); Fast,
+  /// afterpulses to first order as extra flux on the fast draws
+  /// (SpadAfterpulseFlux.h), the engine only for the other effects.
+  SpadEngine engine = SpadEngine::Auto;
   SpadIrf irf;  ///< measured response; when present, pulse and jitter (all 0) are not used
   /// Array non-uniformity, a fixed pattern drawn from fpn_seed alone (not the
   /// noise seed: the same device under every noise seed), per pixel (y, x):
