@@ -8,6 +8,7 @@
 #include "ParallelPixels.h"
 #include "PeakDepth.h"
 #include "SpadAfterpulseFlux.h"
+#include "SpadCrosstalk.h"
 #include "SpadEstimators.h"
 #include "SpadEventEngine.h"
 #include "SpadSampling.h"
@@ -46,6 +47,11 @@ void checkParams(const SpadParams& p) {
   for (double d : p.afterpulse_delays_s) TOFSIM_CHECK(d > 0.0);
   TOFSIM_CHECK(p.afterpulse_weights.empty() ||
                p.afterpulse_weights.size() == p.afterpulse_delays_s.size());
+  TOFSIM_CHECK(p.crosstalk_probability >= 0.0 && p.crosstalk_probability <= 1.0);
+  TOFSIM_CHECK(p.crosstalk_delay_s >= 0.0);
+  // A delayed arrival may fall outside the gate: not modelled (a config error).
+  TOFSIM_CHECK(p.crosstalk_probability == 0.0 || p.crosstalk_delay_s == 0.0 ||
+               p.gate_width_s == 0.0);
   if (p.irf.present()) {
     TOFSIM_CHECK(p.irf.sample_width_s > 0.0);
     TOFSIM_CHECK(p.pulse_fwhm_s == 0.0 && p.jitter_fwhm_s == 0.0 && p.jitter_tail_fraction == 0.0);
@@ -165,6 +171,12 @@ class SpadStream final : public SensorStream {
         maps_(spadPixelMaps(p, shape.height, shape.width)),
         estimator_(kernel_, axis_, p.return_threshold_sigma) {
     checkParams(p);
+    if (p.crosstalk_probability > 0.0) {
+      // A batch of an image row (at least 256 pixels) between look-aheads.
+      crosstalk_ = std::make_unique<detail::SpadCrosstalk>(
+          p, axis_.bins, axis_.bin_width_s, deadBins_, shape.width, shape.height,
+          std::max<std::size_t>(256, static_cast<std::size_t>(shape.width)));
+    }
     checkChannelSelection(p.common.channel, shape.channels);
     const std::size_t HW = shape.pixelCount();
     const float nan = std::numeric_limits<float>::quiet_NaN();
@@ -195,33 +207,26 @@ class SpadStream final : public SensorStream {
 
   void consume(const PixelSpan& span) override {
     TOFSIM_CHECK(span.firstPixel == next_ && next_ + span.pixelCount <= shape_.pixelCount());
-    const auto K = static_cast<std::size_t>(axis_.bins);
-    float* counts = nullptr;
-    if (writer_) {
-      chunk_.resize(span.pixelCount * K);
-      counts = chunk_.data();
-    } else {
-      counts = counts_.data.data() + span.firstPixel * K;
+    if (crosstalk_) {
+      consumeWithCrosstalk(span);
+      next_ += span.pixelCount;
+      return;
     }
+    const auto K = static_cast<std::size_t>(axis_.bins);
+    float* counts = countsOf(span.firstPixel, span.pixelCount);
     detail::parallelPixels(span.pixelCount, options_.threads, [&](std::size_t b, std::size_t e) {
       Scratch scratch;
       for (std::size_t i = b; i < e; ++i) {
         pixel(span.volume + i * shape_.pixelFloats(), span.firstPixel + i, counts + i * K, scratch);
       }
     });
-    for (std::size_t k = 0; k < plotted_.size(); ++k) {
-      const std::size_t px =
-          static_cast<std::size_t>(plotted_[k][1]) * shape_.width + plotted_[k][0];
-      if (px < span.firstPixel || px >= span.firstPixel + span.pixelCount) continue;
-      const float* h = counts + (px - span.firstPixel) * K;
-      histograms_[k].assign(h, h + K);
-    }
-    if (writer_) writer_->append(chunk_.data(), chunk_.size());
+    emit(span.firstPixel, span.pixelCount, counts);
     next_ += span.pixelCount;
   }
 
   std::vector<SensorOutput> finish(const Image*) override {
     TOFSIM_CHECK(next_ == shape_.pixelCount());
+    TOFSIM_CHECK(!crosstalk_ || received_ == next_);
     if (writer_) writer_->close();
     const int32_t H = shape_.height, W = shape_.width;
     std::vector<SensorOutput> outputs;
@@ -308,11 +313,76 @@ class SpadStream final : public SensorStream {
            (p_.tdc_stops != 1 || !detail::deadTimeEndsInItsCycle(flux, deadBins_));
   }
 
+  // Where the counts of pixels first .. first + n - 1 go before emit().
+  float* countsOf(std::size_t first, std::size_t n) {
+    const auto K = static_cast<std::size_t>(axis_.bins);
+    if (!writer_) return counts_.data.data() + first * K;
+    chunk_.resize(n * K);
+    return chunk_.data();
+  }
+
+  // The plotted histograms among pixels first .. first + n - 1, and the
+  // counts to the writer.
+  void emit(std::size_t first, std::size_t n, const float* counts) {
+    const auto K = static_cast<std::size_t>(axis_.bins);
+    for (std::size_t k = 0; k < plotted_.size(); ++k) {
+      const std::size_t px =
+          static_cast<std::size_t>(plotted_[k][1]) * shape_.width + plotted_[k][0];
+      if (px < first || px >= first + n) continue;
+      const float* h = counts + (px - first) * K;
+      histograms_[k].assign(h, h + K);
+    }
+    if (writer_) writer_->append(chunk_.data(), n * K);
+  }
+
+  // Crosstalk (SpadCrosstalk.h): each batch of the span's pixels is sent
+  // (own flux, then the profile the neighbours receive), then every pixel
+  // whose neighbours have all been sent is drawn, its neighbours' crosstalk
+  // added to its flux; the last span draws the rest.
+  void consumeWithCrosstalk(const PixelSpan& span) {
+    const auto K = static_cast<std::size_t>(axis_.bins);
+    for (std::size_t done = 0; done < span.pixelCount;) {
+      const std::size_t first = span.firstPixel + done;
+      const std::size_t n = std::min(crosstalk_->batch(), span.pixelCount - done);
+      detail::parallelPixels(n, options_.threads, [&](std::size_t b, std::size_t e) {
+        Scratch scratch;
+        for (std::size_t i = b; i < e; ++i) {
+          pixelFlux(span.volume + (done + i) * shape_.pixelFloats(), first + i,
+                    crosstalk_->flux(first + i), scratch);
+          crosstalk_->send(first + i);
+        }
+      });
+      done += n;
+      const std::size_t end = crosstalk_->receivable(first + n);
+      const std::size_t from = received_, count = end - from;
+      if (count == 0) continue;
+      float* counts = countsOf(from, count);
+      detail::parallelPixels(count, options_.threads, [&](std::size_t b, std::size_t e) {
+        Scratch scratch;
+        for (std::size_t i = b; i < e; ++i) {
+          crosstalk_->receive(from + i, scratch.flux);
+          drawPixel(from + i, counts + i * K, scratch);
+        }
+      });
+      emit(from, count, counts);
+      received_ = end;
+    }
+  }
+
   void pixel(const float* values, std::size_t px, float* out, Scratch& s) const {
-    const int32_t K = axis_.bins;
+    pixelFlux(values, px, s.flux, s);
+    drawPixel(px, out, s);
+  }
+
+  void pixelFlux(const float* values, std::size_t px, std::vector<double>& flux, Scratch& s) const {
     pixelSignal(values, shape_.axis.bins, shape_.channels, p_.common, s.signal);
     fluxFromSignal(s.signal, shape_.axis, p_, maps_.pde[px], maps_.dcr_per_s[px], axis_, kernel_,
-                   s.resampled, s.flux);
+                   s.resampled, flux);
+  }
+
+  // The pixel's histogram from its flux s.flux, and its estimates.
+  void drawPixel(std::size_t px, float* out, Scratch& s) const {
+    const int32_t K = axis_.bins;
     Rng rng(options_.seed, pixelStream(kSpadStreamTag, px));
     const auto N = static_cast<uint64_t>(p_.cycles);
     const bool firstOrder = firstOrderAfterpulses() && laws_.afterpulses.on();
@@ -373,6 +443,8 @@ class SpadStream final : public SensorStream {
   SensorOutput counts_;
   std::unique_ptr<ArrayWriter> writer_;
   std::vector<float> chunk_;
+  std::unique_ptr<detail::SpadCrosstalk> crosstalk_;  ///< null: no crosstalk
+  std::size_t received_ = 0;                          ///< pixels drawn, with crosstalk
   // Written by pixel() from several threads, each pixel by one only.
   mutable std::vector<float> depthPeak_, depthCoates_, intensity_, depthMatched_, confidence_,
       returns_;

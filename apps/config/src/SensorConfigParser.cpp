@@ -177,6 +177,12 @@ SpadParams SensorConfigType<SpadParams>::parse(const ConfigNode& n) {
   if (p.hot_pixel_fraction > 0.0 && !(p.hot_pixel_rate_per_s > 0.0)) {
     n.failKey("hot_pixel_rate", "must be > 0 when hot_pixel_fraction is set");
   }
+  // A delayed arrival may land outside the gate, which the fast path does not follow.
+  if (p.crosstalk_probability > 0.0 && p.crosstalk_delay_s > 0.0 && p.gate_width_s > 0.0) {
+    n.failKey("crosstalk_delay",
+              "delayed crosstalk with a gate (gate_width) is not modelled: "
+              "use prompt crosstalk (0) or no gate");
+  }
   return p;
 }
 

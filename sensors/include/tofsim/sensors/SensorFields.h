@@ -73,6 +73,8 @@ inline constexpr std::array<Name<SpadAfterpulseTraps>, 2> kAfterpulseTrapsNames{
 
 inline constexpr std::array<Name<SpadEngine>, 3> kSpadEngineNames{
     {{"auto", SpadEngine::Auto}, {"exact", SpadEngine::Exact}, {"fast", SpadEngine::Fast}}};
+inline constexpr std::array<Name<CrosstalkNeighbours>, 2> kCrosstalkNeighbourNames{
+    {{"4", CrosstalkNeighbours::Four}, {"8", CrosstalkNeighbours::Eight}}};
 
 inline constexpr auto kSpadFields = std::tuple{
     Custom{"preset", "string", "", "none", "-", "device preset: its published values are the defaults of the other keys (bins included), each explicit key wins (see \"Device presets\" above)"},
@@ -112,6 +114,12 @@ inline constexpr auto kSpadFields = std::tuple{
           {.json = "afterpulse_traps", .doc = "`reset`: each avalanche empties the traps of the ones before (the renewal model); `keep`: every release stays pending, lost only if it comes while the detector is dead"}},
     Field{"engine", &SpadParams::engine, Choice<SpadEngine>{kSpadEngineNames},
           {.json = "engine", .doc = "`auto`: the exact event engine for the pixels an effect needs it for (multi-stop, dead time past the cycle, afterpulses), the fast draws elsewhere; `exact`: the engine for every pixel; `fast`: afterpulses to first order as extra flux on the fast draws (see \"Afterpulsing\" above)"}},
+    Field{"crosstalk_probability", &SpadParams::crosstalk_probability, Number{kFraction},
+          {.json = "crosstalk_probability", .doc = "probability that an avalanche triggers one in each neighbouring pixel (first order, see \"Crosstalk\" above); 0: none"}},
+    Field{"crosstalk_neighbours", &SpadParams::crosstalk_neighbours, Choice<CrosstalkNeighbours>{kCrosstalkNeighbourNames},
+          {.json = "crosstalk_neighbours", .doc = "`4` (edge neighbours) or `8` (and the diagonal ones), each with `crosstalk_probability`"}},
+    Field{"crosstalk_delay", &SpadParams::crosstalk_delay_s, Duration{kNonNegative},
+          {.json = "crosstalk_delay_s", .doc = "0: prompt (the neighbour fires in the same bin); else the mean of an exponential delay"}},
     Custom{"irf", "mapping", "", "none (pulse and jitter)", "-", "measured instrument response in place of `pulse_fwhm` and `jitter_*`: `file` (.npy float32, or CSV time,value), `bin_width` (.npy), `t0` (peak, centroid or a time), `floor` (see \"Measured instrument response\" above)"},
     Field{"fpn_seed", &SpadParams::fpn_seed, IntegerIn{0, 4294967295LL},
           {.json = "fpn_seed", .doc = "seed of the array's fixed pattern (below), separate from the noise seed: the same device under every noise seed"}},

@@ -24,6 +24,10 @@ enum class SpadAfterpulseCount { Bernoulli, Poisson };
 enum class SpadAfterpulseTraps { Reset, Keep };
 enum class SpadEngine { Auto, Exact, Fast };
 
+/// The neighbours an avalanche can trigger by crosstalk: the 4 sharing an
+/// edge, or the 8 sharing an edge or a corner (each with the same probability).
+enum class CrosstalkNeighbours { Four = 4, Eight = 8 };
+
 /// A measured instrument response (the config's `irf:`), in place of the
 /// Gaussian pulse and jitter: the delay from a photon's arrival to its
 /// timestamp is distributed as `values`, constant over each sample (the
@@ -96,6 +100,13 @@ struct SpadParams {
   /// afterpulses to first order as extra flux on the fast draws
   /// (SpadAfterpulseFlux.h), the engine only for the other effects.
   SpadEngine engine = SpadEngine::Auto;
+  /// Crosstalk: each avalanche triggers one in each of its neighbours with
+  /// this probability, after a delay (0: prompt, in the same bin; else
+  /// exponential with this mean); 0: none. Drawn on the fast path to first
+  /// order, from the neighbours' expected avalanches (SpadCrosstalk.h).
+  double crosstalk_probability = 0.0;
+  CrosstalkNeighbours crosstalk_neighbours = CrosstalkNeighbours::Four;
+  double crosstalk_delay_s = 0.0;
   SpadIrf irf;  ///< measured response; when present, pulse and jitter (all 0) are not used
   /// Array non-uniformity, a fixed pattern drawn from fpn_seed alone (not the
   /// noise seed: the same device under every noise seed), per pixel (y, x):
@@ -120,7 +131,8 @@ struct SpadParams {
 /// Expected detections per cycle in each TDC bin of pixel (y, x) if nothing
 /// were lost to pile-up or dead time: PDE * (signal * pulse * jitter + ambient)
 /// + dark (signal * IRF with an IRF; the pixel's PDE and DCR of its fixed
-/// pattern). `axis` is the TDC axis (resolveBins of params.bins).
+/// pattern). `axis` is the TDC axis (resolveBins of params.bins). The
+/// pixel's own light only: its neighbours' crosstalk is not in it.
 void spadFluxPerCycle(const TransientVolume& volume, const SpadParams& params, const TimeAxis& axis,
                       int32_t y, int32_t x, std::vector<double>& flux);
 
