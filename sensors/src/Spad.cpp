@@ -7,6 +7,7 @@
 
 #include "ParallelPixels.h"
 #include "PeakDepth.h"
+#include "SpadAfterpulseFlux.h"
 #include "SpadCrosstalk.h"
 #include "SpadEstimators.h"
 #include "SpadEventEngine.h"
@@ -39,11 +40,13 @@ void checkParams(const SpadParams& p) {
   TOFSIM_CHECK(p.jitter_tail_fraction >= 0.0 && p.jitter_tail_fraction <= 1.0);
   TOFSIM_CHECK(p.pde >= 0.0 && p.pde <= 1.0);
   TOFSIM_CHECK(p.ambient_rate_per_s >= 0.0 && p.dark_count_rate_per_s >= 0.0);
-  TOFSIM_CHECK(p.dead_time_s >= 0.0);
+  TOFSIM_CHECK(p.dead_time_s >= 0.0 && p.tdc_stops >= 0);
   TOFSIM_CHECK(p.gate_width_s >= 0.0);
   TOFSIM_CHECK(p.afterpulse_probability >= 0.0 && p.afterpulse_probability <= 1.0);
-  TOFSIM_CHECK(p.afterpulse_probability == 0.0 || p.mode == SpadMode::FreeRunning);
-  TOFSIM_CHECK(p.afterpulse_delay_s > 0.0);
+  TOFSIM_CHECK(!p.afterpulse_delays_s.empty());
+  for (double d : p.afterpulse_delays_s) TOFSIM_CHECK(d > 0.0);
+  TOFSIM_CHECK(p.afterpulse_weights.empty() ||
+               p.afterpulse_weights.size() == p.afterpulse_delays_s.size());
   TOFSIM_CHECK(p.crosstalk_probability >= 0.0 && p.crosstalk_probability <= 1.0);
   TOFSIM_CHECK(p.crosstalk_delay_s >= 0.0);
   // A delayed arrival may fall outside the gate: not modelled (a config error).
@@ -80,6 +83,25 @@ void fluxFromSignal(const std::vector<double>& signal, const TimeAxis& render, c
       flux[i] *= std::max(0.0, std::min(b1, g1) - std::max(b0, g0)) / axis.bin_width_s;
     }
   }
+}
+
+// The event engine's laws of the model's detector (free-running: every
+// detection recorded).
+detail::DetectorLaws detectorLaws(const SpadParams& p, const TimeAxis& axis, int32_t deadBins) {
+  detail::DetectorLaws laws;
+  laws.deadBins = deadBins;
+  laws.stops = p.mode == SpadMode::Synchronous ? p.tdc_stops : 0;
+  detail::AfterpulseLaw& ap = laws.afterpulses;
+  ap.count = p.afterpulse_count == SpadAfterpulseCount::Poisson
+                 ? detail::AfterpulseLaw::Count::Poisson
+                 : detail::AfterpulseLaw::Count::Bernoulli;
+  ap.mean = p.afterpulse_probability;
+  ap.delays_bins.clear();
+  for (double d : p.afterpulse_delays_s) ap.delays_bins.push_back(d / axis.bin_width_s);
+  ap.weights = p.afterpulse_weights;
+  if (ap.weights.empty()) ap.weights.assign(ap.delays_bins.size(), 1.0);
+  ap.reset = p.afterpulse_traps == SpadAfterpulseTraps::Reset;
+  return laws;
 }
 
 SensorOutput image(const std::string& name, int32_t H, int32_t W, std::vector<float> data,
@@ -143,6 +165,7 @@ class SpadStream final : public SensorStream {
         axis_(resolveBins(p.bins, shape.axis)),
         kernel_(spadKernel(p, axis_)),
         deadBins_(static_cast<int32_t>(std::lround(p.dead_time_s / axis_.bin_width_s))),
+        laws_(detectorLaws(p, axis_, deadBins_)),
         plotted_(plotPixels(p.plot_pixels, shape.height, shape.width)),
         histograms_(plotted_.size()),
         maps_(spadPixelMaps(p, shape.height, shape.width)),
@@ -260,7 +283,7 @@ class SpadStream final : public SensorStream {
 
  private:
   struct Scratch {
-    std::vector<double> signal, resampled, flux, h, lossless;
+    std::vector<double> signal, resampled, flux, fastFlux, h, lossless;
     detail::FirstPhotonScratch firstPhoton;
     SpadEstimator::Scratch estimates;
   };
@@ -270,6 +293,24 @@ class SpadStream final : public SensorStream {
     SensorOutput o = image(name, shape_.height, shape_.width, std::move(data), "m", description);
     o.point_cloud = std::move(cloud);
     return o;
+  }
+
+  // Where the fast draws are not exact: the first-photon law needs one stop,
+  // no afterpulse and a detector live again at the next pulse; the
+  // free-running binomials (exact marginals) no afterpulse. `flux` is the
+  // one the fast draws would use (with `engine: fast`, afterpulses in it).
+  // `engine: fast` takes afterpulses to first order when free-running only:
+  // a synchronous avalanche's releases follow the stop it made, and extra flux
+  // on the first-photon law cannot know that (SpadFastAfterpulseTest).
+  bool firstOrderAfterpulses() const {
+    return p_.engine == SpadEngine::Fast && p_.mode == SpadMode::FreeRunning;
+  }
+
+  bool needsEngine(const std::vector<double>& flux) const {
+    if (p_.engine == SpadEngine::Exact) return true;
+    if (laws_.afterpulses.on() && !firstOrderAfterpulses()) return true;
+    return p_.mode == SpadMode::Synchronous &&
+           (p_.tdc_stops != 1 || !detail::deadTimeEndsInItsCycle(flux, deadBins_));
   }
 
   // Where the counts of pixels first .. first + n - 1 go before emit().
@@ -344,15 +385,20 @@ class SpadStream final : public SensorStream {
     const int32_t K = axis_.bins;
     Rng rng(options_.seed, pixelStream(kSpadStreamTag, px));
     const auto N = static_cast<uint64_t>(p_.cycles);
-    if (p_.mode == SpadMode::Synchronous) {
-      detail::firstPhotonHistogram(s.flux, N, rng, s.firstPhoton, s.h);
-    } else if (p_.afterpulse_probability > 0.0) {
-      // Afterpulses correlate the bins: the exact event engine draws the pixel.
+    const bool firstOrder = firstOrderAfterpulses() && laws_.afterpulses.on();
+    const std::vector<double>& fast =
+        firstOrder
+            ? (s.fastFlux = detail::firstOrderAfterpulseFlux(s.flux, deadBins_, laws_.afterpulses))
+            : s.flux;
+    if (needsEngine(fast)) {
+      // Multi-stop TDCs, dead time past the cycle's end and afterpulses
+      // correlate bins and cycles: the exact event engine draws the pixel.
       s.h.assign(static_cast<std::size_t>(K), 0.0);
-      detail::spadEvents(s.flux, N, deadBins_, rng, s.h,
-                         {p_.afterpulse_probability, p_.afterpulse_delay_s / axis_.bin_width_s});
+      detail::spadEvents(s.flux, N, laws_, rng, s.h);
+    } else if (p_.mode == SpadMode::Synchronous) {
+      detail::firstPhotonHistogram(fast, N, rng, s.firstPhoton, s.h);
     } else {
-      const std::vector<double> m = freeRunningProbabilities(s.flux, deadBins_);
+      const std::vector<double> m = freeRunningProbabilities(fast, deadBins_);
       s.h.resize(static_cast<std::size_t>(K));
       for (int32_t i = 0; i < K; ++i) s.h[i] = static_cast<double>(rng.binomial(N, m[i]));
     }
@@ -389,6 +435,7 @@ class SpadStream final : public SensorStream {
   const TimeAxis axis_;
   const BinKernel kernel_;
   const int32_t deadBins_;
+  const detail::DetectorLaws laws_;
   const std::vector<std::array<int32_t, 2>> plotted_;
   std::vector<std::vector<float>> histograms_;
   const SpadPixelMaps maps_;

@@ -53,6 +53,18 @@ void SensorConfigType<SpadParams>::emit(YAML::Node& n, const SpadParams& p) {
       if (p.irf.present()) n["irf"] = irfToYaml(p.irf);
       return;
     }
+    if (key == "afterpulse_delay") {
+      if (p.afterpulse_delays_s.size() == 1) {
+        n[key.data()] = durationText(p.afterpulse_delays_s[0]);
+      } else {
+        for (double d : p.afterpulse_delays_s) n[key.data()].push_back(durationText(d));
+      }
+      return;
+    }
+    if (key == "afterpulse_weights") {
+      for (double w : p.afterpulse_weights) n[key.data()].push_back(w);
+      return;
+    }
     if (key != "plot_pixels") return;
     for (const auto& [x, y] : p.plot_pixels) {
       YAML::Node xy;

@@ -92,6 +92,46 @@ void applyPreset(const ConfigNode& n, SpadParams& p) {
 }
 }  // namespace
 
+namespace {
+// `afterpulse_delay` (a duration or a list: the mixture's means) and
+// `afterpulse_weights` (numbers), each element with its own located error.
+void parseAfterpulseList(const ConfigNode& n, std::string_view key, SpadParams& p) {
+  const auto list = n.optionalChild(std::string(key));
+  if (!list) return;
+  const bool delays = key == "afterpulse_delay";
+  std::vector<double>& out = delays ? p.afterpulse_delays_s : p.afterpulse_weights;
+  out.clear();
+  for (const ConfigNode& e : list->isSequence() ? list->elements() : std::vector{*list}) {
+    const double v = delays ? e.asDuration_s() : e.asDouble();
+    if (delays && !(v > 0.0)) e.fail("delay must be > 0 (got " + e.asString() + ")");
+    if (!delays && !(v >= 0.0)) e.fail("weight must be >= 0 (got " + e.asString() + ")");
+    out.push_back(v);
+  }
+  if (out.empty()) list->fail("must list at least one value");
+}
+
+// The afterpulse keys that must agree, and the ones that mean nothing
+// without afterpulses.
+void checkAfterpulses(const ConfigNode& n, const SpadParams& p) {
+  const std::size_t delays = p.afterpulse_delays_s.size(), weights = p.afterpulse_weights.size();
+  if (weights > 0 && weights != delays) {
+    n.failKey("afterpulse_weights", "gives " + std::to_string(weights) + " weights for " +
+                                        std::to_string(delays) + " afterpulse_delay means");
+  }
+  if (weights > 0) {
+    double sum = 0.0;
+    for (double w : p.afterpulse_weights) sum += w;
+    if (!(sum > 0.0)) n.failKey("afterpulse_weights", "must not all be 0");
+  }
+  if (p.afterpulse_probability > 0.0) return;
+  const char* without = nullptr;
+  if (p.afterpulse_count != SpadAfterpulseCount::Bernoulli) without = "afterpulse_count";
+  if (p.afterpulse_traps != SpadAfterpulseTraps::Reset) without = "afterpulse_traps";
+  if (weights > 0) without = "afterpulse_weights";
+  if (without) n.failKey(without, "has no effect while afterpulse_probability is 0");
+}
+}  // namespace
+
 SpadParams SensorConfigType<SpadParams>::parse(const ConfigNode& n) {
   SpadParams p;
   applyPreset(n, p);
@@ -117,6 +157,10 @@ SpadParams SensorConfigType<SpadParams>::parse(const ConfigNode& n) {
       p.irf = parseIrf(*irf);
       return;
     }
+    if (key == "afterpulse_delay" || key == "afterpulse_weights") {
+      parseAfterpulseList(n, key, p);
+      return;
+    }
     if (key != "plot_pixels") return;
     if (auto pixels = n.optionalChild("plot_pixels")) {  // a list of pairs: by hand
       for (const ConfigNode& e : pixels->elements()) {
@@ -126,6 +170,10 @@ SpadParams SensorConfigType<SpadParams>::parse(const ConfigNode& n) {
       }
     }
   });
+  checkAfterpulses(n, p);
+  if (p.mode == SpadMode::FreeRunning && p.tdc_stops != 1) {
+    n.failKey("tdc_stops", "is for `mode: synchronous` (free_running records every detection)");
+  }
   if (p.hot_pixel_fraction > 0.0 && !(p.hot_pixel_rate_per_s > 0.0)) {
     n.failKey("hot_pixel_rate", "must be > 0 when hot_pixel_fraction is set");
   }

@@ -20,6 +20,9 @@
 namespace tofsim::sensors {
 
 enum class SpadMode { Synchronous, FreeRunning };
+enum class SpadAfterpulseCount { Bernoulli, Poisson };
+enum class SpadAfterpulseTraps { Reset, Keep };
+enum class SpadEngine { Auto, Exact, Fast };
 
 /// The neighbours an avalanche can trigger by crosstalk: the 4 sharing an
 /// edge, or the 8 sharing an edge or a corner (each with the same probability).
@@ -65,19 +68,38 @@ struct SpadParams {
   double pde = 0.3;                    ///< photon detection efficiency, [0, 1]
   double ambient_rate_per_s = 0.0;     ///< ambient photons arriving at the pixel, 1/s (PDE applies)
   double dark_count_rate_per_s = 0.0;  ///< dark counts, 1/s
-  double dead_time_s = 0.0;            ///< free-running: non-paralysable, rounded to TDC bins
+  /// Dead time after every avalanche (recorded or not), non-paralysable,
+  /// rounded to TDC bins; it may run into later cycles (synchronous: the
+  /// cycles it spans are lost after a detection).
+  double dead_time_s = 0.0;
+  /// Synchronous: detections the TDC records per cycle (a multi-stop TDC),
+  /// each followed by the dead time; 0: every one. 1: first photon.
+  int64_t tdc_stops = 1;
   /// Time gating: the detector is armed only in [gate_start, gate_start +
   /// gate_width) of each cycle (times as the TDC's), so light, ambient and
   /// dark counts outside cause no detection and no pile-up; a bin the gate
   /// edge crosses is armed for its covered fraction. 0 width: always armed.
   double gate_start_s = 0.0;
   double gate_width_s = 0.0;
-  /// Free-running afterpulsing: each avalanche leaves a trapped carrier with
-  /// this probability, released an Exp(afterpulse_delay) time after the end of
-  /// the hold-off as a detection unless a photon comes first (the exact event
-  /// engine, SpadEventEngine.h, draws these pixels). 0: none.
+  /// Afterpulsing (both modes; the exact event engine, SpadEventEngine.h,
+  /// draws these pixels): each avalanche fills a Bernoulli(p) or Poisson(mu)
+  /// number of traps (afterpulse_count, p or mu = afterpulse_probability),
+  /// each released a delay after the end of its dead time, from a mixture of
+  /// exponentials of means afterpulse_delays_s and weights afterpulse_weights
+  /// (empty: equal); a release while the detector is live is an avalanche
+  /// (recorded if the TDC has a stop left), one while it is dead is lost.
+  /// Reset: each avalanche empties the traps of the ones before. 0: none.
   double afterpulse_probability = 0.0;
-  double afterpulse_delay_s = 10e-9;
+  SpadAfterpulseCount afterpulse_count = SpadAfterpulseCount::Bernoulli;
+  std::vector<double> afterpulse_delays_s = {10e-9};
+  std::vector<double> afterpulse_weights;
+  SpadAfterpulseTraps afterpulse_traps = SpadAfterpulseTraps::Reset;
+  /// Which draws: Auto, the exact event engine where an effect needs it
+  /// (multi-stop, dead time past the cycle, afterpulses), the fast draws
+  /// elsewhere; Exact, the engine for every pixel (the reference); Fast,
+  /// afterpulses to first order as extra flux on the fast draws
+  /// (SpadAfterpulseFlux.h), the engine only for the other effects.
+  SpadEngine engine = SpadEngine::Auto;
   /// Crosstalk: each avalanche triggers one in each of its neighbours with
   /// this probability, after a delay (0: prompt, in the same bin; else
   /// exponential with this mean); 0: none. Drawn on the fast path to first
