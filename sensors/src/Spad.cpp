@@ -9,6 +9,7 @@
 #include "PeakDepth.h"
 #include "SpadEstimators.h"
 #include "SpadEventEngine.h"
+#include "SpadGate.h"
 #include "SpadSampling.h"
 #include "tofsim/sensors/Random.h"
 #include "tofsim/sensors/SpadPixelMaps.h"
@@ -39,7 +40,7 @@ void checkParams(const SpadParams& p) {
   TOFSIM_CHECK(p.pde >= 0.0 && p.pde <= 1.0);
   TOFSIM_CHECK(p.ambient_rate_per_s >= 0.0 && p.dark_count_rate_per_s >= 0.0);
   TOFSIM_CHECK(p.dead_time_s >= 0.0);
-  TOFSIM_CHECK(p.gate_width_s >= 0.0);
+  TOFSIM_CHECK(p.gate_width_s >= 0.0 && p.gate_skew_sigma_s >= 0.0);
   TOFSIM_CHECK(p.afterpulse_probability >= 0.0 && p.afterpulse_probability <= 1.0);
   TOFSIM_CHECK(p.afterpulse_probability == 0.0 || p.mode == SpadMode::FreeRunning);
   TOFSIM_CHECK(p.afterpulse_delay_s > 0.0);
@@ -55,25 +56,36 @@ void checkParams(const SpadParams& p) {
 }
 
 // Per-cycle flux of one pixel from its render bins (signal in photo-electrons),
-// with the pixel's own PDE and dark count rate.
+// with the pixel's own PDE and dark count rate, before the gate. With a
+// DNL table the light is first spread over the nominal bins (where the
+// kernel is defined), then moved into the true unequal bins by overlap.
 void fluxFromSignal(const std::vector<double>& signal, const TimeAxis& render, const SpadParams& p,
-                    double pde, double dcr_per_s, const TimeAxis& axis, const BinKernel& kernel,
+                    const SpadPixel& pixel, const detail::TdcBins& bins, const BinKernel& kernel,
                     std::vector<double>& resampled, std::vector<double>& flux) {
+  const TimeAxis& axis = bins.axis;
   resampleEnergy(signal, render, axis, resampled);
   flux.assign(resampled.size(), 0.0);
   convolveConserving(resampled.data(), axis.bins, 1, kernel, flux.data());
-  const double background =
-      pde * p.ambient_rate_per_s * axis.bin_width_s + dcr_per_s * axis.bin_width_s;
-  for (double& f : flux) f = pde * std::max(0.0, f) + background;
-  if (p.gate_width_s > 0.0) {
-    // The armed fraction of each bin: a disarmed detector sees nothing, so the
-    // first-photon and dead-time laws run on the gated flux alone.
-    const double g0 = p.gate_start_s, g1 = p.gate_start_s + p.gate_width_s;
-    for (int32_t i = 0; i < axis.bins; ++i) {
-      const double b0 = axis.start_s + i * axis.bin_width_s, b1 = b0 + axis.bin_width_s;
-      flux[i] *= std::max(0.0, std::min(b1, g1) - std::max(b0, g0)) / axis.bin_width_s;
-    }
+  const double pde = pixel.pde, dcr_per_s = pixel.dcr_per_s;
+  if (bins.edges.empty()) {
+    const double background =
+        pde * p.ambient_rate_per_s * axis.bin_width_s + dcr_per_s * axis.bin_width_s;
+    for (double& f : flux) f = pde * std::max(0.0, f) + background;
+    return;
   }
+  resampled.swap(flux);
+  resampleEnergyToEdges(resampled, axis, bins.edges, flux);
+  for (int32_t i = 0; i < axis.bins; ++i) {
+    const double w = bins.width(i);
+    flux[i] = pde * std::max(0.0, flux[i]) + pde * p.ambient_rate_per_s * w + dcr_per_s * w;
+  }
+}
+
+// A disarmed detector sees nothing, so the first-photon and dead-time laws
+// run on the gated flux alone; the pixel's gate is moved by its skew.
+void gateFlux(const SpadParams& p, const detail::SpadGate& gate, const SpadPixel& pixel,
+              const detail::TdcBins& bins, std::vector<double>& flux) {
+  if (p.gate_width_s > 0.0) detail::applyGate(gate.shifted(pixel.gate_skew_s), bins, flux);
 }
 
 SensorOutput image(const std::string& name, int32_t H, int32_t W, std::vector<float> data,
@@ -97,8 +109,10 @@ void spadFluxPerCycle(const TransientVolume& volume, const SpadParams& params, c
   pixelSignal(volume, params.common, y, x, signal);
   const std::size_t px = static_cast<std::size_t>(y) * volume.width() + x;
   const SpadPixel pixel = spadPixel(params, px);
-  fluxFromSignal(signal, volume.axis(), params, pixel.pde, pixel.dcr_per_s, axis,
-                 spadKernel(params, axis), resampled, flux);
+  const detail::TdcBins bins = detail::tdcBins(params, axis);
+  fluxFromSignal(signal, volume.axis(), params, pixel, bins, spadKernel(params, axis), resampled,
+                 flux);
+  gateFlux(params, detail::spadGate(params), pixel, bins, flux);
 }
 
 double irfTimeZero_s(const SpadIrf& irf) {
@@ -135,6 +149,8 @@ class SpadStream final : public SensorStream {
         shape_(shape),
         options_(options),
         axis_(resolveBins(p.bins, shape.axis)),
+        bins_(detail::tdcBins(p, axis_)),
+        gate_(detail::spadGate(p)),
         kernel_(spadKernel(p, axis_)),
         deadBins_(static_cast<int32_t>(std::lround(p.dead_time_s / axis_.bin_width_s))),
         plotted_(plotPixels(p.plot_pixels, shape.height, shape.width)),
@@ -250,6 +266,12 @@ class SpadStream final : public SensorStream {
                               "hot_pixel_rate, dead pixels 0)"));
       outputs.back().attributes = counts;
     }
+    if (p_.gate_skew_sigma_s > 0.0) {
+      outputs.push_back(image("spad_gate_skew_map", H, W,
+                              {maps_.gate_skew_s.begin(), maps_.gate_skew_s.end()}, "s",
+                              "SPAD gate skew per pixel: the whole gate moved by this time "
+                              "(fixed pattern)"));
+    }
     return outputs;
   }
 
@@ -270,8 +292,10 @@ class SpadStream final : public SensorStream {
   void pixel(const float* values, std::size_t px, float* out, Scratch& s) const {
     const int32_t K = axis_.bins;
     pixelSignal(values, shape_.axis.bins, shape_.channels, p_.common, s.signal);
-    fluxFromSignal(s.signal, shape_.axis, p_, maps_.pde[px], maps_.dcr_per_s[px], axis_, kernel_,
-                   s.resampled, s.flux);
+    const SpadPixel pixel{maps_.pde[px], maps_.dcr_per_s[px], maps_.kind[px],
+                          maps_.gate_skew_s[px]};
+    fluxFromSignal(s.signal, shape_.axis, p_, pixel, bins_, kernel_, s.resampled, s.flux);
+    gateFlux(p_, gate_, pixel, bins_, s.flux);
     Rng rng(options_.seed, pixelStream(kSpadStreamTag, px));
     const auto N = static_cast<uint64_t>(p_.cycles);
     if (p_.mode == SpadMode::Synchronous) {
@@ -317,6 +341,8 @@ class SpadStream final : public SensorStream {
   const VolumeShape shape_;
   const StreamOptions options_;
   const TimeAxis axis_;
+  const detail::TdcBins bins_;
+  const detail::SpadGate gate_;
   const BinKernel kernel_;
   const int32_t deadBins_;
   const std::vector<std::array<int32_t, 2>> plotted_;

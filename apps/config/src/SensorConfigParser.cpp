@@ -90,6 +90,23 @@ void applyPreset(const ConfigNode& n, SpadParams& p) {
   preset->apply(p);
   p.preset = name;
 }
+
+// The gate's transitions and skew shape a gate: without one they are typos.
+void checkGateShape(const ConfigNode& n, const SpadParams& p) {
+  for (const auto& [key, value] :
+       {std::pair{"gate_rise", p.gate_rise_s}, std::pair{"gate_fall", p.gate_fall_s},
+        std::pair{"gate_skew_sigma", p.gate_skew_sigma_s}}) {
+    if (value > 0.0 && !(p.gate_width_s > 0.0)) {
+      n.failKey(key, "shapes the gate: set `gate_width` (> 0) too");
+    }
+  }
+  if (p.gate_width_s > 0.0 && p.gate_width_s < 0.5 * (p.gate_rise_s + p.gate_fall_s)) {
+    n.failKey(n.has("gate_rise") ? "gate_rise" : "gate_fall",
+              "the gate's ramps overlap: gate_width (" + durationText(p.gate_width_s) +
+                  ") must be >= (gate_rise + gate_fall) / 2 (" +
+                  durationText(0.5 * (p.gate_rise_s + p.gate_fall_s)) + ")");
+  }
+}
 }  // namespace
 
 SpadParams SensorConfigType<SpadParams>::parse(const ConfigNode& n) {
@@ -129,6 +146,7 @@ SpadParams SensorConfigType<SpadParams>::parse(const ConfigNode& n) {
   if (p.hot_pixel_fraction > 0.0 && !(p.hot_pixel_rate_per_s > 0.0)) {
     n.failKey("hot_pixel_rate", "must be > 0 when hot_pixel_fraction is set");
   }
+  checkGateShape(n, p);
   return p;
 }
 

@@ -42,6 +42,27 @@ struct SpadIrf {
   bool present() const { return !values.empty(); }
 };
 
+/// A TDC's differential non-linearity (the config's `tdc_dnl`, a list or a
+/// file the config layer reads): code i is LSB (1 + values[i]) wide, LSB the
+/// nominal bin width, so the true edges are e_k = offset + sum_{i<k} LSB (1 +
+/// DNL_i) and pile-up acts on the true, unequal bins.
+struct SpadDnl {
+  std::string file;            ///< the file it came from; empty: a list in the config
+  std::vector<double> values;  ///< one per TDC bin, each > -1, sum 0; empty (or all 0): none
+
+  bool present() const { return !values.empty(); }
+};
+
+/// A measured dark count rate per pixel (the config's `dark_count_map`, a
+/// .npy the config layer reads), in place of the log-normal draw.
+struct SpadDarkCountMap {
+  std::string file;                 ///< the file it came from (metadata)
+  int32_t height = 0, width = 0;    ///< its shape, the image's
+  std::vector<double> rates_per_s;  ///< row-major (y, x), counts / s, >= 0; empty: none
+
+  bool present() const { return !rates_per_s.empty(); }
+};
+
 /// The time of the IRF's axis that is zero delay: the first maximum's t_k
 /// (Peak), the mean sum v_k t_k / sum v_k (Centroid, the density's exact
 /// mean), or t0_s (Time).
@@ -68,6 +89,16 @@ struct SpadParams {
   /// edge crosses is armed for its covered fraction. 0 width: always armed.
   double gate_start_s = 0.0;
   double gate_width_s = 0.0;
+  /// Finite gate transitions: the sensitivity g(t) rises linearly from 0 to 1
+  /// over gate_rise, centred on gate_start, and falls back over gate_fall,
+  /// centred on gate_start + gate_width (gate_width stays the 50 % width);
+  /// each bin sees the exact average of g over it. 0: hard edges.
+  double gate_rise_s = 0.0;
+  double gate_fall_s = 0.0;
+  /// Per-pixel gate skew: pixel (y, x)'s whole gate moved by a N(0, sigma)
+  /// time of the fixed pattern (fpn_seed, not the noise seed). 0: none.
+  double gate_skew_sigma_s = 0.0;
+  SpadDnl tdc_dnl;  ///< TDC differential non-linearity; none: equal bins
   /// Free-running afterpulsing: each avalanche leaves a trapped carrier with
   /// this probability, released an Exp(afterpulse_delay) time after the end of
   /// the hold-off as a detection unless a photon comes first (the exact event
