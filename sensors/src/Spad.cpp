@@ -10,6 +10,7 @@
 #include "SpadEstimators.h"
 #include "SpadEventEngine.h"
 #include "SpadGate.h"
+#include "SpadGatedFrames.h"
 #include "SpadSampling.h"
 #include "tofsim/sensors/Random.h"
 #include "tofsim/sensors/SpadPixelMaps.h"
@@ -41,6 +42,8 @@ void checkParams(const SpadParams& p) {
   TOFSIM_CHECK(p.ambient_rate_per_s >= 0.0 && p.dark_count_rate_per_s >= 0.0);
   TOFSIM_CHECK(p.dead_time_s >= 0.0);
   TOFSIM_CHECK(p.gate_width_s >= 0.0 && p.gate_skew_sigma_s >= 0.0);
+  TOFSIM_CHECK(p.gated_frames >= 0 && p.pulses_per_frame >= 1 && p.gate_positions >= 1);
+  TOFSIM_CHECK(p.counter_bits >= 0 && p.counter_bits <= 62);
   TOFSIM_CHECK(p.afterpulse_probability >= 0.0 && p.afterpulse_probability <= 1.0);
   TOFSIM_CHECK(p.afterpulse_probability == 0.0 || p.mode == SpadMode::FreeRunning);
   TOFSIM_CHECK(p.afterpulse_delay_s > 0.0);
@@ -156,6 +159,7 @@ class SpadStream final : public SensorStream {
         plotted_(plotPixels(p.plot_pixels, shape.height, shape.width)),
         histograms_(plotted_.size()),
         maps_(spadPixelMaps(p, shape.height, shape.width)),
+        frames_(p, shape, options),
         estimator_(kernel_, axis_, p.return_threshold_sigma) {
     checkParams(p);
     checkChannelSelection(p.common.channel, shape.channels);
@@ -196,6 +200,7 @@ class SpadStream final : public SensorStream {
     } else {
       counts = counts_.data.data() + span.firstPixel * K;
     }
+    frames_.beginSpan(span.firstPixel, span.pixelCount);
     detail::parallelPixels(span.pixelCount, options_.threads, [&](std::size_t b, std::size_t e) {
       Scratch scratch;
       for (std::size_t i = b; i < e; ++i) {
@@ -210,6 +215,7 @@ class SpadStream final : public SensorStream {
       histograms_[k].assign(h, h + K);
     }
     if (writer_) writer_->append(chunk_.data(), chunk_.size());
+    frames_.endSpan();
     next_ += span.pixelCount;
   }
 
@@ -253,6 +259,7 @@ class SpadStream final : public SensorStream {
     outputs.push_back(image("spad_returns", H, W, std::move(returns_), "-",
                             "SPAD returns above return_threshold per pixel"));
     outputs.push_back(histogramPlot(plotted_, histograms_, axis_));
+    frames_.finish(outputs);
     if (spadHasPixelMaps(p_)) {
       const std::vector<std::pair<std::string, double>> counts = {
           {"hot_pixels", static_cast<double>(maps_.hot)},
@@ -277,7 +284,7 @@ class SpadStream final : public SensorStream {
 
  private:
   struct Scratch {
-    std::vector<double> signal, resampled, flux, h, lossless;
+    std::vector<double> signal, resampled, flux, h, lossless, lambda;
     detail::FirstPhotonScratch firstPhoton;
     SpadEstimator::Scratch estimates;
   };
@@ -295,6 +302,7 @@ class SpadStream final : public SensorStream {
     const SpadPixel pixel{maps_.pde[px], maps_.dcr_per_s[px], maps_.kind[px],
                           maps_.gate_skew_s[px]};
     fluxFromSignal(s.signal, shape_.axis, p_, pixel, bins_, kernel_, s.resampled, s.flux);
+    frames_.pixel(px, s.flux, pixel.gate_skew_s, s.lambda);
     gateFlux(p_, gate_, pixel, bins_, s.flux);
     Rng rng(options_.seed, pixelStream(kSpadStreamTag, px));
     const auto N = static_cast<uint64_t>(p_.cycles);
@@ -309,6 +317,9 @@ class SpadStream final : public SensorStream {
       const std::vector<double> m = freeRunningProbabilities(s.flux, deadBins_);
       s.h.resize(static_cast<std::size_t>(K));
       for (int32_t i = 0; i < K; ++i) s.h[i] = static_cast<double>(rng.binomial(N, m[i]));
+    }
+    if (p_.counter_bits > 0) {  // the histogram memory saturates
+      for (double& c : s.h) c = detail::clipCount(c, p_.counter_bits);
     }
     double total = 0.0;
     for (int32_t i = 0; i < K; ++i) {
@@ -348,6 +359,7 @@ class SpadStream final : public SensorStream {
   const std::vector<std::array<int32_t, 2>> plotted_;
   std::vector<std::vector<float>> histograms_;
   const SpadPixelMaps maps_;
+  detail::SpadGatedFrames frames_;
   const SpadEstimator estimator_;
   SensorOutput counts_;
   std::unique_ptr<ArrayWriter> writer_;

@@ -77,11 +77,33 @@ TEST_F(SpadGatingConfigTest, GateShapeNeedsAGateAndRampsThatDoNotOverlap) {
   EXPECT_DOUBLE_EQ(p.gate_skew_sigma_s, 2e-12);
   expectError("    gate_rise: 10 ps\n", "gate_rise", "set `gate_width`");
   expectError("    gate_skew_sigma: 1 ps\n", "gate_skew_sigma", "set `gate_width`");
-  expectError("    gate_start: 1.01 ns\n    gate_width: 10 ps\n    gate_rise: 15 ps\n"
-              "    gate_fall: 6 ps\n",
-              "gate_rise", "ramps overlap");
+  expectError(
+      "    gate_start: 1.01 ns\n    gate_width: 10 ps\n    gate_rise: 15 ps\n"
+      "    gate_fall: 6 ps\n",
+      "gate_rise", "ramps overlap");
   expectError("    gate_start: 1.01 ns\n    gate_width: 10 ps\n    gate_rise: -1 ps\n", "gate_rise",
               "must be >= 0");
+}
+
+TEST_F(SpadGatingConfigTest, GatedFramesNeedAGateAndASweepInsideTheWindow) {
+  const sensors::SpadParams p = load(
+      "    gate_start: 1.01 ns\n    gate_width: 20 ps\n    gated_frames: 255\n"
+      "    pulses_per_frame: 40\n    gate_step: 1 ps\n    gate_positions: 30\n"
+      "    counter_bits: 8\n");
+  EXPECT_EQ(p.gated_frames, 255);
+  EXPECT_EQ(p.pulses_per_frame, 40);
+  EXPECT_DOUBLE_EQ(p.gate_step_s, 1e-12);
+  EXPECT_EQ(p.gate_positions, 30);
+  EXPECT_EQ(p.counter_bits, 8);
+  expectError("    gated_frames: 10\n", "gated_frames", "need a gate");
+  expectError("    gate_positions: 10\n", "gate_positions", "set `gated_frames`");
+  expectError("    pulses_per_frame: 10\n", "pulses_per_frame", "set `gated_frames`");
+  expectError("    counter_bits: 40\n", "counter_bits", "must be in [0, 32]");
+  // The window is [1, 1.1) ns: the 100th position of 1 ps steps from 1.09 ns is outside.
+  expectError(
+      "    gate_start: 1.09 ns\n    gate_width: 5 ps\n    gated_frames: 10\n"
+      "    gate_step: 1 ps\n    gate_positions: 100\n",
+      "gate_step", "last gate position");
 }
 
 }  // namespace

@@ -324,6 +324,16 @@ void checkSpadGates(const ConfigNode& list, const RunConfig& config) {
                                             shortest(tdc.start_s * 1e9) + ", " +
                                             shortest(tdc.end_s() * 1e9) + ") ns");
     }
+    // A gate sweep's last position too (the positions move linearly).
+    const double last =
+        spad->gated_frames > 0 ? (spad->gate_positions - 1) * spad->gate_step_s : 0.0;
+    if (!(g1 + last > tdc.start_s && g0 + last < tdc.end_s())) {
+      elements[i].failKey("gate_step", "the last gate position [" + shortest((g0 + last) * 1e9) +
+                                           ", " + shortest((g1 + last) * 1e9) +
+                                           ") ns lies outside the TDC's window [" +
+                                           shortest(tdc.start_s * 1e9) + ", " +
+                                           shortest(tdc.end_s() * 1e9) + ") ns");
+    }
   }
 }
 

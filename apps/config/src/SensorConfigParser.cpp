@@ -91,13 +91,25 @@ void applyPreset(const ConfigNode& n, SpadParams& p) {
   p.preset = name;
 }
 
-// The gate's transitions and skew shape a gate: without one they are typos.
+// The gate's transitions and skew shape a gate, the frame keys the gated
+// frames: without them they are typos.
 void checkGateShape(const ConfigNode& n, const SpadParams& p) {
   for (const auto& [key, value] :
        {std::pair{"gate_rise", p.gate_rise_s}, std::pair{"gate_fall", p.gate_fall_s},
         std::pair{"gate_skew_sigma", p.gate_skew_sigma_s}}) {
     if (value > 0.0 && !(p.gate_width_s > 0.0)) {
       n.failKey(key, "shapes the gate: set `gate_width` (> 0) too");
+    }
+  }
+  if (p.gated_frames > 0 && !(p.gate_width_s > 0.0)) {
+    n.failKey("gated_frames", "gated frames need a gate: set `gate_width` (> 0) too");
+  }
+  // By value, not presence: the effective config writes every key.
+  for (const auto& [key, set] : {std::pair{"pulses_per_frame", p.pulses_per_frame != 1},
+                                 std::pair{"gate_step", p.gate_step_s != 0.0},
+                                 std::pair{"gate_positions", p.gate_positions != 1}}) {
+    if (p.gated_frames == 0 && set) {
+      n.failKey(key, "shapes the gated 1-bit frames: set `gated_frames` (> 0) too");
     }
   }
   if (p.gate_width_s > 0.0 && p.gate_width_s < 0.5 * (p.gate_rise_s + p.gate_fall_s)) {

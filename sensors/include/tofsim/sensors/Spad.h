@@ -98,6 +98,18 @@ struct SpadParams {
   /// Per-pixel gate skew: pixel (y, x)'s whole gate moved by a N(0, sigma)
   /// time of the fixed pattern (fpn_seed, not the noise seed). 0: none.
   double gate_skew_sigma_s = 0.0;
+  /// Gated 1-bit frames (SPAD512S-class arrays, SpadGatedFrames.h): each of
+  /// gated_frames frames integrates pulses_per_frame pulses into a 1-bit
+  /// latch set by a detection inside the gate; the frames are summed per gate
+  /// position k, the gate moved by k gate_step (gate_positions of them).
+  /// 0 frames: off. The histogram path keeps position 0's gate.
+  int64_t gated_frames = 0;
+  int64_t pulses_per_frame = 1;
+  double gate_step_s = 0.0;
+  int32_t gate_positions = 1;
+  /// Counter depth: every count (spad_counts' bins, the gated counts) clips
+  /// at 2^counter_bits - 1. 0: unlimited.
+  int32_t counter_bits = 0;
   SpadDnl tdc_dnl;  ///< TDC differential non-linearity; none: equal bins
   /// Free-running afterpulsing: each avalanche leaves a trapped carrier with
   /// this probability, released an Exp(afterpulse_delay) time after the end of
@@ -156,7 +168,9 @@ std::vector<double> coatesEstimate(const std::vector<double>& counts, int64_t cy
 /// every depth Image carries a point cloud (SensorOutput::point_cloud);
 /// "spad_histograms" HistogramPlot (pixels, bins); with a fixed pattern
 /// (spadHasPixelMaps), "spad_pde_map" and "spad_dcr_map" Images (H, W), with
-/// the attributes hot_pixels and dead_pixels.
+/// the attributes hot_pixels and dead_pixels; with gate_skew_sigma_s,
+/// "spad_gate_skew_map" Image (H, W) in s; with gated_frames,
+/// "spad_gated_counts" and "spad_gated_flux" Arrays (H, W, gate_positions).
 std::vector<SensorOutput> runSpad(const TransientVolume& volume, const SpadParams& params,
                                   uint64_t seed);
 
