@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 
 #include "tofsim/util/Error.h"
 
@@ -39,7 +40,10 @@ TdcBins tdcBins(const SpadParams& p, const TimeAxis& axis) {
   TdcBins bins{axis, {}};
   const std::vector<double>& dnl = p.tdc_dnl.values;
   if (std::none_of(dnl.begin(), dnl.end(), [](double d) { return d != 0.0; })) return bins;
-  TOFSIM_CHECK(static_cast<int32_t>(dnl.size()) == axis.bins);
+  if (static_cast<int32_t>(dnl.size()) != axis.bins) {
+    throw InputError("SPAD tdc_dnl has " + std::to_string(dnl.size()) + " values but the TDC has " +
+                     std::to_string(axis.bins) + " bins");
+  }
   bins.edges.resize(dnl.size() + 1);
   bins.edges[0] = axis.start_s;
   double inl = 0.0;  // sum_{i<k} (1 + DNL_i), in LSB

@@ -2,8 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 
 #include "tofsim/sensors/Random.h"
+#include "tofsim/util/Error.h"
 
 namespace tofsim::sensors {
 
@@ -19,6 +21,10 @@ SpadPixel patternPixel(const SpadParams& p, std::size_t px) {
   if (uDead < p.dead_pixel_fraction) return {0.0, 0.0, SpadPixelClass::Dead};
   const double pde = std::clamp(p.pde * (1.0 + p.pde_spread * zPde), 0.0, 1.0);
   if (uHot < p.hot_pixel_fraction) return {pde, p.hot_pixel_rate_per_s, SpadPixelClass::Hot};
+  if (p.dark_count_map.present()) {  // measured: in place of the log-normal
+    TOFSIM_CHECK(px < p.dark_count_map.rates_per_s.size());
+    return {pde, p.dark_count_map.rates_per_s[px], SpadPixelClass::Normal};
+  }
   return {pde, p.dark_count_rate_per_s * std::exp(p.dark_count_log_sigma * zDcr),
           SpadPixelClass::Normal};
 }
@@ -26,7 +32,7 @@ SpadPixel patternPixel(const SpadParams& p, std::size_t px) {
 
 bool spadHasPixelMaps(const SpadParams& p) {
   return p.pde_spread > 0.0 || p.dark_count_log_sigma > 0.0 || p.hot_pixel_fraction > 0.0 ||
-         p.dead_pixel_fraction > 0.0;
+         p.dead_pixel_fraction > 0.0 || p.dark_count_map.present();
 }
 
 SpadPixel spadPixel(const SpadParams& p, std::size_t px) {
@@ -39,6 +45,13 @@ SpadPixel spadPixel(const SpadParams& p, std::size_t px) {
 }
 
 SpadPixelMaps spadPixelMaps(const SpadParams& p, int32_t height, int32_t width) {
+  const SpadDarkCountMap& measured = p.dark_count_map;
+  if (measured.present() && (measured.height != height || measured.width != width)) {
+    throw InputError("SPAD dark_count_map " + measured.file + " is " +
+                     std::to_string(measured.height) + " x " + std::to_string(measured.width) +
+                     " (H x W) but the image is " + std::to_string(height) + " x " +
+                     std::to_string(width));
+  }
   const auto n = static_cast<std::size_t>(height) * static_cast<std::size_t>(width);
   SpadPixelMaps maps;
   maps.pde.resize(n);

@@ -106,5 +106,66 @@ TEST_F(SpadGatingConfigTest, GatedFramesNeedAGateAndASweepInsideTheWindow) {
       "gate_step", "last gate position");
 }
 
+TEST_F(SpadGatingConfigTest, TdcDnlFromAListOrAFileWithLocatedErrors) {
+  std::string list = "    tdc_dnl: [0.2, -0.2";
+  for (int i = 2; i < 100; ++i) list += ", 0";
+  const sensors::SpadParams p = load(list + "]\n");
+  ASSERT_EQ(p.tdc_dnl.values.size(), 100u);
+  EXPECT_DOUBLE_EQ(p.tdc_dnl.values[0], 0.2);
+  EXPECT_TRUE(p.tdc_dnl.file.empty());
+  // a CSV, one value a line (header and comments allowed), and a .npy
+  {
+    std::ofstream csv(dir_ / "dnl.csv");
+    csv << "dnl\n# measured\n";
+    for (int i = 0; i < 100; ++i) csv << (i == 3 ? 0.5 : (i == 4 ? -0.5 : 0.0)) << "\n";
+  }
+  const sensors::SpadParams fromCsv = load("    tdc_dnl: dnl.csv\n");
+  EXPECT_DOUBLE_EQ(fromCsv.tdc_dnl.values[3], 0.5);
+  EXPECT_EQ(fromCsv.tdc_dnl.file, (dir_ / "dnl.csv").lexically_normal().string());
+  std::vector<float> values(100, 0.0f);
+  values[7] = 0.25f;
+  values[8] = -0.25f;
+  io::writeNpy(dir_ / "dnl.npy", {100}, values.data());
+  EXPECT_FLOAT_EQ(static_cast<float>(load("    tdc_dnl: dnl.npy\n").tdc_dnl.values[7]), 0.25f);
+  // The effective config reads back to the same tables (list and file).
+  for (const std::string& keys : {list + "]\n", std::string("    tdc_dnl: dnl.csv\n")}) {
+    const std::string written = effectiveConfigYaml(loadRunConfig(write(keys)));
+    std::ofstream(dir_ / "again.yaml") << written;
+    const RunConfig again = loadRunConfig(dir_ / "again.yaml");
+    EXPECT_EQ(std::get<sensors::SpadParams>(again.sensors.front().params).tdc_dnl.values,
+              load(keys).tdc_dnl.values);
+  }
+  // wrong length (the TDC has 100 bins), a width <= 0, a sum != 0, bad files
+  expectError("    tdc_dnl: [0.1, -0.1]\n", "tdc_dnl", "has 2 values but the TDC has 100 bins");
+  expectError("    bins: 2\n    tdc_dnl: [1.5, -1.5]\n", "tdc_dnl", "bin width LSB (1 + DNL) <= 0");
+  expectError("    bins: 2\n    tdc_dnl: [0.1, 0.1]\n", "tdc_dnl", "sum to 0.2");
+  expectError("    tdc_dnl: missing.csv\n", "tdc_dnl", "file not found");
+  std::ofstream(dir_ / "bad.csv") << "0.1\n0.2,3\n";
+  expectError("    tdc_dnl: bad.csv\n", "tdc_dnl", "bad.csv:2: expected one number");
+  std::ofstream(dir_ / "dnl.txt") << "0\n";
+  expectError("    tdc_dnl: dnl.txt\n", "tdc_dnl", ".npy or .csv");
+}
+
+TEST_F(SpadGatingConfigTest, DarkCountMapMustBeTheImagesShape) {
+  std::vector<float> rates(24 * 32, 100.0f);
+  rates[5] = 2e4f;
+  io::writeNpy(dir_ / "dcr.npy", {24, 32}, rates.data());
+  const sensors::SpadParams p = load("    dark_count_map: dcr.npy\n");
+  EXPECT_EQ(p.dark_count_map.height, 24);
+  EXPECT_EQ(p.dark_count_map.width, 32);
+  EXPECT_DOUBLE_EQ(p.dark_count_map.rates_per_s[5], 2e4);
+  io::writeNpy(dir_ / "small.npy", {24, 31}, rates.data());
+  expectError("    dark_count_map: small.npy\n", "dark_count_map",
+              "24 x 31 (H x W) but the image is 24 x 32");
+  rates[9] = -1.0f;
+  io::writeNpy(dir_ / "negative.npy", {24, 32}, rates.data());
+  expectError("    dark_count_map: negative.npy\n", "dark_count_map",
+              "(y, x) = (0, 9) is negative");
+  io::writeNpy(dir_ / "flat.npy", {24 * 32}, rates.data());
+  expectError("    dark_count_map: flat.npy\n", "dark_count_map", "expected a 2-D array");
+  expectError("    dark_count_map: dcr.npy\n    dark_count_log_sigma: 0.5\n",
+              "dark_count_log_sigma", "replaces the log-normal");
+}
+
 }  // namespace
 }  // namespace tofsim::config

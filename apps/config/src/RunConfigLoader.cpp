@@ -313,8 +313,13 @@ void checkSpadGates(const ConfigNode& list, const RunConfig& config) {
       elements[i].failKey("afterpulse_probability",
                           "afterpulses are modelled for `mode: free_running` only (so far)");
     }
-    if (spad->gate_width_s <= 0.0) continue;
     const TimeAxis tdc = sensors::resolveBins(spad->bins, config.render.time);
+    if (spad->tdc_dnl.present() && static_cast<int32_t>(spad->tdc_dnl.values.size()) != tdc.bins) {
+      elements[i].failKey("tdc_dnl", "has " + std::to_string(spad->tdc_dnl.values.size()) +
+                                         " values but the TDC has " + std::to_string(tdc.bins) +
+                                         " bins (one DNL per bin)");
+    }
+    if (spad->gate_width_s <= 0.0) continue;
     const double g0 = spad->gate_start_s, g1 = g0 + spad->gate_width_s;
     if (!(g1 > tdc.start_s && g0 < tdc.end_s())) {
       elements[i].failKey("gate_start", "the gate [" + shortest(g0 * 1e9) + ", " +

@@ -10,6 +10,7 @@
 #include "FieldParse.h"
 #include "IrfFile.h"
 #include "SensorConfigType.h"
+#include "SpadTableFile.h"
 #include "tofsim/config/SensorConfig.h"
 #include "tofsim/config/Units.h"
 #include "tofsim/sensors/SensorFields.h"
@@ -146,6 +147,14 @@ SpadParams SensorConfigType<SpadParams>::parse(const ConfigNode& n) {
       p.irf = parseIrf(*irf);
       return;
     }
+    if (key == "tdc_dnl") {
+      if (n.has("tdc_dnl")) p.tdc_dnl = parseDnl(n);
+      return;
+    }
+    if (key == "dark_count_map") {
+      if (n.has("dark_count_map")) p.dark_count_map = parseDarkCountMap(n);
+      return;
+    }
     if (key != "plot_pixels") return;
     if (auto pixels = n.optionalChild("plot_pixels")) {  // a list of pairs: by hand
       for (const ConfigNode& e : pixels->elements()) {
@@ -159,11 +168,22 @@ SpadParams SensorConfigType<SpadParams>::parse(const ConfigNode& n) {
     n.failKey("hot_pixel_rate", "must be > 0 when hot_pixel_fraction is set");
   }
   checkGateShape(n, p);
+  if (p.dark_count_map.present() && p.dark_count_log_sigma > 0.0) {
+    n.failKey("dark_count_log_sigma",
+              "the measured `dark_count_map` replaces the log-normal draw: remove it");
+  }
   return p;
 }
 
 void SensorConfigType<SpadParams>::checkImage(const ConfigNode& n, const SpadParams& p,
                                               const capture::Camera& camera) {
+  const SpadDarkCountMap& map = p.dark_count_map;
+  if (map.present() && (map.height != camera.height || map.width != camera.width)) {
+    n.failKey("dark_count_map", map.file + " is " + std::to_string(map.height) + " x " +
+                                    std::to_string(map.width) + " (H x W) but the image is " +
+                                    std::to_string(camera.height) + " x " +
+                                    std::to_string(camera.width));
+  }
   for (const auto& xy : p.plot_pixels) {
     if (xy[0] < 0 || xy[1] < 0 || xy[0] >= camera.width || xy[1] >= camera.height) {
       n.failKey("plot_pixels", "pixel (" + std::to_string(xy[0]) + ", " + std::to_string(xy[1]) +

@@ -128,6 +128,7 @@ struct SpadParams {
   int64_t fpn_seed = 0;
   double pde_spread = 0.0;
   double dark_count_log_sigma = 0.0;
+  SpadDarkCountMap dark_count_map;  ///< measured DCR per pixel, in place of the log-normal
   double hot_pixel_fraction = 0.0;
   double hot_pixel_rate_per_s = 0.0;
   double dead_pixel_fraction = 0.0;
