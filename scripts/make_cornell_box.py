@@ -27,7 +27,17 @@ roughness 0.25: a polished floor that mirrors the blocks and walls) and the
 tall block a rough metal (metallic 1, roughness 0.35: its base colour is its
 reflectance at normal incidence). Everything else is as in the diffuse box.
 
-Standard library only. Usage: python3 scripts/make_cornell_box.py [--glossy] [out.gltf]
+Retro-reflector variant (--retro, configs/scenes/cornell_box_retro.gltf): the
+diffuse box with a small bright plate at its opening, facing the camera, on a
+thin post standing on the floor's front edge, for configs/spad_lidar.yaml's
+crosstalk halo. The plate (`retro_reflector`, RETRO_* below) is white of
+albedo 1 (every photon reflected, diffusely: tofsim has no retro-reflective
+BRDF, so this is the brightest plate its materials give), nearer than the
+walls and lit by the spot's centre: about twice the counts of the back wall
+behind it in spad_lidar. Everything else is the diffuse box, byte for byte in
+its meshes.
+
+Standard library only. Usage: python3 scripts/make_cornell_box.py [--glossy | --retro] [out.gltf]
 """
 
 import math
@@ -52,6 +62,15 @@ GLOSSY_MATERIALS = [
     ("white_metal", (0.725, 0.71, 0.68), 1.0, 0.35),
 ]
 GLOSSY_GROUPS = {"floor": "white_glossy", "tall_block": "white_metal"}
+
+# The retro-reflector variant's plate (mm): 40 x 40, 3 thick, its front face
+# at the box's opening (z = 0, 0.8 m from the camera: optical path ~1.6 m, in
+# spad_lidar's time window), above the short block, right of the image centre
+# (+x is image left), so the back wall is behind it; and a 6 mm post from
+# the floor's front edge up to it.
+RETRO_MATERIAL = ("retro_white", (1.0, 1.0, 1.0), 0.0, 1.0)
+RETRO_CENTER_MM = (200.0, 330.0, 0.0)
+RETRO_HALF_MM, RETRO_THICK_MM, POST_HALF_MM = 20.0, 3.0, 3.0
 
 ROOM = [  # name, material, quad (mm), normal direction: "in" the room
     ("floor", "white", [(552.8, 0.0, 0.0), (0.0, 0.0, 0.0), (0.0, 0.0, 559.2), (549.6, 0.0, 559.2)]),
@@ -113,12 +132,37 @@ def build_groups():
     return groups
 
 
-def build_gltf(glossy=False):
+def box_triangles(lo, hi):
+    """The six outward faces of the axis-aligned box lo..hi (mm)."""
+    (x0, y0, z0), (x1, y1, z1) = lo, hi
+    c = [(x, y, z) for x in (x0, x1) for y in (y0, y1) for z in (z0, z1)]
+    center = centroid(c)
+    faces = [[c[0], c[1], c[3], c[2]], [c[4], c[6], c[7], c[5]],  # x0, x1
+             [c[0], c[4], c[5], c[1]], [c[2], c[3], c[7], c[6]],  # y0, y1
+             [c[0], c[2], c[6], c[4]], [c[1], c[5], c[7], c[3]]]  # z0, z1
+    tris = []
+    for face in faces:
+        tris += triangles(face, lambda p, center=center: sub(p, center))
+    return tris
+
+
+def retro_groups():
+    x, y, z = RETRO_CENTER_MM
+    h, t, w = RETRO_HALF_MM, RETRO_THICK_MM, POST_HALF_MM
+    plate = box_triangles((x - h, y - h, z), (x + h, y + h, z + t))
+    post = box_triangles((x - w, 0.0, z + t), (x + w, y - h, z + t + 2 * w))
+    return [("retro_reflector", "retro_white", plate), ("retro_post", "white", post)]
+
+
+def build_gltf(glossy=False, retro=False):
     groups = build_groups()
     materials = [(name, rgb, 0.0, 1.0) for name, rgb in MATERIALS]
     if glossy:
         materials += GLOSSY_MATERIALS
         groups = [(name, GLOSSY_GROUPS.get(name, material), tris) for name, material, tris in groups]
+    if retro:
+        materials.append(RETRO_MATERIAL)
+        groups += retro_groups()
     material_index = {m[0]: i for i, m in enumerate(materials)}
     blob = bytearray()
     gltf = new_gltf("tofsim scripts/make_cornell_box.py", "cornell_box", materials,
@@ -136,10 +180,12 @@ def build_gltf(glossy=False):
 
 
 def main():
-    glossy = "--glossy" in sys.argv[1:]
-    if glossy:
-        sys.argv.remove("--glossy")
-    write_gltf(build_gltf(glossy), "cornell_box_glossy.gltf" if glossy else "cornell_box.gltf")
+    glossy, retro = "--glossy" in sys.argv[1:], "--retro" in sys.argv[1:]
+    for flag in ("--glossy", "--retro"):
+        if flag in sys.argv:
+            sys.argv.remove(flag)
+    name = "cornell_box_glossy.gltf" if glossy else "cornell_box_retro.gltf" if retro else "cornell_box.gltf"
+    write_gltf(build_gltf(glossy, retro), name)
 
 
 if __name__ == "__main__":

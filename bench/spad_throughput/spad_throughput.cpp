@@ -7,7 +7,9 @@
 // Each configuration runs on 1 and on `threads` threads; the counts must be
 // byte-identical between them (checked and printed).
 // Usage: tofsim_spad_throughput [side=128] [bins=1000] [cycles=100000] [threads=2]
-//        [modes=both|synchronous|free-running]
+//        [modes=both|synchronous|free-running] [crosstalk=0]
+// crosstalk: crosstalk_probability to 4 neighbours, prompt (the streamed
+// first-order path, SpadCrosstalk.h); 0: off.
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -69,9 +71,10 @@ int main(int argc, char** argv) {
   const long long cycles = argc > 3 ? std::atoll(argv[3]) : 100000;
   const int threads = argc > 4 ? std::atoi(argv[4]) : 2;
   const std::string modes = argc > 5 ? argv[5] : "both";
+  const double crosstalk = argc > 6 ? std::atof(argv[6]) : 0.0;
   const TransientVolume v = syntheticVolume(side, bins);
-  std::printf("spad %dx%d, %d bins, %lld cycles, %u cores\n", side, side, bins, cycles,
-              std::thread::hardware_concurrency());
+  std::printf("spad %dx%d, %d bins, %lld cycles, crosstalk %g, %u cores\n", side, side, bins,
+              cycles, crosstalk, std::thread::hardware_concurrency());
   std::printf(
       "| mode | threads | wall s | CPU s | M bins/s (wall) | M bins/s per CPU second | same "
       "bytes |\n");
@@ -88,6 +91,7 @@ int main(int argc, char** argv) {
     p.ambient_rate_per_s = 20e6;
     p.dark_count_rate_per_s = 2e3;
     p.dead_time_s = mode == SpadMode::FreeRunning ? 200e-12 : 0.0;
+    p.crosstalk_probability = crosstalk;
     const Timed one = run(v, p, 1);
     const Timed many = run(v, p, threads);
     const bool same =

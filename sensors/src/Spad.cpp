@@ -7,6 +7,8 @@
 
 #include "ParallelPixels.h"
 #include "PeakDepth.h"
+#include "SpadAfterpulseFlux.h"
+#include "SpadCrosstalk.h"
 #include "SpadEstimators.h"
 #include "SpadEventEngine.h"
 #include "SpadGate.h"
@@ -40,13 +42,25 @@ void checkParams(const SpadParams& p) {
   TOFSIM_CHECK(p.jitter_tail_fraction >= 0.0 && p.jitter_tail_fraction <= 1.0);
   TOFSIM_CHECK(p.pde >= 0.0 && p.pde <= 1.0);
   TOFSIM_CHECK(p.ambient_rate_per_s >= 0.0 && p.dark_count_rate_per_s >= 0.0);
-  TOFSIM_CHECK(p.dead_time_s >= 0.0);
+  TOFSIM_CHECK(p.dead_time_s >= 0.0 && p.tdc_stops >= 0);
   TOFSIM_CHECK(p.gate_width_s >= 0.0 && p.gate_skew_sigma_s >= 0.0);
   TOFSIM_CHECK(p.gated_frames >= 0 && p.pulses_per_frame >= 1 && p.gate_positions >= 1);
   TOFSIM_CHECK(p.counter_bits >= 0 && p.counter_bits <= 62);
   TOFSIM_CHECK(p.afterpulse_probability >= 0.0 && p.afterpulse_probability <= 1.0);
-  TOFSIM_CHECK(p.afterpulse_probability == 0.0 || p.mode == SpadMode::FreeRunning);
-  TOFSIM_CHECK(p.afterpulse_delay_s > 0.0);
+  TOFSIM_CHECK(!p.afterpulse_delays_s.empty());
+  for (double d : p.afterpulse_delays_s) TOFSIM_CHECK(d > 0.0);
+  TOFSIM_CHECK(p.afterpulse_weights.empty() ||
+               p.afterpulse_weights.size() == p.afterpulse_delays_s.size());
+  TOFSIM_CHECK(p.crosstalk_probability >= 0.0 && p.crosstalk_probability <= 1.0);
+  TOFSIM_CHECK(p.crosstalk_delay_s >= 0.0);
+  // A delayed arrival may fall outside the gate: not modelled (a config error).
+  TOFSIM_CHECK(p.crosstalk_probability == 0.0 || p.crosstalk_delay_s == 0.0 ||
+               p.gate_width_s == 0.0);
+  // Nor a gate that differs between neighbours or has ramps, nor the gated
+  // frames' other gate positions (config errors: checkCrosstalkGate).
+  TOFSIM_CHECK(p.crosstalk_probability == 0.0 ||
+               (p.gate_rise_s == 0.0 && p.gate_fall_s == 0.0 && p.gate_skew_sigma_s == 0.0 &&
+                p.gated_frames == 0));
   if (p.irf.present()) {
     TOFSIM_CHECK(p.irf.sample_width_s > 0.0);
     TOFSIM_CHECK(p.pulse_fwhm_s == 0.0 && p.jitter_fwhm_s == 0.0 && p.jitter_tail_fraction == 0.0);
@@ -89,6 +103,25 @@ void fluxFromSignal(const std::vector<double>& signal, const TimeAxis& render, c
 void gateFlux(const SpadParams& p, const detail::SpadGate& gate, const SpadPixel& pixel,
               const detail::TdcBins& bins, std::vector<double>& flux) {
   if (p.gate_width_s > 0.0) detail::applyGate(gate.shifted(pixel.gate_skew_s), bins, flux);
+}
+
+// The event engine's laws of the model's detector (free-running: every
+// detection recorded).
+detail::DetectorLaws detectorLaws(const SpadParams& p, const TimeAxis& axis, int32_t deadBins) {
+  detail::DetectorLaws laws;
+  laws.deadBins = deadBins;
+  laws.stops = p.mode == SpadMode::Synchronous ? p.tdc_stops : 0;
+  detail::AfterpulseLaw& ap = laws.afterpulses;
+  ap.count = p.afterpulse_count == SpadAfterpulseCount::Poisson
+                 ? detail::AfterpulseLaw::Count::Poisson
+                 : detail::AfterpulseLaw::Count::Bernoulli;
+  ap.mean = p.afterpulse_probability;
+  ap.delays_bins.clear();
+  for (double d : p.afterpulse_delays_s) ap.delays_bins.push_back(d / axis.bin_width_s);
+  ap.weights = p.afterpulse_weights;
+  if (ap.weights.empty()) ap.weights.assign(ap.delays_bins.size(), 1.0);
+  ap.reset = p.afterpulse_traps == SpadAfterpulseTraps::Reset;
+  return laws;
 }
 
 SensorOutput image(const std::string& name, int32_t H, int32_t W, std::vector<float> data,
@@ -156,12 +189,19 @@ class SpadStream final : public SensorStream {
         gate_(detail::spadGate(p)),
         kernel_(spadKernel(p, axis_)),
         deadBins_(static_cast<int32_t>(std::lround(p.dead_time_s / axis_.bin_width_s))),
+        laws_(detectorLaws(p, axis_, deadBins_)),
         plotted_(plotPixels(p.plot_pixels, shape.height, shape.width)),
         histograms_(plotted_.size()),
         maps_(spadPixelMaps(p, shape.height, shape.width)),
         frames_(p, shape, options),
         estimator_(kernel_, axis_, p.return_threshold_sigma) {
     checkParams(p);
+    if (p.crosstalk_probability > 0.0) {
+      // A batch of an image row (at least 256 pixels) between look-aheads.
+      crosstalk_ = std::make_unique<detail::SpadCrosstalk>(
+          p, axis_.bins, axis_.bin_width_s, deadBins_, shape.width, shape.height,
+          std::max<std::size_t>(256, static_cast<std::size_t>(shape.width)));
+    }
     checkChannelSelection(p.common.channel, shape.channels);
     const std::size_t HW = shape.pixelCount();
     const float nan = std::numeric_limits<float>::quiet_NaN();
@@ -192,35 +232,26 @@ class SpadStream final : public SensorStream {
 
   void consume(const PixelSpan& span) override {
     TOFSIM_CHECK(span.firstPixel == next_ && next_ + span.pixelCount <= shape_.pixelCount());
-    const auto K = static_cast<std::size_t>(axis_.bins);
-    float* counts = nullptr;
-    if (writer_) {
-      chunk_.resize(span.pixelCount * K);
-      counts = chunk_.data();
-    } else {
-      counts = counts_.data.data() + span.firstPixel * K;
+    if (crosstalk_) {
+      consumeWithCrosstalk(span);
+      next_ += span.pixelCount;
+      return;
     }
-    frames_.beginSpan(span.firstPixel, span.pixelCount);
+    const auto K = static_cast<std::size_t>(axis_.bins);
+    float* counts = countsOf(span.firstPixel, span.pixelCount);
     detail::parallelPixels(span.pixelCount, options_.threads, [&](std::size_t b, std::size_t e) {
       Scratch scratch;
       for (std::size_t i = b; i < e; ++i) {
         pixel(span.volume + i * shape_.pixelFloats(), span.firstPixel + i, counts + i * K, scratch);
       }
     });
-    for (std::size_t k = 0; k < plotted_.size(); ++k) {
-      const std::size_t px =
-          static_cast<std::size_t>(plotted_[k][1]) * shape_.width + plotted_[k][0];
-      if (px < span.firstPixel || px >= span.firstPixel + span.pixelCount) continue;
-      const float* h = counts + (px - span.firstPixel) * K;
-      histograms_[k].assign(h, h + K);
-    }
-    if (writer_) writer_->append(chunk_.data(), chunk_.size());
-    frames_.endSpan();
+    emit(span.firstPixel, span.pixelCount, counts);
     next_ += span.pixelCount;
   }
 
   std::vector<SensorOutput> finish(const Image*) override {
     TOFSIM_CHECK(next_ == shape_.pixelCount());
+    TOFSIM_CHECK(!crosstalk_ || received_ == next_);
     if (writer_) writer_->close();
     const int32_t H = shape_.height, W = shape_.width;
     std::vector<SensorOutput> outputs;
@@ -284,7 +315,7 @@ class SpadStream final : public SensorStream {
 
  private:
   struct Scratch {
-    std::vector<double> signal, resampled, flux, h, lossless, lambda;
+    std::vector<double> signal, resampled, flux, fastFlux, ungated, h, lossless, lambda;
     detail::FirstPhotonScratch firstPhoton;
     SpadEstimator::Scratch estimates;
   };
@@ -296,25 +327,122 @@ class SpadStream final : public SensorStream {
     return o;
   }
 
+  // Where the fast draws are not exact: the first-photon law needs one stop,
+  // no afterpulse and a detector live again at the next pulse; the
+  // free-running binomials (exact marginals) no afterpulse. `flux` is the
+  // one the fast draws would use (with `engine: fast`, afterpulses in it).
+  // `engine: fast` takes afterpulses to first order when free-running only:
+  // a synchronous avalanche's releases follow the stop it made, and extra flux
+  // on the first-photon law cannot know that (SpadFastAfterpulseTest).
+  bool firstOrderAfterpulses() const {
+    return p_.engine == SpadEngine::Fast && p_.mode == SpadMode::FreeRunning;
+  }
+
+  bool needsEngine(const std::vector<double>& flux) const {
+    if (p_.engine == SpadEngine::Exact) return true;
+    if (laws_.afterpulses.on() && !firstOrderAfterpulses()) return true;
+    return p_.mode == SpadMode::Synchronous &&
+           (p_.tdc_stops != 1 || !detail::deadTimeEndsInItsCycle(flux, deadBins_));
+  }
+
+  // Where the counts of pixels first .. first + n - 1 go before emit().
+  float* countsOf(std::size_t first, std::size_t n) {
+    frames_.beginSpan(first, n);
+    const auto K = static_cast<std::size_t>(axis_.bins);
+    if (!writer_) return counts_.data.data() + first * K;
+    chunk_.resize(n * K);
+    return chunk_.data();
+  }
+
+  // The plotted histograms among pixels first .. first + n - 1, and the
+  // counts to the writer.
+  void emit(std::size_t first, std::size_t n, const float* counts) {
+    const auto K = static_cast<std::size_t>(axis_.bins);
+    for (std::size_t k = 0; k < plotted_.size(); ++k) {
+      const std::size_t px =
+          static_cast<std::size_t>(plotted_[k][1]) * shape_.width + plotted_[k][0];
+      if (px < first || px >= first + n) continue;
+      const float* h = counts + (px - first) * K;
+      histograms_[k].assign(h, h + K);
+    }
+    if (writer_) writer_->append(chunk_.data(), n * K);
+    frames_.endSpan();
+  }
+
+  // Crosstalk (SpadCrosstalk.h): each batch of the span's pixels is sent
+  // (own flux, then the profile the neighbours receive), then every pixel
+  // whose neighbours have all been sent is drawn, its neighbours' crosstalk
+  // added to its flux; the last span draws the rest.
+  void consumeWithCrosstalk(const PixelSpan& span) {
+    const auto K = static_cast<std::size_t>(axis_.bins);
+    for (std::size_t done = 0; done < span.pixelCount;) {
+      const std::size_t first = span.firstPixel + done;
+      const std::size_t n = std::min(crosstalk_->batch(), span.pixelCount - done);
+      detail::parallelPixels(n, options_.threads, [&](std::size_t b, std::size_t e) {
+        Scratch scratch;
+        for (std::size_t i = b; i < e; ++i) {
+          pixelFlux(span.volume + (done + i) * shape_.pixelFloats(), first + i,
+                    crosstalk_->flux(first + i), scratch);
+          crosstalk_->send(first + i);
+        }
+      });
+      done += n;
+      const std::size_t end = crosstalk_->receivable(first + n);
+      const std::size_t from = received_, count = end - from;
+      if (count == 0) continue;
+      float* counts = countsOf(from, count);
+      detail::parallelPixels(count, options_.threads, [&](std::size_t b, std::size_t e) {
+        Scratch scratch;
+        for (std::size_t i = b; i < e; ++i) {
+          crosstalk_->receive(from + i, scratch.flux);
+          drawPixel(from + i, counts + i * K, scratch);
+        }
+      });
+      emit(from, count, counts);
+      received_ = end;
+    }
+  }
+
   void pixel(const float* values, std::size_t px, float* out, Scratch& s) const {
-    const int32_t K = axis_.bins;
+    pixelFlux(values, px, s.flux, s);
+    drawPixel(px, out, s);
+  }
+
+  void pixelFlux(const float* values, std::size_t px, std::vector<double>& flux, Scratch& s) const {
     pixelSignal(values, shape_.axis.bins, shape_.channels, p_.common, s.signal);
-    const SpadPixel pixel{maps_.pde[px], maps_.dcr_per_s[px], maps_.kind[px],
-                          maps_.gate_skew_s[px]};
-    fluxFromSignal(s.signal, shape_.axis, p_, pixel, bins_, kernel_, s.resampled, s.flux);
-    frames_.pixel(px, s.flux, pixel.gate_skew_s, s.lambda);
-    gateFlux(p_, gate_, pixel, bins_, s.flux);
+    const SpadPixel pixel = pixelOf(px);
+    fluxFromSignal(s.signal, shape_.axis, p_, pixel, bins_, kernel_, s.resampled, flux);
+    // The gated frames sweep their own gates over the ungated flux (no
+    // crosstalk with them: checkParams), drawn with the pixel in drawPixel.
+    if (frames_.active()) s.ungated = flux;
+    gateFlux(p_, gate_, pixel, bins_, flux);
+  }
+
+  SpadPixel pixelOf(std::size_t px) const {
+    return {maps_.pde[px], maps_.dcr_per_s[px], maps_.kind[px], maps_.gate_skew_s[px]};
+  }
+
+  // The pixel's histogram from its flux s.flux, and its estimates; its gated
+  // frames from s.ungated.
+  void drawPixel(std::size_t px, float* out, Scratch& s) const {
+    const int32_t K = axis_.bins;
+    frames_.pixel(px, s.ungated, maps_.gate_skew_s[px], s.lambda);
     Rng rng(options_.seed, pixelStream(kSpadStreamTag, px));
     const auto N = static_cast<uint64_t>(p_.cycles);
-    if (p_.mode == SpadMode::Synchronous) {
-      detail::firstPhotonHistogram(s.flux, N, rng, s.firstPhoton, s.h);
-    } else if (p_.afterpulse_probability > 0.0) {
-      // Afterpulses correlate the bins: the exact event engine draws the pixel.
+    const bool firstOrder = firstOrderAfterpulses() && laws_.afterpulses.on();
+    const std::vector<double>& fast =
+        firstOrder
+            ? (s.fastFlux = detail::firstOrderAfterpulseFlux(s.flux, deadBins_, laws_.afterpulses))
+            : s.flux;
+    if (needsEngine(fast)) {
+      // Multi-stop TDCs, dead time past the cycle's end and afterpulses
+      // correlate bins and cycles: the exact event engine draws the pixel.
       s.h.assign(static_cast<std::size_t>(K), 0.0);
-      detail::spadEvents(s.flux, N, deadBins_, rng, s.h,
-                         {p_.afterpulse_probability, p_.afterpulse_delay_s / axis_.bin_width_s});
+      detail::spadEvents(s.flux, N, laws_, rng, s.h);
+    } else if (p_.mode == SpadMode::Synchronous) {
+      detail::firstPhotonHistogram(fast, N, rng, s.firstPhoton, s.h);
     } else {
-      const std::vector<double> m = freeRunningProbabilities(s.flux, deadBins_);
+      const std::vector<double> m = freeRunningProbabilities(fast, deadBins_);
       s.h.resize(static_cast<std::size_t>(K));
       for (int32_t i = 0; i < K; ++i) s.h[i] = static_cast<double>(rng.binomial(N, m[i]));
     }
@@ -356,6 +484,7 @@ class SpadStream final : public SensorStream {
   const detail::SpadGate gate_;
   const BinKernel kernel_;
   const int32_t deadBins_;
+  const detail::DetectorLaws laws_;
   const std::vector<std::array<int32_t, 2>> plotted_;
   std::vector<std::vector<float>> histograms_;
   const SpadPixelMaps maps_;
@@ -364,6 +493,8 @@ class SpadStream final : public SensorStream {
   SensorOutput counts_;
   std::unique_ptr<ArrayWriter> writer_;
   std::vector<float> chunk_;
+  std::unique_ptr<detail::SpadCrosstalk> crosstalk_;  ///< null: no crosstalk
+  std::size_t received_ = 0;                          ///< pixels drawn, with crosstalk
   // Written by pixel() from several threads, each pixel by one only.
   mutable std::vector<float> depthPeak_, depthCoates_, intensity_, depthMatched_, confidence_,
       returns_;

@@ -18,7 +18,8 @@ void applyNlosGated(SpadParams& p) {
 constexpr std::array<SpadPresetValue, 6> kNlosGatedValues{{
     {"mode", "[PH300] TCSPC: one start-stop time per laser sync (first photon)", nullptr},
     {"bin_width", "[PH300] PicoHarp 300 base resolution 4 ps", nullptr},
-    {"dead_time", "[PH300] TCSPC dead time 95 ns (used in free_running mode)", nullptr},
+    {"dead_time",
+     "[PH300] TCSPC dead time 95 ns (after each detection: the cycles it spans are lost)", nullptr},
     {"jitter_fwhm",
      "[MH150 p.10] SPAD jitter 50-500 ps FWHM: the lower end; [RENNA20] < 50 ps FWHM for the "
      "fast-gated array",

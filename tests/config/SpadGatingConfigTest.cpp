@@ -6,6 +6,7 @@
 
 #include <fstream>
 #include <string>
+#include <utility>
 #include <variant>
 #include <vector>
 
@@ -104,6 +105,23 @@ TEST_F(SpadGatingConfigTest, GatedFramesNeedAGateAndASweepInsideTheWindow) {
       "    gate_start: 1.09 ns\n    gate_width: 5 ps\n    gated_frames: 10\n"
       "    gate_step: 1 ps\n    gate_positions: 100\n",
       "gate_step", "last gate position");
+}
+
+// Crosstalk is drawn from the neighbours' avalanches inside one shared hard
+// gate: a shaped, skewed or swept gate with it is refused, located on the key.
+TEST_F(SpadGatingConfigTest, CrosstalkOnlyWithAHardUnskewedGate) {
+  const std::string gate = "    gate_start: 1.01 ns\n    gate_width: 20 ps\n";
+  const std::string crosstalk = "    crosstalk_probability: 0.05\n";
+  const sensors::SpadParams p = load(gate + crosstalk);
+  EXPECT_DOUBLE_EQ(p.crosstalk_probability, 0.05);
+  EXPECT_DOUBLE_EQ(p.gate_width_s, 20e-12);
+  for (const auto& [key, value] :
+       {std::pair{"gate_rise", "2 ps"}, std::pair{"gate_fall", "2 ps"},
+        std::pair{"gate_skew_sigma", "1 ps"}, std::pair{"gated_frames", "10"}}) {
+    SCOPED_TRACE(key);
+    expectError(gate + crosstalk + "    " + key + ": " + value + "\n", key, "not modelled");
+    EXPECT_NO_THROW(load(gate + "    " + key + ": " + value + "\n"));  // without crosstalk: fine
+  }
 }
 
 TEST_F(SpadGatingConfigTest, TdcDnlFromAListOrAFileWithLocatedErrors) {

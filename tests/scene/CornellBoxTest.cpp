@@ -41,6 +41,28 @@ TEST(CornellBoxTest, GlossyVariantKeepsTheReflectancesAsBaseColours) {
   }
 }
 
+// scripts/make_cornell_box.py --retro: the diffuse box and a white plate of
+// albedo 1 on a post at the opening (configs/spad_lidar.yaml's crosstalk
+// halo), inside the box's bounds.
+TEST(CornellBoxTest, RetroVariantAddsABrightPlateOnAPost) {
+  const Scene scene = loadGltf(TOFSIM_SOURCE_DIR "/configs/scenes/cornell_box_retro.gltf");
+  const Scene box = loadGltf(kCornell);
+  EXPECT_EQ(scene.triangleCount(), box.triangleCount() + 24u);  // two boxes of 12
+  const Material* plate = find(scene, "retro_white");
+  ASSERT_TRUE(plate);
+  EXPECT_FLOAT_EQ(plate->albedo.r, 1.0f);
+  EXPECT_FLOAT_EQ(plate->albedo.g, 1.0f);
+  EXPECT_FLOAT_EQ(plate->albedo.b, 1.0f);
+  bool found = false;
+  for (const Mesh& m : scene.meshes) {
+    if (m.name == "retro_reflector") found = scene.materials.at(m.material).name == "retro_white";
+  }
+  EXPECT_TRUE(found);
+  const Bounds a = scene.bounds(), b = box.bounds();
+  EXPECT_EQ(a.min, b.min);
+  EXPECT_EQ(a.max, b.max);
+}
+
 TEST(CornellBoxTest, GeometryInMetres) {
   LoadReport report;
   const Scene scene = loadGltf(kCornell, &report);

@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -28,8 +29,21 @@ std::vector<double> events(const std::vector<double>& flux, uint64_t cycles, int
                            uint64_t seed) {
   Rng rng(seed, 1);
   std::vector<double> h(flux.size(), 0.0);
-  detail::spadEvents(flux, cycles, deadBins, rng, h);
+  detail::DetectorLaws laws;  // deadBins < 0: synchronous first photon
+  laws.deadBins = std::max(deadBins, 0);
+  laws.stops = deadBins < 0 ? 1 : 0;
+  detail::spadEvents(flux, cycles, laws, rng, h);
   return h;
+}
+
+// Free-running with Bernoulli(p) afterpulses of one Exp(tau) delay (bins).
+detail::DetectorLaws freeRunningAfterpulses(int32_t deadBins, double p, double tau) {
+  detail::DetectorLaws laws;
+  laws.deadBins = deadBins;
+  laws.stops = 0;
+  laws.afterpulses.mean = p;
+  laws.afterpulses.delays_bins = {tau};
+  return laws;
 }
 
 tofsim::test::ChiSquare againstFirstPhoton(std::vector<double> h, const std::vector<double>& law,
@@ -120,7 +134,7 @@ TEST(SpadEventEngineTest, AfterpulsesFollowTheRenewalRate) {
   for (const auto& [p, tau] : {std::pair{0.3, 5.0}, std::pair{0.6, 40.0}}) {
     Rng rng(21, 1);
     std::vector<double> h(flux.size(), 0.0);
-    detail::spadEvents(flux, cycles, 4, rng, h, {p, tau});
+    detail::spadEvents(flux, cycles, freeRunningAfterpulses(4, p, tau), rng, h);
     double total = 0.0;
     for (double c : h) total += c;
     const double expected = bins * renewalRate(f, 4, p, tau);
@@ -178,7 +192,7 @@ TEST(SpadEventEngineTest, AfterpulsesMakeATailAsTheirRenewalPredicts) {
   const double cycles = 200000;
   Rng rng(22, 1);
   std::vector<double> h(flux.size(), 0.0);
-  detail::spadEvents(flux, 200000, dead, rng, h, {p, tau});
+  detail::spadEvents(flux, 200000, freeRunningAfterpulses(dead, p, tau), rng, h);
   const std::vector<double> law = expectedTail(16, 400, dead, p, tau);
   const tofsim::test::ChiSquare fit = tailChiSquare(h, law, cycles);
   EXPECT_LT(fit.statistic, tofsim::test::chiSquareQuantile(fit.dof, 3.09));
@@ -202,7 +216,7 @@ TEST(SpadEventEngineTest, TheSpadModelsAfterpulsesAreTheEngines) {
   p.pde = 1.0;
   p.dead_time_s = 5 * w;
   p.afterpulse_probability = 0.5;
-  p.afterpulse_delay_s = 30 * w;
+  p.afterpulse_delays_s = {30 * w};
   const std::vector<SensorOutput> outs = runSpad(v, p, 5);
   const SensorOutput& c = test::array(outs, "spad_counts");
   std::vector<double> h(400, 0.0);

@@ -303,16 +303,12 @@ void checkBounceOrders(const ConfigNode& list, const RunConfig& config) {
 }
 
 // A SPAD gate must open inside the TDC's window (its bins on the render's
-// axis), or the detector never counts; afterpulses need the free-running mode.
+// axis), or the detector never counts.
 void checkSpadGates(const ConfigNode& list, const RunConfig& config) {
   const std::vector<ConfigNode> elements = list.elements();
   for (std::size_t i = 0; i < config.sensors.size(); ++i) {
     const auto* spad = std::get_if<sensors::SpadParams>(&config.sensors[i].params);
     if (!spad) continue;
-    if (spad->afterpulse_probability > 0.0 && spad->mode != sensors::SpadMode::FreeRunning) {
-      elements[i].failKey("afterpulse_probability",
-                          "afterpulses are modelled for `mode: free_running` only (so far)");
-    }
     const TimeAxis tdc = sensors::resolveBins(spad->bins, config.render.time);
     if (spad->tdc_dnl.present() && static_cast<int32_t>(spad->tdc_dnl.values.size()) != tdc.bins) {
       elements[i].failKey("tdc_dnl", "has " + std::to_string(spad->tdc_dnl.values.size()) +

@@ -67,6 +67,18 @@ void SensorConfigType<SpadParams>::emit(YAML::Node& n, const SpadParams& p) {
       if (p.dark_count_map.present()) n["dark_count_map"] = p.dark_count_map.file;
       return;
     }
+    if (key == "afterpulse_delay") {
+      if (p.afterpulse_delays_s.size() == 1) {
+        n[key.data()] = durationText(p.afterpulse_delays_s[0]);
+      } else {
+        for (double d : p.afterpulse_delays_s) n[key.data()].push_back(durationText(d));
+      }
+      return;
+    }
+    if (key == "afterpulse_weights") {
+      for (double w : p.afterpulse_weights) n[key.data()].push_back(w);
+      return;
+    }
     if (key != "plot_pixels") return;
     for (const auto& [x, y] : p.plot_pixels) {
       YAML::Node xy;

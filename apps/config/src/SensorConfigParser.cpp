@@ -120,6 +120,63 @@ void checkGateShape(const ConfigNode& n, const SpadParams& p) {
                   durationText(0.5 * (p.gate_rise_s + p.gate_fall_s)) + ")");
   }
 }
+
+// Crosstalk's neighbours send what they detect inside their own gate: with
+// ramps or per-pixel skew a receiver's armed times differ from its
+// neighbour's (the bin averages of one gate do not give the product of two),
+// and the gated frames' other gate positions get no crosstalk profile of
+// their own, so those combinations are refused rather than drawn wrong.
+void checkCrosstalkGate(const ConfigNode& n, const SpadParams& p) {
+  if (!(p.crosstalk_probability > 0.0)) return;
+  for (const auto& [key, set] :
+       {std::pair{"gate_rise", p.gate_rise_s > 0.0}, std::pair{"gate_fall", p.gate_fall_s > 0.0},
+        std::pair{"gate_skew_sigma", p.gate_skew_sigma_s > 0.0},
+        std::pair{"gated_frames", p.gated_frames > 0}}) {
+    if (set) {
+      n.failKey(key, std::string("crosstalk (crosstalk_probability) with `") + key +
+                         "` is not modelled: use a hard, unskewed gate without gated frames, "
+                         "or no crosstalk");
+    }
+  }
+}
+
+// `afterpulse_delay` (a duration or a list: the mixture's means) and
+// `afterpulse_weights` (numbers), each element with its own located error.
+void parseAfterpulseList(const ConfigNode& n, std::string_view key, SpadParams& p) {
+  const auto list = n.optionalChild(std::string(key));
+  if (!list) return;
+  const bool delays = key == "afterpulse_delay";
+  std::vector<double>& out = delays ? p.afterpulse_delays_s : p.afterpulse_weights;
+  out.clear();
+  for (const ConfigNode& e : list->isSequence() ? list->elements() : std::vector{*list}) {
+    const double v = delays ? e.asDuration_s() : e.asDouble();
+    if (delays && !(v > 0.0)) e.fail("delay must be > 0 (got " + e.asString() + ")");
+    if (!delays && !(v >= 0.0)) e.fail("weight must be >= 0 (got " + e.asString() + ")");
+    out.push_back(v);
+  }
+  if (out.empty()) list->fail("must list at least one value");
+}
+
+// The afterpulse keys that must agree, and the ones that mean nothing
+// without afterpulses.
+void checkAfterpulses(const ConfigNode& n, const SpadParams& p) {
+  const std::size_t delays = p.afterpulse_delays_s.size(), weights = p.afterpulse_weights.size();
+  if (weights > 0 && weights != delays) {
+    n.failKey("afterpulse_weights", "gives " + std::to_string(weights) + " weights for " +
+                                        std::to_string(delays) + " afterpulse_delay means");
+  }
+  if (weights > 0) {
+    double sum = 0.0;
+    for (double w : p.afterpulse_weights) sum += w;
+    if (!(sum > 0.0)) n.failKey("afterpulse_weights", "must not all be 0");
+  }
+  if (p.afterpulse_probability > 0.0) return;
+  const char* without = nullptr;
+  if (p.afterpulse_count != SpadAfterpulseCount::Bernoulli) without = "afterpulse_count";
+  if (p.afterpulse_traps != SpadAfterpulseTraps::Reset) without = "afterpulse_traps";
+  if (weights > 0) without = "afterpulse_weights";
+  if (without) n.failKey(without, "has no effect while afterpulse_probability is 0");
+}
 }  // namespace
 
 SpadParams SensorConfigType<SpadParams>::parse(const ConfigNode& n) {
@@ -155,6 +212,10 @@ SpadParams SensorConfigType<SpadParams>::parse(const ConfigNode& n) {
       if (n.has("dark_count_map")) p.dark_count_map = parseDarkCountMap(n);
       return;
     }
+    if (key == "afterpulse_delay" || key == "afterpulse_weights") {
+      parseAfterpulseList(n, key, p);
+      return;
+    }
     if (key != "plot_pixels") return;
     if (auto pixels = n.optionalChild("plot_pixels")) {  // a list of pairs: by hand
       for (const ConfigNode& e : pixels->elements()) {
@@ -164,6 +225,10 @@ SpadParams SensorConfigType<SpadParams>::parse(const ConfigNode& n) {
       }
     }
   });
+  checkAfterpulses(n, p);
+  if (p.mode == SpadMode::FreeRunning && p.tdc_stops != 1) {
+    n.failKey("tdc_stops", "is for `mode: synchronous` (free_running records every detection)");
+  }
   if (p.hot_pixel_fraction > 0.0 && !(p.hot_pixel_rate_per_s > 0.0)) {
     n.failKey("hot_pixel_rate", "must be > 0 when hot_pixel_fraction is set");
   }
@@ -172,6 +237,13 @@ SpadParams SensorConfigType<SpadParams>::parse(const ConfigNode& n) {
     n.failKey("dark_count_log_sigma",
               "the measured `dark_count_map` replaces the log-normal draw: remove it");
   }
+  // A delayed arrival may land outside the gate, which the fast path does not follow.
+  if (p.crosstalk_probability > 0.0 && p.crosstalk_delay_s > 0.0 && p.gate_width_s > 0.0) {
+    n.failKey("crosstalk_delay",
+              "delayed crosstalk with a gate (gate_width) is not modelled: "
+              "use prompt crosstalk (0) or no gate");
+  }
+  checkCrosstalkGate(n, p);
   return p;
 }
 

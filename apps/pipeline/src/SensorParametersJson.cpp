@@ -101,6 +101,19 @@ json modelJson(const SpadParams& p, const TimeAxis& render) {
                              {"shape", {p.dark_count_map.height, p.dark_count_map.width}}};
       return;
     }
+    if (key == "afterpulse_delay") {
+      j["afterpulse_delays_s"] = p.afterpulse_delays_s;
+      return;
+    }
+    if (key == "afterpulse_weights") {  // as used: normalised, equal when not given
+      std::vector<double> w = p.afterpulse_weights;
+      if (w.empty()) w.assign(p.afterpulse_delays_s.size(), 1.0);
+      double sum = 0.0;
+      for (double x : w) sum += x;
+      for (double& x : w) x /= sum;
+      j["afterpulse_weights"] = w;
+      return;
+    }
     if (key != "plot_pixels") return;
     j["plot_pixels_xy"] = json::array();
     for (const auto& [x, y] : p.plot_pixels) j["plot_pixels_xy"].push_back({x, y});

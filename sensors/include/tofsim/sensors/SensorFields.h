@@ -66,6 +66,16 @@ inline constexpr auto kStreakFields = std::tuple{
 inline constexpr std::array<Name<SpadMode>, 2> kSpadModeNames{
     {{"synchronous", SpadMode::Synchronous}, {"free_running", SpadMode::FreeRunning}}};
 
+inline constexpr std::array<Name<SpadAfterpulseCount>, 2> kAfterpulseCountNames{
+    {{"bernoulli", SpadAfterpulseCount::Bernoulli}, {"poisson", SpadAfterpulseCount::Poisson}}};
+inline constexpr std::array<Name<SpadAfterpulseTraps>, 2> kAfterpulseTrapsNames{
+    {{"reset", SpadAfterpulseTraps::Reset}, {"keep", SpadAfterpulseTraps::Keep}}};
+
+inline constexpr std::array<Name<SpadEngine>, 3> kSpadEngineNames{
+    {{"auto", SpadEngine::Auto}, {"exact", SpadEngine::Exact}, {"fast", SpadEngine::Fast}}};
+inline constexpr std::array<Name<CrosstalkNeighbours>, 2> kCrosstalkNeighbourNames{
+    {{"4", CrosstalkNeighbours::Four}, {"8", CrosstalkNeighbours::Eight}}};
+
 inline constexpr auto kSpadFields = std::tuple{
     Custom{"preset", "string", "", "none", "-", "device preset: its published values are the defaults of the other keys (bins included), each explicit key wins (see \"Device presets\" above)"},
     Field{"mode", &SpadParams::mode, Choice<SpadMode>{kSpadModeNames},
@@ -87,7 +97,9 @@ inline constexpr auto kSpadFields = std::tuple{
     Field{"dark_count_rate", &SpadParams::dark_count_rate_per_s, Rate{kNonNegative},
           {.unit = "counts / s", .json = "dark_count_rate_per_s", .doc = "dark counts"}},
     Field{"dead_time", &SpadParams::dead_time_s, Duration{kNonNegative},
-          {.json = "dead_time_s", .doc = "free-running dead time, rounded to TDC bins"}},
+          {.json = "dead_time_s", .doc = "dead time after every avalanche, rounded to TDC bins; may span cycles (synchronous: the cycles after a detection it covers are lost)"}},
+    Field{"tdc_stops", &SpadParams::tdc_stops, IntegerIn{0, 1'000'000'000},
+          {.json = "tdc_stops", .doc = "`synchronous`: detections recorded per cycle (multi-stop TDC), each followed by `dead_time`; later avalanches of the cycle still happen, unrecorded; 0: every one; 1: first photon"}},
     Field{"gate_start", &SpadParams::gate_start_s, Duration{kAnyValue},
           {.json = "gate_start_s", .doc = "time gating: the detector is armed from this time of each cycle (the TDC's time) ..."}},
     Field{"gate_width", &SpadParams::gate_width_s, Duration{kNonNegative},
@@ -110,9 +122,21 @@ inline constexpr auto kSpadFields = std::tuple{
           {.json = "counter_bits", .doc = "counter depth: every count (`spad_counts` bins, gated counts) clips at 2^bits - 1; 0: unlimited"}},
     Custom{"tdc_dnl", "list or file", "", "none (equal bins)", "LSB", "TDC differential non-linearity, one value per bin (each > -1, sum 0): code i is `bin_width` (1 + DNL_i) wide, so pile-up acts on the true unequal bins; a list, or a .npy (1-D float32) or one-column .csv file (see \"TDC non-linearity\" above)"},
     Field{"afterpulse_probability", &SpadParams::afterpulse_probability, Number{kFraction},
-          {.json = "afterpulse_probability", .doc = "`free_running`: probability that an avalanche leaves a trapped carrier whose release is an afterpulse (the exact event engine draws such pixels); 0: none"}},
-    Field{"afterpulse_delay", &SpadParams::afterpulse_delay_s, Duration{kPositive},
-          {.json = "afterpulse_delay_s", .doc = "mean of the exponential release delay, counted from the end of the dead time"}},
+          {.json = "afterpulse_probability", .doc = "afterpulses per avalanche: the probability p of one (`bernoulli`) or the mean mu (`poisson`); 0: none. The exact event engine draws such pixels"}},
+    Field{"afterpulse_count", &SpadParams::afterpulse_count, Choice<SpadAfterpulseCount>{kAfterpulseCountNames},
+          {.json = "afterpulse_count", .doc = "law of the number of afterpulses per avalanche: `bernoulli` (p) or `poisson` (mu)"}},
+    Custom{"afterpulse_delay", "duration or list of durations", "> 0", "10 ns", "s", "mean release delay after the end of the dead time: one exponential, or a mixture of exponentials with these means"},
+    Custom{"afterpulse_weights", "list of numbers", ">= 0", "equal", "-", "weights of the mixture's exponentials (one per `afterpulse_delay`, any scale)"},
+    Field{"afterpulse_traps", &SpadParams::afterpulse_traps, Choice<SpadAfterpulseTraps>{kAfterpulseTrapsNames},
+          {.json = "afterpulse_traps", .doc = "`reset`: each avalanche empties the traps of the ones before (the renewal model); `keep`: every release stays pending, lost only if it comes while the detector is dead"}},
+    Field{"engine", &SpadParams::engine, Choice<SpadEngine>{kSpadEngineNames},
+          {.json = "engine", .doc = "`auto`: the exact event engine for the pixels an effect needs it for (multi-stop, dead time past the cycle, afterpulses), the fast draws elsewhere; `exact`: the engine for every pixel; `fast`: afterpulses to first order as extra flux on the fast draws (see \"Afterpulsing\" above)"}},
+    Field{"crosstalk_probability", &SpadParams::crosstalk_probability, Number{kFraction},
+          {.json = "crosstalk_probability", .doc = "probability that an avalanche triggers one in each neighbouring pixel (first order, see \"Crosstalk\" above); 0: none"}},
+    Field{"crosstalk_neighbours", &SpadParams::crosstalk_neighbours, Choice<CrosstalkNeighbours>{kCrosstalkNeighbourNames},
+          {.json = "crosstalk_neighbours", .doc = "`4` (edge neighbours) or `8` (and the diagonal ones), each with `crosstalk_probability`"}},
+    Field{"crosstalk_delay", &SpadParams::crosstalk_delay_s, Duration{kNonNegative},
+          {.json = "crosstalk_delay_s", .doc = "0: prompt (the neighbour fires in the same bin); else the mean of an exponential delay"}},
     Custom{"irf", "mapping", "", "none (pulse and jitter)", "-", "measured instrument response in place of `pulse_fwhm` and `jitter_*`: `file` (.npy float32, or CSV time,value), `bin_width` (.npy), `t0` (peak, centroid or a time), `floor` (see \"Measured instrument response\" above)"},
     Field{"fpn_seed", &SpadParams::fpn_seed, IntegerIn{0, 4294967295LL},
           {.json = "fpn_seed", .doc = "seed of the array's fixed pattern (below), separate from the noise seed: the same device under every noise seed"}},

@@ -20,6 +20,13 @@
 namespace tofsim::sensors {
 
 enum class SpadMode { Synchronous, FreeRunning };
+enum class SpadAfterpulseCount { Bernoulli, Poisson };
+enum class SpadAfterpulseTraps { Reset, Keep };
+enum class SpadEngine { Auto, Exact, Fast };
+
+/// The neighbours an avalanche can trigger by crosstalk: the 4 sharing an
+/// edge, or the 8 sharing an edge or a corner (each with the same probability).
+enum class CrosstalkNeighbours { Four = 4, Eight = 8 };
 
 /// A measured instrument response (the config's `irf:`), in place of the
 /// Gaussian pulse and jitter: the delay from a photon's arrival to its
@@ -82,7 +89,13 @@ struct SpadParams {
   double pde = 0.3;                    ///< photon detection efficiency, [0, 1]
   double ambient_rate_per_s = 0.0;     ///< ambient photons arriving at the pixel, 1/s (PDE applies)
   double dark_count_rate_per_s = 0.0;  ///< dark counts, 1/s
-  double dead_time_s = 0.0;            ///< free-running: non-paralysable, rounded to TDC bins
+  /// Dead time after every avalanche (recorded or not), non-paralysable,
+  /// rounded to TDC bins; it may run into later cycles (synchronous: the
+  /// cycles it spans are lost after a detection).
+  double dead_time_s = 0.0;
+  /// Synchronous: detections the TDC records per cycle (a multi-stop TDC),
+  /// each followed by the dead time; 0: every one. 1: first photon.
+  int64_t tdc_stops = 1;
   /// Time gating: the detector is armed only in [gate_start, gate_start +
   /// gate_width) of each cycle (times as the TDC's), so light, ambient and
   /// dark counts outside cause no detection and no pile-up; a bin the gate
@@ -111,12 +124,32 @@ struct SpadParams {
   /// at 2^counter_bits - 1. 0: unlimited.
   int32_t counter_bits = 0;
   SpadDnl tdc_dnl;  ///< TDC differential non-linearity; none: equal bins
-  /// Free-running afterpulsing: each avalanche leaves a trapped carrier with
-  /// this probability, released an Exp(afterpulse_delay) time after the end of
-  /// the hold-off as a detection unless a photon comes first (the exact event
-  /// engine, SpadEventEngine.h, draws these pixels). 0: none.
+  /// Afterpulsing (both modes; the exact event engine, SpadEventEngine.h,
+  /// draws these pixels): each avalanche fills a Bernoulli(p) or Poisson(mu)
+  /// number of traps (afterpulse_count, p or mu = afterpulse_probability),
+  /// each released a delay after the end of its dead time, from a mixture of
+  /// exponentials of means afterpulse_delays_s and weights afterpulse_weights
+  /// (empty: equal); a release while the detector is live is an avalanche
+  /// (recorded if the TDC has a stop left), one while it is dead is lost.
+  /// Reset: each avalanche empties the traps of the ones before. 0: none.
   double afterpulse_probability = 0.0;
-  double afterpulse_delay_s = 10e-9;
+  SpadAfterpulseCount afterpulse_count = SpadAfterpulseCount::Bernoulli;
+  std::vector<double> afterpulse_delays_s = {10e-9};
+  std::vector<double> afterpulse_weights;
+  SpadAfterpulseTraps afterpulse_traps = SpadAfterpulseTraps::Reset;
+  /// Which draws: Auto, the exact event engine where an effect needs it
+  /// (multi-stop, dead time past the cycle, afterpulses), the fast draws
+  /// elsewhere; Exact, the engine for every pixel (the reference); Fast,
+  /// afterpulses to first order as extra flux on the fast draws
+  /// (SpadAfterpulseFlux.h), the engine only for the other effects.
+  SpadEngine engine = SpadEngine::Auto;
+  /// Crosstalk: each avalanche triggers one in each of its neighbours with
+  /// this probability, after a delay (0: prompt, in the same bin; else
+  /// exponential with this mean); 0: none. Drawn on the fast path to first
+  /// order, from the neighbours' expected avalanches (SpadCrosstalk.h).
+  double crosstalk_probability = 0.0;
+  CrosstalkNeighbours crosstalk_neighbours = CrosstalkNeighbours::Four;
+  double crosstalk_delay_s = 0.0;
   SpadIrf irf;  ///< measured response; when present, pulse and jitter (all 0) are not used
   /// Array non-uniformity, a fixed pattern drawn from fpn_seed alone (not the
   /// noise seed: the same device under every noise seed), per pixel (y, x):
@@ -142,7 +175,8 @@ struct SpadParams {
 /// Expected detections per cycle in each TDC bin of pixel (y, x) if nothing
 /// were lost to pile-up or dead time: PDE * (signal * pulse * jitter + ambient)
 /// + dark (signal * IRF with an IRF; the pixel's PDE and DCR of its fixed
-/// pattern). `axis` is the TDC axis (resolveBins of params.bins).
+/// pattern). `axis` is the TDC axis (resolveBins of params.bins). The
+/// pixel's own light only: its neighbours' crosstalk is not in it.
 void spadFluxPerCycle(const TransientVolume& volume, const SpadParams& params, const TimeAxis& axis,
                       int32_t y, int32_t x, std::vector<double>& flux);
 
