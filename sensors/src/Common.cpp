@@ -94,4 +94,22 @@ void resampleEnergy(const std::vector<double>& in, const TimeAxis& from, const T
   }
 }
 
+void resampleEnergyToEdges(const std::vector<double>& in, const TimeAxis& from,
+                           const std::vector<double>& edges, std::vector<double>& out) {
+  TOFSIM_CHECK(static_cast<int32_t>(in.size()) == from.bins && from.bin_width_s > 0.0);
+  TOFSIM_CHECK(edges.size() >= 2);
+  out.assign(edges.size() - 1, 0.0);
+  // One sweep: source bin i and target bin k advance together.
+  std::size_t k = 0;
+  for (int32_t i = 0; i < from.bins && k < out.size(); ++i) {
+    const double a = from.binStart_s(i), b = a + from.bin_width_s;
+    const double density = in[i] / from.bin_width_s;
+    while (k < out.size() && edges[k + 1] <= a) ++k;
+    for (std::size_t j = k; j < out.size() && edges[j] < b; ++j) {
+      const double overlap = std::min(b, edges[j + 1]) - std::max(a, edges[j]);
+      if (overlap > 0.0) out[j] += density * overlap;
+    }
+  }
+}
+
 }  // namespace tofsim::sensors

@@ -66,7 +66,10 @@ std::uintmax_t SensorType<SpadParams>::outputBytes(const SpadParams& p, int32_t 
                                                    int32_t height, const TimeAxis& render) {
   const std::uintmax_t bins = resolveBins(p.bins, render).bins;
   const auto pixels = static_cast<std::uintmax_t>(width) * static_cast<std::uintmax_t>(height);
-  return pixels * bins * 4 + imageBytes(width, height);
+  // Gated frames: counts and flux per gate position.
+  const std::uintmax_t gated =
+      p.gated_frames > 0 ? 2 * static_cast<std::uintmax_t>(p.gate_positions) : 0;
+  return pixels * (bins + gated) * 4 + imageBytes(width, height);
 }
 std::optional<InstrumentWindow> SensorType<SpadParams>::window(const SpadParams& p) {
   return InstrumentWindow{p.common, p.bins, {}};

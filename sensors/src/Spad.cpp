@@ -11,6 +11,8 @@
 #include "SpadCrosstalk.h"
 #include "SpadEstimators.h"
 #include "SpadEventEngine.h"
+#include "SpadGate.h"
+#include "SpadGatedFrames.h"
 #include "SpadSampling.h"
 #include "tofsim/sensors/Random.h"
 #include "tofsim/sensors/SpadPixelMaps.h"
@@ -41,7 +43,9 @@ void checkParams(const SpadParams& p) {
   TOFSIM_CHECK(p.pde >= 0.0 && p.pde <= 1.0);
   TOFSIM_CHECK(p.ambient_rate_per_s >= 0.0 && p.dark_count_rate_per_s >= 0.0);
   TOFSIM_CHECK(p.dead_time_s >= 0.0 && p.tdc_stops >= 0);
-  TOFSIM_CHECK(p.gate_width_s >= 0.0);
+  TOFSIM_CHECK(p.gate_width_s >= 0.0 && p.gate_skew_sigma_s >= 0.0);
+  TOFSIM_CHECK(p.gated_frames >= 0 && p.pulses_per_frame >= 1 && p.gate_positions >= 1);
+  TOFSIM_CHECK(p.counter_bits >= 0 && p.counter_bits <= 62);
   TOFSIM_CHECK(p.afterpulse_probability >= 0.0 && p.afterpulse_probability <= 1.0);
   TOFSIM_CHECK(!p.afterpulse_delays_s.empty());
   for (double d : p.afterpulse_delays_s) TOFSIM_CHECK(d > 0.0);
@@ -52,6 +56,11 @@ void checkParams(const SpadParams& p) {
   // A delayed arrival may fall outside the gate: not modelled (a config error).
   TOFSIM_CHECK(p.crosstalk_probability == 0.0 || p.crosstalk_delay_s == 0.0 ||
                p.gate_width_s == 0.0);
+  // Nor a gate that differs between neighbours or has ramps, nor the gated
+  // frames' other gate positions (config errors: checkCrosstalkGate).
+  TOFSIM_CHECK(p.crosstalk_probability == 0.0 ||
+               (p.gate_rise_s == 0.0 && p.gate_fall_s == 0.0 && p.gate_skew_sigma_s == 0.0 &&
+                p.gated_frames == 0));
   if (p.irf.present()) {
     TOFSIM_CHECK(p.irf.sample_width_s > 0.0);
     TOFSIM_CHECK(p.pulse_fwhm_s == 0.0 && p.jitter_fwhm_s == 0.0 && p.jitter_tail_fraction == 0.0);
@@ -64,25 +73,36 @@ void checkParams(const SpadParams& p) {
 }
 
 // Per-cycle flux of one pixel from its render bins (signal in photo-electrons),
-// with the pixel's own PDE and dark count rate.
+// with the pixel's own PDE and dark count rate, before the gate. With a
+// DNL table the light is first spread over the nominal bins (where the
+// kernel is defined), then moved into the true unequal bins by overlap.
 void fluxFromSignal(const std::vector<double>& signal, const TimeAxis& render, const SpadParams& p,
-                    double pde, double dcr_per_s, const TimeAxis& axis, const BinKernel& kernel,
+                    const SpadPixel& pixel, const detail::TdcBins& bins, const BinKernel& kernel,
                     std::vector<double>& resampled, std::vector<double>& flux) {
+  const TimeAxis& axis = bins.axis;
   resampleEnergy(signal, render, axis, resampled);
   flux.assign(resampled.size(), 0.0);
   convolveConserving(resampled.data(), axis.bins, 1, kernel, flux.data());
-  const double background =
-      pde * p.ambient_rate_per_s * axis.bin_width_s + dcr_per_s * axis.bin_width_s;
-  for (double& f : flux) f = pde * std::max(0.0, f) + background;
-  if (p.gate_width_s > 0.0) {
-    // The armed fraction of each bin: a disarmed detector sees nothing, so the
-    // first-photon and dead-time laws run on the gated flux alone.
-    const double g0 = p.gate_start_s, g1 = p.gate_start_s + p.gate_width_s;
-    for (int32_t i = 0; i < axis.bins; ++i) {
-      const double b0 = axis.start_s + i * axis.bin_width_s, b1 = b0 + axis.bin_width_s;
-      flux[i] *= std::max(0.0, std::min(b1, g1) - std::max(b0, g0)) / axis.bin_width_s;
-    }
+  const double pde = pixel.pde, dcr_per_s = pixel.dcr_per_s;
+  if (bins.edges.empty()) {
+    const double background =
+        pde * p.ambient_rate_per_s * axis.bin_width_s + dcr_per_s * axis.bin_width_s;
+    for (double& f : flux) f = pde * std::max(0.0, f) + background;
+    return;
   }
+  resampled.swap(flux);
+  resampleEnergyToEdges(resampled, axis, bins.edges, flux);
+  for (int32_t i = 0; i < axis.bins; ++i) {
+    const double w = bins.width(i);
+    flux[i] = pde * std::max(0.0, flux[i]) + pde * p.ambient_rate_per_s * w + dcr_per_s * w;
+  }
+}
+
+// A disarmed detector sees nothing, so the first-photon and dead-time laws
+// run on the gated flux alone; the pixel's gate is moved by its skew.
+void gateFlux(const SpadParams& p, const detail::SpadGate& gate, const SpadPixel& pixel,
+              const detail::TdcBins& bins, std::vector<double>& flux) {
+  if (p.gate_width_s > 0.0) detail::applyGate(gate.shifted(pixel.gate_skew_s), bins, flux);
 }
 
 // The event engine's laws of the model's detector (free-running: every
@@ -125,8 +145,10 @@ void spadFluxPerCycle(const TransientVolume& volume, const SpadParams& params, c
   pixelSignal(volume, params.common, y, x, signal);
   const std::size_t px = static_cast<std::size_t>(y) * volume.width() + x;
   const SpadPixel pixel = spadPixel(params, px);
-  fluxFromSignal(signal, volume.axis(), params, pixel.pde, pixel.dcr_per_s, axis,
-                 spadKernel(params, axis), resampled, flux);
+  const detail::TdcBins bins = detail::tdcBins(params, axis);
+  fluxFromSignal(signal, volume.axis(), params, pixel, bins, spadKernel(params, axis), resampled,
+                 flux);
+  gateFlux(params, detail::spadGate(params), pixel, bins, flux);
 }
 
 double irfTimeZero_s(const SpadIrf& irf) {
@@ -163,12 +185,15 @@ class SpadStream final : public SensorStream {
         shape_(shape),
         options_(options),
         axis_(resolveBins(p.bins, shape.axis)),
+        bins_(detail::tdcBins(p, axis_)),
+        gate_(detail::spadGate(p)),
         kernel_(spadKernel(p, axis_)),
         deadBins_(static_cast<int32_t>(std::lround(p.dead_time_s / axis_.bin_width_s))),
         laws_(detectorLaws(p, axis_, deadBins_)),
         plotted_(plotPixels(p.plot_pixels, shape.height, shape.width)),
         histograms_(plotted_.size()),
         maps_(spadPixelMaps(p, shape.height, shape.width)),
+        frames_(p, shape, options),
         estimator_(kernel_, axis_, p.return_threshold_sigma) {
     checkParams(p);
     if (p.crosstalk_probability > 0.0) {
@@ -265,6 +290,7 @@ class SpadStream final : public SensorStream {
     outputs.push_back(image("spad_returns", H, W, std::move(returns_), "-",
                             "SPAD returns above return_threshold per pixel"));
     outputs.push_back(histogramPlot(plotted_, histograms_, axis_));
+    frames_.finish(outputs);
     if (spadHasPixelMaps(p_)) {
       const std::vector<std::pair<std::string, double>> counts = {
           {"hot_pixels", static_cast<double>(maps_.hot)},
@@ -278,12 +304,18 @@ class SpadStream final : public SensorStream {
                               "hot_pixel_rate, dead pixels 0)"));
       outputs.back().attributes = counts;
     }
+    if (p_.gate_skew_sigma_s > 0.0) {
+      outputs.push_back(image("spad_gate_skew_map", H, W,
+                              {maps_.gate_skew_s.begin(), maps_.gate_skew_s.end()}, "s",
+                              "SPAD gate skew per pixel: the whole gate moved by this time "
+                              "(fixed pattern)"));
+    }
     return outputs;
   }
 
  private:
   struct Scratch {
-    std::vector<double> signal, resampled, flux, fastFlux, h, lossless;
+    std::vector<double> signal, resampled, flux, fastFlux, ungated, h, lossless, lambda;
     detail::FirstPhotonScratch firstPhoton;
     SpadEstimator::Scratch estimates;
   };
@@ -315,6 +347,7 @@ class SpadStream final : public SensorStream {
 
   // Where the counts of pixels first .. first + n - 1 go before emit().
   float* countsOf(std::size_t first, std::size_t n) {
+    frames_.beginSpan(first, n);
     const auto K = static_cast<std::size_t>(axis_.bins);
     if (!writer_) return counts_.data.data() + first * K;
     chunk_.resize(n * K);
@@ -333,6 +366,7 @@ class SpadStream final : public SensorStream {
       histograms_[k].assign(h, h + K);
     }
     if (writer_) writer_->append(chunk_.data(), n * K);
+    frames_.endSpan();
   }
 
   // Crosstalk (SpadCrosstalk.h): each batch of the span's pixels is sent
@@ -376,13 +410,23 @@ class SpadStream final : public SensorStream {
 
   void pixelFlux(const float* values, std::size_t px, std::vector<double>& flux, Scratch& s) const {
     pixelSignal(values, shape_.axis.bins, shape_.channels, p_.common, s.signal);
-    fluxFromSignal(s.signal, shape_.axis, p_, maps_.pde[px], maps_.dcr_per_s[px], axis_, kernel_,
-                   s.resampled, flux);
+    const SpadPixel pixel = pixelOf(px);
+    fluxFromSignal(s.signal, shape_.axis, p_, pixel, bins_, kernel_, s.resampled, flux);
+    // The gated frames sweep their own gates over the ungated flux (no
+    // crosstalk with them: checkParams), drawn with the pixel in drawPixel.
+    if (frames_.active()) s.ungated = flux;
+    gateFlux(p_, gate_, pixel, bins_, flux);
   }
 
-  // The pixel's histogram from its flux s.flux, and its estimates.
+  SpadPixel pixelOf(std::size_t px) const {
+    return {maps_.pde[px], maps_.dcr_per_s[px], maps_.kind[px], maps_.gate_skew_s[px]};
+  }
+
+  // The pixel's histogram from its flux s.flux, and its estimates; its gated
+  // frames from s.ungated.
   void drawPixel(std::size_t px, float* out, Scratch& s) const {
     const int32_t K = axis_.bins;
+    frames_.pixel(px, s.ungated, maps_.gate_skew_s[px], s.lambda);
     Rng rng(options_.seed, pixelStream(kSpadStreamTag, px));
     const auto N = static_cast<uint64_t>(p_.cycles);
     const bool firstOrder = firstOrderAfterpulses() && laws_.afterpulses.on();
@@ -401,6 +445,9 @@ class SpadStream final : public SensorStream {
       const std::vector<double> m = freeRunningProbabilities(fast, deadBins_);
       s.h.resize(static_cast<std::size_t>(K));
       for (int32_t i = 0; i < K; ++i) s.h[i] = static_cast<double>(rng.binomial(N, m[i]));
+    }
+    if (p_.counter_bits > 0) {  // the histogram memory saturates
+      for (double& c : s.h) c = detail::clipCount(c, p_.counter_bits);
     }
     double total = 0.0;
     for (int32_t i = 0; i < K; ++i) {
@@ -433,12 +480,15 @@ class SpadStream final : public SensorStream {
   const VolumeShape shape_;
   const StreamOptions options_;
   const TimeAxis axis_;
+  const detail::TdcBins bins_;
+  const detail::SpadGate gate_;
   const BinKernel kernel_;
   const int32_t deadBins_;
   const detail::DetectorLaws laws_;
   const std::vector<std::array<int32_t, 2>> plotted_;
   std::vector<std::vector<float>> histograms_;
   const SpadPixelMaps maps_;
+  detail::SpadGatedFrames frames_;
   const SpadEstimator estimator_;
   SensorOutput counts_;
   std::unique_ptr<ArrayWriter> writer_;

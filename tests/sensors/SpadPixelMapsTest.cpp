@@ -10,9 +10,11 @@
 #include <vector>
 
 #include "TestVolumes.h"
+#include "support/ChiSquare.h"
 #include "support/ShortNumber.h"
 #include "tofsim/sensors/Spad.h"
 #include "tofsim/sensors/SpadPixelMaps.h"
+#include "tofsim/util/Error.h"
 
 namespace tofsim::sensors {
 namespace {
@@ -160,6 +162,50 @@ TEST(SpadPixelMapsTest, SameBytesForAnyThreadCount) {
     if (first.empty()) first = bytes;
     EXPECT_EQ(bytes, first) << threads << " threads";
   }
+}
+
+// A measured map replaces the log-normal draw: live pixels take its rate,
+// hot and dead pixels still apply, and the dark counts follow it.
+TEST(SpadPixelMapsTest, MeasuredDarkCountMapReplacesTheLogNormal) {
+  constexpr int32_t side = 16;
+  SpadParams p = device();
+  p.dark_count_log_sigma = 0.0;
+  p.ambient_rate_per_s = 0.0;
+  p.cycles = 20000;
+  p.dark_count_map.file = "measured.npy";
+  p.dark_count_map.height = p.dark_count_map.width = side;
+  for (int px = 0; px < side * side; ++px) {
+    p.dark_count_map.rates_per_s.push_back(px % 7 == 0 ? 5e8 : 1e6 * (1 + px % 5));
+  }
+  const TransientVolume v = makeVolume(side, side, 0.0, kW, kBins);
+  const auto outs = runSpad(v, p, 4);
+  const SpadPixelMaps maps = spadPixelMaps(p, side, side);
+  const std::vector<float>& dcr = output(outs, "spad_dcr_map").data;
+  const SensorOutput& counts = array(outs, "spad_counts");
+  double chi = 0.0;
+  int normal = 0;
+  for (std::size_t px = 0; px < dcr.size(); ++px) {
+    const double measured = p.dark_count_map.rates_per_s[px];
+    if (maps.kind[px] == SpadPixelClass::Dead) {
+      EXPECT_EQ(dcr[px], 0.0f);
+      continue;
+    }
+    if (maps.kind[px] == SpadPixelClass::Hot) {
+      EXPECT_EQ(dcr[px], static_cast<float>(p.hot_pixel_rate_per_s));
+      continue;
+    }
+    EXPECT_EQ(dcr[px], static_cast<float>(measured)) << px;
+    // Its dark counts: Binomial(N, 1 - exp(-rate x window)) detecting cycles.
+    double total = 0.0;
+    for (int t = 0; t < kBins; ++t) total += counts.data[px * kBins + t];
+    const double P = -std::expm1(-measured * kBins * kW), mean = p.cycles * P;
+    chi += (total - mean) * (total - mean) / (mean * (1.0 - P));
+    ++normal;
+  }
+  RecordProperty("chi2", sci(chi));
+  EXPECT_LT(chi, tofsim::test::chiSquareQuantile(normal, 3.09));
+  // A map of another shape is an InputError at the stream.
+  EXPECT_THROW(runSpad(makeVolume(side, side + 1, 0.0, kW, kBins), p, 4), InputError);
 }
 
 }  // namespace

@@ -309,8 +309,13 @@ void checkSpadGates(const ConfigNode& list, const RunConfig& config) {
   for (std::size_t i = 0; i < config.sensors.size(); ++i) {
     const auto* spad = std::get_if<sensors::SpadParams>(&config.sensors[i].params);
     if (!spad) continue;
-    if (spad->gate_width_s <= 0.0) continue;
     const TimeAxis tdc = sensors::resolveBins(spad->bins, config.render.time);
+    if (spad->tdc_dnl.present() && static_cast<int32_t>(spad->tdc_dnl.values.size()) != tdc.bins) {
+      elements[i].failKey("tdc_dnl", "has " + std::to_string(spad->tdc_dnl.values.size()) +
+                                         " values but the TDC has " + std::to_string(tdc.bins) +
+                                         " bins (one DNL per bin)");
+    }
+    if (spad->gate_width_s <= 0.0) continue;
     const double g0 = spad->gate_start_s, g1 = g0 + spad->gate_width_s;
     if (!(g1 > tdc.start_s && g0 < tdc.end_s())) {
       elements[i].failKey("gate_start", "the gate [" + shortest(g0 * 1e9) + ", " +
@@ -319,6 +324,16 @@ void checkSpadGates(const ConfigNode& list, const RunConfig& config) {
                                             "window [" +
                                             shortest(tdc.start_s * 1e9) + ", " +
                                             shortest(tdc.end_s() * 1e9) + ") ns");
+    }
+    // A gate sweep's last position too (the positions move linearly).
+    const double last =
+        spad->gated_frames > 0 ? (spad->gate_positions - 1) * spad->gate_step_s : 0.0;
+    if (!(g1 + last > tdc.start_s && g0 + last < tdc.end_s())) {
+      elements[i].failKey("gate_step", "the last gate position [" + shortest((g0 + last) * 1e9) +
+                                           ", " + shortest((g1 + last) * 1e9) +
+                                           ") ns lies outside the TDC's window [" +
+                                           shortest(tdc.start_s * 1e9) + ", " +
+                                           shortest(tdc.end_s() * 1e9) + ") ns");
     }
   }
 }

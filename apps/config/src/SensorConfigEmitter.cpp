@@ -53,6 +53,20 @@ void SensorConfigType<SpadParams>::emit(YAML::Node& n, const SpadParams& p) {
       if (p.irf.present()) n["irf"] = irfToYaml(p.irf);
       return;
     }
+    if (key == "tdc_dnl") {
+      if (!p.tdc_dnl.present()) return;
+      if (!p.tdc_dnl.file.empty()) {
+        n["tdc_dnl"] = p.tdc_dnl.file;
+        return;
+      }
+      for (double d : p.tdc_dnl.values) n["tdc_dnl"].push_back(shortest(d));
+      n["tdc_dnl"].SetStyle(YAML::EmitterStyle::Flow);
+      return;
+    }
+    if (key == "dark_count_map") {
+      if (p.dark_count_map.present()) n["dark_count_map"] = p.dark_count_map.file;
+      return;
+    }
     if (key == "afterpulse_delay") {
       if (p.afterpulse_delays_s.size() == 1) {
         n[key.data()] = durationText(p.afterpulse_delays_s[0]);

@@ -10,6 +10,7 @@
 #include "FieldParse.h"
 #include "IrfFile.h"
 #include "SensorConfigType.h"
+#include "SpadTableFile.h"
 #include "tofsim/config/SensorConfig.h"
 #include "tofsim/config/Units.h"
 #include "tofsim/sensors/SensorFields.h"
@@ -90,9 +91,55 @@ void applyPreset(const ConfigNode& n, SpadParams& p) {
   preset->apply(p);
   p.preset = name;
 }
-}  // namespace
 
-namespace {
+// The gate's transitions and skew shape a gate, the frame keys the gated
+// frames: without them they are typos.
+void checkGateShape(const ConfigNode& n, const SpadParams& p) {
+  for (const auto& [key, value] :
+       {std::pair{"gate_rise", p.gate_rise_s}, std::pair{"gate_fall", p.gate_fall_s},
+        std::pair{"gate_skew_sigma", p.gate_skew_sigma_s}}) {
+    if (value > 0.0 && !(p.gate_width_s > 0.0)) {
+      n.failKey(key, "shapes the gate: set `gate_width` (> 0) too");
+    }
+  }
+  if (p.gated_frames > 0 && !(p.gate_width_s > 0.0)) {
+    n.failKey("gated_frames", "gated frames need a gate: set `gate_width` (> 0) too");
+  }
+  // By value, not presence: the effective config writes every key.
+  for (const auto& [key, set] : {std::pair{"pulses_per_frame", p.pulses_per_frame != 1},
+                                 std::pair{"gate_step", p.gate_step_s != 0.0},
+                                 std::pair{"gate_positions", p.gate_positions != 1}}) {
+    if (p.gated_frames == 0 && set) {
+      n.failKey(key, "shapes the gated 1-bit frames: set `gated_frames` (> 0) too");
+    }
+  }
+  if (p.gate_width_s > 0.0 && p.gate_width_s < 0.5 * (p.gate_rise_s + p.gate_fall_s)) {
+    n.failKey(n.has("gate_rise") ? "gate_rise" : "gate_fall",
+              "the gate's ramps overlap: gate_width (" + durationText(p.gate_width_s) +
+                  ") must be >= (gate_rise + gate_fall) / 2 (" +
+                  durationText(0.5 * (p.gate_rise_s + p.gate_fall_s)) + ")");
+  }
+}
+
+// Crosstalk's neighbours send what they detect inside their own gate: with
+// ramps or per-pixel skew a receiver's armed times differ from its
+// neighbour's (the bin averages of one gate do not give the product of two),
+// and the gated frames' other gate positions get no crosstalk profile of
+// their own, so those combinations are refused rather than drawn wrong.
+void checkCrosstalkGate(const ConfigNode& n, const SpadParams& p) {
+  if (!(p.crosstalk_probability > 0.0)) return;
+  for (const auto& [key, set] :
+       {std::pair{"gate_rise", p.gate_rise_s > 0.0}, std::pair{"gate_fall", p.gate_fall_s > 0.0},
+        std::pair{"gate_skew_sigma", p.gate_skew_sigma_s > 0.0},
+        std::pair{"gated_frames", p.gated_frames > 0}}) {
+    if (set) {
+      n.failKey(key, std::string("crosstalk (crosstalk_probability) with `") + key +
+                         "` is not modelled: use a hard, unskewed gate without gated frames, "
+                         "or no crosstalk");
+    }
+  }
+}
+
 // `afterpulse_delay` (a duration or a list: the mixture's means) and
 // `afterpulse_weights` (numbers), each element with its own located error.
 void parseAfterpulseList(const ConfigNode& n, std::string_view key, SpadParams& p) {
@@ -157,6 +204,14 @@ SpadParams SensorConfigType<SpadParams>::parse(const ConfigNode& n) {
       p.irf = parseIrf(*irf);
       return;
     }
+    if (key == "tdc_dnl") {
+      if (n.has("tdc_dnl")) p.tdc_dnl = parseDnl(n);
+      return;
+    }
+    if (key == "dark_count_map") {
+      if (n.has("dark_count_map")) p.dark_count_map = parseDarkCountMap(n);
+      return;
+    }
     if (key == "afterpulse_delay" || key == "afterpulse_weights") {
       parseAfterpulseList(n, key, p);
       return;
@@ -177,17 +232,30 @@ SpadParams SensorConfigType<SpadParams>::parse(const ConfigNode& n) {
   if (p.hot_pixel_fraction > 0.0 && !(p.hot_pixel_rate_per_s > 0.0)) {
     n.failKey("hot_pixel_rate", "must be > 0 when hot_pixel_fraction is set");
   }
+  checkGateShape(n, p);
+  if (p.dark_count_map.present() && p.dark_count_log_sigma > 0.0) {
+    n.failKey("dark_count_log_sigma",
+              "the measured `dark_count_map` replaces the log-normal draw: remove it");
+  }
   // A delayed arrival may land outside the gate, which the fast path does not follow.
   if (p.crosstalk_probability > 0.0 && p.crosstalk_delay_s > 0.0 && p.gate_width_s > 0.0) {
     n.failKey("crosstalk_delay",
               "delayed crosstalk with a gate (gate_width) is not modelled: "
               "use prompt crosstalk (0) or no gate");
   }
+  checkCrosstalkGate(n, p);
   return p;
 }
 
 void SensorConfigType<SpadParams>::checkImage(const ConfigNode& n, const SpadParams& p,
                                               const capture::Camera& camera) {
+  const SpadDarkCountMap& map = p.dark_count_map;
+  if (map.present() && (map.height != camera.height || map.width != camera.width)) {
+    n.failKey("dark_count_map", map.file + " is " + std::to_string(map.height) + " x " +
+                                    std::to_string(map.width) + " (H x W) but the image is " +
+                                    std::to_string(camera.height) + " x " +
+                                    std::to_string(camera.width));
+  }
   for (const auto& xy : p.plot_pixels) {
     if (xy[0] < 0 || xy[1] < 0 || xy[0] >= camera.width || xy[1] >= camera.height) {
       n.failKey("plot_pixels", "pixel (" + std::to_string(xy[0]) + ", " + std::to_string(xy[1]) +

@@ -1,5 +1,7 @@
 #include "SensorParametersJson.h"
 
+#include <algorithm>
+#include <cmath>
 #include <string>
 #include <string_view>
 #include <type_traits>
@@ -83,6 +85,20 @@ json modelJson(const SpadParams& p, const TimeAxis& render) {
                   {"t0", t0},
                   {"time_zero_s", irfTimeZero_s(p.irf)},
                   {"floor", p.irf.floor}};
+      return;
+    }
+    if (key == "tdc_dnl") {
+      if (!p.tdc_dnl.present()) return;
+      double maxAbs = 0.0;
+      for (double d : p.tdc_dnl.values) maxAbs = std::max(maxAbs, std::fabs(d));
+      j["tdc_dnl"] = {
+          {"file", p.tdc_dnl.file}, {"bins", p.tdc_dnl.values.size()}, {"max_abs_dnl", maxAbs}};
+      return;
+    }
+    if (key == "dark_count_map") {
+      if (!p.dark_count_map.present()) return;
+      j["dark_count_map"] = {{"file", p.dark_count_map.file},
+                             {"shape", {p.dark_count_map.height, p.dark_count_map.width}}};
       return;
     }
     if (key == "afterpulse_delay") {

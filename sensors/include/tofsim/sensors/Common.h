@@ -76,4 +76,9 @@ void pixelSignal(const float* pixel, int32_t bins, int32_t channels, const Senso
 void resampleEnergy(const std::vector<double>& in, const TimeAxis& from, const TimeAxis& to,
                     std::vector<double>& out);
 
+/// The same into the bins between consecutive `edges` (increasing, any
+/// widths: a TDC's true bins), `out` getting edges.size() - 1 values.
+void resampleEnergyToEdges(const std::vector<double>& in, const TimeAxis& from,
+                           const std::vector<double>& edges, std::vector<double>& out);
+
 }  // namespace tofsim::sensors

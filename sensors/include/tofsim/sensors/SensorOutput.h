@@ -36,7 +36,8 @@ struct SensorOutput {
   /// One name per dimension of `shape`: "y" (image row, 0 = top), "x" (image
   /// column, 0 = left), "t" (a bin of `time`), "frequency" (index into the
   /// model's frequencies), "phase_step" (reference phase 2 pi k / N), "pixel"
-  /// (index into `labels`), "order" (bounce order k: direct + bounces 1..k).
+  /// (index into `labels`), "order" (bounce order k: direct + bounces 1..k),
+  /// "gate" (SPAD gate position k: the gate moved by k gate_step).
   std::vector<std::string> axes;
   /// The instrument's time axis, when one of `axes` is "t".
   std::optional<TimeAxis> time;

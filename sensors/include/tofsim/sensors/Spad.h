@@ -49,6 +49,27 @@ struct SpadIrf {
   bool present() const { return !values.empty(); }
 };
 
+/// A TDC's differential non-linearity (the config's `tdc_dnl`, a list or a
+/// file the config layer reads): code i is LSB (1 + values[i]) wide, LSB the
+/// nominal bin width, so the true edges are e_k = offset + sum_{i<k} LSB (1 +
+/// DNL_i) and pile-up acts on the true, unequal bins.
+struct SpadDnl {
+  std::string file;            ///< the file it came from; empty: a list in the config
+  std::vector<double> values;  ///< one per TDC bin, each > -1, sum 0; empty (or all 0): none
+
+  bool present() const { return !values.empty(); }
+};
+
+/// A measured dark count rate per pixel (the config's `dark_count_map`, a
+/// .npy the config layer reads), in place of the log-normal draw.
+struct SpadDarkCountMap {
+  std::string file;                 ///< the file it came from (metadata)
+  int32_t height = 0, width = 0;    ///< its shape, the image's
+  std::vector<double> rates_per_s;  ///< row-major (y, x), counts / s, >= 0; empty: none
+
+  bool present() const { return !rates_per_s.empty(); }
+};
+
 /// The time of the IRF's axis that is zero delay: the first maximum's t_k
 /// (Peak), the mean sum v_k t_k / sum v_k (Centroid, the density's exact
 /// mean), or t0_s (Time).
@@ -81,6 +102,28 @@ struct SpadParams {
   /// edge crosses is armed for its covered fraction. 0 width: always armed.
   double gate_start_s = 0.0;
   double gate_width_s = 0.0;
+  /// Finite gate transitions: the sensitivity g(t) rises linearly from 0 to 1
+  /// over gate_rise, centred on gate_start, and falls back over gate_fall,
+  /// centred on gate_start + gate_width (gate_width stays the 50 % width);
+  /// each bin sees the exact average of g over it. 0: hard edges.
+  double gate_rise_s = 0.0;
+  double gate_fall_s = 0.0;
+  /// Per-pixel gate skew: pixel (y, x)'s whole gate moved by a N(0, sigma)
+  /// time of the fixed pattern (fpn_seed, not the noise seed). 0: none.
+  double gate_skew_sigma_s = 0.0;
+  /// Gated 1-bit frames (SPAD512S-class arrays, SpadGatedFrames.h): each of
+  /// gated_frames frames integrates pulses_per_frame pulses into a 1-bit
+  /// latch set by a detection inside the gate; the frames are summed per gate
+  /// position k, the gate moved by k gate_step (gate_positions of them).
+  /// 0 frames: off. The histogram path keeps position 0's gate.
+  int64_t gated_frames = 0;
+  int64_t pulses_per_frame = 1;
+  double gate_step_s = 0.0;
+  int32_t gate_positions = 1;
+  /// Counter depth: every count (spad_counts' bins, the gated counts) clips
+  /// at 2^counter_bits - 1. 0: unlimited.
+  int32_t counter_bits = 0;
+  SpadDnl tdc_dnl;  ///< TDC differential non-linearity; none: equal bins
   /// Afterpulsing (both modes; the exact event engine, SpadEventEngine.h,
   /// draws these pixels): each avalanche fills a Bernoulli(p) or Poisson(mu)
   /// number of traps (afterpulse_count, p or mu = afterpulse_probability),
@@ -118,6 +161,7 @@ struct SpadParams {
   int64_t fpn_seed = 0;
   double pde_spread = 0.0;
   double dark_count_log_sigma = 0.0;
+  SpadDarkCountMap dark_count_map;  ///< measured DCR per pixel, in place of the log-normal
   double hot_pixel_fraction = 0.0;
   double hot_pixel_rate_per_s = 0.0;
   double dead_pixel_fraction = 0.0;
@@ -159,7 +203,9 @@ std::vector<double> coatesEstimate(const std::vector<double>& counts, int64_t cy
 /// every depth Image carries a point cloud (SensorOutput::point_cloud);
 /// "spad_histograms" HistogramPlot (pixels, bins); with a fixed pattern
 /// (spadHasPixelMaps), "spad_pde_map" and "spad_dcr_map" Images (H, W), with
-/// the attributes hot_pixels and dead_pixels.
+/// the attributes hot_pixels and dead_pixels; with gate_skew_sigma_s,
+/// "spad_gate_skew_map" Image (H, W) in s; with gated_frames,
+/// "spad_gated_counts" and "spad_gated_flux" Arrays (H, W, gate_positions).
 std::vector<SensorOutput> runSpad(const TransientVolume& volume, const SpadParams& params,
                                   uint64_t seed);
 

@@ -18,12 +18,14 @@ struct SpadPixel {
   double pde;
   double dcr_per_s;
   SpadPixelClass kind;
+  double gate_skew_s = 0.0;  ///< the pixel's gate shift (gate_skew_sigma_s)
 };
 
 struct SpadPixelMaps {
   std::vector<double> pde;           ///< per pixel, row-major (y, x)
   std::vector<double> dcr_per_s;     ///< per pixel, counts / s
   std::vector<SpadPixelClass> kind;  ///< per pixel
+  std::vector<double> gate_skew_s;   ///< per pixel, s (0 without gate_skew_sigma_s)
   int64_t hot = 0, dead = 0;         ///< pixels of each class
 };
 
@@ -33,7 +35,8 @@ bool spadHasPixelMaps(const SpadParams& p);
 
 /// Pixel px = y * width + x: from its own stream of fpn_seed, four numbers
 /// in a fixed order (dead, hot, PDE, DCR), whichever parameters are set, so
-/// changing one fraction leaves the others' pattern as it was.
+/// changing one fraction leaves the others' pattern as it was; the gate skew
+/// from a stream of its own (the pattern above does not change with it).
 SpadPixel spadPixel(const SpadParams& p, std::size_t px);
 
 /// spadPixel of every pixel of a height x width array, and the class counts.

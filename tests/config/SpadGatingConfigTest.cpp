@@ -1,0 +1,189 @@
+// The config side of the SPAD's gate shape, gated 1-bit frames, TDC
+// non-linearity and dark count map: located errors (file:line:col, key)
+// before anything is rendered or written.
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <string>
+#include <utility>
+#include <variant>
+#include <vector>
+
+#include "support/TempDir.h"
+#include "tofsim/config/RunConfig.h"
+#include "tofsim/io/Npy.h"
+#include "tofsim/sensors/Spad.h"
+#include "tofsim/util/Error.h"
+
+namespace tofsim::config {
+namespace {
+
+// 32 x 24 pixels, a TDC window of 100 bins of 1 ps from 1 ns (the render's).
+const char* kRun = R"(scene: scene.gltf
+camera:
+  position: [0, 0, 2]
+  look_at: [0, 0, 0]
+  fov_y: 45 deg
+  resolution: [32, 24]
+light:
+  type: spot
+  position: [0, 1, 2]
+  direction: [0, 0, -1]
+  cone_angle: 0.5 rad
+  intensity: [1, 2, 3]
+time:
+  start: 1 ns
+  bin_width: 1 ps
+  bins: 100
+sensors:
+  - type: spad
+)";
+
+class SpadGatingConfigTest : public test::TempDirTest {
+ protected:
+  std::filesystem::path write(const std::string& spadKeys) {
+    std::ofstream(dir_ / "scene.gltf") << "{}";
+    const auto path = dir_ / "test.yaml";
+    std::ofstream(path) << kRun << spadKeys;
+    return path;
+  }
+  sensors::SpadParams load(const std::string& spadKeys) {
+    const RunConfig c = loadRunConfig(write(spadKeys));
+    return std::get<sensors::SpadParams>(c.sensors.front().params);
+  }
+  std::string errorOf(const std::string& spadKeys) {
+    try {
+      loadRunConfig(write(spadKeys));
+    } catch (const InputError& e) {
+      return e.what();
+    }
+    ADD_FAILURE() << "no error for:\n" << spadKeys;
+    return "";
+  }
+  void expectError(const std::string& spadKeys, const std::string& key, const std::string& words) {
+    const std::string message = errorOf(spadKeys);
+    EXPECT_NE(message.find("test.yaml:"), std::string::npos) << message;
+    EXPECT_NE(message.find("sensors[0]." + key + ": "), std::string::npos) << message;
+    EXPECT_NE(message.find(words), std::string::npos) << message;
+  }
+};
+
+TEST_F(SpadGatingConfigTest, GateShapeNeedsAGateAndRampsThatDoNotOverlap) {
+  const sensors::SpadParams p = load(
+      "    gate_start: 1.01 ns\n    gate_width: 50 ps\n    gate_rise: 10 ps\n"
+      "    gate_fall: 6 ps\n    gate_skew_sigma: 2 ps\n    fpn_seed: 3\n");
+  EXPECT_DOUBLE_EQ(p.gate_rise_s, 10e-12);
+  EXPECT_DOUBLE_EQ(p.gate_fall_s, 6e-12);
+  EXPECT_DOUBLE_EQ(p.gate_skew_sigma_s, 2e-12);
+  expectError("    gate_rise: 10 ps\n", "gate_rise", "set `gate_width`");
+  expectError("    gate_skew_sigma: 1 ps\n", "gate_skew_sigma", "set `gate_width`");
+  expectError(
+      "    gate_start: 1.01 ns\n    gate_width: 10 ps\n    gate_rise: 15 ps\n"
+      "    gate_fall: 6 ps\n",
+      "gate_rise", "ramps overlap");
+  expectError("    gate_start: 1.01 ns\n    gate_width: 10 ps\n    gate_rise: -1 ps\n", "gate_rise",
+              "must be >= 0");
+}
+
+TEST_F(SpadGatingConfigTest, GatedFramesNeedAGateAndASweepInsideTheWindow) {
+  const sensors::SpadParams p = load(
+      "    gate_start: 1.01 ns\n    gate_width: 20 ps\n    gated_frames: 255\n"
+      "    pulses_per_frame: 40\n    gate_step: 1 ps\n    gate_positions: 30\n"
+      "    counter_bits: 8\n");
+  EXPECT_EQ(p.gated_frames, 255);
+  EXPECT_EQ(p.pulses_per_frame, 40);
+  EXPECT_DOUBLE_EQ(p.gate_step_s, 1e-12);
+  EXPECT_EQ(p.gate_positions, 30);
+  EXPECT_EQ(p.counter_bits, 8);
+  expectError("    gated_frames: 10\n", "gated_frames", "need a gate");
+  expectError("    gate_positions: 10\n", "gate_positions", "set `gated_frames`");
+  expectError("    pulses_per_frame: 10\n", "pulses_per_frame", "set `gated_frames`");
+  expectError("    counter_bits: 40\n", "counter_bits", "must be in [0, 32]");
+  // The window is [1, 1.1) ns: the 100th position of 1 ps steps from 1.09 ns is outside.
+  expectError(
+      "    gate_start: 1.09 ns\n    gate_width: 5 ps\n    gated_frames: 10\n"
+      "    gate_step: 1 ps\n    gate_positions: 100\n",
+      "gate_step", "last gate position");
+}
+
+// Crosstalk is drawn from the neighbours' avalanches inside one shared hard
+// gate: a shaped, skewed or swept gate with it is refused, located on the key.
+TEST_F(SpadGatingConfigTest, CrosstalkOnlyWithAHardUnskewedGate) {
+  const std::string gate = "    gate_start: 1.01 ns\n    gate_width: 20 ps\n";
+  const std::string crosstalk = "    crosstalk_probability: 0.05\n";
+  const sensors::SpadParams p = load(gate + crosstalk);
+  EXPECT_DOUBLE_EQ(p.crosstalk_probability, 0.05);
+  EXPECT_DOUBLE_EQ(p.gate_width_s, 20e-12);
+  for (const auto& [key, value] :
+       {std::pair{"gate_rise", "2 ps"}, std::pair{"gate_fall", "2 ps"},
+        std::pair{"gate_skew_sigma", "1 ps"}, std::pair{"gated_frames", "10"}}) {
+    SCOPED_TRACE(key);
+    expectError(gate + crosstalk + "    " + key + ": " + value + "\n", key, "not modelled");
+    EXPECT_NO_THROW(load(gate + "    " + key + ": " + value + "\n"));  // without crosstalk: fine
+  }
+}
+
+TEST_F(SpadGatingConfigTest, TdcDnlFromAListOrAFileWithLocatedErrors) {
+  std::string list = "    tdc_dnl: [0.2, -0.2";
+  for (int i = 2; i < 100; ++i) list += ", 0";
+  const sensors::SpadParams p = load(list + "]\n");
+  ASSERT_EQ(p.tdc_dnl.values.size(), 100u);
+  EXPECT_DOUBLE_EQ(p.tdc_dnl.values[0], 0.2);
+  EXPECT_TRUE(p.tdc_dnl.file.empty());
+  // a CSV, one value a line (header and comments allowed), and a .npy
+  {
+    std::ofstream csv(dir_ / "dnl.csv");
+    csv << "dnl\n# measured\n";
+    for (int i = 0; i < 100; ++i) csv << (i == 3 ? 0.5 : (i == 4 ? -0.5 : 0.0)) << "\n";
+  }
+  const sensors::SpadParams fromCsv = load("    tdc_dnl: dnl.csv\n");
+  EXPECT_DOUBLE_EQ(fromCsv.tdc_dnl.values[3], 0.5);
+  EXPECT_EQ(fromCsv.tdc_dnl.file, (dir_ / "dnl.csv").lexically_normal().string());
+  std::vector<float> values(100, 0.0f);
+  values[7] = 0.25f;
+  values[8] = -0.25f;
+  io::writeNpy(dir_ / "dnl.npy", {100}, values.data());
+  EXPECT_FLOAT_EQ(static_cast<float>(load("    tdc_dnl: dnl.npy\n").tdc_dnl.values[7]), 0.25f);
+  // The effective config reads back to the same tables (list and file).
+  for (const std::string& keys : {list + "]\n", std::string("    tdc_dnl: dnl.csv\n")}) {
+    const std::string written = effectiveConfigYaml(loadRunConfig(write(keys)));
+    std::ofstream(dir_ / "again.yaml") << written;
+    const RunConfig again = loadRunConfig(dir_ / "again.yaml");
+    EXPECT_EQ(std::get<sensors::SpadParams>(again.sensors.front().params).tdc_dnl.values,
+              load(keys).tdc_dnl.values);
+  }
+  // wrong length (the TDC has 100 bins), a width <= 0, a sum != 0, bad files
+  expectError("    tdc_dnl: [0.1, -0.1]\n", "tdc_dnl", "has 2 values but the TDC has 100 bins");
+  expectError("    bins: 2\n    tdc_dnl: [1.5, -1.5]\n", "tdc_dnl", "bin width LSB (1 + DNL) <= 0");
+  expectError("    bins: 2\n    tdc_dnl: [0.1, 0.1]\n", "tdc_dnl", "sum to 0.2");
+  expectError("    tdc_dnl: missing.csv\n", "tdc_dnl", "file not found");
+  std::ofstream(dir_ / "bad.csv") << "0.1\n0.2,3\n";
+  expectError("    tdc_dnl: bad.csv\n", "tdc_dnl", "bad.csv:2: expected one number");
+  std::ofstream(dir_ / "dnl.txt") << "0\n";
+  expectError("    tdc_dnl: dnl.txt\n", "tdc_dnl", ".npy or .csv");
+}
+
+TEST_F(SpadGatingConfigTest, DarkCountMapMustBeTheImagesShape) {
+  std::vector<float> rates(24 * 32, 100.0f);
+  rates[5] = 2e4f;
+  io::writeNpy(dir_ / "dcr.npy", {24, 32}, rates.data());
+  const sensors::SpadParams p = load("    dark_count_map: dcr.npy\n");
+  EXPECT_EQ(p.dark_count_map.height, 24);
+  EXPECT_EQ(p.dark_count_map.width, 32);
+  EXPECT_DOUBLE_EQ(p.dark_count_map.rates_per_s[5], 2e4);
+  io::writeNpy(dir_ / "small.npy", {24, 31}, rates.data());
+  expectError("    dark_count_map: small.npy\n", "dark_count_map",
+              "24 x 31 (H x W) but the image is 24 x 32");
+  rates[9] = -1.0f;
+  io::writeNpy(dir_ / "negative.npy", {24, 32}, rates.data());
+  expectError("    dark_count_map: negative.npy\n", "dark_count_map",
+              "(y, x) = (0, 9) is negative");
+  io::writeNpy(dir_ / "flat.npy", {24 * 32}, rates.data());
+  expectError("    dark_count_map: flat.npy\n", "dark_count_map", "expected a 2-D array");
+  expectError("    dark_count_map: dcr.npy\n    dark_count_log_sigma: 0.5\n",
+              "dark_count_log_sigma", "replaces the log-normal");
+}
+
+}  // namespace
+}  // namespace tofsim::config
