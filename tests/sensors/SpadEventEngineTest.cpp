@@ -10,6 +10,7 @@
 #include <cmath>
 #include <vector>
 
+#include "FirstPhotonChiSquare.h"
 #include "SpadEventEngine.h"
 #include "TestVolumes.h"
 #include "support/ChiSquare.h"
@@ -44,20 +45,6 @@ detail::DetectorLaws freeRunningAfterpulses(int32_t deadBins, double p, double t
   laws.afterpulses.mean = p;
   laws.afterpulses.delays_bins = {tau};
   return laws;
-}
-
-tofsim::test::ChiSquare againstFirstPhoton(std::vector<double> h, const std::vector<double>& law,
-                                           double cycles) {
-  std::vector<double> expected = firstPhotonProbabilities(law);
-  double none = 1.0, detected = 0.0;
-  for (std::size_t t = 0; t < expected.size(); ++t) {
-    none -= expected[t];
-    detected += h[t];
-    expected[t] *= cycles;
-  }
-  h.push_back(cycles - detected);
-  expected.push_back(cycles * none);
-  return tofsim::test::pearson(h, expected);
 }
 
 TEST(SpadEventEngineTest, SynchronousEventsFollowTheFirstPhotonLaw) {

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <vector>
 
+#include "FirstPhotonChiSquare.h"
 #include "SpadEventEngine.h"
 #include "TestVolumes.h"
 #include "support/ChiSquare.h"
@@ -87,20 +88,6 @@ TEST(SpadMultiStopTest, UnlimitedStopsAndAOneBinDeadTimeMakeIndependentBinomialB
   // Two stops: the bins after the second are emptied (pile-up again).
   const BinStatistics twoStops = independence(flux, 0, 2, 400, 2000);
   EXPECT_GT(twoStops.chiSquare, tofsim::test::chiSquareQuantile(dof, 3.09));
-}
-
-tofsim::test::ChiSquare againstFirstPhoton(std::vector<double> h, const std::vector<double>& flux,
-                                           double cycles) {
-  std::vector<double> expected = firstPhotonProbabilities(flux);
-  double none = 1.0, detected = 0.0;
-  for (std::size_t t = 0; t < expected.size(); ++t) {
-    none -= expected[t];
-    detected += h[t];
-    expected[t] *= cycles;
-  }
-  h.push_back(cycles - detected);
-  expected.push_back(cycles * none);
-  return tofsim::test::pearson(h, expected);
 }
 
 // One stop: the first-photon law, also with a dead time that ends inside
