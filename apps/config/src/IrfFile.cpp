@@ -12,6 +12,7 @@
 
 #include "QuantityText.h"
 #include "ShortestNumber.h"
+#include "TableText.h"
 #include "tofsim/config/Units.h"
 #include "tofsim/io/Npy.h"
 
@@ -25,26 +26,6 @@ struct Samples {
   double first_time_s = 0.0;
   double width_s = 0.0;  ///< 0 for .npy: from `bin_width`
 };
-
-std::string lower(std::string s) {
-  std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return std::tolower(c); });
-  return s;
-}
-
-std::string trim(const std::string& s) {
-  const auto b = s.find_first_not_of(" \t\r");
-  if (b == std::string::npos) return "";
-  return s.substr(b, s.find_last_not_of(" \t\r") - b + 1);
-}
-
-/// A whole cell as a finite number.
-bool number(const std::string& cell, double& v) {
-  const std::string t = trim(cell);
-  if (t.empty()) return false;
-  char* end = nullptr;
-  v = std::strtod(t.c_str(), &end);
-  return end == t.c_str() + t.size() && std::isfinite(v);
-}
 
 // Two columns, time (s) and value, comma separated; '#' lines are comments
 // and a first line that is not two numbers a header.
@@ -61,14 +42,15 @@ Samples readCsv(const ConfigNode& n, const std::filesystem::path& path) {
   };
   while (std::getline(in, line)) {
     ++lineNo;
-    const std::string t = trim(line);
+    const std::string t = trimmedText(line);
     if (t.empty() || t[0] == '#') continue;
     std::vector<std::string> cells;
     std::stringstream parts(t);
     for (std::string cell; std::getline(parts, cell, ',');) cells.push_back(cell);
     if (!t.empty() && t.back() == ',') cells.push_back("");
     double time = 0.0, value = 0.0;
-    const bool numbers = cells.size() == 2 && number(cells[0], time) && number(cells[1], value);
+    const bool numbers =
+        cells.size() == 2 && wholeNumber(cells[0], time) && wholeNumber(cells[1], value);
     if (!numbers && !data && cells.size() == 2) {  // a header: "time,value"
       data = true;
       continue;
@@ -141,7 +123,7 @@ SpadIrf parseIrf(const ConfigNode& n) {
   if (!std::filesystem::is_regular_file(path, ec)) {
     n.failKey("file", "IRF file not found: " + path.string());
   }
-  const std::string ext = lower(path.extension().string());
+  const std::string ext = lowerExtension(path);
   if (ext != ".npy" && ext != ".csv") {
     n.failKey("file", "an IRF file is .npy or .csv (got '" + path.filename().string() + "')");
   }

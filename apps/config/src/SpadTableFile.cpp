@@ -6,23 +6,12 @@
 #include <fstream>
 
 #include "ShortestNumber.h"
+#include "TableText.h"
 #include "tofsim/io/Npy.h"
 
 namespace tofsim::config {
 
 namespace {
-std::string trimmed(const std::string& s) {
-  const auto b = s.find_first_not_of(" \t\r");
-  if (b == std::string::npos) return "";
-  return s.substr(b, s.find_last_not_of(" \t\r") - b + 1);
-}
-
-std::string extensionOf(const std::filesystem::path& path) {
-  std::string ext = path.extension().string();
-  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return ext;
-}
-
 std::filesystem::path existingFile(const ConfigNode& n, const char* key) {
   const std::filesystem::path path = configRelativePath(n, n.requireString(key));
   std::error_code ec;
@@ -53,11 +42,10 @@ std::vector<double> readColumnCsv(const ConfigNode& n, const char* key,
   bool data = false;
   while (std::getline(in, line)) {
     ++lineNo;
-    const std::string t = trimmed(line);
+    const std::string t = trimmedText(line);
     if (t.empty() || t[0] == '#') continue;
-    char* end = nullptr;
-    const double v = std::strtod(t.c_str(), &end);
-    const bool number = end == t.c_str() + t.size() && std::isfinite(v);
+    double v = 0.0;
+    const bool number = wholeNumber(t, v);
     if (!number && !data) {  // a header
       data = true;
       continue;
@@ -91,7 +79,7 @@ sensors::SpadDnl parseDnl(const ConfigNode& n) {
   } else {
     const std::filesystem::path path = existingFile(n, key);
     dnl.file = path.string();
-    const std::string ext = extensionOf(path);
+    const std::string ext = lowerExtension(path);
     if (ext == ".npy") {
       const io::NpyArray a = readNpyAt(n, key, path, "a DNL .npy is a 1-D float32 array");
       if (a.shape.size() != 1) {
@@ -131,7 +119,7 @@ sensors::SpadDarkCountMap parseDarkCountMap(const ConfigNode& n) {
   sensors::SpadDarkCountMap map;
   const std::filesystem::path path = existingFile(n, key);
   map.file = path.string();
-  if (extensionOf(path) != ".npy") {
+  if (lowerExtension(path) != ".npy") {
     n.failKey(key,
               "a dark count map is a 2-D float32 .npy (got '" + path.filename().string() + "')");
   }
