@@ -12,9 +12,10 @@ cd "$(dirname "$0")/.."
 target="${1:?usage: fuzz.sh TARGET SECONDS}"
 seconds="${2:?usage: fuzz.sh TARGET SECONDS}"
 
+source scripts/compiler-cache.sh
 if [ ! -f build-fuzz/build.ninja ]; then
   CC=clang CXX=clang++ cmake -S . -B build-fuzz -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
-    -DTOFSIM_FUZZ=ON -DTOFSIM_BUILD_TESTS=OFF >/dev/null
+    -DTOFSIM_FUZZ=ON -DTOFSIM_BUILD_TESTS=OFF "${cache_flags[@]}" >/dev/null
 fi
 cmake --build build-fuzz -j2 --target "$target"
 
