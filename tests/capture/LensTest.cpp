@@ -6,7 +6,10 @@
 #include <gtest/gtest.h>
 
 #include <opencv2/calib3d.hpp>
+#include <string>
 #include <vector>
+
+#include "tofsim/util/Error.h"
 
 namespace tofsim::capture {
 namespace {
@@ -108,6 +111,20 @@ TEST(LensUndistortTest, AFoldedLensIsNotInverted) {
   lens.distortion[0] = -1.5;  // r (1 - 1.5 r^2) folds back at r = 0.47
   glm::dvec2 ideal;
   EXPECT_FALSE(undistortNormalised(lens, {0.5, 0.0}, ideal));  // beyond the fold's maximum 0.27
+}
+
+TEST(LensInvertibleTest, TheKinectLikeLensPassesAndAFoldingOneIsNamed) {
+  EXPECT_NO_THROW(checkLensInvertible(kinectLikeLens(14), 512, 424));
+  // Kinect v2's k1, k2 without its k3: r (1 + k1 r^2 + k2 r^4) peaks at
+  // r = 0.98, inside the image's corners (r = 0.89 distorted there).
+  Lens folded = kinectLikeLens(4);
+  folded.distortion[1] = -0.2716;
+  try {
+    checkLensInvertible(folded, 512, 424);
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("pixel (0, 0)"), std::string::npos) << e.what();
+  }
 }
 
 }  // namespace

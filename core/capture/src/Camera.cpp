@@ -3,6 +3,8 @@
 #include <cmath>
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "tofsim/util/Error.h"
+
 namespace tofsim::capture {
 
 glm::vec3 Camera::forward() const { return glm::normalize(look_at_world - position_world); }
@@ -18,7 +20,8 @@ double tanHalfFovY(const Camera& c) {
 }  // namespace
 
 PixelRays::PixelRays(const Camera& camera)
-    : forward_(camera.forward()),
+    : lens_(camera.lens),
+      forward_(camera.forward()),
       right_(camera.right()),
       up_(camera.up()),
       tanHalf_(tanHalfFovY(camera)),
@@ -27,6 +30,13 @@ PixelRays::PixelRays(const Camera& camera)
       height_(camera.height) {}
 
 glm::dvec2 PixelRays::planePoint(double x, double y) const {
+  if (lens_) {
+    // OpenCV's frame has +y down; the plane's v is up.
+    glm::dvec2 ideal;
+    const bool inverted = undistortNormalised(*lens_, pixelToNormalised(*lens_, {x, y}), ideal);
+    TOFSIM_CHECK(inverted);  // checkLensInvertible ran on the configured image
+    return {ideal.x, -ideal.y};
+  }
   const double u = (2.0 * (x + 0.5) / width_ - 1.0) * tanHalf_ * aspect_;
   const double v = (1.0 - 2.0 * (y + 0.5) / height_) * tanHalf_;
   return {u, v};
@@ -53,28 +63,63 @@ glm::vec3 Camera::pixelDirection(int32_t x, int32_t y, glm::vec2 offset) const {
 }
 
 glm::vec3 Camera::rayStepAlongX() const {
+  if (lens) return rayStepsAt(width / 2, height / 2).alongX;
   const double tanHalf = tanHalfFovY(*this);
   return right() * static_cast<float>(2.0 * tanHalf / height);  // square pixels
 }
 
 glm::vec3 Camera::rayStepAlongY() const {
+  if (lens) return rayStepsAt(width / 2, height / 2).alongY;
   const double tanHalf = tanHalfFovY(*this);
   return -up() * static_cast<float>(2.0 * tanHalf / height);
 }
 
+namespace {
+// d(ideal normalised) / d(pixel) of a lens at pixel (x, y): the inverse of
+// the distortion's Jacobian over the camera matrix.
+glm::dmat2 idealPerPixel(const Lens& lens, double x, double y) {
+  glm::dvec2 ideal;
+  TOFSIM_CHECK(undistortNormalised(lens, pixelToNormalised(lens, {x, y}), ideal));
+  return glm::inverse(distortionJacobian(lens, ideal)) *
+         glm::dmat2(glm::dvec2(1.0 / lens.fx, 0.0), glm::dvec2(0.0, 1.0 / lens.fy));
+}
+}  // namespace
+
+Camera::RaySteps Camera::rayStepsAt(int32_t x, int32_t y) const {
+  if (!lens) return {rayStepAlongX(), rayStepAlongY()};
+  // The unnormalised ray forward + x_n right - y_n up: its steps are the
+  // columns of d(x_n, y_n) / d(pixel), OpenCV's y down being -up.
+  const glm::dmat2 d = idealPerPixel(*lens, x, y);
+  const glm::vec3 r = right(), u = up();
+  return {static_cast<float>(d[0].x) * r - static_cast<float>(d[0].y) * u,
+          static_cast<float>(d[1].x) * r - static_cast<float>(d[1].y) * u};
+}
+
 double Camera::pixelSolidAngle_sr(int32_t x, int32_t y) const {
-  // A pixel of area dA on the unit-distance plane subtends dA cos^3(theta).
+  // A pixel of area dA on the unit-distance plane subtends dA cos^3(theta);
+  // through a lens dA is the distorted pixel's, |det d(ideal) / d(pixel)|.
   const double tanHalf = tanHalfFovY(*this);
   const double pixelSide = 2.0 * tanHalf / height;
+  const double area = lens ? std::fabs(glm::determinant(idealPerPixel(*lens, x, y)))
+                           : pixelSide * pixelSide;
   const glm::dvec2 p = PixelRays(*this).planePoint(x, y);
   const double r2 = 1.0 + p.x * p.x + p.y * p.y;
-  return pixelSide * pixelSide / (r2 * std::sqrt(r2));
+  return area / (r2 * std::sqrt(r2));
 }
 
 glm::ivec2 Camera::project(const glm::vec3& point) const {
   const glm::vec3 d = point - position_world;
   const float z = glm::dot(d, forward());
   if (z <= 0.0f) return {-1, -1};
+  if (lens) {
+    // OpenCV's frame: +y down. Pixel centres at integers: round.
+    const glm::dvec2 ideal(glm::dot(d, right()) / z, -glm::dot(d, up()) / z);
+    const glm::dvec2 px = normalisedToPixel(*lens, distortNormalised(*lens, ideal));
+    const int x = static_cast<int>(std::floor(px.x + 0.5));
+    const int y = static_cast<int>(std::floor(px.y + 0.5));
+    if (x < 0 || y < 0 || x >= width || y >= height) return {-1, -1};
+    return {x, y};
+  }
   const double tanHalf = tanHalfFovY(*this);
   const double aspect = static_cast<double>(width) / height;
   const double u = glm::dot(d, right()) / z / (tanHalf * aspect);

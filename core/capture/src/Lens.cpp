@@ -1,6 +1,9 @@
 #include "tofsim/capture/Lens.h"
 
 #include <cmath>
+#include <string>
+
+#include "tofsim/util/Error.h"
 
 namespace tofsim::capture {
 
@@ -90,6 +93,43 @@ bool undistortNormalised(const Lens& lens, glm::dvec2 distorted, glm::dvec2& ide
   // Rounding may keep the residual a few ulps above the tolerance: accept it
   // at the level of double precision.
   return accept(1e-13);
+}
+
+void checkLensInvertible(const Lens& lens, int32_t width, int32_t height) {
+  const auto fail = [&](int32_t x, int32_t y, const std::string& why) {
+    throw InputError("the lens distortion is not invertible at pixel (" + std::to_string(x) +
+                     ", " + std::to_string(y) + ") of the " + std::to_string(width) + " x " +
+                     std::to_string(height) + " image: " + why +
+                     " (coefficients that fold the image inside the field of view)");
+  };
+  // Every border pixel's ray, and the Jacobian along the ideal segment from
+  // the centre out to it: a fold anywhere inside lies on one such segment
+  // when the distortion is close to radial, and the interior grid below
+  // catches the rest.
+  constexpr int kSteps = 32;
+  const auto checkPixel = [&](int32_t x, int32_t y) {
+    glm::dvec2 ideal;
+    if (!undistortNormalised(lens, pixelToNormalised(lens, {double(x), double(y)}), ideal)) {
+      fail(x, y, "no ray has this distorted position");
+    }
+    for (int k = 1; k <= kSteps; ++k) {
+      const glm::dvec2 p = ideal * (static_cast<double>(k) / kSteps);
+      if (!(glm::determinant(distortionJacobian(lens, p)) > 0.0)) {
+        fail(x, y, "the distortion folds between the centre and this pixel's ray");
+      }
+    }
+  };
+  for (int32_t x = 0; x < width; ++x) {
+    checkPixel(x, 0);
+    checkPixel(x, height - 1);
+  }
+  for (int32_t y = 0; y < height; ++y) {
+    checkPixel(0, y);
+    checkPixel(width - 1, y);
+  }
+  for (int32_t y = 0; y < height; y += 8) {
+    for (int32_t x = 0; x < width; x += 8) checkPixel(x, y);
+  }
 }
 
 glm::dvec2 pixelToNormalised(const Lens& lens, glm::dvec2 pixel) {

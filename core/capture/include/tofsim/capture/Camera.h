@@ -1,9 +1,16 @@
 #pragma once
-// A pinhole camera. Pixel (x, y) with y = 0 at the top of the image looks
-// through the centre of its pixel; all distances are metres in world space.
+// A pinhole camera, or a calibrated one with a lens (OpenCV's camera matrix
+// and distortion, Lens.h). Pixel (x, y) with y = 0 at the top of the image
+// looks through the centre of its pixel; all distances are metres in world
+// space. With a lens each pixel's ray is the undistorted direction of its
+// centre, and a rasterizer cannot draw the image (capture::pinhole is null):
+// renderers trace it.
 
 #include <cstdint>
 #include <glm/glm.hpp>
+#include <optional>
+
+#include "tofsim/capture/Lens.h"
 
 namespace tofsim::capture {
 
@@ -11,9 +18,11 @@ struct Camera {
   glm::vec3 position_world{0.0f};
   glm::vec3 look_at_world{0.0f, 0.0f, -1.0f};
   glm::vec3 up_world{0.0f, 1.0f, 0.0f};
-  float fov_y_deg = 40.0f;  ///< full vertical field of view
+  float fov_y_deg = 40.0f;  ///< full vertical field of view (no lens)
   int32_t width = 64;
   int32_t height = 64;
+  /// The calibrated lens, in place of fov_y_deg; none: the ideal pinhole.
+  std::optional<Lens> lens;
 
   glm::vec3 forward() const;
   glm::vec3 right() const;
@@ -26,8 +35,15 @@ struct Camera {
   /// Change of the unnormalised ray direction forward + s right + t up from
   /// one pixel to the next: along +x (right) and along +y (down the image).
   /// The ray differentials of the pixel footprint (footprint_kernel.md).
+  /// With a lens, the steps at the image centre; rayStepsAt gives each pixel's.
   glm::vec3 rayStepAlongX() const;
   glm::vec3 rayStepAlongY() const;
+  /// The two steps at pixel (x, y): the pinhole's everywhere; with a lens,
+  /// the derivative of its undistorted ray (the pixel as the lens distorts it).
+  struct RaySteps {
+    glm::vec3 alongX{0.0f}, alongY{0.0f};
+  };
+  RaySteps rayStepsAt(int32_t x, int32_t y) const;
   /// Solid angle (sr) seen by pixel (x, y).
   double pixelSolidAngle_sr(int32_t x, int32_t y) const;
   /// Pixel containing the world point, or (-1, -1) when it projects outside
@@ -48,12 +64,13 @@ class PixelRays {
   glm::vec3 direction(int32_t x, int32_t y) const;
   glm::vec3 direction(int32_t x, int32_t y, glm::vec2 offset) const;
   /// Image-plane coordinates at unit distance of pixel position (x, y),
-  /// pixel centres at integers.
+  /// pixel centres at integers (+x right, +y up); with a lens, undistorted.
   glm::dvec2 planePoint(double x, double y) const;
 
  private:
   glm::vec3 towards(double x, double y) const;
 
+  std::optional<Lens> lens_;
   glm::vec3 forward_, right_, up_;
   double tanHalf_ = 0.0;  ///< tan(fov_y / 2): the image plane's half height at unit distance
   double aspect_ = 1.0;

@@ -9,6 +9,7 @@
 // distortion to ~1e-12 for the rays to be exact.
 
 #include <array>
+#include <cstdint>
 #include <glm/glm.hpp>
 
 namespace tofsim::capture {
@@ -34,6 +35,12 @@ glm::dmat2 distortionJacobian(const Lens& lens, glm::dvec2 ideal);
 /// Newton's method from the distorted point; nothing when it does not
 /// converge (outside the region where the distortion is invertible).
 bool undistortNormalised(const Lens& lens, glm::dvec2 distorted, glm::dvec2& ideal);
+
+/// Throws InputError naming the first pixel of a width x height image
+/// where the lens is not invertible: no undistorted ray, or a fold (the
+/// Jacobian's determinant <= 0) between the image centre's ray and a border
+/// pixel's, where two rays would meet in one pixel.
+void checkLensInvertible(const Lens& lens, int32_t width, int32_t height);
 
 /// Pixel <-> distorted normalised coordinates through the camera matrix.
 glm::dvec2 pixelToNormalised(const Lens& lens, glm::dvec2 pixel);
