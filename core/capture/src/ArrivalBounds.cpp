@@ -51,7 +51,7 @@ double longestThroughCorners(const glm::dvec3& light, const glm::dvec3& camera,
 // Whether the light can be seen straight by the camera: it projects into the
 // image and the spot cone points at the camera (occlusion is not known here).
 bool lightMayBeSeen(const RenderJob& job) {
-  if (pinhole(job.imager) == nullptr) return false;  // as directLightView
+  if (cameraOf(job.imager) == nullptr) return false;  // as directLightView
   const glm::vec3 toCamera = job.camera().position_world - job.light.position_world;
   const float d = glm::length(toCamera);
   if (d <= 1e-6f || job.camera().project(job.light.position_world).x < 0) return false;

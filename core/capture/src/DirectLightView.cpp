@@ -15,8 +15,8 @@ DirectLightView directLightView(const RenderJob& job, const std::vector<float>& 
 
 DirectLightView directLightView(const RenderJob& job, const FirstSurface& firstSurface) {
   DirectLightView view;
-  // Only a pinhole images the light itself; a point set's points are surfaces.
-  if (pinhole(job.imager) == nullptr) return view;
+  // Only a camera images the light itself; a point set's points are surfaces.
+  if (cameraOf(job.imager) == nullptr) return view;
   const Camera& camera = job.camera();
   const glm::vec3 toCamera = camera.position_world - job.light.position_world;
   const float d = glm::length(toCamera);

@@ -40,10 +40,15 @@ bool lastLegCounts(const Imager& imager) {
   return points == nullptr || points->last_leg_counts;
 }
 
-const Camera* pinhole(const Imager& imager) { return std::get_if<Camera>(&imager); }
+const Camera* pinhole(const Imager& imager) {
+  const Camera* camera = std::get_if<Camera>(&imager);
+  return camera != nullptr && !camera->lens ? camera : nullptr;
+}
+
+const Camera* cameraOf(const Imager& imager) { return std::get_if<Camera>(&imager); }
 
 PrimaryRays::PrimaryRays(const Imager& imager) : imager_(imager) {
-  if (const Camera* camera = pinhole(imager)) pinholeRays_.emplace(*camera);
+  if (const Camera* camera = cameraOf(imager)) pinholeRays_.emplace(*camera);
 }
 
 PrimaryRay PrimaryRays::ray(int32_t x, int32_t y) const {
@@ -61,13 +66,20 @@ PrimaryRay PrimaryRays::ray(int32_t x, int32_t y, glm::vec2 offset) const {
   return {points.origin_world, glm::normalize(target - points.origin_world)};
 }
 
-PixelSteps::PixelSteps(const Imager& imager, float side) {
-  if (const Camera* c = pinhole(imager)) {
+PixelSteps::PixelSteps(const Imager& imager, float side, int32_t x, int32_t y) {
+  if (const Camera* c = cameraOf(imager)) {
     pinhole_ = true;
     origin_ = c->position_world;
     forward_ = c->forward();
-    stepX_ = c->rayStepAlongX() * side;
-    stepY_ = c->rayStepAlongY() * side;
+    if (c->lens) {
+      // The distorted pixel's own ray steps: they vary across the image.
+      const Camera::RaySteps steps = c->rayStepsAt(x, y);
+      stepX_ = steps.alongX * side;
+      stepY_ = steps.alongY * side;
+    } else {
+      stepX_ = c->rayStepAlongX() * side;
+      stepY_ = c->rayStepAlongY() * side;
+    }
   } else {
     // The points' own spacing: the cell each point stands for.
     const auto& p = std::get<PointSetImager>(imager);

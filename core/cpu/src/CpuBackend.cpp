@@ -187,7 +187,11 @@ void CpuBackend::beginSegment(std::size_t firstPixel, std::size_t count) {
     // pixel-centre sample of pixel_samples: 1, the same float operations).
     const int32_t n = surfaces_->side[firstPixel + pixel];
     const float weight = 1.0f / static_cast<float>(static_cast<std::size_t>(n) * n);
-    const capture::PixelSteps steps(job_.imager, 1.0f / static_cast<float>(n));
+    const std::size_t p = firstPixel + pixel;
+    const auto width = static_cast<std::size_t>(capture::imageWidth(job_.imager));
+    const capture::PixelSteps steps(job_.imager, 1.0f / static_cast<float>(n),
+                                    static_cast<int32_t>(p % width),
+                                    static_cast<int32_t>(p / width));
     for (std::size_t i = segmentFirstSample_[pixel]; i < segmentFirstSample_[pixel + 1]; ++i) {
       fillSurface(i, weight, steps, eta);
     }

@@ -5,8 +5,9 @@
 // its primary ray per sample, the surface's step across one of its pixels
 // (the pixel footprint, pbrt-v4's Approximate_dp_dxy idea) and, for the
 // pinhole only, the view-projection a rasterizer can draw its G-buffer with.
-// A new kind (a lens with distortion) is one more alternative and its
-// functions here.
+// A camera with a calibrated lens is a Camera whose rays and steps come from
+// its lens (Camera.h); it is traced, not rasterized. A new kind is one more
+// alternative and its functions here.
 
 #include <cstdint>
 #include <glm/glm.hpp>
@@ -52,8 +53,11 @@ glm::vec3 viewpoint(const Imager& imager);
 /// Whether the last leg (surface -> viewpoint) is part of the optical path;
 /// render.camera_unwarp drops it for every imager.
 bool lastLegCounts(const Imager& imager);
-/// The pinhole, or null for an imager a rasterizer cannot draw.
+/// The pinhole, or null for an imager a rasterizer cannot draw (a point
+/// set, a camera with a lens).
 const Camera* pinhole(const Imager& imager);
+/// The camera, with or without a lens; null for a point set.
+const Camera* cameraOf(const Imager& imager);
 
 struct PrimaryRay {
   glm::vec3 origin;
@@ -85,20 +89,22 @@ struct FootprintSteps {
 };
 class PixelSteps {
  public:
-  PixelSteps(const Imager& imager, float side);
+  /// At pixel (x, y): a lens's steps vary across the image (the pinhole's
+  /// and a point set's do not, and ignore it).
+  PixelSteps(const Imager& imager, float side, int32_t x = 0, int32_t y = 0);
   /// At surface point x with unit normal n.
   FootprintSteps at(const glm::vec3& x, const glm::vec3& n) const;
   /// What `at` starts from, for a device that computes it itself
-  /// (footprint_deposit.glsl): a pinhole's ray steps across the (sub-)pixel,
+  /// (footprint_deposit.glsl): a camera's ray steps across the (sub-)pixel,
   /// or a point set's surface steps, which `at` returns as they are.
   bool carriedToSurface() const { return pinhole_; }
   const glm::vec3& stepU() const { return stepX_; }
   const glm::vec3& stepV() const { return stepY_; }
 
  private:
-  bool pinhole_ = false;
+  bool pinhole_ = false;  ///< a camera's ray steps, with or without a lens
   glm::vec3 origin_{0.0f}, forward_{0.0f};
-  glm::vec3 stepX_{0.0f}, stepY_{0.0f};  ///< pinhole: ray steps; point set: surface steps
+  glm::vec3 stepX_{0.0f}, stepY_{0.0f};  ///< camera: ray steps; point set: surface steps
 };
 
 /// A width x height grid of points at the centres of the cells of the
