@@ -137,6 +137,18 @@ TEST_F(ConfigKeysWriterTest, EffectiveConfigWritesEveryDeclaredKey) {
                                       "time: {}\n";
     leafPaths(YAML::Load(effectiveConfigYaml(loadRunConfig(dir_ / "n.yaml"))), "", written);
   }
+  // A lens, inline and from a calibration file (their keys exclude each other).
+  std::ofstream(dir_ / "calib.yaml") << "%YAML:1.0\n---\ncamera_matrix: !!opencv-matrix\n"
+                                        "  rows: 3\n  cols: 3\n  dt: d\n"
+                                        "  data: [50, 0, 31.5, 0, 50, 31.5, 0, 0, 1]\n"
+                                        "distortion_coefficients: [0.1, 0, 0, 0, 0]\n";
+  for (const char* lens : {"{camera_matrix: [50, 0, 31.5, 0, 50, 31.5, 0, 0, 1], "
+                           "distortion: [0.1, 0, 0, 0]}",
+                           "{calibration: calib.yaml}"}) {
+    std::ofstream(dir_ / "l.yaml") << "scene: scene.gltf\ncamera: {lens: " << lens
+                                   << "}\nlight: {}\ntime: {}\n";
+    leafPaths(YAML::Load(effectiveConfigYaml(loadRunConfig(dir_ / "l.yaml"))), "", written);
+  }
   written.erase("");
   std::set<std::string> declared;
   for (const ConfigKey& k : runConfigKeys()) declared.insert(k.path);

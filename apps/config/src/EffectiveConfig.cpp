@@ -4,6 +4,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include "FieldEmit.h"
+#include "LensConfig.h"
 #include "NlosFields.h"
 #include "RunFields.h"
 #include "ShortestNumber.h"
@@ -29,7 +30,26 @@ YAML::Node cameraNode(const CameraConfig& c) {
   n["position"] = vec(c.camera.position_world);
   n["look_at"] = vec(c.camera.look_at_world);
   n["up"] = vec(c.camera.up_world);
-  n["fov_y"] = shortest(c.camera.fov_y_deg) + " deg";
+  if (const auto& lens = c.camera.lens) {
+    YAML::Node l;
+    if (!c.lens_calibration.empty()) {
+      l["calibration"] = c.lens_calibration;
+    } else {
+      YAML::Node m(YAML::NodeType::Sequence);
+      for (const double v : {lens->fx, 0.0, lens->cx, 0.0, lens->fy, lens->cy, 0.0, 0.0, 1.0}) {
+        m.push_back(shortest(v));
+      }
+      m.SetStyle(YAML::EmitterStyle::Flow);
+      l["camera_matrix"] = m;
+      YAML::Node d(YAML::NodeType::Sequence);
+      for (std::size_t i = 0; i < distortionCount(*lens); ++i) d.push_back(shortest(lens->distortion[i]));
+      d.SetStyle(YAML::EmitterStyle::Flow);
+      l["distortion"] = d;
+    }
+    n["lens"] = l;
+  } else {
+    n["fov_y"] = shortest(c.camera.fov_y_deg) + " deg";
+  }
   YAML::Node res(YAML::NodeType::Sequence);
   res.push_back(c.camera.width);
   res.push_back(c.camera.height);

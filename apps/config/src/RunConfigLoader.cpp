@@ -1,10 +1,12 @@
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <string>
 #include <variant>
 
 #include "ConfigNode.h"
 #include "FieldParse.h"
+#include "LensConfig.h"
 #include "NlosConfigParser.h"
 #include "RunConfigYaml.h"
 #include "RunFields.h"
@@ -55,11 +57,20 @@ void parseCamera(const ConfigNode& node, CameraConfig& out) {
   c.position_world = vec3Of(node, "position", c.position_world);
   c.look_at_world = vec3Of(node, "look_at", c.look_at_world);
   c.up_world = vec3Of(node, "up", c.up_world);
+  std::optional<ParsedLens> lens;
+  if (node.has("lens")) {
+    if (node.has("fov_y")) {
+      node.failKey("fov_y", "a lens's camera matrix sets the field of view: give fov_y or lens");
+    }
+    lens = parseLens(node);
+  }
   c.fov_y_deg = static_cast<float>(node.getAngle_deg("fov_y", c.fov_y_deg));
   if (!(c.fov_y_deg > 0.0f && c.fov_y_deg < 180.0f)) {
     node.failKey("fov_y", "must be in (0, 180) degrees");
   }
-  const std::vector<double> res = node.getDoubles("resolution", 2, {64.0, 64.0});
+  std::vector<double> defaultResolution = {64.0, 64.0};
+  if (lens && lens->image_size) defaultResolution = {double(lens->image_size->x), double(lens->image_size->y)};
+  const std::vector<double> res = node.getDoubles("resolution", 2, defaultResolution);
   for (double r : res) {
     if (r < 1 || r > 16384 || r != std::floor(r)) {
       node.failKey("resolution", "must be two integers in [1, 16384] (width, height)");
@@ -67,6 +78,23 @@ void parseCamera(const ConfigNode& node, CameraConfig& out) {
   }
   c.width = static_cast<int32_t>(res[0]);
   c.height = static_cast<int32_t>(res[1]);
+  if (lens) {
+    // A calibration holds for the image it was made at: another resolution
+    // would need the camera matrix scaled, which is the user's to state.
+    if (lens->image_size && *lens->image_size != glm::ivec2(c.width, c.height)) {
+      node.failKey("resolution", "differs from the calibration's image size " +
+                                     std::to_string(lens->image_size->x) + " x " +
+                                     std::to_string(lens->image_size->y) + " (" +
+                                     lens->calibration_file + ")");
+    }
+    try {
+      capture::checkLensInvertible(lens->lens, c.width, c.height);
+    } catch (const InputError& e) {
+      node.failKey("lens", e.what());
+    }
+    c.lens = lens->lens;
+    out.lens_calibration = lens->calibration_file;
+  }
   if (out.gltf_camera.empty()) {
     const glm::vec3 forward = c.look_at_world - c.position_world;
     if (glm::length(forward) <= 0.0f) node.failKey("look_at", "must differ from position");

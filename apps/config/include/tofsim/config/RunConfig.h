@@ -24,7 +24,10 @@ namespace tofsim::config {
 struct CameraConfig {
   /// Name or index of a camera in the scene; empty: use the values below.
   std::string gltf_camera;
-  capture::Camera camera;  ///< position, look-at, up, fov, resolution
+  capture::Camera camera;  ///< position, look-at, up, fov or lens, resolution
+  /// camera.lens.calibration: the OpenCV calibration file the lens came from
+  /// (absolute); empty when the lens was given inline or there is none.
+  std::string lens_calibration;
 };
 
 struct LightConfig {
