@@ -41,13 +41,25 @@ nlohmann::ordered_json timeJson(const TimeAxis& axis) {
 }
 
 nlohmann::json cameraJson(const capture::Camera& cam) {
-  return {{"position_m", vec(cam.position_world)},
-          {"look_at_m", vec(cam.look_at_world)},
-          {"up", vec(cam.up_world)},
-          {"fov_y_deg", cam.fov_y_deg},
-          {"width", cam.width},
-          {"height", cam.height},
-          {"model", "pinhole, one ray through each pixel centre"}};
+  nlohmann::json j = {{"position_m", vec(cam.position_world)},
+                      {"look_at_m", vec(cam.look_at_world)},
+                      {"up", vec(cam.up_world)},
+                      {"width", cam.width},
+                      {"height", cam.height}};
+  if (const auto& lens = cam.lens) {
+    j["lens"] = {{"fx_px", lens->fx},
+                 {"fy_px", lens->fy},
+                 {"cx_px", lens->cx},
+                 {"cy_px", lens->cy},
+                 {"distortion", lens->distortion},
+                 {"distortion_order", "k1 k2 p1 p2 k3 k4 k5 k6 s1 s2 s3 s4 tau_x tau_y (OpenCV)"},
+                 {"pixel_convention", "OpenCV: pixel (x, y)'s centre at (x, y), +y down"}};
+    j["model"] = "calibrated lens (OpenCV's model): one ray through each pixel centre, undistorted";
+  } else {
+    j["fov_y_deg"] = cam.fov_y_deg;
+    j["model"] = "pinhole, one ray through each pixel centre";
+  }
+  return j;
 }
 
 nlohmann::json lightJson(const capture::Light& light, bool attachedToCamera) {
