@@ -12,7 +12,9 @@
 // masked-out pixel's one centre sample, the whole pixel (uPixelStepX/Y). With
 // SURFACE_STEPS (a point-set imager, capture::PixelSteps) these are the
 // surface's steps themselves, the same at every sample; else they are the
-// pinhole's ray steps, carried to each sample's tangent plane.
+// camera's ray steps, carried to each sample's tangent plane: the pinhole's,
+// the same for every pixel, or with PIXEL_RAY_STEPS (a camera with a lens)
+// each pixel's own (Camera::rayStepsAt), from a buffer.
 //
 // llvmpipe ends every loop of an invocation after 65535 iterations in total
 // (see indirect_gather.comp): the up to FOOTPRINT_DIRECT_BINS narrow bins and
@@ -36,6 +38,12 @@ layout(std430, binding = TOFSIM_SSBO_FOOTPRINT_WRITTEN) buffer FootprintWritten 
 #ifndef SURFACE_STEPS
 uniform vec3 uCameraForward;  // the camera's unit view axis
 #endif
+#ifdef PIXEL_RAY_STEPS
+// Per image pixel: its ray steps along x, then along y (xyz), unscaled.
+layout(std430, binding = TOFSIM_SSBO_PIXEL_RAY_STEPS) readonly buffer PixelRaySteps {
+  vec4 pixelRaySteps[];
+};
+#else
 uniform vec3 uSampleStepX;    // Camera::rayStepAlongX() / pixel_samples: one sub-pixel step
 uniform vec3 uSampleStepY;    // Camera::rayStepAlongY() / pixel_samples
 #ifdef ADAPTIVE_SAMPLES
@@ -44,12 +52,22 @@ uniform vec3 uSampleStepY;    // Camera::rayStepAlongY() / pixel_samples
 uniform vec3 uPixelStepX;
 uniform vec3 uPixelStepY;
 #endif
+#endif
 
 // The surface point's steps across the sample's footprint (dx/du, dx/dv),
 // from the ray differentials on its tangent plane: the sample's sub-pixel, or
 // with wholePixel (only with ADAPTIVE_SAMPLES) the whole pixel.
-void surfaceStepsAcrossSample(vec3 x, vec3 n, bool wholePixel, out vec3 dxdu, out vec3 dxdv) {
+void surfaceStepsAcrossSample(vec3 x, vec3 n, ivec2 pixel, bool wholePixel, out vec3 dxdu,
+                              out vec3 dxdv) {
   vec3 toSurface = x - uCameraPosition_world;
+#ifdef PIXEL_RAY_STEPS
+  // The CPU's PixelSteps: the pixel's steps times the side 1 / N of a
+  // sub-pixel, or 1 for a whole-pixel sample.
+  uint i = 2u * uint(pixel.y * uImageWidth + pixel.x);
+  float side = wholePixel ? 1.0 : 1.0 / float(PIXEL_SAMPLES);
+  vec3 stepX = pixelRaySteps[i].xyz * side;
+  vec3 stepY = pixelRaySteps[i + 1u].xyz * side;
+#else
   vec3 stepX = uSampleStepX;
   vec3 stepY = uSampleStepY;
 #ifdef ADAPTIVE_SAMPLES
@@ -57,6 +75,7 @@ void surfaceStepsAcrossSample(vec3 x, vec3 n, bool wholePixel, out vec3 dxdu, ou
     stepX = uPixelStepX;
     stepY = uPixelStepY;
   }
+#endif
 #endif
 #ifdef SURFACE_STEPS
   dxdu = stepX;

@@ -125,7 +125,7 @@ Sample loadSample(ivec2 xy, int samples, int s) {
   o.cameraPath = cameraPathLength(uCameraUnwarp != 0, uIndexOfRefraction,
                                   length(o.x - uCameraPosition_world));
 #ifdef PIXEL_FOOTPRINT
-  surfaceStepsAcrossSample(o.x, o.n, g.wholePixel, o.dxdu, o.dxdv);
+  surfaceStepsAcrossSample(o.x, o.n, g.pixel, g.wholePixel, o.dxdu, o.dxdv);
 #endif
   return o;
 }

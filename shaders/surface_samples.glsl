@@ -54,6 +54,7 @@ struct SurfaceSample {
 #ifdef GLTF_MATERIALS
   vec2 metallicRoughness;
 #endif
+  ivec2 pixel;      // the pixel's image position (a lens's steps are the pixel's own)
   float weight;     // share of the pixel: uSampleWeight, 1 for a whole-pixel sample
   bool wholePixel;  // its footprint is the whole pixel, not a sub-pixel (footprint_deposit.glsl)
 };
@@ -70,6 +71,7 @@ int samplesOfPixel(uint pixel) {
 // (samplesOfPixel) samples.
 SurfaceSample pixelSample(ivec2 xy, int samples, int s) {
   SurfaceSample o;
+  o.pixel = xy;
 #ifdef ADAPTIVE_SAMPLES
   // Only a masked-out pixel takes one sample when N > 1: the pixel_samples: 1
   // sample, from the centre maps.

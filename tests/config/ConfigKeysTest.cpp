@@ -145,8 +145,8 @@ TEST_F(ConfigKeysWriterTest, EffectiveConfigWritesEveryDeclaredKey) {
   for (const char* lens : {"{camera_matrix: [50, 0, 31.5, 0, 50, 31.5, 0, 0, 1], "
                            "distortion: [0.1, 0, 0, 0]}",
                            "{calibration: calib.yaml}"}) {
-    std::ofstream(dir_ / "l.yaml") << "scene: scene.gltf\ncamera: {lens: " << lens
-                                   << "}\nlight: {}\ntime: {}\n";
+    std::ofstream(dir_ / "l.yaml")
+        << "scene: scene.gltf\ncamera: {lens: " << lens << "}\nlight: {}\ntime: {}\n";
     leafPaths(YAML::Load(effectiveConfigYaml(loadRunConfig(dir_ / "l.yaml"))), "", written);
   }
   written.erase("");

@@ -155,7 +155,7 @@ TEST_F(EveryKeyRoundTripTest, EveryDeclaredKeyIsNonDefaultAndSurvivesTheRoundTri
     if (std::string(key.path).rfind("nlos.", 0) == 0) continue;  // NlosKeysSurviveTheRoundTrip
     // Excludes fov_y: LensConfigTest.EffectiveConfigReloadsToTheSameLens.
     if (std::string(key.path).rfind("camera.lens.", 0) == 0) continue;
-    if (std::string(key.defaultValue) == "required") continue;   // no default to differ from
+    if (std::string(key.defaultValue) == "required") continue;  // no default to differ from
     const YAML::Node value = at(effective, key.path);
     ASSERT_TRUE(value.IsDefined()) << key.path << " is not in the effective config";
     EXPECT_NE(text(value), text(at(defaults, key.path)))

@@ -18,8 +18,8 @@ class LensConfigTest : public test::TempDirTest {
  protected:
   RunConfig load(const std::string& camera) {
     std::ofstream(dir_ / "scene.gltf") << "{}";
-    std::ofstream(dir_ / "c.yaml") << "scene: scene.gltf\ncamera:\n" << camera
-                                   << "light: {}\ntime: {}\n";
+    std::ofstream(dir_ / "c.yaml") << "scene: scene.gltf\ncamera:\n"
+                                   << camera << "light: {}\ntime: {}\n";
     return loadRunConfig(dir_ / "c.yaml");
   }
   std::string errorOf(const std::string& camera) {
@@ -115,7 +115,8 @@ TEST_F(LensConfigTest, BadLensesAreLocatedErrors) {
   const std::string k = "camera_matrix: [60, 0, 31.5, 0, 60, 31.5, 0, 0, 1]";
   const std::string both = errorOf("  fov_y: 40\n  lens: {" + k + "}\n");
   EXPECT_NE(both.find("c.yaml:3"), std::string::npos) << both;
-  const std::string skew = errorOf("  lens: {camera_matrix: [60, 1, 31.5, 0, 60, 31.5, 0, 0, 1]}\n");
+  const std::string skew =
+      errorOf("  lens: {camera_matrix: [60, 1, 31.5, 0, 60, 31.5, 0, 0, 1]}\n");
   EXPECT_NE(skew.find("camera.lens.camera_matrix"), std::string::npos) << skew;
   EXPECT_NE(skew.find("no skew"), std::string::npos) << skew;
   EXPECT_NE(errorOf("  lens: {camera_matrix: [60, 0, 31.5, 0, 60, 31.5]}\n").find("9 numbers"),
@@ -130,8 +131,8 @@ TEST_F(LensConfigTest, BadLensesAreLocatedErrors) {
             std::string::npos);
   // k1 = -1 on a 90 degree wide image: the radius r (1 - r^2) turns back at
   // r = 0.577, inside the image (r up to 0.52 / 0.74 at the corners).
-  const std::string fold = errorOf("  resolution: [64, 64]\n  lens: {" + k +
-                                   ", distortion: [-1, 0, 0, 0]}\n");
+  const std::string fold =
+      errorOf("  resolution: [64, 64]\n  lens: {" + k + ", distortion: [-1, 0, 0, 0]}\n");
   EXPECT_NE(fold.find("not invertible at pixel"), std::string::npos) << fold;
   EXPECT_NE(fold.find("camera.lens"), std::string::npos) << fold;
   EXPECT_EQ(errorOf("  resolution: [64, 64]\n  lens: {" + k + ", distortion: [-0.1, 0, 0, 0]}\n"),
@@ -143,7 +144,8 @@ TEST_F(LensConfigTest, BadCalibrationFilesAreLocatedInThem) {
   const std::string size = errorOf("  resolution: [64, 48]\n  lens: {calibration: calib.yaml}\n");
   EXPECT_NE(size.find("camera.resolution"), std::string::npos) << size;
   EXPECT_NE(size.find("80 x 60"), std::string::npos) << size;
-  write("nomatrix.yaml", "%YAML:1.0\n---\nimage_width: 80\ndistortion_coefficients: [0, 0, 0, 0]\n");
+  write("nomatrix.yaml",
+        "%YAML:1.0\n---\nimage_width: 80\ndistortion_coefficients: [0, 0, 0, 0]\n");
   const std::string none = errorOf("  lens: {calibration: nomatrix.yaml}\n");
   EXPECT_NE(none.find("nomatrix.yaml"), std::string::npos) << none;
   EXPECT_NE(none.find("camera_matrix"), std::string::npos) << none;

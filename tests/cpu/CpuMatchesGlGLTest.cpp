@@ -309,6 +309,34 @@ TEST(CpuMatchesGlGLTest, PointSetOnTheCornerFloorVolumes) {
   expectSameVolumesForEachPixelModel(s.job, 1e-3, 1e-2);
 }
 
+// A camera with a barrel-distorting lens on the corner: the GL backend
+// gathers from the driver's traced samples and takes each pixel's own ray
+// steps (PIXEL_RAY_STEPS), and agrees with the CPU backend under every pixel
+// model with footprints (point pixels take the traced samples as a point set
+// does), adaptive samples included.
+TEST(CpuMatchesGlGLTest, LensCameraOnTheCornerVolumes) {
+  test::CornerJob s(24);
+  s.job.settings.indirect.rsm_resolution = 16;
+  s.job.settings.indirect.points_per_vpl = 500;
+  s.job.settings.shadow_map_resolution = 512;
+  capture::Lens lens;
+  lens.fx = lens.fy = 30.0;
+  lens.cx = lens.cy = 11.5;
+  lens.distortion = {-0.3, 0.08, 0.003, -0.002, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0};
+  s.job.camera().lens = lens;
+  s.job.settings.pixel_footprint = true;
+  for (const bool adaptive : {false, true}) {
+    for (const int32_t samples : {1, 2}) {
+      if (adaptive && samples == 1) continue;
+      SCOPED_TRACE(testing::Message()
+                   << samples << " x " << samples << " samples" << (adaptive ? ", adaptive" : ""));
+      s.job.settings.pixel_samples = samples;
+      s.job.settings.adaptive_pixel_samples = adaptive;
+      expectSameVolumes(s.job, 1e-3, 1e-3);
+    }
+  }
+}
+
 TEST(CpuMatchesGlGLTest, PlaneVolumes) {
   test::PlaneJob s;
   s.job.camera().width = 32;

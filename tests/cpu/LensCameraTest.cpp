@@ -67,8 +67,9 @@ std::vector<cv::Point2d> openCvUndistorted(const std::vector<cv::Point2d>& pixel
   const std::vector<double> d(l.distortion.begin(), l.distortion.begin() + 12);
   std::vector<cv::Point2d> ideal;
   // Many iterations: OpenCV's default 5 leave ~0.1 px at this distortion.
-  cv::undistortPoints(pixels, ideal, k, d, cv::noArray(), cv::noArray(),
-                      cv::TermCriteria(cv::TermCriteria::COUNT | cv::TermCriteria::EPS, 200, 1e-15));
+  cv::undistortPoints(
+      pixels, ideal, k, d, cv::noArray(), cv::noArray(),
+      cv::TermCriteria(cv::TermCriteria::COUNT | cv::TermCriteria::EPS, 200, 1e-15));
   return ideal;
 }
 
@@ -92,7 +93,7 @@ TEST(LensCameraTest, EachPixelSeesThePlaneAlongOpenCvsUndistortedRay) {
     for (int x = 0; x < kSide; ++x) {
       const cv::Point2d& p = ideal[static_cast<std::size_t>(y) * kSide + x];
       const double q = std::sqrt(1.0 + p.x * p.x + p.y * p.y);  // |ray| with z = 1
-      const double r = kDistance * q;                            // to the plane along the ray
+      const double r = kDistance * q;                           // to the plane along the ray
       worstDepth = std::max(worstDepth, std::fabs(render.result.depth_m.at(y, x, 0) - r) / r);
       const int bin = axis.binOf(roundTrip_m(p) / kSpeedOfLight_m_per_s);
       // albedo / pi * I cos / r^2, cos = 1 / q: the radiance the camera sees.

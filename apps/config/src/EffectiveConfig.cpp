@@ -42,7 +42,8 @@ YAML::Node cameraNode(const CameraConfig& c) {
       m.SetStyle(YAML::EmitterStyle::Flow);
       l["camera_matrix"] = m;
       YAML::Node d(YAML::NodeType::Sequence);
-      for (std::size_t i = 0; i < distortionCount(*lens); ++i) d.push_back(shortest(lens->distortion[i]));
+      for (std::size_t i = 0; i < distortionCount(*lens); ++i)
+        d.push_back(shortest(lens->distortion[i]));
       d.SetStyle(YAML::EmitterStyle::Flow);
       l["distortion"] = d;
     }

@@ -79,12 +79,14 @@ void setDistortion(const ConfigNode& node, const std::string& key, capture::Lens
   bool known = false;
   for (const std::size_t n : kDistortionLengths) known = known || d.size() == n;
   if (!known) {
-    node.failKey(key, "expected 4, 5, 8, 12 or 14 coefficients (k1 k2 p1 p2 [k3 [k4 k5 k6 [s1 s2 "
-                      "s3 s4 [tau_x tau_y]]]]), got " +
-                          std::to_string(d.size()));
+    node.failKey(key,
+                 "expected 4, 5, 8, 12 or 14 coefficients (k1 k2 p1 p2 [k3 [k4 k5 k6 [s1 s2 "
+                 "s3 s4 [tau_x tau_y]]]]), got " +
+                     std::to_string(d.size()));
   }
   for (std::size_t i = 0; i < d.size(); ++i) {
-    if (!std::isfinite(d[i])) node.failKey(key, "coefficient " + std::to_string(i) + " is not finite");
+    if (!std::isfinite(d[i]))
+      node.failKey(key, "coefficient " + std::to_string(i) + " is not finite");
     lens.distortion[i] = d[i];
   }
 }
@@ -104,7 +106,8 @@ std::string openCvYamlText(const ConfigNode& lensNode, const std::string& path) 
 
 ParsedLens fromCalibration(const ConfigNode& lensNode) {
   ParsedLens out;
-  out.calibration_file = configRelativePath(lensNode, lensNode.requireString("calibration")).string();
+  out.calibration_file =
+      configRelativePath(lensNode, lensNode.requireString("calibration")).string();
   YAML::Node root;
   try {
     root = YAML::Load(openCvYamlText(lensNode, out.calibration_file));
@@ -137,7 +140,8 @@ ParsedLens fromCalibration(const ConfigNode& lensNode) {
 
 ParsedLens parseLens(const ConfigNode& camera) {
   const ConfigNode lensNode = camera.child("lens");
-  if (!lensNode.isMap()) lensNode.fail("expected a mapping (camera_matrix and distortion, or calibration)");
+  if (!lensNode.isMap())
+    lensNode.fail("expected a mapping (camera_matrix and distortion, or calibration)");
   if (lensNode.has("calibration")) {
     for (const char* key : {"camera_matrix", "distortion"}) {
       if (lensNode.has(key)) {

@@ -69,7 +69,8 @@ void parseCamera(const ConfigNode& node, CameraConfig& out) {
     node.failKey("fov_y", "must be in (0, 180) degrees");
   }
   std::vector<double> defaultResolution = {64.0, 64.0};
-  if (lens && lens->image_size) defaultResolution = {double(lens->image_size->x), double(lens->image_size->y)};
+  if (lens && lens->image_size)
+    defaultResolution = {double(lens->image_size->x), double(lens->image_size->y)};
   const std::vector<double> res = node.getDoubles("resolution", 2, defaultResolution);
   for (double r : res) {
     if (r < 1 || r > 16384 || r != std::floor(r)) {

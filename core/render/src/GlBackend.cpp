@@ -40,6 +40,21 @@ struct ViewBounds {
   glm::vec3 lo, hi;
 };
 
+// A lens camera's ray steps, pixel by pixel (PIXEL_RAY_STEPS): the same
+// floats the CPU backend's PixelSteps takes.
+gl::Buffer pixelRayStepsBuffer(const Camera& camera) {
+  std::vector<glm::vec4> steps;
+  steps.reserve(static_cast<std::size_t>(camera.width) * camera.height * 2);
+  for (int32_t y = 0; y < camera.height; ++y) {
+    for (int32_t x = 0; x < camera.width; ++x) {
+      const Camera::RaySteps s = camera.rayStepsAt(x, y);
+      steps.emplace_back(s.alongX, 0.0f);
+      steps.emplace_back(s.alongY, 0.0f);
+    }
+  }
+  return gl::Buffer(steps.size() * sizeof(glm::vec4), steps.data());
+}
+
 // Uniforms shared by the direct and indirect gathers: image, time axis,
 // imager (its viewpoint, whether its last leg counts, its footprint steps).
 void configureGather(const gl::Program& program, const RenderJob& job) {
@@ -58,11 +73,12 @@ void configureGather(const gl::Program& program, const RenderJob& job) {
   // Each sample stands for 1 / N^2 of the pixel (as the CPU backend weighs it).
   if (s.pixel_footprint || n > 1) program.set("uSampleWeight", 1.0f / static_cast<float>(n * n));
   if (s.pixel_footprint) {
+    const Camera* camera = cameraOf(job.imager);
+    if (camera != nullptr) program.set("uCameraForward", camera->forward());
+    // A lens's steps are each pixel's, in a buffer (Passes::pixelRaySteps).
+    if (camera != nullptr && camera->lens) return;
     // A sample's footprint is its sub-pixel: the steps shrink by N.
     const PixelSteps sample(job.imager, 1.0f / static_cast<float>(n));
-    if (const Camera* camera = pinhole(job.imager)) {
-      program.set("uCameraForward", camera->forward());
-    }
     program.set("uSampleStepX", sample.stepU());
     program.set("uSampleStepY", sample.stepV());
     // A masked-out pixel's one centre sample spans the whole pixel: the
@@ -129,6 +145,9 @@ struct GlBackend::Passes {
     gbuffer.normal.bindUnit(gpu::kGNormal);
     gbuffer.albedo.bindUnit(gpu::kGAlbedo);
     if (gltf()) gbuffer.metallicRoughness.bindUnit(gpu::kGMetallicRoughness);
+    if (pixelRaySteps.size() > 0) {
+      pixelRaySteps.bindBase(GL_SHADER_STORAGE_BUFFER, gpu::kPixelRaySteps);
+    }
     if (!centres) return;
     centres->position.bindUnit(gpu::kCentrePosition);
     centres->normal.bindUnit(gpu::kCentreNormal);
@@ -148,6 +167,9 @@ struct GlBackend::Passes {
   /// 4 bytes a pixel is small next to the N^2 x 64 of the G-buffer).
   std::unique_ptr<SurfaceMaps> centres;
   gl::Buffer sampledPixels;
+  /// A lens camera with render.pixel_footprint only: each pixel's ray steps
+  /// (PIXEL_RAY_STEPS in footprint_deposit.glsl), two vec4 a pixel.
+  gl::Buffer pixelRaySteps;
   LightShadowMap shadowMap;
   gl::Program directGather;
   std::unique_ptr<IndirectLight> indirectLight;  ///< null without VPLs
@@ -212,6 +234,10 @@ ir::CentreSurfaces GlBackend::prepareSurfaces(const RenderJob& job) {
   Passes& p = *passes_;
   ir::CentreSurfaces surfaces =
       pinhole(job.imager) != nullptr ? rasterizeSurfaces(p) : loadGivenSurfaces(p);
+  if (const Camera* camera = cameraOf(job.imager);
+      camera && camera->lens && job.settings.pixel_footprint) {
+    p.pixelRaySteps = pixelRayStepsBuffer(*camera);
+  }
   if (gpu::adaptiveSamples(job.settings)) {
     // Until setSampledPixels: every pixel takes its N x N samples.
     p.sampledPixels = gl::Buffer(p.pixelCount() * sizeof(uint32_t));
@@ -310,7 +336,7 @@ std::size_t GlBackend::fixedBytes() const {
   const std::size_t floatsPerSample = 4 * 4 + (p.gltf() ? 2 : 0);
   std::size_t bytes = p.gpuScene.bytes() +
                       p.pixelCount() * samples * floatsPerSample * sizeof(float) +
-                      p.shadowMap.bytes() + p.sampledPixels.size();
+                      p.shadowMap.bytes() + p.sampledPixels.size() + p.pixelRaySteps.size();
   if (p.indirectLight) bytes += p.indirectLight->fixedBytes();
   return bytes;
 }

@@ -20,6 +20,7 @@ std::vector<std::pair<std::string, std::string>> shaderDefines() {
       {"TOFSIM_SSBO_FOOTPRINT_WRITTEN", n(kFootprintWritten)},
       {"TOFSIM_SSBO_FOOTPRINT_VOLUME", n(kFootprintVolume)},
       {"TOFSIM_SSBO_SAMPLED_PIXELS", n(kSampledPixels)},
+      {"TOFSIM_SSBO_PIXEL_RAY_STEPS", n(kPixelRaySteps)},
       {"TOFSIM_UNIT_G_POSITION", n(kGPosition)},
       {"TOFSIM_UNIT_G_NORMAL", n(kGNormal)},
       {"TOFSIM_UNIT_G_ALBEDO", n(kGAlbedo)},
@@ -51,8 +52,10 @@ std::vector<std::pair<std::string, std::string>> gatherDefines(const capture::Re
   // Only with sub-samples to skip: every other render compiles the gathers
   // of before, which read no mask.
   if (adaptiveSamples(s)) defines.emplace_back("ADAPTIVE_SAMPLES", "1");
-  if (s.pixel_footprint && capture::pinhole(job.imager) == nullptr) {
-    defines.emplace_back("SURFACE_STEPS", "1");
+  const capture::Camera* camera = capture::cameraOf(job.imager);
+  if (s.pixel_footprint && camera == nullptr) defines.emplace_back("SURFACE_STEPS", "1");
+  if (s.pixel_footprint && camera != nullptr && camera->lens) {
+    defines.emplace_back("PIXEL_RAY_STEPS", "1");
   }
   return defines;
 }

@@ -41,6 +41,7 @@ enum StorageBinding : uint32_t {
   kFootprintWritten,  ///< one uint per pixel: its difference buffer holds entries
   kFootprintVolume,   ///< the volume footprint_integrate.comp adds the buffer to
   kSampledPixels,     ///< one uint per pixel: 1 = N x N samples, 0 = its centre (ADAPTIVE_SAMPLES)
+  kPixelRaySteps,  ///< two vec4 per pixel: a lens camera's ray steps along x, y (PIXEL_RAY_STEPS)
 };
 
 /// Texture units (TOFSIM_UNIT_...).
