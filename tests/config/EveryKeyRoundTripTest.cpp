@@ -29,6 +29,7 @@ camera:
   up: [0, 0, 1]
   fov_y: 33 deg
   resolution: [40, 30]
+  vignetting: cos4
 light:
   type: spot
   attach_to_camera: true

@@ -56,6 +56,17 @@ YAML::Node cameraNode(const CameraConfig& c) {
   res.push_back(c.camera.height);
   res.SetStyle(YAML::EmitterStyle::Flow);
   n["resolution"] = res;
+  switch (c.vignetting.kind) {
+    case capture::Vignetting::Kind::None:
+      n["vignetting"] = "none";
+      break;
+    case capture::Vignetting::Kind::Cos4:
+      n["vignetting"] = "cos4";
+      break;
+    case capture::Vignetting::Kind::Map:
+      n["vignetting"] = c.vignetting.file;
+      break;
+  }
   return n;
 }
 

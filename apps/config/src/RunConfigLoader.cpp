@@ -11,6 +11,7 @@
 #include "RunConfigYaml.h"
 #include "RunFields.h"
 #include "ShortestNumber.h"
+#include "SpadTableFile.h"
 #include "tofsim/config/RunConfig.h"
 #include "tofsim/config/SensorConfig.h"
 #include "tofsim/sensors/Common.h"
@@ -49,6 +50,33 @@ long long intInRange(const ConfigNode& node, const std::string& key, long long f
 
 void requirePositive(const ConfigNode& node, const std::string& key, double value) {
   if (!(value > 0.0)) node.failKey(key, "must be > 0 (got " + shortest(value) + ")");
+}
+
+// camera.vignetting: none, cos4 or a .npy map of the camera's size.
+capture::Vignetting parseVignetting(const ConfigNode& node, const capture::Camera& camera) {
+  capture::Vignetting v;
+  const std::string text = node.getString("vignetting", "none");
+  if (text == "none") return v;
+  if (text == "cos4") {
+    v.kind = capture::Vignetting::Kind::Cos4;
+    return v;
+  }
+  if (text.size() < 4 || text.substr(text.size() - 4) != ".npy") {
+    node.failKey("vignetting", "must be none, cos4 or a .npy map of gains (got '" + text + "')");
+  }
+  PixelMap map = readPixelMap(node, "vignetting", "vignetting map", "gain");
+  if (map.width != camera.width || map.height != camera.height) {
+    node.failKey("vignetting", map.file + ": a " + std::to_string(map.height) + " x " +
+                                   std::to_string(map.width) + " map for a " +
+                                   std::to_string(camera.height) + " x " +
+                                   std::to_string(camera.width) + " (H x W) image");
+  }
+  v.kind = capture::Vignetting::Kind::Map;
+  v.width = map.width;
+  v.height = map.height;
+  v.file = map.file;
+  v.map.assign(map.values.begin(), map.values.end());
+  return v;
 }
 
 void parseCamera(const ConfigNode& node, CameraConfig& out) {
@@ -96,6 +124,7 @@ void parseCamera(const ConfigNode& node, CameraConfig& out) {
     c.lens = lens->lens;
     out.lens_calibration = lens->calibration_file;
   }
+  out.vignetting = parseVignetting(node, c);
   if (out.gltf_camera.empty()) {
     const glm::vec3 forward = c.look_at_world - c.position_world;
     if (glm::length(forward) <= 0.0f) node.failKey("look_at", "must differ from position");

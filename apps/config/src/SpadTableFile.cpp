@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
+#include <utility>
 
 #include "ShortestNumber.h"
 #include "TableText.h"
@@ -114,16 +115,16 @@ sensors::SpadDnl parseDnl(const ConfigNode& n) {
   return dnl;
 }
 
-sensors::SpadDarkCountMap parseDarkCountMap(const ConfigNode& n) {
-  const char* key = "dark_count_map";
-  sensors::SpadDarkCountMap map;
+PixelMap readPixelMap(const ConfigNode& n, const char* key, const char* what,
+                      const char* valueName) {
+  PixelMap map;
   const std::filesystem::path path = existingFile(n, key);
   map.file = path.string();
+  const std::string expected = std::string("a ") + what + " is a 2-D float32 .npy";
   if (lowerExtension(path) != ".npy") {
-    n.failKey(key,
-              "a dark count map is a 2-D float32 .npy (got '" + path.filename().string() + "')");
+    n.failKey(key, expected + " (got '" + path.filename().string() + "')");
   }
-  const io::NpyArray a = readNpyAt(n, key, path, "a dark count map is a 2-D float32 .npy");
+  const io::NpyArray a = readNpyAt(n, key, path, expected.c_str());
   if (a.shape.size() != 2) {
     n.failKey(key, map.file + ": expected a 2-D array (H, W), got rank " +
                        std::to_string(a.shape.size()));
@@ -133,13 +134,23 @@ sensors::SpadDarkCountMap parseDarkCountMap(const ConfigNode& n) {
   for (std::size_t k = 0; k < a.data.size(); ++k) {
     const double v = a.data[k];
     if (!std::isfinite(v) || v < 0.0) {
-      n.failKey(key, map.file + ": rate " + shortest(v) + " at (y, x) = (" +
+      n.failKey(key, map.file + ": " + valueName + " " + shortest(v) + " at (y, x) = (" +
                          std::to_string(k / map.width) + ", " + std::to_string(k % map.width) +
                          ") is " + (v < 0.0 ? "negative" : "not finite"));
     }
-    map.rates_per_s.push_back(v);
+    map.values.push_back(v);
   }
-  if (map.rates_per_s.empty()) n.failKey(key, map.file + ": the array is empty");
+  if (map.values.empty()) n.failKey(key, map.file + ": the array is empty");
+  return map;
+}
+
+sensors::SpadDarkCountMap parseDarkCountMap(const ConfigNode& n) {
+  PixelMap m = readPixelMap(n, "dark_count_map", "dark count map", "rate");
+  sensors::SpadDarkCountMap map;
+  map.file = m.file;
+  map.width = m.width;
+  map.height = m.height;
+  map.rates_per_s = std::move(m.values);
   return map;
 }
 

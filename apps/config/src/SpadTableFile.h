@@ -5,6 +5,7 @@
 // paths resolve against the config file's folder; every bad file is an
 // InputError located at the key, naming the file (and its CSV line).
 
+#include <cstdint>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -22,6 +23,18 @@ std::filesystem::path configRelativePath(const ConfigNode& n, const std::string&
 /// is checked against the TDC's bins where the window is known
 /// (RunConfigLoader).
 sensors::SpadDnl parseDnl(const ConfigNode& n);
+
+/// A per-pixel map read from a 2-D float32 .npy (H, W), row-major.
+struct PixelMap {
+  std::string file;  ///< absolute
+  int32_t width = 0, height = 0;
+  std::vector<double> values;
+};
+/// `key` of node n as a PixelMap whose values are finite and >= 0; `what`
+/// names the map and `valueName` one value in errors ("dark count map",
+/// "rate"). Its shape is the caller's to check against the image.
+PixelMap readPixelMap(const ConfigNode& n, const char* key, const char* what,
+                      const char* valueName);
 
 /// `dark_count_map` of node n: a 2-D float32 .npy (H, W) of counts / s >= 0.
 /// Its shape is checked against the image in checkImage.

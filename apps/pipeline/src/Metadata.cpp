@@ -62,6 +62,18 @@ nlohmann::json cameraJson(const capture::Camera& cam) {
   return j;
 }
 
+nlohmann::json vignettingJson(const capture::Vignetting& v) {
+  switch (v.kind) {
+    case capture::Vignetting::Kind::Cos4:
+      return "cos4: each pixel's light times cos^4 of its ray's angle to the optical axis";
+    case capture::Vignetting::Kind::Map:
+      return "map: each pixel's light times its gain in " + v.file;
+    case capture::Vignetting::Kind::None:
+      break;
+  }
+  return "none";
+}
+
 nlohmann::json lightJson(const capture::Light& light, bool attachedToCamera) {
   return {{"type", light.type == capture::Light::Type::Spot ? "spot" : "point"},
           {"position_m", vec(light.position_world)},
@@ -86,6 +98,7 @@ std::string transientMetadataJson(const config::RunConfig& config, const capture
   addVolumeLayout(j, job.camera(), axis);
   j["time"] = timeJson(axis);
   j["camera"] = cameraJson(job.camera());
+  j["camera"]["vignetting"] = vignettingJson(config.camera.vignetting);
   j["light"] = lightJson(job.light, config.light.attach_to_camera);
   j["renderer"] = config.renderer == config::RendererKind::Reference ? "reference" : "ir";
   j["backend"] = backend;

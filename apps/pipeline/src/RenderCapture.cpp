@@ -1,12 +1,16 @@
 #include "tofsim/pipeline/RenderCapture.h"
 
 #include <cstdio>
+#include <optional>
+#include <utility>
+#include <vector>
 
 #include "tofsim/pipeline/AxisReport.h"
 #include "tofsim/pipeline/Capture.h"
 #include "tofsim/pipeline/FiniteSegments.h"
 #include "tofsim/pipeline/RendererFactory.h"
 #include "tofsim/pipeline/SteadySink.h"
+#include "tofsim/pipeline/VignettedSegments.h"
 #include "tofsim/util/Interrupt.h"
 
 namespace tofsim::pipeline {
@@ -27,12 +31,19 @@ RenderedCapture renderCapture(const config::RunConfig& config, const capture::Re
   sinks.push_back(&steady);
   capture::TeeSink tee(std::move(sinks));
   FiniteSegments finite(tee, axis.bins, consumers.bounces);
+  // The camera's vignetting, before anything reads the light.
+  std::optional<VignettedSegments> vignetted;
+  if (std::vector<float> gains = capture::vignettingGains(camera, config.camera.vignetting);
+      !gains.empty()) {
+    vignetted.emplace(finite, axis.bins, std::move(gains));
+  }
+  capture::SegmentSink& first = vignetted ? static_cast<capture::SegmentSink&>(*vignetted) : finite;
   const RendererChoice choice = makeRenderer(config, eglPlatform);
   RenderedCapture rendered;
   rendered.backend = choice.backend;
   rendered.device = choice.renderer->description();
   rendered.result = choice.renderer->render(
-      job, finite, [&](std::size_t done, std::size_t total, const std::string& what) {
+      job, first, [&](std::size_t done, std::size_t total, const std::string& what) {
         progress.update(done, total, what);
       });
   throwIfInterrupted();  // a Ctrl-C during the last segment still means "stop"

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "tofsim/capture/Camera.h"
+#include "tofsim/capture/Vignetting.h"
 #include "tofsim/capture/Light.h"
 #include "tofsim/capture/RenderSettings.h"
 #include "tofsim/config/NlosConfig.h"
@@ -28,6 +29,8 @@ struct CameraConfig {
   /// camera.lens.calibration: the OpenCV calibration file the lens came from
   /// (absolute); empty when the lens was given inline or there is none.
   std::string lens_calibration;
+  /// camera.vignetting: none, cos4 or a map of gains.
+  capture::Vignetting vignetting;
 };
 
 struct LightConfig {
