@@ -100,8 +100,9 @@ sensors::SpadDnl parseDnl(const ConfigNode& n) {
   for (std::size_t i = 0; i < dnl.values.size(); ++i) {
     const double d = dnl.values[i];
     if (!std::isfinite(d) || !(d > -1.0)) {
-      n.failKey(key, where + "DNL " + shortest(d) + " of bin " + std::to_string(i) +
-                         " gives a bin width LSB (1 + DNL) <= 0");
+      n.failKey(
+          key, where + "DNL " + shortest(d) + " of bin " + std::to_string(i) +
+                   (std::isfinite(d) ? " gives a bin width LSB (1 + DNL) <= 0" : " is not finite"));
     }
     sum += d;
   }
