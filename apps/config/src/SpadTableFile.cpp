@@ -5,6 +5,7 @@
 #include <cstdlib>
 #include <fstream>
 
+#include "ConfigPath.h"
 #include "ShortestNumber.h"
 #include "TableText.h"
 #include "tofsim/io/Npy.h"
@@ -60,15 +61,6 @@ std::vector<double> readColumnCsv(const ConfigNode& n, const char* key,
   return values;
 }
 }  // namespace
-
-std::filesystem::path configRelativePath(const ConfigNode& n, const std::string& text) {
-  std::filesystem::path path = text;
-  if (path.is_relative()) path = std::filesystem::path(n.file()).parent_path() / path;
-  std::error_code ec;
-  const std::filesystem::path absolute = std::filesystem::absolute(path, ec);
-  if (!ec) path = absolute;
-  return path.lexically_normal();
-}
 
 sensors::SpadDnl parseDnl(const ConfigNode& n) {
   const char* key = "tdc_dnl";
