@@ -10,8 +10,6 @@
 namespace tofsim::sensors::detail {
 
 namespace {
-constexpr uint32_t kSpadStreamTag = 0x5350;  // "SP"
-
 // The event engine's laws of the model's detector (free-running: every
 // detection recorded).
 DetectorLaws detectorLaws(const SpadParams& p, const TimeAxis& axis) {

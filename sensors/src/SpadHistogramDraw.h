@@ -17,12 +17,17 @@
 
 namespace tofsim::sensors::detail {
 
+/// The SPAD's tag of each pixel's random stream (pixelStream, Random.h).
+inline constexpr uint32_t kSpadStreamTag = 0x5350;  // "SP"
+
 class SpadHistogramDraw {
  public:
   SpadHistogramDraw(const SpadParams& p, const TimeAxis& axis);
 
   /// Whole bins of dead time after an avalanche's bin.
   int32_t deadBins() const { return laws_.deadBins; }
+  /// The event engine's laws of this detector.
+  const DetectorLaws& laws() const { return laws_; }
 
   /// Reused buffers (one per thread).
   struct Scratch {
