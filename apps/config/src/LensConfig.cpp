@@ -8,7 +8,7 @@
 #include <sstream>
 #include <vector>
 
-#include "SpadTableFile.h"
+#include "ConfigPath.h"
 
 namespace tofsim::config {
 
