@@ -19,12 +19,16 @@ constexpr double kTolerance = 1e-12;
 void geometricFold(const std::vector<double>& x, int64_t shift, double lambda,
                    std::vector<double>& y) {
   const auto B = static_cast<int64_t>(x.size());
-  const auto at = [&](int64_t i) { return x[((i % B) + B) % B]; };
+  // The index i - shift - s on the cycle, walked down (y_0) and up (y_i)
+  // without a modulo per term.
+  const int64_t start = ((-shift % B) + B) % B;  // (0 - shift) mod B
   double y0 = 0.0, power = 1.0;
-  for (int64_t s = 0; s < B; ++s, power *= lambda) y0 += power * at(-shift - s);
+  for (int64_t s = 0, j = start; s < B; ++s, power *= lambda, j = j == 0 ? B - 1 : j - 1)
+    y0 += power * x[j];
   y.assign(x.size(), 0.0);
   y[0] = y0 / (1.0 - power);
-  for (int64_t i = 1; i < B; ++i) y[i] = at(i - shift) + lambda * y[i - 1];
+  for (int64_t i = 1, j = start + 1 == B ? 0 : start + 1; i < B; ++i, j = j + 1 == B ? 0 : j + 1)
+    y[i] = x[j] + lambda * y[i - 1];
 }
 }  // namespace
 

@@ -32,24 +32,29 @@ std::vector<double> freeRunningProbabilities(const std::vector<double>& flux, in
   // live: probability that the detector is live at the start of the bin.
   // ring[n % (deadBins + 1)] holds the detection probability of step n; the
   // detector that fired at step n - deadBins is live again at step n + 1.
-  std::vector<double> ring(static_cast<std::size_t>(deadBins) + 1, 0.0);
+  // The ring's slot is advanced, not taken modulo (a division per bin was
+  // most of the cost); the arithmetic is the same.
+  const int32_t slots = deadBins + 1;
+  std::vector<double> ring(static_cast<std::size_t>(slots), 0.0);
   std::vector<double> m(flux.size(), 0.0), previous(flux.size(), -1.0);
   double live = 1.0;
-  int64_t step = 0;
+  int32_t slot = 0;  // step % slots
   const int64_t maxCycles = std::max<int64_t>(8, kMaxSteadyStateSteps / K);
   for (int64_t cycle = 0; cycle < maxCycles; ++cycle) {
-    for (int32_t i = 0; i < K; ++i, ++step) {
+    for (int32_t i = 0; i < K; ++i) {
+      const int32_t nextSlot = slot + 1 == slots ? 0 : slot + 1;
       m[i] = live * q[i];
-      ring[step % (deadBins + 1)] = m[i];
-      live += ring[(step + 1) % (deadBins + 1)] - m[i];
+      ring[slot] = m[i];
+      live += ring[nextSlot] - m[i];
       live = std::clamp(live, 0.0, 1.0);
+      slot = nextSlot;
     }
     double change = 0.0;
     for (int32_t i = 0; i < K; ++i) change = std::max(change, std::fabs(m[i] - previous[i]));
-    if (change < kSteadyStateTolerance) break;
-    previous = m;
+    if (change < kSteadyStateTolerance) return m;
+    previous.swap(m);  // m is written whole by the next cycle
   }
-  return m;
+  return previous;  // the last cycle's
 }
 
 std::vector<double> coatesEstimate(const std::vector<double>& counts, int64_t cycles) {
