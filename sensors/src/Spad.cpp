@@ -315,7 +315,8 @@ class SpadStream final : public SensorStream {
 
  private:
   struct Scratch {
-    std::vector<double> signal, resampled, flux, fastFlux, ungated, h, lossless, lambda;
+    std::vector<double> signal, resampled, flux, ungated, h, lossless, lambda, m;
+    detail::FirstOrderAfterpulses fast;
     detail::FirstPhotonScratch firstPhoton;
     SpadEstimator::Scratch estimates;
   };
@@ -432,7 +433,7 @@ class SpadStream final : public SensorStream {
     const bool firstOrder = firstOrderAfterpulses() && laws_.afterpulses.on();
     const std::vector<double>& fast =
         firstOrder
-            ? (s.fastFlux = detail::firstOrderAfterpulseFlux(s.flux, deadBins_, laws_.afterpulses))
+            ? detail::firstOrderAfterpulses(s.flux, deadBins_, laws_.afterpulses, s.fast).flux
             : s.flux;
     if (needsEngine(fast)) {
       // Multi-stop TDCs, dead time past the cycle's end and afterpulses
@@ -442,7 +443,8 @@ class SpadStream final : public SensorStream {
     } else if (p_.mode == SpadMode::Synchronous) {
       detail::firstPhotonHistogram(fast, N, rng, s.firstPhoton, s.h);
     } else {
-      const std::vector<double> m = freeRunningProbabilities(fast, deadBins_);
+      const std::vector<double>& m =  // the fixed point gives flux' with its steady state
+          firstOrder ? s.fast.detections : (s.m = freeRunningProbabilities(fast, deadBins_));
       s.h.resize(static_cast<std::size_t>(K));
       for (int32_t i = 0; i < K; ++i) s.h[i] = static_cast<double>(rng.binomial(N, m[i]));
     }

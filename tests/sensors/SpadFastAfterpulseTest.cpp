@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "SpadAfterpulseFlux.h"
 #include "TestVolumes.h"
 #include "tofsim/sensors/Spad.h"
 
@@ -88,6 +89,53 @@ TEST(SpadFastAfterpulseTest, FreeRunningFirstOrderAfterpulsesTrackTheEngine) {
     int dof = 0;
     const double off = twoSample(none, exact, dof);
     EXPECT_GT(off, dof + 8.0 * std::sqrt(2.0 * dof));
+  }
+}
+
+// The fixed point of flux' and its steady state, run a cycle at a time
+// (firstOrderAfterpulses), against the definition summed directly: m =
+// freeRunningProbabilities(flux') and flux'_i = flux_i + mean sum_c w_c
+// sum_j m_j sum_(s >= 0) (1 - lambda_c) lambda_c^s [j + deadBins + 1 + s = i
+// on the cycle], the releases' geometric series summed term by term (200
+// cycles: lambda^(200 B) is below 1e-100). Also with a dead time longer
+// than the cycle.
+TEST(SpadFastAfterpulseTest, FixedPointIsTheFirstOrderFluxAndItsSteadyState) {
+  for (const int32_t dead : {0, 5, 130}) {
+    SCOPED_TRACE("dead bins " + std::to_string(dead));
+    constexpr int32_t B = 100;
+    std::vector<double> flux(B, 0.002);
+    for (int i = 17; i < 24; ++i) flux[i] += 0.8 * std::exp(-0.3 * (i - 20) * (i - 20));
+    detail::AfterpulseLaw law;
+    law.count = detail::AfterpulseLaw::Count::Poisson;
+    law.mean = 0.1;
+    law.delays_bins = {3.0, 25.0};
+    law.weights = {1.0, 3.0};  // not normalised
+    law.reset = false;
+    detail::FirstOrderAfterpulses out;
+    detail::firstOrderAfterpulses(flux, dead, law, out);
+    const std::vector<double> m = freeRunningProbabilities(out.flux, dead);
+    std::vector<double> image = flux;
+    for (std::size_t c = 0; c < 2; ++c) {
+      const double lambda = std::exp(-1.0 / law.delays_bins[c]);
+      const double scale = law.mean * law.weights[c] / 4.0 * (1.0 - lambda);
+      for (int32_t j = 0; j < B; ++j) {
+        double power = 1.0;
+        for (int64_t s = 0; s < 200 * B; ++s, power *= lambda)
+          image[(j + dead + 1 + s) % B] += scale * power * m[j];
+      }
+    }
+    for (int32_t i = 0; i < B; ++i) {
+      EXPECT_NEAR(out.detections[i], m[i], 1e-12) << i;
+      EXPECT_NEAR(out.flux[i], image[i], 1e-11) << i;
+    }
+    // It is a fixed point with afterpulses: flux' is not the flux.
+    EXPECT_GT(out.flux[60] - flux[60], 1e-3);
+    // Without afterpulses: the flux and its steady state.
+    law.mean = 0.0;
+    detail::firstOrderAfterpulses(flux, dead, law, out);
+    const std::vector<double> steady = freeRunningProbabilities(flux, dead);
+    EXPECT_EQ(out.flux, flux);
+    for (int32_t i = 0; i < B; ++i) EXPECT_NEAR(out.detections[i], steady[i], 1e-12) << i;
   }
 }
 
