@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "KernelCorrelation.h"
 #include "tofsim/util/Error.h"
 
 namespace tofsim::sensors {
@@ -56,32 +57,9 @@ SpadEstimates SpadEstimator::estimate(const std::vector<double>& h, Scratch& s) 
   // the Poisson log-likelihood that depend on the arrival tau. A floor on B
   // keeps the weights finite without background (then it is ln k alone).
   const double floorB = std::max(background, 1e-9 * signal + 1e-300);
-  // Both kernels reversed, r[L - 1 - j] = k_j: bin i adds to tau = i - first
-  // - j, i.e. to tau0 + r for tau0 = i - first - (L - 1), a forward run the
-  // compiler vectorises (no branch inside). Each tau still sums its terms in
-  // the order of i: the same doubles as the plain double loop.
   s.weights.resize(k.size());
-  s.kernel.resize(k.size());
-  for (int32_t j = 0; j < L; ++j) {
-    s.weights[L - 1 - j] = std::log1p(signal * k[j] / floorB);
-    s.kernel[L - 1 - j] = k[j];
-  }
-  s.logLikelihood.assign(static_cast<std::size_t>(K), 0.0);
-  s.response.assign(static_cast<std::size_t>(K), 0.0);
-  double* ll = s.logLikelihood.data();
-  double* response = s.response.data();
-  const double* w = s.weights.data();
-  const double* kr = s.kernel.data();
-  for (int32_t i = 0; i < K; ++i) {
-    const double hi = h[i];
-    if (hi == 0.0) continue;  // sparse histograms: only the bins that counted
-    const int32_t tau0 = i - first - (L - 1);
-    const int32_t rBegin = std::max(0, -tau0), rEnd = std::min(L, K - tau0);
-    for (int32_t r = rBegin; r < rEnd; ++r) {
-      ll[tau0 + r] += hi * w[r];
-      response[tau0 + r] += hi * kr[r];
-    }
-  }
+  for (int32_t j = 0; j < L; ++j) s.weights[j] = std::log1p(signal * k[j] / floorB);
+  detail::correlateWithTwo(h, first, s.weights, k, s.logLikelihood, s.response, s.padded);
   const auto at = [K](const std::vector<double>& v, int32_t i) {
     return v[std::clamp(i, 0, K - 1)];
   };
