@@ -13,9 +13,10 @@ namespace tofsim::sensors::detail {
 /// terms of bins with h == 0 (+0, the kernels are >= 0) change nothing: the
 /// same doubles however it is computed. Dense histograms by blocks of
 /// arrival bins (their sums in registers, vectorised); sparse ones from
-/// each counted bin. `padded` is scratch.
+/// each counted bin. `padded` is scratch. `portable`: not the AVX2 version
+/// of the blocks even where the CPU has AVX2 (for the tests: the same bits).
 void correlateWithTwo(const std::vector<double>& h, int32_t first, const std::vector<double>& a,
                       const std::vector<double>& b, std::vector<double>& ca,
-                      std::vector<double>& cb, std::vector<double>& padded);
+                      std::vector<double>& cb, std::vector<double>& padded, bool portable = false);
 
 }  // namespace tofsim::sensors::detail

@@ -72,10 +72,12 @@ TEST(SpadEstimatorsTest, CorrelationIsThePlainSumBitForBit) {
             pb[tau] += h[i] * b[j];
           }
         }
-        std::vector<double> ca, cb, scratch;
-        detail::correlateWithTwo(h, first, a, b, ca, cb, scratch);
-        EXPECT_EQ(ca, pa);
-        EXPECT_EQ(cb, pb);
+        for (const bool portable : {false, true}) {  // AVX2 where the CPU has it, and not
+          std::vector<double> ca, cb, scratch;
+          detail::correlateWithTwo(h, first, a, b, ca, cb, scratch, portable);
+          EXPECT_EQ(ca, pa) << portable;
+          EXPECT_EQ(cb, pb) << portable;
+        }
       }
     }
   }
