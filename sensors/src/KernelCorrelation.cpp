@@ -9,44 +9,48 @@ namespace tofsim::sensors::detail {
 
 namespace {
 
-// Four doubles: an AVX register where the CPU has one, two SSE2 registers
-// otherwise (GCC and Clang lower the type to what the target has). The
-// compilers vectorised the blocks' loops along j, with scalar sums: spelt
-// out here. Each lane is its own tau's sum, so the lanes' grouping changes no
-// bit: every version gives the same doubles.
+// Two doubles (an SSE2 register) and four (an AVX one): GCC and Clang lower
+// the types to what the target has. The compilers vectorised the blocks'
+// loops along j, with scalar sums: spelt out here. Each lane is its own
+// tau's sum, so the lanes' grouping changes no bit: every version gives the
+// same doubles.
+using Pair = double __attribute__((vector_size(16)));
 using Quad = double __attribute__((vector_size(32)));
 constexpr int32_t kMaxBlock = 16;  // arrival bins summed together, at most
 
-// By reference: a Quad passed or returned by value has an ABI of its own.
-__attribute__((always_inline)) inline void load(Quad& v, const double* p) {
+// By reference: a vector passed or returned by value has an ABI of its own.
+template <typename V>
+__attribute__((always_inline)) inline void load(V& v, const double* p) {
   std::memcpy(&v, p, sizeof v);
 }
 
-// Every tau: the sums of a block of 4 Quads taus kept in registers (8
-// independent sums of a and b: enough to hide the additions' latency), j the
-// outer loop, the block's bins of h the inner one, four at a time.
-// hp[x + pad] = h[x], zero outside.
-// Inlined always: compiled for its caller's target (blocksAvx2's).
-template <int32_t Quads>
+// Every tau: the sums of a block of Vectors x lanes taus kept in registers
+// (2 Vectors independent sums of a and b: enough to hide the additions'
+// latency), j the outer loop, the block's bins of h the inner one, a vector
+// at a time. hp[x + pad] = h[x], zero outside. Inlined always: compiled for
+// its caller's target (blocksAvx2's).
+template <typename V, int32_t Vectors>
 __attribute__((always_inline)) inline void blocks(const double* hp, int32_t pad, int32_t K,
                                                   int32_t first, const double* a, const double* b,
                                                   int32_t L, double* ca, double* cb) {
-  constexpr int32_t block = 4 * Quads;
+  constexpr auto lanes = static_cast<int32_t>(sizeof(V) / sizeof(double));
+  constexpr int32_t block = lanes * Vectors;
+  static_assert(block <= kMaxBlock);
   for (int32_t tau0 = 0; tau0 < K; tau0 += block) {
-    Quad sa[Quads] = {}, sb[Quads] = {};
+    V sa[Vectors] = {}, sb[Vectors] = {};
     const double* x = hp + pad + tau0 + first;
     for (int32_t j = 0; j < L; ++j) {
-      const Quad aj = {a[j], a[j], a[j], a[j]}, bj = {b[j], b[j], b[j], b[j]};
-      for (int32_t t = 0; t < Quads; ++t) {
-        Quad xt;
-        load(xt, x + j + 4 * t);
+      const double aj = a[j], bj = b[j];
+      for (int32_t t = 0; t < Vectors; ++t) {
+        V xt;
+        load(xt, x + j + lanes * t);
         sa[t] += xt * aj;
         sb[t] += xt * bj;
       }
     }
     for (int32_t t = 0; t < block && tau0 + t < K; ++t) {
-      ca[tau0 + t] = sa[t / 4][t % 4];
-      cb[tau0 + t] = sb[t / 4][t % 4];
+      ca[tau0 + t] = sa[t / lanes][t % lanes];
+      cb[tau0 + t] = sb[t / lanes][t % lanes];
     }
   }
 }
@@ -58,7 +62,7 @@ __attribute__((always_inline)) inline void blocks(const double* hp, int32_t pad,
 __attribute__((target("avx2"))) void blocksAvx2(const double* hp, int32_t pad, int32_t K,
                                                 int32_t first, const double* a, const double* b,
                                                 int32_t L, double* ca, double* cb) {
-  blocks<4>(hp, pad, K, first, a, b, L, ca, cb);
+  blocks<Quad, 4>(hp, pad, K, first, a, b, L, ca, cb);
 }
 bool hasAvx2() {
   static const bool has = __builtin_cpu_supports("avx2");
@@ -71,7 +75,7 @@ void correlateBlocks(const double* hp, int32_t pad, int32_t K, int32_t first, co
 #if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
   if (!portable && hasAvx2()) return blocksAvx2(hp, pad, K, first, a, b, L, ca, cb);
 #endif
-  blocks<2>(hp, pad, K, first, a, b, L, ca, cb);
+  blocks<Pair, 4>(hp, pad, K, first, a, b, L, ca, cb);
 }
 
 // From each counted bin i: its terms to tau = i - first - j, in a forward run
