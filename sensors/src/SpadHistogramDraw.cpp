@@ -61,8 +61,9 @@ void SpadHistogramDraw::draw(std::size_t px, uint64_t seed, const std::vector<do
   Rng rng(seed, pixelStream(kSpadStreamTag, px));
   const bool firstOrder = firstOrderAfterpulses() && laws_.afterpulses.on();
   const std::vector<double>& fast =
-      firstOrder ? firstOrderAfterpulses(flux, laws_.deadBins, laws_.afterpulses, s.fast).flux
-                 : flux;
+      firstOrder
+          ? detail::firstOrderAfterpulses(flux, laws_.deadBins, laws_.afterpulses, s.fast).flux
+          : flux;
   if (needsEngine(fast)) {
     // Multi-stop TDCs, dead time past the cycle's end and afterpulses
     // correlate bins and cycles: the exact event engine draws the pixel.
