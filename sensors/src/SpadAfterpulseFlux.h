@@ -6,8 +6,9 @@
 // state of flux' with the dead time) and a the release kernel from an
 // avalanche's bin (live again deadBins + 1 bins later, then the delay
 // mixture), folded on the cycle; iterated to its fixed point. The fast draws
-// then run on flux'. What it leaves out (releases as a Poisson flux, not a
-// renewal; reset traps) is its error against the engine (SpadFastAfterpulseTest).
+// then run on flux' (on its m_j, which the fixed point gives with it). What it leaves out (releases
+// as a Poisson flux, not a renewal; reset traps) is its error against the engine
+// (SpadFastAfterpulseTest).
 
 #include <cstdint>
 #include <vector>
@@ -16,9 +17,20 @@
 
 namespace tofsim::sensors::detail {
 
+/// flux' and the free-running detections per cycle it gives.
+struct FirstOrderAfterpulses {
+  std::vector<double> flux;        ///< flux' per bin and cycle
+  std::vector<double> detections;  ///< m_i: the steady state of flux' (freeRunningProbabilities)
+};
+
 /// flux' of `flux` (per bin and cycle) for a detector with `deadBins` dead
-/// bins and afterpulses `law` (its weights need not be normalised).
-std::vector<double> firstOrderAfterpulseFlux(const std::vector<double>& flux, int32_t deadBins,
-                                             const AfterpulseLaw& law);
+/// bins and afterpulses `law` (its weights need not be normalised), and its
+/// steady state: one fixed point for both, iterated a laser cycle at a time
+/// (each cycle on the flux' of the cycle before's detections), to the flux'
+/// tolerance (1e-12) and freeRunningProbabilities' steady state tolerance.
+/// `out` is reused (its vectors keep their capacity); returned.
+const FirstOrderAfterpulses& firstOrderAfterpulses(const std::vector<double>& flux,
+                                                   int32_t deadBins, const AfterpulseLaw& law,
+                                                   FirstOrderAfterpulses& out);
 
 }  // namespace tofsim::sensors::detail

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "KernelCorrelation.h"
 #include "tofsim/util/Error.h"
 
 namespace tofsim::sensors {
@@ -56,19 +57,9 @@ SpadEstimates SpadEstimator::estimate(const std::vector<double>& h, Scratch& s) 
   // the Poisson log-likelihood that depend on the arrival tau. A floor on B
   // keeps the weights finite without background (then it is ln k alone).
   const double floorB = std::max(background, 1e-9 * signal + 1e-300);
-  std::vector<double> weights(k.size());
-  for (int32_t j = 0; j < L; ++j) weights[j] = std::log1p(signal * k[j] / floorB);
-  s.logLikelihood.assign(static_cast<std::size_t>(K), 0.0);
-  s.response.assign(static_cast<std::size_t>(K), 0.0);
-  for (int32_t i = 0; i < K; ++i) {
-    if (h[i] == 0.0) continue;  // sparse histograms: only the bins that counted
-    for (int32_t j = 0; j < L; ++j) {
-      const int32_t tau = i - first - j;
-      if (tau < 0 || tau >= K) continue;
-      s.logLikelihood[tau] += h[i] * weights[j];
-      s.response[tau] += h[i] * k[j];
-    }
-  }
+  s.weights.resize(k.size());
+  for (int32_t j = 0; j < L; ++j) s.weights[j] = std::log1p(signal * k[j] / floorB);
+  detail::correlateWithTwo(h, first, s.weights, k, s.logLikelihood, s.response, s.padded);
   const auto at = [K](const std::vector<double>& v, int32_t i) {
     return v[std::clamp(i, 0, K - 1)];
   };

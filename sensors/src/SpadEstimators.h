@@ -47,7 +47,7 @@ class SpadEstimator {
   SpadEstimator(const BinKernel& kernel, const TimeAxis& axis, double thresholdSigma);
 
   struct Scratch {
-    std::vector<double> sorted, logLikelihood, response;
+    std::vector<double> sorted, logLikelihood, response, weights, padded;
   };
   /// `h`: per-bin detections in counts (axis.bins values, >= 0).
   SpadEstimates estimate(const std::vector<double>& h, Scratch& scratch) const;

@@ -61,8 +61,9 @@ void SpadHistogramDraw::draw(std::size_t px, uint64_t seed, const std::vector<do
   Rng rng(seed, pixelStream(kSpadStreamTag, px));
   const bool firstOrder = firstOrderAfterpulses() && laws_.afterpulses.on();
   const std::vector<double>& fast =
-      firstOrder ? (s.fastFlux = firstOrderAfterpulseFlux(flux, laws_.deadBins, laws_.afterpulses))
-                 : flux;
+      firstOrder
+          ? detail::firstOrderAfterpulses(flux, laws_.deadBins, laws_.afterpulses, s.fast).flux
+          : flux;
   if (needsEngine(fast)) {
     // Multi-stop TDCs, dead time past the cycle's end and afterpulses
     // correlate bins and cycles: the exact event engine draws the pixel.
@@ -71,7 +72,8 @@ void SpadHistogramDraw::draw(std::size_t px, uint64_t seed, const std::vector<do
   } else if (mode_ == SpadMode::Synchronous) {
     firstPhotonHistogram(fast, cycles_, rng, s.firstPhoton, h);
   } else {
-    const std::vector<double> m = freeRunningProbabilities(fast, laws_.deadBins);
+    const std::vector<double>& m =  // the fixed point gives flux' with its steady state
+        firstOrder ? s.fast.detections : (s.m = freeRunningProbabilities(fast, laws_.deadBins));
     h.resize(static_cast<std::size_t>(K));
     for (int32_t i = 0; i < K; ++i) h[i] = static_cast<double>(rng.binomial(cycles_, m[i]));
   }

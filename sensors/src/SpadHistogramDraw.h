@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "SpadAfterpulseFlux.h"
 #include "SpadDetector.h"
 #include "SpadSampling.h"
 #include "tofsim/sensors/Spad.h"
@@ -31,7 +32,8 @@ class SpadHistogramDraw {
 
   /// Reused buffers (one per thread).
   struct Scratch {
-    std::vector<double> fastFlux;
+    FirstOrderAfterpulses fast;
+    std::vector<double> m;
     FirstPhotonScratch firstPhoton;
   };
   /// `h` gets pixel px's counts per TDC bin (flux.size() of them) under

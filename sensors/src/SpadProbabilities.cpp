@@ -3,15 +3,13 @@
 #include <cmath>
 
 #include "PeakDepth.h"
+#include "SpadFreeRunning.h"
 #include "tofsim/sensors/Spad.h"
 #include "tofsim/util/Error.h"
 
 namespace tofsim::sensors {
 
-namespace {
-constexpr int kMaxSteadyStateSteps = 4'000'000;  // bins simulated to reach the steady state
-constexpr double kSteadyStateTolerance = 1e-13;
-}  // namespace
+namespace {}  // namespace
 
 std::vector<double> firstPhotonProbabilities(const std::vector<double>& flux) {
   std::vector<double> p(flux.size());
@@ -24,32 +22,50 @@ std::vector<double> firstPhotonProbabilities(const std::vector<double>& flux) {
   return p;
 }
 
+namespace detail {
+
+FreeRunningCycle::FreeRunningCycle(int32_t deadBins)
+    : ring_(static_cast<std::size_t>(deadBins) + 1, 0.0) {
+  TOFSIM_CHECK(deadBins >= 0);
+}
+
+void FreeRunningCycle::run(const std::vector<double>& q, std::vector<double>& m) {
+  // The ring's slot is advanced, not taken modulo (a division per bin was
+  // most of the cost).
+  const auto slots = static_cast<int32_t>(ring_.size());
+  const auto K = static_cast<int32_t>(q.size());
+  double live = live_;
+  int32_t slot = slot_;
+  for (int32_t i = 0; i < K; ++i) {
+    const int32_t nextSlot = slot + 1 == slots ? 0 : slot + 1;
+    m[i] = live * q[i];
+    ring_[slot] = m[i];
+    live += ring_[nextSlot] - m[i];
+    live = std::clamp(live, 0.0, 1.0);
+    slot = nextSlot;
+  }
+  live_ = live;
+  slot_ = slot;
+}
+
+}  // namespace detail
+
 std::vector<double> freeRunningProbabilities(const std::vector<double>& flux, int32_t deadBins) {
   TOFSIM_CHECK(deadBins >= 0 && !flux.empty());
   const auto K = static_cast<int32_t>(flux.size());
   std::vector<double> q(flux.size());
   for (int32_t i = 0; i < K; ++i) q[i] = -std::expm1(-flux[i]);
-  // live: probability that the detector is live at the start of the bin.
-  // ring[n % (deadBins + 1)] holds the detection probability of step n; the
-  // detector that fired at step n - deadBins is live again at step n + 1.
-  std::vector<double> ring(static_cast<std::size_t>(deadBins) + 1, 0.0);
+  detail::FreeRunningCycle detector(deadBins);
   std::vector<double> m(flux.size(), 0.0), previous(flux.size(), -1.0);
-  double live = 1.0;
-  int64_t step = 0;
-  const int64_t maxCycles = std::max<int64_t>(8, kMaxSteadyStateSteps / K);
+  const int64_t maxCycles = std::max<int64_t>(8, detail::kMaxSteadyStateSteps / K);
   for (int64_t cycle = 0; cycle < maxCycles; ++cycle) {
-    for (int32_t i = 0; i < K; ++i, ++step) {
-      m[i] = live * q[i];
-      ring[step % (deadBins + 1)] = m[i];
-      live += ring[(step + 1) % (deadBins + 1)] - m[i];
-      live = std::clamp(live, 0.0, 1.0);
-    }
+    detector.run(q, m);
     double change = 0.0;
     for (int32_t i = 0; i < K; ++i) change = std::max(change, std::fabs(m[i] - previous[i]));
-    if (change < kSteadyStateTolerance) break;
-    previous = m;
+    if (change < detail::kSteadyStateTolerance) return m;
+    previous.swap(m);  // m is written whole by the next cycle
   }
-  return m;
+  return previous;  // the last cycle's
 }
 
 std::vector<double> coatesEstimate(const std::vector<double>& counts, int64_t cycles) {

@@ -1,7 +1,8 @@
 // The SPAD's estimators beside the peak (sensors/src/SpadEstimators): the
 // log-matched filter recovers a known depth under Poisson noise better than
 // the peak (statistical, fixed seed), first / strongest / last returns of a
-// two-return histogram, and the detection confidence.
+// two-return histogram, and the detection confidence; the filter's
+// correlation, by blocks or from each counted bin, bit for bit the plain sum.
 
 #include <gtest/gtest.h>
 
@@ -9,6 +10,7 @@
 #include <cstdio>
 #include <vector>
 
+#include "KernelCorrelation.h"
 #include "PeakDepth.h"
 #include "SpadEstimators.h"
 #include "tofsim/sensors/Random.h"
@@ -39,6 +41,46 @@ std::vector<double> poissonDraw(const std::vector<double>& lambda, Rng& rng) {
   std::vector<double> h(lambda.size());
   for (std::size_t i = 0; i < h.size(); ++i) h[i] = static_cast<double>(rng.poisson(lambda[i]));
   return h;
+}
+
+// The correlation (KernelCorrelation.h) against the plain double loop over
+// counted bins i and kernel taps j in that order (the estimator's before it),
+// bit for bit: dense histograms (the blocks, K not a multiple of a block) and
+// sparse ones (the scatter), kernels reaching before and after the window.
+TEST(SpadEstimatorsTest, CorrelationIsThePlainSumBitForBit) {
+  Rng rng(5, 0);
+  for (const int32_t K : {1, 7, 300, 1001}) {
+    for (const int32_t first : {-40, -3, 0, 5}) {
+      for (const double fill : {1.0, 0.2, 0.0}) {  // dense, sparse, one count
+        SCOPED_TRACE(std::to_string(K) + " bins, first " + std::to_string(first) + ", fill " +
+                     std::to_string(fill));
+        std::vector<double> h(static_cast<std::size_t>(K), 0.0);
+        for (double& v : h) v = rng.uniform() < fill ? static_cast<double>(rng.poisson(20.0)) : 0.0;
+        h[static_cast<std::size_t>(K / 2)] = 3.0;
+        std::vector<double> a(77), b(77);
+        for (std::size_t j = 0; j < a.size(); ++j) {
+          a[j] = rng.uniform();
+          b[j] = std::exp(-0.1 * static_cast<double>(j)) * rng.uniform();
+        }
+        std::vector<double> pa(h.size(), 0.0), pb(h.size(), 0.0);
+        for (int32_t i = 0; i < K; ++i) {
+          if (h[i] == 0.0) continue;
+          for (int32_t j = 0; j < static_cast<int32_t>(a.size()); ++j) {
+            const int32_t tau = i - first - j;
+            if (tau < 0 || tau >= K) continue;
+            pa[tau] += h[i] * a[j];
+            pb[tau] += h[i] * b[j];
+          }
+        }
+        for (const bool portable : {false, true}) {  // AVX2 where the CPU has it, and not
+          std::vector<double> ca, cb, scratch;
+          detail::correlateWithTwo(h, first, a, b, ca, cb, scratch, portable);
+          EXPECT_EQ(ca, pa) << portable;
+          EXPECT_EQ(cb, pb) << portable;
+        }
+      }
+    }
+  }
 }
 
 TEST(SpadEstimatorsTest, MatchedFilterBeatsThePeakUnderNoise) {
