@@ -11,6 +11,7 @@
 #include "SpadCrosstalk.h"
 #include "SpadEstimators.h"
 #include "SpadEventEngine.h"
+#include "SpadExactCrosstalk.h"
 #include "SpadGate.h"
 #include "SpadGatedFrames.h"
 #include "SpadSampling.h"
@@ -53,14 +54,11 @@ void checkParams(const SpadParams& p) {
                p.afterpulse_weights.size() == p.afterpulse_delays_s.size());
   TOFSIM_CHECK(p.crosstalk_probability >= 0.0 && p.crosstalk_probability <= 1.0);
   TOFSIM_CHECK(p.crosstalk_delay_s >= 0.0);
-  // A delayed arrival may fall outside the gate: not modelled (a config error).
-  TOFSIM_CHECK(p.crosstalk_probability == 0.0 || p.crosstalk_delay_s == 0.0 ||
-               p.gate_width_s == 0.0);
-  // Nor a gate that differs between neighbours or has ramps, nor the gated
-  // frames' other gate positions (config errors: checkCrosstalkGate).
-  TOFSIM_CHECK(p.crosstalk_probability == 0.0 ||
-               (p.gate_rise_s == 0.0 && p.gate_fall_s == 0.0 && p.gate_skew_sigma_s == 0.0 &&
-                p.gated_frames == 0));
+  // A delayed arrival into a gate, gate ramps or per-pixel skew: the exact
+  // array driver only (config errors with `engine: fast`); the gated frames'
+  // other gate positions: not modelled (checkCrosstalkGate).
+  TOFSIM_CHECK(p.engine != SpadEngine::Fast || !detail::crosstalkNeedsEvents(p));
+  TOFSIM_CHECK(p.crosstalk_probability == 0.0 || p.gated_frames == 0);
   if (p.irf.present()) {
     TOFSIM_CHECK(p.irf.sample_width_s > 0.0);
     TOFSIM_CHECK(p.pulse_fwhm_s == 0.0 && p.jitter_fwhm_s == 0.0 && p.jitter_tail_fraction == 0.0);
@@ -196,7 +194,10 @@ class SpadStream final : public SensorStream {
         frames_(p, shape, options),
         estimator_(kernel_, axis_, p.return_threshold_sigma) {
     checkParams(p);
-    if (p.crosstalk_probability > 0.0) {
+    if (detail::exactCrosstalk(p)) {
+      exact_ =
+          std::make_unique<detail::SpadExactCrosstalk>(p, laws_, bins_, shape.width, shape.height);
+    } else if (p.crosstalk_probability > 0.0) {
       // A batch of an image row (at least 256 pixels) between look-aheads.
       crosstalk_ = std::make_unique<detail::SpadCrosstalk>(
           p, axis_.bins, axis_.bin_width_s, deadBins_, shape.width, shape.height,
@@ -232,6 +233,11 @@ class SpadStream final : public SensorStream {
 
   void consume(const PixelSpan& span) override {
     TOFSIM_CHECK(span.firstPixel == next_ && next_ + span.pixelCount <= shape_.pixelCount());
+    if (exact_) {
+      consumeExact(span);
+      next_ += span.pixelCount;
+      return;
+    }
     if (crosstalk_) {
       consumeWithCrosstalk(span);
       next_ += span.pixelCount;
@@ -403,6 +409,33 @@ class SpadStream final : public SensorStream {
     }
   }
 
+  // Exact crosstalk (SpadExactCrosstalk.h): every pixel's flux is held; with
+  // the last one the array is drawn at once (one coupled region, one
+  // thread), then each pixel's estimates in blocks as usual.
+  void consumeExact(const PixelSpan& span) {
+    detail::parallelPixels(span.pixelCount, options_.threads, [&](std::size_t b, std::size_t e) {
+      Scratch scratch;
+      for (std::size_t i = b; i < e; ++i) {
+        const std::size_t px = span.firstPixel + i;
+        pixelFlux(span.volume + i * shape_.pixelFloats(), px, exact_->flux(px), scratch);
+        exact_->acceptance(px, pixelOf(px));
+      }
+    });
+    if (span.firstPixel + span.pixelCount < shape_.pixelCount()) return;
+    exact_->run(options_.seed, kSpadStreamTag);
+    const auto K = static_cast<std::size_t>(axis_.bins);
+    const std::size_t chunk = 4096;
+    for (std::size_t from = 0; from < shape_.pixelCount(); from += chunk) {
+      const std::size_t count = std::min(chunk, shape_.pixelCount() - from);
+      float* counts = countsOf(from, count);
+      detail::parallelPixels(count, options_.threads, [&](std::size_t b, std::size_t e) {
+        Scratch scratch;
+        for (std::size_t i = b; i < e; ++i) drawPixel(from + i, counts + i * K, scratch);
+      });
+      emit(from, count, counts);
+    }
+  }
+
   void pixel(const float* values, std::size_t px, float* out, Scratch& s) const {
     pixelFlux(values, px, s.flux, s);
     drawPixel(px, out, s);
@@ -434,7 +467,9 @@ class SpadStream final : public SensorStream {
         firstOrder
             ? (s.fastFlux = detail::firstOrderAfterpulseFlux(s.flux, deadBins_, laws_.afterpulses))
             : s.flux;
-    if (needsEngine(fast)) {
+    if (exact_) {
+      s.h = exact_->histogram(px);  // drawn with its neighbours (consumeExact)
+    } else if (needsEngine(fast)) {
       // Multi-stop TDCs, dead time past the cycle's end and afterpulses
       // correlate bins and cycles: the exact event engine draws the pixel.
       s.h.assign(static_cast<std::size_t>(K), 0.0);
@@ -493,8 +528,9 @@ class SpadStream final : public SensorStream {
   SensorOutput counts_;
   std::unique_ptr<ArrayWriter> writer_;
   std::vector<float> chunk_;
-  std::unique_ptr<detail::SpadCrosstalk> crosstalk_;  ///< null: no crosstalk
-  std::size_t received_ = 0;                          ///< pixels drawn, with crosstalk
+  std::unique_ptr<detail::SpadCrosstalk> crosstalk_;   ///< null: no crosstalk
+  std::unique_ptr<detail::SpadExactCrosstalk> exact_;  ///< null: none, or first order
+  std::size_t received_ = 0;                           ///< pixels drawn, with crosstalk
   // Written by pixel() from several threads, each pixel by one only.
   mutable std::vector<float> depthPeak_, depthCoates_, intensity_, depthMatched_, confidence_,
       returns_;
