@@ -2,8 +2,8 @@
 // and the model's `engine: exact` through it): a lit 3 x 3 array against the
 // avalanche-by-avalanche oracle (CrosstalkOracle.h) at p = 0.05, where the
 // first-order path fails; a dark neighbour's Multinomial(N, p P_A) law, also
-// behind a ramped gate; without crosstalk the bytes of the one-pixel engine;
-// the same bytes for any spans and thread counts.
+// behind a ramped gate, and free-running Binomial(N, p q_i) per bin; without crosstalk the bytes of
+// the one-pixel engine; the same bytes for any spans and thread counts.
 
 #include <gtest/gtest.h>
 
@@ -212,6 +212,38 @@ TEST(SpadArrayEventsTest, DarkNeighbourBehindARampedGate) {
   const std::vector<double> ones(kStripBins, 1.0);
   const auto ungated = againstMultinomial(hB, times(PA, ones, p), draws);
   EXPECT_GT(ungated.statistic, chiSquareQuantile(ungated.dof, 3.09));
+}
+
+// Free-running, no dead time beyond the bin: A fires in bin i of a period
+// with probability q_i = 1 - e^(-f_i), the bins independent, and B (left of
+// A in the strip) then with probability p, so its bins are independent
+// Binomial(N, p q_i); nothing where A has no light. p 5 % higher is rejected.
+TEST(SpadArrayEventsTest, FreeRunningDarkNeighbourIsBinomialPerBin) {
+  const double p = 0.2;
+  SpadParams s = strip(p);
+  s.mode = SpadMode::FreeRunning;
+  s.dead_time_s = 0.0;
+  const std::vector<double> dark(kStripBins, 0.0), a = brightReturn();
+  const std::vector<double> hB =
+      perPixel(runSpad(volumeOf(3, 1, {dark, a, dark}), s, 28), kStripBins)[0];
+  const auto n = static_cast<double>(s.cycles);
+  const auto chiSquare = [&](double q) {
+    double x2 = 0.0;
+    for (int32_t i = 0; i < kStripBins; ++i) {
+      const double pi = q * -std::expm1(-a[i]);
+      if (pi == 0.0) {
+        EXPECT_EQ(hB[i], 0.0) << i;
+        continue;
+      }
+      x2 += (hB[i] - n * pi) * (hB[i] - n * pi) / (n * pi * (1.0 - pi));
+    }
+    return x2;
+  };
+  const int dof = 30;  // A's lit bins
+  const double x2 = chiSquare(p);
+  std::cout << "free-running dark neighbour: chi2 " << x2 << " / " << dof << " dof\n";
+  EXPECT_LT(x2, chiSquareQuantile(dof, 3.09));
+  EXPECT_GT(chiSquare(1.05 * p), chiSquareQuantile(dof, 3.09));
 }
 
 // No crosstalk: every pixel's bytes are the one-pixel engine's on its stream
