@@ -64,3 +64,10 @@ out("fuzz_npy", "volume.npy", npy((2, 1, 2, 3), [float(i) for i in range(12)]))
 out("fuzz_npy", "scalar.npy", npy((), [1.5]))
 meta = json.dumps({"time": {"start_s": 5e-9, "bin_width_s": 1e-11, "bins": 2}, "channels": ["R", "G", "B"]})
 out("fuzz_saved_volume", "render", meta.encode() + b"\0" + npy((2, 1, 2, 3), [float(i) for i in range(12)]))
+
+# SPAD table files (fuzz/SpadTablesInput.h: first byte 0 DNL .csv, 1 DNL .npy,
+# 2 dark count map .npy), each fitting its config (8 TDC bins, 4 x 4 pixels)
+dnl = [0.25, -0.25, 0.1, -0.1, 0.0, 0.5, -0.5, 0.0]
+out("fuzz_spad_tables", "dnl_csv", b"\0" + ("# DNL per bin\ndnl\n" + "".join("%g\n" % d for d in dnl)).encode())
+out("fuzz_spad_tables", "dnl_npy", b"\1" + npy((8,), dnl))
+out("fuzz_spad_tables", "dcr_npy", b"\2" + npy((4, 4), [25.0 * (1 + i) for i in range(16)]))

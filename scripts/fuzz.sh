@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Runs one libFuzzer target for a given time:
 #   bash scripts/fuzz.sh fuzz_config 60
-# Targets: fuzz_config fuzz_gltf fuzz_npy fuzz_saved_volume (fuzz/README.md).
+# Targets: fuzz_config fuzz_gltf fuzz_npy fuzz_saved_volume fuzz_irf fuzz_spad_tables
+# fuzz_tal_capture (fuzz/README.md).
 # Builds build-fuzz with clang when needed (-DTOFSIM_FUZZ=ON, Debian's clang
 # and libclang-rt: scripts/install-fuzz-deps.sh). Starts from the seeds in
 # fuzz/corpus/TARGET and grows a working corpus in build-fuzz/corpus/TARGET;
@@ -12,9 +13,10 @@ cd "$(dirname "$0")/.."
 target="${1:?usage: fuzz.sh TARGET SECONDS}"
 seconds="${2:?usage: fuzz.sh TARGET SECONDS}"
 
+source scripts/compiler-cache.sh
 if [ ! -f build-fuzz/build.ninja ]; then
   CC=clang CXX=clang++ cmake -S . -B build-fuzz -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
-    -DTOFSIM_FUZZ=ON -DTOFSIM_BUILD_TESTS=OFF >/dev/null
+    -DTOFSIM_FUZZ=ON -DTOFSIM_BUILD_TESTS=OFF "${cache_flags[@]}" >/dev/null
 fi
 cmake --build build-fuzz -j2 --target "$target"
 

@@ -5,6 +5,7 @@ set -euo pipefail
 
 packages=(
   build-essential cmake ninja-build pkg-config
+  ccache                                             # rebuilds of the same sources (scripts/compiler-cache.sh)
   libegl-dev libgl-dev libegl-mesa0 libgl1-mesa-dri  # headless GL: EGL + Mesa llvmpipe
   libglm-dev libtinygltf-dev nlohmann-json3-dev libyaml-cpp-dev libcli11-dev
   libopenexr-dev libopencv-dev libgtest-dev

@@ -8,8 +8,9 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/install-deps.sh
+source scripts/compiler-cache.sh
 cmake -S . -B build-asan -G Ninja -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_FLAGS_DEBUG="-g -O1" \
-  -DTOFSIM_SANITIZE=ON >/dev/null
+  -DTOFSIM_SANITIZE=ON "${cache_flags[@]}" >/dev/null
 cmake --build build-asan -j2
 supp="$PWD/tests/sanitizer"
 # Mesa dlclose()s its driver (swrast_dri.so: llvmpipe) in eglTerminate, before

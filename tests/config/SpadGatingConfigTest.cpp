@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <fstream>
+#include <limits>
 #include <string>
 #include <utility>
 #include <variant>
@@ -173,6 +174,10 @@ TEST_F(SpadGatingConfigTest, TdcDnlFromAListOrAFileWithLocatedErrors) {
   expectError("    tdc_dnl: bad.csv\n", "tdc_dnl", "bad.csv:2: expected one number");
   std::ofstream(dir_ / "dnl.txt") << "0\n";
   expectError("    tdc_dnl: dnl.txt\n", "tdc_dnl", ".npy or .csv");
+  // A .npy may hold a NaN (a CSV cannot: not a number): named as such.
+  values[7] = std::numeric_limits<float>::quiet_NaN();
+  io::writeNpy(dir_ / "dnl.npy", {100}, values.data());
+  expectError("    tdc_dnl: dnl.npy\n", "tdc_dnl", "DNL nan of bin 7 is not finite");
 }
 
 TEST_F(SpadGatingConfigTest, DarkCountMapMustBeTheImagesShape) {

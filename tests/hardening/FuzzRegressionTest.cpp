@@ -13,6 +13,7 @@
 
 #include "fuzz/IrfInput.h"
 #include "fuzz/SceneInvariants.h"
+#include "fuzz/SpadTablesInput.h"
 #include "support/TempDir.h"
 #include "tofsim/config/RunConfig.h"
 #include "tofsim/io/Npy.h"
@@ -75,6 +76,22 @@ TEST_F(FuzzRegressionTest, IrfFiles) {
     if (!config.empty()) config::loadRunConfig(config, {});
   });
   EXPECT_GT(inputs, 0);
+}
+
+// As in fuzz/fuzz_spad_tables.cpp: a SPAD's TDC DNL (.csv, .npy) or dark
+// count map (.npy); one the config accepts runs through the SPAD.
+TEST_F(FuzzRegressionTest, SpadTableFiles) {
+  fs::create_directory_symlink(fs::path(TOFSIM_SOURCE_DIR) / "configs" / "scenes", dir_ / "scenes");
+  int loaded = 0;
+  const int inputs = forEachInput("spad_tables", [&](const std::string& bytes, const fs::path&) {
+    const auto* data = reinterpret_cast<const uint8_t*>(bytes.data());
+    const fs::path config = fuzz::writeSpadTablesInput(dir_, data, bytes.size());
+    if (config.empty()) return;
+    fuzz::runSpadTables(config::loadRunConfig(config, {}));
+    ++loaded;
+  });
+  EXPECT_GT(inputs, 0);
+  EXPECT_GT(loaded, 0);  // the edges that load reach the sensor
 }
 
 TEST_F(FuzzRegressionTest, GltfScenes) {

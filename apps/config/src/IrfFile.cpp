@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "ConfigPath.h"
 #include "QuantityText.h"
 #include "ShortestNumber.h"
 #include "TableText.h"
@@ -112,14 +113,9 @@ Samples readNpySamples(const ConfigNode& n, const std::filesystem::path& path) {
 SpadIrf parseIrf(const ConfigNode& n) {
   if (!n.isMap()) n.fail("expected a mapping (file, bin_width, t0, floor)");
   SpadIrf irf;
-  const std::string text = n.requireString("file");
-  std::filesystem::path path = text;
-  if (path.is_relative()) path = std::filesystem::path(n.file()).parent_path() / path;
-  std::error_code ec;
-  const std::filesystem::path absolute = std::filesystem::absolute(path, ec);
-  if (!ec) path = absolute;
-  path = path.lexically_normal();
+  const std::filesystem::path path = configRelativePath(n, n.requireString("file"));
   irf.file = path.string();
+  std::error_code ec;
   if (!std::filesystem::is_regular_file(path, ec)) {
     n.failKey("file", "IRF file not found: " + path.string());
   }

@@ -5,6 +5,7 @@
 #include <cstdlib>
 #include <fstream>
 
+#include "ConfigPath.h"
 #include "ShortestNumber.h"
 #include "TableText.h"
 #include "tofsim/io/Npy.h"
@@ -61,15 +62,6 @@ std::vector<double> readColumnCsv(const ConfigNode& n, const char* key,
 }
 }  // namespace
 
-std::filesystem::path configRelativePath(const ConfigNode& n, const std::string& text) {
-  std::filesystem::path path = text;
-  if (path.is_relative()) path = std::filesystem::path(n.file()).parent_path() / path;
-  std::error_code ec;
-  const std::filesystem::path absolute = std::filesystem::absolute(path, ec);
-  if (!ec) path = absolute;
-  return path.lexically_normal();
-}
-
 sensors::SpadDnl parseDnl(const ConfigNode& n) {
   const char* key = "tdc_dnl";
   sensors::SpadDnl dnl;
@@ -100,8 +92,9 @@ sensors::SpadDnl parseDnl(const ConfigNode& n) {
   for (std::size_t i = 0; i < dnl.values.size(); ++i) {
     const double d = dnl.values[i];
     if (!std::isfinite(d) || !(d > -1.0)) {
-      n.failKey(key, where + "DNL " + shortest(d) + " of bin " + std::to_string(i) +
-                         " gives a bin width LSB (1 + DNL) <= 0");
+      n.failKey(
+          key, where + "DNL " + shortest(d) + " of bin " + std::to_string(i) +
+                   (std::isfinite(d) ? " gives a bin width LSB (1 + DNL) <= 0" : " is not finite"));
     }
     sum += d;
   }

@@ -2,7 +2,7 @@
 // Private to the config module: the numeric tables a SPAD names besides its
 // IRF (IrfFile.h): a TDC's DNL table (`tdc_dnl`, a list, or a .npy / one-
 // column .csv) and a dark count map (`dark_count_map`, a 2-D .npy). Relative
-// paths resolve against the config file's folder; every bad file is an
+// paths resolve against the config file's folder (ConfigPath.h); every bad file is an
 // InputError located at the key, naming the file (and its CSV line).
 
 #include <filesystem>
@@ -13,9 +13,6 @@
 #include "tofsim/sensors/Spad.h"
 
 namespace tofsim::config {
-
-/// `text` as an absolute, normal path: relative to the config file's folder.
-std::filesystem::path configRelativePath(const ConfigNode& n, const std::string& text);
 
 /// `tdc_dnl` of node n: a list of numbers or a file; each value finite and >
 /// -1 (a code of width LSB (1 + DNL) > 0), |sum| <= 1e-6 x count. The length
