@@ -10,7 +10,8 @@
 //        [modes=both|synchronous|free-running] [crosstalk=0] [effects=none|device]
 //        [engine=auto|exact|fast]
 // crosstalk: crosstalk_probability to 4 neighbours, prompt (the streamed
-// first-order path, SpadCrosstalk.h); 0: off.
+// first-order path, SpadCrosstalk.h; with engine=exact the exact array
+// driver, SpadArrayEvents.h, on one thread); 0: off.
 // effects: device turns on the rest of a real device's effects (deviceEffects
 // below: afterpulsing, a jitter tail, a fixed pattern with hot and dead
 // pixels); none: today's ideal detector. engine: SpadParams::engine.

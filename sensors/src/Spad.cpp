@@ -2,7 +2,9 @@
 // pixel's flux (SpadFlux.h), its histogram (SpadHistogramDraw.h) and its
 // images (SpadImages.h); the counts held or streamed to an ArrayWriter, the
 // plotted pixels' histograms kept; crosstalk's look-ahead across spans
-// (SpadCrosstalk.h) drives the same per-pixel steps in two passes.
+// (SpadCrosstalk.h) drives the same per-pixel steps in two passes; exact
+// crosstalk (SpadExactCrosstalk.h) holds the whole array's flux and draws it
+// at once with the last span.
 #include "tofsim/sensors/Spad.h"
 
 #include <algorithm>
@@ -14,6 +16,7 @@
 #include "ParallelPixels.h"
 #include "PeakDepth.h"
 #include "SpadCrosstalk.h"
+#include "SpadExactCrosstalk.h"
 #include "SpadFlux.h"
 #include "SpadGatedFrames.h"
 #include "SpadHistogramDraw.h"
@@ -44,7 +47,12 @@ class SpadStream final : public SensorStream {
         frames_(p, shape, options),
         images_(p, axis_, kernel_, shape.height, shape.width) {
     detail::checkSpadParams(p);
-    if (p.crosstalk_probability > 0.0) {
+    if (detail::exactCrosstalk(p)) {
+      // p_, not p: the driver keeps a reference, and the caller's params
+      // need not outlive the stream.
+      exact_ = std::make_unique<detail::SpadExactCrosstalk>(p_, draw_.laws(), bins_, shape.width,
+                                                            shape.height);
+    } else if (p.crosstalk_probability > 0.0) {
       // A batch of an image row (at least 256 pixels) between look-aheads.
       crosstalk_ = std::make_unique<detail::SpadCrosstalk>(
           p, axis_.bins, axis_.bin_width_s, draw_.deadBins(), shape.width, shape.height,
@@ -70,6 +78,11 @@ class SpadStream final : public SensorStream {
 
   void consume(const PixelSpan& span) override {
     TOFSIM_CHECK(span.firstPixel == next_ && next_ + span.pixelCount <= shape_.pixelCount());
+    if (exact_) {
+      consumeExact(span);
+      next_ += span.pixelCount;
+      return;
+    }
     if (crosstalk_) {
       consumeWithCrosstalk(span);
       next_ += span.pixelCount;
@@ -165,6 +178,33 @@ class SpadStream final : public SensorStream {
     }
   }
 
+  // Exact crosstalk (SpadExactCrosstalk.h): every pixel's flux is held; with
+  // the last one the array is drawn at once (one coupled region, one
+  // thread), then each pixel's estimates in blocks as usual.
+  void consumeExact(const PixelSpan& span) {
+    detail::parallelPixels(span.pixelCount, options_.threads, [&](std::size_t b, std::size_t e) {
+      Scratch scratch;
+      for (std::size_t i = b; i < e; ++i) {
+        const std::size_t px = span.firstPixel + i;
+        pixelFlux(span.volume + i * shape_.pixelFloats(), px, exact_->flux(px), scratch);
+        exact_->acceptance(px, pixelOf(px));
+      }
+    });
+    if (span.firstPixel + span.pixelCount < shape_.pixelCount()) return;
+    exact_->run(options_.seed, detail::kSpadStreamTag);
+    const auto K = static_cast<std::size_t>(axis_.bins);
+    const std::size_t chunk = 4096;
+    for (std::size_t from = 0; from < shape_.pixelCount(); from += chunk) {
+      const std::size_t count = std::min(chunk, shape_.pixelCount() - from);
+      float* counts = countsOf(from, count);
+      detail::parallelPixels(count, options_.threads, [&](std::size_t b, std::size_t e) {
+        Scratch scratch;
+        for (std::size_t i = b; i < e; ++i) drawPixel(from + i, counts + i * K, scratch);
+      });
+      emit(from, count, counts);
+    }
+  }
+
   void pixel(const float* values, std::size_t px, float* out, Scratch& s) const {
     pixelFlux(values, px, s.flux, s);
     drawPixel(px, out, s);
@@ -188,7 +228,12 @@ class SpadStream final : public SensorStream {
   // its gated frames from s.ungated.
   void drawPixel(std::size_t px, float* out, Scratch& s) const {
     frames_.pixel(px, s.ungated, maps_.gate_skew_s[px], s.lambda);
-    draw_.draw(px, options_.seed, s.flux, s.draw, s.h);
+    if (exact_) {
+      s.h = exact_->histogram(px);  // drawn with its neighbours (consumeExact)
+      draw_.saturate(s.h);
+    } else {
+      draw_.draw(px, options_.seed, s.flux, s.draw, s.h);
+    }
     for (std::size_t i = 0; i < s.h.size(); ++i) out[i] = static_cast<float>(s.h[i]);
     images_.pixel(px, s.h, s.images);
   }
@@ -209,8 +254,9 @@ class SpadStream final : public SensorStream {
   SensorOutput counts_;
   std::unique_ptr<ArrayWriter> writer_;
   std::vector<float> chunk_;
-  std::unique_ptr<detail::SpadCrosstalk> crosstalk_;  ///< null: no crosstalk
-  std::size_t received_ = 0;                          ///< pixels drawn, with crosstalk
+  std::unique_ptr<detail::SpadCrosstalk> crosstalk_;   ///< null: no crosstalk
+  std::unique_ptr<detail::SpadExactCrosstalk> exact_;  ///< null: none, or first order
+  std::size_t received_ = 0;                           ///< pixels drawn, with crosstalk
   std::size_t next_ = 0;
 };
 

@@ -1,7 +1,8 @@
 #pragma once
 // Private to the SPAD model: crosstalk on the streamed fast path, to first
 // order in the crosstalk probability p (sensors/README.md, "SPAD",
-// "Crosstalk"). Two passes over the pixels as they stream in:
+// "Crosstalk"; exact, with chains, in the event engine: SpadArrayEvents.h).
+// Two passes over the pixels as they stream in:
 //  1. send: from a pixel's own flux, its expected avalanches per cycle and
 //     TDC bin m_i (synchronous: the first-photon probabilities P_i, the pixel
 //     being dead for the rest of the cycle after its stop; free-running: the

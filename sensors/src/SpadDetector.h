@@ -1,7 +1,7 @@
 #pragma once
 // Private to the SPAD model: one pixel's detector as an event-driven state
 // machine, the piece of issue 24's exact engine that drivers step through time
-// (SpadEventEngine.h: one pixel alone; an array driver: many, in time order).
+// (SpadEventEngine.h: one pixel alone; SpadArrayEvents.h: many, in time order).
 // Adding an event kind: name it in EventKind; whoever causes it queues it
 // with inject() (fire() for the pixel's own avalanches, a driver for another
 // pixel's), and fire() says what its avalanche does beyond the common law.

@@ -5,7 +5,8 @@
 // model's path wherever an effect correlates bins or cycles (multi-stop TDCs,
 // dead time past the cycle's end, afterpulses). It steps one SpadDetector
 // (SpadDetector.h) from avalanche to avalanche, so its cost grows with the
-// detections, not the cycles; an array driver steps many the same way.
+// detections, not the cycles; the array driver (SpadArrayEvents.h) steps
+// many the same way, for exact crosstalk.
 
 #include <cstdint>
 #include <vector>

@@ -77,6 +77,10 @@ void SpadHistogramDraw::draw(std::size_t px, uint64_t seed, const std::vector<do
     h.resize(static_cast<std::size_t>(K));
     for (int32_t i = 0; i < K; ++i) h[i] = static_cast<double>(rng.binomial(cycles_, m[i]));
   }
+  saturate(h);
+}
+
+void SpadHistogramDraw::saturate(std::vector<double>& h) const {
   if (counterBits_ > 0) {  // the histogram memory saturates
     for (double& c : h) c = clipCount(c, counterBits_);
   }

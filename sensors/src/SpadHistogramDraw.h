@@ -40,6 +40,9 @@ class SpadHistogramDraw {
   /// `seed`: the same flux, pixel and seed give the same counts on any thread.
   void draw(std::size_t px, uint64_t seed, const std::vector<double>& flux, Scratch& s,
             std::vector<double>& h) const;
+  /// The histogram memory's counter bits on counts drawn elsewhere (the
+  /// exact crosstalk driver), as draw() applies them.
+  void saturate(std::vector<double>& h) const;
 
  private:
   bool firstOrderAfterpulses() const;

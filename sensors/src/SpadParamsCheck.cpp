@@ -1,5 +1,6 @@
 #include "SpadParamsCheck.h"
 
+#include "SpadExactCrosstalk.h"
 #include "tofsim/util/Error.h"
 
 namespace tofsim::sensors::detail {
@@ -21,14 +22,11 @@ void checkSpadParams(const SpadParams& p) {
                p.afterpulse_weights.size() == p.afterpulse_delays_s.size());
   TOFSIM_CHECK(p.crosstalk_probability >= 0.0 && p.crosstalk_probability <= 1.0);
   TOFSIM_CHECK(p.crosstalk_delay_s >= 0.0);
-  // A delayed arrival may fall outside the gate: not modelled (a config error).
-  TOFSIM_CHECK(p.crosstalk_probability == 0.0 || p.crosstalk_delay_s == 0.0 ||
-               p.gate_width_s == 0.0);
-  // Nor a gate that differs between neighbours or has ramps, nor the gated
-  // frames' other gate positions (config errors: checkCrosstalkGate).
-  TOFSIM_CHECK(p.crosstalk_probability == 0.0 ||
-               (p.gate_rise_s == 0.0 && p.gate_fall_s == 0.0 && p.gate_skew_sigma_s == 0.0 &&
-                p.gated_frames == 0));
+  // A delayed arrival into a gate, gate ramps or per-pixel skew: the exact
+  // array driver only (config errors with `engine: fast`); the gated frames'
+  // other gate positions: not modelled (checkCrosstalkGate).
+  TOFSIM_CHECK(p.engine != SpadEngine::Fast || !crosstalkNeedsEvents(p));
+  TOFSIM_CHECK(p.crosstalk_probability == 0.0 || p.gated_frames == 0);
   if (p.irf.present()) {
     TOFSIM_CHECK(p.irf.sample_width_s > 0.0);
     TOFSIM_CHECK(p.pulse_fwhm_s == 0.0 && p.jitter_fwhm_s == 0.0 && p.jitter_tail_fraction == 0.0);

@@ -65,7 +65,8 @@ TEST(SpadCrosstalkConfigTest, BadValuesAreLocatedErrors) {
        "test.yaml:3:28: sensors[0].crosstalk_probability: ", "must be in [0, 1]"},
       {"    crosstalk_delay: -1 ns\n",
        "test.yaml:3:22: sensors[0].crosstalk_delay: ", "must be >= 0"},
-      {"    crosstalk_probability: 0.01\n    crosstalk_delay: 1 ns\n    gate_width: 5 ns\n",
+      {"    crosstalk_probability: 0.01\n    crosstalk_delay: 1 ns\n    gate_width: 5 ns\n"
+       "    engine: fast\n",
        "test.yaml:4:22: sensors[0].crosstalk_delay: ", "with a gate"},
   };
   for (const Case& c : cases) {
@@ -75,6 +76,13 @@ TEST(SpadCrosstalkConfigTest, BadValuesAreLocatedErrors) {
   }
   // Prompt crosstalk with a gate is modelled.
   EXPECT_EQ(errorOf("    crosstalk_probability: 0.01\n    gate_width: 5 ns\n"), "");
+  // Delayed crosstalk with a gate too, by the exact array driver (`auto`, `exact`).
+  for (const char* engine : {"", "    engine: exact\n"}) {
+    EXPECT_EQ(errorOf(std::string("    crosstalk_probability: 0.01\n    crosstalk_delay: 1 ns\n"
+                                  "    gate_width: 5 ns\n") +
+                      engine),
+              "");
+  }
 }
 
 }  // namespace

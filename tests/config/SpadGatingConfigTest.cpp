@@ -108,21 +108,32 @@ TEST_F(SpadGatingConfigTest, GatedFramesNeedAGateAndASweepInsideTheWindow) {
       "gate_step", "last gate position");
 }
 
-// Crosstalk is drawn from the neighbours' avalanches inside one shared hard
-// gate: a shaped, skewed or swept gate with it is refused, located on the key.
-TEST_F(SpadGatingConfigTest, CrosstalkOnlyWithAHardUnskewedGate) {
+// Crosstalk with a shaped or skewed gate: the exact array driver takes each
+// arrival with the receiver's own gate (`engine: auto` picks it, `exact` is
+// it); the first-order path (`engine: fast`) cannot, so it is refused there,
+// located on the key. With gated frames it is refused under every engine.
+TEST_F(SpadGatingConfigTest, CrosstalkWithAShapedOrSkewedGateOnlyOnTheExactDriver) {
   const std::string gate = "    gate_start: 1.01 ns\n    gate_width: 20 ps\n";
   const std::string crosstalk = "    crosstalk_probability: 0.05\n";
   const sensors::SpadParams p = load(gate + crosstalk);
   EXPECT_DOUBLE_EQ(p.crosstalk_probability, 0.05);
   EXPECT_DOUBLE_EQ(p.gate_width_s, 20e-12);
-  for (const auto& [key, value] :
-       {std::pair{"gate_rise", "2 ps"}, std::pair{"gate_fall", "2 ps"},
-        std::pair{"gate_skew_sigma", "1 ps"}, std::pair{"gated_frames", "10"}}) {
+  for (const auto& [key, value] : {std::pair{"gate_rise", "2 ps"}, std::pair{"gate_fall", "2 ps"},
+                                   std::pair{"gate_skew_sigma", "1 ps"}}) {
     SCOPED_TRACE(key);
-    expectError(gate + crosstalk + "    " + key + ": " + value + "\n", key, "not modelled");
+    const std::string shaped = gate + crosstalk + "    " + key + ": " + value + "\n";
+    expectError(shaped + "    engine: fast\n", key, "not modelled by `engine: fast`");
+    for (const char* engine : {"", "    engine: auto\n", "    engine: exact\n"}) {
+      EXPECT_NO_THROW(load(shaped + engine)) << engine;
+    }
     EXPECT_NO_THROW(load(gate + "    " + key + ": " + value + "\n"));  // without crosstalk: fine
   }
+  for (const char* engine : {"", "    engine: exact\n", "    engine: fast\n"}) {
+    SCOPED_TRACE(engine);
+    expectError(gate + crosstalk + "    gated_frames: 10\n" + engine, "gated_frames",
+                "not modelled");
+  }
+  EXPECT_NO_THROW(load(gate + "    gated_frames: 10\n"));
 }
 
 TEST_F(SpadGatingConfigTest, TdcDnlFromAListOrAFileWithLocatedErrors) {

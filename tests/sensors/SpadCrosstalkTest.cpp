@@ -22,8 +22,12 @@
 namespace tofsim::sensors {
 namespace {
 
+using test::addTwoSample;
+using test::againstMultinomial;
 using test::array;
+using test::litPixel;
 using test::makeVolume;
+using test::TwoSample;
 using tofsim::test::chiSquareQuantile;
 using tofsim::test::pearson;
 
@@ -80,22 +84,6 @@ std::vector<double> around(const std::vector<SensorOutput>& outs,
 
 const std::vector<std::array<int32_t, 2>> kEdge = {{-1, 0}, {0, -1}, {0, 1}, {1, 0}};
 const std::vector<std::array<int32_t, 2>> kDiagonal = {{-1, -1}, {-1, 1}, {1, -1}, {1, 1}};
-
-// Pearson's statistic of `h` (the sum of `draws` multinomial draws) against
-// cell probabilities `law`, the draws that counted nothing as one more cell.
-tofsim::test::ChiSquare againstMultinomial(std::vector<double> h, const std::vector<double>& law,
-                                           double draws) {
-  std::vector<double> expected(law.size());
-  double none = 1.0, counted = 0.0;
-  for (std::size_t t = 0; t < law.size(); ++t) {
-    expected[t] = draws * law[t];
-    none -= law[t];
-    counted += h[t];
-  }
-  h.push_back(draws - counted);
-  expected.push_back(draws * none);
-  return pearson(h, expected);
-}
 
 std::vector<double> scaled(std::vector<double> v, double s) {
   for (double& x : v) x *= s;
@@ -236,42 +224,6 @@ TEST(SpadCrosstalkTest, FreeRunningDarkNeighbourCountsPTimesTheBrightPixelsDetec
 // O(p^2) (chains, back-triggering): at p = 0.02 below the noise of 2 10^5
 // cycles; 4 neighbours in the fast path for the oracle's 8, or no crosstalk,
 // are rejected.
-struct TwoSample {
-  double statistic = 0.0;
-  int dof = 0;
-};
-
-void addTwoSample(const std::vector<double>& a, const std::vector<double>& b, double cycles,
-                  TwoSample& out) {
-  std::vector<double> x = a, y = b;
-  double sa = 0.0, sb = 0.0;
-  for (std::size_t i = 0; i < a.size(); ++i) sa += a[i], sb += b[i];
-  x.push_back(cycles - sa);
-  y.push_back(cycles - sb);
-  double cx = 0.0, cy = 0.0;
-  int cells = 0;
-  for (std::size_t i = 0; i < x.size(); ++i) {
-    cx += x[i];
-    cy += y[i];
-    if (cx + cy < 20.0 && i + 1 < x.size()) continue;
-    if (cx + cy > 0.0) {
-      out.statistic += (cx - cy) * (cx - cy) / (cx + cy);
-      ++cells;
-    }
-    cx = cy = 0.0;
-  }
-  out.dof += cells - 1;
-}
-
-std::vector<double> litPixel(int32_t y, int32_t x, int32_t bins) {
-  std::vector<double> f(bins, 0.0);
-  const int32_t start = 4 + 3 * ((x + 2 * y) % 4);
-  const double height = 0.02 + 0.05 * ((y * 3 + x) % 5);
-  for (int32_t t = start; t < start + 12; ++t) f[t] = static_cast<float>(height);
-  for (double& v : f) v += static_cast<float>(0.002);  // a background floor
-  return f;
-}
-
 TEST(SpadCrosstalkTest, ALitArrayAgreesWithTheExactAvalancheOracle) {
   constexpr int32_t kSide3 = 3, kBins3 = 40;
   constexpr int64_t kCycles = 200'000;

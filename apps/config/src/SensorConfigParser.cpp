@@ -124,18 +124,25 @@ void checkGateShape(const ConfigNode& n, const SpadParams& p) {
 // Crosstalk's neighbours send what they detect inside their own gate: with
 // ramps or per-pixel skew a receiver's armed times differ from its
 // neighbour's (the bin averages of one gate do not give the product of two),
-// and the gated frames' other gate positions get no crosstalk profile of
-// their own, so those combinations are refused rather than drawn wrong.
+// which the first-order path (`engine: fast`) cannot follow; the exact array
+// driver (`auto`, `exact`) takes each arrival with the receiver's own gate.
+// The gated frames' other gate positions get no crosstalk at all. Those
+// combinations are refused rather than drawn wrong.
 void checkCrosstalkGate(const ConfigNode& n, const SpadParams& p) {
   if (!(p.crosstalk_probability > 0.0)) return;
+  if (p.gated_frames > 0) {
+    n.failKey("gated_frames",
+              "crosstalk (crosstalk_probability) with `gated_frames` is not modelled: use "
+              "gated frames without crosstalk, or crosstalk without gated frames");
+  }
+  if (p.engine != SpadEngine::Fast) return;
   for (const auto& [key, set] :
        {std::pair{"gate_rise", p.gate_rise_s > 0.0}, std::pair{"gate_fall", p.gate_fall_s > 0.0},
-        std::pair{"gate_skew_sigma", p.gate_skew_sigma_s > 0.0},
-        std::pair{"gated_frames", p.gated_frames > 0}}) {
+        std::pair{"gate_skew_sigma", p.gate_skew_sigma_s > 0.0}}) {
     if (set) {
       n.failKey(key, std::string("crosstalk (crosstalk_probability) with `") + key +
-                         "` is not modelled: use a hard, unskewed gate without gated frames, "
-                         "or no crosstalk");
+                         "` is not modelled by `engine: fast` (first order): use `engine: "
+                         "auto` or `exact`, a hard, unskewed gate, or no crosstalk");
     }
   }
 }
@@ -237,11 +244,13 @@ SpadParams SensorConfigType<SpadParams>::parse(const ConfigNode& n) {
     n.failKey("dark_count_log_sigma",
               "the measured `dark_count_map` replaces the log-normal draw: remove it");
   }
-  // A delayed arrival may land outside the gate, which the fast path does not follow.
-  if (p.crosstalk_probability > 0.0 && p.crosstalk_delay_s > 0.0 && p.gate_width_s > 0.0) {
+  // A delayed arrival may land outside the gate, which the first-order path
+  // does not follow (the exact array driver does).
+  if (p.crosstalk_probability > 0.0 && p.crosstalk_delay_s > 0.0 && p.gate_width_s > 0.0 &&
+      p.engine == SpadEngine::Fast) {
     n.failKey("crosstalk_delay",
-              "delayed crosstalk with a gate (gate_width) is not modelled: "
-              "use prompt crosstalk (0) or no gate");
+              "delayed crosstalk with a gate (gate_width) is not modelled by `engine: fast` "
+              "(first order): use `engine: auto` or `exact`, prompt crosstalk (0) or no gate");
   }
   checkCrosstalkGate(n, p);
   return p;

@@ -139,14 +139,17 @@ struct SpadParams {
   SpadAfterpulseTraps afterpulse_traps = SpadAfterpulseTraps::Reset;
   /// Which draws: Auto, the exact event engine where an effect needs it
   /// (multi-stop, dead time past the cycle, afterpulses), the fast draws
-  /// elsewhere; Exact, the engine for every pixel (the reference); Fast,
+  /// elsewhere (and exact crosstalk where the gate needs it); Exact, the
+  /// engine for every pixel and crosstalk exact (the reference); Fast,
   /// afterpulses to first order as extra flux on the fast draws
   /// (SpadAfterpulseFlux.h), the engine only for the other effects.
   SpadEngine engine = SpadEngine::Auto;
   /// Crosstalk: each avalanche triggers one in each of its neighbours with
   /// this probability, after a delay (0: prompt, in the same bin; else
   /// exponential with this mean); 0: none. Drawn on the fast path to first
-  /// order, from the neighbours' expected avalanches (SpadCrosstalk.h).
+  /// order, from the neighbours' expected avalanches (SpadCrosstalk.h);
+  /// exact by the array driver (SpadArrayEvents.h) with engine Exact, and
+  /// with Auto where the gate has ramps or skew or a delayed arrival meets it.
   double crosstalk_probability = 0.0;
   CrosstalkNeighbours crosstalk_neighbours = CrosstalkNeighbours::Four;
   double crosstalk_delay_s = 0.0;
