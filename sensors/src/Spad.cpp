@@ -45,7 +45,7 @@ class SpadStream final : public SensorStream {
         histograms_(plotted_.size()),
         maps_(spadPixelMaps(p, shape.height, shape.width)),
         frames_(p, shape, options),
-        images_(p, axis_, kernel_, shape.height, shape.width) {
+        images_(p, axis_, kernel_, draw_.deadBins(), shape.height, shape.width) {
     detail::checkSpadParams(p);
     if (detail::exactCrosstalk(p)) {
       // p_, not p: the driver keeps a reference, and the caller's params

@@ -21,10 +21,12 @@ SensorOutput spadImage(const std::string& name, int32_t H, int32_t W, std::vecto
 }
 
 SpadImages::SpadImages(const SpadParams& p, const TimeAxis& axis, const BinKernel& kernel,
-                       int32_t height, int32_t width)
+                       int32_t deadBins, int32_t height, int32_t width)
     : height_(height),
       width_(width),
       cycles_(p.cycles),
+      stops_(p.tdc_stops),
+      deadBins_(deadBins),
       synchronous_(p.mode == SpadMode::Synchronous),
       colormap_(p.colormap),
       axis_(axis),
@@ -46,11 +48,17 @@ void SpadImages::pixel(std::size_t px, const std::vector<double>& h, Scratch& s)
   for (double c : h) total += c;
   intensity_[px] = static_cast<float>(total);
   depthPeak_[px] = static_cast<float>(peakDepth_m(h, axis_));
-  depthCoates_[px] = static_cast<float>(coatesPeakDepth_m(h, cycles_, axis_));
+  // One stop and a dead time inside the cycle: Coates' own correction (and
+  // its peak without a logarithm per bin); else its multi-stop, dead-time form.
+  const bool classic = !synchronous_ || (stops_ == 1 && !deadTimeReachesNextCycle(h, deadBins_));
+  if (classic) {
+    depthCoates_[px] = static_cast<float>(coatesPeakDepth_m(h, cycles_, axis_));
+  }
   // The estimators read the detections without pile-up: N times Coates'
   // flux in synchronous mode, the counts when free-running.
   if (synchronous_) {
-    s.lossless = coatesEstimate(h, cycles_);
+    s.lossless = coatesEstimate(h, cycles_, stops_, deadBins_);
+    if (!classic) depthCoates_[px] = static_cast<float>(peakDepth_m(s.lossless, axis_));
     for (double& v : s.lossless) v *= static_cast<double>(cycles_);
   } else {
     s.lossless = h;

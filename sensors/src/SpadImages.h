@@ -25,9 +25,10 @@ SensorOutput spadImage(const std::string& name, int32_t H, int32_t W, std::vecto
 
 class SpadImages {
  public:
-  /// `kernel`: the instrument's, for the matched filter.
-  SpadImages(const SpadParams& p, const TimeAxis& axis, const BinKernel& kernel, int32_t height,
-             int32_t width);
+  /// `kernel`: the instrument's, for the matched filter; deadBins the
+  /// detector's dead time in TDC bins (Coates' correction takes it).
+  SpadImages(const SpadParams& p, const TimeAxis& axis, const BinKernel& kernel, int32_t deadBins,
+             int32_t height, int32_t width);
 
   /// Reused buffers (one per thread).
   struct Scratch {
@@ -48,6 +49,8 @@ class SpadImages {
 
   const int32_t height_, width_;
   const int64_t cycles_;
+  const int64_t stops_;
+  const int32_t deadBins_;
   const bool synchronous_;
   const std::string colormap_;
   const TimeAxis axis_;

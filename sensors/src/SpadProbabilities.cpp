@@ -68,6 +68,42 @@ std::vector<double> freeRunningProbabilities(const std::vector<double>& flux, in
   return previous;  // the last cycle's
 }
 
+bool deadTimeReachesNextCycle(const std::vector<double>& counts, int32_t deadBins) {
+  const auto B = static_cast<int64_t>(counts.size());
+  for (int64_t j = std::max<int64_t>(0, B - deadBins); j < B; ++j) {
+    if (counts[static_cast<std::size_t>(j)] > 0.0) return true;
+  }
+  return false;
+}
+
+std::vector<double> coatesEstimate(const std::vector<double>& counts, int64_t cycles, int64_t stops,
+                                   int32_t deadBins) {
+  if (stops == 1 && !deadTimeReachesNextCycle(counts, deadBins)) {
+    return coatesEstimate(counts, cycles);
+  }
+  const auto B = static_cast<int64_t>(counts.size());
+  // tail[k]: the counts of the cycle's last k bins; wrapped(n): of the n
+  // bins before bin 0, going back through as many earlier cycles as needed.
+  std::vector<double> tail(static_cast<std::size_t>(B) + 1, 0.0);
+  for (int64_t k = 1; k <= B; ++k) tail[k] = tail[k - 1] + counts[static_cast<std::size_t>(B - k)];
+  const auto wrapped = [&](int64_t n) {
+    return n <= 0 ? 0.0 : static_cast<double>(n / B) * tail[B] + tail[n % B];
+  };
+  std::vector<double> flux(counts.size(), 0.0);
+  double stopped = 0.0;  // one stop: the cycles that stopped before bin i
+  double window = 0.0;   // otherwise: the detections of this cycle in the d bins before i
+  for (int64_t i = 0; i < B; ++i) {
+    const double h = counts[static_cast<std::size_t>(i)];
+    const double dead = wrapped(deadBins - i) + (stops == 1 ? stopped : window);
+    const double live = static_cast<double>(cycles) - dead;
+    if (live > 0.0) flux[static_cast<std::size_t>(i)] = coatesBinFlux(h, live);
+    stopped += h;
+    window += h;
+    if (i - deadBins >= 0) window -= counts[static_cast<std::size_t>(i - deadBins)];
+  }
+  return flux;
+}
+
 std::vector<double> coatesEstimate(const std::vector<double>& counts, int64_t cycles) {
   std::vector<double> flux(counts.size(), 0.0);
   double remaining = static_cast<double>(cycles);

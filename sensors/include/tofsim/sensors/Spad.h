@@ -197,6 +197,27 @@ std::vector<double> freeRunningProbabilities(const std::vector<double>& flux, in
 /// the remaining count reaches 0 get 0.
 std::vector<double> coatesEstimate(const std::vector<double>& counts, int64_t cycles);
 
+/// Coates' estimator for a TDC of `stops` stops per cycle (0: every
+/// detection) behind a dead time of deadBins bins after each detection (bins
+/// j+1 .. j+deadBins, on into the next cycles): flux_i = -ln(1 - h_i / L_i),
+/// L_i the cycles live and recording at bin i in expectation: N, less those
+/// dead from a detection t = 1 .. deadBins bins before (h_((i - t) mod B):
+/// each cycle's detections are distributed as the histogram's), less, with
+/// one stop, those that stopped earlier in the cycle. Exact in expectation
+/// for unlimited stops, where every avalanche is recorded, and for one stop
+/// when no count's dead time reaches the next cycle (then it is
+/// coatesEstimate, bit for bit). Otherwise the avalanches after a cycle's
+/// last stop, unrecorded, are missing from the histogram with the dead time
+/// they cause (and, with 2 or more stops, the cycles that used their last
+/// stop before bin i): those cycles count as live, so the flux comes out low
+/// where stops run out.
+std::vector<double> coatesEstimate(const std::vector<double>& counts, int64_t cycles, int64_t stops,
+                                   int32_t deadBins);
+
+/// Whether a detection in `counts` leaves the detector dead into the next
+/// cycle (a count in the last deadBins bins).
+bool deadTimeReachesNextCycle(const std::vector<double>& counts, int32_t deadBins);
+
 /// Outputs: "spad_counts" Array (H, W, bins); "spad_depth_peak",
 /// "spad_depth_coates" and "spad_depth_matched" Images (H, W) in m (plus
 /// ColorMappedImages); "spad_intensity" Image (H, W) total counts (plus
