@@ -167,7 +167,7 @@ inline constexpr auto kCwTofFields = std::tuple{
           {.json = "phase_steps", .doc = "phase steps N per frequency"}},
     Field{"waveform", &CwTofParams::waveform, Choice<Waveform>{kWaveformNames},
           {.json = "waveform", .doc = "`sine`, `square` (50 % duty) or `measured` (the `correlation` waveform)"}},
-    Custom{"correlation", "mapping or list of mappings", "", "none", "-", "measured correlation waveform (`waveform: measured`): `harmonics` (list of [re, im], c_1..c_K), `samples` (M values at phases 2 pi j / M) or `file` (.csv phase_rad,value or 1-D float32 .npy); one for all frequencies or a list of one per frequency (see \"Measured correlation waveforms\" above)"},
+    Custom{"correlation", "mapping or list of mappings", "", "none", "-", "measured correlation waveform (`waveform: measured`): `harmonics` (list of [re, im], c_1..c_K), `samples` (M values at phases 2 pi j / M) or `file` (.csv phase_rad,value or 1-D float32 .npy); one for all frequencies or a list of one per frequency (see \"Measured correlation waveforms\" below)"},
     Field{"modulation_contrast", &CwTofParams::modulation_contrast, Number{Range{.min = 0.0, .max = 1.0, .minExclusive = true}},
           {.json = "modulation_contrast", .doc = "m: the AC part of every raw image is scaled by m (0.5 m E rho)"}},
     Field{"ambient", &CwTofParams::ambient_e, Number{kNonNegative},
