@@ -1,6 +1,7 @@
 #include "tofsim/sensors/CwTof.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <limits>
@@ -53,6 +54,7 @@ void checkParams(const CwTofParams& p, const VolumeShape& shape) {
   TOFSIM_CHECK(!p.frequencies_Hz.empty() && p.phase_steps >= 3);
   for (double f : p.frequencies_Hz) TOFSIM_CHECK(f > 0.0);
   TOFSIM_CHECK(p.ambient_e >= 0.0 && p.read_noise_e >= 0.0 && p.max_depth_m >= 0.0);
+  TOFSIM_CHECK(p.modulation_contrast > 0.0 && p.modulation_contrast <= 1.0);
   checkChannelSelection(p.common.channel, shape.channels);
   for (std::size_t i = 0; i < p.frequencies_Hz.size(); ++i) {
     for (std::size_t j = 0; j < i; ++j) {
@@ -91,6 +93,7 @@ class CwTofStream final : public SensorStream {
     const double k = shape.axis.depthPerSecond_m_per_s();
     unwrapRange_ = unwrapRange_m(p, k);
     depthRange_ = depthRange_m(p, k);
+    wiggling_ = wigglingError_m(p, k);
     raw_.resize(static_cast<std::size_t>(F_) * p.phase_steps * HW_);
     phase_.resize(F_ * HW_);
     amplitude_.resize(F_ * HW_);
@@ -125,6 +128,7 @@ class CwTofStream final : public SensorStream {
 
  private:
   void addByOrder(std::vector<SensorOutput>& outs, const Image* gt) const;
+  SensorOutput wigglingOutput() const;
 
   void pixel(const float* values, const float* direct, std::size_t px) {
     pixelSignal(values, shape_.axis.bins, shape_.channels, p_.common, signal_);
@@ -202,6 +206,7 @@ class CwTofStream final : public SensorStream {
   std::vector<float> raw_, phase_, amplitude_, wrappedDepth_, mpiGtPerFrequency_;
   std::vector<float> depth_, mpiGt_, mpiDirect_;
   std::vector<double> cleanDepth_, cleanWrapped_;               // (H, W) and (F, H, W), noise-free
+  std::vector<double> wiggling_;                                // (F, S), m
   std::vector<double> signal_, ideal_, noisy_, phases_, amps_;  // per-pixel scratch
   std::optional<OrderDepths> byOrder_;                          // multipath_by_order
 };
@@ -268,7 +273,38 @@ std::vector<SensorOutput> CwTofStream::finish(const Image* gt) {
              "CW-ToF depth error against the direct-only depth (noise-free)", cmap, combinedError);
   }
   addByOrder(outs, gt);
+  outs.push_back(wigglingOutput());
   return outs;
+}
+
+// (F, S) and its max |error|, RMS and mean, over all and per frequency.
+SensorOutput CwTofStream::wigglingOutput() const {
+  const int32_t S = kWigglingSweepPoints;
+  SensorOutput o = makeOutput(
+      "cwtof_wiggling_error", SensorOutput::Kind::Array, {F_, S}, {"frequency", "sweep"},
+      {wiggling_.begin(), wiggling_.end()}, "m",
+      "CW-ToF wiggling error: N-step depth - true depth of a noise-free single return swept "
+      "over each frequency's unambiguous range (frequency, sweep point)");
+  const auto stats = [](const double* e, std::size_t n) {
+    double maxAbs = 0.0, sum2 = 0.0, sum = 0.0;
+    for (std::size_t i = 0; i < n; ++i) {
+      maxAbs = std::max(maxAbs, std::fabs(e[i]));
+      sum2 += e[i] * e[i];
+      sum += e[i];
+    }
+    return std::array<double, 3>{maxAbs, std::sqrt(sum2 / n), sum / n};
+  };
+  const auto all = stats(wiggling_.data(), wiggling_.size());
+  o.attributes = {{"sweep_points", S}, {"max_abs_error_m", all[0]}, {"rms_error_m", all[1]}};
+  for (int32_t f = 0; f < F_; ++f) {
+    const std::string label = frequencyLabel(p_.frequencies_Hz[f]);
+    const auto one = stats(wiggling_.data() + static_cast<std::size_t>(f) * S, S);
+    o.attributes.push_back({"max_abs_error_" + label + "_m", one[0]});
+    o.attributes.push_back({"rms_error_" + label + "_m", one[1]});
+    o.attributes.push_back({"mean_error_" + label + "_m", one[2]});
+  }
+  o.signed_values = true;
+  return o;
 }
 
 // (N + 1, H, W) and a picture of each order, in the combined depth's range.

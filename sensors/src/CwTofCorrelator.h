@@ -3,11 +3,47 @@
 // transient (exact per-bin correlation) and the depth they give.
 
 #include <cmath>
+#include <optional>
 #include <vector>
 
 #include "tofsim/sensors/CwTof.h"
+#include "tofsim/util/Error.h"
 
 namespace tofsim::sensors {
+
+/// One frequency's correlation, built-in or measured: the mean of
+/// rho(2 pi f t - phase) over a bin [t0, t1).
+class FrequencyCorrelation {
+ public:
+  FrequencyCorrelation(const CwTofParams& p, std::size_t f)
+      : waveform_(p.waveform), f_(p.frequencies_Hz[f]) {
+    if (waveform_ != Waveform::Measured) {
+      if (!p.correlation.empty()) {
+        throw InputError("cwtof correlation waveforms are given but the waveform is not measured");
+      }
+      return;
+    }
+    const std::size_t F = p.frequencies_Hz.size(), given = p.correlation.size();
+    if (given != 1 && given != F) {
+      throw InputError("cwtof measured waveform: " + std::to_string(given) +
+                       " correlation waveforms for " + std::to_string(F) +
+                       " frequencies (give one for all, or one per frequency)");
+    }
+    measured_.emplace(p.correlation[given == 1 ? 0 : f]);
+  }
+
+  double bin(double phase_rad, double t0_s, double t1_s) const {
+    if (!measured_) return binCorrelation(waveform_, f_, phase_rad, t0_s, t1_s);
+    // The phases as binCorrelation forms them.
+    constexpr double kTwoPi = 2.0 * M_PI;
+    return measured_->mean(kTwoPi * f_ * t0_s - phase_rad, kTwoPi * f_ * t1_s - phase_rad);
+  }
+
+ private:
+  Waveform waveform_;
+  double f_;
+  std::optional<PhaseCorrelation> measured_;
+};
 
 /// Per pixel: the noise-free raw values (F * N) of a volume.
 struct Correlator {
@@ -17,21 +53,23 @@ struct Correlator {
 
   Correlator(const CwTofParams& params, const TimeAxis& a) : p(params), axis(a) {
     const int32_t N = p.phase_steps;
-    for (double f : p.frequencies_Hz) {
+    for (std::size_t fi = 0; fi < p.frequencies_Hz.size(); ++fi) {
+      const FrequencyCorrelation rho(p, fi);
       for (int32_t k = 0; k < N; ++k) {
         const double phi = 2.0 * M_PI * k / N;
         for (int32_t t = 0; t < axis.bins; ++t) {
           const double t0 = axis.binStart_s(t);
-          table.push_back(binCorrelation(p.waveform, f, phi, t0, t0 + axis.bin_width_s));
+          table.push_back(rho.bin(phi, t0, t0 + axis.bin_width_s));
         }
       }
     }
   }
 
-  /// raw[f * N + k] = 0.5 (sum E + ambient) + 0.5 sum_t E_t rho_t(f, k).
+  /// raw[f * N + k] = 0.5 (sum E + ambient) + 0.5 m sum_t E_t rho_t(f, k).
   void raw(const std::vector<double>& signal, double ambient, std::vector<double>& out) const {
     const std::size_t T = signal.size();
     const std::size_t FN = p.frequencies_Hz.size() * p.phase_steps;
+    const double ac = 0.5 * p.modulation_contrast;  // 0.5 exactly at m = 1
     double total = ambient;
     for (double e : signal) total += e;
     out.assign(FN, 0.5 * total);
@@ -39,7 +77,7 @@ struct Correlator {
       const double* rho = table.data() + j * T;
       double s = 0.0;
       for (std::size_t t = 0; t < T; ++t) s += signal[t] * rho[t];
-      out[j] += 0.5 * s;
+      out[j] += ac * s;
     }
   }
 

@@ -32,6 +32,7 @@ double wrapPi(double a) { return a - kTwoPi * std::floor((a + M_PI) / kTwoPi); }
 
 double binCorrelation(Waveform waveform, double frequency_Hz, double phase_rad, double t0_s,
                       double t1_s) {
+  TOFSIM_CHECK(waveform != Waveform::Measured);
   const double a = kTwoPi * frequency_Hz * t0_s - phase_rad;
   const double b = kTwoPi * frequency_Hz * t1_s - phase_rad;
   const double width = b - a;

@@ -96,8 +96,9 @@ std::uintmax_t SensorType<CwTofParams>::outputBytes(const CwTofParams& p, int32_
   // By order: up to 9 orders (render.indirect.bounces' limit 8, plus the
   // direct light), an array plane and a picture each.
   const std::uintmax_t orders = p.multipath_by_order ? 9 : 0;
+  // And the wiggling sweep, F x kWigglingSweepPoints floats.
   return F * (steps + 1) * pixels * 4 + F * 4 * pixels * (4 + 3) + orders * pixels * (4 + 3) +
-         imageBytes(width, height);
+         F * kWigglingSweepPoints * 4 + imageBytes(width, height);
 }
 std::optional<InstrumentWindow> SensorType<CwTofParams>::window(const CwTofParams&) {
   return std::nullopt;

@@ -28,10 +28,11 @@ std::string effective(const std::string& entry) {
 TEST(SensorFieldsTest, DocumentedDefaultsReadBackAsTheStructDefaults) {
   // Defaults that are words, not values ("the render's", "all rows").
   const std::set<std::string> described = {
-      "common.type",    "common.name",      "common.channel_weights",
-      "bins.bin_width", "bins.bin_offset",  "bins.bins",
-      "streak.rows",    "spad.plot_pixels", "spad.irf",
-      "spad.preset",    "spad.tdc_dnl",     "spad.dark_count_map"};
+      "common.type",      "common.name",      "common.channel_weights",
+      "bins.bin_width",   "bins.bin_offset",  "bins.bins",
+      "streak.rows",      "spad.plot_pixels", "spad.irf",
+      "spad.preset",      "spad.tdc_dnl",     "spad.dark_count_map",
+      "cwtof.correlation"};
   const std::set<std::string> words = {"spad.afterpulse_weights"};  // "equal"
   int checked = 0;
   for (const ConfigKey& key : sensorConfigKeys()) {

@@ -98,9 +98,10 @@ TEST(SensorTypeTest, OutputBytesAndWindowLossComeFromTheModel) {
   EXPECT_EQ(sensorOutputBytes(SpadParams{}, 4, 3, axis), 4u * 3 * 100 * 4 + images);
   CwTofParams cw;
   cw.frequencies_Hz = {20e6, 100e6};
-  // Raw (F, N) plus phase (F) arrays, then four images with pictures per frequency.
-  EXPECT_EQ(sensorOutputBytes(cw, 4, 3, axis),
-            2u * (4 + 1) * 4 * 3 * 4 + 2u * 4 * 4 * 3 * (4 + 3) + images);
+  // Raw (F, N) plus phase (F) arrays, then four images with pictures per
+  // frequency, and the wiggling sweep (F, S).
+  EXPECT_EQ(sensorOutputBytes(cw, 4, 3, axis), 2u * (4 + 1) * 4 * 3 * 4 + 2u * 4 * 4 * 3 * (4 + 3) +
+                                                   2u * kWigglingSweepPoints * 4 + images);
   // Light in the render's last bin, a SPAD window that ends before it.
   TransientVolume v = test::makeVolume(1, 1, 0.0, 10e-12, 100);
   v.at(0, 0, 99, 0) = 1.0f;

@@ -6,6 +6,7 @@
 #include <string_view>
 #include <type_traits>
 
+#include "CwTofWaveformFile.h"
 #include "FieldEmit.h"
 #include "IrfFile.h"
 #include "QuantityText.h"
@@ -93,6 +94,10 @@ void SensorConfigType<SpadParams>::emit(YAML::Node& n, const SpadParams& p) {
 void SensorConfigType<CwTofParams>::emit(YAML::Node& n, const CwTofParams& p) {
   emitCommon(n, p.common);
   emitFields(n, kCwTofFields, p, [&](std::string_view key) {
+    if (key == "correlation") {
+      if (!p.correlation.empty()) n["correlation"] = correlationToYaml(p.correlation);
+      return;
+    }
     if (key != "frequencies") return;
     for (double f : p.frequencies_Hz) n["frequencies"].push_back(frequencyText(f));
   });

@@ -7,6 +7,7 @@
 #include <variant>
 
 #include "ConfigNode.h"
+#include "CwTofWaveformFile.h"
 #include "FieldParse.h"
 #include "IrfFile.h"
 #include "SensorConfigType.h"
@@ -279,6 +280,17 @@ CwTofParams SensorConfigType<CwTofParams>::parse(const ConfigNode& n) {
   CwTofParams p;
   p.common = parseCommon(n);
   parseFields(n, kCwTofFields, p, [&](std::string_view key) {
+    if (key == "correlation") {  // after `frequencies` and `waveform` (table order)
+      const bool measured = p.waveform == Waveform::Measured;
+      if (n.has("correlation") && !measured) {
+        n.failKey("correlation", "is the waveform of `waveform: measured`: set it, or remove this");
+      }
+      if (measured && !n.has("correlation")) {
+        n.failKey("waveform", "`measured` needs `correlation` (the measured waveform)");
+      }
+      if (measured) p.correlation = parseCorrelation(n, p.frequencies_Hz.size());
+      return;
+    }
     if (key != "frequencies") return;
     // A frequency or a list of them, each with its own located error: by hand.
     if (auto freqs = n.optionalChild("frequencies")) {

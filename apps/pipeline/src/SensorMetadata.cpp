@@ -41,6 +41,9 @@ std::string axisDoc(const std::string& axis) {
     return "phase step k, reference phase 2 pi k / sensor.parameters.phase_steps";
   if (axis == "pixel") return "index into `labels` (the pixel each series shows)";
   if (axis == "order") return "bounce order k: the light of direct + indirect bounces 1..k";
+  if (axis == "sweep")
+    return "sweep point j: a single return at (j + 0.5) / attributes.sweep_points of the "
+           "frequency's unambiguous range";
   if (axis == "gate")
     return "gate position k: the gate moved by k sensor.parameters.gate_step_s from gate_start_s";
   TOFSIM_CHECK_MSG(false, "undocumented sensor output axis " + axis);

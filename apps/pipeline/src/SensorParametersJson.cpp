@@ -125,6 +125,17 @@ json modelJson(const CwTofParams& p, const TimeAxis& render) {
   json j;
   fieldsJson(j, kCwTofFields, p, [&](std::string_view key) {
     if (key == "frequencies") j["frequencies_Hz"] = p.frequencies_Hz;
+    if (key == "correlation" && !p.correlation.empty()) {
+      // What each waveform is; its values are in the effective config.
+      json list = json::array();
+      for (const CorrelationWaveform& w : p.correlation) {
+        list.push_back({{"form", w.fourier() ? "fourier" : "samples"},
+                        {"terms", w.fourier() ? w.harmonics.size() : w.values.size()},
+                        {"file", w.file},
+                        {"scale", PhaseCorrelation(w).scale()}});
+      }
+      j["correlation"] = list;
+    }
   });
   // Derived values, then colormap last, as the metadata has always been ordered.
   j.erase("colormap");

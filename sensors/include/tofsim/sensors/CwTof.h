@@ -12,19 +12,27 @@
 #include <vector>
 
 #include "tofsim/sensors/Common.h"
+#include "tofsim/sensors/CwTofWaveform.h"
 #include "tofsim/sensors/SensorOutput.h"
 #include "tofsim/sensors/SensorStream.h"
 #include "tofsim/volume/TransientVolume.h"
 
 namespace tofsim::sensors {
 
-enum class Waveform { Sine, Square };
+/// Sine, square (50 % duty: a triangle correlation), or Measured: the
+/// CorrelationWaveform(s) of CwTofParams::correlation.
+enum class Waveform { Sine, Square, Measured };
 
 struct CwTofParams {
   SensorCommon common;  ///< radiometry gives photo-electrons per raw image (one phase step)
   std::vector<double> frequencies_Hz{20e6};  ///< modulation frequencies, each > 0
   int32_t phase_steps = 4;                   ///< N >= 3, reference phases 2 pi k / N
   Waveform waveform = Waveform::Sine;
+  /// Waveform::Measured: one waveform for every frequency, or one per
+  /// frequency (in the order of frequencies_Hz). Empty otherwise.
+  std::vector<CorrelationWaveform> correlation;
+  /// m in (0, 1]: C_k = 0.5 (E + ambient) + 0.5 m sum_t E_t rho_t (the AC part).
+  double modulation_contrast = 1.0;
   double ambient_e = 0.0;     ///< ambient photo-electrons per raw image and pixel
   bool shot_noise = true;     ///< Poisson noise on each raw image
   double read_noise_e = 0.0;  ///< Gaussian read noise per raw image, photo-electrons RMS
@@ -38,9 +46,27 @@ struct CwTofParams {
 
 /// Mean over [t0_s, t1_s) of the normalised correlation rho(2 pi f t - phase):
 /// cos for Sine; for Square (50% duty illumination against a 50% duty
-/// reference) the triangle wave with rho(0) = 1, rho(pi) = -1.
+/// reference) the triangle wave with rho(0) = 1, rho(pi) = -1. Built-in
+/// waveforms only (Measured: PhaseCorrelation::mean).
 double binCorrelation(Waveform waveform, double frequency_Hz, double phase_rad, double t0_s,
                       double t1_s);
+
+/// Sweep points per frequency of the `cwtof_wiggling_error` output.
+inline constexpr int32_t kWigglingSweepPoints = 1024;
+
+/// The wiggling error (F, S) in m, S = kWigglingSweepPoints: for frequency f
+/// and sweep point j, a single noise-free return (a delta: a bin of zero
+/// width, through the same per-bin correlation as the raw images) at delay
+/// theta_j / (2 pi f), theta_j = 2 pi (j + 0.5) / S, its N-step wrapped depth
+/// minus k theta_j / (2 pi f), folded into [-R/2, R/2] of R = k / f; k as for
+/// unwrapDepth_m. Throws InputError for parameters that do not fit.
+std::vector<double> wigglingError_m(const CwTofParams& params, double depthPerSecond_m_per_s);
+
+/// The noise-free phases (F, rad, [0, 2 pi)) runCwTof estimates, in double,
+/// for a pixel whose expected photo-electrons per bin of `axis` are `signal`
+/// (no ambient, no noise): the same correlation table and estimator.
+std::vector<double> noiseFreePhases(const CwTofParams& params, const TimeAxis& axis,
+                                    const std::vector<double>& signal);
 
 /// Phase in [0, 2 pi) and amplitude from N raw values C_k taken at reference
 /// phases 2 pi k / N: atan2(sum C_k sin, sum C_k cos), (2 / N) |sum C_k e^{i phi_k}|.
@@ -91,7 +117,8 @@ std::vector<std::string> cwtofWarnings(const CwTofParams& params, const TimeAxis
 /// with multipath_by_order, "cwtof_multipath_error_by_order" Array (N + 1,
 /// H, W): order k = the depth of direct + bounces 1..k - ground truth, NaN
 /// where that light is zero, and a ColorMappedImage of each order,
-/// "cwtof_multipath_error_order<k>".
+/// "cwtof_multipath_error_order<k>"; always "cwtof_wiggling_error" Array
+/// (F, S) m (wigglingError_m) with its max |error| and RMS as attributes.
 /// Every error is wrapped into (-R/2, R/2] of its depth's range R, so a phase
 /// wrap never reads as multipath. Every Image comes with a ColorMappedImage.
 std::vector<SensorOutput> runCwTof(const TransientVolume& volume, const CwTofParams& params,

@@ -158,15 +158,18 @@ inline constexpr auto kSpadFields = std::tuple{
           {.json = "colormap", .doc = "colormap of the PNGs"}},
 };
 
-inline constexpr std::array<Name<Waveform>, 2> kWaveformNames{
-    {{"sine", Waveform::Sine}, {"square", Waveform::Square}}};
+inline constexpr std::array<Name<Waveform>, 3> kWaveformNames{
+    {{"sine", Waveform::Sine}, {"square", Waveform::Square}, {"measured", Waveform::Measured}}};
 
 inline constexpr auto kCwTofFields = std::tuple{
     Custom{"frequencies", "list of frequencies", "> 0", "[\"20 MHz\"]", "Hz", "modulation frequencies"},
     Field{"phase_steps", &CwTofParams::phase_steps, Integer{.max = 1024, .atLeast = 3},
           {.json = "phase_steps", .doc = "phase steps N per frequency"}},
     Field{"waveform", &CwTofParams::waveform, Choice<Waveform>{kWaveformNames},
-          {.json = "waveform", .doc = "`sine` or `square` (50 % duty)"}},
+          {.json = "waveform", .doc = "`sine`, `square` (50 % duty) or `measured` (the `correlation` waveform)"}},
+    Custom{"correlation", "mapping or list of mappings", "", "none", "-", "measured correlation waveform (`waveform: measured`): `harmonics` (list of [re, im], c_1..c_K), `samples` (M values at phases 2 pi j / M) or `file` (.csv phase_rad,value or 1-D float32 .npy); one for all frequencies or a list of one per frequency (see \"Measured correlation waveforms\" below)"},
+    Field{"modulation_contrast", &CwTofParams::modulation_contrast, Number{Range{.min = 0.0, .max = 1.0, .minExclusive = true}},
+          {.json = "modulation_contrast", .doc = "m: the AC part of every raw image is scaled by m (0.5 m E rho)"}},
     Field{"ambient", &CwTofParams::ambient_e, Number{kNonNegative},
           {.unit = "e-", .json = "ambient_e", .doc = "ambient photo-electrons per raw image and pixel"}},
     Field{"shot_noise", &CwTofParams::shot_noise, Flag{},

@@ -37,7 +37,8 @@ struct SensorOutput {
   /// column, 0 = left), "t" (a bin of `time`), "frequency" (index into the
   /// model's frequencies), "phase_step" (reference phase 2 pi k / N), "pixel"
   /// (index into `labels`), "order" (bounce order k: direct + bounces 1..k),
-  /// "gate" (SPAD gate position k: the gate moved by k gate_step).
+  /// "gate" (SPAD gate position k: the gate moved by k gate_step), "sweep"
+  /// (CW-ToF wiggling sweep point j).
   std::vector<std::string> axes;
   /// The instrument's time axis, when one of `axes` is "t".
   std::optional<TimeAxis> time;

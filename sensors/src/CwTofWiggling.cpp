@@ -1,0 +1,44 @@
+// The wiggling error of the N-step estimator over a noise-free depth sweep,
+// from the waveform alone (no render), and the double-precision phases of a
+// pixel the tests compare with the aliasing law.
+#include <cmath>
+
+#include "CwTofCorrelator.h"
+#include "tofsim/sensors/CwTof.h"
+#include "tofsim/util/Error.h"
+
+namespace tofsim::sensors {
+
+std::vector<double> wigglingError_m(const CwTofParams& p, double k) {
+  TOFSIM_CHECK(!p.frequencies_Hz.empty() && p.phase_steps >= 3 && k > 0.0);
+  const int32_t N = p.phase_steps, S = kWigglingSweepPoints;
+  std::vector<double> errors, raw(N);
+  errors.reserve(p.frequencies_Hz.size() * S);
+  for (std::size_t f = 0; f < p.frequencies_Hz.size(); ++f) {
+    const FrequencyCorrelation rho(p, f);
+    const double fHz = p.frequencies_Hz[f], range = k / fHz;
+    for (int32_t j = 0; j < S; ++j) {
+      const double delay = (j + 0.5) / (S * fHz);
+      // A delta at `delay`: the zero-width bin [delay, delay]. The DC part
+      // 0.5 (E + ambient) and the contrast move no phase, so they are left out.
+      for (int32_t n = 0; n < N; ++n) raw[n] = rho.bin(2.0 * M_PI * n / N, delay, delay);
+      double phase = 0.0, amplitude = 0.0;
+      phaseFromSteps(raw.data(), N, phase, amplitude);
+      const double depth = k * phase / (2.0 * M_PI * fHz);
+      errors.push_back(wrapSigned(depth - k * delay, range));
+    }
+  }
+  return errors;
+}
+
+std::vector<double> noiseFreePhases(const CwTofParams& p, const TimeAxis& axis,
+                                    const std::vector<double>& signal) {
+  TOFSIM_CHECK_EQ(signal.size(), static_cast<std::size_t>(axis.bins));
+  const Correlator correlator(p, axis);
+  std::vector<double> raw, phases, amplitudes;
+  correlator.raw(signal, 0.0, raw);
+  correlator.depth(raw, phases, amplitudes, unwrapRange_m(p, axis.depthPerSecond_m_per_s()));
+  return phases;
+}
+
+}  // namespace tofsim::sensors
