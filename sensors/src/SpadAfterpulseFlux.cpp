@@ -79,6 +79,30 @@ void addFolds(const std::vector<double>& x, int64_t shift, const std::vector<Tra
     }
   }
 }
+
+// A measured delay table's releases, `kernel` folded on the cycle: kernel[r]
+// = mean sum_w P(r + wB <= delay < r + wB + 1), so next_i += sum_r kernel[r]
+// x_(i - shift - r), a direct circular convolution, O(B x the table's span in
+// bins, at most B) per cycle (no recurrence: the table has no closed form).
+std::vector<double> foldedTableKernel(const AfterpulseLaw& law, std::size_t B) {
+  const std::vector<double> masses = tableBinMasses(law);
+  std::vector<double> kernel(std::min(B, masses.size()), 0.0);
+  for (std::size_t s = 0; s < masses.size(); ++s) kernel[s % B] += law.mean * masses[s];
+  return kernel;
+}
+
+void addTableFold(const std::vector<double>& x, int64_t shift, const std::vector<double>& kernel,
+                  std::vector<double>& next) {
+  const auto B = static_cast<int64_t>(x.size());
+  for (std::size_t r = 0; r < kernel.size(); ++r) {
+    const double c = kernel[r];
+    if (c == 0.0) continue;
+    // next_i += c x_(i - o), o = (shift + r) mod B: two runs without a modulo.
+    const int64_t o = (shift + static_cast<int64_t>(r)) % B;
+    for (int64_t i = 0; i < o; ++i) next[i] += c * x[i - o + B];
+    for (int64_t i = o; i < B; ++i) next[i] += c * x[i - o];
+  }
+}
 }  // namespace
 
 const FirstOrderAfterpulses& firstOrderAfterpulses(const std::vector<double>& flux,
@@ -97,7 +121,10 @@ const FirstOrderAfterpulses& firstOrderAfterpulses(const std::vector<double>& fl
   // reaching each iterate's steady state anew took ~3 cycles for each of ~6
   // iterates, and 3 more for the draws).
   std::vector<Trap> traps;
-  if (law.on()) {
+  std::vector<double> tableKernel;
+  if (law.on() && law.tabled()) {
+    tableKernel = foldedTableKernel(law, K);
+  } else if (law.on()) {
     for (std::size_t c = 0; c < law.delays_bins.size(); ++c) {
       const double lambda = std::exp(-1.0 / law.delays_bins[c]);
       traps.emplace_back(lambda, law.mean * law.weights[c] / weights * (1.0 - lambda), K);
@@ -114,6 +141,9 @@ const FirstOrderAfterpulses& firstOrderAfterpulses(const std::vector<double>& fl
     detector.run(q, out.detections);
     next = flux;
     addFolds(out.detections, static_cast<int64_t>(deadBins) + 1, traps, p, next);
+    if (!tableKernel.empty()) {
+      addTableFold(out.detections, static_cast<int64_t>(deadBins) + 1, tableKernel, next);
+    }
     const double fluxChange = largestChange(next, out.flux);
     const double change = largestChange(out.detections, previous);
     // Converged: detections is the steady state of flux (the last cycle ran

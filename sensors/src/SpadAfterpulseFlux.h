@@ -5,7 +5,8 @@
 // avalanches per cycle in bin j (recorded or not: the free-running steady
 // state of flux' with the dead time) and a the release kernel from an
 // avalanche's bin (live again deadBins + 1 bins later, then the delay
-// mixture), folded on the cycle; iterated to its fixed point. The fast draws
+// mixture, or a measured table's mass per whole bin), folded on the cycle;
+// iterated to its fixed point. The fast draws
 // then run on flux' (on its m_j, which the fixed point gives with it). What it leaves out (releases
 // as a Poisson flux, not a renewal; reset traps) is its error against the engine
 // (SpadFastAfterpulseTest).

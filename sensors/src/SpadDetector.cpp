@@ -59,6 +59,11 @@ SpadDetector::SpadDetector(const std::vector<double>& flux, const DetectorLaws& 
     weights += ap.weights[k];
   }
   TOFSIM_CHECK(weights > 0.0);
+  if (ap.tabled()) {
+    TOFSIM_CHECK(ap.table_cdf.size() >= 2 && ap.table_edges_bins.size() == ap.table_cdf.size());
+    TOFSIM_CHECK(ap.table_edges_bins[0] >= 0.0 && ap.table_cdf.front() == 0.0 &&
+                 ap.table_cdf.back() == 1.0);
+  }
   for (double& w : laws_.afterpulses.weights) w /= weights;
   for (int32_t i = 0; i < K_; ++i) {
     TOFSIM_CHECK(flux[i] >= 0.0);
@@ -170,13 +175,19 @@ void SpadDetector::queueAfterpulses(Rng& rng) {
                          ? rng.poisson(ap.mean)
                          : static_cast<uint64_t>(rng.uniform() < ap.mean);
   for (uint64_t k = 0; k < n; ++k) {
-    std::size_t c = 0;  // the trap level: by its weight
-    if (ap.weights.size() > 1) {
-      double u = rng.uniform();
-      while (c + 1 < ap.weights.size() && u >= ap.weights[c]) u -= ap.weights[c++];
-    }
     // Its delay counts from the end of the hold-off, i.e. from liveFrom_.
-    const double at = liveFrom_.position + ap.delays_bins[c] * exp1(rng);
+    double delay = 0.0;
+    if (ap.tabled()) {
+      delay = tableDelay(ap, rng.uniform());
+    } else {
+      std::size_t c = 0;  // the trap level: by its weight
+      if (ap.weights.size() > 1) {
+        double u = rng.uniform();
+        while (c + 1 < ap.weights.size() && u >= ap.weights[c]) u -= ap.weights[c++];
+      }
+      delay = ap.delays_bins[c] * exp1(rng);
+    }
+    const double at = liveFrom_.position + delay;
     const double wraps = std::floor(at / K_);
     if (!(wraps < static_cast<double>(cycles_ - liveFrom_.cycle))) continue;  // after the end
     const double position = std::min(at - wraps * K_, std::nextafter(double(K_), 0.0));

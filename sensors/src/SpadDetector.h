@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "tofsim/sensors/Random.h"
+#include "tofsim/sensors/Spad.h"
 
 namespace tofsim::sensors::detail {
 
@@ -47,9 +48,27 @@ struct AfterpulseLaw {
   double mean = 0.0;  ///< p (Bernoulli) or mu (Poisson); 0: none
   std::vector<double> delays_bins = {1.0};
   std::vector<double> weights = {1.0};
+  /// A measured delay density in place of the mixture (non-empty): piecewise
+  /// constant between table_edges_bins (increasing, from >= 0), table_cdf
+  /// its distribution at those edges (0 .. 1). Delays by its exact inverse.
+  std::vector<double> table_edges_bins;
+  std::vector<double> table_cdf;
   bool reset = true;
   bool on() const { return mean > 0.0; }
+  bool tabled() const { return !table_cdf.empty(); }
 };
+
+/// Fills law's table from `table` (seconds) on a TDC of this bin width: its
+/// edges in bins and its distribution at them.
+void setAfterpulseTable(AfterpulseLaw& law, const SpadAfterpulseTable& table, double binWidth_s);
+
+/// One delay, in bins, by the inverse of the table's distribution at u in
+/// [0, 1): uniform within the bin where table_cdf reaches u.
+double tableDelay(const AfterpulseLaw& law, double u);
+
+/// P(s <= delay < s + 1) for s = 0, 1, ... up to the table's last edge: the
+/// release kernel in whole bins after the live moment (the fast path's).
+std::vector<double> tableBinMasses(const AfterpulseLaw& law);
 
 /// The laws of one pixel's detector and TDC.
 struct DetectorLaws {

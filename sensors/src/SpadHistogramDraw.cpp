@@ -25,6 +25,9 @@ DetectorLaws detectorLaws(const SpadParams& p, const TimeAxis& axis) {
   ap.weights = p.afterpulse_weights;
   if (ap.weights.empty()) ap.weights.assign(ap.delays_bins.size(), 1.0);
   ap.reset = p.afterpulse_traps == SpadAfterpulseTraps::Reset;
+  if (p.afterpulse_delay_table.present()) {
+    setAfterpulseTable(ap, p.afterpulse_delay_table, axis.bin_width_s);
+  }
   return laws;
 }
 }  // namespace

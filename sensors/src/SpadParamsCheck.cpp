@@ -20,6 +20,11 @@ void checkSpadParams(const SpadParams& p) {
   for (double d : p.afterpulse_delays_s) TOFSIM_CHECK(d > 0.0);
   TOFSIM_CHECK(p.afterpulse_weights.empty() ||
                p.afterpulse_weights.size() == p.afterpulse_delays_s.size());
+  if (p.afterpulse_delay_table.present()) {
+    const SpadAfterpulseTable& t = p.afterpulse_delay_table;
+    TOFSIM_CHECK(t.delays_s.size() >= 2 && t.density_per_s.size() == t.delays_s.size() &&
+                 t.edges_s.size() == t.delays_s.size() + 1);
+  }
   TOFSIM_CHECK(p.crosstalk_probability >= 0.0 && p.crosstalk_probability <= 1.0);
   TOFSIM_CHECK(p.crosstalk_delay_s >= 0.0);
   // A delayed arrival into a gate, gate ramps or per-pixel skew: the exact

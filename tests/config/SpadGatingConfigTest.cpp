@@ -1,5 +1,5 @@
 // The config side of the SPAD's gate shape, gated 1-bit frames, TDC
-// non-linearity and dark count map: located errors (file:line:col, key)
+// non-linearity, dark count map and afterpulse delay table: located errors (file:line:col, key)
 // before anything is rendered or written.
 
 #include <gtest/gtest.h>
@@ -199,6 +199,70 @@ TEST_F(SpadGatingConfigTest, DarkCountMapMustBeTheImagesShape) {
   expectError("    dark_count_map: flat.npy\n", "dark_count_map", "expected a 2-D array");
   expectError("    dark_count_map: dcr.npy\n    dark_count_log_sigma: 0.5\n",
               "dark_count_log_sigma", "replaces the log-normal");
+}
+
+// `afterpulse_delay_table`: rows (delay in s, density) from a .npy (n, 2) or
+// a two-column CSV, normalised to a piecewise-constant density whose bins
+// reach the midpoints between rows; exclusive with the exponentials; bad
+// tables located at the key with the file (and line or row).
+TEST_F(SpadGatingConfigTest, AfterpulseDelayTableIsReadNormalisedAndChecked) {
+  const std::string on = "    afterpulse_probability: 0.1\n";
+  std::ofstream(dir_ / "ap.csv") << "# measured\ndelay_s,counts\n1e-9,2\n2e-9,6\n4e-9,2\n";
+  const sensors::SpadParams p = load(on + "    afterpulse_delay_table: ap.csv\n");
+  const sensors::SpadAfterpulseTable& t = p.afterpulse_delay_table;
+  EXPECT_EQ(t.file, (dir_ / "ap.csv").lexically_normal().string());
+  ASSERT_EQ(t.delays_s.size(), 3u);
+  // Edges 0.5, 1.5, 3, 5 ns; area 2 + 9 + 4 = 15 ns; density / area.
+  const std::vector<double> edges = {0.5e-9, 1.5e-9, 3e-9, 5e-9};
+  for (std::size_t k = 0; k < 4; ++k) EXPECT_NEAR(t.edges_s[k], edges[k], 1e-21) << k;
+  EXPECT_NEAR(t.density_per_s[1], 6.0 / 15e-9, 1e-3);
+  double area = 0.0;
+  for (std::size_t k = 0; k < 3; ++k)
+    area += t.density_per_s[k] * (t.edges_s[k + 1] - t.edges_s[k]);
+  EXPECT_NEAR(area, 1.0, 1e-12);
+  // The same rows as a .npy (n, 2).
+  const std::vector<float> rows = {1e-9f, 2.0f, 2e-9f, 6.0f, 4e-9f, 2.0f};
+  io::writeNpy(dir_ / "ap.npy", {3, 2}, rows.data());
+  const sensors::SpadParams q = load(on + "    afterpulse_delay_table: ap.npy\n");
+  EXPECT_NEAR(q.afterpulse_delay_table.density_per_s[1], t.density_per_s[1], 1e3);
+  // The effective config reads back to the same table.
+  const std::string written =
+      effectiveConfigYaml(loadRunConfig(write(on + "    afterpulse_delay_table: ap.csv\n")));
+  EXPECT_EQ(written.find("afterpulse_delay:"), std::string::npos) << written;
+  std::ofstream(dir_ / "again.yaml") << written;
+  const RunConfig again = loadRunConfig(dir_ / "again.yaml");
+  EXPECT_EQ(std::get<sensors::SpadParams>(again.sensors.front().params)
+                .afterpulse_delay_table.density_per_s,
+            t.density_per_s);
+
+  const std::string key = "afterpulse_delay_table";
+  const auto table = [&](const std::string& name, const std::string& text) {
+    std::ofstream(dir_ / name) << text;
+    return on + "    afterpulse_delay_table: " + name + "\n";
+  };
+  expectError(table("neg.csv", "1e-9,1\n2e-9,-0.5\n3e-9,1\n"), key,
+              "neg.csv:2: density -0.5 is negative");
+  expectError(table("zero.csv", "1e-9,0\n2e-9,0\n"), key, "zero.csv: the density has no area");
+  expectError(table("order.csv", "1e-9,1\n3e-9,1\n2e-9,1\n"), key,
+              "order.csv:3: delays must increase");
+  expectError(table("same.csv", "1e-9,1\n1e-9,1\n"), key, "same.csv:2: delays must increase");
+  expectError(table("before.csv", "-1e-9,1\n1e-9,1\n"), key,
+              "before.csv:1: delay -1e-09 s is negative");
+  expectError(table("three.csv", "1e-9,1,2\n2e-9,1,2\n"), key, "three.csv:1: expected 2 numbers");
+  expectError(table("one.csv", "1e-9,1\n"), key, "needs at least 2 rows");
+  expectError(table("ap.txt", "1e-9,1\n"), key, ".npy (n, 2) or two-column .csv");
+  expectError(on + "    afterpulse_delay_table: missing.csv\n", key, "file not found");
+  io::writeNpy(dir_ / "flat.npy", {6}, rows.data());
+  expectError(on + "    afterpulse_delay_table: flat.npy\n", key, "expected shape (n, 2)");
+  io::writeNpy(dir_ / "wide.npy", {2, 3}, rows.data());
+  expectError(on + "    afterpulse_delay_table: wide.npy\n", key, "got (2, 3)");
+  // Exclusive with the exponentials; nothing without afterpulses.
+  expectError(on + "    afterpulse_delay: 5 ns\n    afterpulse_delay_table: ap.csv\n",
+              "afterpulse_delay", "`afterpulse_delay_table` gives the delays");
+  expectError(on + "    afterpulse_weights: [1]\n    afterpulse_delay_table: ap.csv\n",
+              "afterpulse_weights", "`afterpulse_delay_table` gives the delays");
+  expectError("    afterpulse_delay_table: ap.csv\n", key,
+              "has no effect while afterpulse_probability is 0");
 }
 
 }  // namespace

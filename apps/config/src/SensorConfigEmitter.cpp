@@ -68,7 +68,12 @@ void SensorConfigType<SpadParams>::emit(YAML::Node& n, const SpadParams& p) {
       if (p.dark_count_map.present()) n["dark_count_map"] = p.dark_count_map.file;
       return;
     }
+    if (key == "afterpulse_delay_table") {
+      if (p.afterpulse_delay_table.present()) n[key.data()] = p.afterpulse_delay_table.file;
+      return;
+    }
     if (key == "afterpulse_delay") {
+      if (p.afterpulse_delay_table.present()) return;  // exclusive: the table gives the delays
       if (p.afterpulse_delays_s.size() == 1) {
         n[key.data()] = durationText(p.afterpulse_delays_s[0]);
       } else {

@@ -183,6 +183,7 @@ void checkAfterpulses(const ConfigNode& n, const SpadParams& p) {
   if (p.afterpulse_count != SpadAfterpulseCount::Bernoulli) without = "afterpulse_count";
   if (p.afterpulse_traps != SpadAfterpulseTraps::Reset) without = "afterpulse_traps";
   if (weights > 0) without = "afterpulse_weights";
+  if (p.afterpulse_delay_table.present()) without = "afterpulse_delay_table";
   if (without) n.failKey(without, "has no effect while afterpulse_probability is 0");
 }
 }  // namespace
@@ -222,6 +223,19 @@ SpadParams SensorConfigType<SpadParams>::parse(const ConfigNode& n) {
     }
     if (key == "afterpulse_delay" || key == "afterpulse_weights") {
       parseAfterpulseList(n, key, p);
+      return;
+    }
+    if (key == "afterpulse_delay_table") {
+      if (!n.has(key.data())) return;
+      // A preset's exponentials are defaults: the explicit table wins.
+      for (const char* mixture : {"afterpulse_delay", "afterpulse_weights"}) {
+        if (n.has(mixture)) {
+          n.failKey(mixture, "`afterpulse_delay_table` gives the delays: remove `" +
+                                 std::string(mixture) + "` (or the table)");
+        }
+      }
+      p.afterpulse_delay_table = parseAfterpulseDelayTable(n);
+      p.afterpulse_weights.clear();
       return;
     }
     if (key != "plot_pixels") return;

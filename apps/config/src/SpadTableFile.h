@@ -1,7 +1,9 @@
 #pragma once
 // Private to the config module: the numeric tables a SPAD names besides its
 // IRF (IrfFile.h): a TDC's DNL table (`tdc_dnl`, a list, or a .npy / one-
-// column .csv) and a dark count map (`dark_count_map`, a 2-D .npy). Relative
+// column .csv), a dark count map (`dark_count_map`, a 2-D .npy) and an
+// afterpulse delay density (`afterpulse_delay_table`, a .npy (n, 2) or a
+// two-column .csv). Relative
 // paths resolve against the config file's folder (ConfigPath.h); every bad file is an
 // InputError located at the key, naming the file (and its CSV line).
 
@@ -36,5 +38,12 @@ PixelMap readPixelMap(const ConfigNode& n, const char* key, const char* what,
 /// `dark_count_map` of node n: a 2-D float32 .npy (H, W) of counts / s >= 0.
 /// Its shape is checked against the image in checkImage.
 sensors::SpadDarkCountMap parseDarkCountMap(const ConfigNode& n);
+
+/// `afterpulse_delay_table` of node n: rows (delay in s, density), a float32
+/// .npy of shape (n, 2) or a two-column .csv (comma separated; '#' comments,
+/// a header line allowed); at least 2 rows, delays finite, >= 0 and
+/// increasing, densities finite and >= 0 with a positive area; normalised
+/// (sensors::afterpulseTable).
+sensors::SpadAfterpulseTable parseAfterpulseDelayTable(const ConfigNode& n);
 
 }  // namespace tofsim::config

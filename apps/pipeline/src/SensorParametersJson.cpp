@@ -101,11 +101,22 @@ json modelJson(const SpadParams& p, const TimeAxis& render) {
                              {"shape", {p.dark_count_map.height, p.dark_count_map.width}}};
       return;
     }
+    if (key == "afterpulse_delay_table") {  // as used: normalised, with its bin edges
+      const SpadAfterpulseTable& t = p.afterpulse_delay_table;
+      if (!t.present()) return;
+      j["afterpulse_delay_table"] = {{"file", t.file},
+                                     {"delays_s", t.delays_s},
+                                     {"edges_s", t.edges_s},
+                                     {"density_per_s", t.density_per_s}};
+      return;
+    }
     if (key == "afterpulse_delay") {
+      if (p.afterpulse_delay_table.present()) return;  // not used
       j["afterpulse_delays_s"] = p.afterpulse_delays_s;
       return;
     }
     if (key == "afterpulse_weights") {  // as used: normalised, equal when not given
+      if (p.afterpulse_delay_table.present()) return;
       std::vector<double> w = p.afterpulse_weights;
       if (w.empty()) w.assign(p.afterpulse_delays_s.size(), 1.0);
       double sum = 0.0;

@@ -127,6 +127,7 @@ inline constexpr auto kSpadFields = std::tuple{
           {.json = "afterpulse_count", .doc = "law of the number of afterpulses per avalanche: `bernoulli` (p) or `poisson` (mu)"}},
     Custom{"afterpulse_delay", "duration or list of durations", "> 0", "10 ns", "s", "mean release delay after the end of the dead time: one exponential, or a mixture of exponentials with these means"},
     Custom{"afterpulse_weights", "list of numbers", ">= 0", "equal", "-", "weights of the mixture's exponentials (one per `afterpulse_delay`, any scale)"},
+    Custom{"afterpulse_delay_table", "file", "", "none (exponentials)", "s, 1 / s", "measured delay density in place of `afterpulse_delay` and `afterpulse_weights`: a .npy (n, 2) float32 or a two-column .csv of delay (from the end of the dead time, increasing, >= 0) and density (>= 0, any scale); piecewise constant, each row's bin reaching the midpoints to its neighbours; normalised (see \"Afterpulsing\" above)"},
     Field{"afterpulse_traps", &SpadParams::afterpulse_traps, Choice<SpadAfterpulseTraps>{kAfterpulseTrapsNames},
           {.json = "afterpulse_traps", .doc = "`reset`: each avalanche empties the traps of the ones before (the renewal model); `keep`: every release stays pending, lost only if it comes while the detector is dead"}},
     Field{"engine", &SpadParams::engine, Choice<SpadEngine>{kSpadEngineNames},

@@ -70,6 +70,28 @@ struct SpadDarkCountMap {
   bool present() const { return !rates_per_s.empty(); }
 };
 
+/// A measured afterpulse delay density (the config's `afterpulse_delay_table`,
+/// a file the config layer reads), in place of the exponentials of
+/// afterpulse_delays_s: row k, delay t_k (from the end of the hold-off) and
+/// value v_k (a density, any scale), is the bin [e_k, e_(k+1)) of a
+/// piecewise-constant density, e_k the midpoints between consecutive delays,
+/// e_0 = max(0, t_0 - (t_1 - t_0) / 2) and e_n = t_(n-1) + (t_(n-1) - t_(n-2))
+/// / 2 (an evenly spaced table: each row its bin's centre).
+struct SpadAfterpulseTable {
+  std::string file;                   ///< the file it came from (metadata)
+  std::vector<double> delays_s;       ///< t_k, increasing, >= 0
+  std::vector<double> edges_s;        ///< e_0 .. e_n
+  std::vector<double> density_per_s;  ///< v_k normalised: sum v_k (e_(k+1) - e_k) = 1; empty: none
+
+  bool present() const { return !density_per_s.empty(); }
+};
+
+/// The table of rows (delays_s[k], values[k]) as SpadAfterpulseTable says:
+/// its edges and its density normalised. Needs >= 2 increasing delays >= 0,
+/// values >= 0 with a positive area (the config layer checks them first).
+SpadAfterpulseTable afterpulseTable(std::string file, std::vector<double> delays_s,
+                                    const std::vector<double>& values);
+
 /// The time of the IRF's axis that is zero delay: the first maximum's t_k
 /// (Peak), the mean sum v_k t_k / sum v_k (Centroid, the density's exact
 /// mean), or t0_s (Time).
@@ -136,6 +158,9 @@ struct SpadParams {
   SpadAfterpulseCount afterpulse_count = SpadAfterpulseCount::Bernoulli;
   std::vector<double> afterpulse_delays_s = {10e-9};
   std::vector<double> afterpulse_weights;
+  /// A measured delay density in place of the exponentials (exclusive with
+  /// afterpulse_delays_s and afterpulse_weights, which it leaves unused).
+  SpadAfterpulseTable afterpulse_delay_table;
   SpadAfterpulseTraps afterpulse_traps = SpadAfterpulseTraps::Reset;
   /// Which draws: Auto, the exact event engine where an effect needs it
   /// (multi-stop, dead time past the cycle, afterpulses), the fast draws
