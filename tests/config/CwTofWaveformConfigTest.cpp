@@ -127,7 +127,7 @@ TEST_F(CwTofWaveformConfigTest, BadWaveformsAreLocatedErrors) {
   write("nan.csv", "0,1\n2,nan\n4,-1\n");
   {
     const std::string message = errorOf(measured + "    correlation: {file: nan.csv}\n");
-    EXPECT_NE(message.find((dir_ / "nan.csv").string() + ":2: expected two finite numbers"),
+    EXPECT_NE(message.find((dir_ / "nan.csv").string() + ":2: expected 2 finite numbers"),
               std::string::npos)
         << message;
   }

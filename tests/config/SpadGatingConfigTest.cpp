@@ -171,7 +171,7 @@ TEST_F(SpadGatingConfigTest, TdcDnlFromAListOrAFileWithLocatedErrors) {
   expectError("    bins: 2\n    tdc_dnl: [0.1, 0.1]\n", "tdc_dnl", "sum to 0.2");
   expectError("    tdc_dnl: missing.csv\n", "tdc_dnl", "file not found");
   std::ofstream(dir_ / "bad.csv") << "0.1\n0.2,3\n";
-  expectError("    tdc_dnl: bad.csv\n", "tdc_dnl", "bad.csv:2: expected one number");
+  expectError("    tdc_dnl: bad.csv\n", "tdc_dnl", "bad.csv:2: expected 1 column");
   std::ofstream(dir_ / "dnl.txt") << "0\n";
   expectError("    tdc_dnl: dnl.txt\n", "tdc_dnl", ".npy or .csv");
   // A .npy may hold a NaN (a CSV cannot: not a number): named as such.
@@ -248,7 +248,7 @@ TEST_F(SpadGatingConfigTest, AfterpulseDelayTableIsReadNormalisedAndChecked) {
   expectError(table("same.csv", "1e-9,1\n1e-9,1\n"), key, "same.csv:2: delays must increase");
   expectError(table("before.csv", "-1e-9,1\n1e-9,1\n"), key,
               "before.csv:1: delay -1e-09 s is negative");
-  expectError(table("three.csv", "1e-9,1,2\n2e-9,1,2\n"), key, "three.csv:1: expected 2 numbers");
+  expectError(table("three.csv", "1e-9,1,2\n2e-9,1,2\n"), key, "three.csv:1: expected 2 columns");
   expectError(table("one.csv", "1e-9,1\n"), key, "needs at least 2 rows");
   expectError(table("ap.txt", "1e-9,1\n"), key, ".npy (n, 2) or two-column .csv");
   expectError(on + "    afterpulse_delay_table: missing.csv\n", key, "file not found");

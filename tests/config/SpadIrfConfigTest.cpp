@@ -160,7 +160,7 @@ TEST_F(SpadIrfConfigTest, BadFilesGiveLocatedErrors) {
   write("negative.csv", "0,1\n1e-12,2\n2e-12,-0.5\n");
   expectError("{file: negative.csv}", file, "negative.csv:3: negative value -0.5");
   write("words.csv", "0,1\n1e-12,two\n");
-  expectError("{file: words.csv}", file, "words.csv:2: expected two numbers");
+  expectError("{file: words.csv}", file, "words.csv:2: expected 2 finite numbers");
   write("uneven.csv", "0,1\n1e-12,2\n3e-12,1\n");
   expectError("{file: uneven.csv}", file, "uneven.csv:3: times are not evenly spaced");
   write("flat.csv", "0,1\n1e-12,1\n");

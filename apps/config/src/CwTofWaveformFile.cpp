@@ -6,6 +6,7 @@
 #include <string>
 
 #include "ConfigPath.h"
+#include "CsvRows.h"
 #include "ShortestNumber.h"
 #include "TableText.h"
 #include "tofsim/io/Npy.h"
@@ -27,36 +28,13 @@ void evenlySpaced(CorrelationWaveform& w) {
 // phases increasing over one period [0, 2 pi]; a row at 2 pi closes the
 // period and must repeat the value at phase 0 (it is then dropped).
 void readCsv(const ConfigNode& n, const std::filesystem::path& path, CorrelationWaveform& w) {
-  std::ifstream in(path);
-  if (!in) n.failKey("file", "cannot read " + path.string());
-  std::string line;
   int lineNo = 0;
-  bool data = false;
   const auto failLine = [&](const std::string& message) {
-    n.failKey("file", path.string() + ":" + std::to_string(lineNo) + ": " + message);
+    failAt(n, "file", path, lineNo, message);
   };
-  while (std::getline(in, line)) {
-    ++lineNo;
-    const std::string t = trimmedText(line);
-    if (t.empty() || t[0] == '#') continue;
-    std::vector<std::string> cells;
-    std::stringstream parts(t);
-    for (std::string cell; std::getline(parts, cell, ',');) cells.push_back(cell);
-    if (t.back() == ',') cells.push_back("");
-    double phase = 0.0, value = 0.0;
-    const bool numbers =
-        cells.size() == 2 && wholeNumber(cells[0], phase) && wholeNumber(cells[1], value);
-    if (!numbers && !data && cells.size() == 2) {  // a header: "phase_rad,value"
-      data = true;
-      continue;
-    }
-    data = true;
-    if (cells.size() != 2) {
-      failLine("expected 2 columns (phase in rad, value), got " + std::to_string(cells.size()));
-    }
-    if (!numbers) {
-      failLine("expected two finite numbers (phase in rad, value), got '" + t + "'");
-    }
+  for (const CsvRow& row : readCsvRows(n, "file", path, 2, "phase in rad, value")) {
+    lineNo = row.line;
+    const double phase = row.cells[0], value = row.cells[1];
     if (phase < 0.0 || phase > kTwoPi + 1e-9) {
       failLine("phase " + shortest(phase) + " rad is outside one period [0, 2 pi]");
     }

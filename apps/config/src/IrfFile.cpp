@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "ConfigPath.h"
+#include "CsvRows.h"
 #include "QuantityText.h"
 #include "ShortestNumber.h"
 #include "TableText.h"
@@ -31,36 +32,15 @@ struct Samples {
 // Two columns, time (s) and value, comma separated; '#' lines are comments
 // and a first line that is not two numbers a header.
 Samples readCsv(const ConfigNode& n, const std::filesystem::path& path) {
-  std::ifstream in(path);
-  if (!in) n.failKey("file", "cannot read the IRF file " + path.string());
   Samples s;
   std::vector<double> times;
-  std::string line;
   int lineNo = 0;
-  bool data = false;
   const auto failLine = [&](const std::string& message) {
-    n.failKey("file", path.string() + ":" + std::to_string(lineNo) + ": " + message);
+    failAt(n, "file", path, lineNo, message);
   };
-  while (std::getline(in, line)) {
-    ++lineNo;
-    const std::string t = trimmedText(line);
-    if (t.empty() || t[0] == '#') continue;
-    std::vector<std::string> cells;
-    std::stringstream parts(t);
-    for (std::string cell; std::getline(parts, cell, ',');) cells.push_back(cell);
-    if (!t.empty() && t.back() == ',') cells.push_back("");
-    double time = 0.0, value = 0.0;
-    const bool numbers =
-        cells.size() == 2 && wholeNumber(cells[0], time) && wholeNumber(cells[1], value);
-    if (!numbers && !data && cells.size() == 2) {  // a header: "time,value"
-      data = true;
-      continue;
-    }
-    data = true;
-    if (cells.size() != 2) {
-      failLine("expected 2 columns (time in s, value), got " + std::to_string(cells.size()));
-    }
-    if (!numbers) failLine("expected two numbers (time in s, value), got '" + t + "'");
+  for (const CsvRow& row : readCsvRows(n, "file", path, 2, "time in s, value")) {
+    lineNo = row.line;
+    const double time = row.cells[0], value = row.cells[1];
     if (value < 0.0) failLine("negative value " + shortest(value) + " (an IRF is a density)");
     if (times.size() >= 2) {
       const double step = times[1] - times[0];

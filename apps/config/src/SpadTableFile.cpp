@@ -8,6 +8,7 @@
 #include <utility>
 
 #include "ConfigPath.h"
+#include "CsvRows.h"
 #include "ShortestNumber.h"
 #include "TableText.h"
 #include "tofsim/io/Npy.h"
@@ -37,28 +38,9 @@ io::NpyArray readNpyAt(const ConfigNode& n, const char* key, const std::filesyst
 // line (a header) are skipped.
 std::vector<double> readColumnCsv(const ConfigNode& n, const char* key,
                                   const std::filesystem::path& path) {
-  std::ifstream in(path);
-  if (!in) n.failKey(key, "cannot read " + path.string());
   std::vector<double> values;
-  std::string line;
-  int lineNo = 0;
-  bool data = false;
-  while (std::getline(in, line)) {
-    ++lineNo;
-    const std::string t = trimmedText(line);
-    if (t.empty() || t[0] == '#') continue;
-    double v = 0.0;
-    const bool number = wholeNumber(t, v);
-    if (!number && !data) {  // a header
-      data = true;
-      continue;
-    }
-    data = true;
-    if (!number) {
-      n.failKey(key, path.string() + ":" + std::to_string(lineNo) +
-                         ": expected one number per line (a DNL value), got '" + t + "'");
-    }
-    values.push_back(v);
+  for (const CsvRow& row : readCsvRows(n, key, path, 1, "a DNL value")) {
+    values.push_back(row.cells[0]);
   }
   return values;
 }
@@ -70,35 +52,11 @@ struct Rows {
 };
 
 Rows readTwoColumnCsv(const ConfigNode& n, const char* key, const std::filesystem::path& path) {
-  std::ifstream in(path);
-  if (!in) n.failKey(key, "cannot read " + path.string());
   Rows rows;
-  std::string line;
-  int lineNo = 0;
-  bool data = false;
-  while (std::getline(in, line)) {
-    ++lineNo;
-    const std::string t = trimmedText(line);
-    if (t.empty() || t[0] == '#') continue;
-    std::vector<std::string> cells;
-    std::stringstream parts(t);
-    for (std::string cell; std::getline(parts, cell, ',');) cells.push_back(cell);
-    if (t.back() == ',') cells.push_back("");
-    double delay = 0.0, value = 0.0;
-    const bool numbers =
-        cells.size() == 2 && wholeNumber(cells[0], delay) && wholeNumber(cells[1], value);
-    const std::string at = path.string() + ":" + std::to_string(lineNo);
-    if (!numbers && !data && cells.size() == 2) {  // a header: "delay_s,density"
-      data = true;
-      continue;
-    }
-    data = true;
-    if (!numbers) {
-      n.failKey(key, at + ": expected 2 numbers (delay in s, density), got '" + t + "'");
-    }
-    rows.delays.push_back(delay);
-    rows.values.push_back(value);
-    rows.where.push_back(at);
+  for (const CsvRow& row : readCsvRows(n, key, path, 2, "delay in s, density")) {
+    rows.delays.push_back(row.cells[0]);
+    rows.values.push_back(row.cells[1]);
+    rows.where.push_back(path.string() + ":" + std::to_string(row.line));
   }
   return rows;
 }
