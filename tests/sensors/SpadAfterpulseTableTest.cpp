@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "AfterpulseIntervals.h"
 #include "SpadAfterpulseFlux.h"
 #include "SpadDetector.h"
 #include "TestVolumes.h"
@@ -23,54 +24,6 @@
 
 namespace tofsim::sensors {
 namespace {
-
-// The live times Y (from the end of each dead time to the next avalanche, in
-// bins) of a free-running detector, dark rate r per bin, reset traps.
-std::vector<double> liveTimes(double r, const detail::DetectorLaws& laws, uint64_t cycles,
-                              uint64_t seed) {
-  const std::vector<double> flux(50, r);
-  detail::SpadDetector detector(flux, laws, cycles);
-  Rng rng(seed, 2);
-  std::vector<double> h(flux.size(), 0.0), y;
-  const auto absolute = [](const detail::Moment& m) {
-    return static_cast<double>(m.cycle) * 50.0 + m.position;
-  };
-  for (;;) {
-    const double live = absolute(detector.liveFrom());
-    const detail::Event e = detector.next(rng);
-    if (!(e.at.cycle < cycles)) break;
-    y.push_back(absolute(e.at) - live);
-    detector.fire(e, rng, h);
-  }
-  return y;
-}
-
-// P(Y > y) of the renewal model (SpadAfterpulseTest): e^-ry E[S(y)^N], S the
-// delay's survival: e^-ry (1 - p + p S) (Bernoulli), e^-ry e^-mu (1 - S)
-// (Poisson).
-struct IntervalLaw {
-  double r;
-  bool poisson;
-  double mean;
-  std::function<double(double)> delaySurvival;
-  double survival(double y) const {
-    const double s = delaySurvival(y);
-    return std::exp(-r * y) * (poisson ? std::exp(-mean * (1.0 - s)) : 1.0 - mean + mean * s);
-  }
-};
-
-// Pearson's statistic in cells of 0.25 bins up to 80 bins, and the rest.
-tofsim::test::ChiSquare intervalChiSquare(const std::vector<double>& y, const IntervalLaw& law) {
-  const double width = 0.25, last = 80.0;
-  const auto cells = static_cast<std::size_t>(last / width) + 1;
-  std::vector<double> observed(cells, 0.0), expected(cells, 0.0);
-  for (double v : y) observed[std::min(cells - 1, static_cast<std::size_t>(v / width))] += 1.0;
-  for (std::size_t c = 0; c + 1 < cells; ++c) {
-    expected[c] = y.size() * (law.survival(c * width) - law.survival((c + 1) * width));
-  }
-  expected.back() = y.size() * law.survival(last);
-  return tofsim::test::pearson(observed, expected);
-}
 
 // Rows (t_k, density(t_k)) at t_k = (k + 1/2) step for t_k < span: each
 // row's bin [k step, (k + 1) step) (the midpoint rule of Spad.h).

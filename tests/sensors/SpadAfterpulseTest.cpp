@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "AfterpulseIntervals.h"
 #include "SpadBruteForce.h"
 #include "SpadDetector.h"
 #include "SpadEventEngine.h"
@@ -22,58 +23,6 @@
 
 namespace tofsim::sensors {
 namespace {
-
-// The live time Y from the end of each dead time to the next avalanche, in
-// bins, of a free-running detector with a dark rate r per bin.
-std::vector<double> liveTimes(double r, const detail::DetectorLaws& laws, uint64_t cycles) {
-  const std::vector<double> flux(50, r);
-  detail::SpadDetector detector(flux, laws, cycles);
-  Rng rng(41, 2);
-  std::vector<double> h(flux.size(), 0.0), y;
-  const auto absolute = [&](const detail::Moment& m) {
-    return static_cast<double>(m.cycle) * 50.0 + m.position;
-  };
-  for (;;) {
-    const double live = absolute(detector.liveFrom());
-    const detail::Event e = detector.next(rng);
-    if (!(e.at.cycle < cycles)) break;
-    y.push_back(absolute(e.at) - live);
-    detector.fire(e, rng, h);
-  }
-  return y;
-}
-
-// P(Y > y) with N releases pending (the traps reset at each avalanche): no
-// dark count before y and no release, e^-ry E[S(y)^N], S(y) = sum_k w_k
-// e^-y/tau_k: e^-ry (1 - p + p S) for Bernoulli(p), e^-ry e^-mu (1 - S) for
-// Poisson(mu). (Its density for Bernoulli: (1 - p) r e^-ry + sum_k p w_k
-// (r + 1/tau_k) e^-(r + 1/tau_k) y.)
-struct IntervalLaw {
-  double r;
-  bool poisson;
-  double mean;
-  std::vector<double> taus, weights;  // weights normalised
-  double survival(double y) const {
-    double s = 0.0;
-    for (std::size_t k = 0; k < taus.size(); ++k) s += weights[k] * std::exp(-y / taus[k]);
-    const double pending = poisson ? std::exp(-mean * (1.0 - s)) : 1.0 - mean + mean * s;
-    return std::exp(-r * y) * pending;
-  }
-};
-
-// Pearson's statistic of the live times in cells [0, 0.25), [0.25, 0.5), ...
-// up to 80 bins, and the rest.
-tofsim::test::ChiSquare intervalChiSquare(const std::vector<double>& y, const IntervalLaw& law) {
-  const double width = 0.25, last = 80.0;
-  const auto cells = static_cast<std::size_t>(last / width) + 1;
-  std::vector<double> observed(cells, 0.0), expected(cells, 0.0);
-  for (double v : y) observed[std::min(cells - 1, static_cast<std::size_t>(v / width))] += 1.0;
-  for (std::size_t c = 0; c + 1 < cells; ++c) {
-    expected[c] = y.size() * (law.survival(c * width) - law.survival((c + 1) * width));
-  }
-  expected.back() = y.size() * law.survival(last);
-  return tofsim::test::pearson(observed, expected);
-}
 
 detail::DetectorLaws mixtureLaws(bool poisson, double mean, bool reset = true) {
   detail::DetectorLaws laws;
@@ -93,15 +42,14 @@ TEST(SpadAfterpulseTest, MixtureDelaysGiveTheRenewalIntervalLaw) {
   for (const bool poisson : {false, true}) {
     SCOPED_TRACE(poisson ? "poisson" : "bernoulli");
     const double mean = poisson ? 0.8 : 0.6;
-    const std::vector<double> y = liveTimes(r, mixtureLaws(poisson, mean), 200000);
-    const IntervalLaw law{r, poisson, mean, {2.0, 20.0}, {0.7, 0.3}};
+    const std::vector<double> y = liveTimes(r, mixtureLaws(poisson, mean), 200000, 41);
+    const IntervalLaw law{r, poisson, mean, mixtureSurvival({2.0, 20.0}, {0.7, 0.3})};
     const tofsim::test::ChiSquare fit = intervalChiSquare(y, law);
     EXPECT_LT(fit.statistic, tofsim::test::chiSquareQuantile(fit.dof, 3.09));
     // Rejected: one exponential of the mixture's mean delay; no afterpulses;
     // the other count law with the same chance of at least one release.
     IntervalLaw one = law;
-    one.taus = {0.7 * 2.0 + 0.3 * 20.0};
-    one.weights = {1.0};
+    one.delaySurvival = mixtureSurvival({0.7 * 2.0 + 0.3 * 20.0}, {1.0});
     IntervalLaw none = law;
     none.mean = 0.0;
     IntervalLaw other = law;
