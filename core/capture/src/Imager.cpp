@@ -71,15 +71,10 @@ PixelSteps::PixelSteps(const Imager& imager, float side, int32_t x, int32_t y) {
     pinhole_ = true;
     origin_ = c->position_world;
     forward_ = c->forward();
-    if (c->lens) {
-      // The distorted pixel's own ray steps: they vary across the image.
-      const Camera::RaySteps steps = c->rayStepsAt(x, y);
-      stepX_ = steps.alongX * side;
-      stepY_ = steps.alongY * side;
-    } else {
-      stepX_ = c->rayStepAlongX() * side;
-      stepY_ = c->rayStepAlongY() * side;
-    }
+    // A lens's steps are the distorted pixel's own; a pinhole's the same everywhere.
+    const Camera::RaySteps steps = c->rayStepsAt(x, y);
+    stepX_ = steps.alongX * side;
+    stepY_ = steps.alongY * side;
   } else {
     // The points' own spacing: the cell each point stands for.
     const auto& p = std::get<PointSetImager>(imager);

@@ -1,0 +1,100 @@
+#include "CameraConfigParser.h"
+
+#include <cmath>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "LensConfig.h"
+#include "SpadTableFile.h"
+#include "Vec3Key.h"
+
+namespace tofsim::config {
+
+namespace {
+
+// camera.vignetting: none, cos4 or a .npy map of the camera's size.
+capture::Vignetting parseVignetting(const ConfigNode& node, const capture::Camera& camera) {
+  capture::Vignetting v;
+  const std::string text = node.getString("vignetting", "none");
+  if (text == "none") return v;
+  if (text == "cos4") {
+    v.kind = capture::Vignetting::Kind::Cos4;
+    return v;
+  }
+  if (text.size() < 4 || text.substr(text.size() - 4) != ".npy") {
+    node.failKey("vignetting", "must be none, cos4 or a .npy map of gains (got '" + text + "')");
+  }
+  PixelMap map = readPixelMap(node, "vignetting", "vignetting map", "gain");
+  if (map.width != camera.width || map.height != camera.height) {
+    node.failKey("vignetting", map.file + ": a " + std::to_string(map.height) + " x " +
+                                   std::to_string(map.width) + " map for a " +
+                                   std::to_string(camera.height) + " x " +
+                                   std::to_string(camera.width) + " (H x W) image");
+  }
+  v.kind = capture::Vignetting::Kind::Map;
+  v.width = map.width;
+  v.height = map.height;
+  v.file = map.file;
+  v.map.assign(map.values.begin(), map.values.end());
+  return v;
+}
+
+}  // namespace
+
+void parseCamera(const ConfigNode& node, CameraConfig& out) {
+  out.gltf_camera = node.getString("gltf_camera", "");
+  capture::Camera& c = out.camera;
+  c.position_world = vec3Of(node, "position", c.position_world);
+  c.look_at_world = vec3Of(node, "look_at", c.look_at_world);
+  c.up_world = vec3Of(node, "up", c.up_world);
+  std::optional<ParsedLens> lens;
+  if (node.has("lens")) {
+    if (node.has("fov_y")) {
+      node.failKey("fov_y", "a lens's camera matrix sets the field of view: give fov_y or lens");
+    }
+    lens = parseLens(node);
+  }
+  c.fov_y_deg = static_cast<float>(node.getAngle_deg("fov_y", c.fov_y_deg));
+  if (!(c.fov_y_deg > 0.0f && c.fov_y_deg < 180.0f)) {
+    node.failKey("fov_y", "must be in (0, 180) degrees");
+  }
+  std::vector<double> defaultResolution = {64.0, 64.0};
+  if (lens && lens->image_size)
+    defaultResolution = {double(lens->image_size->x), double(lens->image_size->y)};
+  const std::vector<double> res = node.getDoubles("resolution", 2, defaultResolution);
+  for (double r : res) {
+    if (r < 1 || r > 16384 || r != std::floor(r)) {
+      node.failKey("resolution", "must be two integers in [1, 16384] (width, height)");
+    }
+  }
+  c.width = static_cast<int32_t>(res[0]);
+  c.height = static_cast<int32_t>(res[1]);
+  if (lens) {
+    // A calibration holds for the image it was made at: another resolution
+    // would need the camera matrix scaled, which is the user's to state.
+    if (lens->image_size && *lens->image_size != glm::ivec2(c.width, c.height)) {
+      node.failKey("resolution", "differs from the calibration's image size " +
+                                     std::to_string(lens->image_size->x) + " x " +
+                                     std::to_string(lens->image_size->y) + " (" +
+                                     lens->calibration_file + ")");
+    }
+    try {
+      capture::checkLensInvertible(lens->lens, c.width, c.height);
+    } catch (const InputError& e) {
+      node.failKey("lens", e.what());
+    }
+    c.lens = lens->lens;
+    out.lens_calibration = lens->calibration_file;
+  }
+  out.vignetting = parseVignetting(node, c);
+  if (out.gltf_camera.empty()) {
+    const glm::vec3 forward = c.look_at_world - c.position_world;
+    if (glm::length(forward) <= 0.0f) node.failKey("look_at", "must differ from position");
+    if (glm::length(glm::cross(forward, c.up_world)) <= 1e-6f * glm::length(forward)) {
+      node.failKey("up", "must not be parallel to the view direction");
+    }
+  }
+}
+
+}  // namespace tofsim::config
