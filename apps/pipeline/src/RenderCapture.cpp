@@ -8,6 +8,7 @@
 #include "tofsim/pipeline/AxisReport.h"
 #include "tofsim/pipeline/Capture.h"
 #include "tofsim/pipeline/FiniteSegments.h"
+#include "tofsim/pipeline/PsfSegments.h"
 #include "tofsim/pipeline/RendererFactory.h"
 #include "tofsim/pipeline/SteadySink.h"
 #include "tofsim/pipeline/VignettedSegments.h"
@@ -30,7 +31,15 @@ RenderedCapture renderCapture(const config::RunConfig& config, const capture::Re
   std::vector<capture::SegmentSink*> sinks = consumers.sinks;
   sinks.push_back(&steady);
   capture::TeeSink tee(std::move(sinks));
-  FiniteSegments finite(tee, axis.bins, consumers.bounces);
+  // The lens's PSF on the cleaned light (no NaN to spread), before anyone
+  // reads it; it holds the volume, so it is checked against the budget first.
+  std::optional<PsfSegments> psf;
+  if (const auto& p = config.camera.psf) {
+    checkPsfFits(config, camera.width, camera.height, axis.bins, consumers.bounces.size());
+    psf.emplace(tee, camera.width, camera.height, axis.bins, p->kernel, config.cpu_threads);
+  }
+  capture::SegmentSink& cleaned = psf ? static_cast<capture::SegmentSink&>(*psf) : tee;
+  FiniteSegments finite(cleaned, axis.bins, consumers.bounces);
   // The camera's vignetting, before anything reads the light.
   std::optional<VignettedSegments> vignetted;
   if (std::vector<float> gains = capture::vignettingGains(camera, config.camera.vignetting);

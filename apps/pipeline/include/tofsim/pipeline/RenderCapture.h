@@ -2,7 +2,8 @@
 // One way through a render, for the CLI's run (RenderRun.h) and the Python
 // module's in-memory render alike: the job from the config with the time
 // axis checked before rendering, then the configured renderer's segments
-// made finite (FiniteSegments.h) and fed to the caller's consumers, the
+// made finite (FiniteSegments.h), through the lens's PSF (PsfSegments.h)
+// and fed to the caller's consumers, the
 // steady image summed, and the light off the time axis measured and checked
 // (AxisReport.h: a warning, or under render.strict an error).
 
