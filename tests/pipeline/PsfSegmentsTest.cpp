@@ -4,8 +4,9 @@
 // again, the segments as they came. Through renderCapture (CPU backend, a
 // small plane seen head-on): each bin's light is kept (the kernel stays in
 // the image), the values are the sharp render's convolved to the bit, an
-// identity PSF changes no byte, and a volume over render.memory_budget is an
-// error at camera.psf before rendering.
+// identity PSF changes no byte, a consumer before the PSF gets the sharp
+// light, and a volume over render.memory_budget is an error at camera.psf
+// before rendering.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -106,12 +107,16 @@ class RenderCapturePsfTest : public test::TempDirTest {
         render + "}\n";
     return config::loadRunConfigText(yaml, dir_ / "c.yaml");
   }
-  Collect render(const config::RunConfig& c) {
+  // What the outputs see, and (before) what a consumer of the light before
+  // the PSF sees.
+  Collect render(const config::RunConfig& c, Collect* before = nullptr) {
     const scene::Scene plane = test::makePlane(0.3f);
     const capture::RenderJob job = prepareCapture(c, plane);
     Collect out(kBins * capture::kChannels);
     Progress progress("render", true);
-    renderCapture(c, job, gl::EglPlatform::Auto, {{&out}, {}}, progress);
+    CaptureConsumers consumers{{&out}, {}, {}};
+    if (before) consumers.beforePsf.push_back(before);
+    renderCapture(c, job, gl::EglPlatform::Auto, consumers, progress);
     return out;
   }
 };
@@ -121,7 +126,9 @@ TEST_F(RenderCapturePsfTest, KeepsEachBinsLightAndConvolvesTheSharpRender) {
   const Collect identity = render(config(", psf: {}"));
   const config::RunConfig blurredConfig =
       config(", psf: {core_sigma: 0.6, halo_weight: 0.1, halo_radius: 1.5}");
-  const Collect blurred = render(blurredConfig);
+  Collect beforePsf(kBins * capture::kChannels);
+  const Collect blurred = render(blurredConfig, &beforePsf);
+  EXPECT_EQ(beforePsf.volumes, sharp.volumes);  // a sensor applying the PSF itself
   // A PSF that is a delta: the gather and the re-sent segments change no byte.
   for (const char* name : {"direct", "indirect", "total"}) {
     EXPECT_EQ(identity.volumes.at(name), sharp.volumes.at(name)) << name;

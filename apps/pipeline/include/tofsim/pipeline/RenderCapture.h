@@ -31,6 +31,11 @@ capture::RenderJob prepareCapture(const config::RunConfig& config, const scene::
 struct CaptureConsumers {
   std::vector<capture::SegmentSink*> sinks;
   std::vector<int32_t> bounces;
+  /// Consumers of the light before the lens's PSF (camera.psf), given each
+  /// segment as it comes: a sensor that applies the PSF on its own images
+  /// (optics::applyPsf on CW-ToF's raws, far cheaper than on every bin).
+  /// Without a PSF they see what `sinks` see.
+  std::vector<capture::SegmentSink*> beforePsf;
 };
 
 struct RenderedCapture {
