@@ -1,5 +1,6 @@
 #include "Fft2d.h"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <utility>
@@ -52,24 +53,45 @@ void Fft2d::Line::transform(std::complex<double>* data, bool inverse) const {
   }
 }
 
-Fft2d::Fft2d(int32_t nx, int32_t ny) : nx_(nx), ny_(ny), alongX_(nx), alongY_(ny) {}
-
-void Fft2d::transform(std::complex<double>* data, bool inverse) const {
-  for (int32_t y = 0; y < ny_; ++y) alongX_.transform(data + std::size_t(y) * nx_, inverse);
-  std::vector<std::complex<double>> column(ny_);
-  for (int32_t x = 0; x < nx_; ++x) {
-    for (int32_t y = 0; y < ny_; ++y) column[y] = data[std::size_t(y) * nx_ + x];
-    alongY_.transform(column.data(), inverse);
-    for (int32_t y = 0; y < ny_; ++y) data[std::size_t(y) * nx_ + x] = column[y];
+void Fft2d::Line::transformRows(std::complex<double>* data, int32_t width, bool inverse) const {
+  const auto row = [&](int32_t i) { return data + static_cast<std::size_t>(i) * width; };
+  for (int32_t i = 0; i < n; ++i) {
+    if (i < reversed[i]) std::swap_ranges(row(i), row(i) + width, row(reversed[i]));
+  }
+  for (int32_t len = 2; len <= n; len *= 2) {
+    const int32_t half = len / 2, step = n / len;
+    for (int32_t start = 0; start < n; start += len) {
+      for (int32_t j = 0; j < half; ++j) {
+        const std::complex<double> w = inverse ? std::conj(roots[j * step]) : roots[j * step];
+        std::complex<double>* a = row(start + j);
+        std::complex<double>* b = row(start + j + half);
+        for (int32_t x = 0; x < width; ++x) {
+          const std::complex<double> bw = b[x] * w;
+          b[x] = a[x] - bw;
+          a[x] += bw;
+        }
+      }
+    }
   }
 }
 
-void Fft2d::forward(std::complex<double>* data) const { transform(data, false); }
+Fft2d::Fft2d(int32_t nx, int32_t ny) : nx_(nx), ny_(ny), alongX_(nx), alongY_(ny) {}
 
-void Fft2d::inverse(std::complex<double>* data) const {
-  transform(data, true);
+void Fft2d::forward(std::complex<double>* data, int32_t rows) const {
+  TOFSIM_CHECK(rows >= 0 && rows <= ny_);
+  for (int32_t y = 0; y < rows; ++y) alongX_.transform(data + std::size_t(y) * nx_, false);
+  alongY_.transformRows(data, nx_, false);
+}
+
+void Fft2d::inverse(std::complex<double>* data, int32_t rows) const {
+  TOFSIM_CHECK(rows >= 0 && rows <= ny_);
+  alongY_.transformRows(data, nx_, true);
   const double scale = 1.0 / (double(nx_) * ny_);
-  for (std::size_t i = 0; i < std::size_t(nx_) * ny_; ++i) data[i] *= scale;
+  for (int32_t y = 0; y < rows; ++y) {
+    std::complex<double>* r = data + std::size_t(y) * nx_;
+    alongX_.transform(r, true);
+    for (int32_t x = 0; x < nx_; ++x) r[x] *= scale;
+  }
 }
 
 }  // namespace tofsim::optics

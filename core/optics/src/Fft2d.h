@@ -19,9 +19,14 @@ class Fft2d {
   int32_t nx() const { return nx_; }
   int32_t ny() const { return ny_; }
   /// In place on nx * ny values, row-major: X[k] = sum x[n] e^(-2 pi i k n / N).
-  void forward(std::complex<double>* data) const;
-  /// The inverse, divided by nx * ny: inverse(forward(x)) = x.
-  void inverse(std::complex<double>* data) const;
+  /// Rows from `rows` on must be zero (a zero-padded image): their 1-D
+  /// transforms are skipped.
+  void forward(std::complex<double>* data, int32_t rows) const;
+  void forward(std::complex<double>* data) const { forward(data, ny_); }
+  /// The inverse, divided by nx * ny: inverse(forward(x)) = x; only the
+  /// first `rows` rows are completed (the others are left partial).
+  void inverse(std::complex<double>* data, int32_t rows) const;
+  void inverse(std::complex<double>* data) const { inverse(data, ny_); }
 
   /// The smallest power of two >= n.
   static int32_t powerOfTwoAtLeast(int32_t n);
@@ -31,12 +36,13 @@ class Fft2d {
     explicit Line(int32_t n);
     /// In place on n contiguous values; the inverse without the 1 / n.
     void transform(std::complex<double>* data, bool inverse) const;
+    /// The same along the other axis of n rows of `width` values: whole rows
+    /// combined at each step (contiguous, vectorisable).
+    void transformRows(std::complex<double>* data, int32_t width, bool inverse) const;
     int32_t n;
     std::vector<int32_t> reversed;            ///< bit-reversed index of each index
     std::vector<std::complex<double>> roots;  ///< e^(-2 pi i k / n), k < n / 2
   };
-  void transform(std::complex<double>* data, bool inverse) const;
-
   int32_t nx_, ny_;
   Line alongX_, alongY_;
 };

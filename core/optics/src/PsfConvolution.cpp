@@ -182,9 +182,9 @@ class PlaneConvolver {
         grid[static_cast<std::size_t>(y) * px + x] = Complex(in[0][i], n > 1 ? in[1][i] : 0.0);
       }
     }
-    t.fft->forward(grid.data());
+    t.fft->forward(grid.data(), height_);  // the padding rows are zero
     for (std::size_t i = 0; i < grid.size(); ++i) grid[i] *= t.spectrum[i];
-    t.fft->inverse(grid.data());
+    t.fft->inverse(grid.data(), height_);  // only the image's rows are read
     for (int32_t y = 0; y < height_; ++y) {
       for (int32_t x = 0; x < width_; ++x) {
         const std::size_t i = static_cast<std::size_t>(y) * width_ + x;
@@ -198,6 +198,9 @@ class PlaneConvolver {
   int32_t width_, height_;
   std::vector<Term> terms_;
 };
+
+// Lit planes per task (even: the FFT's pairs stay whole).
+constexpr std::size_t kPlanesPerTask = 16;
 
 template <class T>
 void applyPsfTo(const PsfKernel& kernel, T* values, std::size_t planes, const PlaneLayout& layout,
@@ -219,22 +222,27 @@ void applyPsfTo(const PsfKernel& kernel, T* values, std::size_t planes, const Pl
     if (lit[j]) litPlanes.push_back(j);
   }
   const PlaneConvolver convolver(kernel, layout.width, layout.height, options.method);
-  // Fixed pairs of lit planes (the FFT's two planes per transform): the
-  // tasks, and so the bytes, do not depend on the thread count.
-  const std::size_t tasks = (litPlanes.size() + 1) / 2;
-  parallelFor(tasks, resolveThreads(options.threads), [&](std::size_t task) {
-    const int n = 2 * task + 1 < litPlanes.size() ? 2 : 1;
-    std::vector<double> in[2], out[2];
-    for (int i = 0; i < n; ++i) {
-      in[i].resize(pixels);
-      out[i].resize(pixels);
-      for (std::size_t p = 0; p < pixels; ++p) in[i][p] = double(at(litPlanes[2 * task + i], p));
+  // Fixed blocks of lit planes, each task one block: the tasks, and so the
+  // bytes, do not depend on the thread count. A block is gathered and
+  // written back in one pass over the pixels, which reads a transient's
+  // neighbouring bins together rather than one strided plane at a time;
+  // within it the planes go in pairs (the FFT's two planes per transform).
+  const std::size_t blocks = (litPlanes.size() + kPlanesPerTask - 1) / kPlanesPerTask;
+  parallelFor(blocks, resolveThreads(options.threads), [&](std::size_t block) {
+    const std::size_t first = block * kPlanesPerTask;
+    const std::size_t n = std::min(kPlanesPerTask, litPlanes.size() - first);
+    std::vector<double> in(n * pixels), out(n * pixels);
+    for (std::size_t p = 0; p < pixels; ++p) {
+      for (std::size_t i = 0; i < n; ++i) in[i * pixels + p] = double(at(litPlanes[first + i], p));
     }
-    const double* inputs[2] = {in[0].data(), n > 1 ? in[1].data() : nullptr};
-    double* outputs[2] = {out[0].data(), n > 1 ? out[1].data() : nullptr};
-    convolver.convolve(inputs, outputs, n);
-    for (int i = 0; i < n; ++i) {
-      for (std::size_t p = 0; p < pixels; ++p) at(litPlanes[2 * task + i], p) = T(out[i][p]);
+    for (std::size_t i = 0; i < n; i += 2) {
+      const int pair = i + 1 < n ? 2 : 1;
+      const double* inputs[2] = {&in[i * pixels], pair > 1 ? &in[(i + 1) * pixels] : nullptr};
+      double* outputs[2] = {&out[i * pixels], pair > 1 ? &out[(i + 1) * pixels] : nullptr};
+      convolver.convolve(inputs, outputs, pair);
+    }
+    for (std::size_t p = 0; p < pixels; ++p) {
+      for (std::size_t i = 0; i < n; ++i) at(litPlanes[first + i], p) = T(out[i * pixels + p]);
     }
   });
 }
