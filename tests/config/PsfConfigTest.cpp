@@ -51,7 +51,7 @@ TEST_F(PsfConfigTest, ParametricKernelIsCroppedToTheImage) {
   EXPECT_EQ(p.kernel.radiusX(), 19);
   const optics::PsfKernel full = optics::PsfKernel::parametric(p.params);
   for (int d = -19; d <= 19; ++d) EXPECT_EQ(p.kernel.at(d, 2), full.at(d, 2));
-  EXPECT_EQ(p.at.line, 4);  // camera.psf, below camera.resolution
+  EXPECT_EQ(p.at.line, 4);                                // camera.psf, below camera.resolution
   EXPECT_TRUE(load("{}").camera.psf->kernel.identity());  // {}: a delta
 }
 

@@ -14,9 +14,9 @@
 #include <vector>
 
 #include "tofsim/capture/Camera.h"
-#include "tofsim/capture/Vignetting.h"
 #include "tofsim/capture/Light.h"
 #include "tofsim/capture/RenderSettings.h"
+#include "tofsim/capture/Vignetting.h"
 #include "tofsim/config/NlosConfig.h"
 #include "tofsim/optics/PsfKernel.h"
 #include "tofsim/sensors/SensorSpec.h"
