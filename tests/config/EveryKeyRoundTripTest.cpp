@@ -30,6 +30,9 @@ camera:
   fov_y: 33 deg
   resolution: [40, 30]
   vignetting: cos4
+  aperture: 4 mm
+  focus_distance: 2.5
+  aperture_samples: 9
 light:
   type: spot
   attach_to_camera: true

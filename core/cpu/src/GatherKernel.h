@@ -32,7 +32,9 @@ struct PixelSurface {
   glm::vec3 n{0.0f};          ///< unit normal facing the camera
   glm::vec3 brdf{0.0f};       ///< albedo / pi, times the sample's weight 1 / N^2
   float cameraPath_m = 0.0f;  ///< eta * |x - c|, or 0 when unwarped
-  glm::vec3 dxdu{0.0f};       ///< x's steps across the (sub-)pixel (surfaceStepAcrossPixel)
+  /// c: where the camera leg ends, the viewpoint or the sample's aperture point.
+  glm::vec3 camera{0.0f};
+  glm::vec3 dxdu{0.0f};  ///< x's steps across the (sub-)pixel (surfaceStepAcrossPixel)
   glm::vec3 dxdv{0.0f};
   // render.materials: gltf: the glTF BRDF's parameters at x.
   glm::vec3 baseColor{0.0f};
@@ -53,7 +55,6 @@ struct GatherConstants {
   bool cameraUnwarp = false;
   bool gltf = false;          ///< render.materials: gltf (VplArrays::glossy)
   float vplBrdfClamp = 0.0f;  ///< 1/sr, <= 0: no clamp
-  glm::vec3 camera{0.0f};     ///< camera position, for the camera leg's path gradient
   int32_t bins = 0;           ///< of the time axis
 };
 
