@@ -112,39 +112,40 @@ RenderResult ReferenceRenderer::render(const RenderJob& job, SegmentSink& sink,
   result.depth_m = Image(width, height, 1);
   const std::size_t pixelFloats = static_cast<std::size_t>(axis.bins) * kChannels;
   const int32_t rows = rowsPerSegment(job, threads);
-  const capture::SegmentPlan plan = capture::fixedSegments(static_cast<std::size_t>(width) * height,
-                                                           static_cast<std::size_t>(rows) * width,
-                                                           pixelFloats * 2 * sizeof(float));
+  const capture::SegmentPlan plan =
+      capture::fixedSegments(static_cast<std::size_t>(width) * height,
+                        static_cast<std::size_t>(rows) * width, pixelFloats * 2 * sizeof(float));
   std::vector<AxisLoss> outside(static_cast<std::size_t>(width) * rows);
 
-  capture::streamSegments(
-      plan, axis, {kDirect, kIndirect}, lightView, sink, result.offAxis,
-      [&](const capture::SegmentBuffers& segment) {
-        // Segments are whole rows: pixelsPerSegment is a multiple of the width.
-        const int32_t firstRow = static_cast<int32_t>(segment.pixels.first / width);
-        const int32_t rowCount = static_cast<int32_t>(segment.pixels.count / width);
-        // Workers take blocks of pixels dynamically (the shared pool, which
-        // hands a worker's exception to this thread); each pixel writes only
-        // its own slots and draws from its own generator, so the bytes do not
-        // depend on scheduling or on the blocks.
-        parallelForBlocks(segment.pixels.count, pixelsPerTask(width, rowCount, threads), threads,
-                          [&](std::size_t begin, std::size_t end) {
-                            std::vector<double> scratch;
-                            for (std::size_t local = begin; local < end; ++local) {
-                              const auto x = static_cast<int32_t>(local % width);
-                              const auto y = firstRow + static_cast<int32_t>(local / width);
-                              PixelOutput out;
-                              out.direct = segment.components[0] + local * pixelFloats;
-                              out.indirect = segment.components[1] + local * pixelFloats;
-                              integrator.renderPixel(x, y, out, scratch);
-                              result.depth_m.at(y, x, 0) = out.depth_m;
-                              outside[local] = out.offAxis;
-                            }
-                          });
-        // Summed in pixel order, so the total is independent of the thread count.
-        for (std::size_t i = 0; i < segment.pixels.count; ++i) result.offAxis += outside[i];
-        if (progress) progress(segment.index + 1, plan.segmentCount, "segments");
-      });
+  capture::streamSegments(plan, axis, {kDirect, kIndirect}, lightView, sink, result.offAxis,
+                     [&](const capture::SegmentBuffers& segment) {
+                       // Segments are whole rows: pixelsPerSegment is a multiple of the width.
+                       const int32_t firstRow = static_cast<int32_t>(segment.pixels.first / width);
+                       const int32_t rowCount = static_cast<int32_t>(segment.pixels.count / width);
+                       // Workers take blocks of pixels dynamically (the shared pool, which
+                       // hands a worker's exception to this thread); each pixel writes only
+                       // its own slots and draws from its own generator, so the bytes do not
+                       // depend on scheduling or on the blocks.
+                       parallelForBlocks(
+                           segment.pixels.count, pixelsPerTask(width, rowCount, threads), threads,
+                           [&](std::size_t begin, std::size_t end) {
+                             std::vector<double> scratch;
+                             for (std::size_t local = begin; local < end; ++local) {
+                               const auto x = static_cast<int32_t>(local % width);
+                               const auto y = firstRow + static_cast<int32_t>(local / width);
+                               PixelOutput out;
+                               out.direct = segment.components[0] + local * pixelFloats;
+                               out.indirect = segment.components[1] + local * pixelFloats;
+                               integrator.renderPixel(x, y, out, scratch);
+                               result.depth_m.at(y, x, 0) = out.depth_m;
+                               outside[local] = out.offAxis;
+                             }
+                           });
+                       // Summed in pixel order, so the total is independent of the thread count.
+                       for (std::size_t i = 0; i < segment.pixels.count; ++i)
+                         result.offAxis += outside[i];
+                       if (progress) progress(segment.index + 1, plan.segmentCount, "segments");
+                     });
   result.segments = plan.segmentCount;
   result.seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
