@@ -6,9 +6,13 @@
 //  - off focus the edge's profile is the disk's area profile of the circle
 //    of confusion A |z - z_f| / (z z_f) (in pixels: over one pixel's angle),
 //    and the line spread function's width fits that diameter;
-//  - a pixel's arrival-time mean and spread are those of the paths
-//    light -> plane -> each aperture point, closed form per point (timing
-//    the camera leg from the lens centre instead is rejected);
+//  - on the plane in focus each pixel's transient is the pinhole's (the
+//    lens's path makes every aperture point's path to an in-focus point the
+//    chief ray's: Fermat's principle);
+//  - off focus a pixel's arrival-time mean and spread are those of the
+//    paths light -> plane -> each aperture point (plus the lens's path from
+//    it), closed form per point; timing the camera leg to the aperture
+//    point without the lens, or from the lens centre, is rejected;
 //  - the bytes do not depend on the threads or the segment plan.
 
 #include <gtest/gtest.h>
@@ -70,11 +74,30 @@ struct PlaneScene {
   }
 };
 
-// Steady image (the sum over bins) of channel 0, row-major.
-std::vector<double> steadyOf(const capture::RenderJob& job) {
+struct Moments {
+  double mean_m = 0.0, sd_m = 0.0;
+};
+
+// Pixel (x, y)'s arrival, channel 0: the mean and spread of its bins'
+// centres, as optical path.
+Moments momentsOf(const TransientVolume& v, int x, int y) {
+  double w = 0.0, m = 0.0, m2 = 0.0;
+  for (int t = 0; t < v.bins(); ++t) {
+    const double e = v.at(y, x, t, 0), at = kStart_m + (t + 0.5) * kBin_m;
+    w += e, m += e * at, m2 += e * at * at;
+  }
+  m /= w;
+  return {m, std::sqrt(std::max(0.0, m2 / w - m * m))};
+}
+
+TransientVolume volumeOf(const capture::RenderJob& job) {
   const test::CpuRender r = test::renderOnCpu(job);
   EXPECT_EQ(r.result.offAxis.before + r.result.offAxis.after, 0.0);
-  const TransientVolume v = r.volume.total();
+  return r.volume.total();
+}
+
+// Steady image (the sum over bins) of channel 0, row-major.
+std::vector<double> steadyOf(const TransientVolume& v) {
   std::vector<double> steady(static_cast<std::size_t>(kSide) * kSide, 0.0);
   for (int y = 0; y < kSide; ++y) {
     for (int x = 0; x < kSide; ++x) {
@@ -83,6 +106,7 @@ std::vector<double> steadyOf(const capture::RenderJob& job) {
   }
   return steady;
 }
+std::vector<double> steadyOf(const capture::RenderJob& job) { return steadyOf(volumeOf(job)); }
 
 // The closed-form circle of confusion, in pixels, of the plane at kDepth:
 // detector-models.md's c = A f |z - z_f| / (z (z_f - f)) over the pixel
@@ -111,25 +135,38 @@ std::vector<double> edgeProfile(float focus_m) {
   return share;
 }
 
-TEST(DefocusTest, AnEdgeOnThePlaneInFocusKeepsItsWidth) {
-  const std::vector<double> pinhole = steadyOf(PlaneScene(true, 0.0f, 1.0f).job);
-  const std::vector<double> focused = steadyOf(PlaneScene(true, kAperture, kDepth).job);
-  double worst = 0.0;
+TEST(DefocusTest, AnEdgeOnThePlaneInFocusKeepsItsWidthAndItsTimes) {
+  const TransientVolume pinholeVolume = volumeOf(PlaneScene(true, 0.0f, 1.0f).job);
+  const TransientVolume focusedVolume = volumeOf(PlaneScene(true, kAperture, kDepth).job);
+  const std::vector<double> pinhole = steadyOf(pinholeVolume), focused = steadyOf(focusedVolume);
+  double worst = 0.0, worstMean = 0.0, worstSd = 0.0;
   for (int y = 0; y < kSide; ++y) {
     for (int x = 0; x < kSide; ++x) {
       const double p = pinhole[y * kSide + x], f = focused[y * kSide + x];
       if (x < kSide / 2) {
         EXPECT_EQ(p, 0.0);
         EXPECT_EQ(f, 0.0) << "pixel " << x << ", " << y << " left of the edge sees the plane";
-      } else {
-        ASSERT_GT(p, 0.0);
-        worst = std::max(worst, std::fabs(f - p) / p);
+        continue;
       }
+      ASSERT_GT(p, 0.0);
+      worst = std::max(worst, std::fabs(f - p) / p);
+      const Moments a = momentsOf(pinholeVolume, x, y), b = momentsOf(focusedVolume, x, y);
+      worstMean = std::max(worstMean, std::fabs(a.mean_m - b.mean_m));
+      worstSd = std::max(worstSd, std::fabs(a.sd_m - b.sd_m));
     }
   }
-  // All 64 rays of a pixel meet on the plane in focus: the pinhole's light.
+  // All 64 rays of a pixel meet on the plane in focus: the pinhole's light,
+  // arriving when the pinhole's does (a path one bin off at a bin's
+  // boundary moves a mean by 1/64 bin). Without the lens's path the
+  // aperture points' legs would spread a corner pixel's light over +-60
+  // bins (+-R sin 7 degrees, 6 mm).
   EXPECT_LT(worst, 1e-5);
-  std::printf("in focus: every pixel within %.2e of the pinhole's light\n", worst);
+  EXPECT_LT(worstMean, 0.05 * kBin_m);
+  EXPECT_LT(worstSd, 0.05 * kBin_m);
+  std::printf(
+      "in focus: every pixel within %.2e of the pinhole's light; arrival mean within "
+      "%.3f um, spread within %.3f um\n",
+      worst, worstMean * 1e6, worstSd * 1e6);
 }
 
 TEST(DefocusTest, AnEdgeOffFocusBlursOverTheCircleOfConfusion) {
@@ -180,15 +217,16 @@ glm::dvec2 vogel(int a, int count) {
   return {r * std::cos(phi), r * std::sin(phi)};
 }
 
-struct Moments {
-  double mean_m = 0.0, sd_m = 0.0;
-};
+// How the camera leg is timed: to the aperture point plus the lens's path
+// from it (the thin lens), to the aperture point alone, or to the centre.
+enum class Leg { ThinLens, ApertureOnly, LensCentre };
 
-// The closed form of pixel (x, y): each aperture point's ray towards the
-// chief ray's point on the plane in focus meets the plane z = 0 at p; its
-// light arrives after |p - l| + |p - a| (or, wrongly, |p - c|), weighted by
-// the radiance albedo / pi I cos / |p - l|^2, in the bin it falls in.
-Moments closedForm(int x, int y, double focus, bool fromLensCentre) {
+// The closed form of pixel (x, y): each aperture point a's ray towards the
+// chief ray's point F on the plane in focus meets the plane z = 0 at p; its
+// light arrives after |p - l| + |p - a| + |F - c| - |F - a| (the lens's
+// path: Fermat), weighted by the radiance albedo / pi I cos / |p - l|^2, in
+// the bin it falls in.
+Moments closedForm(int x, int y, double focus, Leg leg) {
   const double t = std::tan(kFovDeg * kPi / 360.0);
   const glm::dvec3 c(0.0, 0.0, kDepth), forward(0.0, 0.0, -1.0);
   const glm::dvec3 chief = glm::normalize(
@@ -201,7 +239,11 @@ Moments closedForm(int x, int y, double focus, bool fromLensCentre) {
     const glm::dvec3 p = a + (inFocus - a) * (a.z / (a.z - inFocus.z));
     const double toLight = glm::length(p - c);
     const double radiance = (c.z - p.z) / toLight / (toLight * toLight);  // albedo I / pi cancel
-    const double path = toLight + glm::length(p - (fromLensCentre ? c : a));
+    const double lens = glm::length(inFocus - c) - glm::length(inFocus - a);
+    const double camera = leg == Leg::LensCentre     ? glm::length(p - c)
+                          : leg == Leg::ApertureOnly ? glm::length(p - a)
+                                                     : glm::length(p - a) + lens;
+    const double path = toLight + camera;
     const double binCentre = kStart_m + (std::floor((path - kStart_m) / kBin_m) + 0.5) * kBin_m;
     w += radiance, m += radiance * binCentre, m2 += radiance * binCentre * binCentre;
   }
@@ -213,32 +255,31 @@ TEST(DefocusTest, ArrivalIsTheMeanOverTheAperturePointsPaths) {
   const float focus = 2.0f;
   const test::CpuRender r = test::renderOnCpu(PlaneScene(false, kAperture, focus).job);
   const TransientVolume v = r.volume.total();
-  double worstMean = 0.0, worstSd = 0.0, wrongMean = 0.0, wrongSd = 0.0;
+  double worstMean = 0.0, worstSd = 0.0;
+  double wrong[2][2] = {};  // [aperture only, lens centre][mean, sd]
   for (const auto& [x, y] : {std::pair{16, 16}, std::pair{0, 0}, std::pair{31, 5}, std::pair{3, 27},
                              std::pair{20, 31}}) {
-    double w = 0.0, m = 0.0, m2 = 0.0;
-    for (int t = 0; t < v.bins(); ++t) {
-      const double e = v.at(y, x, t, 0), at = kStart_m + (t + 0.5) * kBin_m;
-      w += e, m += e * at, m2 += e * at * at;
+    const Moments rendered = momentsOf(v, x, y);
+    const Moments expected = closedForm(x, y, focus, Leg::ThinLens);
+    worstMean = std::max(worstMean, std::fabs(rendered.mean_m - expected.mean_m));
+    worstSd = std::max(worstSd, std::fabs(rendered.sd_m - expected.sd_m));
+    for (int k = 0; k < 2; ++k) {
+      const Moments w = closedForm(x, y, focus, k == 0 ? Leg::ApertureOnly : Leg::LensCentre);
+      wrong[k][0] = std::max(wrong[k][0], std::fabs(rendered.mean_m - w.mean_m));
+      wrong[k][1] = std::max(wrong[k][1], std::fabs(rendered.sd_m - w.sd_m));
     }
-    m /= w;
-    const double sd = std::sqrt(std::max(0.0, m2 / w - m * m));
-    const Moments expected = closedForm(x, y, focus, false);
-    const Moments wrong = closedForm(x, y, focus, true);
-    worstMean = std::max(worstMean, std::fabs(m - expected.mean_m));
-    worstSd = std::max(worstSd, std::fabs(sd - expected.sd_m));
-    wrongMean = std::max(wrongMean, std::fabs(m - wrong.mean_m));
-    wrongSd = std::max(wrongSd, std::fabs(sd - wrong.sd_m));
   }
   // A sample's path one bin off at a bin's boundary moves the mean by 1/64 bin.
   EXPECT_LT(worstMean, 0.05 * kBin_m);
   EXPECT_LT(worstSd, 0.05 * kBin_m);
-  // The camera leg timed from the lens centre: far outside.
-  EXPECT_GT(std::max(wrongMean, wrongSd), 1.0 * kBin_m);
+  // Without the lens's path, or from the lens centre: far outside.
+  for (const auto& w : wrong) EXPECT_GT(std::max(w[0], w[1]), 1.0 * kBin_m);
   std::printf(
-      "arrival: mean within %.3f um and sd within %.3f um of the aperture points' paths; "
-      "timed from the lens centre: %.1f um / %.1f um off\n",
-      worstMean * 1e6, worstSd * 1e6, wrongMean * 1e6, wrongSd * 1e6);
+      "arrival: mean within %.3f um and sd within %.3f um of the thin lens's paths; "
+      "without the lens's path %.1f / %.1f um off, from the lens centre %.1f / %.1f "
+      "um off\n",
+      worstMean * 1e6, worstSd * 1e6, wrong[0][0] * 1e6, wrong[0][1] * 1e6, wrong[1][0] * 1e6,
+      wrong[1][1] * 1e6);
 }
 
 bool sameBytes(const TransientVolume& a, const TransientVolume& b) {

@@ -48,7 +48,7 @@ const ConfigKey kRunConfigKeys[] = {
     {"camera.lens", "mapping", "", "none", "-",
      "a calibrated lens (OpenCV's model) in place of `fov_y`, see below"},
     {"camera.aperture", "length", ">= 0", "0", "m",
-     "thin-lens defocus: the aperture's diameter (`0`: a pinhole, sharp at every depth). Each pixel sample traces `aperture_samples` rays from points of the aperture disk through its point on the plane in focus, so a surface at depth z blurs over the circle of confusion aperture abs(z - focus_distance) / (z focus_distance) (at unit distance; over the pixel's angle: pixels), and its light's camera leg ends on the aperture point. `render.renderer: ir` with `render.backend: cpu` only (`auto` picks it); cost: `bench/defocus`"},
+     "thin-lens defocus: the aperture's diameter (`0`: a pinhole, sharp at every depth). Each pixel sample traces `aperture_samples` rays from points of the aperture disk through its point on the plane in focus, so a surface at depth z blurs over the circle of confusion aperture abs(z - focus_distance) / (z focus_distance) (at unit distance; over the pixel's angle: pixels), and its camera leg is timed through its aperture point and the lens (an in-focus surface's light arrives as through the pinhole). `render.renderer: ir` with `render.backend: cpu` only (`auto` picks it); cost: `bench/defocus`"},
     {"camera.focus_distance", "length", "> 0", "1", "m",
      "with `aperture`: the depth (along the optical axis) of the plane in focus; required then, an error without an aperture"},
     {"camera.aperture_samples", "int", "in [2, 4096]", "16", "-",

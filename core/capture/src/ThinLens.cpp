@@ -31,13 +31,20 @@ ThinLens::ThinLens(const Camera& camera)
   TOFSIM_CHECK(focus_m_ > 0.0f);
 }
 
-PrimaryRay ThinLens::through(const PrimaryRay& chief, glm::vec2 disk) const {
+ApertureRay ThinLens::through(const PrimaryRay& chief, glm::vec2 disk) const {
   // The chief ray meets the plane in focus (forward . (p - centre) = z_f)
   // after z_f / cos(angle to the axis).
-  const glm::vec3 inFocus =
-      chief.origin + chief.direction * (focus_m_ / glm::dot(chief.direction, forward_));
-  const glm::vec3 origin = centre_ + radius_m_ * (disk.x * right_ + disk.y * up_);
-  return {origin, glm::normalize(inFocus - origin)};
+  const glm::vec3 toFocus = chief.direction * (focus_m_ / glm::dot(chief.direction, forward_));
+  const glm::vec3 inFocus = chief.origin + toFocus;
+  const glm::vec3 offset = radius_m_ * (disk.x * right_ + disk.y * up_);  // a - c
+  const glm::vec3 origin = centre_ + offset;
+  const glm::vec3 ray = inFocus - origin;
+  // |F - c| - |F - a| = (|F - c|^2 - |F - a|^2) / (|F - c| + |F - a|), the
+  // numerator 2 (F - c).(a - c) - |a - c|^2: no cancellation of two ~z_f lengths.
+  const float fromCentre = glm::length(toFocus), fromAperture = glm::length(ray);
+  const float lensPath =
+      (2.0f * glm::dot(toFocus, offset) - glm::dot(offset, offset)) / (fromCentre + fromAperture);
+  return {{origin, ray / fromAperture}, lensPath};
 }
 
 double circleOfConfusion_px(const Camera& camera, double depth_m) {

@@ -133,7 +133,7 @@ std::size_t CpuBackend::fixedBytes() const {
   std::size_t bytes =
       surfaces_
           ? surfaces_->size() * (3 * sizeof(glm::vec4) + sizeof(glm::vec3) + sizeof(glm::vec2)) +
-                surfaces_->origin.size() * sizeof(glm::vec3)
+                surfaces_->aperture.size() * sizeof(glm::vec4)
           : 0;
   // Embree's BVH and vertex copies: about 100 bytes per triangle (measured order).
   if (job_.scene != nullptr) bytes += job_.scene->triangleCount() * 100;
@@ -209,12 +209,14 @@ void CpuBackend::fillSurface(std::size_t i, float weight, const capture::PixelSt
                              float eta) {
   const capture::RenderSettings& s = job_.settings;
   const std::size_t p = firstSample_ + i;
-  // The camera leg ends on the sample's aperture point (the viewpoint without one).
-  const glm::vec3 viewpoint = surfaces_->originOf(p, capture::viewpoint(job_.imager));
+  // The camera leg ends on the sample's aperture point (the viewpoint without
+  // one), where the lens's path to the pixel starts.
+  const glm::vec3 viewpoint = surfaces_->cameraOf(p, capture::viewpoint(job_.imager));
   segmentLit_[i] = surfaces_->position[p].w != 0.0f;
   PixelSurface& surface = segmentSurfaces_[i];
   surface.x = glm::vec3(surfaces_->position[p]);
   surface.camera = viewpoint;
+  surface.lensPath_m = surfaces_->lensPathOf(p);
   surface.n = glm::vec3(surfaces_->normal[p]);
   surface.brdf = glm::vec3(surfaces_->albedo[p]) / physics::PI * weight;
   if (s.materials == capture::MaterialModel::Gltf) {
@@ -224,8 +226,8 @@ void CpuBackend::fillSurface(std::size_t i, float weight, const capture::PixelSt
     surface.toCamera = glm::normalize(viewpoint - surface.x);
     surface.weight = weight;
   }
-  surface.cameraPath_m =
-      physics::cameraPathLength(dropLastLeg_, eta, glm::length(surface.x - viewpoint));
+  surface.cameraPath_m = physics::cameraPathLength(
+      dropLastLeg_, eta, glm::length(surface.x - viewpoint) + surface.lensPath_m);
   const capture::FootprintSteps footprint = steps.at(surface.x, surface.n, viewpoint);
   surface.dxdu = footprint.dxdu;
   surface.dxdv = footprint.dxdv;
@@ -314,7 +316,7 @@ CpuBackend::DirectConstants CpuBackend::directConstants() const {
   } else {
     out.radiance = physics::lambertianDirect(albedo, c.intensity_W_per_sr, profile, cosX, dLight);
   }
-  const float dCamera = dropLastLeg_ ? 0.0f : glm::length(x - surface.camera);
+  const float dCamera = dropLastLeg_ ? 0.0f : glm::length(x - surface.camera) + surface.lensPath_m;
   out.path_m = physics::directPathLength(c.eta, dLight, dCamera);
   return true;
 }

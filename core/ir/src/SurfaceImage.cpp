@@ -34,7 +34,7 @@ SurfaceImage emptyImage(const capture::Imager& imager, std::vector<int32_t> side
   image.albedo.assign(samples, glm::vec4(0.0f));
   image.geometric.assign(samples, glm::vec3(0.0f));
   image.metallicRoughness.assign(samples, glm::vec2(0.0f));
-  if (apertureSamples > 1) image.origin.assign(samples, glm::vec3(0.0f));
+  if (apertureSamples > 1) image.aperture.assign(samples, glm::vec4(0.0f));
   return image;
 }
 
@@ -57,8 +57,10 @@ void traceInto(SurfaceImage& image, const rays::RayScene& scene, const capture::
         capture::PrimaryRay ray = n == 1 ? rays.ray(x, y) : rays.ray(x, y, offset);
         const std::size_t i = image.firstSample[p] + e;
         if (lens) {
-          ray = lens->through(ray, capture::aperturePoint(static_cast<int32_t>(e % k), k));
-          image.origin[i] = ray.origin;
+          const capture::ApertureRay through =
+              lens->through(ray, capture::aperturePoint(static_cast<int32_t>(e % k), k));
+          ray = through.ray;
+          image.aperture[i] = glm::vec4(ray.origin, through.lensPath_m);
         }
         const auto hit = scene.intersect(ray.origin, ray.direction);
         if (!hit) continue;

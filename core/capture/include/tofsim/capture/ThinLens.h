@@ -8,7 +8,12 @@
 // sensor (detector-models.md section 3: c = A f |z - z_f| / (z (z_f - f))).
 // The blur depends on the surface's depth, not on the light's arrival time,
 // so it is made where the rays are (ray generation), never on the transient.
-// The camera leg of a sample's light ends on its aperture point.
+// The camera leg of a sample's light is timed to its aperture point, plus
+// the lens's own path from there to the pixel less the chief ray's: by
+// Fermat's principle every path from a point in focus through the lens to
+// its image is equally long, so an in-focus surface's light arrives as
+// through the pinhole (without the lens's part, the aperture points' legs
+// would spread it by up to A/2 sin(angle off the axis)).
 
 #include <cstdint>
 #include <glm/glm.hpp>
@@ -28,6 +33,16 @@ glm::vec2 aperturePoint(int32_t index, int32_t count);
 /// aperture_samples when it has an aperture, else 1 (the pinhole's ray).
 int32_t apertureSamplesOf(const Imager& imager);
 
+/// One aperture point's ray of a pixel sample.
+struct ApertureRay {
+  PrimaryRay ray;  ///< from the aperture point towards the sample's point in focus F
+  /// The lens's optical path from the aperture point a to the pixel, less
+  /// the chief ray's from the centre c, in the scene's metres (times the
+  /// index of refraction with it): |F - c| - |F - a|, which makes the path
+  /// to an in-focus point the same through every point of the aperture.
+  float lensPath_m = 0.0f;
+};
+
 /// A defocused camera's rays: each pinhole (chief) ray of the camera turned
 /// into the ray from an aperture point through its point in focus.
 class ThinLens {
@@ -36,7 +51,7 @@ class ThinLens {
   /// The ray from aperture point `disk` (on the unit disk, aperturePoint)
   /// through the point where `chief`, a ray from the camera's position,
   /// meets the plane in focus.
-  PrimaryRay through(const PrimaryRay& chief, glm::vec2 disk) const;
+  ApertureRay through(const PrimaryRay& chief, glm::vec2 disk) const;
 
  private:
   glm::vec3 centre_, forward_, right_, up_;

@@ -34,9 +34,11 @@ struct SurfaceImage {
   std::vector<std::size_t> firstSample;
   std::vector<int32_t> side;
   int32_t apertureSamples = 1;  ///< 1: the pinhole's ray (the aperture's centre)
-  /// With apertureSamples > 1, each sample's ray origin on the aperture,
-  /// where its camera leg ends; empty otherwise (the imager's viewpoint).
-  std::vector<glm::vec3> origin;
+  /// With apertureSamples > 1, each sample's aperture point (xyz world),
+  /// where its camera leg ends, and the lens's path from there to the pixel
+  /// less the chief ray's (w, m: capture::ApertureRay::lensPath_m); empty
+  /// otherwise (the imager's viewpoint, no lens path).
+  std::vector<glm::vec4> aperture;
   std::vector<glm::vec4> position;           ///< xyz world, w = 1 on a surface, 0 else
   std::vector<glm::vec4> normal;             ///< xyz unit shading normal facing the viewpoint
   std::vector<glm::vec4> albedo;             ///< rgb diffuse albedo, a = 1
@@ -47,10 +49,11 @@ struct SurfaceImage {
   std::size_t samplesOf(std::size_t pixel) const {
     return firstSample[pixel + 1] - firstSample[pixel];
   }
-  /// Where sample i's camera leg ends.
-  glm::vec3 originOf(std::size_t i, const glm::vec3& viewpoint) const {
-    return origin.empty() ? viewpoint : origin[i];
+  /// Where sample i's camera leg ends, and the lens's path it adds.
+  glm::vec3 cameraOf(std::size_t i, const glm::vec3& viewpoint) const {
+    return aperture.empty() ? viewpoint : glm::vec3(aperture[i]);
   }
+  float lensPathOf(std::size_t i) const { return aperture.empty() ? 0.0f : aperture[i].w; }
 };
 
 /// The imager's G-buffer: pixel (x, y), row 0 at the top, along its primary
