@@ -51,7 +51,9 @@ struct PlaneScene {
 
   // edge: the plane covers x > 0 only, its edge on the optical axis, between
   // columns 15 and 16 (nothing behind it).
-  PlaneScene(bool edge, float aperture_m, float focus_m) {
+  // lens: the same camera as a calibrated one (capture::Lens without
+  // distortion), whose rays come from the lens's model.
+  PlaneScene(bool edge, float aperture_m, float focus_m, bool lens = false) {
     const float size = 4.0f;
     test::addQuad(scene, glm::vec3(edge ? 0.5f * size : 0.0f, 0.0f, 0.0f), glm::vec3(0, 0, 1), size,
                   albedo);
@@ -65,6 +67,12 @@ struct PlaneScene {
     c.aperture_m = aperture_m;
     c.focus_distance_m = focus_m;
     c.aperture_samples = kApertureSamples;
+    if (lens) {
+      capture::Lens l;
+      l.fx = l.fy = 1.0 / pixelAngle();
+      l.cx = l.cy = 0.5 * (kSide - 1);
+      c.lens = l;
+    }
     job.light.position_world = c.position_world;
     job.light.intensity_W_per_sr = glm::vec3(1.0f);
     job.settings.indirect.enabled = false;
@@ -127,9 +135,9 @@ double diskShareRightOf(double u, double r) {
 
 // Each pixel's share of the full plane's light: the edge's profile over the
 // disk, with the plane's own fall-off divided out.
-std::vector<double> edgeProfile(float focus_m) {
-  const std::vector<double> edge = steadyOf(PlaneScene(true, kAperture, focus_m).job);
-  const std::vector<double> full = steadyOf(PlaneScene(false, kAperture, focus_m).job);
+std::vector<double> edgeProfile(float focus_m, bool lens) {
+  const std::vector<double> edge = steadyOf(PlaneScene(true, kAperture, focus_m, lens).job);
+  const std::vector<double> full = steadyOf(PlaneScene(false, kAperture, focus_m, lens).job);
   std::vector<double> share(edge.size());
   for (std::size_t i = 0; i < edge.size(); ++i) share[i] = edge[i] / full[i];
   return share;
@@ -169,10 +177,17 @@ TEST(DefocusTest, AnEdgeOnThePlaneInFocusKeepsItsWidthAndItsTimes) {
       worst, worstMean * 1e6, worstSd * 1e6);
 }
 
-TEST(DefocusTest, AnEdgeOffFocusBlursOverTheCircleOfConfusion) {
+// Through the pinhole camera and through the same camera as a calibrated
+// lens (the aperture's rays then start from the lens's undistorted rays).
+class DefocusEdgeTest : public ::testing::TestWithParam<bool> {};
+
+TEST_P(DefocusEdgeTest, AnEdgeOffFocusBlursOverTheCircleOfConfusion) {
   const float focus = 2.0f;
   const double coc = circleOfConfusion_px(focus);
-  const std::vector<double> share = edgeProfile(focus);
+  EXPECT_NEAR(capture::circleOfConfusion_px(
+                  PlaneScene(true, kAperture, focus, GetParam()).job.camera(), kDepth),
+              coc, 1e-5 * coc);
+  const std::vector<double> share = edgeProfile(focus, GetParam());
   // Every row sees the same profile across the edge; the middle rows'.
   const int y = kSide / 2;
   const auto profileError = [&](double radius) {
@@ -206,10 +221,14 @@ TEST(DefocusTest, AnEdgeOffFocusBlursOverTheCircleOfConfusion) {
   EXPECT_NEAR(mean, 0.0, 0.1);
   EXPECT_NEAR(fitted, coc, 0.03 * coc);
   std::printf(
-      "off focus: circle of confusion %.3f px (closed form), fitted %.3f px; profile "
+      "off focus (%s): circle of confusion %.3f px (closed form), fitted %.3f px; profile "
       "within %.4f of the disk's; a 20%% wider / narrower disk: %.3f / %.3f\n",
-      coc, fitted, error, profileError(0.6 * coc), profileError(0.4 * coc));
+      GetParam() ? "calibrated lens" : "pinhole", coc, fitted, error, profileError(0.6 * coc),
+      profileError(0.4 * coc));
 }
+
+INSTANTIATE_TEST_SUITE_P(Camera, DefocusEdgeTest, ::testing::Bool(),
+                         [](const auto& info) { return info.param ? "Lens" : "Pinhole"; });
 
 // Vogel's spiral as ThinLens.h defines it, written out here.
 glm::dvec2 vogel(int a, int count) {
