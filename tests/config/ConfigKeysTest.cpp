@@ -159,6 +159,11 @@ TEST_F(ConfigKeysWriterTest, EffectiveConfigWritesEveryDeclaredKey) {
         << "scene: scene.gltf\ncamera: {psf: " << psf << "}\nlight: {}\ntime: {}\n";
     leafPaths(YAML::Load(effectiveConfigYaml(loadRunConfig(dir_ / "p.yaml"))), "", written);
   }
+  // An aperture (its keys are written only with one, a pinhole's config
+  // keeping its bytes).
+  std::ofstream(dir_ / "a.yaml") << "scene: scene.gltf\ncamera: {aperture: 0.01, "
+                                    "focus_distance: 2}\nlight: {}\ntime: {}\n";
+  leafPaths(YAML::Load(effectiveConfigYaml(loadRunConfig(dir_ / "a.yaml"))), "", written);
   written.erase("");
   std::set<std::string> declared;
   for (const ConfigKey& k : runConfigKeys()) declared.insert(k.path);

@@ -31,6 +31,9 @@ camera:
   resolution: [40, 30]
   vignetting: cos4
   psf: {core_sigma: 0.7, halo_weight: 0.05, halo_profile: exponential, halo_radius: 6}
+  aperture: 4 mm
+  focus_distance: 2.5
+  aperture_samples: 9
 light:
   type: spot
   attach_to_camera: true

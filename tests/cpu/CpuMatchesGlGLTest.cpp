@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 
 #include "GpuScene.h"
 #include "SurfaceMaps.h"
@@ -28,6 +29,7 @@
 #include "tofsim/rays/RayScene.h"
 #include "tofsim/render/GlBackend.h"
 #include "tofsim/scene/GltfLoader.h"
+#include "tofsim/util/Error.h"
 
 namespace tofsim::cpu {
 namespace {
@@ -334,6 +336,24 @@ TEST(CpuMatchesGlGLTest, LensCameraOnTheCornerVolumes) {
       s.job.settings.adaptive_pixel_samples = adaptive;
       expectSameVolumes(s.job, 1e-3, 1e-3);
     }
+  }
+}
+
+// Thin-lens defocus (camera.aperture) is gathered by the CPU backend only:
+// the GL backend's gathers end every camera leg on the camera's position, so
+// the driver refuses it there with an error naming the key, rather than
+// rendering a pinhole's times through an aperture's rays.
+TEST(CpuMatchesGlGLTest, DefocusIsRefusedOnTheGlBackend) {
+  test::CornerJob s(8);
+  s.job.camera().aperture_m = 0.01f;
+  s.job.camera().focus_distance_m = 1.5f;
+  try {
+    renderOn(std::make_unique<render::GlBackend>(test::glTestContext()), s.job);
+    ADD_FAILURE() << "the GL backend rendered a defocused camera";
+  } catch (const InputError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("camera.aperture"), std::string::npos) << what;
+    EXPECT_NE(what.find("does not gather aperture samples"), std::string::npos) << what;
   }
 }
 

@@ -41,6 +41,42 @@ capture::Vignetting parseVignetting(const ConfigNode& node, const capture::Camer
   return v;
 }
 
+// camera.aperture, focus_distance, aperture_samples: thin-lens defocus
+// (capture/ThinLens.h). The last two mean nothing without an aperture, so
+// giving them alone is an error rather than silently ignored.
+void parseAperture(const ConfigNode& node, capture::Camera& c) {
+  const double aperture = node.getLength_m("aperture", 0.0);
+  if (!(aperture >= 0.0 && std::isfinite(aperture))) {
+    node.failKey("aperture",
+                 "must be a diameter >= 0 m (0: a pinhole; got " + std::to_string(aperture) + ")");
+  }
+  c.aperture_m = static_cast<float>(aperture);
+  if (!c.defocused()) {
+    for (const char* key : {"focus_distance", "aperture_samples"}) {
+      if (node.has(key)) {
+        node.failKey(key, "needs camera.aperture > 0 (a pinhole is in focus at every depth)");
+      }
+    }
+    return;
+  }
+  if (!node.has("focus_distance")) {
+    node.failKey("aperture", "an aperture needs camera.focus_distance, the depth in focus (m)");
+  }
+  const double focus = node.getLength_m("focus_distance", 0.0);
+  if (!(focus > 0.0 && std::isfinite(focus))) {
+    node.failKey("focus_distance",
+                 "must be > 0 m with an aperture (got " + std::to_string(focus) + ")");
+  }
+  c.focus_distance_m = static_cast<float>(focus);
+  const long long samples = node.getInt("aperture_samples", c.aperture_samples);
+  if (samples < 2 || samples > 4096) {
+    node.failKey("aperture_samples", "must be in [2, 4096] with an aperture (got " +
+                                         std::to_string(samples) +
+                                         "; one point is a pinhole moved off the axis)");
+  }
+  c.aperture_samples = static_cast<int32_t>(samples);
+}
+
 }  // namespace
 
 void parseCamera(const ConfigNode& node, CameraConfig& out) {
@@ -90,6 +126,7 @@ void parseCamera(const ConfigNode& node, CameraConfig& out) {
   }
   out.vignetting = parseVignetting(node, c);
   if (node.has("psf")) out.psf = parsePsf(node, c.width, c.height);
+  parseAperture(node, c);
   if (out.gltf_camera.empty()) {
     const glm::vec3 forward = c.look_at_world - c.position_world;
     if (glm::length(forward) <= 0.0f) node.failKey("look_at", "must differ from position");

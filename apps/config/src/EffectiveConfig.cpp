@@ -79,6 +79,12 @@ YAML::Node cameraNode(const CameraConfig& c) {
     }
     n["psf"] = p;
   }
+  // Only with an aperture: a pinhole's effective config keeps its bytes.
+  if (c.camera.defocused()) {
+    n["aperture"] = shortest(c.camera.aperture_m);
+    n["focus_distance"] = shortest(c.camera.focus_distance_m);
+    n["aperture_samples"] = c.camera.aperture_samples;
+  }
   return n;
 }
 

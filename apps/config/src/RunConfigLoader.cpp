@@ -353,6 +353,20 @@ void checkVplCount(const ConfigNode& root, const RunConfig& config) {
   }
 }
 
+// Defocus (camera.aperture) is gathered by the CPU IR backend only: the GL
+// backend does not take aperture samples (render.backend: auto picks the CPU
+// for it; the reference path tracer refuses it when it renders).
+void checkDefocusBackend(const ConfigNode& root, const RunConfig& config) {
+  if (config.nlos || !config.camera.camera.defocused()) return;
+  if (config.renderer != RendererKind::InstantRadiosity || config.backend != IrBackendKind::Gl) {
+    return;
+  }
+  root.child("camera").failKey(
+      "aperture",
+      "defocus runs on render.backend: cpu (or auto); the gl backend does not gather "
+      "aperture samples");
+}
+
 // What an nlos capture cannot do: the outputs of a camera image.
 void checkNlosRun(const ConfigNode& root) {
   if (const auto output = root.optionalChild("output")) {
@@ -425,6 +439,7 @@ RunConfig loadRunConfigYaml(YAML::Node yaml, const std::filesystem::path& file,
   }
   if (const auto render = root.optionalChild("render")) parseRender(*render, config);
   checkVplCount(root, config);
+  checkDefocusBackend(root, config);
   if (const auto output = root.optionalChild("output")) parseOutput(*output, config, config.output);
   if (config.nlos) checkNlosRun(root);
   if (const auto list = root.optionalChild("sensors")) {

@@ -59,6 +59,17 @@ nlohmann::json cameraJson(const capture::Camera& cam) {
     j["fov_y_deg"] = cam.fov_y_deg;
     j["model"] = "pinhole, one ray through each pixel centre";
   }
+  // Only with an aperture: a pinhole's metadata keeps its bytes.
+  if (cam.defocused()) {
+    j["thin_lens"] = {
+        {"aperture_m", cam.aperture_m},
+        {"focus_distance_m", cam.focus_distance_m},
+        {"aperture_samples", cam.aperture_samples},
+        {"pattern", "Vogel's sunflower spiral on the aperture disk, the same for every pixel"},
+        {"timing",
+         "camera leg to each aperture point plus the lens's path to the pixel less the "
+         "chief ray's (a surface in focus arrives as through the pinhole)"}};
+  }
   return j;
 }
 

@@ -41,7 +41,11 @@ RendererChoice makeRenderer(const config::RunConfig& config, gl::EglPlatform egl
     return {std::make_unique<reference::ReferenceRenderer>(makeReferenceSettings(config)),
             "reference"};
   }
-  const config::IrBackendKind backend = resolveIrBackend(config.backend);
+  // Only the CPU backend gathers a defocused camera's aperture samples.
+  const bool defocused = !config.nlos && config.camera.camera.defocused();
+  const config::IrBackendKind backend = defocused && config.backend == config::IrBackendKind::Auto
+                                            ? config::IrBackendKind::Cpu
+                                            : resolveIrBackend(config.backend);
   return {std::make_unique<ir::IrRenderer>(makeIrBackend(backend, eglPlatform, config.cpu_threads)),
           config::irBackendName(backend)};
 }

@@ -77,7 +77,12 @@ ArrivalBounds arrivalBounds(const RenderJob& job, int32_t surfaceVertices) {
     const double shortest = unwarp ? in : std::max(straight, in + distanceToBox(camera, box));
     const double longest =
         longestThroughCorners(light, camera, cornersOf(box), surfaceVertices, !unwarp);
-    bounds = {true, eta * shortest, eta * longest};
+    // A defocused camera's legs end anywhere on its aperture disk, within
+    // its radius of the centre, and add the lens's path, within the radius
+    // of the chief ray's (ThinLens.h): a diameter either way.
+    const Camera* c = cameraOf(job.imager);
+    const double aperture = c != nullptr && !unwarp ? c->aperture_m : 0.0;
+    bounds = {true, eta * std::max(0.0, shortest - aperture), eta * (longest + aperture)};
   }
   if (lightMayBeSeen(job)) {
     // Unwarped time is the time at the scene point; the source emits at 0.

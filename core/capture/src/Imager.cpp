@@ -42,7 +42,7 @@ bool lastLegCounts(const Imager& imager) {
 
 const Camera* pinhole(const Imager& imager) {
   const Camera* camera = std::get_if<Camera>(&imager);
-  return camera != nullptr && !camera->lens ? camera : nullptr;
+  return camera != nullptr && !camera->lens && !camera->defocused() ? camera : nullptr;
 }
 
 const Camera* cameraOf(const Imager& imager) { return std::get_if<Camera>(&imager); }
@@ -84,9 +84,14 @@ PixelSteps::PixelSteps(const Imager& imager, float side, int32_t x, int32_t y) {
 }
 
 FootprintSteps PixelSteps::at(const glm::vec3& x, const glm::vec3& n) const {
+  return at(x, n, origin_);
+}
+
+FootprintSteps PixelSteps::at(const glm::vec3& x, const glm::vec3& n,
+                              const glm::vec3& origin) const {
   if (!pinhole_) return {stepX_, stepY_};
   // The pinhole's ray differentials carried to the surface (footprint_kernel.md).
-  const glm::vec3 toSurface = x - origin_;
+  const glm::vec3 toSurface = x - origin;
   return {physics::surfaceStepAcrossPixel(toSurface, forward_, stepX_, n),
           physics::surfaceStepAcrossPixel(toSurface, forward_, stepY_, n)};
 }

@@ -12,6 +12,7 @@
 #include "RsmVpls.h"
 #include "VplArrays.h"
 #include "tofsim/capture/SegmentSink.h"
+#include "tofsim/capture/ThinLens.h"
 #include "tofsim/ir/SurfaceImage.h"
 #include "tofsim/physics/FootprintBuffer.h"
 #include "tofsim/physics/GltfBrdf.h"
@@ -66,15 +67,18 @@ ir::CentreSurfaces CpuBackend::prepareSurfaces(const capture::RenderJob& job) {
   // samples' edges) is the pixel centres', whatever the sub-pixel samples.
   // With adaptive samples the sub-samples wait for the driver's mask
   // (setSampledPixels), so only the edge pixels' rays are traced.
+  // A defocused camera's centres are its chief rays (the aperture's centre),
+  // every gathered sample one of its aperture points'.
   const int32_t samples = job.settings.pixel_samples;
+  apertureSamples_ = capture::apertureSamplesOf(job.imager);
   SurfaceImage centres = traceSurfaces(*scene_, job.imager, threads_, 1);
   ir::CentreSurfaces out = ir::centresOf(centres);
   subSamplesPending_ = samples > 1 && job.settings.adaptive_pixel_samples;
-  if (samples == 1 || subSamplesPending_) {
+  if (subSamplesPending_ || (samples == 1 && apertureSamples_ == 1)) {
     surfaces_ = std::make_unique<SurfaceImage>(std::move(centres));
   } else {
-    surfaces_ =
-        std::make_unique<SurfaceImage>(traceSurfaces(*scene_, job.imager, threads_, samples));
+    surfaces_ = std::make_unique<SurfaceImage>(
+        traceSurfaces(*scene_, job.imager, threads_, samples, apertureSamples_));
   }
   return out;
 }
@@ -87,8 +91,8 @@ void CpuBackend::setSurfaces(std::unique_ptr<SurfaceImage> /*samples*/,
 void CpuBackend::setSampledPixels(const std::vector<uint8_t>& sampled) {
   TOFSIM_CHECK_MSG(subSamplesPending_,
                    "setSampledPixels needs adaptive_pixel_samples with pixel_samples > 1");
-  surfaces_ = std::make_unique<SurfaceImage>(
-      traceSampledPixels(*scene_, job_.imager, threads_, job_.settings.pixel_samples, sampled));
+  surfaces_ = std::make_unique<SurfaceImage>(traceSampledPixels(
+      *scene_, job_.imager, threads_, job_.settings.pixel_samples, sampled, apertureSamples_));
   subSamplesPending_ = false;
 }
 
@@ -96,13 +100,13 @@ void CpuBackend::finishSurfaces() {
   // No mask came (IrBackend: every pixel then takes its N x N samples).
   if (!subSamplesPending_) return;
   surfaces_ = std::make_unique<SurfaceImage>(
-      traceSurfaces(*scene_, job_.imager, threads_, job_.settings.pixel_samples));
+      traceSurfaces(*scene_, job_.imager, threads_, job_.settings.pixel_samples, apertureSamples_));
   subSamplesPending_ = false;
 }
 
 std::size_t CpuBackend::maxSamplesPerPixel() const {
   const auto n = static_cast<std::size_t>(job_.settings.pixel_samples);
-  return n * n;
+  return n * n * static_cast<std::size_t>(apertureSamples_);
 }
 
 std::vector<ir::Vpl> CpuBackend::generateVpls(const capture::RenderJob& job) {
@@ -128,7 +132,8 @@ void CpuBackend::setVpls(const std::vector<ir::Vpl>& vpls) {
 std::size_t CpuBackend::fixedBytes() const {
   std::size_t bytes =
       surfaces_
-          ? surfaces_->size() * (3 * sizeof(glm::vec4) + sizeof(glm::vec3) + sizeof(glm::vec2))
+          ? surfaces_->size() * (3 * sizeof(glm::vec4) + sizeof(glm::vec3) + sizeof(glm::vec2)) +
+                surfaces_->aperture.size() * sizeof(glm::vec4)
           : 0;
   // Embree's BVH and vertex copies: about 100 bytes per triangle (measured order).
   if (job_.scene != nullptr) bytes += job_.scene->triangleCount() * 100;
@@ -182,11 +187,13 @@ void CpuBackend::beginSegment(std::size_t firstPixel, std::size_t count) {
     segmentFirstSample_[i] = surfaces_->firstSample[firstPixel + i] - firstSample_;
   }
   for (std::size_t pixel = 0; pixel < count; ++pixel) {
-    // Each of a pixel's N x N samples stands for 1 / N^2 of it and its
-    // footprint is its sub-pixel: the ray steps shrink by N (N = 1: the
-    // pixel-centre sample of pixel_samples: 1, the same float operations).
+    // Each of a pixel's N x N (x K aperture points) samples stands for 1 /
+    // (N^2 K) of it and its footprint is its sub-pixel: the ray steps shrink
+    // by N (N = 1: the pixel-centre sample of pixel_samples: 1, the same
+    // float operations).
     const int32_t n = surfaces_->side[firstPixel + pixel];
-    const float weight = 1.0f / static_cast<float>(static_cast<std::size_t>(n) * n);
+    const float weight = 1.0f / static_cast<float>(static_cast<std::size_t>(n) * n *
+                                                   static_cast<std::size_t>(apertureSamples_));
     const std::size_t p = firstPixel + pixel;
     const auto width = static_cast<std::size_t>(capture::imageWidth(job_.imager));
     const capture::PixelSteps steps(job_.imager, 1.0f / static_cast<float>(n),
@@ -200,12 +207,16 @@ void CpuBackend::beginSegment(std::size_t firstPixel, std::size_t count) {
 
 void CpuBackend::fillSurface(std::size_t i, float weight, const capture::PixelSteps& steps,
                              float eta) {
-  const glm::vec3 viewpoint = capture::viewpoint(job_.imager);
   const capture::RenderSettings& s = job_.settings;
   const std::size_t p = firstSample_ + i;
+  // The camera leg ends on the sample's aperture point (the viewpoint without
+  // one), where the lens's path to the pixel starts.
+  const glm::vec3 viewpoint = surfaces_->cameraOf(p, capture::viewpoint(job_.imager));
   segmentLit_[i] = surfaces_->position[p].w != 0.0f;
   PixelSurface& surface = segmentSurfaces_[i];
   surface.x = glm::vec3(surfaces_->position[p]);
+  surface.camera = viewpoint;
+  surface.lensPath_m = surfaces_->lensPathOf(p);
   surface.n = glm::vec3(surfaces_->normal[p]);
   surface.brdf = glm::vec3(surfaces_->albedo[p]) / physics::PI * weight;
   if (s.materials == capture::MaterialModel::Gltf) {
@@ -215,9 +226,9 @@ void CpuBackend::fillSurface(std::size_t i, float weight, const capture::PixelSt
     surface.toCamera = glm::normalize(viewpoint - surface.x);
     surface.weight = weight;
   }
-  surface.cameraPath_m =
-      physics::cameraPathLength(dropLastLeg_, eta, glm::length(surface.x - viewpoint));
-  const capture::FootprintSteps footprint = steps.at(surface.x, surface.n);
+  surface.cameraPath_m = physics::cameraPathLength(
+      dropLastLeg_, eta, glm::length(surface.x - viewpoint) + surface.lensPath_m);
+  const capture::FootprintSteps footprint = steps.at(surface.x, surface.n, viewpoint);
   surface.dxdu = footprint.dxdu;
   surface.dxdv = footprint.dxdv;
 }
@@ -248,10 +259,9 @@ struct CpuBackend::DirectConstants {
   capture::Light::ProfileTerms profile;  ///< the light's (Light::profileTerms)
   glm::vec3 light_world{0.0f};           ///< the light's position, m
   glm::vec3 intensity_W_per_sr{0.0f};
-  glm::vec3 viewpoint{0.0f};  ///< where the last leg ends (capture::viewpoint)
-  float start_m = 0.0f;       ///< of the time axis, as optical path
-  float width_m = 1.0f;       ///< of a bin, as optical path
-  float eta = 1.0f;           ///< index of refraction
+  float start_m = 0.0f;  ///< of the time axis, as optical path
+  float width_m = 1.0f;  ///< of a bin, as optical path
+  float eta = 1.0f;      ///< index of refraction
   int bins = 0;
   bool gltf = false;       ///< render.materials: gltf
   bool footprint = false;  ///< render.pixel_footprint
@@ -269,7 +279,6 @@ CpuBackend::DirectConstants CpuBackend::directConstants() const {
   c.profile = job_.light.profileTerms();
   c.light_world = job_.light.position_world;
   c.intensity_W_per_sr = job_.light.intensity_W_per_sr;
-  c.viewpoint = capture::viewpoint(job_.imager);
   c.start_m = static_cast<float>(s.time.start_m());
   c.width_m = static_cast<float>(s.time.bin_width_m());
   c.eta = static_cast<float>(s.time.index_of_refraction);
@@ -301,13 +310,13 @@ CpuBackend::DirectConstants CpuBackend::directConstants() const {
   const glm::vec3 albedo(surfaces_->albedo[p]);
   if (c.gltf) {
     const glm::vec2 mr = surfaces_->metallicRoughness[p];
-    const glm::vec3 wCamera = glm::normalize(c.viewpoint - x);
+    const glm::vec3 wCamera = glm::normalize(surface.camera - x);
     out.radiance = physics::gltfDirect(n, wLight, wCamera, albedo, mr.x, mr.y, c.intensity_W_per_sr,
                                        profile, cosX, dLight);
   } else {
     out.radiance = physics::lambertianDirect(albedo, c.intensity_W_per_sr, profile, cosX, dLight);
   }
-  const float dCamera = dropLastLeg_ ? 0.0f : glm::length(x - c.viewpoint);
+  const float dCamera = dropLastLeg_ ? 0.0f : glm::length(x - surface.camera) + surface.lensPath_m;
   out.path_m = physics::directPathLength(c.eta, dLight, dCamera);
   return true;
 }
@@ -330,7 +339,8 @@ void CpuBackend::gatherDirectPixel(const DirectConstants& c, std::size_t i) {
     if (c.footprint) {
       const PixelSurface& surface = segmentSurfaces_[sample];
       const glm::vec2 steps = physics::pathStepsAcrossPixel(
-          physics::opticalPathGradient(surface.x, c.light_world, c.viewpoint, c.eta, dropLastLeg_),
+          physics::opticalPathGradient(surface.x, c.light_world, surface.camera, c.eta,
+                                       dropLastLeg_),
           surface.dxdu, surface.dxdv);
       const glm::vec3 kernel = physics::footprintKernel(light.path_m, steps, c.start_m, c.width_m);
       const glm::vec3 value = light.radiance * weight;
@@ -377,7 +387,6 @@ CpuBackend::IndirectConstants CpuBackend::indirectConstants() const {
   c.cameraUnwarp = dropLastLeg_;
   c.gltf = s.materials == capture::MaterialModel::Gltf;
   c.vplBrdfClamp = static_cast<float>(s.indirect.vpl_brdf_clamp_per_sr);
-  c.camera = capture::viewpoint(job_.imager);
   c.bins = s.time.bins;
   ic.exact = indirectVisibility_ && s.indirect.visibility == capture::Visibility::Exact;
   ic.eps = 1e-4f * sceneScale_m_;  // as indirect_gather.comp's exact visibility

@@ -37,7 +37,7 @@ __attribute__((target_clones("avx2", "default"))) void vplKernels(const PixelSur
   const float* __restrict vy = v.vy.data() + first;
   const float* __restrict vz = v.vz.data() + first;
   const float* __restrict vw = v.vw.data() + first;
-  const glm::vec3 x = s.x, dxdu = s.dxdu, dxdv = s.dxdv, camera = c.camera;
+  const glm::vec3 x = s.x, dxdu = s.dxdu, dxdv = s.dxdv, camera = s.camera;
   const float cameraPath = s.cameraPath_m, start = c.start_m, width = c.binWidth_m;
   const bool unwarp = c.cameraUnwarp;
   const int bins = c.bins;

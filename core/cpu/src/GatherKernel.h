@@ -31,8 +31,11 @@ struct PixelSurface {
   glm::vec3 x{0.0f};          ///< world position, m
   glm::vec3 n{0.0f};          ///< unit normal facing the camera
   glm::vec3 brdf{0.0f};       ///< albedo / pi, times the sample's weight 1 / N^2
-  float cameraPath_m = 0.0f;  ///< eta * |x - c|, or 0 when unwarped
-  glm::vec3 dxdu{0.0f};       ///< x's steps across the (sub-)pixel (surfaceStepAcrossPixel)
+  float cameraPath_m = 0.0f;  ///< eta * (|x - c| + lensPath_m), or 0 when unwarped
+  /// c: where the camera leg ends, the viewpoint or the sample's aperture point.
+  glm::vec3 camera{0.0f};
+  float lensPath_m = 0.0f;  ///< a thin lens's path from c on (SurfaceImage::lensPathOf)
+  glm::vec3 dxdu{0.0f};     ///< x's steps across the (sub-)pixel (surfaceStepAcrossPixel)
   glm::vec3 dxdv{0.0f};
   // render.materials: gltf: the glTF BRDF's parameters at x.
   glm::vec3 baseColor{0.0f};
@@ -53,7 +56,6 @@ struct GatherConstants {
   bool cameraUnwarp = false;
   bool gltf = false;          ///< render.materials: gltf (VplArrays::glossy)
   float vplBrdfClamp = 0.0f;  ///< 1/sr, <= 0: no clamp
-  glm::vec3 camera{0.0f};     ///< camera position, for the camera leg's path gradient
   int32_t bins = 0;           ///< of the time axis
 };
 

@@ -199,6 +199,13 @@ RenderResult IrRenderer::render(const RenderJob& job, SegmentSink& sink,
   IrBackend& backend = *backend_;
   const DeviceLimits limits = backend.limits();
   validateJob(job, limits);
+  if (const Camera* camera = cameraOf(job.imager);
+      camera != nullptr && camera->defocused() && !backend.defocuses()) {
+    throw InputError("camera.aperture " + std::to_string(camera->aperture_m) +
+                     " m: defocus (thin-lens aperture sampling) runs on render.backend: cpu; the " +
+                     backend.description() +
+                     " backend does not gather aperture samples (set camera.aperture: 0)");
+  }
   RenderResult result;
 
   PassClock clock;

@@ -1,5 +1,8 @@
 #include "tofsim/ir/SurfaceImage.h"
 
+#include <optional>
+
+#include "tofsim/capture/ThinLens.h"
 #include "tofsim/rays/RayScene.h"
 #include "tofsim/util/Error.h"
 #include "tofsim/util/ParallelFor.h"
@@ -8,17 +11,21 @@ namespace tofsim::ir {
 
 namespace {
 
-// An image of `sides[p]` x `sides[p]` samples for pixel p, all empty.
-SurfaceImage emptyImage(const capture::Imager& imager, std::vector<int32_t> sides) {
+// An image of `sides[p]` x `sides[p]` x `apertureSamples` samples for pixel
+// p, all empty.
+SurfaceImage emptyImage(const capture::Imager& imager, std::vector<int32_t> sides,
+                        int32_t apertureSamples) {
   SurfaceImage image;
   image.width = capture::imageWidth(imager);
   image.height = capture::imageHeight(imager);
+  image.apertureSamples = apertureSamples;
   const std::size_t pixelCount = sides.size();
+  const auto k = static_cast<std::size_t>(apertureSamples);
   image.firstSample.resize(pixelCount + 1);
   image.firstSample[0] = 0;
   for (std::size_t p = 0; p < pixelCount; ++p) {
     image.firstSample[p + 1] = image.firstSample[p] + static_cast<std::size_t>(sides[p]) *
-                                                          static_cast<std::size_t>(sides[p]);
+                                                          static_cast<std::size_t>(sides[p]) * k;
   }
   image.side = std::move(sides);
   const std::size_t samples = image.firstSample[pixelCount];
@@ -27,6 +34,7 @@ SurfaceImage emptyImage(const capture::Imager& imager, std::vector<int32_t> side
   image.albedo.assign(samples, glm::vec4(0.0f));
   image.geometric.assign(samples, glm::vec3(0.0f));
   image.metallicRoughness.assign(samples, glm::vec2(0.0f));
+  if (apertureSamples > 1) image.aperture.assign(samples, glm::vec4(0.0f));
   return image;
 }
 
@@ -34,18 +42,28 @@ SurfaceImage emptyImage(const capture::Imager& imager, std::vector<int32_t> side
 void traceInto(SurfaceImage& image, const rays::RayScene& scene, const capture::Imager& imager,
                int threads) {
   const capture::PrimaryRays rays(imager);
+  const int32_t k = image.apertureSamples;
+  std::optional<capture::ThinLens> lens;
+  if (k > 1) lens.emplace(*capture::cameraOf(imager));
   parallelFor(static_cast<std::size_t>(image.height), threads, [&](std::size_t row) {
     const auto y = static_cast<int32_t>(row);
     for (int32_t x = 0; x < image.width; ++x) {
       const std::size_t p = row * image.width + x;
       const int32_t n = image.side[p];
-      for (std::size_t s = 0; s < image.samplesOf(p); ++s) {
+      for (std::size_t e = 0; e < image.samplesOf(p); ++e) {
+        const std::size_t s = e / k;  // the sub-pixel
         const auto sx = static_cast<float>(s % n), sy = static_cast<float>(s / n);
         const glm::vec2 offset((sx + 0.5f) / n - 0.5f, (sy + 0.5f) / n - 0.5f);
-        const capture::PrimaryRay ray = n == 1 ? rays.ray(x, y) : rays.ray(x, y, offset);
+        capture::PrimaryRay ray = n == 1 ? rays.ray(x, y) : rays.ray(x, y, offset);
+        const std::size_t i = image.firstSample[p] + e;
+        if (lens) {
+          const capture::ApertureRay through =
+              lens->through(ray, capture::aperturePoint(static_cast<int32_t>(e % k), k));
+          ray = through.ray;
+          image.aperture[i] = glm::vec4(ray.origin, through.lensPath_m);
+        }
         const auto hit = scene.intersect(ray.origin, ray.direction);
         if (!hit) continue;
-        const std::size_t i = image.firstSample[p] + s;
         image.position[i] = glm::vec4(hit->position_world, 1.0f);
         image.normal[i] = glm::vec4(hit->normal_world, 0.0f);
         image.albedo[i] = glm::vec4(hit->albedo, 1.0f);
@@ -59,22 +77,23 @@ void traceInto(SurfaceImage& image, const rays::RayScene& scene, const capture::
 }  // namespace
 
 SurfaceImage traceSurfaces(const rays::RayScene& scene, const capture::Imager& imager, int threads,
-                           int32_t samplesPerSide) {
+                           int32_t samplesPerSide, int32_t apertureSamples) {
   const std::size_t pixels =
       static_cast<std::size_t>(capture::imageWidth(imager)) * capture::imageHeight(imager);
-  SurfaceImage image = emptyImage(imager, std::vector<int32_t>(pixels, samplesPerSide));
+  SurfaceImage image =
+      emptyImage(imager, std::vector<int32_t>(pixels, samplesPerSide), apertureSamples);
   traceInto(image, scene, imager, threads);
   return image;
 }
 
 SurfaceImage traceSampledPixels(const rays::RayScene& scene, const capture::Imager& imager,
                                 int threads, int32_t samplesPerSide,
-                                const std::vector<uint8_t>& sampled) {
+                                const std::vector<uint8_t>& sampled, int32_t apertureSamples) {
   TOFSIM_CHECK_EQ(sampled.size(), static_cast<std::size_t>(capture::imageWidth(imager)) *
                                       capture::imageHeight(imager));
   std::vector<int32_t> sides(sampled.size());
   for (std::size_t p = 0; p < sampled.size(); ++p) sides[p] = sampled[p] ? samplesPerSide : 1;
-  SurfaceImage image = emptyImage(imager, std::move(sides));
+  SurfaceImage image = emptyImage(imager, std::move(sides), apertureSamples);
   traceInto(image, scene, imager, threads);
   return image;
 }

@@ -37,6 +37,12 @@ void validate(const ReferenceSettings& s, const RenderJob& job) {
   if (axis.bins < 1 || !(axis.bin_width_s > 0.0)) {
     throw InputError("time axis needs bins >= 1 and bin_width > 0");
   }
+  // Its paths start at the camera's position: an aperture would be ignored.
+  if (const Camera* camera = cameraOf(job.imager); camera != nullptr && camera->defocused()) {
+    throw InputError("camera.aperture " + std::to_string(camera->aperture_m) +
+                     " m: the reference path tracer has no thin lens (defocus runs on "
+                     "render.renderer: ir with render.backend: cpu)");
+  }
 }
 
 // Rows per segment: as many as the memory budget allows for the two float

@@ -4,7 +4,7 @@
 // looks through the centre of its pixel; all distances are metres in world
 // space. With a lens each pixel's ray is the undistorted direction of its
 // centre, and a rasterizer cannot draw the image (capture::pinhole is null):
-// renderers trace it.
+// renderers trace it; so with an aperture (defocus, ThinLens.h).
 
 #include <cstdint>
 #include <glm/glm.hpp>
@@ -23,6 +23,15 @@ struct Camera {
   int32_t height = 64;
   /// The calibrated lens, in place of fov_y_deg; none: the ideal pinhole.
   std::optional<Lens> lens;
+  /// Thin-lens defocus (ThinLens.h): the aperture's diameter, m (0: a
+  /// pinhole, every ray from position_world); the distance along the
+  /// optical axis of the plane in focus, m; the aperture points each pixel
+  /// sample traces. A defocused camera is traced, not rasterized.
+  float aperture_m = 0.0f;
+  float focus_distance_m = 1.0f;
+  int32_t aperture_samples = 16;
+
+  bool defocused() const { return aperture_m > 0.0f; }
 
   glm::vec3 forward() const;
   glm::vec3 right() const;

@@ -54,7 +54,7 @@ glm::vec3 viewpoint(const Imager& imager);
 /// render.camera_unwarp drops it for every imager.
 bool lastLegCounts(const Imager& imager);
 /// The pinhole, or null for an imager a rasterizer cannot draw (a point
-/// set, a camera with a lens).
+/// set, a camera with a lens or an aperture).
 const Camera* pinhole(const Imager& imager);
 /// The camera, with or without a lens; null for a point set.
 const Camera* cameraOf(const Imager& imager);
@@ -94,6 +94,11 @@ class PixelSteps {
   PixelSteps(const Imager& imager, float side, int32_t x = 0, int32_t y = 0);
   /// At surface point x with unit normal n.
   FootprintSteps at(const glm::vec3& x, const glm::vec3& n) const;
+  /// Same for a camera's ray from `origin`, a point of its aperture
+  /// (ThinLens.h): it aims at its pixel's point in focus, which moves across
+  /// the pixel as the pinhole's ray does, so the ray steps are the pinhole's
+  /// (the aperture lies in the plane through the camera normal to its axis).
+  FootprintSteps at(const glm::vec3& x, const glm::vec3& n, const glm::vec3& origin) const;
   /// What `at` starts from, for a device that computes it itself
   /// (footprint_deposit.glsl): a camera's ray steps across the (sub-)pixel,
   /// or a point set's surface steps, which `at` returns as they are.

@@ -58,6 +58,7 @@ class CpuBackend : public ir::IrBackend {
   std::string description() const override;
   ir::DeviceLimits limits() const override;
   bool tracesRays() const override { return true; }
+  bool defocuses() const override { return true; }
   void setScene(const scene::Scene& scene, const rays::RayScene* rays) override;
   ir::CentreSurfaces prepareSurfaces(const capture::RenderJob& job) override;
   /// Never called: the CPU backend traces every imager's samples itself.
@@ -134,6 +135,7 @@ class CpuBackend : public ir::IrBackend {
   /// render.adaptive_pixel_samples: surfaces_ holds the centres until
   /// setSampledPixels (or finishSurfaces) traces the sub-samples.
   bool subSamplesPending_ = false;
+  int32_t apertureSamples_ = 1;  ///< per pixel sample (capture::apertureSamplesOf)
   std::unique_ptr<VplArrays> vpls_;
   std::unique_ptr<CpuIsm> ism_;
   std::vector<PixelSurface> segmentSurfaces_;  ///< per sample of the segment's pixels

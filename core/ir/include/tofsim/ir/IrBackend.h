@@ -104,6 +104,11 @@ class IrBackend {
   /// gets the driver's RayScene; otherwise the driver builds none unless a
   /// later bounce needs it).
   virtual bool tracesRays() const { return false; }
+  /// Whether the backend gathers a defocused camera's aperture samples
+  /// (capture::ThinLens: each sample's camera leg ends on its own aperture
+  /// point, SurfaceImage::origin); the driver refuses a defocused camera
+  /// otherwise.
+  virtual bool defocuses() const { return false; }
   /// The scene every following render sees, prepared once (GL: geometry
   /// upload and the triangle soup's BVH; CPU: nothing but the reference):
   /// `rays` is the driver's one Embree scene of it when tracesRays(), which
