@@ -45,40 +45,65 @@ class FrequencyCorrelation {
   std::optional<PhaseCorrelation> measured_;
 };
 
-/// Per pixel: the noise-free raw values (F * N) of a volume.
+/// Per pixel: the noise-free raw values (F * N) of a volume, and with two
+/// taps tap B's too (at the reference phase + pi).
 struct Correlator {
   const CwTofParams& p;
   const TimeAxis& axis;
-  std::vector<double> table;  // (F, N, T): correlation of each render bin
+  std::vector<double> table;  // (taps, F, N, T): correlation of each render bin
+  std::vector<FrequencyCorrelation> rho;
+  std::size_t rows = 0;  // taps * F * N
 
   Correlator(const CwTofParams& params, const TimeAxis& a) : p(params), axis(a) {
     const int32_t N = p.phase_steps;
-    for (std::size_t fi = 0; fi < p.frequencies_Hz.size(); ++fi) {
-      const FrequencyCorrelation rho(p, fi);
-      for (int32_t k = 0; k < N; ++k) {
-        const double phi = 2.0 * M_PI * k / N;
-        for (int32_t t = 0; t < axis.bins; ++t) {
-          const double t0 = axis.binStart_s(t);
-          table.push_back(rho.bin(phi, t0, t0 + axis.bin_width_s));
+    for (std::size_t fi = 0; fi < p.frequencies_Hz.size(); ++fi) rho.emplace_back(p, fi);
+    for (int32_t tap = 0; tap < (p.taps == 2 ? 2 : 1); ++tap) {
+      for (const FrequencyCorrelation& r : rho) {
+        for (int32_t k = 0; k < N; ++k) {
+          const double phi = referencePhase(tap, k);
+          for (int32_t t = 0; t < axis.bins; ++t) {
+            const double t0 = axis.binStart_s(t);
+            table.push_back(r.bin(phi, t0, t0 + axis.bin_width_s));
+          }
         }
+        rows += N;
       }
     }
   }
 
+  /// Tap A: 2 pi k / N; tap B: + pi (the complementary reference).
+  double referencePhase(int32_t tap, int32_t k) const {
+    const double phi = 2.0 * M_PI * k / p.phase_steps;
+    return tap == 0 ? phi : phi + M_PI;
+  }
+
   /// raw[f * N + k] = 0.5 (sum E + ambient) + 0.5 m sum_t E_t rho_t(f, k).
   void raw(const std::vector<double>& signal, double ambient, std::vector<double>& out) const {
-    const std::size_t T = signal.size();
-    const std::size_t FN = p.frequencies_Hz.size() * p.phase_steps;
-    const double ac = 0.5 * p.modulation_contrast;  // 0.5 exactly at m = 1
-    double total = ambient;
-    for (double e : signal) total += e;
-    out.assign(FN, 0.5 * total);
-    for (std::size_t j = 0; j < FN; ++j) {
-      const double* rho = table.data() + j * T;
-      double s = 0.0;
-      for (std::size_t t = 0; t < T; ++t) s += signal[t] * rho[t];
-      out[j] += ac * s;
+    correlate(signal, ambient, p.frequencies_Hz.size() * p.phase_steps, out,
+              [&](std::size_t j) { return table.data() + j * signal.size(); });
+  }
+
+  /// Every tap's raws (rows: tap A's F * N, then tap B's) of a pixel whose
+  /// fixed-pattern time offset is delay_s: each bin's phase interval shifted
+  /// by 2 pi f delay_s inside the bin mean, exactly (the table when 0).
+  void taps(const std::vector<double>& signal, double ambient, double delay_s,
+            std::vector<double>& out) const {
+    if (delay_s == 0.0) {
+      correlate(signal, ambient, rows, out,
+                [&](std::size_t j) { return table.data() + j * signal.size(); });
+      return;
     }
+    const std::size_t FN = p.frequencies_Hz.size() * p.phase_steps;
+    std::vector<double> shifted(signal.size());
+    correlate(signal, ambient, rows, out, [&](std::size_t j) {
+      const std::size_t f = (j % FN) / p.phase_steps;
+      const double phi = referencePhase(static_cast<int32_t>(j / FN), j % p.phase_steps);
+      for (std::size_t t = 0; t < shifted.size(); ++t) {
+        const double t0 = axis.binStart_s(static_cast<int32_t>(t)) + delay_s;
+        shifted[t] = rho[f].bin(phi, t0, t0 + axis.bin_width_s);
+      }
+      return static_cast<const double*>(shifted.data());
+    });
   }
 
   /// Phases and amplitudes (F) from raw values, and the depth: unwrapped
@@ -95,6 +120,24 @@ struct Correlator {
     // Delay -> depth in the medium (c / eta), so a scene in water is not
     // reported as (eta - 1) x depth of multipath error.
     return unwrapDepth_m(phases, p.frequencies_Hz, range, axis.depthPerSecond_m_per_s());
+  }
+
+  /// 0.5 (sum E + ambient) + 0.5 m sum_t E_t rho_t for each of `count`
+  /// correlation rows, rowOf(j) giving row j's T values.
+  template <typename RowOf>
+  void correlate(const std::vector<double>& signal, double ambient, std::size_t count,
+                 std::vector<double>& out, RowOf&& rowOf) const {
+    const std::size_t T = signal.size();
+    const double ac = 0.5 * p.modulation_contrast;  // 0.5 exactly at m = 1
+    double total = ambient;
+    for (double e : signal) total += e;
+    out.assign(count, 0.5 * total);
+    for (std::size_t j = 0; j < count; ++j) {
+      const double* r = rowOf(j);
+      double s = 0.0;
+      for (std::size_t t = 0; t < T; ++t) s += signal[t] * r[t];
+      out[j] += ac * s;
+    }
   }
 
   /// The depth one frequency's phase stands for, in [0, k / f).
