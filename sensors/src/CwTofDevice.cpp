@@ -38,6 +38,13 @@ double compand(const CwTofCompanding& c, double v, bool& clipped) {
 }
 }  // namespace
 
+const std::vector<double>* CwTofNoiseTable::at(double raw_e) const {
+  const double i = std::round(raw_e) - static_cast<double>(first_mean_e);
+  if (!(i >= 0.0 && i < static_cast<double>(samples.size()))) return nullptr;
+  const std::vector<double>& set = samples[static_cast<std::size_t>(i)];
+  return set.empty() ? nullptr : &set;
+}
+
 bool cwtofHasFixedPattern(const CwTofParams& p) {
   return p.delay_sigma_s > 0.0 || p.delay_map.present() || p.gain_sigma > 0.0 ||
          p.gain_map.present() || p.offset_sigma_e > 0.0 || p.offset_map.present();
@@ -46,7 +53,7 @@ bool cwtofHasFixedPattern(const CwTofParams& p) {
 bool cwtofDeviceActive(const CwTofParams& p) {
   return cwtofHasFixedPattern(p) || p.taps != 1 || p.tap_a_gain != 1.0 || p.tap_b_gain != 1.0 ||
          p.ambient_suppression > 0.0 || p.dark_current_e > 0.0 || p.full_well_e > 0.0 ||
-         p.adc_bits > 0;
+         p.adc_bits > 0 || p.noise_model != CwTofNoiseModel::PoissonRead;
 }
 
 CwTofFixedPattern cwtofFixedPattern(const CwTofParams& p, int32_t height, int32_t width) {
@@ -138,6 +145,12 @@ void checkCwTofDevice(const CwTofParams& p) {
            ": inputs must increase and outputs must not decrease");
     }
   }
+  const bool table = p.noise_model == CwTofNoiseModel::Table;
+  if (table != p.noise_table.present()) {
+    fail(table ? "noise_model: table needs a noise_table"
+               : "noise_table is for noise_model: table");
+  }
+  if (table && p.read_noise_e > 0.0) fail("read_noise is part of the noise_table: remove it");
   const std::size_t F = p.frequencies_Hz.size(), N = static_cast<std::size_t>(p.phase_steps);
   if (!p.capture_order.empty()) {
     std::vector<bool> seen(F * N, false);
@@ -187,6 +200,7 @@ double CwTofDeviceStage::well(double charge, bool& saturated) const {
 }
 
 bool CwTofDeviceStage::pixel(std::vector<double>& v, std::size_t px, Rng& rng, double* taps) const {
+  if (p_.noise_model == CwTofNoiseModel::Table) return tablePixel(v, px, rng, taps);
   const std::size_t FN = p_.frequencies_Hz.size() * p_.phase_steps;
   const double gA = pattern_.gain_a[px];
   const double offset = pattern_.offset_e.empty() ? 0.0 : pattern_.offset_e[px];
@@ -229,6 +243,38 @@ bool CwTofDeviceStage::pixel(std::vector<double>& v, std::size_t px, Rng& rng, d
       taps[2 * j + 1] = b;
     }
     v[j] = a - b + offset;
+  }
+  v.resize(FN);
+  return saturated;
+}
+
+// The same charges without noise, then one draw of the table per raw.
+bool CwTofDeviceStage::tablePixel(std::vector<double>& v, std::size_t px, Rng& rng,
+                                  double* taps) const {
+  const std::size_t FN = p_.frequencies_Hz.size() * p_.phase_steps;
+  const int32_t T = p_.taps == 2 ? 2 : 1;
+  const double offset = pattern_.offset_e.empty() ? 0.0 : pattern_.offset_e[px];
+  bool saturated = false;
+  for (std::size_t j = 0; j < FN; ++j) {
+    double charge[2] = {0.0, 0.0};
+    for (int32_t t = 0; t < T; ++t) {
+      const double g = t == 0 ? pattern_.gain_a[px] : pattern_.gain_b[px];
+      charge[t] = g * v[t * FN + j] + p_.dark_current_e;
+    }
+    if (T == 2 && p_.ambient_suppression > 0.0) {
+      const double common = p_.ambient_suppression * std::min(charge[0], charge[1]);
+      charge[0] -= common;
+      charge[1] -= common;
+    }
+    for (int32_t t = 0; t < T; ++t) {
+      charge[t] = well(charge[t], saturated);
+      if (taps) taps[T * j + t] = charge[t];
+    }
+    const double clean = charge[0] - charge[1] + offset;
+    const std::vector<double>* set = p_.noise_table.at(clean);
+    const double u = rng.uniform();  // one per raw, drawn or not
+    v[j] =
+        set ? (*set)[std::min(set->size() - 1, static_cast<std::size_t>(u * set->size()))] : clean;
   }
   v.resize(FN);
   return saturated;

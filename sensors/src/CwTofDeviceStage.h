@@ -36,6 +36,8 @@ class CwTofDeviceStage {
   double gain(const std::vector<double>& map, double global, std::size_t px) const {
     return map.empty() ? global : map[px];
   }
+  /// pixel() with noise_model: table.
+  bool tablePixel(std::vector<double>& v, std::size_t px, Rng& rng, double* taps) const;
   /// The charge of a tap whose mean is `mean` (Poisson when shot_noise).
   double draw(double mean, Rng& rng) const;
   /// The full well: a charge at or above it is clipped to it and saturates.

@@ -129,6 +129,34 @@ TEST_F(CwTofDeviceConfigTest, ReadsEveryDeviceKeyAndRoundTrips) {
   EXPECT_EQ(inl.companding.input_dn, (std::vector<double>{0, 100, 1000}));
 }
 
+TEST_F(CwTofDeviceConfigTest, NoiseTableReadsAndChecks) {
+  std::ofstream(dir_ / "noise.csv") << "mean,sample\n# two means\n10,9\n10,12\n12,11.5\n";
+  const sensors::CwTofParams p = load("    noise_model: table\n    noise_table: noise.csv\n");
+  EXPECT_EQ(p.noise_model, sensors::CwTofNoiseModel::Table);
+  EXPECT_EQ(p.noise_table.first_mean_e, 10);
+  ASSERT_EQ(p.noise_table.samples.size(), 3u);
+  EXPECT_EQ(p.noise_table.samples[0], (std::vector<double>{9, 12}));
+  EXPECT_TRUE(p.noise_table.samples[1].empty());
+  EXPECT_EQ(p.noise_table.at(11.6), &p.noise_table.samples[2]);
+  YAML::Node doc;
+  doc["sensors"] = sensorsToYaml({sensors::SensorSpec{"cwtof", p}});
+  const ConfigNode again(YAML::Load(YAML::Dump(doc)), "effective.yaml");
+  const std::vector<sensors::SensorSpec> specs = parseSensors(again.child("sensors"));
+  EXPECT_EQ(std::get<sensors::CwTofParams>(specs[0].params).noise_table.samples,
+            p.noise_table.samples);
+  std::ofstream(dir_ / "half.csv") << "10,9\n10.5,12\n";
+  {
+    const std::string message = errorOf("    noise_model: table\n    noise_table: half.csv\n");
+    EXPECT_NE(message.find((dir_ / "half.csv").string() + ":2"), std::string::npos) << message;
+    EXPECT_NE(message.find("is not an integer"), std::string::npos) << message;
+  }
+  expectError("    noise_model: table\n", kFirstKeyLine, "noise_model", "needs `noise_table`");
+  expectError("    noise_table: noise.csv\n", kFirstKeyLine, "noise_table",
+              "is for `noise_model: table`");
+  expectError("    noise_model: table\n    noise_table: noise.csv\n    read_noise: 2\n",
+              kFirstKeyLine + 2, "read_noise", "holds the read noise");
+}
+
 TEST_F(CwTofDeviceConfigTest, BadMapsAreLocatedErrors) {
   writeMap("narrow.npy", {24, 31}, 1.0f);
   expectError("    gain_map: narrow.npy\n", kFirstKeyLine, "gain_map",

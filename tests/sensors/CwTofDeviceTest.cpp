@@ -11,6 +11,7 @@
 #include <complex>
 #include <cstdio>
 #include <cstring>
+#include <map>
 #include <vector>
 
 #include "CwTofCorrelator.h"
@@ -376,6 +377,54 @@ TEST(CwTofDeviceTest, RawTimeStampsFollowTheCaptureOrder) {
   EXPECT_DOUBLE_EQ(stepMajor[1 * 3 + 2], 7 * 1.5e-3);  // (f 1, n 2) is the 8th raw
   p.capture_order.pop_back();
   EXPECT_THROW(checkCwTofDevice(p), InputError);
+}
+
+TEST(CwTofDeviceTest, NoiseTableDrawsItsSamplesInLaw) {
+  // Columns 0..4: noise-free raws 100, 110, .., 140 e- (ambient 200, no
+  // light, an offset per column); column 5 at 150 is outside the table.
+  const int32_t W = 6, H = 300;
+  const TransientVolume v = makeVolume(W, H, 0.0, 20e-12, 50);
+  CwTofParams p;
+  p.ambient_e = 200.0;
+  p.offset_map = constantMap(W, H, 0.0);
+  for (int32_t px = 0; px < W * H; ++px) p.offset_map.values[px] = 10.0 * (px % W);
+  p.noise_model = CwTofNoiseModel::Table;
+  p.noise_table.first_mean_e = 100;
+  p.noise_table.samples.resize(41);
+  const int kSamples = 40;
+  for (int level = 0; level < 5; ++level) {  // uneven multiplicities over m - 6 .. m + 6
+    for (int k = 0; k < kSamples; ++k) {
+      p.noise_table.samples[10 * level].push_back(100 + 10 * level - 6 + (k * k) % 13);
+    }
+  }
+  const std::vector<float>& raw = array(runCwTof(v, p, 3), "cwtof_raw").data;
+  const std::size_t HW = static_cast<std::size_t>(W) * H;
+  // Per level: counts of each value against draws x multiplicity / 40; and
+  // against the same values equally likely (a wrong law).
+  double x2 = 0.0, wrong = 0.0;
+  int dof = 0;
+  for (int level = 0; level < 5; ++level) {
+    std::map<double, int> expected, observed;
+    for (double s : p.noise_table.samples[10 * level]) ++expected[s];
+    int draws = 0;
+    for (std::size_t i = 0; i < raw.size(); ++i) {
+      if (static_cast<int>(i % HW) % W != level) continue;
+      ASSERT_TRUE(expected.count(raw[i])) << raw[i];
+      ++observed[raw[i]];
+      ++draws;
+    }
+    for (const auto& [value, count] : expected) {
+      const double e = double(draws) * count / kSamples, e0 = double(draws) / expected.size();
+      const double o = observed[value];
+      x2 += (o - e) * (o - e) / e;
+      wrong += (o - e0) * (o - e0) / e0;
+    }
+    dof += static_cast<int>(expected.size()) - 1;
+  }
+  std::printf("noise table: chi-square %.1f on %d dof; equal weights: %.1f\n", x2, dof, wrong);
+  EXPECT_LT(x2, dof + 4.0 * std::sqrt(2.0 * dof));
+  EXPECT_GT(wrong, dof + 4.0 * std::sqrt(2.0 * dof));
+  for (std::size_t i = 5; i < raw.size(); i += W) EXPECT_EQ(raw[i], 150.0f);  // outside: no noise
 }
 
 TEST(CwTofDeviceTest, BadParametersAreInputErrors) {

@@ -1,5 +1,6 @@
 #include "CwTofDeviceConfig.h"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <string>
@@ -10,6 +11,7 @@
 #include "ShortestNumber.h"
 #include "SpadTableFile.h"
 #include "TableText.h"
+#include "tofsim/io/Npy.h"
 
 namespace tofsim::config {
 
@@ -113,6 +115,76 @@ std::vector<sensors::CwTofCaptureStep> parseCaptureOrder(const ConfigNode& n,
   return order;
 }
 
+sensors::CwTofNoiseTable parseNoiseTable(const ConfigNode& n) {
+  const char* key = "noise_table";
+  const std::filesystem::path path = configRelativePath(n, n.requireString(key));
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec)) {
+    n.failKey(key, "file not found: " + path.string());
+  }
+  std::vector<double> means, samples;
+  std::vector<std::string> where;
+  const std::string ext = lowerExtension(path);
+  if (ext == ".csv") {
+    for (const CsvRow& row : readCsvRows(n, key, path, 2, "noise-free raw (integer), sample")) {
+      means.push_back(row.cells[0]);
+      samples.push_back(row.cells[1]);
+      where.push_back(path.string() + ":" + std::to_string(row.line));
+    }
+  } else if (ext == ".npy") {
+    io::NpyArray a;
+    try {
+      a = io::readNpy(path);
+    } catch (const InputError& e) {
+      n.failKey(key, std::string(e.what()) + " (a noise table .npy is a float32 (n, 2) array)");
+    }
+    if (a.shape.size() != 2 || a.shape[1] != 2) {
+      n.failKey(key, path.string() + ": expected shape (n, 2) (noise-free raw, sample)");
+    }
+    for (std::size_t k = 0; k < a.shape[0]; ++k) {
+      means.push_back(a.data[2 * k]);
+      samples.push_back(a.data[2 * k + 1]);
+      where.push_back(path.string() + " row " + std::to_string(k));
+    }
+  } else {
+    n.failKey(key,
+              "a two-column .csv or a .npy (n, 2) file (got '" + path.filename().string() + "')");
+  }
+  if (means.empty()) n.failKey(key, path.string() + ": no rows");
+  double lo = means[0], hi = means[0];
+  for (std::size_t k = 0; k < means.size(); ++k) {
+    if (!std::isfinite(means[k]) || means[k] != std::floor(means[k]) || std::fabs(means[k]) > 1e9) {
+      n.failKey(key, where[k] + ": the noise-free raw " + shortest(means[k]) +
+                         " is not an integer (one sample set per integer value)");
+    }
+    if (!std::isfinite(samples[k])) n.failKey(key, where[k] + ": the sample is not finite");
+    lo = std::min(lo, means[k]);
+    hi = std::max(hi, means[k]);
+  }
+  if (hi - lo > 1e7) n.failKey(key, path.string() + ": the means span more than 1e7 values");
+  sensors::CwTofNoiseTable table;
+  table.file = path.string();
+  table.first_mean_e = static_cast<int64_t>(lo);
+  table.samples.resize(static_cast<std::size_t>(hi - lo) + 1);
+  for (std::size_t k = 0; k < means.size(); ++k) {
+    table.samples[static_cast<std::size_t>(means[k] - lo)].push_back(samples[k]);
+  }
+  return table;
+}
+
+void checkCwTofNoiseModel(const ConfigNode& n, const CwTofParams& p) {
+  const bool table = p.noise_model == sensors::CwTofNoiseModel::Table;
+  if (table && !p.noise_table.present()) {
+    n.failKey("noise_model", "`table` needs `noise_table` (the measured samples)");
+  }
+  if (!table && p.noise_table.present()) {
+    n.failKey("noise_table", "is for `noise_model: table`: set it, or remove this");
+  }
+  if (table && p.read_noise_e > 0.0) {
+    n.failKey("read_noise", "the noise table holds the read noise: remove it");
+  }
+}
+
 YAML::Node pairNode(double a, double b) {
   YAML::Node xy;
   xy.push_back(shortest(a));
@@ -139,6 +211,10 @@ bool parseCwTofDeviceKey(const ConfigNode& n, std::string_view key, CwTofParams&
     if (n.has(k)) p.capture_order = parseCaptureOrder(n, p);
     return true;
   }
+  if (key == "noise_table") {
+    if (n.has(k)) p.noise_table = parseNoiseTable(n);
+    return true;
+  }
   return false;
 }
 
@@ -156,6 +232,7 @@ void checkCwTofDevice(const ConfigNode& n, const CwTofParams& p) {
   for (const auto& [key, set] : adcKeys) {
     if (set && p.adc_bits == 0) n.failKey(key, "needs `adc_bits` (the ADC is off at 0)");
   }
+  checkCwTofNoiseModel(n, p);
   const std::pair<const char*, bool> measured[] = {
       {"delay_sigma", p.delay_map.present() && p.delay_sigma_s > 0.0},
       {"gain_sigma", p.gain_map.present() && p.gain_sigma > 0.0},
@@ -199,6 +276,10 @@ bool emitCwTofDeviceKey(YAML::Node& n, std::string_view key, const CwTofParams& 
     for (std::size_t i = 0; i < p.companding.input_dn.size(); ++i) {
       n[k].push_back(pairNode(p.companding.input_dn[i], p.companding.output_dn[i]));
     }
+    return true;
+  }
+  if (key == "noise_table") {
+    if (p.noise_table.present()) n[k] = p.noise_table.file;
     return true;
   }
   if (key == "capture_order") {

@@ -165,6 +165,20 @@ json modelJson(const CwTofParams& p, const TimeAxis& render) {
                          {"output_dn", p.companding.output_dn}};
     }
     if (key == "capture_order") j["capture"] = captureJson(p);
+    if (key == "noise_table" && p.noise_table.present()) {
+      std::size_t samples = 0, means = 0;
+      for (const auto& set : p.noise_table.samples) {
+        samples += set.size();
+        means += !set.empty();
+      }
+      j["noise_table"] = {
+          {"file", p.noise_table.file},
+          {"first_mean_e", p.noise_table.first_mean_e},
+          {"last_mean_e",
+           p.noise_table.first_mean_e + static_cast<int64_t>(p.noise_table.samples.size()) - 1},
+          {"means", means},
+          {"samples", samples}};
+    }
     if (key == "frequencies") j["frequencies_Hz"] = p.frequencies_Hz;
     if (key == "correlation" && !p.correlation.empty()) {
       // What each waveform is; its values are in the effective config.

@@ -73,6 +73,9 @@ struct CwTofParams {
   std::vector<CwTofCaptureStep> capture_order;
   double integration_time_s = 0.0;  ///< per raw, s (time stamps)
   double readout_gap_s = 0.0;       ///< between raws, s (time stamps)
+  /// PoissonRead (shot_noise, read_noise) or Table (noise_table, in place of both).
+  CwTofNoiseModel noise_model = CwTofNoiseModel::PoissonRead;
+  CwTofNoiseTable noise_table;
 };
 
 /// Mean over [t0_s, t1_s) of the normalised correlation rho(2 pi f t - phase):
@@ -153,6 +156,11 @@ std::vector<std::string> cwtofWarnings(const CwTofParams& params, const TimeAxis
 /// (F, S) m (wigglingError_m) with its max |error| and RMS as attributes.
 /// Every error is wrapped into (-R/2, R/2] of its depth's range R, so a phase
 /// wrap never reads as multipath. Every Image comes with a ColorMappedImage.
+/// The device stage (CwTofDevice.h) adds, where its keys ask for them,
+/// "cwtof_raw_dn" Array (F, N, H, W) DN, "cwtof_device_phase" Array (F, H, W),
+/// "cwtof_device_depth" (NaN where saturated) and "cwtof_device_amplitude"
+/// Images, "cwtof_saturated", "cwtof_raw_taps" Array (F, N, 2, H, W) e- and
+/// the fixed-pattern maps; "cwtof_raw" is then the device's raw in e-.
 std::vector<SensorOutput> runCwTof(const TransientVolume& volume, const CwTofParams& params,
                                    uint64_t seed, const CwTofReferences& references = {});
 

@@ -37,6 +37,24 @@ struct CwTofCompanding {
   bool present() const { return !input_dn.empty(); }
 };
 
+/// The noise of the raws: Poisson shot noise per tap and Gaussian read noise,
+/// or an empirical conditional table (FLAT's approach).
+enum class CwTofNoiseModel { PoissonRead, Table };
+
+/// An empirical conditional noise table: for integer noise-free raw values
+/// first_mean_e + i, the measured raws samples[i] (empty: no noise there).
+/// A raw whose noise-free value rounds to a mean with samples becomes one of
+/// them, drawn uniformly; outside the table it is the noise-free value.
+struct CwTofNoiseTable {
+  std::string file;
+  int64_t first_mean_e = 0;
+  std::vector<std::vector<double>> samples;
+
+  bool present() const { return !samples.empty(); }
+  /// The samples of the mean nearest to `raw_e`, or nullptr.
+  const std::vector<double>* at(double raw_e) const;
+};
+
 /// One raw of the capture: frequency index f and phase step n.
 struct CwTofCaptureStep {
   int32_t frequency = 0;

@@ -162,6 +162,9 @@ inline constexpr auto kSpadFields = std::tuple{
 inline constexpr std::array<Name<Waveform>, 3> kWaveformNames{
     {{"sine", Waveform::Sine}, {"square", Waveform::Square}, {"measured", Waveform::Measured}}};
 
+inline constexpr std::array<Name<CwTofNoiseModel>, 2> kCwTofNoiseModelNames{
+    {{"poisson_read", CwTofNoiseModel::PoissonRead}, {"table", CwTofNoiseModel::Table}}};
+
 inline constexpr auto kCwTofFields = std::tuple{
     Custom{"frequencies", "list of frequencies", "> 0", "[\"20 MHz\"]", "Hz", "modulation frequencies"},
     Field{"phase_steps", &CwTofParams::phase_steps, Integer{.max = 1024, .atLeast = 3},
@@ -221,6 +224,9 @@ inline constexpr auto kCwTofFields = std::tuple{
           {.json = "integration_time_s", .doc = "exposure of one raw (time stamps: raw i of the capture order starts at i (integration_time + readout_gap))"}},
     Field{"readout_gap", &CwTofParams::readout_gap_s, Duration{kNonNegative},
           {.json = "readout_gap_s", .doc = "dead time between two raws (time stamps)"}},
+    Field{"noise_model", &CwTofParams::noise_model, Choice<CwTofNoiseModel>{kCwTofNoiseModelNames},
+          {.json = "noise_model", .doc = "`poisson_read` (`shot_noise`, `read_noise`) or `table`: an empirical conditional noise table (`noise_table`) in place of both"}},
+    Custom{"noise_table", "file", "", "none", "e-", "`noise_model: table`: rows (integer noise-free raw, measured raw), a two-column .csv or a float32 .npy (n, 2); a raw whose noise-free value rounds to a listed mean becomes one of its samples, drawn uniformly; elsewhere it is noise-free"},
 };
 // clang-format on
 
