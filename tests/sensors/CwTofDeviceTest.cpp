@@ -397,7 +397,7 @@ TEST(CwTofDeviceTest, NoiseTableDrawsItsSamplesInLaw) {
       p.noise_table.samples[10 * level].push_back(100 + 10 * level - 6 + (k * k) % 13);
     }
   }
-  const std::vector<float>& raw = array(runCwTof(v, p, 3), "cwtof_raw").data;
+  const std::vector<float> raw = array(runCwTof(v, p, 3), "cwtof_raw").data;
   const std::size_t HW = static_cast<std::size_t>(W) * H;
   // Per level: counts of each value against draws x multiplicity / 40; and
   // against the same values equally likely (a wrong law).
