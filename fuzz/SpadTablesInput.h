@@ -2,13 +2,16 @@
 // How fuzz_spad_tables turns its bytes into a config whose SPAD reads them as
 // a table file (apps/config/src/SpadTableFile.cpp), shared with the
 // regression test (tests/hardening/FuzzRegressionTest.cpp) so both load an
-// input alike. The first byte picks the table, by its value mod 3: 0, a TDC
+// input alike. The first byte picks the table, by its value mod 5: 0, a TDC
 // DNL as a one-column CSV (`tdc_dnl: dnl.csv`); 1, the same as a 1-D .npy;
-// 2, a dark count map as a 2-D .npy (`dark_count_map: dcr.npy`). The rest is
-// the file. The config is small enough that a table that loads can fit it
-// (8 TDC bins: 8 DNL values summing to 0; a 4 x 4 image: a 4 x 4 map), so
-// the fuzzer also reaches the sensor, which runSpadTables then runs. `dir`
-// holds a `scenes` link to configs/scenes.
+// 2, a dark count map as a 2-D .npy (`dark_count_map: dcr.npy`); 3, an
+// afterpulse delay density as a two-column CSV (`afterpulse_delay_table:
+// afterpulse.csv`, with afterpulses on); 4, the same as an (n, 2) .npy. The
+// rest is the file. The config is small enough that a table that loads can
+// fit it (8 TDC bins: 8 DNL values summing to 0; a 4 x 4 image: a 4 x 4 map),
+// so the fuzzer also reaches the sensor, which runSpadTables then runs (a
+// delay table on the exact event engine). `dir` holds a `scenes` link to
+// configs/scenes.
 
 #include <cstddef>
 #include <cstdint>
@@ -27,8 +30,12 @@ namespace tofsim::fuzz {
 inline std::filesystem::path writeSpadTablesInput(const std::filesystem::path& dir,
                                                   const uint8_t* data, std::size_t size) {
   if (size == 0) return {};
-  const int kind = data[0] % 3;
-  const std::string file = kind == 0 ? "dnl.csv" : kind == 1 ? "dnl.npy" : "dcr.npy";
+  static constexpr const char* kFiles[] = {"dnl.csv", "dnl.npy", "dcr.npy", "afterpulse.csv",
+                                           "afterpulse.npy"};
+  static constexpr const char* kKeys[] = {"tdc_dnl", "tdc_dnl", "dark_count_map",
+                                          "afterpulse_delay_table", "afterpulse_delay_table"};
+  const int kind = data[0] % 5;
+  const std::string file = kFiles[kind];
   std::ofstream(dir / file, std::ios::binary)
       .write(reinterpret_cast<const char*>(data + 1), static_cast<std::streamsize>(size - 1));
   const std::filesystem::path config = dir / "spad_tables.yaml";
@@ -40,8 +47,8 @@ inline std::filesystem::path writeSpadTablesInput(const std::filesystem::path& d
                            "  - type: spad\n"
                            "    cycles: 100\n"
                            "    ambient_rate: 1 GHz\n"
-                           "    "
-                        << (kind == 2 ? "dark_count_map: " : "tdc_dnl: ") << file << "\n";
+                        << (kind >= 3 ? "    afterpulse_probability: 0.2\n" : "") << "    "
+                        << kKeys[kind] << ": " << file << "\n";
   return config;
 }
 

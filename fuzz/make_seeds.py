@@ -66,8 +66,26 @@ meta = json.dumps({"time": {"start_s": 5e-9, "bin_width_s": 1e-11, "bins": 2}, "
 out("fuzz_saved_volume", "render", meta.encode() + b"\0" + npy((2, 1, 2, 3), [float(i) for i in range(12)]))
 
 # SPAD table files (fuzz/SpadTablesInput.h: first byte 0 DNL .csv, 1 DNL .npy,
-# 2 dark count map .npy), each fitting its config (8 TDC bins, 4 x 4 pixels)
+# 2 dark count map .npy, 3 afterpulse delay table .csv, 4 the same as .npy),
+# each fitting its config (8 TDC bins, 4 x 4 pixels)
 dnl = [0.25, -0.25, 0.1, -0.1, 0.0, 0.5, -0.5, 0.0]
 out("fuzz_spad_tables", "dnl_csv", b"\0" + ("# DNL per bin\ndnl\n" + "".join("%g\n" % d for d in dnl)).encode())
 out("fuzz_spad_tables", "dnl_npy", b"\1" + npy((8,), dnl))
 out("fuzz_spad_tables", "dcr_npy", b"\2" + npy((4, 4), [25.0 * (1 + i) for i in range(16)]))
+ap = [(1e-9 * (k + 0.5), 2.0 ** -k) for k in range(6)]
+out("fuzz_spad_tables", "afterpulse_csv", b"\3" + ("delay_s,density\n" + "".join("%g,%g\n" % r for r in ap)).encode())
+out("fuzz_spad_tables", "afterpulse_npy", b"\4" + npy((6, 2), [v for r in ap for v in r]))
+
+# camera files (fuzz/CameraFilesInput.h: first byte 0 OpenCV calibration YAML,
+# 1 correlation waveform .csv, 2 the same as .npy, 3 vignetting map .npy)
+out("fuzz_camera_files", "calibration_yaml", b"\0" + (
+    "%YAML:1.0\n---\nimage_width: 8\nimage_height: 6\n"
+    "camera_matrix: !!opencv-matrix\n   rows: 3\n   cols: 3\n   dt: d\n"
+    "   data: [ 7.5, 0., 3.5, 0., 7.5, 2.5, 0., 0., 1. ]\n"
+    "distortion_coefficients: !!opencv-matrix\n   rows: 5\n   cols: 1\n   dt: d\n"
+    "   data: [ -0.1, 0.02, 0.001, -0.002, 0. ]\n").encode())
+wave = [1.0, 0.5, -0.25, -1.0, -0.25, 0.5]
+out("fuzz_camera_files", "waveform_csv", b"\1" + ("phase_rad,value\n" + "".join(
+    "%.6f,%g\n" % (2 * 3.141592653589793 * j / len(wave), v) for j, v in enumerate(wave))).encode())
+out("fuzz_camera_files", "waveform_npy", b"\2" + npy((len(wave),), wave))
+out("fuzz_camera_files", "vignetting_npy", b"\3" + npy((4, 4), [1.0 - 0.03 * i for i in range(16)]))

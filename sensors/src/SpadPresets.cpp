@@ -95,11 +95,6 @@ const std::array<SpadPreset, 3> kPresets{{
 
 std::span<const SpadPreset> spadPresets() { return kPresets; }
 
-const SpadPreset* findSpadPreset(std::string_view name) {
-  for (const SpadPreset& p : kPresets) {
-    if (name == p.name) return &p;
-  }
-  return nullptr;
-}
+const SpadPreset* findSpadPreset(std::string_view name) { return findPreset(spadPresets(), name); }
 
 }  // namespace tofsim::sensors

@@ -14,6 +14,7 @@
 #include "support/TempDir.h"
 #include "tofsim/config/ConfigKeys.h"
 #include "tofsim/config/RunConfig.h"
+#include "tofsim/io/Npy.h"
 
 namespace tofsim::config {
 namespace {
@@ -148,6 +149,15 @@ TEST_F(ConfigKeysWriterTest, EffectiveConfigWritesEveryDeclaredKey) {
     std::ofstream(dir_ / "l.yaml")
         << "scene: scene.gltf\ncamera: {lens: " << lens << "}\nlight: {}\ntime: {}\n";
     leafPaths(YAML::Load(effectiveConfigYaml(loadRunConfig(dir_ / "l.yaml"))), "", written);
+  }
+  // A PSF, parametric and from a kernel file (their keys exclude each other).
+  const std::vector<float> kernel = {0, 1, 0, 1, 4, 1, 0, 1, 0};
+  io::writeNpy(dir_ / "psf.npy", {3, 3}, kernel.data());
+  for (const char* psf :
+       {"{core_sigma: 0.5, halo_weight: 0.1, halo_radius: 4}", "{file: psf.npy}"}) {
+    std::ofstream(dir_ / "p.yaml")
+        << "scene: scene.gltf\ncamera: {psf: " << psf << "}\nlight: {}\ntime: {}\n";
+    leafPaths(YAML::Load(effectiveConfigYaml(loadRunConfig(dir_ / "p.yaml"))), "", written);
   }
   written.erase("");
   std::set<std::string> declared;

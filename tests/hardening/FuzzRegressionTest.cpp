@@ -11,6 +11,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "fuzz/CameraFilesInput.h"
 #include "fuzz/IrfInput.h"
 #include "fuzz/SceneInvariants.h"
 #include "fuzz/SpadTablesInput.h"
@@ -88,6 +89,23 @@ TEST_F(FuzzRegressionTest, SpadTableFiles) {
     const fs::path config = fuzz::writeSpadTablesInput(dir_, data, bytes.size());
     if (config.empty()) return;
     fuzz::runSpadTables(config::loadRunConfig(config, {}));
+    ++loaded;
+  });
+  EXPECT_GT(inputs, 0);
+  EXPECT_GT(loaded, 0);  // the edges that load reach the sensor
+}
+
+// As in fuzz/fuzz_camera_files.cpp: an OpenCV lens calibration, a CW-ToF
+// correlation waveform (.csv, .npy) or a vignetting map; one the config
+// accepts has its rays traced and runs through the CW-ToF sensor.
+TEST_F(FuzzRegressionTest, CameraFiles) {
+  fs::create_directory_symlink(fs::path(TOFSIM_SOURCE_DIR) / "configs" / "scenes", dir_ / "scenes");
+  int loaded = 0;
+  const int inputs = forEachInput("camera_files", [&](const std::string& bytes, const fs::path&) {
+    const auto* data = reinterpret_cast<const uint8_t*>(bytes.data());
+    const fs::path config = fuzz::writeCameraFilesInput(dir_, data, bytes.size());
+    if (config.empty()) return;
+    fuzz::runCameraFiles(config::loadRunConfig(config, {}));
     ++loaded;
   });
   EXPECT_GT(inputs, 0);

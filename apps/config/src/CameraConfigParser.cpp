@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "LensConfig.h"
+#include "PsfConfig.h"
 #include "SpadTableFile.h"
 #include "Vec3Key.h"
 
@@ -88,6 +89,7 @@ void parseCamera(const ConfigNode& node, CameraConfig& out) {
     out.lens_calibration = lens->calibration_file;
   }
   out.vignetting = parseVignetting(node, c);
+  if (node.has("psf")) out.psf = parsePsf(node, c.width, c.height);
   if (out.gltf_camera.empty()) {
     const glm::vec3 forward = c.look_at_world - c.position_world;
     if (glm::length(forward) <= 0.0f) node.failKey("look_at", "must differ from position");

@@ -1,6 +1,7 @@
 #pragma once
 // Private to the config module: the `camera` section: pose, field of view
-// or a calibrated lens (LensConfig.h), resolution and vignetting.
+// or a calibrated lens (LensConfig.h), resolution, vignetting and the lens's
+// PSF (PsfConfig.h).
 
 #include "ConfigNode.h"
 #include "tofsim/config/RunConfig.h"

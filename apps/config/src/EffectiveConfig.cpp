@@ -67,6 +67,18 @@ YAML::Node cameraNode(const CameraConfig& c) {
       n["vignetting"] = c.vignetting.file;
       break;
   }
+  if (const auto& psf = c.psf) {
+    YAML::Node p;
+    if (!psf->file.empty()) {
+      p["file"] = psf->file;
+    } else {
+      p["core_sigma"] = shortest(psf->params.core_sigma_px);
+      p["halo_weight"] = shortest(psf->params.halo_weight);
+      p["halo_profile"] = optics::haloProfileName(psf->params.halo_profile);
+      p["halo_radius"] = shortest(psf->params.halo_radius_px);
+    }
+    n["psf"] = p;
+  }
   return n;
 }
 

@@ -74,6 +74,24 @@ nlohmann::json vignettingJson(const capture::Vignetting& v) {
   return "none";
 }
 
+// What the lens's scattering was: its parameters or its kernel file.
+nlohmann::json psfJson(const config::PsfConfig& psf) {
+  nlohmann::json j;
+  j["model"] =
+      "each time bin convolved with the kernel, the scattered light keeping its delay; light "
+      "thrown past the sensor's edge lost";
+  if (!psf.file.empty()) {
+    j["kernel_file"] = psf.file;
+  } else {
+    j["core_sigma_px"] = psf.params.core_sigma_px;
+    j["halo_weight"] = psf.params.halo_weight;
+    j["halo_profile"] = optics::haloProfileName(psf.params.halo_profile);
+    j["halo_radius_px"] = psf.params.halo_radius_px;
+  }
+  j["kernel_radius_px"] = {psf.kernel.radiusX(), psf.kernel.radiusY()};
+  return j;
+}
+
 nlohmann::json lightJson(const capture::Light& light, bool attachedToCamera) {
   return {{"type", light.type == capture::Light::Type::Spot ? "spot" : "point"},
           {"position_m", vec(light.position_world)},
@@ -99,6 +117,8 @@ std::string transientMetadataJson(const config::RunConfig& config, const capture
   j["time"] = timeJson(axis);
   j["camera"] = cameraJson(job.camera());
   j["camera"]["vignetting"] = vignettingJson(config.camera.vignetting);
+  // Only with a PSF: the files of a sharp lens keep their bytes.
+  if (config.camera.psf) j["camera"]["psf"] = psfJson(*config.camera.psf);
   j["light"] = lightJson(job.light, config.light.attach_to_camera);
   j["renderer"] = config.renderer == config::RendererKind::Reference ? "reference" : "ir";
   j["backend"] = backend;

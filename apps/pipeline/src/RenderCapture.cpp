@@ -8,6 +8,7 @@
 #include "tofsim/pipeline/AxisReport.h"
 #include "tofsim/pipeline/Capture.h"
 #include "tofsim/pipeline/FiniteSegments.h"
+#include "tofsim/pipeline/PsfSegments.h"
 #include "tofsim/pipeline/RendererFactory.h"
 #include "tofsim/pipeline/SteadySink.h"
 #include "tofsim/pipeline/VignettedSegments.h"
@@ -29,8 +30,24 @@ RenderedCapture renderCapture(const config::RunConfig& config, const capture::Re
   SteadySink steady(camera.width, camera.height, axis.bins);
   std::vector<capture::SegmentSink*> sinks = consumers.sinks;
   sinks.push_back(&steady);
+  const auto& psfConfig = config.camera.psf;
+  if (!psfConfig) sinks.insert(sinks.end(), consumers.beforePsf.begin(), consumers.beforePsf.end());
   capture::TeeSink tee(std::move(sinks));
-  FiniteSegments finite(tee, axis.bins, consumers.bounces);
+  // The lens's PSF on the cleaned light (no NaN to spread), before the
+  // outputs read it; it holds the volume, so it is checked against the
+  // budget first.
+  std::optional<PsfSegments> psf;
+  std::optional<capture::TeeSink> psfAndSharp;
+  if (psfConfig) {
+    checkPsfFits(config, camera.width, camera.height, axis.bins, consumers.bounces.size());
+    psf.emplace(tee, camera.width, camera.height, axis.bins, psfConfig->kernel, config.cpu_threads);
+    std::vector<capture::SegmentSink*> both = consumers.beforePsf;
+    both.push_back(&*psf);
+    psfAndSharp.emplace(std::move(both));
+  }
+  capture::SegmentSink& cleaned =
+      psfAndSharp ? static_cast<capture::SegmentSink&>(*psfAndSharp) : tee;
+  FiniteSegments finite(cleaned, axis.bins, consumers.bounces);
   // The camera's vignetting, before anything reads the light.
   std::optional<VignettedSegments> vignetted;
   if (std::vector<float> gains = capture::vignettingGains(camera, config.camera.vignetting);

@@ -49,9 +49,10 @@ json modelJson(const StreakParams& p, const TimeAxis& render) {
 
 // The preset's name, device, each value's source and the assumed values:
 // what of the sensor a reader can trace to a datasheet.
-json presetJson(const SpadPreset& preset) {
+template <class Params>
+json presetJson(const DevicePreset<Params>& preset) {
   json sourced = json::object(), assumed = json::object();
-  for (const SpadPresetValue& v : preset.values) {
+  for (const PresetValue& v : preset.values) {
     if (v.source) {
       sourced[v.key] = v.source;
     } else {

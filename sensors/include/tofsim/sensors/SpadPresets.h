@@ -8,25 +8,13 @@
 #include <span>
 #include <string_view>
 
+#include "tofsim/sensors/DevicePreset.h"
 #include "tofsim/sensors/Spad.h"
 
 namespace tofsim::sensors {
 
-/// One config key a preset sets: its source, or nullptr where it is assumed
-/// (then `source` says why that value).
-struct SpadPresetValue {
-  const char* key;     ///< the config key (kSpadFields / kBinsFields name)
-  const char* source;  ///< "[PH300] 4 ps base resolution"; nullptr: assumed
-  const char* note;    ///< for an assumed value: what it stands for
-};
-
-struct SpadPreset {
-  const char* name;
-  const char* device;  ///< one line: what the device is, what the preset leaves out
-  void (*apply)(SpadParams&);
-  std::span<const SpadPresetValue> values;  ///< in the order apply sets them
-  std::span<const char* const> sources;     ///< source key -> reference, one line each
-};
+using SpadPresetValue = PresetValue;
+using SpadPreset = DevicePreset<SpadParams>;
 
 /// Every preset, in the order the docs list them.
 std::span<const SpadPreset> spadPresets();

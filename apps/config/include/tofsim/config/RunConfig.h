@@ -14,13 +14,29 @@
 #include <vector>
 
 #include "tofsim/capture/Camera.h"
-#include "tofsim/capture/Vignetting.h"
 #include "tofsim/capture/Light.h"
 #include "tofsim/capture/RenderSettings.h"
+#include "tofsim/capture/Vignetting.h"
 #include "tofsim/config/NlosConfig.h"
+#include "tofsim/optics/PsfKernel.h"
 #include "tofsim/sensors/SensorSpec.h"
 
 namespace tofsim::config {
+
+/// camera.psf: the lens's point spread function, applied to every time bin
+/// of the transient before any output or sensor (pipeline::PsfSegments).
+struct PsfConfig {
+  /// The parametric form (1 - s) core + s halo; unused with a kernel file.
+  optics::PsfParams params;
+  /// camera.psf.file: the measured kernel (absolute) in place of params;
+  /// empty for the parametric form.
+  std::string file;
+  /// The kernel itself: params' cropped to the image (PsfKernel::parametric's
+  /// crop_px = max(W, H) - 1, which changes no pixel), or the file's normalised.
+  optics::PsfKernel kernel;
+  /// Where camera.psf is, for the errors found later (render.memory_budget).
+  FileLoc at;
+};
 
 struct CameraConfig {
   /// Name or index of a camera in the scene; empty: use the values below.
@@ -31,6 +47,8 @@ struct CameraConfig {
   std::string lens_calibration;
   /// camera.vignetting: none, cos4 or a map of gains.
   capture::Vignetting vignetting;
+  /// camera.psf; none: a perfectly sharp lens.
+  std::optional<PsfConfig> psf;
 };
 
 struct LightConfig {

@@ -2,7 +2,8 @@
 // One way through a render, for the CLI's run (RenderRun.h) and the Python
 // module's in-memory render alike: the job from the config with the time
 // axis checked before rendering, then the configured renderer's segments
-// made finite (FiniteSegments.h) and fed to the caller's consumers, the
+// made finite (FiniteSegments.h), through the lens's PSF (PsfSegments.h)
+// and fed to the caller's consumers, the
 // steady image summed, and the light off the time axis measured and checked
 // (AxisReport.h: a warning, or under render.strict an error).
 
@@ -30,6 +31,11 @@ capture::RenderJob prepareCapture(const config::RunConfig& config, const scene::
 struct CaptureConsumers {
   std::vector<capture::SegmentSink*> sinks;
   std::vector<int32_t> bounces;
+  /// Consumers of the light before the lens's PSF (camera.psf), given each
+  /// segment as it comes: a sensor that applies the PSF on its own images
+  /// (optics::applyPsf on CW-ToF's raws, far cheaper than on every bin).
+  /// Without a PSF they see what `sinks` see.
+  std::vector<capture::SegmentSink*> beforePsf;
 };
 
 struct RenderedCapture {
