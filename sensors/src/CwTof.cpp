@@ -119,7 +119,12 @@ class CwTofStream final : public SensorStream {
   void device() {
     // [PSF hook] A lens PSF acts here, on the noise-free charge planes clean_
     // (correlator_.rows planes of H x W, e-, ambient included; plane j = tap
-    // j / (F N), frequency and step of j % (F N)), before any noise.
+    // j / (F N), frequency and step of j % (F N)), before any noise. Each
+    // pixel's fixed-pattern delay is already inside its charges (it acts in
+    // the correlation, consume()), so light blurred onto a pixel here keeps
+    // the delay of the pixel it came from: exact without delay_sigma /
+    // delay_map; with them, a PSF on the transient (before the sensor) is the
+    // exact order.
     for (std::size_t px = 0; px < HW_; ++px) {
       noisy_.resize(correlator_.rows);
       for (std::size_t j = 0; j < noisy_.size(); ++j) noisy_[j] = clean_[j * HW_ + px];
