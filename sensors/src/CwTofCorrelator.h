@@ -52,7 +52,8 @@ struct Correlator {
   const TimeAxis& axis;
   std::vector<double> table;  // (taps, F, N, T): correlation of each render bin
   std::vector<FrequencyCorrelation> rho;
-  std::size_t rows = 0;  // taps * F * N
+  std::size_t rows = 0;            // taps * F * N
+  std::vector<double> quadrature;  // Sine: (F, 2, T), the bin means of cos and sin of 2 pi f t
 
   Correlator(const CwTofParams& params, const TimeAxis& a) : p(params), axis(a) {
     const int32_t N = p.phase_steps;
@@ -67,6 +68,15 @@ struct Correlator {
           }
         }
         rows += N;
+      }
+    }
+    if (p.waveform != Waveform::Sine) return;
+    for (std::size_t fi = 0; fi < rho.size(); ++fi) {  // mean cos and sin of 2 pi f t per bin
+      for (double phase : {0.0, M_PI / 2}) {
+        for (int32_t t = 0; t < axis.bins; ++t) {
+          const double t0 = axis.binStart_s(t);
+          quadrature.push_back(rho[fi].bin(phase, t0, t0 + axis.bin_width_s));
+        }
       }
     }
   }
@@ -94,6 +104,10 @@ struct Correlator {
       return;
     }
     const std::size_t FN = p.frequencies_Hz.size() * p.phase_steps;
+    if (!quadrature.empty()) {
+      delayedSine(signal, ambient, delay_s, out);
+      return;
+    }
     std::vector<double> shifted(signal.size());
     correlate(signal, ambient, rows, out, [&](std::size_t j) {
       const std::size_t f = (j % FN) / p.phase_steps;
@@ -104,6 +118,30 @@ struct Correlator {
       }
       return static_cast<const double*>(shifted.data());
     });
+  }
+
+  /// taps() of a sine with a delay, in two dot products per frequency: the
+  /// bin mean of cos(2 pi f (t + delay) - phi) is cos(psi) C + sin(psi) S,
+  /// psi = phi - 2 pi f delay, C and S the bin means of cos and sin of 2 pi f t.
+  void delayedSine(const std::vector<double>& signal, double ambient, double delay_s,
+                   std::vector<double>& out) const {
+    const std::size_t T = signal.size(), F = p.frequencies_Hz.size();
+    const std::size_t N = static_cast<std::size_t>(p.phase_steps);
+    std::vector<double> dots(2 * F, 0.0);
+    for (std::size_t k = 0; k < 2 * F; ++k) {
+      const double* q = quadrature.data() + k * T;
+      for (std::size_t t = 0; t < T; ++t) dots[k] += signal[t] * q[t];
+    }
+    out.resize(rows);
+    double total = ambient;
+    for (double e : signal) total += e;
+    const double ac = 0.5 * p.modulation_contrast;
+    for (std::size_t j = 0; j < rows; ++j) {
+      const std::size_t f = (j % (F * N)) / N;
+      const double psi = referencePhase(static_cast<int32_t>(j / (F * N)), j % N) -
+                         2.0 * M_PI * p.frequencies_Hz[f] * delay_s;
+      out[j] = 0.5 * total + ac * (std::cos(psi) * dots[2 * f] + std::sin(psi) * dots[2 * f + 1]);
+    }
   }
 
   /// Phases and amplitudes (F) from raw values, and the depth: unwrapped

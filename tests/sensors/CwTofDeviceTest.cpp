@@ -181,9 +181,13 @@ TEST(CwTofDeviceTest, DelayIsALaterArrivalExactly) {
       const auto still = noiseFreePhases(p, axis, signal);
       for (std::size_t f = 0; f < 2; ++f) {
         EXPECT_NEAR(delayed[f], moved[f], 1e-9) << N << " " << f;
-        if (w == Waveform::Sine) {  // no wiggling: depth shift k delta, exactly
+        if (w == Waveform::Sine) {  // no wiggling: depth shift k delta, exactly, any delta
           const double shift = wrapSigned(delayed[f] - still[f], 2 * M_PI);
           EXPECT_NEAR(k * shift / (2 * M_PI * p.frequencies_Hz[f]), k * delta, 1e-9);
+          const double odd = 37.3e-12;  // not a whole number of bins
+          const double oddShift =
+              wrapSigned(noiseFreePhases(p, axis, signal, odd)[f] - still[f], 2 * M_PI);
+          EXPECT_NEAR(k * oddShift / (2 * M_PI * p.frequencies_Hz[f]), k * odd, 1e-9);
         }
       }
     }
