@@ -8,6 +8,9 @@
 
 #include "CwTofByOrder.h"
 #include "CwTofCorrelator.h"
+#include "CwTofDeviceImages.h"
+#include "CwTofDeviceStage.h"
+#include "CwTofOutputs.h"
 #include "tofsim/sensors/Random.h"
 #include "tofsim/util/Error.h"
 
@@ -16,40 +19,6 @@ namespace tofsim::sensors {
 namespace {
 constexpr uint32_t kCwTofStreamTag = 0x4357;  // "CW"
 
-SensorOutput makeOutput(const std::string& name, SensorOutput::Kind kind,
-                        std::vector<int64_t> shape, std::vector<std::string> axes,
-                        std::vector<float> data, const std::string& unit,
-                        const std::string& description) {
-  SensorOutput o;
-  o.name = name;
-  o.kind = kind;
-  o.shape = std::move(shape);
-  o.axes = std::move(axes);
-  o.data = std::move(data);
-  o.unit = unit;
-  o.description = description;
-  return o;
-}
-
-/// What an image holds beyond its values: the frequency and depth range it
-/// belongs to, and whether it is a signed error.
-struct ImageMeaning {
-  std::vector<std::pair<std::string, double>> attributes;
-  bool signed_values = false;
-};
-
-void addImage(std::vector<SensorOutput>& outs, const std::string& name, int32_t H, int32_t W,
-              std::vector<float> data, const std::string& unit, const std::string& description,
-              const std::string& colormap, const ImageMeaning& meaning = {}) {
-  outs.push_back(makeOutput(name, SensorOutput::Kind::Image, {H, W}, {"y", "x"}, std::move(data),
-                            unit, description));
-  outs.back().attributes = meaning.attributes;
-  outs.back().signed_values = meaning.signed_values;
-  SensorOutput png = outs.back();
-  png.kind = SensorOutput::Kind::ColorMappedImage;
-  png.colormap = colormap;
-  outs.push_back(std::move(png));
-}
 void checkParams(const CwTofParams& p, const VolumeShape& shape) {
   TOFSIM_CHECK(!p.frequencies_Hz.empty() && p.phase_steps >= 3);
   for (double f : p.frequencies_Hz) TOFSIM_CHECK(f > 0.0);
@@ -85,6 +54,8 @@ class CwTofStream final : public SensorStream {
         seed_(options.seed),
         withDirect_(options.directOnly),
         correlator_(p_, shape_.axis),
+        device_(p_, shape.height, shape.width),
+        deviceImages_(p_, shape.pixelCount()),
         H_(shape.height),
         W_(shape.width),
         F_(static_cast<int32_t>(p.frequencies_Hz.size())),
@@ -95,6 +66,7 @@ class CwTofStream final : public SensorStream {
     depthRange_ = depthRange_m(p, k);
     wiggling_ = wigglingError_m(p, k);
     raw_.resize(static_cast<std::size_t>(F_) * p.phase_steps * HW_);
+    clean_.resize(correlator_.rows * HW_);
     phase_.resize(F_ * HW_);
     amplitude_.resize(F_ * HW_);
     wrappedDepth_.resize(F_ * HW_);
@@ -130,23 +102,44 @@ class CwTofStream final : public SensorStream {
   void addByOrder(std::vector<SensorOutput>& outs, const Image* gt) const;
   SensorOutput wigglingOutput() const;
 
+  /// consume(): the pixel's noise-free charges (every tap, its fixed-pattern
+  /// delay inside the correlation) kept for finish(), and its multipath errors.
   void pixel(const float* values, const float* direct, std::size_t px) {
     pixelSignal(values, shape_.axis.bins, shape_.channels, p_.common, signal_);
-    correlator_.raw(signal_, p_.ambient_e, ideal_);
-    Rng rng(seed_, pixelStream(kCwTofStreamTag, px));
-    noisy_ = ideal_;
-    for (double& v : noisy_) {
-      if (p_.shot_noise) v = static_cast<double>(rng.poisson(std::max(0.0, v)));
-      if (p_.read_noise_e > 0.0) v += rng.normal(0.0, p_.read_noise_e);
-    }
-    for (std::size_t j = 0; j < noisy_.size(); ++j) raw_[j * HW_ + px] = float(noisy_[j]);
-    depth_[px] = static_cast<float>(correlator_.depth(noisy_, phases_, amps_, unwrapRange_));
-    for (int32_t f = 0; f < F_; ++f) {
-      phase_[f * HW_ + px] = static_cast<float>(phases_[f]);
-      amplitude_[f * HW_ + px] = static_cast<float>(amps_[f]);
-      wrappedDepth_[f * HW_ + px] = static_cast<float>(correlator_.wrappedDepth(f, phases_[f]));
-    }
+    const double delay = device_.delay_s(px);
+    correlator_.taps(signal_, p_.ambient_e, delay, ideal_);
+    for (std::size_t j = 0; j < ideal_.size(); ++j) clean_[j * HW_ + px] = ideal_[j];
+    // The multipath errors are the scene's: without the device's delay.
+    if (delay != 0.0) correlator_.raw(signal_, p_.ambient_e, ideal_);
     multipath(direct, px);
+  }
+
+  /// finish(): the device stage of every pixel, from its kept noise-free
+  /// charges, with the noise of its own stream (as it always was).
+  void device() {
+    // [PSF hook] A lens PSF acts here, on the noise-free charge planes clean_
+    // (correlator_.rows planes of H x W, e-, ambient included; plane j = tap
+    // j / (F N), frequency and step of j % (F N)), before any noise. Each
+    // pixel's fixed-pattern delay is already inside its charges (it acts in
+    // the correlation, consume()), so light blurred onto a pixel here keeps
+    // the delay of the pixel it came from: exact without delay_sigma /
+    // delay_map; with them, a PSF on the transient (before the sensor) is the
+    // exact order.
+    for (std::size_t px = 0; px < HW_; ++px) {
+      noisy_.resize(correlator_.rows);
+      for (std::size_t j = 0; j < noisy_.size(); ++j) noisy_[j] = clean_[j * HW_ + px];
+      Rng rng(seed_, pixelStream(kCwTofStreamTag, px));
+      const bool saturated = device_.pixel(noisy_, px, rng, deviceImages_.taps());
+      for (std::size_t j = 0; j < noisy_.size(); ++j) raw_[j * HW_ + px] = float(noisy_[j]);
+      depth_[px] = static_cast<float>(correlator_.depth(noisy_, phases_, amps_, unwrapRange_));
+      for (int32_t f = 0; f < F_; ++f) {
+        phase_[f * HW_ + px] = static_cast<float>(phases_[f]);
+        amplitude_[f * HW_ + px] = static_cast<float>(amps_[f]);
+        wrappedDepth_[f * HW_ + px] = static_cast<float>(correlator_.wrappedDepth(f, phases_[f]));
+      }
+      deviceImages_.pixel(px, noisy_, saturated, correlator_, unwrapRange_);
+    }
+    std::vector<double>().swap(clean_);
   }
 
   /// The noise-free depths the multipath errors compare, and the error
@@ -198,6 +191,8 @@ class CwTofStream final : public SensorStream {
   const uint64_t seed_;
   const bool withDirect_;
   Correlator correlator_;
+  CwTofDeviceStage device_;
+  CwTofDeviceImages deviceImages_;
   int32_t H_, W_, F_;
   std::size_t HW_;
   std::size_t next_ = 0;
@@ -205,21 +200,17 @@ class CwTofStream final : public SensorStream {
   // (F, N, H, W) raw; (F, H, W) per frequency; (H, W) combined.
   std::vector<float> raw_, phase_, amplitude_, wrappedDepth_, mpiGtPerFrequency_;
   std::vector<float> depth_, mpiGt_, mpiDirect_;
-  std::vector<double> cleanDepth_, cleanWrapped_;               // (H, W) and (F, H, W), noise-free
-  std::vector<double> wiggling_;                                // (F, S), m
+  std::vector<double> clean_;                      // (taps F N, H, W): noise-free charges, e-
+  std::vector<double> cleanDepth_, cleanWrapped_;  // (H, W) and (F, H, W), noise-free
+  std::vector<double> wiggling_;                   // (F, S), m
   std::vector<double> signal_, ideal_, noisy_, phases_, amps_;  // per-pixel scratch
   std::optional<OrderDepths> byOrder_;                          // multipath_by_order
 };
 
-std::string metres(double m) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.3f m", m);
-  return text;
-}
-
 std::vector<SensorOutput> CwTofStream::finish(const Image* gt) {
   TOFSIM_CHECK(next_ == HW_);
   checkGroundTruth(gt, shape_);
+  device();
   if (gt) groundTruthErrors(*gt);
   const int32_t H = H_, W = W_, N = p_.phase_steps;
   const std::string& cmap = p_.colormap;
@@ -274,6 +265,7 @@ std::vector<SensorOutput> CwTofStream::finish(const Image* gt) {
   }
   addByOrder(outs, gt);
   outs.push_back(wigglingOutput());
+  deviceImages_.add(outs, H, W, depthRange_, device_.pattern());
   return outs;
 }
 

@@ -32,11 +32,11 @@ std::vector<double> wigglingError_m(const CwTofParams& p, double k) {
 }
 
 std::vector<double> noiseFreePhases(const CwTofParams& p, const TimeAxis& axis,
-                                    const std::vector<double>& signal) {
+                                    const std::vector<double>& signal, double delay_s) {
   TOFSIM_CHECK_EQ(signal.size(), static_cast<std::size_t>(axis.bins));
   const Correlator correlator(p, axis);
   std::vector<double> raw, phases, amplitudes;
-  correlator.raw(signal, 0.0, raw);
+  correlator.taps(signal, 0.0, delay_s, raw);
   correlator.depth(raw, phases, amplitudes, unwrapRange_m(p, axis.depthPerSecond_m_per_s()));
   return phases;
 }

@@ -28,11 +28,13 @@ std::string effective(const std::string& entry) {
 TEST(SensorFieldsTest, DocumentedDefaultsReadBackAsTheStructDefaults) {
   // Defaults that are words, not values ("the render's", "all rows").
   const std::set<std::string> described = {
-      "common.type",      "common.name",      "common.channel_weights",
-      "bins.bin_width",   "bins.bin_offset",  "bins.bins",
-      "streak.rows",      "spad.plot_pixels", "spad.irf",
-      "spad.preset",      "spad.tdc_dnl",     "spad.dark_count_map",
-      "cwtof.correlation"};
+      "common.type",       "common.name",      "common.channel_weights",
+      "bins.bin_width",    "bins.bin_offset",  "bins.bins",
+      "streak.rows",       "spad.plot_pixels", "spad.irf",
+      "spad.preset",       "spad.tdc_dnl",     "spad.dark_count_map",
+      "cwtof.correlation", "cwtof.delay_map",  "cwtof.gain_map",
+      "cwtof.offset_map",  "cwtof.companding", "cwtof.capture_order",
+      "cwtof.noise_table"};
   const std::set<std::string> words = {"spad.afterpulse_weights"};  // "equal"
   // A file whose default is its absence ("none (exponentials)").
   const std::set<std::string> files = {"spad.afterpulse_delay_table"};

@@ -6,6 +6,7 @@
 #include <string_view>
 #include <type_traits>
 
+#include "CwTofDeviceConfig.h"
 #include "CwTofWaveformFile.h"
 #include "FieldEmit.h"
 #include "IrfFile.h"
@@ -99,6 +100,7 @@ void SensorConfigType<SpadParams>::emit(YAML::Node& n, const SpadParams& p) {
 void SensorConfigType<CwTofParams>::emit(YAML::Node& n, const CwTofParams& p) {
   emitCommon(n, p.common);
   emitFields(n, kCwTofFields, p, [&](std::string_view key) {
+    if (emitCwTofDeviceKey(n, key, p)) return;
     if (key == "correlation") {
       if (!p.correlation.empty()) n["correlation"] = correlationToYaml(p.correlation);
       return;

@@ -7,6 +7,7 @@
 #include <variant>
 
 #include "ConfigNode.h"
+#include "CwTofDeviceConfig.h"
 #include "CwTofWaveformFile.h"
 #include "FieldParse.h"
 #include "IrfFile.h"
@@ -294,6 +295,7 @@ CwTofParams SensorConfigType<CwTofParams>::parse(const ConfigNode& n) {
   CwTofParams p;
   p.common = parseCommon(n);
   parseFields(n, kCwTofFields, p, [&](std::string_view key) {
+    if (parseCwTofDeviceKey(n, key, p)) return;
     if (key == "correlation") {  // after `frequencies` and `waveform` (table order)
       const bool measured = p.waveform == Waveform::Measured;
       if (n.has("correlation") && !measured) {
@@ -324,11 +326,14 @@ CwTofParams SensorConfigType<CwTofParams>::parse(const ConfigNode& n) {
       if (p.frequencies_Hz.empty()) freqs->fail("must list at least one frequency");
     }
   });
+  checkCwTofDevice(n, p);
   return p;
 }
 
-void SensorConfigType<CwTofParams>::checkImage(const ConfigNode&, const CwTofParams&,
-                                               const capture::Camera&) {}  // every pixel, no rows
+void SensorConfigType<CwTofParams>::checkImage(const ConfigNode& n, const CwTofParams& p,
+                                               const capture::Camera& camera) {
+  checkCwTofMapsFitImage(n, p, camera);
+}
 
 namespace {
 // The `type:` names in variant order, for the error that lists them.

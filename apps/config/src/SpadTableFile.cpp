@@ -160,8 +160,8 @@ sensors::SpadDnl parseDnl(const ConfigNode& n) {
   return dnl;
 }
 
-PixelMap readPixelMap(const ConfigNode& n, const char* key, const char* what,
-                      const char* valueName) {
+PixelMap readPixelMap(const ConfigNode& n, const char* key, const char* what, const char* valueName,
+                      bool signedValues) {
   PixelMap map;
   const std::filesystem::path path = existingFile(n, key);
   map.file = path.string();
@@ -178,7 +178,7 @@ PixelMap readPixelMap(const ConfigNode& n, const char* key, const char* what,
   map.width = static_cast<int32_t>(a.shape[1]);
   for (std::size_t k = 0; k < a.data.size(); ++k) {
     const double v = a.data[k];
-    if (!std::isfinite(v) || v < 0.0) {
+    if (!std::isfinite(v) || (v < 0.0 && !signedValues)) {
       n.failKey(key, map.file + ": " + valueName + " " + shortest(v) + " at (y, x) = (" +
                          std::to_string(k / map.width) + ", " + std::to_string(k % map.width) +
                          ") is " + (v < 0.0 ? "negative" : "not finite"));

@@ -29,11 +29,12 @@ struct PixelMap {
   int32_t width = 0, height = 0;
   std::vector<double> values;
 };
-/// `key` of node n as a PixelMap whose values are finite and >= 0; `what`
-/// names the map and `valueName` one value in errors ("dark count map",
-/// "rate"). Its shape is the caller's to check against the image.
-PixelMap readPixelMap(const ConfigNode& n, const char* key, const char* what,
-                      const char* valueName);
+/// `key` of node n as a PixelMap whose values are finite (and >= 0 unless
+/// `signedValues`); `what` names the map and `valueName` one value in errors
+/// ("dark count map", "rate"). Its shape is the caller's to check against
+/// the image.
+PixelMap readPixelMap(const ConfigNode& n, const char* key, const char* what, const char* valueName,
+                      bool signedValues = false);
 
 /// `dark_count_map` of node n: a 2-D float32 .npy (H, W) of counts / s >= 0.
 /// Its shape is checked against the image in checkImage.

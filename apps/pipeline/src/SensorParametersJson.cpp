@@ -133,9 +133,53 @@ json modelJson(const SpadParams& p, const TimeAxis& render) {
   return j;
 }
 
+// The capture as the device takes it: the order of the raws and each one's
+// start time, (F, N) as the raw arrays are indexed.
+json captureJson(const CwTofParams& p) {
+  json order = json::array();
+  for (const CwTofCaptureStep& s : cwtofCaptureOrder(p)) order.push_back({s.frequency, s.step});
+  const std::vector<double> start = cwtofRawStartTimes_s(p);
+  json times = json::array();
+  for (std::size_t f = 0; f < p.frequencies_Hz.size(); ++f) {
+    times.push_back(std::vector<double>(start.begin() + f * p.phase_steps,
+                                        start.begin() + (f + 1) * p.phase_steps));
+  }
+  return {{"order", order},
+          {"raw_start_times_s", times},
+          {"doc",
+           "order: [frequency index, phase step] of each raw as taken; raw_start_times_s "
+           "[f][n]: its start from the first raw's, s (integration_time_s + readout_gap_s "
+           "apart)"}};
+}
+
+json mapJson(const CwTofPixelMap& m) { return {{"file", m.file}, {"shape", {m.height, m.width}}}; }
+
 json modelJson(const CwTofParams& p, const TimeAxis& render) {
   json j;
   fieldsJson(j, kCwTofFields, p, [&](std::string_view key) {
+    if (key == "delay_map" && p.delay_map.present()) j["delay_map"] = mapJson(p.delay_map);
+    if (key == "gain_map" && p.gain_map.present()) j["gain_map"] = mapJson(p.gain_map);
+    if (key == "offset_map" && p.offset_map.present()) j["offset_map"] = mapJson(p.offset_map);
+    if (key == "companding" && p.companding.present()) {
+      j["companding"] = {{"file", p.companding.file},
+                         {"input_dn", p.companding.input_dn},
+                         {"output_dn", p.companding.output_dn}};
+    }
+    if (key == "capture_order") j["capture"] = captureJson(p);
+    if (key == "noise_table" && p.noise_table.present()) {
+      std::size_t samples = 0, means = 0;
+      for (const auto& set : p.noise_table.samples) {
+        samples += set.size();
+        means += !set.empty();
+      }
+      j["noise_table"] = {
+          {"file", p.noise_table.file},
+          {"first_mean_e", p.noise_table.first_mean_e},
+          {"last_mean_e",
+           p.noise_table.first_mean_e + static_cast<int64_t>(p.noise_table.samples.size()) - 1},
+          {"means", means},
+          {"samples", samples}};
+    }
     if (key == "frequencies") j["frequencies_Hz"] = p.frequencies_Hz;
     if (key == "correlation" && !p.correlation.empty()) {
       // What each waveform is; its values are in the effective config.

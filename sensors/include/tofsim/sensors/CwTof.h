@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "tofsim/sensors/Common.h"
+#include "tofsim/sensors/CwTofDevice.h"
 #include "tofsim/sensors/CwTofWaveform.h"
 #include "tofsim/sensors/SensorOutput.h"
 #include "tofsim/sensors/SensorStream.h"
@@ -42,6 +43,39 @@ struct CwTofParams {
   /// depth of direct + bounces 1..k against the ground truth. Needs the
   /// render's direct and bounce components (StreamOptions::bounces).
   bool multipath_by_order = false;
+
+  // The device stage (CwTofDevice.h, sensors/README.md "Raw frames as a
+  // device delivers them"); every default leaves it off.
+  /// Seed of the fixed pattern (delay, gains, offsets), not the noise seed.
+  int64_t fpn_seed = 0;
+  double delay_sigma_s = 0.0;   ///< per-pixel time offset delta_p, Gaussian sigma, s
+  CwTofPixelMap delay_map;      ///< measured delta_p, s, in place of delay_sigma_s
+  double gain_sigma = 0.0;      ///< per-pixel, per-tap relative gain sigma
+  CwTofPixelMap gain_map;       ///< measured relative gain (both taps), in place of gain_sigma
+  double offset_sigma_e = 0.0;  ///< per-pixel raw offset, Gaussian sigma, e-
+  CwTofPixelMap offset_map;     ///< measured raw offset, e-, in place of offset_sigma_e
+  /// 1: each raw is one tap's charge; 2: tap A at theta, tap B at theta + pi,
+  /// the raw is A - B.
+  int32_t taps = 1;
+  double tap_a_gain = 1.0, tap_b_gain = 1.0;  ///< global gain of each tap
+  bool output_taps = false;                   ///< also `cwtof_raw_taps` (F, N, 2, H, W), e-
+  /// beta in [0, 1]: beta min(A, B) of common-mode charge removed from both
+  /// taps after integration (taps: 2); the shot noise of all of it is kept.
+  double ambient_suppression = 0.0;
+  double dark_current_e = 0.0;  ///< dark electrons per tap and raw (Poisson with the light)
+  double full_well_e = 0.0;     ///< per tap, e-, applied before the difference; 0: none
+  int32_t adc_bits = 0;         ///< 0: no ADC (no DN outputs); else 1..24
+  double adc_gain_dn_per_e = 1.0;
+  double adc_offset_dn = 0.0;
+  CwTofCompanding companding;  ///< none: linear
+  /// Capture order, a permutation of every (f, n); empty: frequency-major,
+  /// step-minor. Metadata only (the scene is static during a capture).
+  std::vector<CwTofCaptureStep> capture_order;
+  double integration_time_s = 0.0;  ///< per raw, s (time stamps)
+  double readout_gap_s = 0.0;       ///< between raws, s (time stamps)
+  /// PoissonRead (shot_noise, read_noise) or Table (noise_table, in place of both).
+  CwTofNoiseModel noise_model = CwTofNoiseModel::PoissonRead;
+  CwTofNoiseTable noise_table;
 };
 
 /// Mean over [t0_s, t1_s) of the normalised correlation rho(2 pi f t - phase):
@@ -65,8 +99,9 @@ std::vector<double> wigglingError_m(const CwTofParams& params, double depthPerSe
 /// The noise-free phases (F, rad, [0, 2 pi)) runCwTof estimates, in double,
 /// for a pixel whose expected photo-electrons per bin of `axis` are `signal`
 /// (no ambient, no noise): the same correlation table and estimator.
+/// delay_s: the pixel's fixed-pattern time offset delta_p (0: none).
 std::vector<double> noiseFreePhases(const CwTofParams& params, const TimeAxis& axis,
-                                    const std::vector<double>& signal);
+                                    const std::vector<double>& signal, double delay_s = 0.0);
 
 /// Phase in [0, 2 pi) and amplitude from N raw values C_k taken at reference
 /// phases 2 pi k / N: atan2(sum C_k sin, sum C_k cos), (2 / N) |sum C_k e^{i phi_k}|.
@@ -121,6 +156,11 @@ std::vector<std::string> cwtofWarnings(const CwTofParams& params, const TimeAxis
 /// (F, S) m (wigglingError_m) with its max |error| and RMS as attributes.
 /// Every error is wrapped into (-R/2, R/2] of its depth's range R, so a phase
 /// wrap never reads as multipath. Every Image comes with a ColorMappedImage.
+/// The device stage (CwTofDevice.h) adds, where its keys ask for them,
+/// "cwtof_raw_dn" Array (F, N, H, W) DN, "cwtof_device_phase" Array (F, H, W),
+/// "cwtof_device_depth" (NaN where saturated) and "cwtof_device_amplitude"
+/// Images, "cwtof_saturated", "cwtof_raw_taps" Array (F, N, 2, H, W) e- and
+/// the fixed-pattern maps; "cwtof_raw" is then the device's raw in e-.
 std::vector<SensorOutput> runCwTof(const TransientVolume& volume, const CwTofParams& params,
                                    uint64_t seed, const CwTofReferences& references = {});
 

@@ -162,6 +162,9 @@ inline constexpr auto kSpadFields = std::tuple{
 inline constexpr std::array<Name<Waveform>, 3> kWaveformNames{
     {{"sine", Waveform::Sine}, {"square", Waveform::Square}, {"measured", Waveform::Measured}}};
 
+inline constexpr std::array<Name<CwTofNoiseModel>, 2> kCwTofNoiseModelNames{
+    {{"poisson_read", CwTofNoiseModel::PoissonRead}, {"table", CwTofNoiseModel::Table}}};
+
 inline constexpr auto kCwTofFields = std::tuple{
     Custom{"frequencies", "list of frequencies", "> 0", "[\"20 MHz\"]", "Hz", "modulation frequencies"},
     Field{"phase_steps", &CwTofParams::phase_steps, Integer{.max = 1024, .atLeast = 3},
@@ -183,6 +186,47 @@ inline constexpr auto kCwTofFields = std::tuple{
           {.json = "colormap", .doc = "colormap of the PNGs"}},
     Field{"multipath_by_order", &CwTofParams::multipath_by_order, Flag{},
           {.json = "multipath_by_order", .doc = "also the depth error of direct + bounces 1..k against the ground truth for every order k = 0..N (`cwtof_multipath_error_by_order`); needs `output.depth` and a renderer that resolves bounces (see \"Multipath error by bounce order\" above)"}},
+    // The device stage (see "Raw frames as a device delivers them" below): all off by default.
+    Field{"fpn_seed", &CwTofParams::fpn_seed, IntegerIn{0, 4294967295LL},
+          {.json = "fpn_seed", .doc = "seed of the fixed pattern (delay, gains, offsets), separate from the noise seed: the same device under every noise seed"}},
+    Field{"delay_sigma", &CwTofParams::delay_sigma_s, Duration{kNonNegative},
+          {.json = "delay_sigma_s", .doc = "per-pixel time offset delta_p, Gaussian of this sigma (fixed pattern): each bin's phase interval shifted by 2 pi f delta_p inside the correlation (output `cwtof_delay_map`); 0: none"}},
+    Custom{"delay_map", "file", "", "none", "s", "measured delta_p per pixel, a 2-D float32 .npy of the image's (H, W), in place of `delay_sigma`"},
+    Field{"gain_sigma", &CwTofParams::gain_sigma, Number{kNonNegative},
+          {.json = "gain_sigma", .doc = "relative sigma of each tap's per-pixel gain (fixed pattern): tap gain (1 + gain_sigma z), on the light before its shot noise (outputs `cwtof_gain_map`, `cwtof_gain_map_b`)"}},
+    Custom{"gain_map", "file", "", "none", "-", "measured relative gain per pixel (both taps), a 2-D float32 .npy (H, W) of values >= 0, in place of `gain_sigma`"},
+    Field{"offset_sigma", &CwTofParams::offset_sigma_e, Number{kNonNegative},
+          {.unit = "e-", .json = "offset_sigma_e", .doc = "per-pixel offset added to every raw, Gaussian of this sigma (fixed pattern; output `cwtof_offset_map`)"}},
+    Custom{"offset_map", "file", "", "none", "e-", "measured raw offset per pixel, a 2-D float32 .npy (H, W), in place of `offset_sigma`"},
+    Field{"taps", &CwTofParams::taps, IntegerIn{1, 2},
+          {.json = "taps", .doc = "1: each raw is one tap's charge; 2: tap A integrates the correlation at theta, tap B at theta + pi, the raw is A - B"}},
+    Field{"tap_a_gain", &CwTofParams::tap_a_gain, Number{kPositive},
+          {.json = "tap_a_gain", .doc = "gain of tap A (of the one tap with `taps: 1`), on the light before its shot noise"}},
+    Field{"tap_b_gain", &CwTofParams::tap_b_gain, Number{kPositive},
+          {.json = "tap_b_gain", .doc = "gain of tap B (`taps: 2`)"}},
+    Field{"output_taps", &CwTofParams::output_taps, Flag{},
+          {.json = "output_taps", .doc = "also each tap's charge, `cwtof_raw_taps` (F, N, 2, H, W) e- (`taps: 2`)"}},
+    Field{"ambient_suppression", &CwTofParams::ambient_suppression, Number{kFraction},
+          {.json = "ambient_suppression", .doc = "beta: beta min(A, B) of common-mode charge removed from both taps before the full well, its shot noise kept (`taps: 2`); 0: none"}},
+    Field{"dark_current", &CwTofParams::dark_current_e, Number{kNonNegative},
+          {.unit = "e-", .json = "dark_current_e", .doc = "dark electrons per tap and raw, Poisson with the light"}},
+    Field{"full_well", &CwTofParams::full_well_e, Number{kNonNegative},
+          {.unit = "e-", .json = "full_well_e", .doc = "full well per tap, before the difference: a tap at or above it holds it and the pixel is saturated (NaN `cwtof_device_depth`, `cwtof_saturated`)", .note = "none"}},
+    Field{"adc_bits", &CwTofParams::adc_bits, IntegerIn{0, 24},
+          {.json = "adc_bits", .doc = "ADC: DN = clamp(round(adc_gain x + adc_offset), 0, 2^bits - 1) (`cwtof_raw_dn`, `cwtof_device_*`); 0: no ADC"}},
+    Field{"adc_gain", &CwTofParams::adc_gain_dn_per_e, Number{kPositive},
+          {.unit = "DN / e-", .json = "adc_gain_dn_per_e", .doc = "conversion gain G of the ADC"}},
+    Field{"adc_offset", &CwTofParams::adc_offset_dn, Number{kAnyValue},
+          {.unit = "DN", .json = "adc_offset_dn", .doc = "ADC offset (the device subtracts it before its phases)"}},
+    Custom{"companding", "list of [in, out] or file", "", "none (linear)", "DN", "piecewise-linear companding of the ADC's linear value before rounding: points [input DN, output DN] (inputs increasing, outputs not decreasing), a list or a two-column .csv; outside its inputs the raw clips (saturated)"},
+    Custom{"capture_order", "list of [f, n]", "", "frequency-major", "-", "the order the raws are taken in, every [frequency index, phase step] once; gives each raw's start time in the sensor JSON (`capture.raw_start_times_s`)"},
+    Field{"integration_time", &CwTofParams::integration_time_s, Duration{kNonNegative},
+          {.json = "integration_time_s", .doc = "exposure of one raw (time stamps: raw i of the capture order starts at i (integration_time + readout_gap))"}},
+    Field{"readout_gap", &CwTofParams::readout_gap_s, Duration{kNonNegative},
+          {.json = "readout_gap_s", .doc = "dead time between two raws (time stamps)"}},
+    Field{"noise_model", &CwTofParams::noise_model, Choice<CwTofNoiseModel>{kCwTofNoiseModelNames},
+          {.json = "noise_model", .doc = "`poisson_read` (`shot_noise`, `read_noise`) or `table`: an empirical conditional noise table (`noise_table`) in place of both"}},
+    Custom{"noise_table", "file", "", "none", "e-", "`noise_model: table`: rows (integer noise-free raw, measured raw), a two-column .csv or a float32 .npy (n, 2); a raw whose noise-free value rounds to a listed mean becomes one of its samples, drawn uniformly; elsewhere it is noise-free"},
 };
 // clang-format on
 

@@ -38,7 +38,7 @@ struct SensorOutput {
   /// model's frequencies), "phase_step" (reference phase 2 pi k / N), "pixel"
   /// (index into `labels`), "order" (bounce order k: direct + bounces 1..k),
   /// "gate" (SPAD gate position k: the gate moved by k gate_step), "sweep"
-  /// (CW-ToF wiggling sweep point j).
+  /// (CW-ToF wiggling sweep point j), "tap" (CW-ToF tap: 0 = A, 1 = B).
   std::vector<std::string> axes;
   /// The instrument's time axis, when one of `axes` is "t".
   std::optional<TimeAxis> time;
