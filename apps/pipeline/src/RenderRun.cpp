@@ -84,22 +84,30 @@ namespace {
 void writeOutputs(const config::RunConfig& config, const capture::RenderJob& job,
                   const RunOptions& options, const std::filesystem::path& dir, Progress& progress,
                   RunSummary& summary);
+RunSummary renderScene(const config::RunConfig& config, const scene::Scene& scene,
+                       const RunOptions& options, Progress& progress);
 
 }  // namespace
 
 RunSummary runRender(const config::RunConfig& config, const RunOptions& options) {
   if (config.nlos) return runNlosRender(config, options);
-  Progress progress("render", options.quiet);
+  Progress progress("render", options.quiet);  // its time includes the scene's loading
   scene::LoadReport report;
   const scene::Scene scene = scene::loadGltf(config.scene_file, &report);
   reportLoad(report, progress);
-  return runRender(config, scene, options);
+  return renderScene(config, scene, options, progress);
 }
 
 RunSummary runRender(const config::RunConfig& config, const scene::Scene& scene,
                      const RunOptions& options) {
   TOFSIM_CHECK(!config.nlos);
   Progress progress("render", options.quiet);
+  return renderScene(config, scene, options, progress);
+}
+
+namespace {
+RunSummary renderScene(const config::RunConfig& config, const scene::Scene& scene,
+                       const RunOptions& options, Progress& progress) {
   const capture::RenderJob job = prepareCapture(config, scene);  // fails under --strict
 
   RunSummary summary;
@@ -123,7 +131,6 @@ RunSummary runRender(const config::RunConfig& config, const scene::Scene& scene,
   return summary;
 }
 
-namespace {
 void writeSteady(const std::filesystem::path& dir, const Image& steady, PlotRanges& ranges) {
   io::writeExr(dir / files::kSteadyExr, steady, {"R", "G", "B"});
   imaging::writeToneMappedPng(dir / files::kSteadyPng, steady, imaging::ToneMap::Global,

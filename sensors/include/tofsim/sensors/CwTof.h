@@ -149,6 +149,8 @@ std::vector<std::string> cwtofWarnings(const CwTofParams& params, const TimeAxis
 /// Images; with a ground truth, "cwtof_mpi_error" (noise-free depth - ground
 /// truth) and per frequency "cwtof_multipath_error_<f>"; with a direct-only
 /// volume, "cwtof_mpi_error_direct" (noise-free depth - direct-only depth);
+/// with the lens's PSF (StreamOptions::psfOnRaws or beforePsf),
+/// "cwtof_psf_error" (noise-free depth with it - without it);
 /// with multipath_by_order, "cwtof_multipath_error_by_order" Array (N + 1,
 /// H, W): order k = the depth of direct + bounces 1..k - ground truth, NaN
 /// where that light is zero, and a ColorMappedImage of each order,
