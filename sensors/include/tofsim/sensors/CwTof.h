@@ -151,6 +151,8 @@ std::vector<std::string> cwtofWarnings(const CwTofParams& params, const TimeAxis
 /// "cwtof_wiggling_error_map" (the depth error of a noise-free single return
 /// at each pixel's true depth: the waveform's, multipath excluded); with a direct-only
 /// volume, "cwtof_mpi_error_direct" (noise-free depth - direct-only depth);
+/// with the lens's PSF (StreamOptions::psfOnRaws or beforePsf),
+/// "cwtof_psf_error" (noise-free depth with it - without it);
 /// with multipath_by_order, "cwtof_multipath_error_by_order" Array (N + 1,
 /// H, W): order k = the depth of direct + bounces 1..k - ground truth, NaN
 /// where that light is zero, and a ColorMappedImage of each order,
