@@ -76,6 +76,8 @@ constexpr std::array<const char*, 2> kFlashLidarSources{{
     "distance-measurement-performance.php",
 }};
 
+// No image size is checked (0, 0): a scanned single pixel, arrays often
+// rendered cropped; the device line names their size.
 const std::array<SpadPreset, 3> kPresets{{
     {"nlos-gated-spad",
      "single-pixel fast-gated SPAD (Polimi) with a PicoHarp 300 TCSPC, as in NLOS captures; the "
