@@ -8,7 +8,9 @@
 #include <string>
 
 #include "SensorParametersJson.h"
+#include "tofsim/pipeline/SensorMetadata.h"
 #include "tofsim/sensors/CwTofPresets.h"
+#include "tofsim/sensors/RunSensor.h"
 
 namespace tofsim::pipeline {
 namespace {
@@ -54,6 +56,34 @@ TEST(CwTofPresetJsonTest, EveryPresetListsItsSourcedAndAssumedValues) {
   EXPECT_TRUE(ak["assumed"].contains("frequencies"));
   EXPECT_TRUE(ak["sourced"].contains("max_depth"));
   EXPECT_FALSE(sensorParametersJson(SensorParams{CwTofParams{}}, render).contains("preset"));
+}
+
+TEST(CwTofPresetJsonTest, KinectV2OutputsDocumentTheirCaptureOrder) {
+  TimeAxis axis;
+  axis.bin_width_s = 20e-12;
+  axis.bins = 400;
+  TransientVolume v(3, 2, axis, {"c0"});
+  for (int32_t x = 0; x < 3; ++x) v.at(1, x, 100 + 50 * x, 0) = 500.0f;
+  CwTofParams p;
+  findCwTofPreset("kinect-v2")->apply(p);
+  p.preset = "kinect-v2";
+  const SensorSpec spec{"kinect", p};
+  SensorRunInfo run{&spec, axis, 1, sensorWarnings(spec, shapeOf(v), nullptr)};
+  const std::vector<SensorOutput> outs = runSensor(spec, {&v, nullptr, nullptr, nullptr, 1});
+  bool found = false;
+  for (const NamedMetadata& m : sensorMetadata(run, outs, false)) {
+    if (m.name != "cwtof_raw_sequence") continue;
+    found = true;
+    const nlohmann::json j = nlohmann::json::parse(m.json);
+    EXPECT_EQ(j["shape"], (std::vector<int64_t>{9, 2, 3}));
+    EXPECT_TRUE(j["axes_doc"].contains("capture_index"));
+    EXPECT_EQ(j["sensor"]["parameters"]["preset"]["name"], "kinect-v2");
+    EXPECT_EQ(j["sensor"]["parameters"]["capture"]["order"].size(), 9u);
+    // 3 x 2 pixels is not the device's 512 x 424: the run says so.
+    ASSERT_EQ(j["sensor"]["warnings"].size(), 1u);
+    EXPECT_NE(j["sensor"]["warnings"][0].get<std::string>().find("512 x 424"), std::string::npos);
+  }
+  EXPECT_TRUE(found);
 }
 
 }  // namespace
