@@ -150,7 +150,9 @@ const std::array<CwTofPreset, 6> kPresets{{
     {"kinect-v2",
      "Microsoft Kinect v2 (Kinect for Xbox One): 512 x 424 pixels [LF2], 70 deg horizontal field "
      "of view [FLAT], demodulation up to 130 MHz [PAYNE14]; the image and field of view are the "
-     "camera's (camera.width, camera.height, camera.fov); min_depth 0.5 m [FLAT] is no key; the "
+     "camera's (camera.width, camera.height, camera.fov); FLAT's min_depth 0.5 m and "
+     "unambiguous_dist 2083.333 mm [FLAT] are no keys (the unwrapping searches max_depth; the "
+     "frequencies' common period is 18.74 m); the "
      "per-pixel P0 phase tables are a `delay_map`, FLAT's noise table a `noise_table`",
      applyKinectV2, kKinectV2Values, kKinectV2Sources, 512, 424},
     {"azure-kinect-nfov-unbinned",
