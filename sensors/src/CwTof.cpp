@@ -167,12 +167,17 @@ class CwTofStream final : public SensorStream {
     const double k = shape_.axis.depthPerSecond_m_per_s();
     mpiGt_.assign(HW_, nan);
     mpiGtPerFrequency_.assign(F_ * HW_, nan);
+    wigglingMap_.assign(HW_, nan);
+    std::vector<double> raw, phases, amplitudes;
     for (int32_t y = 0; y < H_; ++y) {
       for (int32_t x = 0; x < W_; ++x) {
         const std::size_t px = static_cast<std::size_t>(y) * W_ + x;
         const float truth = gt.at(y, x, 0);
         if (!(std::isfinite(truth) && truth > 0.0f)) continue;
         mpiGt_[px] = static_cast<float>(wrapSigned(cleanDepth_[px] - truth, depthRange_));
+        const double single =
+            correlator_.singleReturnDepth(truth / k, raw, phases, amplitudes, unwrapRange_);
+        wigglingMap_[px] = static_cast<float>(wrapSigned(single - truth, depthRange_));
         for (int32_t f = 0; f < F_; ++f) {
           const double e = cleanWrapped_[f * HW_ + px] - truth;
           mpiGtPerFrequency_[f * HW_ + px] =
@@ -200,9 +205,10 @@ class CwTofStream final : public SensorStream {
   // (F, N, H, W) raw; (F, H, W) per frequency; (H, W) combined.
   std::vector<float> raw_, phase_, amplitude_, wrappedDepth_, mpiGtPerFrequency_;
   std::vector<float> depth_, mpiGt_, mpiDirect_;
-  std::vector<double> clean_;                      // (taps F N, H, W): noise-free charges, e-
-  std::vector<double> cleanDepth_, cleanWrapped_;  // (H, W) and (F, H, W), noise-free
-  std::vector<double> wiggling_;                   // (F, S), m
+  std::vector<float> wigglingMap_;  // (H, W): the wiggling at each pixel's true depth
+  std::vector<double> clean_;       // (taps F N, H, W): noise-free charges, e-
+  std::vector<double> cleanDepth_, cleanWrapped_;               // (H, W) and (F, H, W), noise-free
+  std::vector<double> wiggling_;                                // (F, S), m
   std::vector<double> signal_, ideal_, noisy_, phases_, amps_;  // per-pixel scratch
   std::optional<OrderDepths> byOrder_;                          // multipath_by_order
 };
@@ -258,6 +264,10 @@ std::vector<SensorOutput> CwTofStream::finish(const Image* gt) {
   if (gt) {
     addImage(outs, "cwtof_mpi_error", H, W, std::move(mpiGt_), "m",
              "CW-ToF depth error against the ground truth (noise-free)", cmap, combinedError);
+    addImage(outs, "cwtof_wiggling_error_map", H, W, std::move(wigglingMap_), "m",
+             "CW-ToF wiggling error at each pixel's true depth: a noise-free single return there "
+             "(multipath excluded)",
+             cmap, combinedError);
   }
   if (withDirect_) {
     addImage(outs, "cwtof_mpi_error_direct", H, W, std::move(mpiDirect_), "m",

@@ -160,6 +160,22 @@ struct Correlator {
     return unwrapDepth_m(phases, p.frequencies_Hz, range, axis.depthPerSecond_m_per_s());
   }
 
+  /// The depth depth() gives a noise-free single return at delay_s (a delta:
+  /// the zero-width bin [delay_s, delay_s]), as wigglingError_m's sweep: no
+  /// multipath, no noise, only the waveform's and the estimator's error. The
+  /// DC part moves no phase and is left out.
+  double singleReturnDepth(double delay_s, std::vector<double>& raw, std::vector<double>& phases,
+                           std::vector<double>& amplitudes, double range) const {
+    const int32_t N = p.phase_steps;
+    raw.resize(p.frequencies_Hz.size() * N);
+    for (std::size_t f = 0; f < p.frequencies_Hz.size(); ++f) {
+      for (int32_t n = 0; n < N; ++n) {
+        raw[f * N + n] = rho[f].bin(2.0 * M_PI * n / N, delay_s, delay_s);
+      }
+    }
+    return depth(raw, phases, amplitudes, range);
+  }
+
   /// 0.5 (sum E + ambient) + 0.5 m sum_t E_t rho_t for each of `count`
   /// correlation rows, rowOf(j) giving row j's T values.
   template <typename RowOf>

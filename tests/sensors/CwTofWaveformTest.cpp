@@ -244,6 +244,40 @@ TEST(CwTofWaveformTest, SquareWaveWigglingMatchesItsClosedForm) {
               attribute("max_abs_error_m"), peak, attribute("rms_error_m"));
 }
 
+// The wiggling at each pixel's true depth (cwtof_wiggling_error_map): a
+// noise-free single return there, whatever light the pixel got, so the map
+// is the square wave's closed-form error at each depth (and 0 for the sine);
+// a pixel without a true depth is NaN.
+TEST(CwTofWaveformTest, WigglingMapIsTheClosedFormAtEachPixelsTrueDepth) {
+  const double f = 20e6, range = kC / (2 * f);
+  const int32_t W = 16;
+  TransientVolume v = makeVolume(W, 1, 0.0, 10e-12, 8);
+  for (std::size_t i = 0; i < v.size(); ++i) v.data()[i] = 1.0f + 0.1f * (i % 5);  // any light
+  Image gt(W, 1, 1);
+  for (int32_t x = 1; x < W; ++x) gt.at(0, x, 0) = static_cast<float>(0.37 + 0.443 * x);
+  CwTofParams p;
+  p.frequencies_Hz = {f};
+  p.shot_noise = false;
+  double maxAbs = 0.0;
+  for (Waveform waveform : {Waveform::Square, Waveform::Sine}) {
+    p.waveform = waveform;
+    CwTofReferences refs;
+    refs.groundTruthDepth_m = &gt;
+    const auto outs = runCwTof(v, p, 1, refs);
+    const SensorOutput& map =
+        test::output(outs, "cwtof_wiggling_error_map", SensorOutput::Kind::Image);
+    EXPECT_TRUE(std::isnan(map.data[0]));  // no true depth
+    for (int32_t x = 1; x < W; ++x) {
+      const double theta = 2 * M_PI * f * gt.at(0, x, 0) / (kC / 2);
+      const double expected =
+          waveform == Waveform::Square ? squareError_m(std::fmod(theta, 2 * M_PI), range) : 0.0;
+      EXPECT_NEAR(map.data[x], expected, 2e-7) << x;
+      if (waveform == Waveform::Square) maxAbs = std::max(maxAbs, std::fabs(expected));
+    }
+  }
+  EXPECT_GT(maxAbs, 0.02);  // the square wave's error is there to be found
+}
+
 TEST(CwTofWaveformTest, ContrastScalesTheAcPartOnly) {
   CwTofParams p = measured({20e6}, fourier({{0.3, 0.4}, 0.0, 0.02}));
   const auto full = runCwTof(noisyScene(), p, 1);

@@ -149,7 +149,9 @@ std::vector<std::string> cwtofWarnings(const CwTofParams& params, const TimeAxis
 /// depth) and "cwtof_amplitude" (first frequency) Images (H, W); per frequency
 /// f, "cwtof_phase_<f>", "cwtof_amplitude_<f>" and "cwtof_depth_<f>" (wrapped)
 /// Images; with a ground truth, "cwtof_mpi_error" (noise-free depth - ground
-/// truth) and per frequency "cwtof_multipath_error_<f>"; with a direct-only
+/// truth) and per frequency "cwtof_multipath_error_<f>", and
+/// "cwtof_wiggling_error_map" (the depth error of a noise-free single return
+/// at each pixel's true depth: the waveform's, multipath excluded); with a direct-only
 /// volume, "cwtof_mpi_error_direct" (noise-free depth - direct-only depth);
 /// with multipath_by_order, "cwtof_multipath_error_by_order" Array (N + 1,
 /// H, W): order k = the depth of direct + bounces 1..k - ground truth, NaN
