@@ -134,7 +134,7 @@ std::vector<std::string> SensorStreams::finish(const Image* groundTruthDepth_m,
     std::vector<sensors::SensorOutput> outputs;
     SensorRunInfo run{&spec, shape_.axis, config_.render.seed, {}, camera_};
     try {
-      run.warnings = sensors::sensorWarnings(spec, shape_.axis, groundTruthDepth_m);
+      run.warnings = sensors::sensorWarnings(spec, shape_, groundTruthDepth_m);
       printSensorWarnings(spec, run.warnings);
       outputs = e->stream->finish(groundTruthDepth_m);
     } catch (const InputError& error) {
