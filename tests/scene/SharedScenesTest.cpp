@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <string>
 
+#include "tofsim/scene/AnimatedScene.h"
 #include "tofsim/scene/GltfLoader.h"
 #include "tofsim/util/Error.h"
 
@@ -98,6 +99,24 @@ TEST_F(SharedScenesTest, MaterialsCarryMetallicAndRoughness) {
 TEST_F(SharedScenesTest, SparseAccessorFileLoads) {
   for (const char* name : {"loader/box_sparse.gltf", "loader/box_sparse.glb"}) {
     EXPECT_EQ(loadGltf(kShared / name).triangleCount(), 12u) << name;
+  }
+}
+
+TEST_F(SharedScenesTest, MorphWeightAnimationIsCountedNotPlayed) {
+  // box_sparse animates its morph-target weights only: nothing moves, the
+  // rest scene is loadGltf's and the weights channel and morph mesh are counted.
+  for (const char* name : {"loader/box_sparse.gltf", "loader/box_sparse.glb"}) {
+    LoadReport report;
+    const AnimatedScene animated = AnimatedScene::load(kShared / name, &report);
+    EXPECT_FALSE(animated.animated()) << name;
+    ASSERT_EQ(animated.animations().size(), 1u) << name;
+    EXPECT_EQ(animated.animations()[0].ignoredWeightChannels, 1u) << name;
+    EXPECT_EQ(report.morphTargetMeshes, 1u) << name;
+    const Scene rest = loadGltf(kShared / name);
+    ASSERT_EQ(animated.sceneAt(0.5).meshes.size(), rest.meshes.size()) << name;
+    for (std::size_t m = 0; m < rest.meshes.size(); ++m) {
+      EXPECT_EQ(animated.sceneAt(0.5).meshes[m].positions_world, rest.meshes[m].positions_world);
+    }
   }
 }
 
