@@ -252,6 +252,20 @@ TEST_F(AnimatedSceneTest, UpdateSceneRebakesOnlyWhatMoves) {
   expectSameBytes(scene, s.sceneAt(1.0));
 }
 
+TEST_F(AnimatedSceneTest, MeshScaledUpFromZeroKeepsItsSlot) {
+  AnimatedGltf f;
+  f.addChannel(0, "scale", {0, 1}, {0, 0, 0, 1, 1, 1}, "LINEAR");
+  const AnimatedScene s = load(f, R"([{"mesh": 0, "scale": [0, 0, 0]}])");
+  // loadGltf drops the zero-area triangle; the animated scene keeps an empty
+  // slot for it, so Scene::meshes has the same slots at every time.
+  EXPECT_TRUE(loadGltf(path_).meshes.empty());
+  ASSERT_EQ(s.restScene().meshes.size(), 1u);
+  EXPECT_EQ(s.restScene().meshes[0].triangleCount(), 0u);
+  EXPECT_EQ(s.sceneAt(0.0).meshes.at(0).triangleCount(), 0u);
+  EXPECT_EQ(s.sceneAt(1.0).meshes.at(0).triangleCount(), 1u);
+  expectNear(vertexAt(s, 0.5, 1), {0.5, 0, 0});
+}
+
 TEST_F(AnimatedSceneTest, MorphWeightsAndSkinsAreCountedAsIgnored) {
   AnimatedGltf f;
   f.addChannel(0, "weights", {0, 1}, {0, 1}, "LINEAR");

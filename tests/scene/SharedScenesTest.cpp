@@ -120,6 +120,28 @@ TEST_F(SharedScenesTest, MorphWeightAnimationIsCountedNotPlayed) {
   }
 }
 
+TEST_F(SharedScenesTest, AnimatedLoaderGivesLoadGltfsBytesOnStaticFiles) {
+  // Node rotations (the Z-up Cornell box), cameras, textures, a glb.
+  for (const char* name : {"cornell-box/cornell_box.glb", "loader/cameras/Cameras.gltf",
+                           "loader/BoxTextured.glb", "loader/Box.gltf"}) {
+    const Scene reference = loadGltf(kShared / name);
+    const AnimatedScene animated = AnimatedScene::load(kShared / name);
+    EXPECT_FALSE(animated.animated()) << name;
+    const Scene at = animated.sceneAt(1.0);
+    ASSERT_EQ(at.meshes.size(), reference.meshes.size()) << name;
+    for (std::size_t m = 0; m < at.meshes.size(); ++m) {
+      EXPECT_EQ(at.meshes[m].positions_world, reference.meshes[m].positions_world) << name;
+      EXPECT_EQ(at.meshes[m].normals_world, reference.meshes[m].normals_world) << name;
+      EXPECT_EQ(at.meshes[m].indices, reference.meshes[m].indices) << name;
+    }
+    ASSERT_EQ(at.cameras.size(), reference.cameras.size()) << name;
+    for (std::size_t c = 0; c < at.cameras.size(); ++c) {
+      EXPECT_EQ(at.cameras[c].position_world, reference.cameras[c].position_world) << name;
+      EXPECT_EQ(at.cameras[c].forward_world, reference.cameras[c].forward_world) << name;
+    }
+  }
+}
+
 TEST_F(SharedScenesTest, PrimitiveModes) {
   // 00-03 and 07-10: points, lines, line loops, line strips (skipped);
   // 04/11 strips, 05/12 fans and 06/13/14/15 lists: two triangles each.

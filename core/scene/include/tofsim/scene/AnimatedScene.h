@@ -38,7 +38,8 @@ class AnimatedScene {
   AnimatedScene& operator=(AnimatedScene&&) noexcept;
   ~AnimatedScene();
 
-  /// The scene of the nodes' own transforms: loadGltf's.
+  /// The scene of the nodes' own transforms: loadGltf's, but for the empty
+  /// slots of animated meshes that have no triangle at rest.
   const Scene& restScene() const;
   const std::vector<Animation>& animations() const;
   bool animated() const;  ///< some channel moves a mesh or a camera
