@@ -11,6 +11,8 @@
 #include "CwTofDeviceImages.h"
 #include "CwTofDeviceStage.h"
 #include "CwTofOutputs.h"
+#include "CwTofPsfError.h"
+#include "tofsim/optics/PsfConvolution.h"
 #include "tofsim/sensors/Random.h"
 #include "tofsim/util/Error.h"
 
@@ -53,6 +55,7 @@ class CwTofStream final : public SensorStream {
         shape_(shape),
         seed_(options.seed),
         withDirect_(options.directOnly),
+        psfOnRaws_(options.psfOnRaws),
         correlator_(p_, shape_.axis),
         device_(p_, shape.height, shape.width),
         deviceImages_(p_, shape.pixelCount()),
@@ -82,6 +85,8 @@ class CwTofStream final : public SensorStream {
       }
       byOrder_.emplace(correlator_, p_.common, shape_, *options.bounces, unwrapRange_);
     }
+    if (psfOnRaws_) checkPsfOnRaws();
+    if (psfOnRaws_ || options.beforePsf) psfError_.emplace(HW_);
   }
 
   void consume(const PixelSpan& span) override {
@@ -96,6 +101,21 @@ class CwTofStream final : public SensorStream {
     next_ += span.pixelCount;
   }
 
+  /// The light before the lens's PSF: each pixel's noise-free depth, as
+  /// multipath() finds the depth of the light with it.
+  void consumeBeforePsf(const PixelSpan& span) override {
+    if (!psfError_) return;
+    TOFSIM_CHECK(span.firstPixel == nextSharp_ && nextSharp_ + span.pixelCount <= HW_);
+    for (std::size_t i = 0; i < span.pixelCount; ++i) {
+      pixelSignal(span.volume + i * shape_.pixelFloats(), shape_.axis.bins, shape_.channels,
+                  p_.common, signal_);
+      correlator_.raw(signal_, p_.ambient_e, ideal_);
+      const double depth = correlator_.depth(ideal_, phases_, amps_, unwrapRange_);
+      psfError_->sharp(span.firstPixel + i, depth, amps_[0] > 0.0);
+    }
+    nextSharp_ += span.pixelCount;
+  }
+
   std::vector<SensorOutput> finish(const Image* groundTruthDepth_m) override;
 
  private:
@@ -104,27 +124,69 @@ class CwTofStream final : public SensorStream {
 
   /// consume(): the pixel's noise-free charges (every tap, its fixed-pattern
   /// delay inside the correlation) kept for finish(), and its multipath errors.
+  /// With the PSF on the raws the charges kept are the signal's alone (the
+  /// ambient is added at the pixel, after the lens) and the depths found
+  /// here are the sharp light's.
   void pixel(const float* values, const float* direct, std::size_t px) {
     pixelSignal(values, shape_.axis.bins, shape_.channels, p_.common, signal_);
     const double delay = device_.delay_s(px);
-    correlator_.taps(signal_, p_.ambient_e, delay, ideal_);
+    correlator_.taps(signal_, psfOnRaws_ ? 0.0 : p_.ambient_e, delay, ideal_);
     for (std::size_t j = 0; j < ideal_.size(); ++j) clean_[j * HW_ + px] = ideal_[j];
     // The multipath errors are the scene's: without the device's delay.
-    if (delay != 0.0) correlator_.raw(signal_, p_.ambient_e, ideal_);
-    multipath(direct, px);
+    if (delay != 0.0 || psfOnRaws_) correlator_.raw(signal_, p_.ambient_e, ideal_);
+    const bool lit = multipath(direct, px);
+    if (!psfError_) return;
+    if (psfOnRaws_) {
+      psfError_->sharp(px, cleanDepth_[px], lit);
+    } else {
+      psfError_->blurred(px, lit);
+    }
+  }
+
+  /// The PSF on the raws is the PSF on every bin only where each pixel's
+  /// charges are a linear map of its light common to all pixels; the
+  /// pipeline puts it on the transient otherwise (PsfPath.h).
+  void checkPsfOnRaws() const {
+    if (!device_.pattern().delay_s.empty()) {
+      throw InputError(
+          "cwtof: the lens's PSF on the raw images is exact only without a fixed-pattern delay "
+          "(delay_sigma, delay_map); apply it to the transient");
+    }
+    if (withDirect_ || byOrder_) {
+      throw InputError(
+          "cwtof: the lens's PSF on the raw images blurs the total light only; the direct-only "
+          "and by-order references need it on the transient");
+    }
+  }
+
+  /// The lens's PSF on the noise-free signal charges (each of the rows
+  /// planes of H x W on its own, the image zero outside, as on each bin of a
+  /// transient), the ambient added after it (it is defined at the pixel),
+  /// and the noise-free depths found again from the blurred charges.
+  void lensOnRaws() {
+    optics::applyPsf(*psfOnRaws_, clean_.data(), static_cast<int32_t>(correlator_.rows), H_, W_);
+    const double ambient = 0.5 * p_.ambient_e;  // Correlator::correlate's share per raw
+    for (double& q : clean_) q += ambient;
+    const std::size_t FN = static_cast<std::size_t>(F_) * p_.phase_steps;
+    ideal_.resize(FN);
+    for (std::size_t px = 0; px < HW_; ++px) {
+      for (std::size_t j = 0; j < FN; ++j) ideal_[j] = clean_[j * HW_ + px];  // tap A's raws
+      const bool lit = multipath(nullptr, px);
+      psfError_->blurred(px, lit);
+    }
   }
 
   /// finish(): the device stage of every pixel, from its kept noise-free
   /// charges, with the noise of its own stream (as it always was).
   void device() {
-    // [PSF hook] A lens PSF acts here, on the noise-free charge planes clean_
-    // (correlator_.rows planes of H x W, e-, ambient included; plane j = tap
-    // j / (F N), frequency and step of j % (F N)), before any noise. Each
-    // pixel's fixed-pattern delay is already inside its charges (it acts in
-    // the correlation, consume()), so light blurred onto a pixel here keeps
-    // the delay of the pixel it came from: exact without delay_sigma /
-    // delay_map; with them, a PSF on the transient (before the sensor) is the
-    // exact order.
+    // The lens's PSF (StreamOptions::psfOnRaws) acts here, on the noise-free
+    // charge planes clean_ (correlator_.rows planes of H x W, e-; plane j =
+    // tap j / (F N), frequency and step of j % (F N)), before any noise. Each
+    // pixel's fixed-pattern delay would already be inside its charges (it
+    // acts in the correlation, consume()), so light blurred onto a pixel here
+    // would keep the delay of the pixel it came from: hence no delay pattern
+    // with it (checkPsfOnRaws); the PSF on the transient is the exact order.
+    if (psfOnRaws_) lensOnRaws();
     for (std::size_t px = 0; px < HW_; ++px) {
       noisy_.resize(correlator_.rows);
       for (std::size_t j = 0; j < noisy_.size(); ++j) noisy_[j] = clean_[j * HW_ + px];
@@ -144,9 +206,10 @@ class CwTofStream final : public SensorStream {
 
   /// The noise-free depths the multipath errors compare, and the error
   /// against the direct-only depth, folded into the depth's range so that a
-  /// phase wrap is not counted.
-  void multipath(const float* direct, std::size_t px) {
+  /// phase wrap is not counted. True when the light ideal_ has an amplitude.
+  bool multipath(const float* direct, std::size_t px) {
     const double clean = correlator_.depth(ideal_, phases_, amps_, unwrapRange_);
+    const bool lit = amps_[0] > 0.0;
     cleanDepth_[px] = clean;
     for (int32_t f = 0; f < F_; ++f) {
       cleanWrapped_[f * HW_ + px] = correlator_.wrappedDepth(f, phases_[f]);
@@ -159,6 +222,7 @@ class CwTofStream final : public SensorStream {
         mpiDirect_[px] = static_cast<float>(wrapSigned(clean - directDepth, depthRange_));
       }
     }
+    return lit;
   }
 
   /// The errors of the kept noise-free depths against the ground truth.
@@ -195,12 +259,13 @@ class CwTofStream final : public SensorStream {
   const VolumeShape shape_;
   const uint64_t seed_;
   const bool withDirect_;
+  const optics::PsfKernel* psfOnRaws_;  // not owned: the config's camera.psf
   Correlator correlator_;
   CwTofDeviceStage device_;
   CwTofDeviceImages deviceImages_;
   int32_t H_, W_, F_;
   std::size_t HW_;
-  std::size_t next_ = 0;
+  std::size_t next_ = 0, nextSharp_ = 0;
   double unwrapRange_ = 0.0, depthRange_ = 0.0;
   // (F, N, H, W) raw; (F, H, W) per frequency; (H, W) combined.
   std::vector<float> raw_, phase_, amplitude_, wrappedDepth_, mpiGtPerFrequency_;
@@ -211,6 +276,7 @@ class CwTofStream final : public SensorStream {
   std::vector<double> wiggling_;                                // (F, S), m
   std::vector<double> signal_, ideal_, noisy_, phases_, amps_;  // per-pixel scratch
   std::optional<OrderDepths> byOrder_;                          // multipath_by_order
+  std::optional<CwTofPsfError> psfError_;  // with the lens's PSF: cwtof_psf_error
 };
 
 std::vector<SensorOutput> CwTofStream::finish(const Image* gt) {
@@ -272,6 +338,12 @@ std::vector<SensorOutput> CwTofStream::finish(const Image* gt) {
   if (withDirect_) {
     addImage(outs, "cwtof_mpi_error_direct", H, W, std::move(mpiDirect_), "m",
              "CW-ToF depth error against the direct-only depth (noise-free)", cmap, combinedError);
+  }
+  if (psfError_) {
+    addImage(outs, "cwtof_psf_error", H, W, psfError_->errors(cleanDepth_, depthRange_), "m",
+             "CW-ToF depth error of the lens's stray light: noise-free depth with camera.psf - "
+             "without it",
+             cmap, combinedError);
   }
   addByOrder(outs, gt);
   outs.push_back(wigglingOutput());

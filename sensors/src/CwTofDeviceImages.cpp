@@ -1,5 +1,6 @@
 #include "CwTofDeviceImages.h"
 
+#include <algorithm>
 #include <limits>
 #include <string>
 
@@ -59,6 +60,22 @@ void CwTofDeviceImages::add(std::vector<SensorOutput>& outs, int32_t H, int32_t 
                               "photo-electrons",
                               "CW-ToF charge of each tap as read, before the difference "
                               "(frequency, phase step, tap, y, x)"));
+  }
+  if (adc_ && !p_.capture_order.empty()) {
+    // The same DN raws as the device streams them: raw i of the capture
+    // order is plane i, so a decoder written for the device reads them as is.
+    const std::vector<CwTofCaptureStep> order = cwtofCaptureOrder(p_);
+    std::vector<float> sequence(FN_ * HW_);
+    for (std::size_t i = 0; i < order.size(); ++i) {
+      const auto j = static_cast<std::size_t>(order[i].frequency * N + order[i].step);
+      std::copy_n(dn_.begin() + static_cast<std::ptrdiff_t>(j * HW_), HW_,
+                  sequence.begin() + static_cast<std::ptrdiff_t>(i * HW_));
+    }
+    outs.push_back(makeOutput(
+        "cwtof_raw_sequence", SensorOutput::Kind::Array, {static_cast<int64_t>(FN_), H, W},
+        {"capture_index", "y", "x"}, std::move(sequence), "DN",
+        "CW-ToF raws after the ADC in capture order (capture index, y, x): plane i is "
+        "capture_order[i] of the sensor JSON's capture.order"));
   }
   if (adc_) {
     outs.push_back(makeOutput("cwtof_raw_dn", SensorOutput::Kind::Array, {F, N, H, W},

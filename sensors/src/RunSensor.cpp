@@ -66,13 +66,13 @@ std::vector<SensorOutput> runSensor(const SensorSpec& spec, const SensorInputs& 
 
 std::vector<std::string> sensorWarnings(const SensorSpec& spec, const SensorInputs& in) {
   TOFSIM_CHECK(in.volume != nullptr);
-  return sensorWarnings(spec, in.volume->axis(), in.groundTruthDepth_m);
+  return sensorWarnings(spec, shapeOf(*in.volume), in.groundTruthDepth_m);
 }
 
-std::vector<std::string> sensorWarnings(const SensorSpec& spec, const TimeAxis& axis,
+std::vector<std::string> sensorWarnings(const SensorSpec& spec, const VolumeShape& shape,
                                         const Image* groundTruthDepth_m) {
   return std::visit(
-      [&](const auto& p) { return TypeOf<decltype(p)>::warnings(p, axis, groundTruthDepth_m); },
+      [&](const auto& p) { return TypeOf<decltype(p)>::warnings(p, shape, groundTruthDepth_m); },
       spec.params);
 }
 

@@ -2,6 +2,7 @@
 #include <cstdio>
 #include <string>
 
+#include "tofsim/sensors/CwTofPresets.h"
 #include "tofsim/sensors/SensorType.h"
 
 namespace tofsim::sensors {
@@ -20,7 +21,7 @@ std::unique_ptr<SensorStream> SensorType<StreakParams>::open(const StreakParams&
                                                              const StreamOptions& options) {
   return openStreak(p, shape, options);
 }
-std::vector<std::string> SensorType<StreakParams>::warnings(const StreakParams&, const TimeAxis&,
+std::vector<std::string> SensorType<StreakParams>::warnings(const StreakParams&, const VolumeShape&,
                                                             const Image*) {
   return {};
 }
@@ -41,7 +42,8 @@ std::unique_ptr<SensorStream> SensorType<SpadParams>::open(const SpadParams& p,
   return openSpad(p, shape, options);
 }
 std::vector<std::string> SensorType<SpadParams>::warnings(const SpadParams& p,
-                                                          const TimeAxis& render, const Image*) {
+                                                          const VolumeShape& shape, const Image*) {
+  const TimeAxis& render = shape.axis;
   std::vector<std::string> out;
   if (p.irf.present()) {
     // The part of the response the window cannot hold is folded back into it
@@ -82,9 +84,12 @@ std::unique_ptr<SensorStream> SensorType<CwTofParams>::open(const CwTofParams& p
   return openCwTof(p, shape, options);
 }
 std::vector<std::string> SensorType<CwTofParams>::warnings(const CwTofParams& p,
-                                                           const TimeAxis& axis,
+                                                           const VolumeShape& shape,
                                                            const Image* groundTruthDepth_m) {
-  return cwtofWarnings(p, axis, groundTruthDepth_m);
+  std::vector<std::string> out = cwtofWarnings(p, shape.axis, groundTruthDepth_m);
+  for (std::string& w : presetImageWarnings(findCwTofPreset(p.preset), shape.width, shape.height))
+    out.push_back(std::move(w));
+  return out;
 }
 std::uintmax_t SensorType<CwTofParams>::outputBytes(const CwTofParams& p, int32_t width,
                                                     int32_t height, const TimeAxis&) {

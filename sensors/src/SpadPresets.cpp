@@ -76,19 +76,21 @@ constexpr std::array<const char*, 2> kFlashLidarSources{{
     "distance-measurement-performance.php",
 }};
 
+// No image size is checked (0, 0): a scanned single pixel, arrays often
+// rendered cropped; the device line names their size.
 const std::array<SpadPreset, 3> kPresets{{
     {"nlos-gated-spad",
      "single-pixel fast-gated SPAD (Polimi) with a PicoHarp 300 TCSPC, as in NLOS captures; the "
      "gate (110 ps transitions [BUTT14]) depends on the scene: set gate_start and gate_width",
-     applyNlosGated, kNlosGatedValues, kNlosGatedSources},
+     applyNlosGated, kNlosGatedValues, kNlosGatedSources, 0, 0},
     {"spad512s",
      "Pi Imaging SPAD512S, 512 x 512 gated SPAD array (0 e- read noise, 6 ns gate [SPAD512S]); "
      "the resolution is the camera's",
-     applySpad512s, kSpad512sValues, kSpad512sSources},
+     applySpad512s, kSpad512sValues, kSpad512sSources, 0, 0},
     {"flash-lidar-fbk256",
      "FBK 256 x 256 flash-lidar SPAD imager with first- or last-event TDCs [FBK256]; the window "
      "(bins) is the render's",
-     applyFlashLidar, kFlashLidarValues, kFlashLidarSources},
+     applyFlashLidar, kFlashLidarValues, kFlashLidarSources, 0, 0},
 }};
 
 }  // namespace

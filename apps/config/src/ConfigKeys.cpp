@@ -60,7 +60,7 @@ const ConfigKey kRunConfigKeys[] = {
     {"camera.lens.calibration", "path", "", "none", "-",
      "an OpenCV calibration YAML (cv::FileStorage's: camera_matrix, distortion_coefficients, image_width, image_height) in place of the two keys above; relative to the config"},
     {"camera.psf", "mapping", "", "none", "-",
-     "the lens's point spread function (stray light) on every time bin, see below"},
+     "the lens's point spread function (stray light) on every time bin, or equivalently on the CW-ToF raws, see below"},
     {"camera.psf.core_sigma", "number", ">= 0", "0", "pixel",
      "the core's Gaussian sigma, integrated over each pixel; 0: a delta (the pixel keeps its light)"},
     {"camera.psf.halo_weight", "number", "in [0, 1)", "0", "-",

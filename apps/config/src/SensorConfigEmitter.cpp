@@ -100,6 +100,10 @@ void SensorConfigType<SpadParams>::emit(YAML::Node& n, const SpadParams& p) {
 void SensorConfigType<CwTofParams>::emit(YAML::Node& n, const CwTofParams& p) {
   emitCommon(n, p.common);
   emitFields(n, kCwTofFields, p, [&](std::string_view key) {
+    if (key == "preset") {
+      if (!p.preset.empty()) n["preset"] = p.preset;
+      return;
+    }
     if (emitCwTofDeviceKey(n, key, p)) return;
     if (key == "correlation") {
       if (!p.correlation.empty()) n["correlation"] = correlationToYaml(p.correlation);

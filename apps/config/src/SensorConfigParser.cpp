@@ -1,5 +1,6 @@
 #include <cmath>
 #include <cstdio>
+#include <span>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -15,6 +16,7 @@
 #include "SpadTableFile.h"
 #include "tofsim/config/SensorConfig.h"
 #include "tofsim/config/Units.h"
+#include "tofsim/sensors/CwTofPresets.h"
 #include "tofsim/sensors/SensorFields.h"
 #include "tofsim/sensors/SpadPresets.h"
 
@@ -77,22 +79,29 @@ void SensorConfigType<StreakParams>::checkImage(const ConfigNode& n, const Strea
   }
 }
 
-// --- spad -----------------------------------------------------------------------
 namespace {
 // `preset:` first: its values are the defaults the keys below replace.
-void applyPreset(const ConfigNode& n, SpadParams& p) {
+// `model` names the sensor type in the error ("SPAD", "CW-ToF").
+template <class Params>
+void applyPreset(const ConfigNode& n, std::span<const DevicePreset<Params>> presets,
+                 const char* model, Params& p) {
   if (!n.has("preset")) return;
   const std::string name = n.getString("preset", "");
-  const SpadPreset* preset = findSpadPreset(name);
+  const DevicePreset<Params>* preset = findPreset(presets, name);
   if (!preset) {
     std::string known;
-    for (const SpadPreset& s : spadPresets())
+    for (const DevicePreset<Params>& s : presets)
       known += (known.empty() ? "" : ", ") + std::string(s.name);
-    n.failKey("preset", "unknown SPAD preset '" + name + "' (known: " + known + ")");
+    n.failKey("preset",
+              "unknown " + std::string(model) + " preset '" + name + "' (known: " + known + ")");
   }
   preset->apply(p);
   p.preset = name;
 }
+}  // namespace
+
+// --- spad -----------------------------------------------------------------------
+namespace {
 
 // The gate's transitions and skew shape a gate, the frame keys the gated
 // frames: without them they are typos.
@@ -191,7 +200,7 @@ void checkAfterpulses(const ConfigNode& n, const SpadParams& p) {
 
 SpadParams SensorConfigType<SpadParams>::parse(const ConfigNode& n) {
   SpadParams p;
-  applyPreset(n, p);
+  applyPreset(n, spadPresets(), "SPAD", p);
   p.common = parseCommon(n);
   p.bins = parseBins(n, p.bins);
   parseFields(n, kSpadFields, p, [&](std::string_view key) {
@@ -291,8 +300,22 @@ void SensorConfigType<SpadParams>::checkImage(const ConfigNode& n, const SpadPar
 }
 
 // --- cwtof ----------------------------------------------------------------------
+namespace {
+// A preset's capture order lists its own frequencies and steps: an explicit
+// `frequencies` or `phase_steps` that changes them needs its own order.
+void checkPresetCaptureOrder(const ConfigNode& n, const CwTofParams& p) {
+  if (p.preset.empty() || n.has("capture_order") || p.capture_order.empty()) return;
+  const std::size_t raws = p.frequencies_Hz.size() * static_cast<std::size_t>(p.phase_steps);
+  if (p.capture_order.size() == raws) return;
+  n.failKey(n.has("frequencies") ? "frequencies" : "phase_steps",
+            "changes the raws of preset '" + p.preset + "', whose capture_order lists " +
+                std::to_string(p.capture_order.size()) + " of them: set `capture_order` too");
+}
+}  // namespace
+
 CwTofParams SensorConfigType<CwTofParams>::parse(const ConfigNode& n) {
   CwTofParams p;
+  applyPreset(n, cwtofPresets(), "CW-ToF", p);
   p.common = parseCommon(n);
   parseFields(n, kCwTofFields, p, [&](std::string_view key) {
     if (parseCwTofDeviceKey(n, key, p)) return;
@@ -326,6 +349,7 @@ CwTofParams SensorConfigType<CwTofParams>::parse(const ConfigNode& n) {
       if (p.frequencies_Hz.empty()) freqs->fail("must list at least one frequency");
     }
   });
+  checkPresetCaptureOrder(n, p);
   checkCwTofDevice(n, p);
   return p;
 }

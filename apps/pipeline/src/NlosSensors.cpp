@@ -64,7 +64,7 @@ std::vector<std::string> runNlosSensors(const config::RunConfig& config,
     SensorRunInfo run{&spec, volume.axis, config.render.seed, {}};
     std::vector<sensors::SensorOutput> outputs;
     try {
-      run.warnings = sensors::sensorWarnings(spec, volume.axis, nullptr);
+      run.warnings = sensors::sensorWarnings(spec, sensors::shapeOf(input), nullptr);
       printSensorWarnings(spec, run.warnings);
       outputs = sensors::runSensor(spec, {&input, nullptr, nullptr, nullptr, config.render.seed});
     } catch (const InputError& e) {

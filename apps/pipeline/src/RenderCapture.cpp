@@ -5,6 +5,7 @@
 #include <utility>
 #include <vector>
 
+#include "tofsim/optics/PsfConvolution.h"
 #include "tofsim/pipeline/AxisReport.h"
 #include "tofsim/pipeline/Capture.h"
 #include "tofsim/pipeline/FiniteSegments.h"
@@ -31,14 +32,16 @@ RenderedCapture renderCapture(const config::RunConfig& config, const capture::Re
   std::vector<capture::SegmentSink*> sinks = consumers.sinks;
   sinks.push_back(&steady);
   const auto& psfConfig = config.camera.psf;
-  if (!psfConfig) sinks.insert(sinks.end(), consumers.beforePsf.begin(), consumers.beforePsf.end());
+  const bool psfOnTransient = psfConfig && !consumers.psfOnRaws;
+  if (!psfOnTransient)
+    sinks.insert(sinks.end(), consumers.beforePsf.begin(), consumers.beforePsf.end());
   capture::TeeSink tee(std::move(sinks));
   // The lens's PSF on the cleaned light (no NaN to spread), before the
   // outputs read it; it holds the volume, so it is checked against the
   // budget first.
   std::optional<PsfSegments> psf;
   std::optional<capture::TeeSink> psfAndSharp;
-  if (psfConfig) {
+  if (psfOnTransient) {
     checkPsfFits(config, camera.width, camera.height, axis.bins, consumers.bounces.size());
     psf.emplace(tee, camera.width, camera.height, axis.bins, psfConfig->kernel, config.cpu_threads);
     std::vector<capture::SegmentSink*> both = consumers.beforePsf;
@@ -73,6 +76,12 @@ RenderedCapture renderCapture(const config::RunConfig& config, const capture::Re
                  rendered.result.nonFiniteRejected);
   }
   rendered.steady = steady.steady();
+  if (psfConfig && consumers.psfOnRaws) {  // the sum over bins of the blurred bins, by linearity
+    Image& s = rendered.steady;
+    optics::applyPsf(psfConfig->kernel, s.data.data(), static_cast<std::size_t>(s.channels),
+                     {s.width, s.height, static_cast<std::size_t>(s.channels), 1},
+                     {optics::PsfMethod::Auto, config.cpu_threads});
+  }
   checkAxisAfterRender(config, job, rendered.steady, rendered.result);  // throws under --strict
   return rendered;
 }

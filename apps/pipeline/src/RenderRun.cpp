@@ -89,15 +89,30 @@ namespace {
 void writeOutputs(const config::RunConfig& config, const capture::RenderJob& job,
                   const RunOptions& options, const std::filesystem::path& dir, Progress& progress,
                   RunSummary& summary);
+RunSummary renderScene(const config::RunConfig& config, const scene::Scene& scene,
+                       const RunOptions& options, Progress& progress);
 
 }  // namespace
 
 RunSummary runRender(const config::RunConfig& config, const RunOptions& options) {
   if (config.nlos) return runNlosRender(config, options);
-  Progress progress("render", options.quiet);
+  Progress progress("render", options.quiet);  // its time includes the scene's loading
   scene::LoadReport report;
   const scene::Scene scene = scene::loadGltf(config.scene_file, &report);
   reportLoad(report, progress);
+  return renderScene(config, scene, options, progress);
+}
+
+RunSummary runRender(const config::RunConfig& config, const scene::Scene& scene,
+                     const RunOptions& options) {
+  TOFSIM_CHECK(!config.nlos);
+  Progress progress("render", options.quiet);
+  return renderScene(config, scene, options, progress);
+}
+
+namespace {
+RunSummary renderScene(const config::RunConfig& config, const scene::Scene& scene,
+                       const RunOptions& options, Progress& progress) {
   const capture::RenderJob job = prepareCapture(config, scene);  // fails under --strict
 
   RunSummary summary;
@@ -121,7 +136,6 @@ RunSummary runRender(const config::RunConfig& config, const RunOptions& options)
   return summary;
 }
 
-namespace {
 void writeSteady(const std::filesystem::path& dir, const Image& steady, PlotRanges& ranges) {
   io::writeExr(dir / files::kSteadyExr, steady, {"R", "G", "B"});
   imaging::writeToneMappedPng(dir / files::kSteadyPng, steady, imaging::ToneMap::Global,
@@ -216,9 +230,17 @@ void writeOutputs(const config::RunConfig& config, const capture::RenderJob& job
   const sensors::VolumeShape shape{camera.width, camera.height, capture::kChannels,
                                    job.settings.time};
   const std::optional<int32_t> bounces = sensorBounces(config);
+  // The lens's PSF on every bin, or on the CW-ToF raws and the steady image
+  // when nothing written needs the blurred transient (PsfPath.h).
+  const PsfPath psf = choosePsfPath(config, options.psfOnTransient);
+  if (psf == PsfPath::Raws) {
+    progress.message(
+        "camera.psf: on the CW-ToF raws and the steady image (no output needs the blurred "
+        "transient)");
+  }
   std::optional<SensorStreams> sensorStreams;
   if (!config.sensors.empty())
-    sensorStreams.emplace(config, shape, out.direct, bounces, dir, &camera);
+    sensorStreams.emplace(config, shape, out.direct, bounces, dir, &camera, psf);
   std::optional<BinMajorSpill> spill;
   if (out.frames || out.video || out.frame_pngs) spill.emplace(dir / kBinMajorSpillName, shape);
   std::vector<std::unique_ptr<VolumeFileSink>> volumeFiles;
@@ -239,6 +261,13 @@ void writeOutputs(const config::RunConfig& config, const capture::RenderJob& job
         bounces.value_or(0));
     consumers.sinks.push_back(&*spans);
   }
+  // The light before the PSF, for the CW-ToF sensors' cwtof_psf_error.
+  std::optional<PixelSpanSink> sharpSpans;
+  if (sensorStreams && psf == PsfPath::Transient) {
+    sharpSpans.emplace([&](const sensors::PixelSpan& s) { sensorStreams->consumeBeforePsf(s); }, 0);
+    consumers.beforePsf.push_back(&*sharpSpans);
+  }
+  consumers.psfOnRaws = psf == PsfPath::Raws;
   consumers.bounces = bouncesRead(out, bounces.value_or(0));
   RenderedCapture rendered =
       renderCapture(config, job, options.eglPlatform, consumers, progress);  // throws: --strict

@@ -39,6 +39,9 @@ std::string axisDoc(const std::string& axis) {
   if (axis == "frequency") return "index into sensor.parameters.frequencies_Hz";
   if (axis == "phase_step")
     return "phase step k, reference phase 2 pi k / sensor.parameters.phase_steps";
+  if (axis == "capture_index")
+    return "raw i as the device takes it: sensor.parameters.capture.order[i] is its [frequency, "
+           "phase_step]";
   if (axis == "tap") return "tap: 0 = A (reference phase theta), 1 = B (theta + pi)";
   if (axis == "pixel") return "index into `labels` (the pixel each series shows)";
   if (axis == "order") return "bounce order k: the light of direct + indirect bounces 1..k";

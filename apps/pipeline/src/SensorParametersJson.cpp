@@ -9,6 +9,7 @@
 
 #include "FieldJson.h"
 #include "tofsim/sensors/Common.h"
+#include "tofsim/sensors/CwTofPresets.h"
 #include "tofsim/sensors/SensorFields.h"
 #include "tofsim/sensors/SpadPresets.h"
 
@@ -59,12 +60,14 @@ json presetJson(const DevicePreset<Params>& preset) {
       assumed[v.key] = v.note;
     }
   }
-  return {{"name", preset.name},
-          {"device", preset.device},
-          {"sourced", sourced},
-          {"assumed", assumed},
-          {"sources", std::vector<std::string>(preset.sources.begin(), preset.sources.end())},
-          {"note", "explicit config keys replace these values; the effective config has them all"}};
+  json j = {{"name", preset.name}, {"device", preset.device}};
+  // The device's pixel array [width, height], where the preset gives one.
+  if (preset.width > 0) j["device_image"] = {preset.width, preset.height};
+  j["sourced"] = sourced;
+  j["assumed"] = assumed;
+  j["sources"] = std::vector<std::string>(preset.sources.begin(), preset.sources.end());
+  j["note"] = "explicit config keys replace these values; the effective config has them all";
+  return j;
 }
 
 json modelJson(const SpadParams& p, const TimeAxis& render) {
@@ -157,6 +160,10 @@ json mapJson(const CwTofPixelMap& m) { return {{"file", m.file}, {"shape", {m.he
 json modelJson(const CwTofParams& p, const TimeAxis& render) {
   json j;
   fieldsJson(j, kCwTofFields, p, [&](std::string_view key) {
+    if (key == "preset") {
+      if (const CwTofPreset* preset = findCwTofPreset(p.preset)) j["preset"] = presetJson(*preset);
+      return;
+    }
     if (key == "delay_map" && p.delay_map.present()) j["delay_map"] = mapJson(p.delay_map);
     if (key == "gain_map" && p.gain_map.present()) j["gain_map"] = mapJson(p.gain_map);
     if (key == "offset_map" && p.offset_map.present()) j["offset_map"] = mapJson(p.offset_map);

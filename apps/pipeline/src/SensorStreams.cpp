@@ -74,7 +74,7 @@ std::optional<int32_t> sensorBounces(const config::RunConfig& config) {
 SensorStreams::SensorStreams(const config::RunConfig& config, const sensors::VolumeShape& shape,
                              bool withDirect, std::optional<int32_t> bounces,
                              const std::filesystem::path& outputDirectory,
-                             const capture::Camera* camera)
+                             const capture::Camera* camera, PsfPath psf)
     : config_(config), shape_(shape), outputDirectory_(outputDirectory), camera_(camera) {
   for (std::size_t i = 0; i < config.sensors.size(); ++i) {
     const sensors::SensorSpec& spec = config.sensors[i];
@@ -85,6 +85,10 @@ SensorStreams::SensorStreams(const config::RunConfig& config, const sensors::Vol
     options.directOnly = withDirect;
     options.bounces = bounces;
     options.arrays = &entry->arrays;
+    if (std::holds_alternative<sensors::CwTofParams>(spec.params)) {
+      options.beforePsf = psf == PsfPath::Transient;  // for cwtof_psf_error
+      if (psf == PsfPath::Raws) options.psfOnRaws = &config.camera.psf->kernel;
+    }
     try {
       entry->stream = sensors::openSensor(spec, shape, options);
     } catch (const InputError& e) {
@@ -101,6 +105,14 @@ void SensorStreams::consume(const sensors::PixelSpan& span) {
     const Clock::time_point start = Clock::now();
     e->stream->consume(span);
     e->meter.consume(span);
+    e->busy += Clock::now() - start;
+  }
+}
+
+void SensorStreams::consumeBeforePsf(const sensors::PixelSpan& span) {
+  for (const std::unique_ptr<Entry>& e : entries_) {
+    const Clock::time_point start = Clock::now();
+    e->stream->consumeBeforePsf(span);
     e->busy += Clock::now() - start;
   }
 }
@@ -122,7 +134,7 @@ std::vector<std::string> SensorStreams::finish(const Image* groundTruthDepth_m,
     std::vector<sensors::SensorOutput> outputs;
     SensorRunInfo run{&spec, shape_.axis, config_.render.seed, {}, camera_};
     try {
-      run.warnings = sensors::sensorWarnings(spec, shape_.axis, groundTruthDepth_m);
+      run.warnings = sensors::sensorWarnings(spec, shape_, groundTruthDepth_m);
       printSensorWarnings(spec, run.warnings);
       outputs = e->stream->finish(groundTruthDepth_m);
     } catch (const InputError& error) {

@@ -25,6 +25,8 @@ namespace tofsim::sensors {
 enum class Waveform { Sine, Square, Measured };
 
 struct CwTofParams {
+  /// The device preset whose values were the defaults (CwTofPresets.h); empty: none.
+  std::string preset;
   SensorCommon common;  ///< radiometry gives photo-electrons per raw image (one phase step)
   std::vector<double> frequencies_Hz{20e6};  ///< modulation frequencies, each > 0
   int32_t phase_steps = 4;                   ///< N >= 3, reference phases 2 pi k / N
@@ -151,6 +153,8 @@ std::vector<std::string> cwtofWarnings(const CwTofParams& params, const TimeAxis
 /// "cwtof_wiggling_error_map" (the depth error of a noise-free single return
 /// at each pixel's true depth: the waveform's, multipath excluded); with a direct-only
 /// volume, "cwtof_mpi_error_direct" (noise-free depth - direct-only depth);
+/// with the lens's PSF (StreamOptions::psfOnRaws or beforePsf),
+/// "cwtof_psf_error" (noise-free depth with it - without it);
 /// with multipath_by_order, "cwtof_multipath_error_by_order" Array (N + 1,
 /// H, W): order k = the depth of direct + bounces 1..k - ground truth, NaN
 /// where that light is zero, and a ColorMappedImage of each order,
@@ -159,10 +163,11 @@ std::vector<std::string> cwtofWarnings(const CwTofParams& params, const TimeAxis
 /// Every error is wrapped into (-R/2, R/2] of its depth's range R, so a phase
 /// wrap never reads as multipath. Every Image comes with a ColorMappedImage.
 /// The device stage (CwTofDevice.h) adds, where its keys ask for them,
-/// "cwtof_raw_dn" Array (F, N, H, W) DN, "cwtof_device_phase" Array (F, H, W),
-/// "cwtof_device_depth" (NaN where saturated) and "cwtof_device_amplitude"
-/// Images, "cwtof_saturated", "cwtof_raw_taps" Array (F, N, 2, H, W) e- and
-/// the fixed-pattern maps; "cwtof_raw" is then the device's raw in e-.
+/// "cwtof_raw_dn" Array (F, N, H, W) DN, with a capture_order the same raws
+/// in capture order "cwtof_raw_sequence" Array (F N, H, W) DN, "cwtof_device_phase" Array (F, H,
+/// W), "cwtof_device_depth" (NaN where saturated) and "cwtof_device_amplitude" Images,
+/// "cwtof_saturated", "cwtof_raw_taps" Array (F, N, 2, H, W) e- and the fixed-pattern maps;
+/// "cwtof_raw" is then the device's raw in e-.
 std::vector<SensorOutput> runCwTof(const TransientVolume& volume, const CwTofParams& params,
                                    uint64_t seed, const CwTofReferences& references = {});
 

@@ -6,8 +6,11 @@
 // The same shape for every sensor type (SpadPresets.h, CwTofPresets.h), so
 // the config layer and the metadata treat them alike.
 
+#include <cstdint>
 #include <span>
+#include <string>
 #include <string_view>
+#include <vector>
 
 namespace tofsim::sensors {
 
@@ -26,6 +29,9 @@ struct DevicePreset {
   void (*apply)(Params&);
   std::span<const PresetValue> values;   ///< in the order apply sets them
   std::span<const char* const> sources;  ///< source key -> reference, one line each
+  /// The device's pixel array; the image is the camera's, so another size
+  /// is a warning (presetImageWarnings), not an error. 0: not checked.
+  int32_t width = 0, height = 0;
 };
 
 /// The preset called `name` among `presets`, or nullptr.
@@ -36,6 +42,21 @@ const DevicePreset<Params>* findPreset(std::span<const DevicePreset<Params>> pre
     if (name == p.name) return &p;
   }
   return nullptr;
+}
+
+/// One warning when a width x height image is not the preset's pixel array
+/// (the camera decides the image: the preset's other values still apply);
+/// empty when it is, or the preset gives none, or there is no preset.
+template <class Params>
+std::vector<std::string> presetImageWarnings(const DevicePreset<Params>* preset, int32_t width,
+                                             int32_t height) {
+  if (!preset || preset->width <= 0 || (width == preset->width && height == preset->height)) {
+    return {};
+  }
+  return {"the image is " + std::to_string(width) + " x " + std::to_string(height) +
+          " (camera.width x camera.height) but preset '" + preset->name + "' is a " +
+          std::to_string(preset->width) + " x " + std::to_string(preset->height) +
+          " device: its raws, ranges and noise are applied to the camera's pixels as they are"};
 }
 
 }  // namespace tofsim::sensors

@@ -25,8 +25,9 @@ std::unique_ptr<SensorStream> openSensor(const SensorSpec& spec, const VolumeSha
 
 /// The model's warnings about these inputs (SensorType<>::warnings), one line each.
 std::vector<std::string> sensorWarnings(const SensorSpec& spec, const SensorInputs& inputs);
-/// The same for a render's time axis and ground-truth depth (nullptr when none).
-std::vector<std::string> sensorWarnings(const SensorSpec& spec, const TimeAxis& axis,
+/// The same for a render's shape (image, time axis) and ground-truth depth
+/// (nullptr when none).
+std::vector<std::string> sensorWarnings(const SensorSpec& spec, const VolumeShape& shape,
                                         const Image* groundTruthDepth_m);
 
 }  // namespace tofsim::sensors

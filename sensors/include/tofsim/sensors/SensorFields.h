@@ -166,6 +166,7 @@ inline constexpr std::array<Name<CwTofNoiseModel>, 2> kCwTofNoiseModelNames{
     {{"poisson_read", CwTofNoiseModel::PoissonRead}, {"table", CwTofNoiseModel::Table}}};
 
 inline constexpr auto kCwTofFields = std::tuple{
+    Custom{"preset", "string", "", "none", "-", "device preset: its published values are the defaults of the other keys, each explicit key wins (see \"CW-ToF device presets\" below)"},
     Custom{"frequencies", "list of frequencies", "> 0", "[\"20 MHz\"]", "Hz", "modulation frequencies"},
     Field{"phase_steps", &CwTofParams::phase_steps, Integer{.max = 1024, .atLeast = 3},
           {.json = "phase_steps", .doc = "phase steps N per frequency"}},

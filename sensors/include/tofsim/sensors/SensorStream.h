@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "tofsim/optics/PsfKernel.h"
 #include "tofsim/sensors/SensorOutput.h"
 #include "tofsim/volume/TransientVolume.h"
 
@@ -80,6 +81,17 @@ struct StreamOptions {
   /// Threads a span's pixels are spread over; 0: every core. The bytes do
   /// not depend on it.
   int threads = 0;
+  /// The lens's PSF (camera.psf) for the sensor to apply itself: the spans
+  /// carry the light before it, and a CW-ToF sensor convolves its
+  /// noise-free signal charges (optics::applyPsf on its F N raw planes,
+  /// ambient excluded), the same by linearity as the PSF on every bin.
+  /// CW-ToF only, and exact only without a fixed-pattern delay (an
+  /// InputError else). Not owned; nullptr: the spans carry the light as
+  /// the sensor sees it.
+  const optics::PsfKernel* psfOnRaws = nullptr;
+  /// consumeBeforePsf() is given the light before the lens's PSF, the
+  /// spans of consume() carrying it after (CW-ToF's cwtof_psf_error).
+  bool beforePsf = false;
 };
 
 class SensorStream {
@@ -87,6 +99,11 @@ class SensorStream {
   virtual ~SensorStream() = default;
   /// Spans come in order and cover the image exactly once.
   virtual void consume(const PixelSpan& span) = 0;
+  /// With StreamOptions::beforePsf: the same pixels' light before the
+  /// lens's PSF (its volume; directOnly and bounces unset), in order and
+  /// covering the image once, before, after or between the spans of
+  /// consume(). Sensors that did not ask ignore it.
+  virtual void consumeBeforePsf(const PixelSpan& /*span*/) {}
   /// After the last span: the outputs (sensors/README.md, "Outputs"). The
   /// ground-truth depth (H, W, 1) in metres, known only once the render is
   /// done, feeds the CW-ToF multipath errors; nullptr when there is none.

@@ -44,10 +44,11 @@ concept SensorModel = requires(const P& p, const VolumeShape& shape, const Strea
   /// The model, to be fed the volume as it streams (SensorStream.h); throws
   /// InputError when the spec does not fit the volume's shape.
   { SensorType<P>::open(p, shape, options) } -> std::same_as<std::unique_ptr<SensorStream>>;
-  /// What the person running it should know about a render with this time
-  /// axis and ground-truth depth (nullptr when none; e.g. a scene deeper than
-  /// a CW-ToF's unambiguous range); empty when all is well.
-  { SensorType<P>::warnings(p, axis, depth) } -> std::same_as<std::vector<std::string>>;
+  /// What the person running it should know about a render of this shape
+  /// (image and time axis) and ground-truth depth (nullptr when none; e.g. a
+  /// scene deeper than a CW-ToF's unambiguous range, an image that is not its
+  /// device preset's); empty when all is well.
+  { SensorType<P>::warnings(p, shape, depth) } -> std::same_as<std::vector<std::string>>;
   /// Upper estimate of the bytes its files take for an image and render axis.
   { SensorType<P>::outputBytes(p, width, height, axis) } -> std::same_as<std::uintmax_t>;
   /// The instrument window light can fall outside of (WindowLoss.h), or
@@ -60,7 +61,7 @@ struct SensorType<StreakParams> {
   static constexpr const char* name = "streak";
   static std::unique_ptr<SensorStream> open(const StreakParams& p, const VolumeShape& shape,
                                             const StreamOptions& options);
-  static std::vector<std::string> warnings(const StreakParams& p, const TimeAxis& axis,
+  static std::vector<std::string> warnings(const StreakParams& p, const VolumeShape& shape,
                                            const Image* groundTruthDepth_m);
   static std::uintmax_t outputBytes(const StreakParams& p, int32_t width, int32_t height,
                                     const TimeAxis& render);
@@ -72,7 +73,7 @@ struct SensorType<SpadParams> {
   static constexpr const char* name = "spad";
   static std::unique_ptr<SensorStream> open(const SpadParams& p, const VolumeShape& shape,
                                             const StreamOptions& options);
-  static std::vector<std::string> warnings(const SpadParams& p, const TimeAxis& axis,
+  static std::vector<std::string> warnings(const SpadParams& p, const VolumeShape& shape,
                                            const Image* groundTruthDepth_m);
   static std::uintmax_t outputBytes(const SpadParams& p, int32_t width, int32_t height,
                                     const TimeAxis& render);
@@ -84,7 +85,7 @@ struct SensorType<CwTofParams> {
   static constexpr const char* name = "cwtof";
   static std::unique_ptr<SensorStream> open(const CwTofParams& p, const VolumeShape& shape,
                                             const StreamOptions& options);
-  static std::vector<std::string> warnings(const CwTofParams& p, const TimeAxis& axis,
+  static std::vector<std::string> warnings(const CwTofParams& p, const VolumeShape& shape,
                                            const Image* groundTruthDepth_m);
   static std::uintmax_t outputBytes(const CwTofParams& p, int32_t width, int32_t height,
                                     const TimeAxis& render);

@@ -24,7 +24,9 @@
 namespace tofsim::config {
 
 /// camera.psf: the lens's point spread function, applied to every time bin
-/// of the transient before any output or sensor (pipeline::PsfSegments).
+/// of the transient before any output or sensor (pipeline::PsfSegments), or
+/// equivalently on the CW-ToF raws and the steady image when nothing else
+/// written needs the blurred transient (pipeline/PsfPath.h).
 struct PsfConfig {
   /// The parametric form (1 - s) core + s halo; unused with a kernel file.
   optics::PsfParams params;

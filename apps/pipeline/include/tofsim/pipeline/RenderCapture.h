@@ -2,8 +2,9 @@
 // One way through a render, for the CLI's run (RenderRun.h) and the Python
 // module's in-memory render alike: the job from the config with the time
 // axis checked before rendering, then the configured renderer's segments
-// made finite (FiniteSegments.h), through the lens's PSF (PsfSegments.h)
-// and fed to the caller's consumers, the
+// made finite (FiniteSegments.h), through the lens's PSF (PsfSegments.h,
+// unless the consumers apply it: CaptureConsumers::psfOnRaws) and fed to
+// the caller's consumers, the
 // steady image summed, and the light off the time axis measured and checked
 // (AxisReport.h: a warning, or under render.strict an error).
 
@@ -36,6 +37,10 @@ struct CaptureConsumers {
   /// (optics::applyPsf on CW-ToF's raws, far cheaper than on every bin).
   /// Without a PSF they see what `sinks` see.
   std::vector<capture::SegmentSink*> beforePsf;
+  /// The PSF is left to the consumers (PsfPath::Raws: the CW-ToF sensors
+  /// apply it on their raws, StreamOptions::psfOnRaws): every consumer gets
+  /// the light before it, and renderCapture convolves only the steady image.
+  bool psfOnRaws = false;
 };
 
 struct RenderedCapture {
@@ -43,7 +48,7 @@ struct RenderedCapture {
   capture::RenderResult result;
   std::string backend;  ///< RendererChoice::backend
   std::string device;   ///< the renderer's description
-  Image steady;         ///< the total summed over time
+  Image steady;         ///< the total summed over time (through the lens's PSF)
 };
 
 /// Renders `job` with the configured renderer into `consumers` (progress on

@@ -11,6 +11,7 @@
 #include "tofsim/config/RunConfig.h"
 #include "tofsim/gl/Context.h"
 #include "tofsim/pipeline/RunContentKey.h"
+#include "tofsim/scene/Scene.h"
 
 namespace tofsim::pipeline {
 
@@ -26,6 +27,9 @@ struct RunOptions {
   bool quiet = false;
   gl::EglPlatform eglPlatform = gl::EglPlatform::Auto;
   std::optional<BatchManifestInfo> batchManifest;  ///< set by `tofsim render --batch-run`
+  /// Internal: camera.psf on the transient even where the CW-ToF raws would
+  /// do (PsfPath.h), so that the tests can compare the two paths.
+  bool psfOnTransient = false;
 };
 
 struct RunSummary {
@@ -38,5 +42,9 @@ struct RunSummary {
 };
 
 RunSummary runRender(const config::RunConfig& config, const RunOptions& options);
+/// The same over a scene already loaded (or built in code by a test) in
+/// place of config.scene_file's; not for NLOS configs.
+RunSummary runRender(const config::RunConfig& config, const scene::Scene& scene,
+                     const RunOptions& options);
 
 }  // namespace tofsim::pipeline

@@ -20,6 +20,7 @@
 
 #include "tofsim/config/RunConfig.h"
 #include "tofsim/pipeline/Progress.h"
+#include "tofsim/pipeline/PsfPath.h"
 #include "tofsim/sensors/SensorStream.h"
 #include "tofsim/sensors/WindowLoss.h"
 
@@ -41,15 +42,22 @@ class SensorStreams {
   /// file and the sensor, before any value arrives.
   /// With `camera` (the pinhole the pixels looked through), depth images
   /// are also written as point clouds (PointCloudPly.h).
+  /// `psf`: where the render applies camera.psf. Transient: the CW-ToF
+  /// sensors also take the light before it (consumeBeforePsf) for their
+  /// cwtof_psf_error; Raws: they apply it themselves on their raws
+  /// (StreamOptions::psfOnRaws) and the spans carry the light before it.
   SensorStreams(const config::RunConfig& config, const sensors::VolumeShape& shape, bool withDirect,
                 std::optional<int32_t> bounces, const std::filesystem::path& outputDirectory,
-                const capture::Camera* camera = nullptr);
+                const capture::Camera* camera = nullptr, PsfPath psf = PsfPath::None);
   ~SensorStreams();
   SensorStreams(const SensorStreams&) = delete;
   SensorStreams& operator=(const SensorStreams&) = delete;
 
   /// Spans in order, covering the image once.
   void consume(const sensors::PixelSpan& span);
+  /// With PsfPath::Transient: the light before the lens's PSF, in order,
+  /// covering the image once (SensorStream::consumeBeforePsf).
+  void consumeBeforePsf(const sensors::PixelSpan& span);
   /// Warns (throws under --strict) for each sensor whose instrument window
   /// drops a noticeable part of the light it was given. After the last span.
   void checkWindows() const;
