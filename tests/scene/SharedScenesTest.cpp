@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <string>
 
+#include "tofsim/scene/AnimatedScene.h"
 #include "tofsim/scene/GltfLoader.h"
 #include "tofsim/util/Error.h"
 
@@ -98,6 +99,46 @@ TEST_F(SharedScenesTest, MaterialsCarryMetallicAndRoughness) {
 TEST_F(SharedScenesTest, SparseAccessorFileLoads) {
   for (const char* name : {"loader/box_sparse.gltf", "loader/box_sparse.glb"}) {
     EXPECT_EQ(loadGltf(kShared / name).triangleCount(), 12u) << name;
+  }
+}
+
+TEST_F(SharedScenesTest, MorphWeightAnimationIsCountedNotPlayed) {
+  // box_sparse animates its morph-target weights only: nothing moves, the
+  // rest scene is loadGltf's and the weights channel and morph mesh are counted.
+  for (const char* name : {"loader/box_sparse.gltf", "loader/box_sparse.glb"}) {
+    LoadReport report;
+    const AnimatedScene animated = AnimatedScene::load(kShared / name, &report);
+    EXPECT_FALSE(animated.animated()) << name;
+    ASSERT_EQ(animated.animations().size(), 1u) << name;
+    EXPECT_EQ(animated.animations()[0].ignoredWeightChannels, 1u) << name;
+    EXPECT_EQ(report.morphTargetMeshes, 1u) << name;
+    const Scene rest = loadGltf(kShared / name);
+    ASSERT_EQ(animated.sceneAt(0.5).meshes.size(), rest.meshes.size()) << name;
+    for (std::size_t m = 0; m < rest.meshes.size(); ++m) {
+      EXPECT_EQ(animated.sceneAt(0.5).meshes[m].positions_world, rest.meshes[m].positions_world);
+    }
+  }
+}
+
+TEST_F(SharedScenesTest, AnimatedLoaderGivesLoadGltfsBytesOnStaticFiles) {
+  // Node rotations (the Z-up Cornell box), cameras, textures, a glb.
+  for (const char* name : {"cornell-box/cornell_box.glb", "loader/cameras/Cameras.gltf",
+                           "loader/BoxTextured.glb", "loader/Box.gltf"}) {
+    const Scene reference = loadGltf(kShared / name);
+    const AnimatedScene animated = AnimatedScene::load(kShared / name);
+    EXPECT_FALSE(animated.animated()) << name;
+    const Scene at = animated.sceneAt(1.0);
+    ASSERT_EQ(at.meshes.size(), reference.meshes.size()) << name;
+    for (std::size_t m = 0; m < at.meshes.size(); ++m) {
+      EXPECT_EQ(at.meshes[m].positions_world, reference.meshes[m].positions_world) << name;
+      EXPECT_EQ(at.meshes[m].normals_world, reference.meshes[m].normals_world) << name;
+      EXPECT_EQ(at.meshes[m].indices, reference.meshes[m].indices) << name;
+    }
+    ASSERT_EQ(at.cameras.size(), reference.cameras.size()) << name;
+    for (std::size_t c = 0; c < at.cameras.size(); ++c) {
+      EXPECT_EQ(at.cameras[c].position_world, reference.cameras[c].position_world) << name;
+      EXPECT_EQ(at.cameras[c].forward_world, reference.cameras[c].forward_world) << name;
+    }
   }
 }
 

@@ -44,6 +44,11 @@ void reportLoad(const scene::LoadReport& report, const Progress& progress) {
   if (report.emissiveMaterials + report.transmissiveMaterials > 0) {
     progress.message("scene: emissive/transmissive materials render as diffuse base colour");
   }
+  if (report.animations > 0) {
+    progress.message("scene: " + std::to_string(report.animations) +
+                     " animation(s) not played: rendered at the rest pose (the nodes' own "
+                     "transforms; tofsim info lists them)");
+  }
 }
 
 void writeFrames(const std::filesystem::path& directory, const imaging::BinFrames& frames) {

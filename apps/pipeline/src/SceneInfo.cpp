@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "tofsim/physics/GltfBrdf.h"
+#include "tofsim/scene/AnimatedScene.h"
 #include "tofsim/scene/GltfLoader.h"
 
 namespace tofsim::pipeline {
@@ -56,8 +57,46 @@ std::string reportText(const scene::LoadReport& r) {
   count("emissive material(s) (emission ignored)", r.emissiveMaterials);
   count("transmissive material(s) (rendered as diffuse base colour)", r.transmissiveMaterials);
   count("orthographic camera(s) skipped", r.orthographicCameras);
+  count("skin(s) ignored (skinned meshes placed rigidly by their nodes)", r.skins);
+  count("mesh(es) with morph targets (targets and weights ignored)", r.morphTargetMeshes);
   for (const std::string& w : r.warnings) out += "  warning: " + w + "\n";
   if (out == "loader:\n") out += "  nothing skipped or changed\n";
+  return out;
+}
+
+std::string nodeLabel(const scene::AnimationChannel& c) {
+  return format("node[%d]", c.node) + (c.nodeName.empty() ? "" : " '" + c.nodeName + "'");
+}
+
+// What the animations play (every one at once, on one clock) and ignore.
+std::string animationText(const scene::AnimatedScene& animated) {
+  const std::vector<scene::Animation>& animations = animated.animations();
+  std::string out = format("animations: %zu", animations.size());
+  if (animations.empty()) return out + "\n";
+  out += format(" (played together, %.4g .. %.4g s; moving: %zu mesh(es), %zu camera(s))\n",
+                animated.start_s(), animated.end_s(), animated.movingMeshes().size(),
+                animated.movingCameras().size());
+  for (std::size_t i = 0; i < animations.size(); ++i) {
+    const scene::Animation& a = animations[i];
+    const char* name = a.name.empty() ? "(unnamed)" : a.name.c_str();
+    out += a.channels.empty()
+               ? format("  [%zu] %-24s no channel played\n", i, name)
+               : format("  [%zu] %-24s %.4g .. %.4g s (duration %.4g s), %zu channel(s)\n", i, name,
+                        a.start_s(), a.end_s(), a.duration_s(), a.channels.size());
+    for (const scene::AnimationChannel& c : a.channels) {
+      out +=
+          format("        %-20s %-11s %-11s %zu keyframes\n", nodeLabel(c).c_str(),
+                 scene::toString(c.property), scene::toString(c.interpolation), c.keyframeCount());
+    }
+    if (a.ignoredWeightChannels > 0) {
+      out +=
+          format("        ignored: %zu morph-target weights channel(s)\n", a.ignoredWeightChannels);
+    }
+    if (a.ignoredOtherChannels > 0) {
+      out += format("        ignored: %zu channel(s) without a node or of another path\n",
+                    a.ignoredOtherChannels);
+    }
+  }
   return out;
 }
 
@@ -65,7 +104,8 @@ std::string reportText(const scene::LoadReport& r) {
 
 std::string describeScene(const std::filesystem::path& sceneFile) {
   scene::LoadReport report;
-  const scene::Scene s = scene::loadGltf(sceneFile, &report);
+  const scene::AnimatedScene animated = scene::AnimatedScene::load(sceneFile, &report);
+  const scene::Scene& s = animated.restScene();
   std::string out = sceneFile.string() + "\n";
   out += format("meshes: %zu, triangles: %zu\n", s.meshes.size(), s.triangleCount());
   for (std::size_t i = 0; i < s.meshes.size(); ++i) {
@@ -102,6 +142,7 @@ std::string describeScene(const std::filesystem::path& sceneFile) {
         i, c.name.c_str(), c.position_world.x, c.position_world.y, c.position_world.z,
         c.forward_world.x, c.forward_world.y, c.forward_world.z, c.fov_y_deg);
   }
+  out += animationText(animated);
   return out + reportText(report);
 }
 

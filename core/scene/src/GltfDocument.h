@@ -6,6 +6,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <glm/glm.hpp>
+#include <glm/gtc/quaternion.hpp>
 #include <optional>
 #include <string>
 #include <vector>
@@ -66,12 +67,40 @@ struct MeshDesc {
   std::vector<Primitive> primitives;
 };
 
+/// A node's local transform as the file gives it: a matrix, or the TRS
+/// properties present (absent ones are identity). Animations replace T, R, S.
+struct NodeTrs {
+  std::optional<glm::dmat4> matrix;
+  std::optional<glm::dvec3> translation;
+  std::optional<glm::dquat> rotation;
+  std::optional<glm::dvec3> scale;
+};
+
 struct Node {
   std::string name;
   int mesh = -1;
   int camera = -1;
   std::vector<int> children;
-  glm::dmat4 local{1.0};
+  NodeTrs trs;
+  glm::dmat4 local{1.0};  ///< localMatrix(trs)
+};
+
+struct AnimationChannelDesc {
+  int sampler = -1;
+  int node = -1;     ///< -1: no target node (the channel is ignored)
+  std::string path;  ///< "translation", "rotation", "scale", "weights" (or other)
+};
+
+struct AnimationSamplerDesc {
+  int input = -1;
+  int output = -1;
+  std::string interpolation;  ///< "LINEAR" when the file leaves it out
+};
+
+struct AnimationDesc {
+  std::string name;
+  std::vector<AnimationChannelDesc> channels;
+  std::vector<AnimationSamplerDesc> samplers;
 };
 
 struct MaterialDesc {
@@ -119,7 +148,10 @@ struct GltfDocument {
   std::vector<MaterialDesc> materials;
   std::vector<ImageDesc> images;
   std::vector<CameraDesc> cameras;
-  std::vector<int> rootNodes;  ///< of the default scene
+  std::vector<AnimationDesc> animations;
+  std::size_t skins = 0;              ///< glTF skins (ignored)
+  std::size_t morphTargetMeshes = 0;  ///< meshes with morph targets (ignored)
+  std::vector<int> rootNodes;         ///< of the default scene
   std::vector<std::string> warnings;
 };
 

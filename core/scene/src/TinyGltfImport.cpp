@@ -4,11 +4,11 @@
 
 #include <algorithm>
 #include <cctype>
-#include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/quaternion.hpp>
 #include <glm/gtc/type_ptr.hpp>
 #include <utility>
 
+#include "NodeTransforms.h"
 #include "tofsim/util/Error.h"
 
 namespace tofsim::scene::detail {
@@ -20,18 +20,33 @@ std::string trimmed(std::string s) {
   return s;
 }
 
-glm::dmat4 localMatrix(const tinygltf::Node& n) {
-  if (n.matrix.size() == 16) return glm::make_mat4(n.matrix.data());
-  glm::dmat4 m(1.0);
+NodeTrs trsOf(const tinygltf::Node& n) {
+  NodeTrs trs;
+  if (n.matrix.size() == 16) {
+    trs.matrix = glm::make_mat4(n.matrix.data());
+    return trs;
+  }
   if (n.translation.size() == 3) {
-    m = glm::translate(m, glm::dvec3(n.translation[0], n.translation[1], n.translation[2]));
+    trs.translation = glm::dvec3(n.translation[0], n.translation[1], n.translation[2]);
   }
   if (n.rotation.size() == 4) {
     // glTF stores (x, y, z, w); glm's constructor takes (w, x, y, z).
-    m *= glm::mat4_cast(glm::dquat(n.rotation[3], n.rotation[0], n.rotation[1], n.rotation[2]));
+    trs.rotation = glm::dquat(n.rotation[3], n.rotation[0], n.rotation[1], n.rotation[2]);
   }
-  if (n.scale.size() == 3) m = glm::scale(m, glm::dvec3(n.scale[0], n.scale[1], n.scale[2]));
-  return m;
+  if (n.scale.size() == 3) trs.scale = glm::dvec3(n.scale[0], n.scale[1], n.scale[2]);
+  return trs;
+}
+
+AnimationDesc convert(const tinygltf::Animation& a) {
+  AnimationDesc out;
+  out.name = a.name;
+  for (const tinygltf::AnimationChannel& c : a.channels) {
+    out.channels.push_back({c.sampler, c.target_node, c.target_path});
+  }
+  for (const tinygltf::AnimationSampler& s : a.samplers) {
+    out.samplers.push_back({s.input, s.output, s.interpolation});
+  }
+  return out;
 }
 
 Accessor convert(const tinygltf::Accessor& a) {
@@ -163,12 +178,20 @@ GltfDocument importGltf(const std::filesystem::path& path) {
   for (const tinygltf::Accessor& a : model.accessors) doc.accessors.push_back(convert(a));
   for (const tinygltf::Mesh& m : model.meshes) {
     MeshDesc mesh{m.name, {}};
-    for (const tinygltf::Primitive& p : m.primitives) mesh.primitives.push_back(convert(p));
+    bool morphed = false;
+    for (const tinygltf::Primitive& p : m.primitives) {
+      mesh.primitives.push_back(convert(p));
+      morphed = morphed || !p.targets.empty();
+    }
+    doc.morphTargetMeshes += morphed ? 1 : 0;
     doc.meshes.push_back(std::move(mesh));
   }
   for (const tinygltf::Node& n : model.nodes) {
-    doc.nodes.push_back({n.name, n.mesh, n.camera, n.children, localMatrix(n)});
+    const NodeTrs trs = trsOf(n);
+    doc.nodes.push_back({n.name, n.mesh, n.camera, n.children, trs, localMatrix(trs)});
   }
+  for (const tinygltf::Animation& a : model.animations) doc.animations.push_back(convert(a));
+  doc.skins = model.skins.size();
   for (const tinygltf::Material& m : model.materials) doc.materials.push_back(convert(model, m));
   for (tinygltf::Image& im : model.images) {
     doc.images.push_back({im.name.empty() ? im.uri : im.name, im.width, im.height, im.component,

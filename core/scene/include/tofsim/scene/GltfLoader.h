@@ -19,8 +19,11 @@
 // (KHR_materials_ior and KHR_materials_specular included: the dielectric F0
 // stays the pinned 0.04). Metallic
 // materials are counted too: they render as diffuse base colour under the
-// default render.materials: lambertian. Morph targets, skins and animations
-// are ignored.
+// default render.materials: lambertian. Morph targets and skins are ignored
+// (counted in LoadReport; a skinned mesh is placed rigidly by its node).
+// Animations: loadGltf gives the nodes' own transforms (the file's rest
+// pose) and only counts them; AnimatedScene (AnimatedScene.h) reads, checks
+// and plays their translation, rotation and scale channels.
 //
 // Units: glTF metres; frame: glTF's right-handed, +Y up.
 
@@ -42,6 +45,9 @@ struct LoadReport {
   std::size_t emissiveMaterials = 0;      ///< emissiveFactor != 0 or an emissive texture
   std::size_t transmissiveMaterials = 0;  ///< KHR_materials_transmission
   std::size_t orthographicCameras = 0;    ///< skipped
+  std::size_t animations = 0;             ///< glTF animations (played by AnimatedScene only)
+  std::size_t skins = 0;                  ///< glTF skins (ignored: meshes placed rigidly)
+  std::size_t morphTargetMeshes = 0;      ///< meshes with morph targets (ignored)
   /// Per material of the file (Scene::materials order; the loader's default
   /// material, added after them, has none): the parts no renderer reads, e.g.
   /// "emission", "normalTexture", "KHR_materials_ior (dielectric F0 stays 0.04)".
