@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "ConfigNode.h"
+#include "SensorKeysTest.h"
 #include "support/TempDir.h"
 #include "tofsim/config/ConfigKeys.h"
 #include "tofsim/config/SensorConfig.h"
@@ -23,24 +24,9 @@ namespace {
 
 using namespace tofsim::sensors;
 
-class CwTofPresetConfigTest : public test::TempDirTest {
+class CwTofPresetConfigTest : public test::SensorKeysTest<CwTofParams> {
  protected:
-  CwTofParams parse(const std::string& keys) {
-    const std::filesystem::path file = dir_ / "sensor.yaml";
-    std::ofstream(file) << "sensors:\n  - type: cwtof\n" << keys;
-    const ConfigNode root(YAML::LoadFile(file.string()), file.string());
-    const std::vector<SensorSpec> specs = parseSensors(root.child("sensors"));
-    root.reportUnusedKeys();
-    return std::get<CwTofParams>(specs.front().params);
-  }
-  std::string errorOf(const std::string& keys) {
-    try {
-      parse(keys);
-    } catch (const InputError& e) {
-      return e.what();
-    }
-    return "";
-  }
+  CwTofPresetConfigTest() : SensorKeysTest("cwtof") {}
 };
 
 TEST_F(CwTofPresetConfigTest, PresetsGiveTheirCitedNumbers) {

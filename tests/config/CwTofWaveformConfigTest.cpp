@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "ConfigNode.h"
+#include "SensorKeysTest.h"
 #include "support/TempDir.h"
 #include "tofsim/config/SensorConfig.h"
 #include "tofsim/io/Npy.h"
@@ -22,25 +23,9 @@ namespace {
 
 using namespace tofsim::sensors;
 
-class CwTofWaveformConfigTest : public test::TempDirTest {
+class CwTofWaveformConfigTest : public test::SensorKeysTest<CwTofParams> {
  protected:
-  /// The cwtof sensor of `keys` (indented YAML lines) in sensor.yaml.
-  CwTofParams parse(const std::string& keys) {
-    const std::filesystem::path file = dir_ / "sensor.yaml";
-    std::ofstream(file) << "sensors:\n  - type: cwtof\n" + keys;
-    const ConfigNode root(YAML::LoadFile(file.string()), file.string());
-    const std::vector<SensorSpec> specs = parseSensors(root.child("sensors"));
-    root.reportUnusedKeys();
-    return std::get<CwTofParams>(specs.front().params);
-  }
-  std::string errorOf(const std::string& keys) {
-    try {
-      parse(keys);
-    } catch (const InputError& e) {
-      return e.what();
-    }
-    return "";
-  }
+  CwTofWaveformConfigTest() : SensorKeysTest("cwtof") {}
   void write(const std::string& name, const std::string& text) {
     std::ofstream(dir_ / name) << text;
   }

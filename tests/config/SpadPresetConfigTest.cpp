@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "ConfigNode.h"
+#include "SensorKeysTest.h"
 #include "support/TempDir.h"
 #include "tofsim/config/ConfigKeys.h"
 #include "tofsim/config/SensorConfig.h"
@@ -22,24 +23,9 @@ namespace {
 
 using namespace tofsim::sensors;
 
-class SpadPresetConfigTest : public test::TempDirTest {
+class SpadPresetConfigTest : public test::SensorKeysTest<SpadParams> {
  protected:
-  SpadParams parse(const std::string& keys) {
-    const std::filesystem::path file = dir_ / "sensor.yaml";
-    std::ofstream(file) << "sensors:\n  - type: spad\n" << keys;
-    const ConfigNode root(YAML::LoadFile(file.string()), file.string());
-    const std::vector<SensorSpec> specs = parseSensors(root.child("sensors"));
-    root.reportUnusedKeys();
-    return std::get<SpadParams>(specs.front().params);
-  }
-  std::string errorOf(const std::string& keys) {
-    try {
-      parse(keys);
-    } catch (const InputError& e) {
-      return e.what();
-    }
-    return "";
-  }
+  SpadPresetConfigTest() : SensorKeysTest("spad") {}
 };
 
 TEST_F(SpadPresetConfigTest, PresetsGiveTheirCitedNumbers) {

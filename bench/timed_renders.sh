@@ -1,0 +1,35 @@
+# Sourced by the benches that time whole `tofsim render` processes
+# (footprint_cost, camera_optics): one timed run recorded as a table row and
+# a sample, and the samples' medians. The caller sets `out` (its folder).
+#
+# timed_render RUN NAME DIR ARGS...: runs `tofsim render ARGS... -q -o DIR`
+# under /usr/bin/time, prints "| RUN | NAME | render s | wall s | CPU s | max
+# RSS MB |" (render s: transient.json's stats.seconds, nan without it),
+# appends "NAME render wall cpu" to $out/samples.txt and removes DIR.
+timed_render() {
+  local run=$1 name=$2 dir=$3
+  shift 3
+  /usr/bin/time -f "%e %U %S %M" -o "$dir.time" ./build/apps/cli/tofsim render "$@" -q -o "$dir"
+  local seconds=nan wall user sys rss cpu
+  if [ -f "$dir/transient.json" ]; then
+    seconds=$(sed -n 's/.*"seconds": *\([0-9.eE+-]*\).*/\1/p' "$dir/transient.json" | head -1)
+  fi
+  read -r wall user sys rss <"$dir.time"
+  cpu=$(awk -v u="$user" -v s="$sys" 'BEGIN { printf "%.2f", u + s }')
+  printf "| %d | %s | %s | %.2f | %s | %.0f |\n" "$run" "$name" "$seconds" "$wall" "$cpu" "$((rss / 1024))"
+  echo "$name $seconds $wall $cpu" >>"$out/samples.txt"
+  rm -rf "$dir" "$dir.time"
+}
+
+# median_of NAME COLUMN: the median of a sample column (2 render, 3 wall, 4 CPU).
+median_of() {
+  awk -v n="$1" -v c="$2" '$1 == n { print $c }' "$out/samples.txt" | sort -g |
+    awk '{ a[NR] = $1 } END { print (NR % 2) ? a[(NR + 1) / 2] : (a[NR / 2] + a[NR / 2 + 1]) / 2 }'
+}
+
+# ratio_row NAME BASE: "| NAME | render | ratio | wall | ratio | CPU | ratio |" against BASE's medians.
+ratio_row() {
+  awk -v n="$1" -v r="$(median_of "$1" 2)" -v w="$(median_of "$1" 3)" -v c="$(median_of "$1" 4)" \
+    -v br="$(median_of "$2" 2)" -v bw="$(median_of "$2" 3)" -v bc="$(median_of "$2" 4)" \
+    'BEGIN { printf "| %s | %.3f | %.2fx | %.2f | %.2fx | %.2f | %.2fx |\n", n, r, r / br, w, w / bw, c, c / bc }'
+}
