@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "ConfigNode.h"
+#include "SensorKeysTest.h"
 #include "support/TempDir.h"
 #include "tofsim/config/RunConfig.h"
 #include "tofsim/config/SensorConfig.h"
@@ -46,27 +47,9 @@ sensors:
     phase_steps: 3
 )";
 
-class CwTofDeviceConfigTest : public test::TempDirTest {
+class CwTofDeviceConfigTest : public test::RunSensorKeysTest<sensors::CwTofParams> {
  protected:
-  std::filesystem::path write(const std::string& keys) {
-    std::ofstream(dir_ / "scene.gltf") << "{}";
-    const auto path = dir_ / "test.yaml";
-    std::ofstream(path) << kRun << keys;
-    return path;
-  }
-  sensors::CwTofParams load(const std::string& keys) {
-    const RunConfig c = loadRunConfig(write(keys));
-    return std::get<sensors::CwTofParams>(c.sensors.front().params);
-  }
-  std::string errorOf(const std::string& keys) {
-    try {
-      loadRunConfig(write(keys));
-    } catch (const InputError& e) {
-      return e.what();
-    }
-    ADD_FAILURE() << "no error for:\n" << keys;
-    return "";
-  }
+  CwTofDeviceConfigTest() : RunSensorKeysTest(kRun) {}
   /// An error at test.yaml:<line>: naming the key and the words.
   void expectError(const std::string& keys, int line, const std::string& key,
                    const std::string& words) {

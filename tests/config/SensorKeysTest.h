@@ -1,9 +1,12 @@
 #pragma once
-// A sensor's keys parsed alone, as the config layer parses a `sensors:`
-// entry (parseSensors, then the unused-key report), in the test's temporary
-// folder: `keys` are the entry's indented YAML lines under `- type: <type>`
-// in sensor.yaml, so files the keys name are relative to that folder and
-// errors are located in sensor.yaml.
+// A sensor's keys through the config layer, in the test's temporary folder:
+// SensorKeysTest parses them alone, as a `sensors:` entry is parsed
+// (parseSensors, then the unused-key report; `keys` are the entry's indented
+// YAML lines under `- type: <type>` in sensor.yaml); RunSensorKeysTest loads
+// them as the last sensor of a whole run config (loadRunConfig of test.yaml:
+// the given run text, ending in the sensor's `- type:` line, then `keys`),
+// for the checks that need the camera or the time axis. Files the keys name
+// are relative to that folder; errors are located in its YAML file.
 
 #include <gtest/gtest.h>
 #include <yaml-cpp/yaml.h>
@@ -16,6 +19,7 @@
 
 #include "ConfigNode.h"
 #include "support/TempDir.h"
+#include "tofsim/config/RunConfig.h"
 #include "tofsim/config/SensorConfig.h"
 #include "tofsim/util/Error.h"
 
@@ -46,6 +50,36 @@ class SensorKeysTest : public TempDirTest {
 
  private:
   std::string type_;
+};
+
+template <class Params>
+class RunSensorKeysTest : public TempDirTest {
+ protected:
+  explicit RunSensorKeysTest(const char* run) : run_(run) {}
+
+  std::filesystem::path write(const std::string& keys) {
+    std::ofstream(dir_ / "scene.gltf") << "{}";
+    const std::filesystem::path path = dir_ / "test.yaml";
+    std::ofstream(path) << run_ << keys;
+    return path;
+  }
+  Params load(const std::string& keys) {
+    const config::RunConfig c = config::loadRunConfig(write(keys));
+    return std::get<Params>(c.sensors.back().params);
+  }
+  /// The InputError's text; a test failure when the keys load.
+  std::string errorOf(const std::string& keys) {
+    try {
+      config::loadRunConfig(write(keys));
+    } catch (const InputError& e) {
+      return e.what();
+    }
+    ADD_FAILURE() << "no error for:\n" << keys;
+    return "";
+  }
+
+ private:
+  const char* run_;
 };
 
 }  // namespace tofsim::test

@@ -11,6 +11,7 @@
 #include <variant>
 #include <vector>
 
+#include "SensorKeysTest.h"
 #include "support/TempDir.h"
 #include "tofsim/config/RunConfig.h"
 #include "tofsim/io/Npy.h"
@@ -41,27 +42,9 @@ sensors:
   - type: spad
 )";
 
-class SpadGatingConfigTest : public test::TempDirTest {
+class SpadGatingConfigTest : public test::RunSensorKeysTest<sensors::SpadParams> {
  protected:
-  std::filesystem::path write(const std::string& spadKeys) {
-    std::ofstream(dir_ / "scene.gltf") << "{}";
-    const auto path = dir_ / "test.yaml";
-    std::ofstream(path) << kRun << spadKeys;
-    return path;
-  }
-  sensors::SpadParams load(const std::string& spadKeys) {
-    const RunConfig c = loadRunConfig(write(spadKeys));
-    return std::get<sensors::SpadParams>(c.sensors.front().params);
-  }
-  std::string errorOf(const std::string& spadKeys) {
-    try {
-      loadRunConfig(write(spadKeys));
-    } catch (const InputError& e) {
-      return e.what();
-    }
-    ADD_FAILURE() << "no error for:\n" << spadKeys;
-    return "";
-  }
+  SpadGatingConfigTest() : RunSensorKeysTest(kRun) {}
   void expectError(const std::string& spadKeys, const std::string& key, const std::string& words) {
     const std::string message = errorOf(spadKeys);
     EXPECT_NE(message.find("test.yaml:"), std::string::npos) << message;
