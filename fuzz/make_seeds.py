@@ -77,7 +77,8 @@ out("fuzz_spad_tables", "afterpulse_csv", b"\3" + ("delay_s,density\n" + "".join
 out("fuzz_spad_tables", "afterpulse_npy", b"\4" + npy((6, 2), [v for r in ap for v in r]))
 
 # camera files (fuzz/CameraFilesInput.h: first byte 0 OpenCV calibration YAML,
-# 1 correlation waveform .csv, 2 the same as .npy, 3 vignetting map .npy)
+# 1 correlation waveform .csv, 2 the same as .npy, 3 vignetting map .npy,
+# 4 PSF kernel .npy, 5 delay map .npy, 6 companding .csv, 7 noise table .csv)
 out("fuzz_camera_files", "calibration_yaml", b"\0" + (
     "%YAML:1.0\n---\nimage_width: 8\nimage_height: 6\n"
     "camera_matrix: !!opencv-matrix\n   rows: 3\n   cols: 3\n   dt: d\n"
@@ -89,3 +90,7 @@ out("fuzz_camera_files", "waveform_csv", b"\1" + ("phase_rad,value\n" + "".join(
     "%.6f,%g\n" % (2 * 3.141592653589793 * j / len(wave), v) for j, v in enumerate(wave))).encode())
 out("fuzz_camera_files", "waveform_npy", b"\2" + npy((len(wave),), wave))
 out("fuzz_camera_files", "vignetting_npy", b"\3" + npy((4, 4), [1.0 - 0.03 * i for i in range(16)]))
+out("fuzz_camera_files", "psf_npy", b"\4" + npy((3, 3), [0, 1, 0, 1, 4, 1, 0, 1, 0]))
+out("fuzz_camera_files", "delay_npy", b"\5" + npy((4, 4), [1e-11 * i for i in range(16)]))
+out("fuzz_camera_files", "companding_csv", b"\6" + b"in_dn,out_dn\n0,0\n1000,1000\n4095,2000\n")
+out("fuzz_camera_files", "noise_csv", b"\7" + b"mean_e,raw_e\n10,9\n10,12\n12,11\n")
