@@ -65,21 +65,11 @@ void applyAzureFrequencies(CwTofParams& p) {
   p.frequencies_Hz = {320e6, 180e6, 100e6};
   p.phase_steps = 3;
 }
-void applyAkNfovUnbinned(CwTofParams& p) {
+// A mode differs from the others only by its range.
+template <double MaxDepth_m>
+void applyAzureMode(CwTofParams& p) {
   applyAzureFrequencies(p);
-  p.max_depth_m = 4.0;
-}
-void applyAkNfov2x2(CwTofParams& p) {
-  applyAzureFrequencies(p);
-  p.max_depth_m = 5.8;
-}
-void applyAkWfov2x2(CwTofParams& p) {
-  applyAzureFrequencies(p);
-  p.max_depth_m = 3.0;
-}
-void applyAkWfovUnbinned(CwTofParams& p) {
-  applyAzureFrequencies(p);
-  p.max_depth_m = 2.5;
+  p.max_depth_m = MaxDepth_m;
 }
 constexpr PresetValue kAzureFrequencies{
     "frequencies", nullptr,
@@ -157,16 +147,16 @@ const std::array<CwTofPreset, 6> kPresets{{
      applyKinectV2, kKinectV2Values, kKinectV2Sources, 512, 424},
     {"azure-kinect-nfov-unbinned",
      "Azure Kinect DK depth camera, NFOV unbinned, 640 x 576, <= 30 fps" TOFSIM_AZURE_LEAVES,
-     applyAkNfovUnbinned, kAkNfovUnbinnedValues, kAzureSources, 640, 576},
+     applyAzureMode<4.0>, kAkNfovUnbinnedValues, kAzureSources, 640, 576},
     {"azure-kinect-nfov-2x2",
      "Azure Kinect DK depth camera, NFOV 2x2 binned, 320 x 288, <= 30 fps" TOFSIM_AZURE_LEAVES,
-     applyAkNfov2x2, kAkNfov2x2Values, kAzureSources, 320, 288},
+     applyAzureMode<5.8>, kAkNfov2x2Values, kAzureSources, 320, 288},
     {"azure-kinect-wfov-2x2",
      "Azure Kinect DK depth camera, WFOV 2x2 binned, 512 x 512, <= 30 fps" TOFSIM_AZURE_LEAVES,
-     applyAkWfov2x2, kAkWfov2x2Values, kAzureSources, 512, 512},
+     applyAzureMode<3.0>, kAkWfov2x2Values, kAzureSources, 512, 512},
     {"azure-kinect-wfov-unbinned",
      "Azure Kinect DK depth camera, WFOV unbinned, 1024 x 1024, <= 15 fps" TOFSIM_AZURE_LEAVES,
-     applyAkWfovUnbinned, kAkWfovUnbinnedValues, kAzureSources, 1024, 1024},
+     applyAzureMode<2.5>, kAkWfovUnbinnedValues, kAzureSources, 1024, 1024},
     {"pmd-generic",
      "a generic PMD camera with CamSim's defaults [CAMSIM]: 12 um pixels, 880 nm, QE 0.8 (the "
      "radiometry keys), Gaussian shot noise (tofsim draws Poisson); the image is the camera's",
