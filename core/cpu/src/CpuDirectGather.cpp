@@ -1,0 +1,134 @@
+// The CPU backend's direct gather: each pixel sample's light straight from
+// the light source (a shadow ray, the light's profile, the BRDF and the
+// footprint), per tile of pixels. The rest of the backend: CpuBackend.cpp.
+#include <algorithm>
+#include <cmath>
+
+#include "GatherKernel.h"
+#include "GatherTiles.h"
+#include "ParallelFor.h"
+#include "tofsim/capture/ThinLens.h"
+#include "tofsim/cpu/CpuBackend.h"
+#include "tofsim/ir/SurfaceImage.h"
+#include "tofsim/physics/FootprintBuffer.h"
+#include "tofsim/physics/GltfBrdf.h"
+#include "tofsim/physics/TransientPhysics.h"
+#include "tofsim/rays/RayScene.h"
+#include "tofsim/util/Error.h"
+
+namespace tofsim::cpu {
+
+void CpuBackend::gatherDirect() {
+  const std::size_t tiles = (pixelCount_ + kTilePixels - 1) / kTilePixels;
+  parallelFor(tiles, threads_, [&](std::size_t tile) { gatherDirectTile(tile); });
+}
+
+/// What the light, the time axis and the job fix for every direct sample of
+/// a tile, read once per tile.
+struct CpuBackend::DirectConstants {
+  capture::Light::ProfileTerms profile;  ///< the light's (Light::profileTerms)
+  glm::vec3 light_world{0.0f};           ///< the light's position, m
+  glm::vec3 intensity_W_per_sr{0.0f};
+  float start_m = 0.0f;  ///< of the time axis, as optical path
+  float width_m = 1.0f;  ///< of a bin, as optical path
+  float eta = 1.0f;      ///< index of refraction
+  int bins = 0;
+  bool gltf = false;       ///< render.materials: gltf
+  bool footprint = false;  ///< render.pixel_footprint
+};
+
+/// One sample's direct light, before its share of the pixel.
+struct CpuBackend::DirectLight {
+  glm::vec3 radiance{0.0f};
+  float path_m = 0.0f;  ///< optical path light -> x (-> viewpoint)
+};
+
+CpuBackend::DirectConstants CpuBackend::directConstants() const {
+  const capture::RenderSettings& s = job_.settings;
+  DirectConstants c;
+  c.profile = job_.light.profileTerms();
+  c.light_world = job_.light.position_world;
+  c.intensity_W_per_sr = job_.light.intensity_W_per_sr;
+  c.start_m = static_cast<float>(s.time.start_m());
+  c.width_m = static_cast<float>(s.time.bin_width_m());
+  c.eta = static_cast<float>(s.time.index_of_refraction);
+  c.bins = s.time.bins;
+  c.gltf = s.materials == capture::MaterialModel::Gltf;
+  c.footprint = s.pixel_footprint;
+  return c;
+}
+
+// Called per sample: always inlined, so that the split leaves the hot
+// loop as it was (no call per sample).
+[[gnu::always_inline]] inline bool CpuBackend::directLight(const DirectConstants& c,
+                                                           std::size_t sample,
+                                                           DirectLight& out) const {
+  const std::size_t p = firstSample_ + sample;
+  const PixelSurface& surface = segmentSurfaces_[sample];
+  const glm::vec3 x = surface.x, n = surface.n;
+  // direct_gather.comp's steps: how the light arrives (shared), whether
+  // it is visible (here a ray, there the shadow map), what x reflects.
+  const physics::LightArrival arrival = physics::lightArrival(
+      x, n, c.light_world, c.profile.kind, c.profile.axis, c.profile.cosOuter, c.profile.cosInner);
+  const float profile = arrival.profile, cosX = arrival.cosX, dLight = arrival.dLight;
+  const glm::vec3 wLight = arrival.wLight;
+  if (profile <= 0.0f) return false;
+  const glm::vec3 toLight = c.light_world - x;
+  const glm::vec3 g = surfaces_->geometric[p];
+  const glm::vec3 offset = (glm::dot(g, toLight) < 0.0f ? -g : g) * scene_->epsilon_m();
+  if (scene_->occluded(x + offset, c.light_world)) return false;
+  const glm::vec3 albedo(surfaces_->albedo[p]);
+  if (c.gltf) {
+    const glm::vec2 mr = surfaces_->metallicRoughness[p];
+    const glm::vec3 wCamera = glm::normalize(surface.camera - x);
+    out.radiance = physics::gltfDirect(n, wLight, wCamera, albedo, mr.x, mr.y, c.intensity_W_per_sr,
+                                       profile, cosX, dLight);
+  } else {
+    out.radiance = physics::lambertianDirect(albedo, c.intensity_W_per_sr, profile, cosX, dLight);
+  }
+  const float dCamera = dropLastLeg_ ? 0.0f : glm::length(x - surface.camera) + surface.lensPath_m;
+  out.path_m = physics::directPathLength(c.eta, dLight, dCamera);
+  return true;
+}
+
+void CpuBackend::gatherDirectTile(std::size_t tile) {
+  const DirectConstants c = directConstants();
+  const std::size_t end = std::min(pixelCount_, (tile + 1) * kTilePixels);
+  for (std::size_t i = tile * kTilePixels; i < end; ++i) gatherDirectPixel(c, i);
+}
+
+void CpuBackend::gatherDirectPixel(const DirectConstants& c, std::size_t i) {
+  float* histogram = &direct_[i * c.bins * kChannels];
+  physics::OffAxisSums& lost = outside_[i];
+  const std::size_t perPixel = segmentFirstSample_[i + 1] - segmentFirstSample_[i];
+  const float weight = 1.0f / static_cast<float>(perPixel);
+  for (std::size_t sample = segmentFirstSample_[i]; sample < segmentFirstSample_[i + 1]; ++sample) {
+    if (!segmentLit_[sample]) continue;
+    DirectLight light;
+    if (!directLight(c, sample, light)) continue;
+    if (c.footprint) {
+      const PixelSurface& surface = segmentSurfaces_[sample];
+      const glm::vec2 steps = physics::pathStepsAcrossPixel(
+          physics::opticalPathGradient(surface.x, c.light_world, surface.camera, c.eta,
+                                       dropLastLeg_),
+          surface.dxdu, surface.dxdv);
+      const glm::vec3 kernel = physics::footprintKernel(light.path_m, steps, c.start_m, c.width_m);
+      const glm::vec3 value = light.radiance * weight;
+      if (physics::footprintIsNarrow(kernel)) {
+        physics::depositNarrow(histogram, c.bins, kernel, value, lost);
+      } else {
+        physics::depositWide(footprintOf(i), c.bins, kernel, value, lost);
+      }
+      continue;
+    }
+    // Point sampling (render.pixel_footprint: false): the bytes of before
+    // the footprint existed when there is one sample.
+    const glm::vec3 value = perPixel == 1 ? light.radiance : light.radiance * weight;
+    physics::depositInBin(histogram, c.bins, physics::binOfPath(light.path_m, c.start_m, c.width_m),
+                          1.0f, value, lost);
+  }
+  // The footprint buffer is the indirect gathers' next.
+  if (c.footprint) integratePixel(i, histogram);
+}
+
+}  // namespace tofsim::cpu
