@@ -65,11 +65,12 @@ void applyAzureFrequencies(CwTofParams& p) {
   p.frequencies_Hz = {320e6, 180e6, 100e6};
   p.phase_steps = 3;
 }
-// A mode differs from the others only by its range.
-template <double MaxDepth_m>
+// A mode differs from the others only by its range, in millimetres: a floating-point template
+// argument needs C++20 support clang 14 (the sanitizer build's compiler) does not have.
+template <int MaxDepth_mm>
 void applyAzureMode(CwTofParams& p) {
   applyAzureFrequencies(p);
-  p.max_depth_m = MaxDepth_m;
+  p.max_depth_m = MaxDepth_mm / 1000.0;
 }
 constexpr PresetValue kAzureFrequencies{
     "frequencies", nullptr,
@@ -147,16 +148,16 @@ const std::array<CwTofPreset, 6> kPresets{{
      applyKinectV2, kKinectV2Values, kKinectV2Sources, 512, 424},
     {"azure-kinect-nfov-unbinned",
      "Azure Kinect DK depth camera, NFOV unbinned, 640 x 576, <= 30 fps" TOFSIM_AZURE_LEAVES,
-     applyAzureMode<4.0>, kAkNfovUnbinnedValues, kAzureSources, 640, 576},
+     applyAzureMode<4000>, kAkNfovUnbinnedValues, kAzureSources, 640, 576},
     {"azure-kinect-nfov-2x2",
      "Azure Kinect DK depth camera, NFOV 2x2 binned, 320 x 288, <= 30 fps" TOFSIM_AZURE_LEAVES,
-     applyAzureMode<5.8>, kAkNfov2x2Values, kAzureSources, 320, 288},
+     applyAzureMode<5800>, kAkNfov2x2Values, kAzureSources, 320, 288},
     {"azure-kinect-wfov-2x2",
      "Azure Kinect DK depth camera, WFOV 2x2 binned, 512 x 512, <= 30 fps" TOFSIM_AZURE_LEAVES,
-     applyAzureMode<3.0>, kAkWfov2x2Values, kAzureSources, 512, 512},
+     applyAzureMode<3000>, kAkWfov2x2Values, kAzureSources, 512, 512},
     {"azure-kinect-wfov-unbinned",
      "Azure Kinect DK depth camera, WFOV unbinned, 1024 x 1024, <= 15 fps" TOFSIM_AZURE_LEAVES,
-     applyAzureMode<2.5>, kAkWfovUnbinnedValues, kAzureSources, 1024, 1024},
+     applyAzureMode<2500>, kAkWfovUnbinnedValues, kAzureSources, 1024, 1024},
     {"pmd-generic",
      "a generic PMD camera with CamSim's defaults [CAMSIM]: 12 um pixels, 880 nm, QE 0.8 (the "
      "radiometry keys), Gaussian shot noise (tofsim draws Poisson); the image is the camera's",
