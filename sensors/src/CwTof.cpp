@@ -62,8 +62,11 @@ class CwTofStream final : public SensorStream {
         H_(shape.height),
         W_(shape.width),
         F_(static_cast<int32_t>(p.frequencies_Hz.size())),
-        HW_(shape.pixelCount()) {
+        HW_(shape.pixelCount()),
+        exposureSamples_(p.integration_time_s > 0.0 ? options.exposureSamples : 1),
+        rawWeights_(static_cast<std::size_t>(F_) * p.phase_steps, 1.0) {
     checkParams(p, shape);
+    TOFSIM_CHECK(exposureSamples_ >= 1);
     const double k = shape.axis.depthPerSecond_m_per_s();
     unwrapRange_ = unwrapRange_m(p, k);
     depthRange_ = depthRange_m(p, k);
@@ -96,9 +99,40 @@ class CwTofStream final : public SensorStream {
       const std::size_t offset = i * shape_.pixelFloats();
       pixel(span.volume + offset, withDirect_ ? span.directOnly + offset : nullptr,
             span.firstPixel + i);
-      if (byOrder_) byOrder_->pixel(span, offset, span.firstPixel + i);
+      if (byOrder_ && reference_) byOrder_->pixel(span, offset, span.firstPixel + i);
     }
     next_ += span.pixelCount;
+  }
+
+  /// Raw j = (f, n) of the capture order's position i integrates over
+  /// [s_j, s_j + integration_time), s_j = i (integration_time + readout_gap):
+  /// sample m of it at s_j + (m + 1/2) integration_time / S. Index j S + m.
+  std::vector<double> sampleTimes_s() const override {
+    const std::vector<double> starts = cwtofRawStartTimes_s(p_);
+    const int32_t S = exposureSamples_;
+    std::vector<double> times;
+    times.reserve(starts.size() * S);
+    for (double start : starts) {
+      for (int32_t m = 0; m < S; ++m) {
+        times.push_back(start + (m + 0.5) / S * p_.integration_time_s);
+      }
+    }
+    return times;
+  }
+
+  /// The raws' charges are sums over the passes, each weighted by the share
+  /// of the raw's samples the pass stands for.
+  void beginPass(const SensorPass& pass) override {
+    TOFSIM_CHECK(passes_ == 0 || next_ == HW_);
+    next_ = 0;
+    if (passes_++ == 0) referenceSeen_ = false;
+    reference_ = pass.reference;
+    std::fill(rawWeights_.begin(), rawWeights_.end(), 0.0);
+    for (std::size_t i : pass.samples) {
+      TOFSIM_CHECK(i < rawWeights_.size() * exposureSamples_);
+      rawWeights_[i / exposureSamples_] += 1.0 / exposureSamples_;
+    }
+    if (reference_) referenceSeen_ = true;
   }
 
   /// The light before the lens's PSF: each pixel's noise-free depth, as
@@ -131,7 +165,15 @@ class CwTofStream final : public SensorStream {
     pixelSignal(values, shape_.axis.bins, shape_.channels, p_.common, signal_);
     const double delay = device_.delay_s(px);
     correlator_.taps(signal_, psfOnRaws_ ? 0.0 : p_.ambient_e, delay, ideal_);
-    for (std::size_t j = 0; j < ideal_.size(); ++j) clean_[j * HW_ + px] = ideal_[j];
+    // A static scene is one pass of weight 1: 0 + 1 x is x, the bytes of a
+    // single capture.
+    const std::size_t FN = rawWeights_.size();
+    for (std::size_t j = 0; j < ideal_.size(); ++j) {
+      const double w = rawWeights_[j % FN];
+      if (w != 0.0) clean_[j * HW_ + px] += w * ideal_[j];
+    }
+    // What is compared with the ground truth is the light at the frame's time.
+    if (!reference_) return;
     // The multipath errors are the scene's: without the device's delay.
     if (delay != 0.0 || psfOnRaws_) correlator_.raw(signal_, p_.ambient_e, ideal_);
     const bool lit = multipath(direct, px);
@@ -277,10 +319,17 @@ class CwTofStream final : public SensorStream {
   std::vector<double> signal_, ideal_, noisy_, phases_, amps_;  // per-pixel scratch
   std::optional<OrderDepths> byOrder_;                          // multipath_by_order
   std::optional<CwTofPsfError> psfError_;  // with the lens's PSF: cwtof_psf_error
+  // A moving scene (beginPass): each raw's weight in the current pass, and
+  // whether it is the frame's own time.
+  const int32_t exposureSamples_;
+  std::vector<double> rawWeights_;  // (F N)
+  bool reference_ = true, referenceSeen_ = true;
+  std::size_t passes_ = 0;
 };
 
 std::vector<SensorOutput> CwTofStream::finish(const Image* gt) {
   TOFSIM_CHECK(next_ == HW_);
+  TOFSIM_CHECK(referenceSeen_);
   checkGroundTruth(gt, shape_);
   device();
   if (gt) groundTruthErrors(*gt);

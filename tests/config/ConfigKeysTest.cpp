@@ -164,6 +164,16 @@ TEST_F(ConfigKeysWriterTest, EffectiveConfigWritesEveryDeclaredKey) {
   std::ofstream(dir_ / "a.yaml") << "scene: scene.gltf\ncamera: {aperture: 0.01, "
                                     "focus_distance: 2}\nlight: {}\ntime: {}\n";
   leafPaths(YAML::Load(effectiveConfigYaml(loadRunConfig(dir_ / "a.yaml"))), "", written);
+  // A sequence, by rate and count and as a list of times.
+  for (const char* sequence : {"{start: 1 s, rate: 30 Hz, count: 2}", "{times: [0 s, 1 s]}"}) {
+    std::ofstream(dir_ / "s.yaml") << "scene: scene.gltf\ncamera: {}\nlight: {}\ntime: {}\n"
+                                      "sequence: "
+                                   << sequence << "\n";
+    const std::string yaml = effectiveConfigYaml(loadRunConfig(dir_ / "s.yaml"));
+    leafPaths(YAML::Load(yaml), "", written);
+    std::ofstream(dir_ / "s2.yaml") << yaml;  // and reloads to the same config
+    EXPECT_EQ(effectiveConfigYaml(loadRunConfig(dir_ / "s2.yaml")), yaml);
+  }
   written.erase("");
   std::set<std::string> declared;
   for (const ConfigKey& k : runConfigKeys()) declared.insert(k.path);

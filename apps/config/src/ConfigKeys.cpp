@@ -8,6 +8,7 @@
 #include "FieldDoc.h"
 #include "NlosFields.h"
 #include "RunFields.h"
+#include "SequenceFields.h"
 #include "tofsim/sensors/SensorFields.h"
 
 namespace tofsim::config {
@@ -23,6 +24,8 @@ const ConfigKey kRunConfigKeys[] = {
      "see below; not with `nlos`"},
     {"nlos", "mapping", "", "none", "-",
      "a non-line-of-sight relay-wall scan instead of `camera` and `light`, see below"},
+    {"sequence", "mapping", "", "none", "-",
+     "a capture sequence of the scene's glTF animations (frames at their own scene times) instead of one capture at the rest pose, see below; not with `nlos`"},
     {"time", "mapping", "", "required", "-",
      "see below"},
     {"render", "mapping", "", "defaults", "-",
@@ -184,6 +187,7 @@ std::span<const ConfigKey> runConfigKeys() {
     addDocRows<capture::IndirectSettings>(r, "render.indirect", kIndirectFields);
     addDocRows<ReferenceConfig>(r, "render.reference", kReferenceFields);
     addDocRows<NlosConfig>(r, "nlos", kNlosFields);
+    addDocRows<SequenceConfig>(r, "sequence", kSequenceFields);
     r.keys.insert(r.keys.end(), std::begin(kRunConfigKeysAfterRender),
                   std::end(kRunConfigKeysAfterRender));
     return r;

@@ -7,6 +7,7 @@
 #include "LensConfig.h"
 #include "NlosFields.h"
 #include "RunFields.h"
+#include "SequenceFields.h"
 #include "ShortestNumber.h"
 #include "tofsim/config/RunConfig.h"
 #include "tofsim/config/SensorConfig.h"
@@ -122,6 +123,20 @@ YAML::Node nlosNode(const NlosConfig& c) {
   return n;
 }
 
+YAML::Node sequenceNode(const SequenceConfig& c) {
+  YAML::Node n;
+  if (c.rate_Hz > 0.0) {  // start, rate and count: the times follow
+    emitFields(n, kSequenceFields, c, [](const std::string&) {});
+    return n;
+  }
+  YAML::Node times(YAML::NodeType::Sequence);
+  for (double t : c.times_s) times.push_back(durationText(t));
+  times.SetStyle(YAML::EmitterStyle::Flow);
+  n["times"] = times;
+  n["exposure_samples"] = c.exposure_samples;
+  return n;
+}
+
 YAML::Node lightNode(const LightConfig& c) {
   YAML::Node n;
   const capture::Light& l = c.light;
@@ -202,6 +217,7 @@ std::string effectiveConfigYaml(const RunConfig& config) {
     root["camera"] = cameraNode(config.camera);
     root["light"] = lightNode(config.light);
   }
+  if (config.sequence) root["sequence"] = sequenceNode(*config.sequence);
   YAML::Node time;
   time["start"] = picoseconds(config.render.time.start_s);
   time["bin_width"] = picoseconds(config.render.time.bin_width_s);

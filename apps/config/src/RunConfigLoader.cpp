@@ -10,6 +10,7 @@
 #include "NlosConfigParser.h"
 #include "RunConfigYaml.h"
 #include "RunFields.h"
+#include "SequenceConfigParser.h"
 #include "ShortestNumber.h"
 #include "Vec3Key.h"
 #include "tofsim/config/RunConfig.h"
@@ -431,6 +432,11 @@ RunConfig loadRunConfigYaml(YAML::Node yaml, const std::filesystem::path& file,
   } else {
     parseCamera(root.child("camera"), config.camera);
     parseLight(root.child("light"), config.light);
+  }
+  if (const auto sequence = root.optionalChild("sequence")) {
+    if (config.nlos)
+      sequence->fail("a sequence of nlos captures is not supported (remove `nlos` or `sequence`)");
+    config.sequence = parseSequence(*sequence);
   }
   if (const auto time = root.optionalChild("time")) {
     parseTime(*time, config.render);

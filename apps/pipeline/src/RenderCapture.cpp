@@ -26,6 +26,12 @@ capture::RenderJob prepareCapture(const config::RunConfig& config, const scene::
 RenderedCapture renderCapture(const config::RunConfig& config, const capture::RenderJob& job,
                               gl::EglPlatform eglPlatform, const CaptureConsumers& consumers,
                               Progress& progress) {
+  return renderCapture(config, job, makeRenderer(config, eglPlatform), consumers, progress);
+}
+
+RenderedCapture renderCapture(const config::RunConfig& config, const capture::RenderJob& job,
+                              const RendererChoice& choice, const CaptureConsumers& consumers,
+                              Progress& progress) {
   const capture::Camera& camera = job.camera();
   const TimeAxis& axis = job.settings.time;
   SteadySink steady(camera.width, camera.height, axis.bins);
@@ -58,7 +64,6 @@ RenderedCapture renderCapture(const config::RunConfig& config, const capture::Re
     vignetted.emplace(finite, axis.bins, std::move(gains));
   }
   capture::SegmentSink& first = vignetted ? static_cast<capture::SegmentSink&>(*vignetted) : finite;
-  const RendererChoice choice = makeRenderer(config, eglPlatform);
   RenderedCapture rendered;
   rendered.backend = choice.backend;
   rendered.device = choice.renderer->description();

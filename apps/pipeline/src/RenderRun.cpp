@@ -9,6 +9,8 @@
 #include "BinMajorSpill.h"
 #include "KeptAcrossRenders.h"
 #include "NlosRun.h"
+#include "SequenceFrame.h"
+#include "SequenceRun.h"
 #include "tofsim/capture/VolumeCollector.h"  // defaultChannelNames
 #include "tofsim/imaging/Pictures.h"
 #include "tofsim/imaging/Video.h"
@@ -33,9 +35,7 @@
 
 namespace tofsim::pipeline {
 
-namespace {
-
-void reportLoad(const scene::LoadReport& report, const Progress& progress) {
+void reportLoad(const scene::LoadReport& report, const Progress& progress, bool animationsPlayed) {
   for (const std::string& w : report.warnings) progress.message("scene: " + w);
   if (report.skippedPrimitives > 0) {
     progress.message("scene: skipped " + std::to_string(report.skippedPrimitives) +
@@ -44,12 +44,14 @@ void reportLoad(const scene::LoadReport& report, const Progress& progress) {
   if (report.emissiveMaterials + report.transmissiveMaterials > 0) {
     progress.message("scene: emissive/transmissive materials render as diffuse base colour");
   }
-  if (report.animations > 0) {
+  if (report.animations > 0 && !animationsPlayed) {
     progress.message("scene: " + std::to_string(report.animations) +
                      " animation(s) not played: rendered at the rest pose (the nodes' own "
-                     "transforms; tofsim info lists them)");
+                     "transforms; tofsim info lists them; `sequence:` plays them)");
   }
 }
+
+namespace {
 
 void writeFrames(const std::filesystem::path& directory, const imaging::BinFrames& frames) {
   std::filesystem::create_directories(directory / "frames");
@@ -88,19 +90,27 @@ constexpr const char* kBinMajorSpillName = ".transient_bin_major.tmp";
 namespace {
 void writeOutputs(const config::RunConfig& config, const capture::RenderJob& job,
                   const RunOptions& options, const std::filesystem::path& dir, Progress& progress,
-                  RunSummary& summary);
+                  RunSummary& summary, const SequenceFrame* frame);
 RunSummary renderScene(const config::RunConfig& config, const scene::Scene& scene,
-                       const RunOptions& options, Progress& progress);
+                       const RunOptions& options, Progress& progress,
+                       const SequenceFrame* frame = nullptr);
 
 }  // namespace
 
 RunSummary runRender(const config::RunConfig& config, const RunOptions& options) {
   if (config.nlos) return runNlosRender(config, options);
+  if (config.sequence) return runSequenceRender(config, options);
   Progress progress("render", options.quiet);  // its time includes the scene's loading
   scene::LoadReport report;
   const scene::Scene scene = scene::loadGltf(config.scene_file, &report);
-  reportLoad(report, progress);
+  reportLoad(report, progress, false);
   return renderScene(config, scene, options, progress);
+}
+
+RunSummary renderSequenceFrame(const config::RunConfig& config, const scene::Scene& scene,
+                               const RunOptions& options, Progress& progress,
+                               const SequenceFrame& frame) {
+  return renderScene(config, scene, options, progress, &frame);
 }
 
 RunSummary runRender(const config::RunConfig& config, const scene::Scene& scene,
@@ -112,8 +122,9 @@ RunSummary runRender(const config::RunConfig& config, const scene::Scene& scene,
 
 namespace {
 RunSummary renderScene(const config::RunConfig& config, const scene::Scene& scene,
-                       const RunOptions& options, Progress& progress) {
-  const capture::RenderJob job = prepareCapture(config, scene);  // fails under --strict
+                       const RunOptions& options, Progress& progress, const SequenceFrame* frame) {
+  const capture::RenderJob job =
+      frame ? frame->jobAt(0.0) : prepareCapture(config, scene);  // fails under --strict
 
   RunSummary summary;
   summary.outputDirectory =
@@ -124,7 +135,7 @@ RunSummary renderScene(const config::RunConfig& config, const scene::Scene& scen
   // kill -9 before that leaves the earlier set untouched.
   StagedFolder folder(summary.outputDirectory, keptAcrossRenders);
   checkOutputsFit(estimateOutputs(config), config, folder.staging());
-  writeOutputs(config, job, options, folder.staging(), progress, summary);
+  writeOutputs(config, job, options, folder.staging(), progress, summary, frame);
   // A signal that came during the last step still means "stop": the earlier
   // results stay rather than being replaced by a run the user abandoned.
   throwIfInterrupted();
@@ -212,9 +223,35 @@ void writeProduct(const OutputProduct& p, const config::RunConfig& config,
 }
 
 // Writes every output into `dir`, the staging folder.
+// A moving scene's frame: the light at the times within the frame at which
+// some sensor samples it (CW-ToF's raws), other than the frame's own, each
+// a render of its own given the sensors alone; then the scene back at the
+// frame's time for the reference pass.
+void renderSensorPasses(const config::RunConfig& config, const SequenceFrame& frame,
+                        SensorStreams& sensors, const CaptureConsumers& like,
+                        std::optional<int32_t> bounces, Progress& progress) {
+  const std::vector<double> offsets = sensors.passOffsets_s();
+  PixelSpanSink spans([&](const sensors::PixelSpan& s) { sensors.consume(s); },
+                      bounces.value_or(0));
+  CaptureConsumers consumers;
+  consumers.sinks = {&spans};
+  consumers.bounces = like.bounces;
+  consumers.psfOnRaws = like.psfOnRaws;
+  for (std::size_t i = 1; i < offsets.size(); ++i) {
+    throwIfInterrupted();
+    progress.message("sensor pass " + std::to_string(i) + "/" + std::to_string(offsets.size() - 1) +
+                     " at +" + std::to_string(offsets[i] * 1e3) + " ms");
+    const capture::RenderJob job = frame.jobAt(offsets[i]);
+    sensors.beginPass(offsets[i]);
+    renderCapture(config, job, *frame.renderer, consumers, progress);
+  }
+  frame.jobAt(0.0);
+  sensors.beginPass(0.0);
+}
+
 void writeOutputs(const config::RunConfig& config, const capture::RenderJob& job,
                   const RunOptions& options, const std::filesystem::path& dir, Progress& progress,
-                  RunSummary& summary) {
+                  RunSummary& summary, const SequenceFrame* frame) {
   const config::OutputConfig& out = config.output;
   const std::vector<OutputProduct> products = renderProducts(config);
   // The sensors see what the render saves (the total volume, plus the direct
@@ -269,8 +306,12 @@ void writeOutputs(const config::RunConfig& config, const capture::RenderJob& job
   }
   consumers.psfOnRaws = psf == PsfPath::Raws;
   consumers.bounces = bouncesRead(out, bounces.value_or(0));
+  if (frame && sensorStreams) {
+    renderSensorPasses(config, *frame, *sensorStreams, consumers, bounces, progress);
+  }
   RenderedCapture rendered =
-      renderCapture(config, job, options.eglPlatform, consumers, progress);  // throws: --strict
+      frame ? renderCapture(config, job, *frame->renderer, consumers, progress)
+            : renderCapture(config, job, options.eglPlatform, consumers, progress);  // --strict
   summary.backend = rendered.backend;
   summary.device = rendered.device;
   summary.result = std::move(rendered.result);
@@ -297,7 +338,11 @@ void writeOutputs(const config::RunConfig& config, const capture::RenderJob& job
     std::erase_if(untaken, [](const std::string& k) { return k.rfind("sensors/", 0) == 0; });
   }
   warnUntakenPlotRanges(untaken);
-  writeRecord(config, job, options, dir, summary.files);
+  if (frame) {
+    frame->record(dir, summary.files);
+  } else {
+    writeRecord(config, job, options, dir, summary.files);
+  }
 }
 }  // namespace
 

@@ -52,7 +52,10 @@ struct SensorStreams::Entry {
   NpyArrayStreams arrays;
   std::unique_ptr<sensors::SensorStream> stream;
   sensors::WindowLossMeter meter;
-  Clock::duration busy{};  // time spent in the model, for the log
+  Clock::duration busy{};             // time spent in the model, for the log
+  std::vector<double> sampleTimes_s;  // SensorStream::sampleTimes_s
+  bool inPass = true;                 // takes the current pass's spans
+  bool reference = true;              // the current pass is the frame's time
 
   Entry(std::size_t i, std::filesystem::path rel, const std::filesystem::path& root,
         const sensors::SensorSpec& spec, const sensors::VolumeShape& shape)
@@ -85,6 +88,7 @@ SensorStreams::SensorStreams(const config::RunConfig& config, const sensors::Vol
     options.directOnly = withDirect;
     options.bounces = bounces;
     options.arrays = &entry->arrays;
+    options.exposureSamples = config.sequence ? config.sequence->exposure_samples : 1;
     if (std::holds_alternative<sensors::CwTofParams>(spec.params)) {
       options.beforePsf = psf == PsfPath::Transient;  // for cwtof_psf_error
       if (psf == PsfPath::Raws) options.psfOnRaws = &config.camera.psf->kernel;
@@ -94,7 +98,34 @@ SensorStreams::SensorStreams(const config::RunConfig& config, const sensors::Vol
     } catch (const InputError& e) {
       rethrowSensorError(config, i, e);
     }
+    entry->sampleTimes_s = entry->stream->sampleTimes_s();
     entries_.push_back(std::move(entry));
+  }
+}
+
+std::vector<double> SensorStreams::passOffsets_s() const {
+  std::vector<double> offsets;
+  for (const std::unique_ptr<Entry>& e : entries_) {
+    for (double t : e->sampleTimes_s) {
+      if (t != 0.0) offsets.push_back(t);
+    }
+  }
+  std::sort(offsets.begin(), offsets.end());
+  offsets.erase(std::unique(offsets.begin(), offsets.end()), offsets.end());
+  offsets.insert(offsets.begin(), 0.0);
+  return offsets;
+}
+
+void SensorStreams::beginPass(double offset_s) {
+  for (const std::unique_ptr<Entry>& e : entries_) {
+    sensors::SensorPass pass;
+    pass.reference = offset_s == 0.0;
+    for (std::size_t i = 0; i < e->sampleTimes_s.size(); ++i) {
+      if (e->sampleTimes_s[i] == offset_s) pass.samples.push_back(i);
+    }
+    e->inPass = pass.reference || !pass.samples.empty();
+    e->reference = pass.reference;
+    if (e->inPass) e->stream->beginPass(pass);
   }
 }
 
@@ -102,9 +133,10 @@ SensorStreams::~SensorStreams() = default;
 
 void SensorStreams::consume(const sensors::PixelSpan& span) {
   for (const std::unique_ptr<Entry>& e : entries_) {
+    if (!e->inPass) continue;
     const Clock::time_point start = Clock::now();
     e->stream->consume(span);
-    e->meter.consume(span);
+    if (e->reference) e->meter.consume(span);
     e->busy += Clock::now() - start;
   }
 }

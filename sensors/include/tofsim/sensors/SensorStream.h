@@ -92,6 +92,20 @@ struct StreamOptions {
   /// consumeBeforePsf() is given the light before the lens's PSF, the
   /// spans of consume() carrying it after (CW-ToF's cwtof_psf_error).
   bool beforePsf = false;
+  /// A moving scene's sensors that integrate over time (CW-ToF's raws over
+  /// integration_time): the samples per exposure, at the middles of equal
+  /// parts of it (sampleTimes_s).
+  int32_t exposureSamples = 1;
+};
+
+/// One pass of a moving scene's frame (SensorStream::beginPass): the light
+/// at one time, standing for the samples listed.
+struct SensorPass {
+  /// Indices into SensorStream::sampleTimes_s(); empty: none of them.
+  std::vector<std::size_t> samples;
+  /// The frame's own time: its light gives what is compared with the
+  /// ground truth (multipath errors, the instrument window's loss).
+  bool reference = false;
 };
 
 class SensorStream {
@@ -104,6 +118,17 @@ class SensorStream {
   /// covering the image once, before, after or between the spans of
   /// consume(). Sensors that did not ask ignore it.
   virtual void consumeBeforePsf(const PixelSpan& /*span*/) {}
+  /// When the light is sampled within a frame of a moving scene, s after
+  /// the frame's time: CW-ToF samples each raw over its own exposure
+  /// (capture order, integration_time, readout_gap); the others take the
+  /// frame's light at once, {0}.
+  virtual std::vector<double> sampleTimes_s() const { return {0.0}; }
+  /// A moving scene: the spans until the next beginPass (each pass covering
+  /// the image once, in order) are the light at the time of `pass`'s
+  /// samples. Without any call (a static scene) the spans are the light of
+  /// every sample at once. Sensors whose samples are {0} see only the
+  /// reference pass.
+  virtual void beginPass(const SensorPass& /*pass*/) {}
   /// After the last span: the outputs (sensors/README.md, "Outputs"). The
   /// ground-truth depth (H, W, 1) in metres, known only once the render is
   /// done, feeds the CW-ToF multipath errors; nullptr when there is none.

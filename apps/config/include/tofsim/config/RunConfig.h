@@ -18,6 +18,7 @@
 #include "tofsim/capture/RenderSettings.h"
 #include "tofsim/capture/Vignetting.h"
 #include "tofsim/config/NlosConfig.h"
+#include "tofsim/config/SequenceConfig.h"
 #include "tofsim/optics/PsfKernel.h"
 #include "tofsim/sensors/SensorSpec.h"
 
@@ -124,6 +125,9 @@ struct RunConfig {
   /// (NlosConfig.h); `light` then holds the laser spot's emitter (a
   /// Lambertian light, placed per laser point by the pipeline).
   std::optional<NlosConfig> nlos;
+  /// A capture sequence of the scene's animations (SequenceConfig.h); unset:
+  /// one capture at the rest pose. Not with nlos.
+  std::optional<SequenceConfig> sequence;
   capture::RenderSettings render;
   RendererKind renderer = RendererKind::InstantRadiosity;
   IrBackendKind backend = IrBackendKind::Auto;  ///< render.backend (IR only)

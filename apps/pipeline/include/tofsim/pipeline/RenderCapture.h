@@ -17,6 +17,7 @@
 #include "tofsim/config/RunConfig.h"
 #include "tofsim/gl/Context.h"
 #include "tofsim/pipeline/Progress.h"
+#include "tofsim/pipeline/RendererFactory.h"
 #include "tofsim/scene/Scene.h"
 #include "tofsim/volume/TransientVolume.h"
 
@@ -59,6 +60,11 @@ struct RenderedCapture {
 /// commits nothing).
 RenderedCapture renderCapture(const config::RunConfig& config, const capture::RenderJob& job,
                               gl::EglPlatform eglPlatform, const CaptureConsumers& consumers,
+                              Progress& progress);
+/// The same with a renderer made earlier (makeRenderer), kept across the
+/// renders of a sequence so that its device and scene are set up once.
+RenderedCapture renderCapture(const config::RunConfig& config, const capture::RenderJob& job,
+                              const RendererChoice& renderer, const CaptureConsumers& consumers,
                               Progress& progress);
 
 }  // namespace tofsim::pipeline

@@ -53,7 +53,17 @@ class SensorStreams {
   SensorStreams(const SensorStreams&) = delete;
   SensorStreams& operator=(const SensorStreams&) = delete;
 
-  /// Spans in order, covering the image once.
+  /// A moving scene's frame: the times (s after the frame's) at which some
+  /// sensor samples the light (SensorStream::sampleTimes_s), 0 first (the
+  /// frame's own time) and the others increasing.
+  std::vector<double> passOffsets_s() const;
+  /// The spans until the next call are the light at the frame's time +
+  /// offset_s, one of passOffsets_s(): each sensor takes the pass as the
+  /// samples it has at that time, sensors with none ignore it (offset 0,
+  /// the reference, goes to every sensor). Never called for a static scene.
+  void beginPass(double offset_s);
+
+  /// Spans in order, covering the image once (once per pass).
   void consume(const sensors::PixelSpan& span);
   /// With PsfPath::Transient: the light before the lens's PSF, in order,
   /// covering the image once (SensorStream::consumeBeforePsf).

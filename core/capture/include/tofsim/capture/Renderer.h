@@ -22,6 +22,10 @@ class Renderer {
   /// renderer or its device cannot honour.
   virtual RenderResult render(const RenderJob& job, SegmentSink& sink,
                               const ProgressCallback& progress = {}) const = 0;
+  /// The scene of the last render was changed in place (an animation's next
+  /// frame, scene::AnimatedScene::updateScene): the next render prepares it
+  /// again. Renderers that keep nothing of a scene ignore it.
+  virtual void sceneChanged() const {}
 };
 
 }  // namespace tofsim::capture

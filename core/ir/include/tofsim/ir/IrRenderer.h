@@ -32,7 +32,7 @@ class IrRenderer : public capture::Renderer {
                                const capture::ProgressCallback& progress = {}) const override;
   /// The held scene was changed in place (an animation's next frame): the
   /// next render prepares it again.
-  void sceneChanged() const;
+  void sceneChanged() const override;
   /// How many times a scene was prepared (for tests and statistics).
   std::size_t scenePreparations() const { return scenePreparations_; }
 

@@ -77,7 +77,7 @@ class ReferenceRenderer : public capture::Renderer {
   capture::RenderResult render(const capture::RenderJob& job, capture::SegmentSink& sink,
                                const capture::ProgressCallback& progress = {}) const override;
   /// The held scene was changed in place: the next render builds it again.
-  void sceneChanged() const;
+  void sceneChanged() const override;
   /// How many times a scene's BVH was built (for tests and statistics).
   std::size_t scenePreparations() const { return scenePreparations_; }
 
