@@ -66,7 +66,7 @@ void applyAzureFrequencies(CwTofParams& p) {
   p.phase_steps = 3;
 }
 // A mode differs from the others only by its range, in millimetres: a floating-point template
-// argument needs C++20 support clang 14 (the sanitizer build's compiler) does not have.
+// argument needs C++20 support clang 14 (the fuzz build's compiler) does not have.
 template <int MaxDepth_mm>
 void applyAzureMode(CwTofParams& p) {
   applyAzureFrequencies(p);

@@ -222,11 +222,11 @@ void writeProduct(const OutputProduct& p, const config::RunConfig& config,
   }
 }
 
-// Writes every output into `dir`, the staging folder.
 // A moving scene's frame: the light at the times within the frame at which
 // some sensor samples it (CW-ToF's raws), other than the frame's own, each
 // a render of its own given the sensors alone; then the scene back at the
-// frame's time for the reference pass.
+// frame's time for the reference pass (moved, and so prepared again, only
+// when it was moved away).
 void renderSensorPasses(const config::RunConfig& config, const SequenceFrame& frame,
                         SensorStreams& sensors, const CaptureConsumers& like,
                         std::optional<int32_t> bounces, Progress& progress) {
@@ -245,10 +245,11 @@ void renderSensorPasses(const config::RunConfig& config, const SequenceFrame& fr
     sensors.beginPass(offsets[i]);
     renderCapture(config, job, *frame.renderer, consumers, progress);
   }
-  frame.jobAt(0.0);
+  if (offsets.size() > 1) frame.jobAt(0.0);
   sensors.beginPass(0.0);
 }
 
+// Writes every output into `dir`, the staging folder.
 void writeOutputs(const config::RunConfig& config, const capture::RenderJob& job,
                   const RunOptions& options, const std::filesystem::path& dir, Progress& progress,
                   RunSummary& summary, const SequenceFrame* frame) {

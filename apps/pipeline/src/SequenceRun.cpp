@@ -5,7 +5,6 @@
 #include <nlohmann/json.hpp>
 
 #include "SequenceFrame.h"
-#include "tofsim/config/ConfigKeys.h"
 #include "tofsim/io/Npy.h"
 #include "tofsim/pipeline/Manifest.h"
 #include "tofsim/pipeline/OutputFileNames.h"
