@@ -51,6 +51,9 @@ SequenceConfig parseSequence(const ConfigNode& node) {
   out.times_s.reserve(static_cast<std::size_t>(out.count));
   for (int32_t k = 0; k < out.count; ++k) {
     out.times_s.push_back(out.start_s + static_cast<double>(k) / out.rate_Hz);
+    if (!std::isfinite(out.times_s.back())) {
+      node.failKey("rate", "frame " + std::to_string(k) + "'s time start + k / rate is not finite");
+    }
   }
   return out;
 }
