@@ -1,7 +1,7 @@
 """Shared by the scene generators (make_cornell_box.py, make_corner.py,
 make_glossy_floor.py): vector helpers, the document with its materials, vec3
-accessors, quads as meshes, a look-at camera, embedding the binary buffer and
-writing the .gltf atomically."""
+accessors, quads as meshes, a look-at camera, a node's translation animation,
+embedding the binary buffer and writing the .gltf atomically."""
 
 import base64
 import json
@@ -104,6 +104,27 @@ def add_camera(gltf, name, yfov_rad, translation, rotation):
         "yfov": yfov_rad, "aspectRatio": 1.0, "znear": 0.01, "zfar": 100.0}}]
     gltf["nodes"].append({"name": name, "camera": 0, "translation": list(translation),
                           "rotation": rotation})
+
+
+def add_translation_animation(gltf, blob, name, node, times, translations):
+    """A LINEAR translation channel on `node`: keyframe times (s, increasing)
+    and the node's translation at each, as float32 accessors (input with its
+    min/max, as the spec requires)."""
+    offset = len(blob)
+    for t in times:
+        blob.extend(struct.pack("<f", t))
+    gltf["bufferViews"].append({"buffer": 0, "byteOffset": offset, "byteLength": 4 * len(times)})
+    stored = [struct.unpack("<f", struct.pack("<f", t))[0] for t in times]
+    gltf["accessors"].append({"bufferView": len(gltf["bufferViews"]) - 1, "componentType": 5126,
+                              "count": len(times), "type": "SCALAR",
+                              "min": [min(stored)], "max": [max(stored)]})
+    times_accessor = len(gltf["accessors"]) - 1
+    values = add_vec3(gltf, blob, translations)
+    del gltf["bufferViews"][-1]["target"]  # animation data is no vertex buffer
+    gltf.setdefault("animations", []).append({
+        "name": name,
+        "samplers": [{"input": times_accessor, "output": values, "interpolation": "LINEAR"}],
+        "channels": [{"sampler": 0, "target": {"node": node, "path": "translation"}}]})
 
 
 def finish(gltf, blob):

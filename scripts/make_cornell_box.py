@@ -37,13 +37,21 @@ walls and lit by the spot's centre: about twice the counts of the back wall
 behind it in spad_lidar. Everything else is the diffuse box, byte for byte in
 its meshes.
 
-Standard library only. Usage: python3 scripts/make_cornell_box.py [--glossy | --retro] [out.gltf]
+Moving-block variant (--moving, configs/scenes/cornell_box_moving.gltf): the
+diffuse box, byte for byte in its meshes, whose short block slides MOVING_SHIFT
+towards the red wall over MOVING_SECONDS (one LINEAR translation channel on its
+node, animation `short_block_slide`), for configs/moving_block.yaml's capture
+sequence: 0.2 m/s, a few pixels between the first and last raw of a CW-ToF
+frame. Its path stays clear of the tall block (which lies further back in z).
+
+Standard library only. Usage: python3 scripts/make_cornell_box.py [--glossy | --retro | --moving] [out.gltf]
 """
 
 import math
 import sys
 
-from gltf_common import add_camera, add_mesh, cross, dot, finish, new_gltf, normalize, sub, write_gltf
+from gltf_common import (add_camera, add_mesh, add_translation_animation, cross, dot, finish, new_gltf,
+                         normalize, sub, write_gltf)
 
 MM = 0.001  # metres per millimetre
 
@@ -54,6 +62,11 @@ MATERIALS = [
     ("red", (0.63, 0.065, 0.05)),
     ("green", (0.14, 0.45, 0.091)),
 ]
+
+# The moving-block variant: the short block's slide, metres along +x (towards
+# the red wall) over this many seconds.
+MOVING_SHIFT = (0.2, 0.0, 0.0)
+MOVING_SECONDS = 1.0
 
 # The glossy variant's extra materials (name, rgb, metallic, roughness) and
 # the groups that use them.
@@ -154,7 +167,7 @@ def retro_groups():
     return [("retro_reflector", "retro_white", plate), ("retro_post", "white", post)]
 
 
-def build_gltf(glossy=False, retro=False):
+def build_gltf(glossy=False, retro=False, moving=False):
     groups = build_groups()
     materials = [(name, rgb, 0.0, 1.0) for name, rgb in MATERIALS]
     if glossy:
@@ -176,16 +189,21 @@ def build_gltf(glossy=False, retro=False):
     # 180 deg about +y: the camera's -Z looks along world +z.
     add_camera(gltf, "cornell_camera", 2 * math.atan(half_film / FOCAL_MM),
                [c * MM for c in CAMERA_POS_MM], [0.0, 1.0, 0.0, 0.0])
+    if moving:
+        node = [n["name"] for n in gltf["nodes"]].index("short_block")
+        add_translation_animation(gltf, blob, "short_block_slide", node, [0.0, MOVING_SECONDS],
+                                  [(0.0, 0.0, 0.0), MOVING_SHIFT])
     return finish(gltf, blob)
 
 
 def main():
-    glossy, retro = "--glossy" in sys.argv[1:], "--retro" in sys.argv[1:]
-    for flag in ("--glossy", "--retro"):
+    glossy, retro, moving = ("--" + f in sys.argv[1:] for f in ("glossy", "retro", "moving"))
+    for flag in ("--glossy", "--retro", "--moving"):
         if flag in sys.argv:
             sys.argv.remove(flag)
-    name = "cornell_box_glossy.gltf" if glossy else "cornell_box_retro.gltf" if retro else "cornell_box.gltf"
-    write_gltf(build_gltf(glossy, retro), name)
+    name = ("cornell_box_glossy.gltf" if glossy else "cornell_box_retro.gltf" if retro
+            else "cornell_box_moving.gltf" if moving else "cornell_box.gltf")
+    write_gltf(build_gltf(glossy, retro, moving), name)
 
 
 if __name__ == "__main__":

@@ -4,6 +4,7 @@
 #include <pybind11/stl.h>
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -78,6 +79,13 @@ void bindConfig(py::module_& m) {
                                for (const auto& s : c.sensors) names.push_back(s.name);
                                return names;
                              })
+      .def_property_readonly(
+          "frame_times_s",
+          [](const config::RunConfig& c) -> std::optional<std::vector<double>> {
+            if (!c.sequence) return std::nullopt;
+            return c.sequence->times_s;
+          },
+          "a capture sequence's frame times, s of scene time; None without `sequence:`")
       .def_property_readonly("output_directory",
                              [](const config::RunConfig& c) { return c.output.directory.string(); })
       .def("effective_yaml", &config::effectiveConfigYaml,

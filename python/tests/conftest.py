@@ -15,14 +15,18 @@ SOURCE_DIR = os.environ.get(
 PLANE_ALBEDO = (0.5, 0.4, 0.3)
 
 
-def write_plane_gltf(path, side=6.0, albedo=PLANE_ALBEDO):
+def write_plane_gltf(path, side=6.0, albedo=PLANE_ALBEDO, speed=None):
     """A square plane at z = 0 facing +z, centred on the origin (as
-    tests/support/AnalyticScenes makePlane), as a self-contained glTF file."""
+    tests/support/AnalyticScenes makePlane), as a self-contained glTF file.
+    speed: the plane moves along -z at this many m/s over [0, 1] s (a LINEAR
+    translation channel); None: no animation."""
     h = side / 2
     corners = [(-h, -h, 0.0), (h, -h, 0.0), (h, h, 0.0), (-h, h, 0.0)]
     positions = [corners[i] for i in (0, 1, 2, 0, 2, 3)]
     blob = b"".join(struct.pack("<3f", *p) for p in positions)
     blob += b"".join(struct.pack("<3f", 0.0, 0.0, 1.0) for _ in positions)
+    if speed is not None:
+        blob += struct.pack("<2f", 0.0, 1.0) + struct.pack("<6f", 0, 0, 0, 0, 0, -speed)
     gltf = {
         "asset": {"version": "2.0"},
         "scene": 0,
@@ -48,6 +52,20 @@ def write_plane_gltf(path, side=6.0, albedo=PLANE_ALBEDO):
             {"bufferView": 1, "componentType": 5126, "count": 6, "type": "VEC3"},
         ],
     }
+    if speed is not None:
+        gltf["bufferViews"] += [
+            {"buffer": 0, "byteOffset": 144, "byteLength": 8},
+            {"buffer": 0, "byteOffset": 152, "byteLength": 24},
+        ]
+        gltf["accessors"] += [
+            {"bufferView": 2, "componentType": 5126, "count": 2, "type": "SCALAR",
+             "min": [0.0], "max": [1.0]},
+            {"bufferView": 3, "componentType": 5126, "count": 2, "type": "VEC3"},
+        ]
+        gltf["animations"] = [{
+            "samplers": [{"input": 2, "output": 3, "interpolation": "LINEAR"}],
+            "channels": [{"sampler": 0, "target": {"node": 0, "path": "translation"}}],
+        }]
     with open(path, "w") as f:
         json.dump(gltf, f)
     return str(path)

@@ -10,7 +10,7 @@ import numpy as np
 import pytest
 
 import tofsim
-from conftest import SOURCE_DIR, pixel_directions
+from conftest import SOURCE_DIR, pixel_directions, write_plane_gltf
 
 CORNELL = os.path.join(SOURCE_DIR, "configs", "cornell_box.yaml")
 
@@ -247,3 +247,27 @@ def test_strict_render_fails_on_light_off_the_time_axis_as_the_cli_does(plane_co
     assert "of the light arrives after the last bin" in in_memory.value.message
     assert in_memory.value.message == to_folder.value.message
     assert not (tmp_path / "strict" / "transient.npy").exists()
+
+
+def test_a_sequence_returns_each_frames_arrays_on_a_leading_frame_axis(plane_config, tmp_path):
+    # The plane moves away from the camera (1.5 m above it) at 0.2 m/s: at
+    # t = 0.5 s every pixel's distance is (1.5 + 0.1) / 1.5 times frame 0's.
+    plane_config["scene"] = write_plane_gltf(tmp_path / "moving.gltf", speed=0.2)
+    plane_config["time"]["bins"] = 600
+    plane_config["sequence"] = {"times": ["0 s", "0.5 s"]}
+    result = tofsim.render(plane_config)
+    assert isinstance(result, tofsim.SequenceResult)
+    np.testing.assert_array_equal(result.times_s, [0.0, 0.5])
+    assert result.transient.shape == (2, 30, 40, 600, 3)
+    assert result.depth.shape == (2, 30, 40)
+    assert result.steady.shape == (2, 30, 40, 3)
+    np.testing.assert_allclose(result.depth[1] / result.depth[0], 1.6 / 1.5, rtol=1e-5)
+    # Scene flow to the next frame: the plane's points move by (0, 0, -0.1) m;
+    # the last frame has no next one.
+    assert result.scene_flow.shape == (2, 30, 40, 3)
+    np.testing.assert_allclose(result.scene_flow[0], np.broadcast_to([0, 0, -0.1], (30, 40, 3)),
+                               atol=1e-5)
+    assert np.isnan(result.scene_flow[1]).all() and np.isnan(result.optical_flow[1]).all()
+    # The frames were written to a temporary folder, gone once read.
+    assert result.output_dir is None
+    assert not os.path.exists(plane_config["output"]["directory"])

@@ -14,7 +14,7 @@ bad input raises ConfigError (a ValueError) with file, line, column and key.
 
 from ._tofsim import Config, ConfigError
 from ._config import load_config
-from ._render import NlosResult, RenderResult, TimeAxis, render
+from ._render import NlosResult, RenderResult, SequenceResult, TimeAxis, render
 from ._sense import SensorResult, SensorWarning, sense
 
 __all__ = [
@@ -23,6 +23,7 @@ __all__ = [
     "NlosResult",
     "RenderResult",
     "SensorResult",
+    "SequenceResult",
     "SensorWarning",
     "TimeAxis",
     "load_config",

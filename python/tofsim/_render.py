@@ -96,9 +96,95 @@ class NlosResult:
     output_dir: object = None
 
 
+@dataclass
+class SequenceResult:
+    """What tofsim.render returns for a `sequence:` config (configs/README.md,
+    `sequence`): each frame's arrays stacked along a leading frame axis F,
+    frame k at times_s[k]; an array the run did not write is None.
+
+    times_s: (F,) float64, the frames' times, seconds of scene time
+    transient, direct, indirect: (F, H, W, T, C), as RenderResult's per frame
+    depth: (F, H, W) camera-to-surface distance, metres (depth_sequence.npy)
+    steady: (F, H, W, C) each frame's transient summed over time
+    scene_flow: (F, H, W, 3) metres, optical_flow: (F, H, W, 2) pixels: the
+      motion of each pixel's surface to the next frame (frame k's
+      scene_flow.npy, optical_flow.npy); NaN where no surface and all of the
+      last frame, which has no next one
+    time: the TimeAxis of the T bins
+    frames: sequence.json's frame records (index, time_s, seed, folder)
+    files: written files, relative to output_dir
+    output_dir: where the frames were written (None: a temporary folder,
+      removed once read)
+    """
+
+    times_s: object
+    transient: object
+    direct: object
+    indirect: object
+    depth: object
+    steady: object
+    scene_flow: object
+    optical_flow: object
+    time: TimeAxis
+    frames: list
+    files: list
+    output_dir: object = None
+
+
+def _stack_frames(folder, frames, name):
+    """The frames' `name` arrays stacked on a leading axis; None when frame 0
+    has none; frames without one (the last frame's flow) are NaN."""
+    import os
+
+    import numpy
+
+    arrays = []
+    for f in frames:
+        path = os.path.join(folder, f["folder"], name)
+        arrays.append(numpy.load(path) if os.path.exists(path) else None)
+    present = [a for a in arrays if a is not None]
+    if not present:
+        return None
+    nan = numpy.full(present[0].shape, numpy.nan, dtype=present[0].dtype)
+    return numpy.stack([nan if a is None else a for a in arrays])
+
+
+def _render_sequence(config, output_dir, quiet):
+    import json
+    import os
+    import tempfile
+
+    import numpy
+
+    with tempfile.TemporaryDirectory(prefix="tofsim-sequence-") as scratch:
+        folder = scratch if output_dir is None else str(output_dir)
+        out = _tofsim._render(config, folder, quiet)
+        with open(os.path.join(folder, "sequence.json"), encoding="utf-8") as f:
+            frames = json.load(f)["frames"]
+        transient = _stack_frames(folder, frames, "transient.npy")
+        depth_file = os.path.join(folder, "depth_sequence.npy")
+        return SequenceResult(
+            times_s=numpy.array([f["time_s"] for f in frames], dtype=numpy.float64),
+            transient=transient,
+            direct=_stack_frames(folder, frames, "direct.npy"),
+            indirect=_stack_frames(folder, frames, "indirect.npy"),
+            depth=numpy.load(depth_file) if os.path.exists(depth_file) else None,
+            steady=None if transient is None else transient.sum(axis=3, dtype=numpy.float32),
+            scene_flow=_stack_frames(folder, frames, "scene_flow.npy"),
+            optical_flow=_stack_frames(folder, frames, "optical_flow.npy"),
+            time=TimeAxis(**out["time"]),
+            frames=frames,
+            files=out["files"],
+            output_dir=output_dir,
+        )
+
+
 def render(config, renderer=None, backend=None, output_dir=None, quiet=True):
     """Renders a config (a Config, or anything load_config takes): a
-    RenderResult, or an NlosResult for a config with `nlos:`.
+    RenderResult, an NlosResult for a config with `nlos:`, or a
+    SequenceResult (arrays with a leading frame axis) for one with
+    `sequence:` (written to output_dir, or to a temporary folder that is
+    removed once read).
 
     renderer: "ir" or "reference", overriding render.renderer.
     backend: overrides render.backend (rejected as an unknown key where this
@@ -117,6 +203,8 @@ def render(config, renderer=None, backend=None, output_dir=None, quiet=True):
     if backend is not None:
         overrides["render.backend"] = backend
     config = load_config(config, overrides)
+    if config.frame_times_s is not None:
+        return _render_sequence(config, output_dir, quiet)
     out = _tofsim._render(config, None if output_dir is None else str(output_dir), quiet)
     out["time"] = TimeAxis(**out["time"])
     out["output_dir"] = output_dir

@@ -112,11 +112,7 @@ class CwTofStream final : public SensorStream {
     const int32_t S = exposureSamples_;
     std::vector<double> times;
     times.reserve(starts.size() * S);
-    for (double start : starts) {
-      for (int32_t m = 0; m < S; ++m) {
-        times.push_back(start + (m + 0.5) / S * p_.integration_time_s);
-      }
-    }
+    for (double start : starts) appendExposureSamples(start, p_.integration_time_s, S, times);
     return times;
   }
 

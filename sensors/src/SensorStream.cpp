@@ -1,5 +1,7 @@
 #include "tofsim/sensors/SensorStream.h"
 
+#include "tofsim/util/Error.h"
+
 namespace tofsim::sensors {
 
 VolumeShape shapeOf(const TransientVolume& volume) {
@@ -17,6 +19,12 @@ PixelSpan wholeVolume(const TransientVolume& volume, const TransientVolume* dire
     for (const TransientVolume* b : *bounces) span.bounces.push_back(b->data());
   }
   return span;
+}
+
+void appendExposureSamples(double start_s, double exposure_s, int32_t S,
+                           std::vector<double>& times) {
+  TOFSIM_CHECK(S >= 1);
+  for (int32_t m = 0; m < S; ++m) times.push_back(start_s + (m + 0.5) / S * exposure_s);
 }
 
 }  // namespace tofsim::sensors

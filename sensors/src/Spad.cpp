@@ -4,15 +4,18 @@
 // plotted pixels' histograms kept; crosstalk's look-ahead across spans
 // (SpadCrosstalk.h) drives the same per-pixel steps in two passes; exact
 // crosstalk (SpadExactCrosstalk.h) holds the whole array's flux and draws it
-// at once with the last span.
+// at once with the last span. In a moving scene with an exposure time the
+// passes' light is averaged first (ExposureAverage.h) and drawn in finish().
 #include "tofsim/sensors/Spad.h"
 
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <memory>
+#include <optional>
 #include <string>
 
+#include "ExposureAverage.h"
 #include "ParallelPixels.h"
 #include "PeakDepth.h"
 #include "SpadCrosstalk.h"
@@ -30,6 +33,14 @@ namespace tofsim::sensors {
 
 namespace {
 
+// No exposure time: {0}, the frame's time alone.
+std::vector<double> exposureTimes_s(double exposure_s, int32_t S) {
+  if (exposure_s <= 0.0) return {0.0};
+  std::vector<double> times;
+  appendExposureSamples(0.0, exposure_s, S, times);
+  return times;
+}
+
 class SpadStream final : public SensorStream {
  public:
   SpadStream(const SpadParams& p, const VolumeShape& shape, const StreamOptions& options)
@@ -45,7 +56,8 @@ class SpadStream final : public SensorStream {
         histograms_(plotted_.size()),
         maps_(spadPixelMaps(p, shape.height, shape.width)),
         frames_(p, shape, options),
-        images_(p, axis_, kernel_, draw_.deadBins(), shape.height, shape.width) {
+        images_(p, axis_, kernel_, draw_.deadBins(), shape.height, shape.width),
+        sampleTimes_(exposureTimes_s(p.exposure_time_s, options.exposureSamples)) {
     detail::checkSpadParams(p);
     if (detail::exactCrosstalk(p)) {
       // p_, not p: the driver keeps a reference, and the caller's params
@@ -76,7 +88,52 @@ class SpadStream final : public SensorStream {
     }
   }
 
+  /// The exposure's samples (exposure_time, StreamOptions::exposureSamples).
+  std::vector<double> sampleTimes_s() const override { return sampleTimes_; }
+
+  /// A moving scene: with an exposure time the passes are averaged and
+  /// drawn in finish(); without, the one pass at the frame's time is drawn
+  /// as it comes (the static path).
+  void beginPass(const SensorPass& pass) override {
+    if (sampleTimes_.size() == 1 && sampleTimes_[0] == 0.0) return;
+    if (!average_) average_.emplace(shape_, sampleTimes_.size());
+    average_->beginPass(pass.samples.size());
+  }
+
   void consume(const PixelSpan& span) override {
+    if (average_) {
+      average_->add(span);
+      return;
+    }
+    draw(span);
+  }
+
+  std::vector<SensorOutput> finish(const Image*) override {
+    if (average_) {
+      draw(average_->mean());
+      average_.reset();
+    }
+    TOFSIM_CHECK(next_ == shape_.pixelCount());
+    TOFSIM_CHECK(!crosstalk_ || received_ == next_);
+    if (writer_) writer_->close();
+    std::vector<SensorOutput> outputs;
+    outputs.push_back(std::move(counts_));
+    images_.finish(outputs);
+    outputs.push_back(histogramPlot(plotted_, histograms_, axis_));
+    frames_.finish(outputs);
+    detail::appendSpadMapImages(p_, maps_, shape_.height, shape_.width, outputs);
+    return outputs;
+  }
+
+ private:
+  struct Scratch {
+    std::vector<double> signal, resampled, flux, ungated, h, lambda;
+    detail::SpadHistogramDraw::Scratch draw;
+    detail::SpadImages::Scratch images;
+  };
+
+  // The span's pixels' histograms, in order and covering the image once.
+  void draw(const PixelSpan& span) {
     TOFSIM_CHECK(span.firstPixel == next_ && next_ + span.pixelCount <= shape_.pixelCount());
     if (exact_) {
       consumeExact(span);
@@ -99,26 +156,6 @@ class SpadStream final : public SensorStream {
     emit(span.firstPixel, span.pixelCount, counts);
     next_ += span.pixelCount;
   }
-
-  std::vector<SensorOutput> finish(const Image*) override {
-    TOFSIM_CHECK(next_ == shape_.pixelCount());
-    TOFSIM_CHECK(!crosstalk_ || received_ == next_);
-    if (writer_) writer_->close();
-    std::vector<SensorOutput> outputs;
-    outputs.push_back(std::move(counts_));
-    images_.finish(outputs);
-    outputs.push_back(histogramPlot(plotted_, histograms_, axis_));
-    frames_.finish(outputs);
-    detail::appendSpadMapImages(p_, maps_, shape_.height, shape_.width, outputs);
-    return outputs;
-  }
-
- private:
-  struct Scratch {
-    std::vector<double> signal, resampled, flux, ungated, h, lambda;
-    detail::SpadHistogramDraw::Scratch draw;
-    detail::SpadImages::Scratch images;
-  };
 
   // Where the counts of pixels first .. first + n - 1 go before emit().
   float* countsOf(std::size_t first, std::size_t n) {
@@ -258,6 +295,8 @@ class SpadStream final : public SensorStream {
   std::unique_ptr<detail::SpadExactCrosstalk> exact_;  ///< null: none, or first order
   std::size_t received_ = 0;                           ///< pixels drawn, with crosstalk
   std::size_t next_ = 0;
+  const std::vector<double> sampleTimes_;
+  std::optional<detail::ExposureAverage> average_;  ///< a moving exposure's passes
 };
 
 }  // namespace

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <map>
+#include <set>
 
 #include "tofsim/sensors/Random.h"
 #include "tofsim/sensors/TimeKernel.h"
@@ -24,7 +25,9 @@ namespace {
 
 /// The streak camera fed pixel by pixel: each recorded row is gathered as its
 /// pixels arrive (its spatial blur needs the whole row) and turned into its
-/// streak image once complete; the other rows are never held.
+/// streak image once complete; the other rows are never held. Scanning rows
+/// in a moving scene (row_time): each pass takes only the rows recorded at
+/// its time.
 class StreakStream final : public SensorStream {
  public:
   StreakStream(const StreakParams& p, const VolumeShape& shape, const StreamOptions& options)
@@ -46,8 +49,25 @@ class StreakStream final : public SensorStream {
         throw InputError("streak row " + std::to_string(y) + " is outside the image (height " +
                          std::to_string(shape.height) + ")");
       }
-      images_[y];  // recorded, once even when listed twice
+      if (images_.count(y)) continue;  // recorded once even when listed twice
+      images_[y];
+      rowTimes_.push_back(static_cast<double>(order_.size()) * p.row_time_s);
+      order_.push_back(y);
     }
+    if (p.row_time_s == 0.0) rowTimes_ = {0.0};
+  }
+
+  /// Recorded row i (in `rows` order) at i row_time; no row time: {0}.
+  std::vector<double> sampleTimes_s() const override { return rowTimes_; }
+
+  /// The rows scanned at this pass's time (all of them without a row time).
+  void beginPass(const SensorPass& pass) override {
+    TOFSIM_CHECK(next_ == 0 || next_ == shape_.pixelCount());
+    next_ = 0;
+    if (p_.row_time_s == 0.0) return;
+    inPass_.clear();
+    for (std::size_t i : pass.samples) inPass_.insert(order_.at(i));
+    scanning_ = true;
   }
 
   void consume(const PixelSpan& span) override {
@@ -56,7 +76,7 @@ class StreakStream final : public SensorStream {
     for (std::size_t i = 0; i < span.pixelCount; ++i) {
       const std::size_t px = span.firstPixel + i;
       const auto y = static_cast<int32_t>(px / W), x = static_cast<int32_t>(px % W);
-      if (!images_.count(y)) continue;
+      if (!images_.count(y) || (scanning_ && !inPass_.count(y))) continue;
       if (x == 0) row_.assign(static_cast<std::size_t>(T) * W, 0.0);
       pixelSignal(span.volume + i * shape_.pixelFloats(), shape_.axis.bins, shape_.channels,
                   p_.common, signal_);
@@ -72,6 +92,7 @@ class StreakStream final : public SensorStream {
     std::vector<SensorOutput> outputs;
     for (int32_t y : rows_) {
       const SensorOutput& image = images_.at(y);
+      TOFSIM_CHECK(!image.data.empty());  // every row's pass came
       SensorOutput png = image;
       png.kind = SensorOutput::Kind::ColorMappedImage;
       png.colormap = p_.colormap;
@@ -99,6 +120,11 @@ class StreakStream final : public SensorStream {
     image.axes = {"t", "x"};
     image.time = axis_;
     image.attributes = {{"row", y}};
+    if (p_.row_time_s > 0.0) {
+      const auto i =
+          static_cast<std::size_t>(std::find(order_.begin(), order_.end(), y) - order_.begin());
+      image.attributes.emplace_back("scan_time_s", rowTimes_[i]);  // after the frame's time
+    }
     image.unit = "ADU";
     char axisText[96];  // %g: "5.00346 ns, step 10 ps", not std::to_string's six decimals
     std::snprintf(axisText, sizeof axisText, "%g ns, step %g ps", axis_.start_s * 1e9,
@@ -126,6 +152,10 @@ class StreakStream final : public SensorStream {
   const BinKernel timeKernel_, spaceKernel_;
   std::vector<int32_t> rows_;
   std::map<int32_t, SensorOutput> images_;  // recorded row -> its image once complete
+  std::vector<int32_t> order_;              // the recorded rows, each once, in `rows` order
+  std::vector<double> rowTimes_;            // sampleTimes_s
+  std::set<int32_t> inPass_;                // scanning: the rows of the current pass
+  bool scanning_ = false;
   std::vector<double> row_, blurred_, signal_, resampled_;
   std::size_t next_ = 0;
 };

@@ -22,7 +22,7 @@ namespace {
 const char* kMinimal = "scene: scene.gltf\ncamera: {}\nlight: {}\ntime: {}\n";
 
 const char* kEveryKey = R"(scene: scene.gltf
-sequence: {start: 0.5 s, rate: 30 Hz, count: 3, exposure_samples: 2}
+sequence: {start: 0.5 s, rate: 30 Hz, count: 3, exposure_samples: 2, video: false}
 camera:
   gltf_camera: cam
   position: [0.5, 0.25, 2]

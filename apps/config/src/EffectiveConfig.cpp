@@ -134,6 +134,7 @@ YAML::Node sequenceNode(const SequenceConfig& c) {
   times.SetStyle(YAML::EmitterStyle::Flow);
   n["times"] = times;
   n["exposure_samples"] = c.exposure_samples;
+  n["video"] = c.video;
   return n;
 }
 

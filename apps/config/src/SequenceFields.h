@@ -20,7 +20,9 @@ inline constexpr auto kSequenceFields = std::tuple{
     sensors::Custom{"times", "list of durations", "increasing", "none", "s",
           "the frames' scene times, in place of `start`, `rate` and `count`"},
     sensors::Field{"exposure_samples", &SequenceConfig::exposure_samples, sensors::IntegerIn{1, 64},
-          {.doc = "renders per CW-ToF raw over its `integration_time`, at the middles of equal parts of it (1: the raw's middle); each distinct time is one render"}},
+          {.doc = "samples of an exposure that moves: renders per CW-ToF raw over its `integration_time`, and per SPAD `exposure_time`, at the middles of equal parts of it (1: its middle); each distinct time is one render"}},
+    sensors::Field{"video", &SequenceConfig::video, sensors::Flag{},
+          {.doc = "`sequence.mp4`: the frames' steady images in order, one tone scale for all, stamped with their times (needs `output.steady`)"}},
 };
 // clang-format on
 

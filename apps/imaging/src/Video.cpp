@@ -66,9 +66,15 @@ cv::Mat frameOf(const BinFrames& frames, BinWindow& window, int32_t t, int32_t w
   cv::Mat scaled;
   cv::resize(small, scaled, cv::Size(W * k, H * k), 0, 0, cv::INTER_NEAREST);
   scaled.copyTo(frame(cv::Rect(0, 0, scaled.cols, scaled.rows)));
-  const double t_s = frames.axis.binCenter_s(t);
-  char stamp[96];
-  std::snprintf(stamp, sizeof stamp, "t = %.3f ns (%.3f m)", t_s * 1e9, t_s * 299792458.0);
+  std::string stamp;
+  if (frames.stamp) {
+    stamp = frames.stamp(t);
+  } else {
+    const double t_s = frames.axis.binCenter_s(t);
+    char text[96];
+    std::snprintf(text, sizeof text, "t = %.3f ns (%.3f m)", t_s * 1e9, t_s * 299792458.0);
+    stamp = text;
+  }
   cv::putText(frame, stamp, cv::Point(4, size.height - 7), cv::FONT_HERSHEY_SIMPLEX, 0.45,
               cv::Scalar(255, 255, 255), 1, cv::LINE_AA);
   return frame;

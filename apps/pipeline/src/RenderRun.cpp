@@ -340,7 +340,7 @@ void writeOutputs(const config::RunConfig& config, const capture::RenderJob& job
   }
   warnUntakenPlotRanges(untaken);
   if (frame) {
-    frame->record(dir, summary.files);
+    frame->record(dir, summary.files, summary.result);
   } else {
     writeRecord(config, job, options, dir, summary.files);
   }

@@ -55,12 +55,21 @@ std::string axisDoc(const std::string& axis) {
 }
 
 json sensorJson(const SensorRunInfo& run) {
-  return {{"name", run.spec->name},
-          {"type", sensors::sensorTypeName(run.spec->params)},
-          {"seed", run.seed},
-          {"parameters", sensorParametersJson(run.spec->params, run.render)},
-          {"render_time", timeAxisJson(run.render)},
-          {"warnings", run.warnings}};
+  json j = {{"name", run.spec->name},
+            {"type", sensors::sensorTypeName(run.spec->params)},
+            {"seed", run.seed},
+            {"parameters", sensorParametersJson(run.spec->params, run.render)},
+            {"render_time", timeAxisJson(run.render)},
+            {"warnings", run.warnings}};
+  if (!run.sampleTimes_s.empty()) {
+    j["sample_times_s"] = run.sampleTimes_s;
+    j["sample_times_doc"] =
+        "a frame of a capture sequence: the times after the frame's time, s, the sensor took the "
+        "scene's light at (SensorStream::sampleTimes_s: CW-ToF each raw's exposure samples in "
+        "[f][n] order, S per raw; SPAD its exposure's; a scanning streak camera each recorded "
+        "row's)";
+  }
+  return j;
 }
 
 // The numbers' description: from the data output, or the picture when the

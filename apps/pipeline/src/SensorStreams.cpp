@@ -164,7 +164,8 @@ std::vector<std::string> SensorStreams::finish(const Image* groundTruthDepth_m,
     const sensors::SensorSpec& spec = config_.sensors[e->index];
     const Clock::time_point start = Clock::now();
     std::vector<sensors::SensorOutput> outputs;
-    SensorRunInfo run{&spec, shape_.axis, config_.render.seed, {}, camera_};
+    SensorRunInfo run{&spec, shape_.axis, config_.render.seed, {}, camera_, {}};
+    if (config_.sequence) run.sampleTimes_s = e->sampleTimes_s;
     try {
       run.warnings = sensors::sensorWarnings(spec, shape_, groundTruthDepth_m);
       printSensorWarnings(spec, run.warnings);

@@ -23,8 +23,11 @@ struct SequenceFrame {
   /// the render job there (prepareCapture's: its camera may move too).
   std::function<capture::RenderJob(double offset_s)> jobAt;
   /// Writes the frame's record into the staging folder `dir` as its last
-  /// file, in place of the run's record, and adds it to `files`.
-  std::function<void(const std::filesystem::path& dir, std::vector<std::string>& files)> record;
+  /// file, in place of the run's record, and adds it to `files`; `result`:
+  /// the render at the frame's own time.
+  std::function<void(const std::filesystem::path& dir, std::vector<std::string>& files,
+                     const capture::RenderResult& result)>
+      record;
 };
 
 /// renderScene's outputs for a frame of a sequence in options.outputDirectory

@@ -1,10 +1,14 @@
 #include "SequenceRun.h"
 
+#include <chrono>
 #include <cstdio>
 #include <fstream>
 #include <nlohmann/json.hpp>
 
+#include "RenderStatsJson.h"
 #include "SequenceFrame.h"
+#include "SequenceMotion.h"
+#include "SequenceVideo.h"
 #include "tofsim/io/Npy.h"
 #include "tofsim/pipeline/Manifest.h"
 #include "tofsim/pipeline/OutputFileNames.h"
@@ -19,6 +23,7 @@ namespace tofsim::pipeline {
 
 namespace fs = std::filesystem;
 using nlohmann::json;
+using Clock = std::chrono::steady_clock;
 
 uint64_t sequenceFrameSeed(uint64_t seed, std::size_t frame) {
   // Weyl steps of the golden ratio: frame 0 keeps the seed, the others differ.
@@ -139,12 +144,21 @@ RunSummary runSequenceRender(const config::RunConfig& config, const RunOptions& 
       renderer.renderer->sceneChanged();
       return prepareCapture(frameConfig, scene);
     };
-    frame.record = [&](const fs::path& dir, std::vector<std::string>& written) {
-      const json doc = {{"index", k},
-                        {"time_s", t},
-                        {"seed", frameConfig.render.seed},
-                        {"run_key", key},
-                        {"files", written}};
+    const bool withMotion = config.output.depth && k + 1 < seq.times_s.size();
+    const Clock::time_point started = Clock::now();
+    frame.record = [&](const fs::path& dir, std::vector<std::string>& written,
+                       const capture::RenderResult& result) {
+      json doc = {{"index", k}, {"time_s", t}, {"seed", frameConfig.render.seed}, {"run_key", key}};
+      if (withMotion) {
+        const double next = seq.times_s[k + 1];
+        writeMotionFields(dir, motionFields(frameConfig, animated, scene, t, next), written);
+        doc["motion_to_time_s"] = next;  // scene_flow.npy, optical_flow.npy: to frame k + 1
+      }
+      // The frame's cost: every render of it (the sensors' sample times
+      // too), its sensors and files; and its render at t_k's own stats.
+      doc["seconds"] = std::chrono::duration<double>(Clock::now() - started).count();
+      doc["render_stats"] = renderStatsJson(result);
+      doc["files"] = written;
       writeFileAtomically(dir / kFrameRecord, doc.dump(2) + "\n");
       written.push_back(kFrameRecord);
     };
@@ -172,6 +186,14 @@ RunSummary runSequenceRender(const config::RunConfig& config, const RunOptions& 
   if (config.output.depth) {
     writeDepthSequence(root, seq.times_s.size());
     summary.files.push_back("depth_sequence.npy");
+  }
+  if (seq.video && config.output.steady) {
+    std::vector<fs::path> steady;
+    for (std::size_t k = 0; k < seq.times_s.size(); ++k) {
+      steady.push_back(root / frameFolder(k) / files::kSteadyExr);
+    }
+    writeSequenceVideo(root / "sequence.mp4", config.output, steady, seq.times_s, progress);
+    summary.files.push_back("sequence.mp4");
   }
   const json doc = {{"frames", frames},
                     {"count", seq.times_s.size()},

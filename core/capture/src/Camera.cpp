@@ -100,32 +100,53 @@ double Camera::pixelSolidAngle_sr(int32_t x, int32_t y) const {
   // through a lens dA is the distorted pixel's, |det d(ideal) / d(pixel)|.
   const double tanHalf = tanHalfFovY(*this);
   const double pixelSide = 2.0 * tanHalf / height;
-  const double area = lens ? std::fabs(glm::determinant(idealPerPixel(*lens, x, y)))
-                           : pixelSide * pixelSide;
+  const double area =
+      lens ? std::fabs(glm::determinant(idealPerPixel(*lens, x, y))) : pixelSide * pixelSide;
   const glm::dvec2 p = PixelRays(*this).planePoint(x, y);
   const double r2 = 1.0 + p.x * p.x + p.y * p.y;
   return area / (r2 * std::sqrt(r2));
 }
 
-glm::ivec2 Camera::project(const glm::vec3& point) const {
+namespace {
+// The pinhole's image-plane coordinates in [-1, 1] (+u right, +v up) of the
+// offset d from the camera, z = its depth along the axis.
+glm::dvec2 pinholeUv(const Camera& camera, const glm::vec3& d, float z) {
+  const double tanHalf = tanHalfFovY(camera);
+  const double aspect = static_cast<double>(camera.width) / camera.height;
+  return {glm::dot(d, camera.right()) / z / (tanHalf * aspect),
+          glm::dot(d, camera.up()) / z / tanHalf};
+}
+}  // namespace
+
+std::optional<glm::dvec2> Camera::imagePoint(const glm::vec3& point) const {
   const glm::vec3 d = point - position_world;
   const float z = glm::dot(d, forward());
-  if (z <= 0.0f) return {-1, -1};
+  if (z <= 0.0f) return std::nullopt;
   if (lens) {
-    // OpenCV's frame: +y down. Pixel centres at integers: round.
+    // OpenCV's frame: +y down, pixel centres at integers.
     const glm::dvec2 ideal(glm::dot(d, right()) / z, -glm::dot(d, up()) / z);
-    const glm::dvec2 px = normalisedToPixel(*lens, distortNormalised(*lens, ideal));
-    const int x = static_cast<int>(std::floor(px.x + 0.5));
-    const int y = static_cast<int>(std::floor(px.y + 0.5));
-    if (x < 0 || y < 0 || x >= width || y >= height) return {-1, -1};
-    return {x, y};
+    return normalisedToPixel(*lens, distortNormalised(*lens, ideal));
   }
-  const double tanHalf = tanHalfFovY(*this);
-  const double aspect = static_cast<double>(width) / height;
-  const double u = glm::dot(d, right()) / z / (tanHalf * aspect);
-  const double v = glm::dot(d, up()) / z / tanHalf;
-  const int x = static_cast<int>(std::floor((u + 1.0) * 0.5 * width));
-  const int y = static_cast<int>(std::floor((1.0 - v) * 0.5 * height));
+  const glm::dvec2 uv = pinholeUv(*this, d, z);
+  return glm::dvec2((uv.x + 1.0) * 0.5 * width - 0.5, (1.0 - uv.y) * 0.5 * height - 0.5);
+}
+
+glm::ivec2 Camera::project(const glm::vec3& point) const {
+  int x = -1, y = -1;
+  if (lens) {
+    const std::optional<glm::dvec2> px = imagePoint(point);  // centres at integers: round
+    if (!px) return {-1, -1};
+    x = static_cast<int>(std::floor(px->x + 0.5));
+    y = static_cast<int>(std::floor(px->y + 0.5));
+  } else {
+    // The pixel edges at (u + 1) W / 2 exactly, as the G-buffer's raster.
+    const glm::vec3 d = point - position_world;
+    const float z = glm::dot(d, forward());
+    if (z <= 0.0f) return {-1, -1};
+    const glm::dvec2 uv = pinholeUv(*this, d, z);
+    x = static_cast<int>(std::floor((uv.x + 1.0) * 0.5 * width));
+    y = static_cast<int>(std::floor((1.0 - uv.y) * 0.5 * height));
+  }
   if (x < 0 || y < 0 || x >= width || y >= height) return {-1, -1};
   return {x, y};
 }

@@ -89,6 +89,9 @@ std::optional<SurfaceHit> RayScene::intersect(const glm::vec3& origin, const glm
   const float u = rh.hit.u, v = rh.hit.v, w = 1.0f - u - v;
   SurfaceHit hit;
   hit.distance_m = rh.ray.tfar;
+  hit.mesh = rh.hit.geomID;
+  hit.triangle = rh.hit.primID;
+  hit.barycentric = {u, v};
   // Barycentric interpolation, like the rasterizer's G-buffer, rather than
   // origin + t * direction: it lies on the triangle to float precision.
   const glm::vec3& p0 = mesh.positions_world[tri[0]];

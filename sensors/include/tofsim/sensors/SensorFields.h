@@ -47,6 +47,8 @@ inline constexpr auto kBinsFields = std::tuple{
 
 inline constexpr auto kStreakFields = std::tuple{
     Custom{"rows", "list of ints", "", "all rows", "pixel", "image rows to record"},
+    Field{"row_time", &StreakParams::row_time_s, Duration{kNonNegative},
+          {.json = "row_time_s", .doc = "a capture sequence: the rows are scanned one at a time, recorded row i (in `rows` order) taken i row_time after the frame's time; 0: all at once"}},
     Field{"time_fwhm", &StreakParams::time_fwhm_s, Duration{kNonNegative},
           {.json = "time_fwhm_s", .doc = "temporal PSF FWHM (Gaussian)"}},
     Field{"spatial_fwhm", &StreakParams::spatial_fwhm_px, Number{kNonNegative},
@@ -82,6 +84,8 @@ inline constexpr auto kSpadFields = std::tuple{
           {.json = "mode", .doc = "`synchronous` (first photon, pile-up) or `free_running`"}},
     Field{"cycles", &SpadParams::cycles, Integer{.max = 1'000'000'000'000LL},
           {.json = "cycles", .doc = "laser cycles N"}},
+    Field{"exposure_time", &SpadParams::exposure_time_s, Duration{kNonNegative},
+          {.json = "exposure_time_s", .doc = "a capture sequence: the cycles spread evenly over this time after the frame's, their flux the mean of the light at `sequence.exposure_samples` times within it; 0: all at the frame's time"}},
     Field{"pulse_fwhm", &SpadParams::pulse_fwhm_s, Duration{kNonNegative},
           {.json = "pulse_fwhm_s", .doc = "Gaussian laser pulse FWHM"}},
     Field{"jitter_fwhm", &SpadParams::jitter_fwhm_s, Duration{kNonNegative},

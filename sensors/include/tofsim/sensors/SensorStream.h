@@ -98,6 +98,11 @@ struct StreamOptions {
   int32_t exposureSamples = 1;
 };
 
+/// The sample times of an exposure [start, start + exposure) in a moving
+/// scene: the middles of S equal parts of it, appended to `times`.
+void appendExposureSamples(double start_s, double exposure_s, int32_t S,
+                           std::vector<double>& times);
+
 /// One pass of a moving scene's frame (SensorStream::beginPass): the light
 /// at one time, standing for the samples listed.
 struct SensorPass {

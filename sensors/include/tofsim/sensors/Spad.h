@@ -103,7 +103,12 @@ struct SpadParams {
   SensorCommon common;  ///< radiometry gives photons at the detector per laser pulse
   InstrumentBins bins;  ///< TDC bin width, offset and count
   SpadMode mode = SpadMode::Synchronous;
-  int64_t cycles = 10000;              ///< laser pulses N, >= 1
+  int64_t cycles = 10000;  ///< laser pulses N, >= 1
+  /// A moving scene (a capture sequence): the cycles are spread evenly over
+  /// [0, exposure_time) after the frame's time, and their flux is the mean of
+  /// the light at the middles of sequence.exposure_samples equal parts of it
+  /// (SensorStream::sampleTimes_s). 0: every cycle at the frame's time.
+  double exposure_time_s = 0.0;
   double pulse_fwhm_s = 0.0;           ///< Gaussian laser pulse FWHM, s, centred on t = 0
   double jitter_fwhm_s = 0.0;          ///< Gaussian timing jitter FWHM, s
   double jitter_tail_fraction = 0.0;   ///< fraction of detections with an extra exponential delay

@@ -18,8 +18,12 @@ namespace tofsim::sensors {
 
 struct StreakParams {
   SensorCommon common;
-  InstrumentBins bins;              ///< the streak's time axis
-  std::vector<int32_t> rows;        ///< image rows to record; empty = all
+  InstrumentBins bins;        ///< the streak's time axis
+  std::vector<int32_t> rows;  ///< image rows to record; empty = all
+  /// A moving scene (a capture sequence): a scanning streak camera records
+  /// one row at a time, the i-th recorded row (in `rows` order) row_time
+  /// after the one before, the first at the frame's time. 0: every row at once.
+  double row_time_s = 0.0;
   double time_fwhm_s = 0.0;         ///< temporal PSF FWHM, s (0 = none)
   double spatial_fwhm_px = 0.0;     ///< spatial blur FWHM along x, pixels (0 = none)
   bool shot_noise = true;           ///< Poisson photo-electron noise

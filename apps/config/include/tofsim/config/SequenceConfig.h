@@ -22,9 +22,11 @@ struct SequenceConfig {
   int32_t count = 0;  ///< frames (with rate)
   /// The frames' times, s, increasing: start + k / rate, or the list given.
   std::vector<double> times_s;
-  /// Renders per CW-ToF raw over its integration_time, at the midpoints of
-  /// equal parts of it (1: the raw's middle).
+  /// Samples of an exposure that moves (a CW-ToF raw's integration_time, a
+  /// SPAD's exposure_time), at the midpoints of equal parts of it (1: its middle).
   int32_t exposure_samples = 1;
+  /// sequence.mp4 of the frames' steady images.
+  bool video = true;
   /// Where `sequence:` is, for the errors found with the scene (frame times
   /// outside its animations).
   FileLoc at;

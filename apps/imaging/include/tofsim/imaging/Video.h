@@ -14,6 +14,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <functional>
+#include <string>
 
 #include "tofsim/imaging/Pictures.h"
 #include "tofsim/volume/TransientVolume.h"
@@ -52,6 +53,9 @@ struct BinFrames {
   double white = 1.0;
   /// Fills `out` with bin t: width * height * channels floats, (y, x, c) order.
   std::function<void(int32_t t, float* out)> readBin;
+  /// The stamp of the frame of bin t; unset: its time and optical path
+  /// (a sequence's frames say their scene time instead).
+  std::function<std::string(int32_t t)> stamp;
 };
 
 /// The frames of a volume in memory.

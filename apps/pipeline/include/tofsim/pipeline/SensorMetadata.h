@@ -33,6 +33,9 @@ struct SensorRunInfo {
   uint64_t seed = 0;
   std::vector<std::string> warnings;
   const capture::Camera* camera = nullptr;  ///< nullptr: no point clouds
+  /// A frame of a capture sequence: when the sensor sampled the light
+  /// (SensorStream::sampleTimes_s); empty: a static capture.
+  std::vector<double> sampleTimes_s;
 };
 
 /// One document per output name, in output order: an Image and the

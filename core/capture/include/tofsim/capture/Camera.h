@@ -58,6 +58,11 @@ struct Camera {
   /// Pixel containing the world point, or (-1, -1) when it projects outside
   /// the image or lies behind the camera.
   glm::ivec2 project(const glm::vec3& point_world) const;
+  /// Where the world point lands on the image, in pixels: +x right, +y
+  /// down, pixel (x, y)'s centre at (x, y) (OpenCV's convention; through
+  /// the lens's distortion when there is one). None behind the camera; a
+  /// point outside the image lands outside [-1/2, width - 1/2) x [..).
+  std::optional<glm::dvec2> imagePoint(const glm::vec3& point_world) const;
 
   glm::mat4 view() const;
   /// OpenGL projection with rows flipped so that GL row 0 is image row 0 (top).

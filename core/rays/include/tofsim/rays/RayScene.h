@@ -5,6 +5,7 @@
 
 #include <embree3/rtcore.h>
 
+#include <cstdint>
 #include <glm/glm.hpp>
 #include <optional>
 
@@ -20,6 +21,12 @@ struct SurfaceHit {
   glm::vec3 albedo{0.0f};
   float metallic = 0.0f;   ///< with textures (scene::materialMetallicRoughness)
   float roughness = 1.0f;  ///< perceptual, alpha = roughness^2
+  /// The point on its triangle, for finding it again when the scene moves:
+  /// Scene::meshes[mesh]'s triangle `triangle`, at w p0 + u p1 + v p2 with
+  /// (u, v) = barycentric, w = 1 - u - v.
+  uint32_t mesh = 0;
+  uint32_t triangle = 0;
+  glm::vec2 barycentric{0.0f};
 };
 
 class RayScene {
