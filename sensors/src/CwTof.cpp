@@ -11,6 +11,7 @@
 #include "CwTofDeviceImages.h"
 #include "CwTofDeviceStage.h"
 #include "CwTofOutputs.h"
+#include "CwTofMotionError.h"
 #include "CwTofPsfError.h"
 #include "tofsim/optics/PsfConvolution.h"
 #include "tofsim/sensors/Random.h"
@@ -121,7 +122,13 @@ class CwTofStream final : public SensorStream {
   void beginPass(const SensorPass& pass) override {
     TOFSIM_CHECK(passes_ == 0 || next_ == HW_);
     next_ = 0;
-    if (passes_++ == 0) referenceSeen_ = false;
+    if (passes_++ == 0) {
+      referenceSeen_ = false;
+      const std::vector<double> times = sampleTimes_s();
+      if (std::any_of(times.begin(), times.end(), [](double t) { return t != 0.0; })) {
+        motion_.emplace(HW_);  // raws at different times: cwtof_motion_error
+      }
+    }
     reference_ = pass.reference;
     std::fill(rawWeights_.begin(), rawWeights_.end(), 0.0);
     for (std::size_t i : pass.samples) {
@@ -150,7 +157,6 @@ class CwTofStream final : public SensorStream {
 
  private:
   void addByOrder(std::vector<SensorOutput>& outs, const Image* gt) const;
-  SensorOutput wigglingOutput() const;
 
   /// consume(): the pixel's noise-free charges (every tap, its fixed-pattern
   /// delay inside the correlation) kept for finish(), and its multipath errors.
@@ -170,6 +176,11 @@ class CwTofStream final : public SensorStream {
     }
     // What is compared with the ground truth is the light at the frame's time.
     if (!reference_) return;
+    // The still light through the device (its delay; the PSF comes later).
+    if (motion_ && !psfOnRaws_) {
+      const double still = correlator_.depth(ideal_, phases_, amps_, unwrapRange_);
+      motion_->still(px, still, amps_[0] > 0.0);
+    }
     // The multipath errors are the scene's: without the device's delay.
     if (delay != 0.0 || psfOnRaws_) correlator_.raw(signal_, p_.ambient_e, ideal_);
     const bool lit = multipath(direct, px);
@@ -211,6 +222,7 @@ class CwTofStream final : public SensorStream {
       for (std::size_t j = 0; j < FN; ++j) ideal_[j] = clean_[j * HW_ + px];  // tap A's raws
       const bool lit = multipath(nullptr, px);
       psfError_->blurred(px, lit);
+      if (motion_) motion_->still(px, cleanDepth_[px], lit);  // the blurred still light
     }
   }
 
@@ -228,6 +240,10 @@ class CwTofStream final : public SensorStream {
     for (std::size_t px = 0; px < HW_; ++px) {
       noisy_.resize(correlator_.rows);
       for (std::size_t j = 0; j < noisy_.size(); ++j) noisy_[j] = clean_[j * HW_ + px];
+      if (motion_) {  // the raws as taken, before the noise
+        const double taken = correlator_.depth(noisy_, phases_, amps_, unwrapRange_);
+        motion_->taken(px, taken, amps_[0] > 0.0, depthRange_);
+      }
       Rng rng(seed_, pixelStream(kCwTofStreamTag, px));
       const bool saturated = device_.pixel(noisy_, px, rng, deviceImages_.taps());
       for (std::size_t j = 0; j < noisy_.size(); ++j) raw_[j * HW_ + px] = float(noisy_[j]);
@@ -315,6 +331,7 @@ class CwTofStream final : public SensorStream {
   std::vector<double> signal_, ideal_, noisy_, phases_, amps_;  // per-pixel scratch
   std::optional<OrderDepths> byOrder_;                          // multipath_by_order
   std::optional<CwTofPsfError> psfError_;  // with the lens's PSF: cwtof_psf_error
+  std::optional<CwTofMotionError> motion_;  // raws at different times: cwtof_motion_error
   // A moving scene (beginPass): each raw's weight in the current pass, and
   // whether it is the frame's own time.
   const int32_t exposureSamples_;
@@ -390,40 +407,16 @@ std::vector<SensorOutput> CwTofStream::finish(const Image* gt) {
              "without it",
              cmap, combinedError);
   }
+  if (motion_) {
+    addImage(outs, "cwtof_motion_error", H, W, motion_->errors(), "m",
+             "CW-ToF motion error: noise-free depth of the raws as taken, each at its own time, "
+             "- that of the light at the frame's time",
+             cmap, combinedError);
+  }
   addByOrder(outs, gt);
-  outs.push_back(wigglingOutput());
+  outs.push_back(wigglingErrorOutput(wiggling_, p_.frequencies_Hz));
   deviceImages_.add(outs, H, W, depthRange_, device_.pattern());
   return outs;
-}
-
-// (F, S) and its max |error|, RMS and mean, over all and per frequency.
-SensorOutput CwTofStream::wigglingOutput() const {
-  const int32_t S = kWigglingSweepPoints;
-  SensorOutput o = makeOutput(
-      "cwtof_wiggling_error", SensorOutput::Kind::Array, {F_, S}, {"frequency", "sweep"},
-      {wiggling_.begin(), wiggling_.end()}, "m",
-      "CW-ToF wiggling error: N-step depth - true depth of a noise-free single return swept "
-      "over each frequency's unambiguous range (frequency, sweep point)");
-  const auto stats = [](const double* e, std::size_t n) {
-    double maxAbs = 0.0, sum2 = 0.0, sum = 0.0;
-    for (std::size_t i = 0; i < n; ++i) {
-      maxAbs = std::max(maxAbs, std::fabs(e[i]));
-      sum2 += e[i] * e[i];
-      sum += e[i];
-    }
-    return std::array<double, 3>{maxAbs, std::sqrt(sum2 / n), sum / n};
-  };
-  const auto all = stats(wiggling_.data(), wiggling_.size());
-  o.attributes = {{"sweep_points", S}, {"max_abs_error_m", all[0]}, {"rms_error_m", all[1]}};
-  for (int32_t f = 0; f < F_; ++f) {
-    const std::string label = frequencyLabel(p_.frequencies_Hz[f]);
-    const auto one = stats(wiggling_.data() + static_cast<std::size_t>(f) * S, S);
-    o.attributes.push_back({"max_abs_error_" + label + "_m", one[0]});
-    o.attributes.push_back({"rms_error_" + label + "_m", one[1]});
-    o.attributes.push_back({"mean_error_" + label + "_m", one[2]});
-  }
-  o.signed_values = true;
-  return o;
 }
 
 // (N + 1, H, W) and a picture of each order, in the combined depth's range.

@@ -47,6 +47,11 @@ inline void addImage(std::vector<SensorOutput>& outs, const std::string& name, i
   outs.push_back(std::move(png));
 }
 
+/// "cwtof_wiggling_error" (F, S), m (wigglingError_m), with its max |error|,
+/// RMS and mean over all and per frequency as attributes.
+SensorOutput wigglingErrorOutput(const std::vector<double>& wiggling_m,
+                                 const std::vector<double>& frequencies_Hz);
+
 inline std::string metres(double m) {
   char text[32];
   std::snprintf(text, sizeof text, "%.3f m", m);

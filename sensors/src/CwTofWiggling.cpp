@@ -1,9 +1,12 @@
 // The wiggling error of the N-step estimator over a noise-free depth sweep,
 // from the waveform alone (no render), and the double-precision phases of a
 // pixel the tests compare with the aliasing law.
+#include <algorithm>
+#include <array>
 #include <cmath>
 
 #include "CwTofCorrelator.h"
+#include "CwTofOutputs.h"
 #include "tofsim/sensors/CwTof.h"
 #include "tofsim/util/Error.h"
 
@@ -39,6 +42,37 @@ std::vector<double> noiseFreePhases(const CwTofParams& p, const TimeAxis& axis,
   correlator.taps(signal, 0.0, delay_s, raw);
   correlator.depth(raw, phases, amplitudes, unwrapRange_m(p, axis.depthPerSecond_m_per_s()));
   return phases;
+}
+
+// (F, S) and its max |error|, RMS and mean, over all and per frequency.
+SensorOutput wigglingErrorOutput(const std::vector<double>& wiggling_m,
+                                const std::vector<double>& frequencies_Hz) {
+  const int32_t S = kWigglingSweepPoints;
+  SensorOutput o = makeOutput(
+      "cwtof_wiggling_error", SensorOutput::Kind::Array, {static_cast<int64_t>(frequencies_Hz.size()), S}, {"frequency", "sweep"},
+      {wiggling_m.begin(), wiggling_m.end()}, "m",
+      "CW-ToF wiggling error: N-step depth - true depth of a noise-free single return swept "
+      "over each frequency's unambiguous range (frequency, sweep point)");
+  const auto stats = [](const double* e, std::size_t n) {
+    double maxAbs = 0.0, sum2 = 0.0, sum = 0.0;
+    for (std::size_t i = 0; i < n; ++i) {
+      maxAbs = std::max(maxAbs, std::fabs(e[i]));
+      sum2 += e[i] * e[i];
+      sum += e[i];
+    }
+    return std::array<double, 3>{maxAbs, std::sqrt(sum2 / n), sum / n};
+  };
+  const auto all = stats(wiggling_m.data(), wiggling_m.size());
+  o.attributes = {{"sweep_points", S}, {"max_abs_error_m", all[0]}, {"rms_error_m", all[1]}};
+  for (std::size_t f = 0; f < frequencies_Hz.size(); ++f) {
+    const std::string label = frequencyLabel(frequencies_Hz[f]);
+    const auto one = stats(wiggling_m.data() + f * S, S);
+    o.attributes.push_back({"max_abs_error_" + label + "_m", one[0]});
+    o.attributes.push_back({"rms_error_" + label + "_m", one[1]});
+    o.attributes.push_back({"mean_error_" + label + "_m", one[2]});
+  }
+  o.signed_values = true;
+  return o;
 }
 
 }  // namespace tofsim::sensors

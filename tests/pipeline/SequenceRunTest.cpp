@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "MovingPlaneTest.h"
+#include "tofsim/io/Exr.h"
 #include "tofsim/io/Npy.h"
 #include "tofsim/pipeline/RenderRun.h"
 #include "tofsim/util/Error.h"
@@ -71,6 +72,8 @@ TEST_F(SequenceRunTest, StillOneFrameSequenceIsTheStaticRenderByteForByte) {
     EXPECT_FALSE(a.empty()) << f;
     EXPECT_EQ(a, bytesOf(one / f)) << f;
   }
+  // Raws taken at once move nothing: no motion error to write.
+  EXPECT_FALSE(fs::exists(seq / "frame_00000/sensors/cwtof/cwtof_motion_error.exr"));
 }
 
 // Raw n (capture position n) integrates over [n T, (n + 1) T) and is sampled
@@ -103,6 +106,10 @@ TEST_F(SequenceRunTest, CwTofRawsTakenInTurnGiveTheClosedFormMotionPhase) {
   // The motion moves the phase by 25 times the tolerance: the test fails
   // when the raws are all taken at the frame's time.
   EXPECT_GT(std::fabs(expected - still), 25e-4);
+  // cwtof_motion_error: the depth of that phase - the still plane's.
+  const double perRad = kC / (4.0 * std::numbers::pi * f);  // metres of depth per radian
+  const Image motion = io::readExr(out / "frame_00000/sensors/cwtof/cwtof_motion_error.exr");
+  EXPECT_NEAR(motion.data.at(kCentre), (expected - still) * perRad, 1e-4 * perRad);
   // The ground truth is the frame's own time: the plane at d0.
   EXPECT_NEAR(io::readNpy(out / "frame_00000/depth.npy").data.at(kCentre), kD0 * kOffAxis, 1e-5);
 }

@@ -26,7 +26,10 @@ capture::RenderJob prepareCapture(const config::RunConfig& config, const scene::
 RenderedCapture renderCapture(const config::RunConfig& config, const capture::RenderJob& job,
                               gl::EglPlatform eglPlatform, const CaptureConsumers& consumers,
                               Progress& progress) {
-  return renderCapture(config, job, makeRenderer(config, eglPlatform), consumers, progress);
+  const RendererChoice choice = makeRenderer(config, eglPlatform);
+  RenderedCapture rendered = renderCapture(config, job, choice, consumers, progress);
+  progress.message("device: " + rendered.device + " (backend " + rendered.backend + ")");
+  return rendered;
 }
 
 RenderedCapture renderCapture(const config::RunConfig& config, const capture::RenderJob& job,
@@ -73,7 +76,6 @@ RenderedCapture renderCapture(const config::RunConfig& config, const capture::Re
       });
   throwIfInterrupted();  // a Ctrl-C during the last segment still means "stop"
   rendered.result.nonFiniteRejected = finite.nonFiniteValues();
-  progress.message("device: " + rendered.device + " (backend " + rendered.backend + ")");
   if (rendered.result.nonFiniteRejected > 0) {
     std::fprintf(stderr,
                  "tofsim: warning: %zu NaN/infinite volume values written as 0 "

@@ -119,6 +119,8 @@ RunSummary runSequenceRender(const config::RunConfig& config, const RunOptions& 
   // re-prepared in place per frame) and the scene, whose moving meshes and
   // cameras alone are re-baked at each time.
   const RendererChoice renderer = makeRenderer(config, options.eglPlatform);
+  progress.message("device: " + renderer.renderer->description() + " (backend " +
+                   renderer.backend + ")");
   scene::Scene scene = animated.restScene();
   json frames = json::array();
   std::size_t rendered = 0;

@@ -154,7 +154,10 @@ std::vector<std::string> cwtofWarnings(const CwTofParams& params, const TimeAxis
 /// at each pixel's true depth: the waveform's, multipath excluded); with a direct-only
 /// volume, "cwtof_mpi_error_direct" (noise-free depth - direct-only depth);
 /// with the lens's PSF (StreamOptions::psfOnRaws or beforePsf),
-/// "cwtof_psf_error" (noise-free depth with it - without it);
+/// "cwtof_psf_error" (noise-free depth with it - without it); in a frame of
+/// a capture sequence whose raws are taken at different times,
+/// "cwtof_motion_error" (noise-free depth of the raws as taken - that of the
+/// light at the frame's time, through the same device);
 /// with multipath_by_order, "cwtof_multipath_error_by_order" Array (N + 1,
 /// H, W): order k = the depth of direct + bounces 1..k - ground truth, NaN
 /// where that light is zero, and a ColorMappedImage of each order,

@@ -62,7 +62,8 @@ RenderedCapture renderCapture(const config::RunConfig& config, const capture::Re
                               gl::EglPlatform eglPlatform, const CaptureConsumers& consumers,
                               Progress& progress);
 /// The same with a renderer made earlier (makeRenderer), kept across the
-/// renders of a sequence so that its device and scene are set up once.
+/// renders of a sequence so that its device and scene are set up once (the
+/// caller names the device: not once per render).
 RenderedCapture renderCapture(const config::RunConfig& config, const capture::RenderJob& job,
                               const RendererChoice& renderer, const CaptureConsumers& consumers,
                               Progress& progress);
