@@ -46,10 +46,11 @@ std::vector<double> noiseFreePhases(const CwTofParams& p, const TimeAxis& axis,
 
 // (F, S) and its max |error|, RMS and mean, over all and per frequency.
 SensorOutput wigglingErrorOutput(const std::vector<double>& wiggling_m,
-                                const std::vector<double>& frequencies_Hz) {
+                                 const std::vector<double>& frequencies_Hz) {
   const int32_t S = kWigglingSweepPoints;
   SensorOutput o = makeOutput(
-      "cwtof_wiggling_error", SensorOutput::Kind::Array, {static_cast<int64_t>(frequencies_Hz.size()), S}, {"frequency", "sweep"},
+      "cwtof_wiggling_error", SensorOutput::Kind::Array,
+      {static_cast<int64_t>(frequencies_Hz.size()), S}, {"frequency", "sweep"},
       {wiggling_m.begin(), wiggling_m.end()}, "m",
       "CW-ToF wiggling error: N-step depth - true depth of a noise-free single return swept "
       "over each frequency's unambiguous range (frequency, sweep point)");

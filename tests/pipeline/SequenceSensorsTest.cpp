@@ -8,7 +8,8 @@
 //   row's streak shows the plane where it was at its own time;
 // - scene flow and optical flow to the next frame: the plane's point moves
 //   by (0, 0, -v dt), and its image towards the centre by the ratio of
-//   depths, (x - c)(d0 / d1 - 1) pixels.
+//   depths, (x - c)(d0 / d1 - 1) pixels;
+// - each frame's bytes are the same across threads and memory budgets.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -146,6 +147,28 @@ TEST_F(SequenceSensorsTest, SceneAndOpticalFlowToTheNextFrameAreThePlanesMotion)
   const nlohmann::json record =
       nlohmann::json::parse(std::ifstream(out / "frame_00000/frame.json"));
   EXPECT_EQ(record.at("motion_to_time_s"), 0.5);
+}
+
+// Each frame's bytes, the sensors' over their sample times included, do not
+// depend on the threads or on how the memory budget cuts the volume.
+TEST_F(SequenceSensorsTest, FramesAreTheSameBytesAcrossThreadsAndMemoryBudgets) {
+  writeScene(1.0);
+  const std::string seq = "sequence: {times: [0 s, 0.5 s], exposure_samples: 2}\n";
+  const config::RunConfig c =
+      config(seq, kTime, kSpad + ", exposure_time: 100 ms, plot_pixels: [[4, 4]]}");
+  const fs::path a = run(c, "a");
+  config::RunConfig other = c;
+  other.cpu_threads = 1;
+  other.render.memory_budget_bytes = 64 << 10;  // a few rows of the 8 x 8 x 800 x 3 volume at once
+  const fs::path b = run(other, "b");
+  for (const char* f :
+       {"frame_00000/transient.npy", "frame_00001/transient.npy",
+        "frame_00000/sensors/spad/spad_counts.npy", "frame_00001/sensors/spad/spad_counts.npy",
+        "frame_00000/scene_flow.npy", "frame_00000/optical_flow.npy", "depth_sequence.npy"}) {
+    const std::string bytes = bytesOf(a / f);
+    EXPECT_FALSE(bytes.empty()) << f;
+    EXPECT_EQ(bytes, bytesOf(b / f)) << f;
+  }
 }
 
 }  // namespace

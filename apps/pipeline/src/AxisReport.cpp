@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <vector>
 
+#include "Warning.h"
 #include "tofsim/pipeline/Capture.h"
 #include "tofsim/scene/GltfLoader.h"
 #include "tofsim/sensors/WindowLoss.h"
@@ -55,7 +56,7 @@ void warnOrThrow(const config::RunConfig& config, const std::string& key, const 
     throw InputError(FileLoc{config.config_file.string()}, key,
                      text + " (--strict / render.strict)");
   }
-  std::fprintf(stderr, "tofsim: warning: %s\n", text.c_str());
+  warn(text);
 }
 
 double sumOf(const Image& image) {

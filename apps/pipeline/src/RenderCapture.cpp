@@ -5,6 +5,7 @@
 #include <utility>
 #include <vector>
 
+#include "Warning.h"
 #include "tofsim/optics/PsfConvolution.h"
 #include "tofsim/pipeline/AxisReport.h"
 #include "tofsim/pipeline/Capture.h"
@@ -77,10 +78,9 @@ RenderedCapture renderCapture(const config::RunConfig& config, const capture::Re
   throwIfInterrupted();  // a Ctrl-C during the last segment still means "stop"
   rendered.result.nonFiniteRejected = finite.nonFiniteValues();
   if (rendered.result.nonFiniteRejected > 0) {
-    std::fprintf(stderr,
-                 "tofsim: warning: %zu NaN/infinite volume values written as 0 "
-                 "(transient.json stats.rejected_non_finite_values)\n",
-                 rendered.result.nonFiniteRejected);
+    warn(std::to_string(rendered.result.nonFiniteRejected) +
+         " NaN/infinite volume values written as 0 (transient.json "
+         "stats.rejected_non_finite_values)");
   }
   rendered.steady = steady.steady();
   if (psfConfig && consumers.psfOnRaws) {  // the sum over bins of the blurred bins, by linearity

@@ -6,6 +6,7 @@
 #include <optional>
 #include <string>
 
+#include "Warning.h"
 #include "tofsim/pipeline/Capture.h"
 #include "tofsim/pipeline/OutputProducts.h"
 #include "tofsim/pipeline/PlotRanges.h"
@@ -20,8 +21,7 @@ namespace tofsim::pipeline {
 
 void warnUntakenPlotRanges(const std::vector<std::string>& keys) {
   for (const std::string& key : keys) {
-    std::fprintf(stderr, "tofsim: warning: output.plot_ranges.%s names no picture of this run\n",
-                 key.c_str());
+    warn("output.plot_ranges." + key + " names no picture of this run");
   }
 }
 

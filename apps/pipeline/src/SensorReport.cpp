@@ -2,6 +2,7 @@
 
 #include <cstdio>
 
+#include "Warning.h"
 #include "tofsim/sensors/SensorSpec.h"
 
 namespace tofsim::pipeline {
@@ -16,8 +17,7 @@ void rethrowSensorError(const config::RunConfig& config, std::size_t i, const In
 void printSensorWarnings(const sensors::SensorSpec& spec,
                          const std::vector<std::string>& warnings) {
   for (const std::string& w : warnings) {
-    std::fprintf(stderr, "tofsim: warning: sensor '%s' (%s): %s\n", spec.name.c_str(),
-                 sensors::sensorTypeName(spec.params), w.c_str());
+    warn("sensor '" + spec.name + "' (" + sensors::sensorTypeName(spec.params) + "): " + w);
   }
 }
 

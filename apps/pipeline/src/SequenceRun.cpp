@@ -9,6 +9,7 @@
 #include "SequenceFrame.h"
 #include "SequenceMotion.h"
 #include "SequenceVideo.h"
+#include "Warning.h"
 #include "tofsim/io/Npy.h"
 #include "tofsim/pipeline/Manifest.h"
 #include "tofsim/pipeline/OutputFileNames.h"
@@ -100,6 +101,7 @@ void writeDepthSequence(const fs::path& root, std::size_t frames) {
 
 RunSummary runSequenceRender(const config::RunConfig& config, const RunOptions& options) {
   const config::SequenceConfig& seq = *config.sequence;
+  const RepeatedWarningsOnce once;  // each frame would repeat the same warnings
   Progress progress("sequence", options.quiet);
   scene::LoadReport report;
   const scene::AnimatedScene animated = scene::AnimatedScene::load(config.scene_file, &report);
@@ -119,8 +121,8 @@ RunSummary runSequenceRender(const config::RunConfig& config, const RunOptions& 
   // re-prepared in place per frame) and the scene, whose moving meshes and
   // cameras alone are re-baked at each time.
   const RendererChoice renderer = makeRenderer(config, options.eglPlatform);
-  progress.message("device: " + renderer.renderer->description() + " (backend " +
-                   renderer.backend + ")");
+  progress.message("device: " + renderer.renderer->description() + " (backend " + renderer.backend +
+                   ")");
   scene::Scene scene = animated.restScene();
   json frames = json::array();
   std::size_t rendered = 0;
