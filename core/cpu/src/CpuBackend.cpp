@@ -142,14 +142,20 @@ void CpuBackend::allocate(std::size_t pixelsPerSegment, std::size_t vplsPerBatch
   finishSurfaces();
   pixelsPerSegment_ = pixelsPerSegment;
   const std::size_t floats = pixelsPerSegment * job_.settings.time.bins * kChannels;
-  direct_.assign(floats, 0.0f);
-  indirect_.assign(floats, 0.0f);
+  const std::size_t footprintFloats = job_.settings.pixel_footprint ? floats : 0;
+  // Fresh buffers come zero from the kernel; buffers of the same size (the
+  // next render of a sequence) are kept, zeroed where an unfinished segment
+  // left something.
+  if (direct_.size() != floats || footprint_.size() != footprintFloats) {
+    direct_ = util::ZeroedBuffer<float>(floats);
+    indirect_ = util::ZeroedBuffer<float>(floats);
+    footprint_ = util::ZeroedBuffer<double>(footprintFloats);  // the plan counted it
+    footprintWritten_.assign(pixelsPerSegment, 0);
+  } else if (!accumulatorsZero_) {
+    clearAccumulators(pixelsPerSegment);
+  }
   accumulatorsZero_ = true;
   outside_.assign(pixelsPerSegment, physics::OffAxisSums{});
-  // The plan counted the footprint buffers (capture::PixelBuffers); they start
-  // zero and integratePixel clears what it read.
-  footprint_.reset(job_.settings.pixel_footprint ? new double[floats] : nullptr);
-  footprintWritten_.assign(pixelsPerSegment, 0);
   segmentSurfaces_.resize(pixelsPerSegment * maxSamplesPerPixel());
   segmentLit_.resize(pixelsPerSegment * maxSamplesPerPixel());
   segmentFirstSample_.resize(pixelsPerSegment + 1);
@@ -167,11 +173,7 @@ void CpuBackend::beginSegment(std::size_t firstPixel, std::size_t count) {
   // readSegment leaves the histograms zero (it zeroes each pixel's as it
   // copies it out, while it is in cache): a second pass over the segment's
   // memory only after an unfinished one.
-  if (!accumulatorsZero_) {
-    const std::size_t floats = count * job_.settings.time.bins * kChannels;
-    std::fill_n(direct_.begin(), floats, 0.0f);
-    std::fill_n(indirect_.begin(), floats, 0.0f);
-  }
+  if (!accumulatorsZero_) clearAccumulators(pixelsPerSegment_);
   accumulatorsZero_ = false;
   std::fill_n(outside_.begin(), count, physics::OffAxisSums{});
   const capture::RenderSettings& s = job_.settings;
@@ -229,17 +231,27 @@ void CpuBackend::fillSurface(std::size_t i, float weight, const capture::PixelSt
 
 double* CpuBackend::footprintOf(std::size_t i) {
   const std::size_t stride = static_cast<std::size_t>(job_.settings.time.bins) * kChannels;
-  double* diff = footprint_.get() + i * stride;
-  if (!footprintWritten_[i]) std::fill_n(diff, stride, 0.0);
   footprintWritten_[i] = 1;
-  return diff;
+  return footprint_.data() + i * stride;
 }
 
 void CpuBackend::integratePixel(std::size_t i, float* histogram) {
   if (!footprintWritten_[i]) return;
-  const int bins = job_.settings.time.bins;
-  physics::integrateFootprint(footprint_.get() + i * bins * kChannels, bins, histogram);
-  footprintWritten_[i] = 0;  // zeroed again by footprintOf when next needed
+  const std::size_t stride = static_cast<std::size_t>(job_.settings.time.bins) * kChannels;
+  double* diff = footprint_.data() + i * stride;
+  physics::integrateFootprint(diff, static_cast<int32_t>(job_.settings.time.bins), histogram);
+  std::fill_n(diff, stride, 0.0);  // while in cache: zero for the next wide kernel
+  footprintWritten_[i] = 0;
+}
+
+void CpuBackend::clearAccumulators(std::size_t pixels) {
+  const std::size_t stride = static_cast<std::size_t>(job_.settings.time.bins) * kChannels;
+  std::fill_n(direct_.data(), pixels * stride, 0.0f);
+  std::fill_n(indirect_.data(), pixels * stride, 0.0f);
+  for (std::size_t i = 0; i < pixels && footprint_.size() > 0; ++i) {
+    if (footprintWritten_[i]) std::fill_n(footprint_.data() + i * stride, stride, 0.0);
+    footprintWritten_[i] = 0;
+  }
 }
 
 void CpuBackend::gatherIndirect(std::size_t firstVpl, std::size_t count) {
@@ -357,7 +369,7 @@ void CpuBackend::gatherPixelBlock(const IndirectConstants& c, std::size_t first,
   }
 }
 
-void CpuBackend::moveOut(std::vector<float>& from, float* to, bool integrateFootprints) {
+void CpuBackend::moveOut(float* from, float* to, bool integrateFootprints) {
   const std::size_t tiles = (pixelCount_ + kTilePixels - 1) / kTilePixels;
   const std::size_t stride = static_cast<std::size_t>(job_.settings.time.bins) * kChannels;
   // Per pixel while its histogram is in cache: the wide footprint kernels
@@ -375,14 +387,14 @@ void CpuBackend::moveOut(std::vector<float>& from, float* to, bool integrateFoot
 }
 
 void CpuBackend::takeIndirect(float* indirect) {
-  moveOut(indirect_, indirect, job_.settings.pixel_footprint);
+  moveOut(indirect_.data(), indirect, job_.settings.pixel_footprint);
 }
 
 void CpuBackend::readSegment(float* direct, float* indirect, AxisLoss& offAxis) {
   // The direct gather integrated its footprints itself; the indirect gathers'
   // wide kernels, added after every batch, are summed once per pixel here.
-  moveOut(direct_, direct, false);
-  moveOut(indirect_, indirect, job_.settings.pixel_footprint);
+  moveOut(direct_.data(), direct, false);
+  moveOut(indirect_.data(), indirect, job_.settings.pixel_footprint);
   accumulatorsZero_ = true;
   for (std::size_t i = 0; i < pixelCount_; ++i) {
     offAxis.before += outside_[i].before;

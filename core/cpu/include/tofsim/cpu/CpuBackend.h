@@ -27,6 +27,7 @@
 
 #include "tofsim/capture/RenderJob.h"
 #include "tofsim/ir/IrBackend.h"
+#include "tofsim/util/ZeroedBuffer.h"
 
 namespace tofsim::rays {
 class RayScene;
@@ -107,11 +108,14 @@ class CpuBackend : public ir::IrBackend {
                                   physics::OffAxisSums& lost);
   /// Adds pixel i's footprint buffer, if written, to `histogram` and clears it.
   void integratePixel(std::size_t i, float* histogram);
+  /// Zero the first `pixels` pixels' histograms and footprint buffers (what
+  /// an unfinished segment left).
+  void clearAccumulators(std::size_t pixels);
   /// Pixel i's footprint buffer, zeroed first if it held nothing.
   double* footprintOf(std::size_t i);
   /// The segment's histograms in `from` out to `to` (with the indirect
   /// light's wide footprint kernels summed in, pixel by pixel), and zeroed.
-  void moveOut(std::vector<float>& from, float* to, bool integrateFootprints);
+  void moveOut(float* from, float* to, bool integrateFootprints);
   /// Traces every pixel's N x N samples if adaptive samples are still waiting
   /// for a mask that did not come.
   void finishSurfaces();
@@ -144,15 +148,17 @@ class CpuBackend : public ir::IrBackend {
   /// two above, surfaces_ entries from firstSample_ on.
   std::vector<std::size_t> segmentFirstSample_;
   std::size_t firstSample_ = 0;
-  std::vector<float> direct_, indirect_;
-  /// direct_ and indirect_ hold zeros (after allocate and readSegment).
+  /// The segment's histograms, (pixel, bin, channel); zero from the kernel
+  /// (ZeroedBuffer.h) and kept across renders of the same size.
+  util::ZeroedBuffer<float> direct_, indirect_;
+  /// direct_, indirect_ and footprint_ hold zeros (after allocate and readSegment).
   bool accumulatorsZero_ = false;
   std::vector<physics::OffAxisSums> outside_;  ///< per pixel of the segment: light off the axis
   /// The pixel footprint's difference buffers (bins x 3 doubles per pixel of
-  /// the segment) and which pixels' buffers hold something. Uninitialised:
-  /// a pixel's buffer is zeroed when its first wide kernel arrives
-  /// (footprintOf), so pixels without one never touch its pages.
-  std::unique_ptr<double[]> footprint_;
+  /// the segment) and which pixels' buffers hold something. Zero but where
+  /// written: integratePixel zeroes what it read, while in cache, so pixels
+  /// without a wide kernel never touch their pages.
+  util::ZeroedBuffer<double> footprint_;
   std::vector<unsigned char> footprintWritten_;
   std::size_t firstPixel_ = 0, pixelCount_ = 0, pixelsPerSegment_ = 0;
   float sceneScale_m_ = 1.0f;
