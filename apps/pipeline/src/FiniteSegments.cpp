@@ -16,34 +16,48 @@ std::size_t zeroNonFinite(float* values, std::size_t count) {
   return rejected;
 }
 
+namespace {
+
+// A read-only pass, at memory speed: whether a component needs its copy.
+bool allFinite(const float* values, std::size_t count) {
+  bool finite = true;
+  for (std::size_t i = 0; i < count; ++i) finite &= std::isfinite(values[i]);
+  return finite;
+}
+
+}  // namespace
+
 FiniteSegments::FiniteSegments(capture::SegmentSink& next, int32_t bins,
                                std::vector<int32_t> bounces)
     : next_(next), bins_(bins), bounces_(std::move(bounces)), bounceCopies_(bounces_.size()) {}
 
+const float* FiniteSegments::finite(const float* values, std::size_t count,
+                                    std::vector<float>& copy, bool counted) {
+  if (allFinite(values, count)) return values;  // the renderer's own buffer, uncopied
+  copy.assign(values, values + count);
+  const std::size_t rejected = zeroNonFinite(copy.data(), count);
+  if (!counted) nonFinite_ += rejected;
+  return copy.data();
+}
+
 void FiniteSegments::consume(const capture::Segment& segment) {
   const std::size_t floats =
       segment.pixelCount * static_cast<std::size_t>(bins_) * capture::kChannels;
-  const float* direct = segment.component(capture::kDirect);
-  const float* indirect = segment.component(capture::kIndirect);
-  direct_.assign(direct, direct + floats);
-  indirect_.assign(indirect, indirect + floats);
-  nonFinite_ += zeroNonFinite(direct_.data(), floats);
-  nonFinite_ += zeroNonFinite(indirect_.data(), floats);
+  const float* direct = finite(segment.component(capture::kDirect), floats, direct_, false);
+  const float* indirect = finite(segment.component(capture::kIndirect), floats, indirect_, false);
   total_.resize(floats);
   // total = direct + indirect in float, so each component file adds up to it.
-  for (std::size_t i = 0; i < floats; ++i) total_[i] = direct_[i] + indirect_[i];
+  for (std::size_t i = 0; i < floats; ++i) total_[i] = direct[i] + indirect[i];
   nonFinite_ += zeroNonFinite(total_.data(), floats);  // two finite floats can overflow
-  capture::Segment clean{segment.firstPixel,
-                         segment.pixelCount,
-                         {{capture::kDirect, direct_.data()},
-                          {capture::kIndirect, indirect_.data()},
-                          {kTotal, total_.data()}}};
+  capture::Segment clean{
+      segment.firstPixel,
+      segment.pixelCount,
+      {{capture::kDirect, direct}, {capture::kIndirect, indirect}, {kTotal, total_.data()}}};
   for (std::size_t i = 0; i < bounces_.size(); ++i) {
     const std::string_view name = capture::bounceComponent(bounces_[i]);
-    const float* bounce = segment.component(name);
-    bounceCopies_[i].assign(bounce, bounce + floats);
-    zeroNonFinite(bounceCopies_[i].data(), floats);  // already counted in indirect's
-    clean.components.push_back({name, bounceCopies_[i].data()});
+    // Already counted in indirect's.
+    clean.components.push_back(
+        {name, finite(segment.component(name), floats, bounceCopies_[i], true)});
   }
   next_.consume(clean);
 }

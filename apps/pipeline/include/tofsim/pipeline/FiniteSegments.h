@@ -1,10 +1,12 @@
 #pragma once
 // The first stage behind a renderer: NaN and infinity never reach the outputs
 // silently. Each segment's direct and indirect light, their float sum (the
-// total, component kTotal) and the bounces asked for are copied with every
-// value that is not finite written as 0 and counted (nonFiniteValues()), and
-// handed on as one segment to the consumers (files, sensors, arrays). The one
-// rule for every output path: the CLI's files and the Python module's arrays.
+// total, component kTotal) and the bounces asked for are handed on as one
+// segment to the consumers (files, sensors, arrays) with every value that is
+// not finite written as 0 and counted (nonFiniteValues()): a component that
+// has such values is copied and cleaned, the others (nearly always all) go
+// on as the renderer made them, uncopied. The one rule for every output
+// path: the CLI's files and the Python module's arrays.
 
 #include <cstddef>
 #include <cstdint>
@@ -32,10 +34,15 @@ class FiniteSegments : public capture::SegmentSink {
   std::size_t nonFiniteValues() const { return nonFinite_; }
 
  private:
+  /// `values`, or where some are not finite `copy` of them cleaned (and
+  /// counted unless `counted` already).
+  const float* finite(const float* values, std::size_t count, std::vector<float>& copy,
+                      bool counted);
+
   capture::SegmentSink& next_;
   int32_t bins_;
   std::vector<int32_t> bounces_;
-  std::vector<float> direct_, indirect_, total_;
+  std::vector<float> direct_, indirect_, total_;  ///< copies only where needed, and the total
   std::vector<std::vector<float>> bounceCopies_;  ///< one per bounces_ entry
   std::size_t nonFinite_ = 0;
 };
