@@ -45,14 +45,17 @@ void FiniteSegments::consume(const capture::Segment& segment) {
       segment.pixelCount * static_cast<std::size_t>(bins_) * capture::kChannels;
   const float* direct = finite(segment.component(capture::kDirect), floats, direct_, false);
   const float* indirect = finite(segment.component(capture::kIndirect), floats, indirect_, false);
-  total_.resize(floats);
+  if (totalSize_ < floats) {  // uninitialised: every value is written just below
+    total_.reset(new float[floats]);
+    totalSize_ = floats;
+  }
   // total = direct + indirect in float, so each component file adds up to it.
   for (std::size_t i = 0; i < floats; ++i) total_[i] = direct[i] + indirect[i];
-  nonFinite_ += zeroNonFinite(total_.data(), floats);  // two finite floats can overflow
+  nonFinite_ += zeroNonFinite(total_.get(), floats);  // two finite floats can overflow
   capture::Segment clean{
       segment.firstPixel,
       segment.pixelCount,
-      {{capture::kDirect, direct}, {capture::kIndirect, indirect}, {kTotal, total_.data()}}};
+      {{capture::kDirect, direct}, {capture::kIndirect, indirect}, {kTotal, total_.get()}}};
   for (std::size_t i = 0; i < bounces_.size(); ++i) {
     const std::string_view name = capture::bounceComponent(bounces_[i]);
     // Already counted in indirect's.

@@ -4,6 +4,7 @@
 #include <memory>
 
 #include "tofsim/util/Error.h"
+#include "tofsim/util/ZeroedBuffer.h"
 
 namespace tofsim::capture {
 
@@ -13,20 +14,22 @@ void streamSegments(const SegmentPlan& plan, const TimeAxis& axis,
                     AxisLoss& offAxis, const SegmentFill& fill) {
   TOFSIM_CHECK(!names.empty() && names[0] == capture::kDirect);
   const std::size_t floatsPerPixel = static_cast<std::size_t>(axis.bins) * capture::kChannels;
-  // Uninitialised: each segment zeroes what it uses just below, so a
-  // value-initialised vector would write every float once more.
-  std::vector<std::unique_ptr<float[]>> storage;
+  // Zero and resident from the kernel (ZeroedBuffer.h): the first segment
+  // needs no pass of its own over them, the later ones zero what they use.
+  std::vector<util::ZeroedBuffer<float>> storage;
   SegmentBuffers buffers;
   for (std::size_t c = 0; c < names.size(); ++c) {
-    storage.emplace_back(new float[plan.pixelsPerSegment * floatsPerPixel]);
-    buffers.components.push_back(storage.back().get());
+    storage.emplace_back(plan.pixelsPerSegment * floatsPerPixel);
+    buffers.components.push_back(storage.back().data());
   }
   capture::Segment segment;
   for (std::size_t s = 0; s < plan.segmentCount; ++s) {
     buffers.index = s;
     buffers.pixels = plan.segment(s);
     const std::size_t floats = buffers.pixels.count * floatsPerPixel;
-    for (float* c : buffers.components) std::fill_n(c, floats, 0.0f);
+    if (s > 0) {
+      for (float* c : buffers.components) std::fill_n(c, floats, 0.0f);
+    }
     fill(buffers);
     offAxis += lightView.addTo(buffers.pixels.first, buffers.pixels.count, axis, capture::kChannels,
                                buffers.components[0]);

@@ -10,6 +10,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <string_view>
 #include <vector>
 
@@ -42,7 +43,9 @@ class FiniteSegments : public capture::SegmentSink {
   capture::SegmentSink& next_;
   int32_t bins_;
   std::vector<int32_t> bounces_;
-  std::vector<float> direct_, indirect_, total_;  ///< copies only where needed, and the total
+  std::vector<float> direct_, indirect_;  ///< copies, only where needed
+  std::unique_ptr<float[]> total_;        ///< direct + indirect, totalSize_ floats
+  std::size_t totalSize_ = 0;
   std::vector<std::vector<float>> bounceCopies_;  ///< one per bounces_ entry
   std::size_t nonFinite_ = 0;
 };
