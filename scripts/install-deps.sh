@@ -9,6 +9,7 @@ packages=(
   libegl-dev libgl-dev libegl-mesa0 libgl1-mesa-dri  # headless GL: EGL + Mesa llvmpipe
   libglm-dev libtinygltf-dev nlohmann-json3-dev libyaml-cpp-dev libcli11-dev
   libopenexr-dev libopencv-dev libgtest-dev
+  libpng-dev                                         # the PNGs (OpenCV's imgcodecs costs every process 0.05 s to load)
   libembree-dev                                      # the CPU reference path tracer
   libhdf5-dev                                        # NLOS captures in y-tal's HDF5 layout (core/io)
   python3-dev pybind11-dev python3-numpy python3-pytest  # the Python module and its tests

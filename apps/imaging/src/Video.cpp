@@ -5,10 +5,11 @@
 #include <cstdio>
 #include <map>
 #include <opencv2/imgproc.hpp>
-#include <opencv2/videoio.hpp>
+#include <optional>
 #include <vector>
 
 #include "PngFile.h"
+#include "VideoModule.h"
 #include "tofsim/util/Error.h"
 
 namespace tofsim::imaging {
@@ -108,6 +109,8 @@ BinFrames binFramesOf(const TransientVolume& volume) {
   return frames;
 }
 
+void requireVideoEncoder() { detail::loadVideoModule(); }
+
 void writeTransientVideo(const std::filesystem::path& mp4Path, const BinFrames& frames,
                          const VideoOptions& options, const std::filesystem::path& pngDirectory) {
   TOFSIM_CHECK(options.stride >= 1 && options.window >= 1);
@@ -117,33 +120,25 @@ void writeTransientVideo(const std::filesystem::path& mp4Path, const BinFrames& 
   // the .mp4 extension.
   std::filesystem::path temp = mp4Path;
   temp.replace_extension(".tmp.mp4");
-  cv::VideoWriter writer;
-  if (!mp4Path.empty()) {
-    writer.open(temp.string(), cv::VideoWriter::fourcc('m', 'p', '4', 'v'), options.fps,
-                cv::Size(size.width, size.height), true);
-  }
-  if (!mp4Path.empty() && !writer.isOpened()) {
-    throw InputError(mp4Path.string() +
-                     ": OpenCV cannot write MP4 (fourcc mp4v); is its FFmpeg "
-                     "video I/O backend installed (libopencv-videoio)?");
-  }
+  std::optional<detail::Mp4Writer> writer;
+  if (!mp4Path.empty()) writer.emplace(temp, options.fps, size.width, size.height);
   if (!pngDirectory.empty()) std::filesystem::create_directories(pngDirectory);
   try {
     for (int32_t t = 0; t < frames.axis.bins; t += options.stride) {
       const cv::Mat frame = frameOf(frames, window, t, options.window, options.toneMap, size);
-      if (writer.isOpened()) writer.write(frame);
+      if (writer) writer->write(frame.data, frame.step);
       if (!pngDirectory.empty()) {
         char name[32];
         std::snprintf(name, sizeof name, "frame_%05d.png", t);
         detail::savePng(pngDirectory / name, frame);
       }
     }
-    if (writer.isOpened()) {
-      writer.release();
+    if (writer) {
+      writer->close();
       std::filesystem::rename(temp, mp4Path);
     }
   } catch (...) {
-    writer.release();
+    writer.reset();
     std::error_code ec;
     if (!mp4Path.empty()) std::filesystem::remove(temp, ec);
     throw;

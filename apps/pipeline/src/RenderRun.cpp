@@ -255,6 +255,10 @@ void writeOutputs(const config::RunConfig& config, const capture::RenderJob& job
                   RunSummary& summary, const SequenceFrame* frame) {
   const config::OutputConfig& out = config.output;
   const std::vector<OutputProduct> products = renderProducts(config);
+  // Its encoder loaded before the render, not found missing after it.
+  if (config.output.video || (config.sequence && config.sequence->video)) {
+    imaging::requireVideoEncoder();
+  }
   // The sensors see what the render saves (the total volume, plus the direct
   // component and the depth when the output writes them), so `tofsim sense`
   // on the saved folder reproduces their outputs byte for byte.

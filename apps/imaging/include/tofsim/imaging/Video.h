@@ -61,6 +61,10 @@ struct BinFrames {
 /// The frames of a volume in memory.
 BinFrames binFramesOf(const TransientVolume& volume);
 
+/// Loads the MP4 encoder (a module of its own, loaded on first use); throws
+/// InputError when it cannot be: a run that will write a video asks first.
+void requireVideoEncoder();
+
 /// Writes the video atomically (an empty mp4Path: only the PNGs) (to "<stem>.tmp.mp4", renamed when
 /// complete). With `pngDirectory` not empty, also writes each frame as pngDirectory/frame_NNNNN.png
 /// (NNNNN = the time bin). Holds the bins of one frame's window. Throws InputError when OpenCV
