@@ -4,14 +4,17 @@
 the truth (max_depth 3: direct + one bounce, TRUTH_SPP) and a ladder of spp
 (64 .. 16384); each tofsim variant's relative L1 error (R + G + B, the
 transient rebinned to 100 ps) over all pixels and over interior pixels
-(the 3 x 3 neighbourhood on one plane: every neighbour's tofsim depth
-within 1 mm of the plane through its row and column neighbours), and
+(the 3 x 3 neighbourhood's pixel centres all on one of the scene's glTF
+meshes, by a ray cast here), and
 mitransient's seconds to the same error, interpolated log-log between its
 runs. tofsim's time is its process wall (the whole run) and stats.seconds.
 
     python3 -m venv ~/mt && ~/mt/bin/pip install mitransient numpy
     DRJIT_LIBLLVM_PATH=/usr/lib/x86_64-linux-gnu/libLLVM.so.19.1 \\
-      ~/mt/bin/python bench/equal_error/compare_mitransient.py [SIDE=64] [TRUTH_SPP=65536] [OUT]
+      ~/mt/bin/python bench/equal_error/compare_mitransient.py [--edges] [SIDE=64] [TRUTH_SPP=65536] [OUT]
+
+--edges: instead of the issue's rows, ISM at RSM 64^2 with 1, 2x2, 4x4, 8x8
+samples at G-buffer edges and the default clamp: where the error is.
 """
 
 import json
@@ -40,9 +43,15 @@ VARIANTS = [
     ("exact, RSM 128^2, 3x3 at edges", ["render.indirect.rsm_resolution=128", "render.indirect.visibility=exact",
                                         "render.pixel_samples=3", "render.adaptive_pixel_samples=true"]),
 ]
+# --edges: where the error is, by edge samples (ISM, RSM 64^2, the default clamp).
+EDGE_VARIANTS = [
+    (f"ISM, RSM 64^2, {n}x{n} at edges, clamp 100",
+     ["render.indirect.rsm_resolution=64", "render.indirect.visibility=ism",
+      f"render.pixel_samples={n}", "render.adaptive_pixel_samples=true",
+      "render.indirect.geometry_clamp=100"]) for n in (1, 2, 4, 8)]
 COMMON = ["output.video=false", "sensors=[]", "output.components=[]", "light.cone_angle=30 deg",
           "light.cone_falloff=0 deg", "time.start=1.5 m", "time.bin_width=20 ps", f"time.bins={BINS}",
-          "render.indirect.geometry_clamp=0"]
+          "render.indirect.geometry_clamp=0"]  # the protocol's clamp 0 (EDGE_VARIANTS set their own)
 
 
 def rebinned(v):
@@ -56,16 +65,57 @@ def rel_l1(v, truth, mask):
     return float(np.abs(v - truth)[mask].sum() / np.abs(truth)[mask].sum())
 
 
-def interior(depth):
-    """Pixels whose 3 x 3 neighbourhood is one plane of tofsim's depth."""
-    d = depth
-    ok = np.zeros_like(d, dtype=bool)
-    c = d[1:-1, 1:-1]
-    flat_x = np.abs(d[1:-1, :-2] + d[1:-1, 2:] - 2 * c) < 1e-3
-    flat_y = np.abs(d[:-2, 1:-1] + d[2:, 1:-1] - 2 * c) < 1e-3
-    flat_d = np.abs(d[:-2, :-2] + d[2:, 2:] - 2 * c) < 1e-3
-    flat_a = np.abs(d[:-2, 2:] + d[2:, :-2] - 2 * c) < 1e-3
-    ok[1:-1, 1:-1] = flat_x & flat_y & flat_d & flat_a & (c > 0)
+def plane_ids(side):
+    """The glTF mesh (one plane or block) each pixel centre sees, -1 for
+    none: the demo camera's rays (tofsim's pinhole: right = forward x up)
+    against the scene's triangles (Moller-Trumbore)."""
+    import base64
+    import struct
+    doc = json.load(open(os.path.join(ROOT, "configs", "scenes", "cornell_box.gltf")))
+    blob = base64.b64decode(doc["buffers"][0]["uri"].split(",", 1)[1])
+    tris, ids = [], []
+    for mesh_id, m in enumerate(doc["meshes"]):
+        acc = doc["accessors"][m["primitives"][0]["attributes"]["POSITION"]]
+        view = doc["bufferViews"][acc["bufferView"]]
+        xyz = np.array(struct.unpack_from(f"<{3 * acc['count']}f", blob, view.get("byteOffset", 0)),
+                       dtype=np.float64).reshape(-1, 3, 3)
+        tris.append(xyz)
+        ids += [mesh_id] * len(xyz)
+    tris, ids = np.concatenate(tris), np.array(ids)
+    eye = np.array([0.278, 0.273, -0.8])
+    forward, up = np.array([0.0, 0.0, 1.0]), np.array([0.0, 1.0, 0.0])
+    right = np.cross(forward, up)
+    t = math.tan(math.radians(39.3076481) / 2)
+    u = (2 * (np.arange(side) + 0.5) / side - 1) * t
+    v = (1 - 2 * (np.arange(side) + 0.5) / side) * t
+    d = forward[None, None] + u[None, :, None] * right + v[:, None, None] * up  # (H, W, 3)
+    d = d.reshape(-1, 3)
+    e1, e2 = tris[:, 1] - tris[:, 0], tris[:, 2] - tris[:, 0]
+    p = np.cross(d[:, None], e2[None])                      # (R, T, 3)
+    det = np.einsum("rtk,tk->rt", p, e1)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        inv = 1.0 / det
+        s = eye[None] - tris[:, 0]                         # (T, 3)
+        bu = np.einsum("rtk,tk->rt", p, s) * inv
+        q = np.cross(s, e1)                                # (T, 3)
+        bv = np.einsum("rk,tk->rt", d, q) * inv
+        dist = np.einsum("tk,tk->t", e2, q)[None] * inv
+    hit = (np.abs(det) > 1e-12) & (bu >= 0) & (bv >= 0) & (bu + bv <= 1) & (dist > 1e-6)
+    dist = np.where(hit, dist, np.inf)
+    best = dist.argmin(axis=1)
+    out = np.where(np.isfinite(dist.min(axis=1)), ids[best], -1)
+    return out.reshape(side, side)
+
+
+def interior(ids):
+    """Pixels whose 3 x 3 neighbourhood's centres all see the pixel's plane."""
+    ok = np.zeros_like(ids, dtype=bool)
+    c = ids[1:-1, 1:-1]
+    same = c >= 0
+    for dy in (-1, 0, 1):
+        for dx in (-1, 0, 1):
+            same &= ids[1 + dy:ids.shape[0] - 1 + dy, 1 + dx:ids.shape[1] - 1 + dx] == c
+    ok[1:-1, 1:-1] = same
     return ok
 
 
@@ -100,6 +150,9 @@ def seconds_to(error, ladder):
 
 
 def main():
+    edges = "--edges" in sys.argv
+    if edges:
+        sys.argv.remove("--edges")
     side = int(sys.argv[1]) if len(sys.argv) > 1 else 64
     truth_spp = int(sys.argv[2]) if len(sys.argv) > 2 else 65536
     folder = sys.argv[3] if len(sys.argv) > 3 else tempfile.mkdtemp(prefix="tofsim-mt-")
@@ -108,10 +161,9 @@ def main():
     if not os.path.exists(truth_file):
         mitransient(truth_spp, side, truth_file)
     truth = rebinned(np.load(truth_file))
-    # The first tofsim variant's depth decides the interior pixels.
     runs = [(name, *tofsim(side, sets, os.path.join(folder, f"tofsim{i}")))
-            for i, (name, sets) in enumerate(VARIANTS)]
-    inside = np.broadcast_to(interior(runs[0][2])[:, :, None], truth.shape)
+            for i, (name, sets) in enumerate(EDGE_VARIANTS if edges else VARIANTS)]
+    inside = np.broadcast_to(interior(plane_ids(side))[:, :, None], truth.shape)
     everywhere = np.ones_like(truth, dtype=bool)
     ladder_in, ladder_all = [], []
     spp = 64
@@ -125,14 +177,17 @@ def main():
         spp *= 4
     print(f"\n{side}x{side}, truth mitransient {truth_spp} spp, {inside[:, :, 0].sum()} interior pixels of {side * side}")
     print("| tofsim IR (CPU backend, clamp 0) | process s / render s | transient L1 interior / all | "
-          "mitransient s to the same error, interior / all | speed-up (process) interior / all |")
-    print("|---|---|---|---|---|")
+          "mitransient s to the same error, interior / all | speed-up (process) interior / all | "
+          "edges' share of the error |")
+    print("|---|---|---|---|---|---|")
     for name, v, depth, wall, render in runs:
         ei, ea = rel_l1(rebinned(v), truth, inside), rel_l1(rebinned(v), truth, everywhere)
         ti, ta = seconds_to(ei, ladder_in), seconds_to(ea, ladder_all)
         fmt = lambda t: "off the ladder" if t is None else f"{t:.2f}"
         sp = lambda t: "-" if t is None else f"{t / wall:.1f}x"
-        print(f"| {name} | {wall:.2f} / {render:.2f} | {ei:.1%} / {ea:.1%} | {fmt(ti)} / {fmt(ta)} | {sp(ti)} / {sp(ta)} |")
+        edge_share = float(np.abs(rebinned(v) - truth)[~inside].sum() / np.abs(rebinned(v) - truth).sum())
+        print(f"| {name} | {wall:.2f} / {render:.2f} | {ei:.1%} / {ea:.1%} | {fmt(ti)} / {fmt(ta)} | "
+              f"{sp(ti)} / {sp(ta)} | {edge_share:.0%} |")
 
 
 if __name__ == "__main__":
