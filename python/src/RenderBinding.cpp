@@ -18,6 +18,7 @@
 #include "Bindings.h"
 #include "NlosBinding.h"
 #include "tofsim/capture/VolumeCollector.h"
+#include "tofsim/io/Exr.h"
 #include "tofsim/io/Npy.h"
 #include "tofsim/pipeline/FiniteSegments.h"
 #include "tofsim/pipeline/OutputProducts.h"
@@ -206,8 +207,15 @@ py::dict render(const config::RunConfig& config, const std::optional<std::string
 
 }  // namespace
 
+// An OpenEXR image as (H, W, C) float32 (a sequence's frames' steady.exr).
+py::array_t<float> readExrArray(const std::string& path) {
+  Image image = io::readExr(path);
+  return ownedArray(std::move(image.data), {image.height, image.width, image.channels});
+}
+
 void bindRender(py::module_& m) {
   m.def("_render", &render, py::arg("config"), py::arg("output_dir"), py::arg("quiet"));
+  m.def("_read_exr", &readExrArray, py::arg("path"));
 }
 
 }  // namespace tofsim::python

@@ -261,6 +261,8 @@ def test_a_sequence_returns_each_frames_arrays_on_a_leading_frame_axis(plane_con
     assert result.transient.shape == (2, 30, 40, 600, 3)
     assert result.depth.shape == (2, 30, 40)
     assert result.steady.shape == (2, 30, 40, 3)
+    np.testing.assert_allclose(result.steady, result.transient.sum(axis=3, dtype=np.float64),
+                               rtol=1e-5, atol=1e-9)  # each frame's steady.exr
     np.testing.assert_allclose(result.depth[1] / result.depth[0], 1.6 / 1.5, rtol=1e-5)
     # Scene flow to the next frame: the plane's points move by (0, 0, -0.1) m;
     # the last frame has no next one.

@@ -105,7 +105,7 @@ class SequenceResult:
     times_s: (F,) float64, the frames' times, seconds of scene time
     transient, direct, indirect: (F, H, W, T, C), as RenderResult's per frame
     depth: (F, H, W) camera-to-surface distance, metres (depth_sequence.npy)
-    steady: (F, H, W, C) each frame's transient summed over time
+    steady: (F, H, W, C) each frame's steady image (steady.exr, output.steady)
     scene_flow: (F, H, W, 3) metres, optical_flow: (F, H, W, 2) pixels: the
       motion of each pixel's surface to the next frame (frame k's
       scene_flow.npy, optical_flow.npy); NaN where no surface and all of the
@@ -149,6 +149,18 @@ def _stack_frames(folder, frames, name):
     return numpy.stack([nan if a is None else a for a in arrays])
 
 
+def _stack_steady(folder, frames):
+    """The frames' steady.exr (output.steady) on a leading axis, or None."""
+    import os
+
+    import numpy
+
+    paths = [os.path.join(folder, f["folder"], "steady.exr") for f in frames]
+    if not all(os.path.exists(p) for p in paths):
+        return None
+    return numpy.stack([_tofsim._read_exr(p) for p in paths])
+
+
 def _render_sequence(config, output_dir, quiet):
     import json
     import os
@@ -169,7 +181,7 @@ def _render_sequence(config, output_dir, quiet):
             direct=_stack_frames(folder, frames, "direct.npy"),
             indirect=_stack_frames(folder, frames, "indirect.npy"),
             depth=numpy.load(depth_file) if os.path.exists(depth_file) else None,
-            steady=None if transient is None else transient.sum(axis=3, dtype=numpy.float32),
+            steady=_stack_steady(folder, frames),
             scene_flow=_stack_frames(folder, frames, "scene_flow.npy"),
             optical_flow=_stack_frames(folder, frames, "optical_flow.npy"),
             time=TimeAxis(**out["time"]),
