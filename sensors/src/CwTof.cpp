@@ -10,8 +10,8 @@
 #include "CwTofCorrelator.h"
 #include "CwTofDeviceImages.h"
 #include "CwTofDeviceStage.h"
-#include "CwTofOutputs.h"
 #include "CwTofMotionError.h"
+#include "CwTofOutputs.h"
 #include "CwTofPsfError.h"
 #include "tofsim/optics/PsfConvolution.h"
 #include "tofsim/sensors/Random.h"
@@ -330,7 +330,7 @@ class CwTofStream final : public SensorStream {
   std::vector<double> wiggling_;                                // (F, S), m
   std::vector<double> signal_, ideal_, noisy_, phases_, amps_;  // per-pixel scratch
   std::optional<OrderDepths> byOrder_;                          // multipath_by_order
-  std::optional<CwTofPsfError> psfError_;  // with the lens's PSF: cwtof_psf_error
+  std::optional<CwTofPsfError> psfError_;   // with the lens's PSF: cwtof_psf_error
   std::optional<CwTofMotionError> motion_;  // raws at different times: cwtof_motion_error
   // A moving scene (beginPass): each raw's weight in the current pass, and
   // whether it is the frame's own time.
