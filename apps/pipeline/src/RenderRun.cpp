@@ -11,6 +11,7 @@
 #include "NlosRun.h"
 #include "SequenceFrame.h"
 #include "SequenceRun.h"
+#include "SequenceVideo.h"
 #include "tofsim/capture/VolumeCollector.h"  // defaultChannelNames
 #include "tofsim/imaging/Pictures.h"
 #include "tofsim/imaging/Video.h"
@@ -67,12 +68,7 @@ void writeFrames(const std::filesystem::path& directory, const imaging::BinFrame
 // transient.mp4 and/or frames/frame_NNNNN.png (the same pictures).
 void writeVideo(const std::filesystem::path& dir, const config::OutputConfig& out,
                 const imaging::BinFrames& frames, const Progress& progress) {
-  imaging::VideoOptions options;
-  options.toneMap = out.video_tone_map == config::VideoToneMap::Log ? imaging::ToneMap::Log
-                                                                    : imaging::ToneMap::Global;
-  options.stride = out.video_stride;
-  options.window = out.video_window;
-  options.fps = out.video_fps;
+  const imaging::VideoOptions options = videoOptions(out);
   progress.message(
       "video: " + std::to_string(imaging::videoFrameCount(frames.axis.bins, out.video_stride)) +
       " frame(s)");

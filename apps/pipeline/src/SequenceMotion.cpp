@@ -14,14 +14,6 @@ namespace {
 
 constexpr float kNone = std::numeric_limits<float>::quiet_NaN();
 
-glm::vec3 pointOn(const scene::Scene& scene, const rays::SurfaceHit& hit) {
-  const scene::Mesh& mesh = scene.meshes.at(hit.mesh);
-  const uint32_t* tri = &mesh.indices.at(static_cast<std::size_t>(hit.triangle) * 3);
-  const float u = hit.barycentric.x, v = hit.barycentric.y, w = 1.0f - u - v;
-  return w * mesh.positions_world[tri[0]] + u * mesh.positions_world[tri[1]] +
-         v * mesh.positions_world[tri[2]];
-}
-
 }  // namespace
 
 MotionFields motionFields(const config::RunConfig& config, const scene::AnimatedScene& animated,
@@ -42,10 +34,6 @@ MotionFields motionFields(const config::RunConfig& config, const scene::Animated
       }
     }
   }
-  std::vector<glm::vec3> from(hits.size());
-  for (std::size_t i = 0; i < hits.size(); ++i) {
-    if (hits[i]) from[i] = pointOn(scene, *hits[i]);  // as the triangle gives it, as at t1
-  }
   animated.updateScene(scene, t1_s);
   const capture::RenderJob at1 = makeRenderJob(config, scene);
   const capture::Camera* camera1 = capture::cameraOf(at1.imager);
@@ -58,10 +46,14 @@ MotionFields motionFields(const config::RunConfig& config, const scene::Animated
       for (int c = 0; c < 3; ++c) m.sceneFlow_m.at(y, x, c) = kNone;
       for (int c = 0; c < 2; ++c) m.opticalFlow_px.at(y, x, c) = kNone;
       if (!hits[i]) continue;
-      const glm::vec3 to = pointOn(scene, *hits[i]);
-      const glm::vec3 d = to - from[i];
+      // The same point on its triangle, where the triangle is at t1
+      // (position_world is surfacePoint's at t0).
+      const rays::SurfaceHit& hit = *hits[i];
+      const glm::vec3 from = hit.position_world;
+      const glm::vec3 to = rays::surfacePoint(scene, hit.mesh, hit.triangle, hit.barycentric);
+      const glm::vec3 d = to - from;
       for (int c = 0; c < 3; ++c) m.sceneFlow_m.at(y, x, c) = d[c];
-      const std::optional<glm::dvec2> p0 = camera0->imagePoint(from[i]);
+      const std::optional<glm::dvec2> p0 = camera0->imagePoint(from);
       const std::optional<glm::dvec2> p1 = camera1->imagePoint(to);
       if (!p0 || !p1) continue;  // behind a camera: no image displacement
       m.opticalFlow_px.at(y, x, 0) = static_cast<float>(p1->x - p0->x);

@@ -3,12 +3,21 @@
 #include <algorithm>
 #include <cstdio>
 
-#include "tofsim/imaging/Video.h"
 #include "tofsim/imaging/WhiteLevel.h"
 #include "tofsim/io/Exr.h"
 #include "tofsim/util/Error.h"
 
 namespace tofsim::pipeline {
+
+imaging::VideoOptions videoOptions(const config::OutputConfig& out) {
+  imaging::VideoOptions options;
+  options.toneMap = out.video_tone_map == config::VideoToneMap::Log ? imaging::ToneMap::Log
+                                                                    : imaging::ToneMap::Global;
+  options.stride = out.video_stride;
+  options.window = out.video_window;
+  options.fps = out.video_fps;
+  return options;
+}
 
 void writeSequenceVideo(const std::filesystem::path& mp4, const config::OutputConfig& out,
                         const std::vector<std::filesystem::path>& steadyFiles,
@@ -40,9 +49,9 @@ void writeSequenceVideo(const std::filesystem::path& mp4, const config::OutputCo
     std::snprintf(text, sizeof text, "frame %d: t = %.4f s", k, times_s[k]);
     return std::string(text);
   };
+  // One frame per frame, each alone: the tone map is the output keys'.
   imaging::VideoOptions options;
-  options.toneMap = out.video_tone_map == config::VideoToneMap::Log ? imaging::ToneMap::Log
-                                                                    : imaging::ToneMap::Global;
+  options.toneMap = videoOptions(out).toneMap;
   // The scene's own pace: frames as far apart in the video as in scene time.
   const double span = times_s.back() - times_s.front();
   options.fps = times_s.size() > 1 && span > 0.0 ? (times_s.size() - 1) / span : 1.0;

@@ -26,6 +26,15 @@ glm::vec3 faceTowards(glm::vec3 n, const glm::vec3& towards) {
 
 }  // namespace
 
+glm::vec3 surfacePoint(const scene::Scene& scene, uint32_t mesh, uint32_t triangle,
+                       glm::vec2 barycentric) {
+  const scene::Mesh& m = scene.meshes[mesh];
+  const uint32_t* tri = &m.indices[static_cast<std::size_t>(triangle) * 3];
+  const float u = barycentric.x, v = barycentric.y, w = 1.0f - u - v;
+  return w * m.positions_world[tri[0]] + u * m.positions_world[tri[1]] +
+         v * m.positions_world[tri[2]];
+}
+
 RayScene::RayScene(const scene::Scene& scene, int threads) : scene_(scene) {
   const std::string config = threads > 0 ? "threads=" + std::to_string(threads) : std::string();
   device_ = rtcNewDevice(config.c_str());
@@ -94,10 +103,10 @@ std::optional<SurfaceHit> RayScene::intersect(const glm::vec3& origin, const glm
   hit.barycentric = {u, v};
   // Barycentric interpolation, like the rasterizer's G-buffer, rather than
   // origin + t * direction: it lies on the triangle to float precision.
+  hit.position_world = surfacePoint(scene_, hit.mesh, hit.triangle, hit.barycentric);
   const glm::vec3& p0 = mesh.positions_world[tri[0]];
   const glm::vec3& p1 = mesh.positions_world[tri[1]];
   const glm::vec3& p2 = mesh.positions_world[tri[2]];
-  hit.position_world = w * p0 + u * p1 + v * p2;
   const glm::vec3 back = -direction;
   hit.geometric_world = faceTowards(glm::normalize(glm::cross(p1 - p0, p2 - p0)), back);
   glm::vec3 n = hit.geometric_world;

@@ -29,6 +29,12 @@ struct SurfaceHit {
   glm::vec2 barycentric{0.0f};
 };
 
+/// The point of Scene::meshes[mesh]'s triangle `triangle` at `barycentric`
+/// (SurfaceHit's fields): w p0 + u p1 + v p2, in the scene as it is now (a
+/// hit found again after the scene moved).
+glm::vec3 surfacePoint(const scene::Scene& scene, uint32_t mesh, uint32_t triangle,
+                       glm::vec2 barycentric);
+
 class RayScene {
  public:
   /// threads: Embree's build threads, 0 = all.
