@@ -19,6 +19,7 @@
 #include "NlosBinding.h"
 #include "tofsim/capture/VolumeCollector.h"
 #include "tofsim/io/Exr.h"
+#include "tofsim/io/Hdf5Capture.h"
 #include "tofsim/io/Npy.h"
 #include "tofsim/pipeline/FiniteSegments.h"
 #include "tofsim/pipeline/OutputProducts.h"
@@ -114,13 +115,16 @@ Rendered renderInMemory(const config::RunConfig& config, bool quiet) {
   return r;
 }
 
-std::optional<TransientVolume> readVolume(const std::filesystem::path& file, const TimeAxis& axis) {
-  if (!std::filesystem::exists(file)) return std::nullopt;
-  io::NpyArray a = io::readNpy(file);
+TransientVolume asVolume(io::NpyArray&& a, const TimeAxis& axis) {
   TransientVolume v(static_cast<int32_t>(a.shape.at(1)), static_cast<int32_t>(a.shape.at(0)), axis,
                     capture::defaultChannelNames(static_cast<int32_t>(a.shape.at(3))));
   v.values() = std::move(a.data);
   return v;
+}
+
+std::optional<TransientVolume> readVolume(const std::filesystem::path& file, const TimeAxis& axis) {
+  if (!std::filesystem::exists(file)) return std::nullopt;
+  return asVolume(io::readNpy(file), axis);
 }
 
 // The CLI's run, then the arrays it wrote. Volumes the config does not write
@@ -139,15 +143,26 @@ Rendered renderToFolder(const config::RunConfig& config, const std::string& dire
     return std::find(r.files.begin(), r.files.end(), name) != r.files.end();
   };
   const std::filesystem::path dir = summary.outputDirectory;
-  const auto read = [&](std::string_view name) {
+  namespace files = pipeline::files;
+  // output.format: hdf5: the volumes are datasets of capture.h5 (named as
+  // the .npy files without ".npy").
+  std::optional<io::H5CaptureReader> h5;
+  if (wrote(files::kCapture)) h5.emplace(dir / files::kCapture);
+  const auto read = [&](const std::string& name) -> std::optional<TransientVolume> {
+    const std::string dataset = name.substr(0, name.size() - 4);
+    if (h5) {
+      if (!h5->has(dataset)) return std::nullopt;
+      return asVolume(h5->read(dataset), axis);
+    }
     return wrote(name) ? readVolume(dir / name, axis) : std::nullopt;
   };
-  namespace files = pipeline::files;
-  r.transient = read(files::kTransient);
-  r.direct = read(files::kDirect);
-  r.indirect = read(files::kIndirect);
-  for (int32_t k = 1; k <= capture::kMaxBounceComponents && wrote(files::bounce(k)); ++k) {
-    r.bounces.push_back(*readVolume(dir / files::bounce(k), axis));
+  r.transient = read(std::string(files::kTransient));
+  r.direct = read(std::string(files::kDirect));
+  r.indirect = read(std::string(files::kIndirect));
+  for (int32_t k = 1; k <= capture::kMaxBounceComponents; ++k) {
+    std::optional<TransientVolume> bounce = read(files::bounce(k));
+    if (!bounce) break;
+    r.bounces.push_back(std::move(*bounce));
   }
   if (r.transient) r.steady = steadyImage(*r.transient);
   return r;
@@ -213,9 +228,18 @@ py::array_t<float> readExrArray(const std::string& path) {
   return ownedArray(std::move(image.data), {image.height, image.width, image.channels});
 }
 
+// A dataset of a capture.h5 (output.format: hdf5), or None when it has none.
+py::object readCaptureArray(const std::string& path, const std::string& dataset) {
+  const io::H5CaptureReader reader(path);
+  if (!reader.has(dataset)) return py::none();
+  io::NpyArray a = reader.read(dataset);
+  return ownedArray(std::move(a.data), std::vector<py::ssize_t>(a.shape.begin(), a.shape.end()));
+}
+
 void bindRender(py::module_& m) {
   m.def("_render", &render, py::arg("config"), py::arg("output_dir"), py::arg("quiet"));
   m.def("_read_exr", &readExrArray, py::arg("path"));
+  m.def("_read_capture", &readCaptureArray, py::arg("path"), py::arg("dataset"));
 }
 
 }  // namespace tofsim::python

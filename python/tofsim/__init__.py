@@ -7,6 +7,7 @@
     spad = tofsim.sense(result.transient, result.time,
                         {"type": "spad", "cycles": 10000, "pde": 0.3})
     spad["spad_counts"].shape                # (H, W, bins)
+    saved = tofsim.load("out")               # a render's folder (.npy or capture.h5)
 
 Configs are validated exactly as by the `tofsim` command (configs/README.md);
 bad input raises ConfigError (a ValueError) with file, line, column and key.
@@ -14,7 +15,7 @@ bad input raises ConfigError (a ValueError) with file, line, column and key.
 
 from ._tofsim import Config, ConfigError
 from ._config import load_config
-from ._render import NlosResult, RenderResult, SequenceResult, TimeAxis, render
+from ._render import NlosResult, RenderResult, SequenceResult, TimeAxis, load, render
 from ._sense import SensorResult, SensorWarning, sense
 
 __all__ = [
@@ -26,6 +27,7 @@ __all__ = [
     "SequenceResult",
     "SensorWarning",
     "TimeAxis",
+    "load",
     "load_config",
     "render",
     "sense",

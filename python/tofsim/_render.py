@@ -132,8 +132,9 @@ class SequenceResult:
 
 
 def _stack_frames(folder, frames, name):
-    """The frames' `name` arrays stacked on a leading axis; None when frame 0
-    has none; frames without one (the last frame's flow) are NaN."""
+    """The frames' `name` arrays stacked on a leading axis (name.npy, or its
+    dataset of the frame's capture.h5); None when frame 0 has none; frames
+    without one (the last frame's flow) are NaN."""
     import os
 
     import numpy
@@ -141,7 +142,13 @@ def _stack_frames(folder, frames, name):
     arrays = []
     for f in frames:
         path = os.path.join(folder, f["folder"], name)
-        arrays.append(numpy.load(path) if os.path.exists(path) else None)
+        capture = os.path.join(folder, f["folder"], "capture.h5")  # output.format hdf5
+        if os.path.exists(path):
+            arrays.append(numpy.load(path))
+        elif os.path.exists(capture):
+            arrays.append(_tofsim._read_capture(capture, name[: -len(".npy")]))
+        else:
+            arrays.append(None)
     present = [a for a in arrays if a is not None]
     if not present:
         return None
@@ -223,3 +230,64 @@ def render(config, renderer=None, backend=None, output_dir=None, quiet=True):
     if "H_format" in out:
         return NlosResult(**out)
     return RenderResult(**out)
+
+
+def load(folder):
+    """Reads back the output folder of a camera render (`tofsim render -o
+    folder` or render(..., output_dir=folder)) as a RenderResult: its .npy
+    files, or with output.format hdf5 the datasets of its capture.h5 (read
+    by tofsim itself: h5py is not needed). The time axis, stats and device
+    come from transient.json; a volume the run did not write is None;
+    steady is capture.h5's steady, else steady.exr, else the transient summed
+    over time."""
+    import json
+    import os
+
+    import numpy
+
+    folder = os.fspath(folder)
+    with open(os.path.join(folder, "transient.json")) as f:
+        meta = json.load(f)
+    capture = os.path.join(folder, "capture.h5")
+    in_capture = os.path.exists(capture)
+
+    def read(name):
+        if in_capture:
+            return _tofsim._read_capture(capture, name)
+        path = os.path.join(folder, name + ".npy")
+        return numpy.load(path) if os.path.exists(path) else None
+
+    bounces = []
+    while len(bounces) < 8:
+        bounce = read("bounce%d" % (len(bounces) + 1))
+        if bounce is None:
+            break
+        bounces.append(bounce)
+    transient = read("transient")
+    depth = read("depth")
+    if depth is None and os.path.exists(os.path.join(folder, "depth.npy")):
+        depth = numpy.load(os.path.join(folder, "depth.npy"))
+    steady = _tofsim._read_capture(capture, "steady") if in_capture else None
+    if steady is None and os.path.exists(os.path.join(folder, "steady.exr")):
+        steady = _tofsim._read_exr(os.path.join(folder, "steady.exr"))
+    if steady is None and transient is not None:
+        steady = transient.sum(axis=2)
+    t = meta["time"]
+    files = []
+    for root, _, names in os.walk(folder):
+        for name in names:
+            if not name.startswith("."):
+                files.append(os.path.relpath(os.path.join(root, name), folder))
+    return RenderResult(
+        transient=transient,
+        direct=read("direct"),
+        indirect=read("indirect"),
+        bounces=bounces or None,
+        depth=depth,
+        steady=steady,
+        time=TimeAxis(t["start_s"], t["bin_width_s"], t["bins"], t["start_m"], t["bin_width_m"]),
+        stats=meta.get("stats", {}),
+        device=meta.get("device", ""),
+        files=sorted(files),
+        output_dir=folder,
+    )

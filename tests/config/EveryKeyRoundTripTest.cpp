@@ -83,6 +83,7 @@ render:
     sampling: cosine
 output:
   directory: elsewhere
+  format: hdf5
   transient: false
   steady: false
   depth: false

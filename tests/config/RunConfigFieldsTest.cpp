@@ -10,6 +10,7 @@
 #include "support/TempDir.h"
 #include "tofsim/config/ConfigKeys.h"
 #include "tofsim/config/RunConfig.h"
+#include "tofsim/util/Error.h"
 
 namespace tofsim::config {
 namespace {
@@ -42,6 +43,20 @@ TEST_F(RunConfigFieldsTest, TableDocumentedDefaultsReadBackAsTheStructDefaults) 
     }
   }
   EXPECT_EQ(checked, 12 + 5);
+}
+
+TEST_F(RunConfigFieldsTest, OutputFormatIsNpyOrHdf5WithALocatedError) {
+  EXPECT_EQ(effective("output:\n  format: npy\n"), effective(""));
+  EXPECT_NE(effective("output:\n  format: hdf5\n").find("format: hdf5"), std::string::npos);
+  try {
+    effective("output:\n  format: zarr\n");
+    FAIL() << "format: zarr was accepted";
+  } catch (const InputError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("c.yaml:6:"), std::string::npos) << what;
+    EXPECT_NE(what.find("output.format"), std::string::npos) << what;
+    EXPECT_NE(what.find("zarr"), std::string::npos) << what;
+  }
 }
 
 }  // namespace

@@ -190,6 +190,7 @@ std::span<const ConfigKey> runConfigKeys() {
     addDocRows<SequenceConfig>(r, "sequence", kSequenceFields);
     r.keys.insert(r.keys.end(), std::begin(kRunConfigKeysAfterRender),
                   std::end(kRunConfigKeysAfterRender));
+    addDocRows<OutputConfig>(r, "output", kOutputFields);
     return r;
   }();
   return rows.keys;

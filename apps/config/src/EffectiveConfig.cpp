@@ -178,6 +178,7 @@ YAML::Node renderNode(const RunConfig& config) {
 YAML::Node outputNode(const OutputConfig& o) {
   YAML::Node n;
   n["directory"] = o.directory.string();
+  emitFields(n, kOutputFields, o);
   n["transient"] = o.transient;
   n["steady"] = o.steady;
   n["depth"] = o.depth;

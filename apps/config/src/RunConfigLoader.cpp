@@ -174,6 +174,7 @@ void parseBounceComponent(const ConfigNode& c, const std::string& name, const Ru
 
 void parseOutput(const ConfigNode& node, const RunConfig& config, OutputConfig& o) {
   o.directory = node.getString("directory", o.directory.string());
+  parseFields(node, kOutputFields, o);
   o.transient = node.getBool("transient", o.transient);
   o.steady = node.getBool("steady", o.steady);
   o.depth = node.getBool("depth", o.depth);

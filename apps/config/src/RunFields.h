@@ -73,6 +73,15 @@ inline constexpr auto kReferenceFields = std::tuple{
     Field{"sampling", &ReferenceConfig::sampling, Choice<ReferenceSampling>{kReferenceSamplingNames},
           {.doc = "continuation at glTF surfaces (`render.materials: gltf`): `brdf` draws from a mixture of the cosine lobe and GGX visible normals weighted by the mixture's pdf (one-sample MIS); `cosine`: cosine sampling weighted by pi f (noisier on glossy surfaces; the bytes of before). Lambertian surfaces are cosine-sampled either way"}},
 };
+
+inline constexpr std::array<Name<OutputFormat>, 2> kOutputFormatNames{
+    {{"npy", OutputFormat::Npy}, {"hdf5", OutputFormat::Hdf5}}};
+
+// The keys of `output` declared here; the others are hand-written.
+inline constexpr auto kOutputFields = std::tuple{
+    Field{"format", &OutputConfig::format, Choice<OutputFormat>{kOutputFormatNames},
+          {.doc = "`npy`: each array its own `.npy` (`transient.npy`, `direct.npy`, ...); `hdf5`: the volumes, `depth`, `steady` and every sensor array as datasets of one `capture.h5`, chunked along the pixels, shuffle + gzip, each with its metadata as attributes (README.md, \"What a render writes\"); the EXR and PNG pictures and the JSON files stay. An `nlos` capture writes its own files either way"}},
+};
 // clang-format on
 
 }  // namespace tofsim::config

@@ -123,7 +123,7 @@ std::string transientMetadataJson(const config::RunConfig& config, const capture
   j["format"] = "tofsim transient volume";
   j["tofsim_version"] = kVersion;
   j["files"] = nlohmann::json::object();
-  for (const auto& [role, file] : metadataFiles()) j["files"][role] = file;
+  for (const auto& [role, file] : metadataFiles(config.output)) j["files"][role] = file;
   addVolumeLayout(j, job.camera(), axis);
   j["time"] = timeJson(axis);
   j["camera"] = cameraJson(job.camera());

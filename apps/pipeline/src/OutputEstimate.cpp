@@ -33,6 +33,7 @@ int listingRank(Writer writer) {
     case Writer::Depth:
       return 4;
     case Writer::Metadata:
+    case Writer::Capture:
       return 5;
   }
   return 5;

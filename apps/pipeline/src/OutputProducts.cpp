@@ -52,9 +52,19 @@ std::vector<OutputProduct> renderProducts(const config::RunConfig& config) {
   const std::string componentKeys = volumeKeys + ", output.components";
   const config::OutputConfig& out = config.output;
   std::vector<OutputProduct> p;
+  // With output.format: hdf5 a volume is a dataset of capture.h5 (its size
+  // line still the .npy's: an upper bound of the compressed dataset).
+  const bool hdf5 = out.format == config::OutputFormat::Hdf5;
   const auto addVolume = [&](std::string_view component, std::string file,
                              const std::string& keys) {
-    p.push_back({Writer::Volume, component, {file}, {{file, volume, keys}}});
+    std::string dataset = file.substr(0, file.size() - 4);
+    std::vector<std::string> written;
+    if (!hdf5) written.push_back(file);
+    p.push_back({Writer::Volume,
+                 component,
+                 std::move(dataset),
+                 std::move(written),
+                 {{file, volume, keys}}});
   };
   if (out.transient) addVolume(kTotal, text(files::kTransient), volumeKeys);
   if (out.direct) addVolume(capture::kDirect, text(files::kDirect), componentKeys);
@@ -65,18 +75,20 @@ std::vector<OutputProduct> renderProducts(const config::RunConfig& config) {
   if (out.steady) {
     p.push_back({Writer::Steady,
                  {},
+                 {},
                  {text(files::kSteadyExr), text(files::kSteadyPng)},
                  {{"steady.exr/.png", w * h * (kChannels * 4 + kChannels), "camera.resolution"}}});
   }
   if (out.depth) {
     p.push_back({Writer::Depth,
                  {},
+                 {},
                  {text(files::kDepthExr), text(files::kDepthNpy), text(files::kDepthPng)},
                  {{"depth.exr/.npy/.png", w * h * (4 + 4 + kChannels), "camera.resolution"}}});
   }
   if (out.frames) {
     OutputProduct frames{
-        Writer::Frames, {}, {}, {{"frames/*.exr", volume, volumeKeys + ", output.frames"}}};
+        Writer::Frames, {}, {}, {}, {{"frames/*.exr", volume, volumeKeys + ", output.frames"}}};
     for (int32_t t = 0; t < axis.bins; ++t) frames.files.push_back(files::frameExr(t));
     p.push_back(std::move(frames));
   }
@@ -84,7 +96,7 @@ std::vector<OutputProduct> renderProducts(const config::RunConfig& config) {
     const std::uintmax_t picture = w * h * kChannels;
     const std::uintmax_t videoFrames = (bins + out.video_stride - 1) / out.video_stride;
     const std::string videoKeys = volumeKeys + " / output.video_stride";
-    OutputProduct video{Writer::Video, {}, {}, {}};
+    OutputProduct video{Writer::Video, {}, {}, {}, {}};
     if (out.frame_pngs) video.sizes.push_back({"frames/*.png", videoFrames * picture, videoKeys});
     if (out.video) {
       video.files.push_back(text(files::kVideo));
@@ -99,12 +111,15 @@ std::vector<OutputProduct> renderProducts(const config::RunConfig& config) {
     p.push_back(std::move(video));
   }
   // Small (no size line): it describes transient.npy.
-  if (out.transient) p.push_back({Writer::Metadata, {}, {text(files::kMetadata)}, {}});
+  if (out.transient) p.push_back({Writer::Metadata, {}, {}, {text(files::kMetadata)}, {}});
+  // Last: it holds the arrays above, and the sensors' that follow them.
+  if (hdf5) p.push_back({Writer::Capture, {}, {}, {text(files::kCapture)}, {}});
   return p;
 }
 
-std::vector<std::pair<std::string, std::string>> metadataFiles() {
-  return {{"transient", text(files::kTransient)},
+std::vector<std::pair<std::string, std::string>> metadataFiles(const config::OutputConfig& out) {
+  const bool hdf5 = out.format == config::OutputFormat::Hdf5;
+  return {{"transient", text(hdf5 ? files::kCapture : files::kTransient)},
           {"steady", text(files::kSteadyExr)},
           {"depth", text(files::kDepthExr)}};
 }

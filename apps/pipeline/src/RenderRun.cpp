@@ -7,6 +7,7 @@
 #include <optional>
 
 #include "BinMajorSpill.h"
+#include "CaptureFile.h"
 #include "KeptAcrossRenders.h"
 #include "NlosRun.h"
 #include "SequenceFrame.h"
@@ -194,15 +195,18 @@ void writeProduct(const OutputProduct& p, const config::RunConfig& config,
                   const capture::RenderJob& job, const std::filesystem::path& dir,
                   const Image& steady, const RunSummary& summary,
                   const std::function<const imaging::BinFrames&()>& binFrames, PlotRanges& ranges,
-                  const Progress& progress) {
+                  const Progress& progress, CaptureFile* capture) {
   switch (p.writer) {
     case Writer::Volume:
+    case Writer::Capture:  // committed after the sensors (writeOutputs)
       break;
     case Writer::Steady:
       writeSteady(dir, steady, ranges);
+      if (capture) capture->addSteady(steady);
       break;
     case Writer::Depth:
       writeDepth(dir, summary.result.depth_m, ranges);
+      if (capture) capture->addDepth(summary.result.depth_m);
       break;
     case Writer::Frames:
       writeFrames(dir, binFrames());
@@ -210,11 +214,13 @@ void writeProduct(const OutputProduct& p, const config::RunConfig& config,
     case Writer::Video:
       writeVideo(dir, config.output, binFrames(), progress);
       break;
-    case Writer::Metadata:
-      writeFileAtomically(
-          dir / files::kMetadata,
-          transientMetadataJson(config, job, summary.result, summary.backend, summary.device));
+    case Writer::Metadata: {
+      const std::string json =
+          transientMetadataJson(config, job, summary.result, summary.backend, summary.device);
+      writeFileAtomically(dir / files::kMetadata, json);
+      if (capture) capture->describeVolumes(json);
       break;
+    }
   }
 }
 
@@ -281,10 +287,18 @@ void writeOutputs(const config::RunConfig& config, const capture::RenderJob& job
     sensorStreams.emplace(config, shape, out.direct, bounces, dir, &camera, psf);
   std::optional<BinMajorSpill> spill;
   if (out.frames || out.video || out.frame_pngs) spill.emplace(dir / kBinMajorSpillName, shape);
+  // output.format: hdf5: the volumes and the other arrays in one file.
+  std::optional<CaptureFile> capture;
+  if (out.format == config::OutputFormat::Hdf5) capture.emplace(dir / files::kCapture);
   std::vector<std::unique_ptr<VolumeFileSink>> volumeFiles;
   CaptureConsumers consumers;
   for (const OutputProduct& p : products) {
     if (p.writer != Writer::Volume) continue;
+    if (capture) {
+      consumers.sinks.push_back(&capture->volume(p.dataset, p.component, camera.width,
+                                                 camera.height, job.settings.time.bins));
+      continue;
+    }
     volumeFiles.push_back(std::make_unique<VolumeFileSink>(
         dir / p.files.at(0), p.component, camera.width, camera.height, job.settings.time));
     consumers.sinks.push_back(volumeFiles.back().get());
@@ -325,15 +339,17 @@ void writeOutputs(const config::RunConfig& config, const capture::RenderJob& job
     return *frames;
   };
   for (const OutputProduct& p : products) {
-    writeProduct(p, config, job, dir, rendered.steady, summary, binFrames, ranges, progress);
+    writeProduct(p, config, job, dir, rendered.steady, summary, binFrames, ranges, progress,
+                 capture ? &*capture : nullptr);
     summary.files.insert(summary.files.end(), p.files.begin(), p.files.end());
   }
   if (sensorStreams) {
     const Image* depth = out.depth ? &summary.result.depth_m : nullptr;
-    for (std::string& f : sensorStreams->finish(depth, progress)) {
-      summary.files.push_back(std::move(f));
-    }
+    const std::vector<std::string> sensorFiles = sensorStreams->finish(depth, progress);
+    if (capture) capture->addSensorFiles(dir, sensorFiles);
+    summary.files.insert(summary.files.end(), sensorFiles.begin(), sensorFiles.end());
   }
+  if (capture) capture->commit();
   std::vector<std::string> untaken = ranges.untaken("");
   if (sensorStreams) {  // SensorStreams::finish reported the sensors' keys
     std::erase_if(untaken, [](const std::string& k) { return k.rfind("sensors/", 0) == 0; });

@@ -10,6 +10,7 @@
 
 #include "tofsim/io/DepthExr.h"
 #include "tofsim/io/Exr.h"
+#include "tofsim/io/Hdf5Capture.h"
 #include "tofsim/io/Npy.h"
 #include "tofsim/pipeline/OutputFileNames.h"
 #include "tofsim/util/Error.h"
@@ -25,6 +26,93 @@ namespace {
 struct VolumeLayout {
   TimeAxis axis;
   std::vector<std::string> channels;
+};
+
+bool fileExists(const std::filesystem::path& file) {
+  std::error_code ec;
+  return std::filesystem::exists(file, ec);
+}
+
+std::filesystem::path capturePath(const std::filesystem::path& directory) {
+  return directory / files::kCapture;
+}
+
+}  // namespace
+
+namespace detail {
+
+/// One saved volume read a run of pixels at a time, in order.
+class ComponentReader {
+ public:
+  virtual ~ComponentReader() = default;
+  /// For messages: the .npy, or capture.h5:/<dataset>.
+  virtual std::filesystem::path name() const = 0;
+  virtual const io::NpyShape& shape() const = 0;
+  virtual void read(std::size_t firstPixel, std::size_t pixels, float* out) = 0;
+};
+
+}  // namespace detail
+
+namespace {
+
+class NpyComponent : public detail::ComponentReader {
+ public:
+  explicit NpyComponent(const std::filesystem::path& file) : file_(file), reader_(file) {}
+  std::filesystem::path name() const override { return file_; }
+  const io::NpyShape& shape() const override { return reader_.shape(); }
+  void read(std::size_t, std::size_t pixels, float* out) override {
+    const io::NpyShape& s = reader_.shape();
+    reader_.read(out, pixels * (io::elementCount(s) / (s[0] * s[1])));
+  }
+
+ private:
+  std::filesystem::path file_;
+  io::NpyStreamReader reader_;
+};
+
+class H5Component : public detail::ComponentReader {
+ public:
+  H5Component(std::shared_ptr<const io::H5CaptureReader> file, std::string dataset)
+      : file_(std::move(file)), dataset_(std::move(dataset)), shape_(file_->shape(dataset_)) {}
+  std::filesystem::path name() const override { return file_->path().string() + ":/" + dataset_; }
+  const io::NpyShape& shape() const override { return shape_; }
+  void read(std::size_t firstPixel, std::size_t pixels, float* out) override {
+    file_->readPixels(dataset_, firstPixel, pixels, out);
+  }
+
+ private:
+  std::shared_ptr<const io::H5CaptureReader> file_;
+  std::string dataset_;
+  io::NpyShape shape_;
+};
+
+// The folder's saved volumes: its capture.h5 when it has one, else its .npy files.
+class SavedFolder {
+ public:
+  explicit SavedFolder(const std::filesystem::path& directory) : directory_(directory) {
+    if (fileExists(capturePath(directory))) {
+      capture_ = std::make_shared<const io::H5CaptureReader>(capturePath(directory));
+    }
+  }
+  bool has(const std::string& component) const {
+    return capture_ ? capture_->has(component) : fileExists(directory_ / (component + ".npy"));
+  }
+  std::filesystem::path name(const std::string& component) const {
+    return capture_ ? std::filesystem::path(capture_->path().string() + ":/" + component)
+                    : directory_ / (component + ".npy");
+  }
+  /// InputError naming it when it is not there.
+  std::unique_ptr<detail::ComponentReader> open(const std::string& component) const {
+    if (!has(component)) {
+      throw InputError(FileLoc{name(component).string()}, "", "not found");
+    }
+    if (capture_) return std::make_unique<H5Component>(capture_, component);
+    return std::make_unique<NpyComponent>(directory_ / (component + ".npy"));
+  }
+
+ private:
+  std::filesystem::path directory_;
+  std::shared_ptr<const io::H5CaptureReader> capture_;
 };
 
 // The sensors need the time axis, which only the JSON records (the .npy holds
@@ -89,16 +177,14 @@ std::vector<std::string> checkedChannels(const std::filesystem::path& file, cons
   return channels;
 }
 
-TransientVolume readVolume(const std::filesystem::path& file, const VolumeLayout& layout,
-                           const std::filesystem::path& jsonFile) {
-  std::error_code ec;
-  if (!std::filesystem::exists(file, ec)) fail(file, "not found");
-  io::NpyArray array = io::readNpy(file);
-  const io::NpyShape& s = array.shape;
-  std::vector<std::string> channels = checkedChannels(file, s, layout, jsonFile);
+TransientVolume readVolume(const SavedFolder& folder, const std::string& component,
+                           const VolumeLayout& layout, const std::filesystem::path& jsonFile) {
+  const std::unique_ptr<detail::ComponentReader> reader = folder.open(component);
+  const io::NpyShape s = reader->shape();
+  std::vector<std::string> channels = checkedChannels(reader->name(), s, layout, jsonFile);
   TransientVolume volume(static_cast<int32_t>(s[1]), static_cast<int32_t>(s[0]), layout.axis,
                          std::move(channels));
-  volume.values() = std::move(array.data);
+  reader->read(0, s[0] * s[1], volume.values().data());
   return volume;
 }
 
@@ -118,17 +204,26 @@ std::optional<Image> readDepth(const std::filesystem::path& directory, int32_t W
 
 }  // namespace
 
+bool hasSavedComponent(const std::filesystem::path& directory, const std::string& component) {
+  return SavedFolder(directory).has(component);
+}
+
+std::string savedComponentName(const std::filesystem::path& directory,
+                               const std::string& component) {
+  return SavedFolder(directory).name(component).string();
+}
+
 SavedVolume loadSavedVolume(const std::filesystem::path& directory) {
   const std::filesystem::path json = directory / files::kMetadata;
   const VolumeLayout layout = readLayout(json);
-  SavedVolume saved{readVolume(directory / files::kTransient, layout, json), {}, {}};
+  const SavedFolder folder(directory);
+  SavedVolume saved{readVolume(folder, "transient", layout, json), {}, {}};
   const int32_t W = saved.volume.width(), H = saved.volume.height();
-  std::error_code ec;
-  if (std::filesystem::exists(directory / files::kDirect, ec)) {
-    saved.directOnly = readVolume(directory / files::kDirect, layout, json);
+  if (folder.has("direct")) {
+    saved.directOnly = readVolume(folder, "direct", layout, json);
     if (saved.directOnly->width() != W || saved.directOnly->height() != H ||
         saved.directOnly->channels() != saved.volume.channels()) {
-      fail(directory / files::kDirect, "shape differs from transient.npy");
+      fail(folder.name("direct"), "shape differs from the transient");
     }
   }
   saved.depth_m = readDepth(directory, W, H);
@@ -157,14 +252,14 @@ SavedVolumeStream::SavedVolumeStream(const std::filesystem::path& directory,
                                      const std::vector<std::string>& components) {
   const std::filesystem::path json = directory / files::kMetadata;
   const VolumeLayout layout = readLayout(json);
-  const auto open = [&](const std::filesystem::path& file) {
-    std::error_code ec;
-    if (!std::filesystem::exists(file, ec)) fail(file, "not found");
-    auto reader = std::make_unique<io::NpyStreamReader>(file);
-    const std::vector<std::string> channels = checkedChannels(file, reader->shape(), layout, json);
+  const SavedFolder folder(directory);
+  const auto open = [&](const std::string& component) {
+    std::unique_ptr<detail::ComponentReader> reader = folder.open(component);
+    const std::vector<std::string> channels =
+        checkedChannels(reader->name(), reader->shape(), layout, json);
     return std::make_pair(std::move(reader), channels.size());
   };
-  auto [volume, channels] = open(directory / files::kTransient);
+  auto [volume, channels] = open("transient");
   const io::NpyShape s = volume->shape();
   shape_.height = static_cast<int32_t>(s[0]);
   shape_.width = static_cast<int32_t>(s[1]);
@@ -172,11 +267,9 @@ SavedVolumeStream::SavedVolumeStream(const std::filesystem::path& directory,
   shape_.axis = layout.axis;
   files_.push_back({"transient", std::move(volume), {}});
   for (const std::string& name : components) {
-    const std::filesystem::path file = directory / (name + ".npy");
-    std::error_code ec;
-    if (!std::filesystem::exists(file, ec)) continue;
-    auto component = open(file).first;
-    if (component->shape() != s) fail(file, "shape differs from transient.npy");
+    if (!folder.has(name)) continue;
+    auto component = open(name).first;
+    if (component->shape() != s) fail(component->name(), "shape differs from the transient");
     files_.push_back({name, std::move(component), {}});
   }
   depth_m_ = readDepth(directory, shape_.width, shape_.height);
@@ -197,7 +290,7 @@ std::size_t SavedVolumeStream::read(std::size_t maxPixels) {
   firstPixel_ = next_;
   for (File& f : files_) {
     f.values.resize(pixels * shape_.pixelFloats());
-    f.reader->read(f.values.data(), f.values.size());
+    f.reader->read(next_, pixels, f.values.data());
   }
   next_ += pixels;
   return pixels;
@@ -212,11 +305,10 @@ const float* SavedVolumeStream::values(const std::string& component) const {
 
 std::optional<TransientVolume> loadSavedComponent(const std::filesystem::path& directory,
                                                   const std::string& name) {
-  const std::filesystem::path file = directory / (name + ".npy");
-  std::error_code ec;
-  if (!std::filesystem::exists(file, ec)) return std::nullopt;
+  const SavedFolder folder(directory);
+  if (!folder.has(name)) return std::nullopt;
   const std::filesystem::path json = directory / files::kMetadata;
-  return readVolume(file, readLayout(json), json);
+  return readVolume(folder, name, readLayout(json), json);
 }
 
 }  // namespace tofsim::pipeline

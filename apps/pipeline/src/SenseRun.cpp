@@ -51,7 +51,7 @@ void noteDifferences(const config::RunConfig& config, const sensors::VolumeShape
 // and for a cwtof sensor with multipath_by_order the light by bounce order,
 // bounce1 .. bounce<N> with N from transient.json (indirect.npy stands for
 // bounce1 when N = 1: the same light). An InputError names the first file
-// missing.
+// missing. Each is its .npy, or the dataset of the folder's capture.h5.
 std::vector<std::string> sensedComponents(const config::RunConfig& config,
                                           const std::filesystem::path& dir) {
   std::vector<std::string> components = {"direct"};
@@ -62,18 +62,17 @@ std::vector<std::string> sensedComponents(const config::RunConfig& config,
                          config.config_file.string() +
                          ") needs the render's direct.npy, bounce<k>.npy and depth.exr");
   };
-  for (const std::string_view file : {files::kDirect, files::kDepthExr}) {
-    if (!std::filesystem::exists(dir / file)) fail(dir / file, "not found");
-  }
+  if (!hasSavedComponent(dir, "direct")) fail(savedComponentName(dir, "direct"), "not found");
+  if (!std::filesystem::exists(dir / files::kDepthExr)) fail(dir / files::kDepthExr, "not found");
   const int32_t n = savedIndirectBounces(dir / files::kMetadata);
   for (int32_t k = 1; k <= n; ++k) {
     const std::string name = "bounce" + std::to_string(k);
-    if (std::filesystem::exists(dir / (name + ".npy"))) {
+    if (hasSavedComponent(dir, name)) {
       components.push_back(name);
-    } else if (n == 1 && std::filesystem::exists(dir / files::kIndirect)) {
+    } else if (n == 1 && hasSavedComponent(dir, "indirect")) {
       components.push_back("indirect");
     } else {
-      fail(dir / (name + ".npy"),
+      fail(savedComponentName(dir, name),
            "not found (transient.json: indirect_bounces " + std::to_string(n) +
                "; render with output.components: [direct, bounce1 .. bounce" + std::to_string(n) +
                "])");

@@ -91,8 +91,14 @@ struct ReferenceConfig {
 /// Tone map of the transient video and frame PNGs (tofsim/imaging/Video.h).
 enum class VideoToneMap { Global, Log };
 
+/// Files of the arrays: one .npy each, or all in one capture.h5.
+enum class OutputFormat { Npy, Hdf5 };
+
 struct OutputConfig {
   std::filesystem::path directory = "out";
+  /// Npy: transient.npy, direct.npy, ...; Hdf5: the volumes, the depth, the
+  /// steady image and the sensors' arrays as datasets of capture.h5.
+  OutputFormat format = OutputFormat::Npy;
   bool transient = true;  ///< transient.npy + transient.json
   bool steady = true;     ///< steady.exr
   bool depth = true;      ///< depth.exr

@@ -22,6 +22,8 @@ inline constexpr std::string_view kDepthExr = "depth.exr";
 inline constexpr std::string_view kDepthNpy = "depth.npy";
 inline constexpr std::string_view kDepthPng = "depth.png";
 inline constexpr std::string_view kVideo = "transient.mp4";
+/// output.format: hdf5: the volumes, steady, depth and the sensors' arrays.
+inline constexpr std::string_view kCapture = "capture.h5";
 /// bounce<k>.npy: the light of exactly k indirect bounces.
 std::string bounce(int32_t k);
 /// frames/frame_NNNNN.exr and .png: time bin `bin` of the volume.

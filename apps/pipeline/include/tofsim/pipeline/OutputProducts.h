@@ -20,7 +20,8 @@ namespace tofsim::pipeline {
 
 /// Which writer makes a product (RenderRun.cpp dispatches on it).
 enum class Writer {
-  Volume,    ///< a component streamed to .npy as it is rendered (VolumeFileSink)
+  Volume,    ///< a component streamed as it is rendered: to .npy (VolumeFileSink) or capture.h5
+  Capture,   ///< capture.h5 (output.format: hdf5), committed after the sensors (CaptureFile.h)
   Steady,    ///< the volume summed over time: EXR and tone-mapped PNG
   Depth,     ///< the camera-to-surface distance: EXR, .npy and colour-mapped PNG
   Frames,    ///< one EXR per time bin, from the bin-major copy
@@ -32,6 +33,8 @@ struct OutputProduct {
   Writer writer;
   /// Writer::Volume: the segment component it streams (FiniteSegments.h).
   std::string_view component;
+  /// Writer::Volume: its name without ".npy", the dataset of capture.h5.
+  std::string dataset;
   std::vector<std::string> files;  ///< written, in order, relative to the output folder
   std::vector<OutputItem> sizes;   ///< its lines of the size estimate
 };
@@ -43,8 +46,9 @@ std::vector<OutputProduct> renderProducts(const config::RunConfig& config);
 /// Bytes of one volume's floats (H W T C float32, no header).
 std::uintmax_t volumeBytes(const config::RunConfig& config);
 
-/// transient.json's "files": the volume, the steady picture and the depth
-/// a reader looks for, by role.
-std::vector<std::pair<std::string, std::string>> metadataFiles();
+/// transient.json's "files": the volume (transient.npy, or capture.h5 with
+/// output.format: hdf5), the steady picture and the depth a reader looks
+/// for, by role.
+std::vector<std::pair<std::string, std::string>> metadataFiles(const config::OutputConfig& out);
 
 }  // namespace tofsim::pipeline

@@ -1,6 +1,10 @@
 #pragma once
 // A render's saved outputs read back for the sensors: transient.npy with its
 // time axis from transient.json, and direct.npy and depth.exr when present.
+// A render with output.format: hdf5 saved its volumes as the datasets of
+// capture.h5 (transient, direct, ...) instead: where the folder has a
+// capture.h5, every volume is read from it (a run of pixels through one
+// hyperslab selection), with the same checks and the same values.
 
 #include <filesystem>
 #include <memory>
@@ -11,11 +15,20 @@
 #include "tofsim/sensors/SensorStream.h"
 #include "tofsim/volume/TransientVolume.h"
 
-namespace tofsim::io {
-class NpyStreamReader;
+namespace tofsim::pipeline {
+
+namespace detail {
+class ComponentReader;  // one saved volume, .npy or a dataset of capture.h5
 }
 
-namespace tofsim::pipeline {
+/// Whether the render in `directory` saved the volume `component`
+/// (`transient`, `direct`, `indirect`, `bounce<k>`): <component>.npy, or
+/// the dataset of its capture.h5.
+bool hasSavedComponent(const std::filesystem::path& directory, const std::string& component);
+/// Where `component` is or would be saved, for messages: <component>.npy, or
+/// "capture.h5:/<component>".
+std::string savedComponentName(const std::filesystem::path& directory,
+                               const std::string& component);
 
 struct SavedVolume {
   TransientVolume volume;                     ///< transient.npy, axis from transient.json
@@ -63,7 +76,7 @@ class SavedVolumeStream {
  private:
   struct File {
     std::string name;
-    std::unique_ptr<io::NpyStreamReader> reader;
+    std::unique_ptr<detail::ComponentReader> reader;
     std::vector<float> values;
   };
   sensors::VolumeShape shape_;

@@ -1,0 +1,165 @@
+#include "CaptureFile.h"
+
+#include <algorithm>
+#include <fstream>
+#include <iterator>
+#include <nlohmann/json.hpp>
+
+#include "tofsim/io/Exr.h"
+#include "tofsim/io/Npy.h"
+#include "tofsim/util/Error.h"
+
+namespace tofsim::pipeline {
+
+namespace {
+
+// The attributes of a dataset described by the JSON `text`: the text itself
+// and the keys a reader looks for first.
+std::vector<io::H5Attribute> attributesOf(const std::string& text) {
+  std::vector<io::H5Attribute> a{{"json", text}};
+  const nlohmann::json j = nlohmann::json::parse(text, nullptr, false);
+  if (!j.is_object()) return a;
+  const auto strings = [&](const char* key, const char* name) {
+    if (!j.contains(key) || !j.at(key).is_array()) return;
+    std::vector<std::string> list;
+    for (const nlohmann::json& s : j.at(key)) {
+      if (s.is_string()) list.push_back(s.get<std::string>());
+    }
+    a.push_back({name, list});
+  };
+  for (const char* key : {"value_unit", "unit"}) {
+    if (j.contains(key) && j.at(key).is_string()) {
+      a.push_back({"units", j.at(key).get<std::string>()});
+      break;
+    }
+  }
+  strings("axes", "axes");
+  strings("channels", "channels");
+  if (j.contains("time") && j.at("time").is_object()) {
+    const nlohmann::json& t = j.at("time");
+    for (const char* key : {"start_s", "bin_width_s"}) {
+      if (t.contains(key) && t.at(key).is_number()) a.push_back({key, t.at(key).get<double>()});
+    }
+    if (t.contains("bins") && t.at("bins").is_number_integer()) {
+      a.push_back({"bins", t.at("bins").get<int64_t>()});
+    }
+  }
+  return a;
+}
+
+std::string imageJson(const nlohmann::json& axes, const char* unit, const char* doc) {
+  return nlohmann::json{{"axes", axes}, {"unit", unit}, {"doc", doc}}.dump(2);
+}
+
+std::string readText(const std::filesystem::path& file) {
+  std::ifstream in(file);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+bool endsWith(const std::string& s, std::string_view suffix) {
+  return s.size() >= suffix.size() &&
+         s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
+}
+
+}  // namespace
+
+class CaptureFile::VolumeSink : public capture::SegmentSink {
+ public:
+  VolumeSink(std::string dataset, std::string_view component, io::H5FloatStream& stream,
+             std::size_t pixelFloats)
+      : dataset_(std::move(dataset)),
+        component_(component),
+        stream_(stream),
+        pixelFloats_(pixelFloats) {}
+  void consume(const capture::Segment& segment) override {
+    stream_.append(segment.component(component_), segment.pixelCount * pixelFloats_);
+  }
+  const std::string& dataset() const { return dataset_; }
+
+ private:
+  std::string dataset_;
+  std::string_view component_;
+  io::H5FloatStream& stream_;
+  std::size_t pixelFloats_;
+};
+
+CaptureFile::CaptureFile(const std::filesystem::path& file) : writer_(file) {}
+
+CaptureFile::~CaptureFile() = default;
+
+capture::SegmentSink& CaptureFile::volume(const std::string& dataset, std::string_view component,
+                                          int32_t width, int32_t height, int32_t bins) {
+  const io::NpyShape shape{static_cast<std::size_t>(height), static_cast<std::size_t>(width),
+                           static_cast<std::size_t>(bins), capture::kChannels};
+  io::H5FloatStream& stream = writer_.stream(dataset, shape);
+  volumes_.push_back(std::make_unique<VolumeSink>(dataset, component, stream, shape[2] * shape[3]));
+  return *volumes_.back();
+}
+
+void CaptureFile::describeVolumes(const std::string& metadataJson) {
+  for (const std::unique_ptr<VolumeSink>& v : volumes_) {
+    std::vector<io::H5Attribute> a = attributesOf(metadataJson);
+    a.push_back({"component", v->dataset()});
+    writer_.setAttributes(v->dataset(), a);
+  }
+}
+
+void CaptureFile::addSteady(const Image& steady) {
+  writer_.write("steady",
+                {static_cast<std::size_t>(steady.height), static_cast<std::size_t>(steady.width),
+                 static_cast<std::size_t>(steady.channels)},
+                steady.data.data());
+  writer_.setAttributes(
+      "steady", attributesOf(imageJson({"y", "x", "c"}, "W m^-2 sr^-1",
+                                       "the transient summed over its time bins (steady.exr)")));
+}
+
+void CaptureFile::addDepth(const Image& depth_m) {
+  writer_.write("depth",
+                {static_cast<std::size_t>(depth_m.height), static_cast<std::size_t>(depth_m.width)},
+                depth_m.data.data());
+  writer_.setAttributes(
+      "depth", attributesOf(imageJson({"y", "x"}, "m",
+                                      "camera-to-surface distance, 0 where a pixel sees no "
+                                      "surface (depth.exr, depth.npy)")));
+}
+
+void CaptureFile::addSensorFiles(const std::filesystem::path& directory,
+                                 const std::vector<std::string>& files) {
+  for (const std::string& file : files) {
+    const bool npy = endsWith(file, ".npy"), exr = endsWith(file, ".exr");
+    if (!npy && !exr) continue;
+    const std::string dataset = file.substr(0, file.size() - 4);  // sensors/<sensor>/<output>
+    const std::filesystem::path path = directory / file;
+    if (exr) {
+      const Image image = io::readExr(path);
+      io::NpyShape shape{static_cast<std::size_t>(image.height),
+                         static_cast<std::size_t>(image.width)};
+      if (image.channels > 1) shape.push_back(static_cast<std::size_t>(image.channels));
+      writer_.write(dataset, shape, image.data.data());
+    } else {
+      io::NpyStreamReader reader(path);
+      const io::NpyShape shape = reader.shape();
+      if (shape.size() < 3 || io::elementCount(shape) == 0) {
+        std::vector<float> values(reader.remaining());
+        reader.read(values.data(), values.size());
+        writer_.write(dataset, shape, values.data());
+      } else {  // perhaps a volume itself (a SPAD's histograms): a row at a time
+        io::H5FloatStream& stream = writer_.stream(dataset, shape);
+        std::vector<float> row(io::elementCount(shape) / shape[0]);
+        while (reader.remaining() > 0) {
+          reader.read(row.data(), row.size());
+          stream.append(row.data(), row.size());
+        }
+      }
+    }
+    const std::filesystem::path json = directory / (dataset + ".json");
+    std::error_code ec;
+    if (std::filesystem::exists(json, ec))
+      writer_.setAttributes(dataset, attributesOf(readText(json)));
+  }
+}
+
+void CaptureFile::commit() { writer_.commit(); }
+
+}  // namespace tofsim::pipeline

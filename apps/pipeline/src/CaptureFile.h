@@ -1,0 +1,58 @@
+#pragma once
+// output.format: hdf5: a camera render's arrays as the datasets of one
+// capture.h5 (tofsim/io/Hdf5Capture.h), in the staging folder like every
+// output. The volumes stream in segment by segment (one block of chunks held
+// per volume); the steady image, the depth and the sensors' arrays are added
+// whole once written; commit() renames the file into place. Each dataset
+// carries its metadata as attributes: `json` (the text of the JSON file that
+// describes it: transient.json, the sensor output's <output>.json) and, where
+// the JSON has them, `units`, `axes`, `channels`, `start_s`, `bin_width_s`
+// and `bins`.
+//
+// Datasets: transient, direct, indirect, bounce<k> (H, W, T, C); steady
+// (H, W, C); depth (H, W); sensors/<sensor>/<output> (the .npy's and .exr's
+// arrays of sensors/<sensor>/).
+
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "tofsim/capture/SegmentSink.h"
+#include "tofsim/io/Hdf5Capture.h"
+#include "tofsim/volume/TransientVolume.h"
+
+namespace tofsim::pipeline {
+
+class CaptureFile {
+ public:
+  explicit CaptureFile(const std::filesystem::path& file);
+  ~CaptureFile();
+  CaptureFile(const CaptureFile&) = delete;
+  CaptureFile& operator=(const CaptureFile&) = delete;
+
+  /// A sink streaming the segments' `component` (FiniteSegments.h, static
+  /// lifetime) into the (H, W, T, C) dataset `dataset`.
+  capture::SegmentSink& volume(const std::string& dataset, std::string_view component,
+                               int32_t width, int32_t height, int32_t bins);
+  /// transient.json's text as the attributes of every volume.
+  void describeVolumes(const std::string& metadataJson);
+  /// steady (H, W, C) with the volumes' unit.
+  void addSteady(const Image& steady);
+  /// depth (H, W), metres.
+  void addDepth(const Image& depth_m);
+  /// The arrays of the sensor files `files` (relative to `directory`):
+  /// each <output>.npy and <output>.exr as sensors/<sensor>/<output>, with
+  /// its <output>.json.
+  void addSensorFiles(const std::filesystem::path& directory,
+                      const std::vector<std::string>& files);
+  void commit();
+
+ private:
+  class VolumeSink;
+  io::H5CaptureWriter writer_;
+  std::vector<std::unique_ptr<VolumeSink>> volumes_;
+};
+
+}  // namespace tofsim::pipeline
