@@ -59,10 +59,14 @@ OutputEstimate estimateOutputs(const config::RunConfig& config) {
   }
   const capture::Camera& camera = config.camera.camera;
   for (const sensors::SensorSpec& spec : config.sensors) {
-    e.items.push_back(
-        {"sensors/" + spec.name,
-         sensors::sensorOutputBytes(spec.params, camera.width, camera.height, config.render.time),
-         "camera.resolution x the sensor's bins"});
+    const std::uintmax_t bytes =
+        sensors::sensorOutputBytes(spec.params, camera.width, camera.height, config.render.time);
+    e.items.push_back({"sensors/" + spec.name, bytes, "camera.resolution x the sensor's bins"});
+    // output.format: hdf5 copies the arrays into capture.h5 (at most their size).
+    if (out.format == config::OutputFormat::Hdf5) {
+      e.items.push_back({"capture.h5 sensors/" + spec.name, bytes,
+                         "camera.resolution x the sensor's bins, output.format"});
+    }
   }
   return e;
 }

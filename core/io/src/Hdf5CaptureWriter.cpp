@@ -9,11 +9,13 @@
 #include <vector>
 
 #include "Hdf5Attributes.h"
+#include "Hdf5ChunkCodec.h"
 #include "Hdf5Chunks.h"
 #include "Hdf5Handle.h"
 #include "tofsim/io/Hdf5Capture.h"
 #include "tofsim/util/AtomicFile.h"
 #include "tofsim/util/Error.h"
+#include "tofsim/util/ParallelFor.h"
 
 namespace tofsim::io {
 
@@ -43,6 +45,7 @@ struct H5FloatStream::Impl {
   std::string name;
   H5Dataset dataset;
   NpyShape shape;
+  std::vector<hsize_t> chunk;    // captureChunk(shape)
   std::size_t inner = 1;         // values of one (row, column)
   std::size_t blockColumns = 1;  // columns of one block (the chunks' width)
   std::size_t nextPixel = 0;     // first pixel of the block being filled
@@ -80,6 +83,9 @@ void H5FloatStream::append(const float* data, std::size_t count) {
   }
 }
 
+// The block is one row's run of whole chunk columns: ceil(T / chunk[2])
+// chunks, each compressed on its own core and written as it is stored
+// (H5Dwrite_chunk; an edge chunk padded with zeros, as HDF5 pads it).
 void H5FloatStream::flushBlock() {
   Impl& s = *impl_;
   const detail::H5QuietErrors quiet;
@@ -89,6 +95,30 @@ void H5FloatStream::flushBlock() {
   start[1] = s.nextPixel % s.shape[1];
   count[0] = 1;
   count[1] = s.block.size() / s.inner;
+  if (!s.chunk.empty()) {
+    const std::size_t bins = s.shape[2], binsPerChunk = s.chunk[2];
+    const std::size_t after = s.inner / bins;  // values of one (row, column, bin)
+    std::vector<std::vector<unsigned char>> packed((bins + binsPerChunk - 1) / binsPerChunk);
+    parallelFor(packed.size(), resolveThreads(0), [&](std::size_t k) {
+      std::vector<float> values(s.chunk[1] * binsPerChunk * after, 0.0f);
+      const std::size_t t0 = k * binsPerChunk, t1 = std::min(bins, t0 + binsPerChunk);
+      for (std::size_t c = 0; c < count[1]; ++c) {
+        std::copy(s.block.begin() + static_cast<std::ptrdiff_t>((c * bins + t0) * after),
+                  s.block.begin() + static_cast<std::ptrdiff_t>((c * bins + t1) * after),
+                  values.begin() + static_cast<std::ptrdiff_t>(c * binsPerChunk * after));
+      }
+      packed[k] = detail::shuffleDeflate(values, kDeflateLevel);
+    });
+    for (std::size_t k = 0; k < packed.size(); ++k) {
+      start[2] = k * binsPerChunk;
+      h5Check(H5Dwrite_chunk(s.dataset.get(), H5P_DEFAULT, 0, start.data(), packed[k].size(),
+                             packed[k].data()),
+              path, s.name, "cannot write a chunk");
+    }
+    s.nextPixel += count[1];
+    s.block.clear();
+    return;
+  }
   const H5Space file(h5Check(H5Dget_space(s.dataset.get()), path, s.name, "cannot read its shape"));
   h5Check(
       H5Sselect_hyperslab(file.get(), H5S_SELECT_SET, start.data(), nullptr, count.data(), nullptr),
@@ -177,8 +207,8 @@ H5FloatStream& H5CaptureWriter::stream(const std::string& name, const NpyShape& 
   s->name = name;
   s->shape = shape;
   for (std::size_t a = 2; a < shape.size(); ++a) s->inner *= shape[a];
-  const std::vector<hsize_t> chunk = detail::captureChunk(shape);
-  s->blockColumns = chunk.empty() ? shape[1] : chunk[1];
+  s->chunk = detail::captureChunk(shape);
+  s->blockColumns = s->chunk.empty() ? shape[1] : s->chunk[1];
   s->dataset = impl_->create(name, shape);
   s->block.reserve(s->blockColumns * s->inner);
   const std::size_t expected = elementCount(shape);
