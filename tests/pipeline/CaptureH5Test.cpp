@@ -5,6 +5,7 @@
 // survives a failed run; `tofsim sense` and `tofsim compare` read it, and a
 // damaged one is a located error.
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <cstring>
 #include <filesystem>
@@ -39,17 +40,27 @@ CommandResult render(const fs::path& out, const std::string& extra) {
 
 std::vector<float> npy(const fs::path& file) { return io::readNpy(file).data; }
 
+// The two renders, made once for the suite; each test gets its own copy.
 class RenderedPair : public CaptureH5Test {
  protected:
+  static void SetUpTestSuite() {
+    rendered_ = fs::temp_directory_path() / ("tofsim_RenderedPair_" + std::to_string(::getpid()));
+    fs::remove_all(rendered_);
+    const CommandResult a = render(rendered_ / "npy", "");
+    const CommandResult b =
+        render(rendered_ / "h5",
+               "--set output.format=hdf5 --set render.threads=1 --set render.memory_budget=1MiB");
+    failure_ = a.exitCode != 0 ? a.output : b.exitCode != 0 ? b.output : "";
+  }
+  static void TearDownTestSuite() { fs::remove_all(rendered_); }
   void SetUp() override {
     CaptureH5Test::SetUp();
-    const CommandResult a = render(dir_ / "npy", "");
-    ASSERT_EQ(a.exitCode, 0) << a.output;
-    const CommandResult b =
-        render(dir_ / "h5",
-               "--set output.format=hdf5 --set render.threads=1 --set render.memory_budget=1MiB");
-    ASSERT_EQ(b.exitCode, 0) << b.output;
+    ASSERT_EQ(failure_, "");
+    fs::copy(rendered_, dir_, fs::copy_options::recursive);
   }
+
+  static inline fs::path rendered_;
+  static inline std::string failure_;
 };
 
 TEST_F(RenderedPair, DatasetsEqualTheNpyFilesAcrossThreadsAndBudgets) {
