@@ -14,6 +14,7 @@ packages=(
   libhdf5-dev                                        # NLOS captures in y-tal's HDF5 layout (core/io)
   python3-dev pybind11-dev python3-numpy python3-pytest  # the Python module and its tests
   python3-h5py                                       # tests/io/tal_capture_h5py.py: the captures as h5py sees them
+  dpkg-dev file                                      # cpack -G DEB: dpkg-shlibdeps finds the Depends (tests/install)
 )
 
 missing=()

@@ -1,8 +1,10 @@
 #pragma once
 // Private to the imaging module: the MP4 encoder of video_module/, loaded on
-// first use (dlopen) from where the build put it (TOFSIM_VIDEO_MODULE_PATH,
-// or the environment's TOFSIM_VIDEO_MODULE), so that processes that write no
-// video never load OpenCV's videoio and its ~240 libraries.
+// first use (dlopen), so that processes that write no video never load
+// OpenCV's videoio and its ~240 libraries. It is looked for where the
+// environment's TOFSIM_VIDEO_MODULE says, else beside an installed tofsim
+// (<prefix>/lib/tofsim, found from the executable or the Python module), in
+// the build tree, or under the install prefixes.
 
 #include <filesystem>
 #include <string>
