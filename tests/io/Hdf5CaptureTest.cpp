@@ -32,8 +32,8 @@ std::vector<float> ramp(const NpyShape& shape) {
 
 // Writes `values` of `shape` as "transient" in runs of `run` values.
 void writeStreamed(const std::filesystem::path& file, const NpyShape& shape,
-                   const std::vector<float>& values, std::size_t run) {
-  H5CaptureWriter writer(file);
+                   const std::vector<float>& values, std::size_t run, int threads = 0) {
+  H5CaptureWriter writer(file, threads);
   H5FloatStream& s = writer.stream("transient", shape);
   for (std::size_t i = 0; i < values.size(); i += run) {
     s.append(values.data() + i, std::min(run, values.size() - i));
@@ -111,9 +111,11 @@ TEST_F(Hdf5CaptureTest, ChunkedWithShuffleAndDeflateAndNoTimeStamps) {
   H5Pclose(dcpl);
   H5Dclose(d);
   H5Fclose(f);
-  // The same calls, cut into other runs: the same bytes.
-  writeStreamed(dir_ / "again.h5", shape, ramp(shape), 77);
+  // The same calls, cut into other runs, compressed on 1 or 3 threads: the same bytes.
+  writeStreamed(dir_ / "again.h5", shape, ramp(shape), 77, 1);
   EXPECT_EQ(readBytes(file), readBytes(dir_ / "again.h5"));
+  writeStreamed(dir_ / "threads.h5", shape, ramp(shape), 5000, 3);
+  EXPECT_EQ(readBytes(file), readBytes(dir_ / "threads.h5"));
   EXPECT_LT(std::filesystem::file_size(file), elementCount(shape) * sizeof(float));
 }
 

@@ -83,7 +83,7 @@ class CaptureFile::VolumeSink : public capture::SegmentSink {
   std::size_t pixelFloats_;
 };
 
-CaptureFile::CaptureFile(const std::filesystem::path& file) : writer_(file) {}
+CaptureFile::CaptureFile(const std::filesystem::path& file, int threads) : writer_(file, threads) {}
 
 CaptureFile::~CaptureFile() = default;
 

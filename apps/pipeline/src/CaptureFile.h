@@ -27,7 +27,8 @@ namespace tofsim::pipeline {
 
 class CaptureFile {
  public:
-  explicit CaptureFile(const std::filesystem::path& file);
+  /// threads: render.threads (0 = every core), compressing the volumes.
+  CaptureFile(const std::filesystem::path& file, int threads);
   ~CaptureFile();
   CaptureFile(const CaptureFile&) = delete;
   CaptureFile& operator=(const CaptureFile&) = delete;

@@ -289,7 +289,9 @@ void writeOutputs(const config::RunConfig& config, const capture::RenderJob& job
   if (out.frames || out.video || out.frame_pngs) spill.emplace(dir / kBinMajorSpillName, shape);
   // output.format: hdf5: the volumes and the other arrays in one file.
   std::optional<CaptureFile> capture;
-  if (out.format == config::OutputFormat::Hdf5) capture.emplace(dir / files::kCapture);
+  if (out.format == config::OutputFormat::Hdf5) {
+    capture.emplace(dir / files::kCapture, config.cpu_threads);
+  }
   std::vector<std::unique_ptr<VolumeFileSink>> volumeFiles;
   CaptureConsumers consumers;
   for (const OutputProduct& p : products) {

@@ -46,6 +46,7 @@ struct H5FloatStream::Impl {
   H5Dataset dataset;
   NpyShape shape;
   std::vector<hsize_t> chunk;    // captureChunk(shape)
+  int threads = 0;               // compressing a block's chunks
   std::size_t inner = 1;         // values of one (row, column)
   std::size_t blockColumns = 1;  // columns of one block (the chunks' width)
   std::size_t nextPixel = 0;     // first pixel of the block being filled
@@ -99,7 +100,7 @@ void H5FloatStream::flushBlock() {
     const std::size_t bins = s.shape[2], binsPerChunk = s.chunk[2];
     const std::size_t after = s.inner / bins;  // values of one (row, column, bin)
     std::vector<std::vector<unsigned char>> packed((bins + binsPerChunk - 1) / binsPerChunk);
-    parallelFor(packed.size(), resolveThreads(0), [&](std::size_t k) {
+    parallelFor(packed.size(), resolveThreads(s.threads), [&](std::size_t k) {
       std::vector<float> values(s.chunk[1] * binsPerChunk * after, 0.0f);
       const std::size_t t0 = k * binsPerChunk, t1 = std::min(bins, t0 + binsPerChunk);
       for (std::size_t c = 0; c < count[1]; ++c) {
@@ -138,8 +139,9 @@ struct H5CaptureWriter::Impl {
   H5File file;
   std::deque<std::unique_ptr<H5FloatStream>> streams;
   std::filesystem::path path;
+  int threads = 0;
 
-  explicit Impl(std::filesystem::path p) : temporary(p), path(std::move(p)) {}
+  Impl(std::filesystem::path p, int t) : temporary(p), path(std::move(p)), threads(t) {}
 
   // The groups above `name` ("sensors/spad" of "sensors/spad/spad_counts").
   void makeParents(const std::string& name) {
@@ -179,8 +181,8 @@ struct H5CaptureWriter::Impl {
   }
 };
 
-H5CaptureWriter::H5CaptureWriter(std::filesystem::path path)
-    : impl_(std::make_unique<Impl>(std::move(path))) {
+H5CaptureWriter::H5CaptureWriter(std::filesystem::path path, int threads)
+    : impl_(std::make_unique<Impl>(std::move(path), threads)) {
   const detail::H5QuietErrors quiet;
   Impl& w = *impl_;
   // The root group's header too: without its time stamp.
@@ -206,6 +208,7 @@ H5FloatStream& H5CaptureWriter::stream(const std::string& name, const NpyShape& 
   s->path = &impl_->path;
   s->name = name;
   s->shape = shape;
+  s->threads = impl_->threads;
   for (std::size_t a = 2; a < shape.size(); ++a) s->inner *= shape[a];
   s->chunk = detail::captureChunk(shape);
   s->blockColumns = s->chunk.empty() ? shape[1] : s->chunk[1];

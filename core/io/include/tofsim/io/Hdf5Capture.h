@@ -59,7 +59,9 @@ class H5FloatStream {
 /// the same bytes.
 class H5CaptureWriter {
  public:
-  explicit H5CaptureWriter(std::filesystem::path path);
+  /// `threads`: how many compress a streamed block's chunks at once (0 =
+  /// every core; the bytes do not depend on it).
+  explicit H5CaptureWriter(std::filesystem::path path, int threads = 0);
   ~H5CaptureWriter();
   H5CaptureWriter(const H5CaptureWriter&) = delete;
   H5CaptureWriter& operator=(const H5CaptureWriter&) = delete;
