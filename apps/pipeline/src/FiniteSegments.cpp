@@ -1,6 +1,8 @@
 #include "tofsim/pipeline/FiniteSegments.h"
 
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <utility>
 
 namespace tofsim::pipeline {
@@ -40,18 +42,38 @@ const float* FiniteSegments::finite(const float* values, std::size_t count,
   return copy.data();
 }
 
+// total = direct + indirect in float, so each component file adds up to it.
+// Returns whether every sum is finite, which holds only when both terms are:
+// inf + x, NaN + x and inf - inf are not finite. One pass over the three
+// arrays is then all the check costs (the usual case).
+bool FiniteSegments::addComponents(const float* direct, const float* indirect, std::size_t count) {
+  if (totalSize_ < count) {  // uninitialised: every value is written just below
+    total_.reset(new float[count]);
+    totalSize_ = count;
+  }
+  float* total = total_.get();
+  bool sumsFinite = true;
+  for (std::size_t i = 0; i < count; ++i) {
+    total[i] = direct[i] + indirect[i];
+    // The exponent's bits all set: inf or NaN (a bit test, so the loop vectorises).
+    sumsFinite &= (std::bit_cast<uint32_t>(total[i]) & 0x7f800000u) != 0x7f800000u;
+  }
+  return sumsFinite;
+}
+
 void FiniteSegments::consume(const capture::Segment& segment) {
   const std::size_t floats =
       segment.pixelCount * static_cast<std::size_t>(bins_) * capture::kChannels;
-  const float* direct = finite(segment.component(capture::kDirect), floats, direct_, false);
-  const float* indirect = finite(segment.component(capture::kIndirect), floats, indirect_, false);
-  if (totalSize_ < floats) {  // uninitialised: every value is written just below
-    total_.reset(new float[floats]);
-    totalSize_ = floats;
+  const float* direct = segment.component(capture::kDirect);
+  const float* indirect = segment.component(capture::kIndirect);
+  if (!addComponents(direct, indirect, floats)) {
+    // Some value is not finite: the components cleaned (copies) and counted,
+    // their sum again, and what overflowed in it (two finite floats can).
+    direct = finite(direct, floats, direct_, false);
+    indirect = finite(indirect, floats, indirect_, false);
+    addComponents(direct, indirect, floats);
+    nonFinite_ += zeroNonFinite(total_.get(), floats);
   }
-  // total = direct + indirect in float, so each component file adds up to it.
-  for (std::size_t i = 0; i < floats; ++i) total_[i] = direct[i] + indirect[i];
-  nonFinite_ += zeroNonFinite(total_.get(), floats);  // two finite floats can overflow
   capture::Segment clean{
       segment.firstPixel,
       segment.pixelCount,

@@ -39,6 +39,8 @@ class FiniteSegments : public capture::SegmentSink {
   /// counted unless `counted` already).
   const float* finite(const float* values, std::size_t count, std::vector<float>& copy,
                       bool counted);
+  /// total_ = direct + indirect; whether every sum is finite.
+  bool addComponents(const float* direct, const float* indirect, std::size_t count);
 
   capture::SegmentSink& next_;
   int32_t bins_;
