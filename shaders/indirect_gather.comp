@@ -18,6 +18,7 @@
 layout(local_size_x = TOFSIM_WORK_GROUP_SIZE) in;
 
 #include "transient_physics.glsl"
+#include "vpl_near_field.glsl"
 #include "vpl.glsl"
 #ifdef EXACT_VISIBILITY
 #include "scene_geometry.glsl"
@@ -141,7 +142,8 @@ void gatherVpl(uint local, Sample at, uint k, Vpl vpl, inout float lostBefore,
   float cosVpl = dot(vpl.normal.xyz, d);
   float cosX = -dot(at.n, d);
   if (cosVpl <= 0.0 || cosX <= 0.0) return;
-  float g = geometryTerm(cosVpl, cosX, dist2, uGeometryClamp);
+  float g = vplGeometryTerm(cosVpl, cosX, dist2, uGeometryClamp, at.x, at.n, vpl.positionPath.xyz,
+                            vpl.patchU.xyz, vpl.patchV.xyz);
   if (!visible(uFirstVpl - uIsmFirstVpl + k, vpl, at.x, at.n, d, dist, iterations)) return;
 #ifdef GLTF_MATERIALS
   vec3 fVpl = gltfVplBrdf(vpl.normal.xyz, vpl.incoming.xyz, d, vpl.material.rgb, vpl.incoming.w,

@@ -15,6 +15,9 @@ runs. tofsim's time is its process wall (the whole run) and stats.seconds.
 
 --edges: instead of the issue's rows, ISM at RSM 64^2 with 1, 2x2, 4x4, 8x8
 samples at G-buffer edges and the default clamp: where the error is.
+--footprint: ISM at RSM 64^2 and 128^2 and exact at 128^2, each with the
+footprints (the default), without the VPL's patch footprint, and with point
+pixels (no footprint at all): what the footprint deposit costs and buys.
 """
 
 import json
@@ -49,6 +52,13 @@ EDGE_VARIANTS = [
      ["render.indirect.rsm_resolution=64", "render.indirect.visibility=ism",
       f"render.pixel_samples={n}", "render.adaptive_pixel_samples=true",
       "render.indirect.geometry_clamp=100"]) for n in (1, 2, 4, 8)]
+# --footprint: what the pixel and VPL footprints cost and buy (1 sample, clamp 0).
+FOOTPRINT_VARIANTS = [
+    (f"{vis}, RSM {rsm}^2, {what}",
+     [f"render.indirect.rsm_resolution={rsm}", f"render.indirect.visibility={vis}"] + sets)
+    for vis, rsm in (("ism", 64), ("ism", 128), ("exact", 128))
+    for what, sets in (("footprint", []), ("no VPL footprint", ["render.indirect.vpl_footprint=false"]),
+                       ("point pixels", ["render.pixel_footprint=false"]))]
 COMMON = ["output.video=false", "sensors=[]", "output.components=[]", "light.cone_angle=30 deg",
           "light.cone_falloff=0 deg", "time.start=1.5 m", "time.bin_width=20 ps", f"time.bins={BINS}",
           "render.indirect.geometry_clamp=0"]  # the protocol's clamp 0 (EDGE_VARIANTS set their own)
@@ -139,6 +149,15 @@ def tofsim(side, sets, out):
         wall, stats["seconds"]
 
 
+def silhouettes(depth):
+    """Pixels whose 3 x 3 neighbourhood's depth jumps by more than 5 %: the
+    silhouettes (an edge pixel that is not one is a crease)."""
+    side = depth.shape[0]
+    pad = np.pad(depth, 1, mode="edge")
+    around = np.stack([pad[1 + dy:1 + dy + side, 1 + dx:1 + dx + side] for dy in (-1, 0, 1) for dx in (-1, 0, 1)])
+    return np.abs(around - depth[None]).max(axis=0) > 0.05 * depth
+
+
 def seconds_to(error, ladder):
     """mitransient's seconds to `error`, log-log between its runs (None off the ladder)."""
     pts = sorted(ladder, key=lambda p: -p[1])  # (seconds, error), error decreasing
@@ -150,9 +169,11 @@ def seconds_to(error, ladder):
 
 
 def main():
-    edges = "--edges" in sys.argv
-    if edges:
-        sys.argv.remove("--edges")
+    variants = VARIANTS
+    for flag, rows in (("--edges", EDGE_VARIANTS), ("--footprint", FOOTPRINT_VARIANTS)):
+        if flag in sys.argv:
+            sys.argv.remove(flag)
+            variants = rows
     side = int(sys.argv[1]) if len(sys.argv) > 1 else 64
     truth_spp = int(sys.argv[2]) if len(sys.argv) > 2 else 65536
     folder = sys.argv[3] if len(sys.argv) > 3 else tempfile.mkdtemp(prefix="tofsim-mt-")
@@ -162,7 +183,7 @@ def main():
         mitransient(truth_spp, side, truth_file)
     truth = rebinned(np.load(truth_file))
     runs = [(name, *tofsim(side, sets, os.path.join(folder, f"tofsim{i}")))
-            for i, (name, sets) in enumerate(EDGE_VARIANTS if edges else VARIANTS)]
+            for i, (name, sets) in enumerate(variants)]
     inside = np.broadcast_to(interior(plane_ids(side))[:, :, None], truth.shape)
     everywhere = np.ones_like(truth, dtype=bool)
     ladder_in, ladder_all = [], []
@@ -178,16 +199,21 @@ def main():
     print(f"\n{side}x{side}, truth mitransient {truth_spp} spp, {inside[:, :, 0].sum()} interior pixels of {side * side}")
     print("| tofsim IR (CPU backend, clamp 0) | process s / render s | transient L1 interior / all | "
           "mitransient s to the same error, interior / all | speed-up (process) interior / all | "
-          "edges' share of the error |")
-    print("|---|---|---|---|---|---|")
+          "edges' share of the error | L1 by pixel class: interior / silhouette / crease |")
+    print("|---|---|---|---|---|---|---|")
     for name, v, depth, wall, render in runs:
         ei, ea = rel_l1(rebinned(v), truth, inside), rel_l1(rebinned(v), truth, everywhere)
         ti, ta = seconds_to(ei, ladder_in), seconds_to(ea, ladder_all)
         fmt = lambda t: "off the ladder" if t is None else f"{t:.2f}"
         sp = lambda t: "-" if t is None else f"{t / wall:.1f}x"
         edge_share = float(np.abs(rebinned(v) - truth)[~inside].sum() / np.abs(rebinned(v) - truth).sum())
+        # Each class's share of the all-pixel relative L1 (they add up to it).
+        per_pixel = np.abs(rebinned(v) - truth).sum(axis=2) / truth.sum()
+        sil = ~inside[:, :, 0] & silhouettes(depth)
+        crease = ~inside[:, :, 0] & ~sil
+        classes = " / ".join(f"{per_pixel[m].sum():.1%}" for m in (inside[:, :, 0], sil, crease))
         print(f"| {name} | {wall:.2f} / {render:.2f} | {ei:.1%} / {ea:.1%} | {fmt(ti)} / {fmt(ta)} | "
-              f"{sp(ti)} / {sp(ta)} | {edge_share:.0%} |")
+              f"{sp(ti)} / {sp(ta)} | {edge_share:.0%} | {classes} |")
 
 
 if __name__ == "__main__":

@@ -77,9 +77,17 @@ TEST(MultiBounceTest, CornellBoxEnergyOfTwoBouncesMatchesTheReference) {
   RenderJob job = test::cornellBoxJob(scene, 24, 300, 0.03);  // 1.5 .. 10.5 m
   job.settings.indirect.rsm_resolution = 48;
   const BounceErrors e = energyErrors(exactUnclamped(job), 4096);
-  // Measured: all bounces 0.013, bounce 2 alone 0.020 (bounce 1 alone is
-  // 3 % low: the spot's RSM texels at the cone's edge).
-  EXPECT_LT(e.total, 0.017);
+  // Measured: all bounces 0.026, bounce 2 alone 0.020. Bounce 1 alone is
+  // 5.0 % under the reference here, and 2.1 / 3.3 % at RSM 96^2 / 128^2: the
+  // RSM's discretisation on this scene (texels split across its creases and
+  // the cone's edge), which moves by a percent from one resolution to the
+  // next. Before the VPL's near field (shaders/vpl_near_field.glsl) the
+  // point VPL's midpoint rule overestimated the light next to the patches
+  // of texels that straddle a crease and offset 2 % of it (all bounces 0.013,
+  // bounce 1 3.1 % low); the patch's exact integral no longer does
+  // (VplNearFieldTest), and agrees better with mitransient at the creases
+  // (bench/README.md, "The VPL's near field").
+  EXPECT_LT(e.total, 0.033);
   EXPECT_LT(e.bounce2, 0.027);
 }
 

@@ -42,7 +42,7 @@ inline constexpr auto kIndirectFields = std::tuple{
     Field{"visibility", &capture::IndirectSettings::visibility, Choice<capture::Visibility>{kVisibilityNames},
           {.doc = "VPL visibility: `ism` (imperfect shadow maps) or `exact`"}},
     Field{"geometry_clamp", &capture::IndirectSettings::geometry_term_clamp_per_m2, Number{kAnyValue},
-          {.unit = "1/m^2", .doc = "upper bound of cos cos / d^2; <= 0 disables clamping"}},
+          {.unit = "1/m^2", .doc = "upper bound of a point VPL's cos cos / d^2; within 8 patch widths of a first-bounce VPL the gather takes its RSM texel patch's exact integral instead, bounded by pi / A and not clamped (README.md, \"Indirect gather\"); <= 0 disables clamping"}},
     Field{"vpl_brdf_clamp", &capture::IndirectSettings::vpl_brdf_clamp_per_sr, Number{kAnyValue},
           {.unit = "1/sr", .doc = "`materials: gltf`: upper bound of each channel of a VPL's BRDF value toward the point it lights (and of its BRDF weight where a later bounce continues its path): bounds the spikes of smooth VPLs, at the cost of the energy above it (README.md, \"Materials\", measured bias); <= 0 disables clamping"}},
     Field{"vpl_footprint", &capture::IndirectSettings::vpl_footprint, Flag{},

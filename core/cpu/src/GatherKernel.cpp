@@ -5,6 +5,7 @@
 #include "tofsim/physics/FootprintKernel.h"
 #include "tofsim/physics/GltfBrdf.h"
 #include "tofsim/physics/TransientPhysics.h"
+#include "tofsim/physics/VplNearField.h"
 
 namespace tofsim::cpu {
 
@@ -85,8 +86,10 @@ void glossyRadiance(const PixelSurface& s, const VplArrays& v, std::size_t first
     const glm::vec3 vplN(v.nx[k], v.ny[k], v.nz[k]);
     const glm::vec3 toX = s.x - glm::vec3(v.px[k], v.py[k], v.pz[k]);
     const float dist2 = glm::dot(toX, toX);
-    const float g =
-        physics::geometryTerm(glm::dot(vplN, d), -glm::dot(s.n, d), dist2, c.geometryClamp);
+    const float g = physics::vplGeometryTerm(
+        glm::dot(vplN, d), -glm::dot(s.n, d), dist2, c.geometryClamp, s.x, s.n,
+        glm::vec3(v.px[k], v.py[k], v.pz[k]), glm::vec3(v.ux[k], v.uy[k], v.uz[k]),
+        glm::vec3(v.vx[k], v.vy[k], v.vz[k]));
     const glm::vec3 fVpl = physics::gltfVplBrdf(vplN, glm::vec3(v.ix[k], v.iy[k], v.iz[k]), d,
                                                 glm::vec3(v.br[k], v.bg[k], v.bb[k]), v.metallic[k],
                                                 v.roughness[k], c.vplBrdfClamp);
@@ -95,6 +98,31 @@ void glossyRadiance(const PixelSurface& s, const VplArrays& v, std::size_t first
     const glm::vec3 radiance =
         physics::gltfVplRadiance(fCamera, fVpl, glm::vec3(v.fr[k], v.fg[k], v.fb[k]), g);
     terms.r[i] = radiance.r, terms.g[i] = radiance.g, terms.b[i] = radiance.b;
+  }
+}
+
+// |x - x_l|^2 as vplTerms computes it, term by term.
+float dist2Of(const PixelSurface& s, const VplArrays& v, std::size_t k) {
+  const float tx = s.x.x - v.px[k], ty = s.x.y - v.py[k], tz = s.x.z - v.pz[k];
+  return tx * tx + ty * ty + tz * tz;
+}
+
+// The lanes in a VPL's near field, which vplTerms gave the point VPL's term:
+// the patch's integral instead (vplGeometryTerm), as indirect_gather.comp
+// computes it for every pair. Few lanes, so a scalar pass.
+void nearFieldRadiance(const PixelSurface& s, const VplArrays& v, std::size_t first, std::size_t n,
+                       const GatherConstants& c, VplTerms& terms) {
+  for (std::size_t i = 0; i < n; ++i) {
+    if (terms.bin[i] == kNoLight || !terms.nearField[i]) continue;
+    const std::size_t k = first + i;
+    const glm::vec3 d(terms.dx[i], terms.dy[i], terms.dz[i]);
+    const float g = physics::vplGeometryTerm(
+        v.nx[k] * d.x + v.ny[k] * d.y + v.nz[k] * d.z, -(s.n.x * d.x + s.n.y * d.y + s.n.z * d.z),
+        dist2Of(s, v, k), c.geometryClamp, s.x, s.n, glm::vec3(v.px[k], v.py[k], v.pz[k]),
+        glm::vec3(v.ux[k], v.uy[k], v.uz[k]), glm::vec3(v.vx[k], v.vy[k], v.vz[k]));
+    terms.r[i] = s.brdf.r * v.fr[k] * g;
+    terms.g[i] = s.brdf.g * v.fg[k] * g;
+    terms.b[i] = s.brdf.b * v.fb[k] * g;
   }
 }
 
@@ -119,6 +147,13 @@ __attribute__((target_clones("avx2", "default"))) void vplTerms(const PixelSurfa
   const float* fr = v.fr.data() + first;
   const float* fg = v.fg.data() + first;
   const float* fb = v.fb.data() + first;
+  const float* ux = v.ux.data() + first;
+  const float* uy = v.uy.data() + first;
+  const float* uz = v.uz.data() + first;
+  const float* vx = v.vx.data() + first;
+  const float* vy = v.vy.data() + first;
+  const float* vz = v.vz.data() + first;
+  int32_t anyNear = 0;
   const float offAxis_m = c.start_m - 2.0f * c.binWidth_m;  // a finite path for dark lanes
   for (std::size_t i = 0; i < n; ++i) {
     // The same steps as indirect_gather.comp, lane by lane.
@@ -138,8 +173,16 @@ __attribute__((target_clones("avx2", "default"))) void vplTerms(const PixelSurfa
     terms.g[i] = s.brdf.g * fg[i] * g;
     terms.b[i] = s.brdf.b * fb[i] * g;
     terms.dx[i] = dx, terms.dy[i] = dy, terms.dz[i] = dz, terms.dist[i] = dist;
+    const int32_t near = physics::vplInNearField(dist2, glm::vec3(ux[i], uy[i], uz[i]),
+                                                 glm::vec3(vx[i], vy[i], vz[i]));
+    terms.nearField[i] = near;
+    anyNear |= near;
   }
-  if (c.gltf) glossyRadiance(s, v, first, n, c, terms);
+  if (c.gltf) {
+    glossyRadiance(s, v, first, n, c, terms);
+  } else if (anyNear) {
+    nearFieldRadiance(s, v, first, n, c, terms);
+  }
   if (c.footprint) vplKernels(s, v, first, n, c, terms);
 }
 

@@ -73,6 +73,9 @@ struct VplTerms {
   alignas(64) float mass[kVectorNarrowBins][kVplBlock];
   alignas(64) float r[kVplBlock], g[kVplBlock], b[kVplBlock];
   alignas(64) float dx[kVplBlock], dy[kVplBlock], dz[kVplBlock], dist[kVplBlock];
+  /// Whether the pixel lies in the VPL's near field (physics::vplInNearField),
+  /// where its geometry term is the patch's integral.
+  alignas(64) int32_t nearField[kVplBlock];
 };
 
 /// Fills terms[0, n) for VPLs [first, first + n), n <= kVplBlock; with

@@ -1,0 +1,95 @@
+// A VPL's light near its own patch, written once in the common subset of
+// GLSL 4.50 and C++/GLM (the rules of transient_physics.glsl): the indirect
+// gather includes this file, C++ through
+// core/physics/include/tofsim/physics/VplNearField.h.
+//
+// A VPL stands for its RSM texel's patch, a parallelogram of area A on the
+// surface, and lights a point x with cos_l cos_x A / d^2: the patch's
+// integral by its midpoint. Where x lies within a few patch widths (at a
+// crease, where the VPL's wall meets x's floor) that term has no bound: a
+// sample next to a VPL gets 1/d^2 (the spikes of an unclamped render), and
+// a geometry clamp cuts them at the price of the crease's light. There the
+// gather takes the patch's integral itself instead,
+//   integral over the patch of cos_l cos_x / d^2 dA = the patch's projected
+//   solid angle seen from x (Lambert's formula over its edges),
+// divided by A: the same light, spread uniformly over the patch as the VPL's
+// flux is, exact at any distance and at most pi / A. Far from the patch the
+// two agree (NEAR_FIELD_WIDTHS: to 0.5 % where the switch happens), so only
+// the pairs that need it pay for the edges.
+#ifndef TOFSIM_VPL_NEAR_FIELD_GLSL
+#define TOFSIM_VPL_NEAR_FIELD_GLSL
+
+#ifndef TOFSIM_PHYSICS_FN
+#define TOFSIM_PHYSICS_FN
+#endif
+
+// Within this many patch widths (sqrt(A)) the patch's integral replaces the
+// point VPL's term. The midpoint rule's relative error for a square seen
+// head-on at distance d is about A / (3 d^2): 0.5 % at 8 widths.
+const float NEAR_FIELD_WIDTHS = 8.0f;
+
+// Whether x at squared distance dist2 from a VPL with patch steps patchU,
+// patchV (m; zero for a point VPL: a later bounce's) is in its near field:
+// dist2 < NEAR_FIELD_WIDTHS^2 A, compared squared, without a square root.
+TOFSIM_PHYSICS_FN bool vplInNearField(float dist2, vec3 patchU, vec3 patchV) {
+  vec3 normalArea = cross(patchU, patchV);
+  float area2 = dot(normalArea, normalArea);
+  float widths2 = NEAR_FIELD_WIDTHS * NEAR_FIELD_WIDTHS;
+  return area2 > 0.0f && dist2 * dist2 < widths2 * widths2 * area2;
+}
+
+// Projected solid angle (sr) of the parallelogram centre +- patchU / 2 +-
+// patchV / 2 seen from x with unit normal n: the part above x's tangent
+// plane (the quad clipped against it: at most five corners), by Lambert's
+// formula, half the sum over its edges of the angle each subtends times the
+// cosine between n and the edge's plane.
+TOFSIM_PHYSICS_FN float patchProjectedSolidAngle(vec3 x, vec3 n, vec3 centre, vec3 patchU,
+                                                 vec3 patchV) {
+  vec3 corner[4];
+  corner[0] = centre - 0.5f * patchU - 0.5f * patchV - x;
+  corner[1] = centre + 0.5f * patchU - 0.5f * patchV - x;
+  corner[2] = centre + 0.5f * patchU + 0.5f * patchV - x;
+  corner[3] = centre - 0.5f * patchU + 0.5f * patchV - x;
+  vec3 polygon[5];
+  int count = 0;
+  for (int i = 0; i < 4; ++i) {
+    vec3 a = corner[i];
+    vec3 b = corner[(i + 1) % 4];
+    float ha = dot(a, n);
+    float hb = dot(b, n);
+    if (ha >= 0.0f) {
+      polygon[count] = a;
+      count += 1;
+    }
+    if ((ha >= 0.0f) != (hb >= 0.0f)) {
+      polygon[count] = a + (b - a) * (ha / (ha - hb));
+      count += 1;
+    }
+  }
+  float sum = 0.0f;
+  for (int i = 0; i < count; ++i) {
+    vec3 a = polygon[i];
+    vec3 b = polygon[(i + 1) % count];
+    vec3 edgePlane = cross(a, b);
+    float sine = length(edgePlane);  // |a| |b| sin(angle)
+    if (sine > 0.0f) sum += atan(sine, dot(a, b)) * (dot(n, edgePlane) / sine);
+  }
+  return 0.5f * abs(sum);
+}
+
+// The geometry term of a VPL at vplX with patch steps patchU, patchV for the
+// point x with unit normal n (cosVpl, cosX, dist2 and clampPerM2 as
+// geometryTerm takes them): in the near field the patch's projected solid
+// angle over its area, unclamped (it is bounded); else the point VPL's
+// clamped cos cos / d^2. A patch across x's horizon is a texel whose light
+// fell on two surfaces (the RSM gave it all to the one at its centre): the
+// part below the horizon stands for light that reached x's own surface, and
+// the clip drops it, continuously as the patch moves (no switch between two
+// estimates: the same on every backend, smooth over time).
+TOFSIM_PHYSICS_FN float vplGeometryTerm(float cosVpl, float cosX, float dist2, float clampPerM2,
+                                        vec3 x, vec3 n, vec3 vplX, vec3 patchU, vec3 patchV) {
+  if (!vplInNearField(dist2, patchU, patchV)) return geometryTerm(cosVpl, cosX, dist2, clampPerM2);
+  return patchProjectedSolidAngle(x, n, vplX, patchU, patchV) / length(cross(patchU, patchV));
+}
+
+#endif  // TOFSIM_VPL_NEAR_FIELD_GLSL
