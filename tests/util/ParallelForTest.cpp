@@ -5,6 +5,10 @@
 
 #include <gtest/gtest.h>
 
+#ifdef __linux__
+#include <sched.h>
+#endif
+
 #include <atomic>
 #include <stdexcept>
 #include <vector>
@@ -49,6 +53,26 @@ TEST(ParallelForTest, ZeroThreadsMeansEveryCore) {
   EXPECT_GE(resolveThreads(0), 1);
   EXPECT_EQ(resolveThreads(3), 3);
 }
+
+#ifdef __linux__
+TEST(ParallelForTest, ZeroThreadsMeansTheCoresThisProcessMayRunOn) {
+  // A Slurm task, taskset or a cpuset limits the process to some cores:
+  // "every core" is those, not the machine's (hardware_concurrency).
+  cpu_set_t before;
+  ASSERT_EQ(sched_getaffinity(0, sizeof(before), &before), 0);
+  if (CPU_COUNT(&before) < 2) GTEST_SKIP() << "one core allowed already";
+  EXPECT_EQ(resolveThreads(0), CPU_COUNT(&before));
+  int first = 0;
+  while (!CPU_ISSET(first, &before)) ++first;
+  cpu_set_t one;
+  CPU_ZERO(&one);
+  CPU_SET(first, &one);
+  ASSERT_EQ(sched_setaffinity(0, sizeof(one), &one), 0);
+  const int limited = resolveThreads(0);
+  ASSERT_EQ(sched_setaffinity(0, sizeof(before), &before), 0);  // back before checking
+  EXPECT_EQ(limited, 1);
+}
+#endif
 
 }  // namespace
 }  // namespace tofsim

@@ -110,7 +110,7 @@ const ConfigKey kRunConfigKeys[] = {
      "`--backend` on `render` sets it. Both give the same volume within float rounding "
      "(tests/cpu)"},
     {"render.threads", "int", "in [0, 4096]", "0", "-",
-     "worker threads of the `cpu` backend, and of the later bounces' ray tracing on both backends (0 = all hardware threads, e.g. a cluster job's `--cpus-per-task`); the bytes do not depend on it (tests/cpu, tests/ir BounceVplsTest)"},
+     "worker threads of the `cpu` backend, and of the later bounces' ray tracing on both backends (0 = every core this process may run on: its CPU affinity, e.g. a Slurm task's `--cpus-per-task`, taskset or a container's cpuset); the bytes do not depend on it (tests/cpu, tests/ir BounceVplsTest)"},
     {"render.seed", "int", "in [0, 2^62]", "1", "-",
      "seed of every random choice: the renderer's and the sensors'"},
     {"render.shadow_map_resolution", "int", "in [16, 16384]", "1024", "pixel",

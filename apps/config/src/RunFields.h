@@ -66,7 +66,7 @@ inline constexpr auto kReferenceFields = std::tuple{
     Field{"samples_per_pixel", &ReferenceConfig::samples_per_pixel, IntegerIn{1, 1 << 24},
           {.doc = "paths per pixel (with `pixel_filter: box`, also the direct term's sub-pixel samples)"}},
     Field{"threads", &ReferenceConfig::threads, IntegerIn{0, 4096},
-          {.doc = "worker threads, 0 = all hardware threads"}},
+          {.doc = "worker threads, 0 = every core this process may run on (its CPU affinity)"}},
     Field{"pixel_filter", &ReferenceConfig::pixel_filter, Choice<ReferencePixelFilter>{kPixelFilterNames},
           {.doc = "`box`: a pixel integrates its area (stratified, jittered sub-pixel points, one per path); "
                   "`point`: one ray through the pixel centre, the G-buffer's view (closed-form tests)"}},

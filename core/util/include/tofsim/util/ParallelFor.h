@@ -8,6 +8,10 @@
 // Header-only: a user links Threads::Threads. The one thread pool of tofsim:
 // the CPU backend, the later bounces, the reference and the sensors use it.
 
+#ifdef __linux__
+#include <sched.h>
+#endif
+
 #include <algorithm>
 #include <atomic>
 #include <cstddef>
@@ -18,9 +22,20 @@
 
 namespace tofsim {
 
-/// A thread count as configs give it: 0 (or less) = every core.
+/// A thread count as configs give it: 0 (or less) = every core this process
+/// may run on. That is its CPU affinity where the system has one (a Slurm
+/// task's --cpus-per-task, taskset, a container's cpuset), not the machine's
+/// core count, which std::thread::hardware_concurrency() gives: a task
+/// limited to 2 of 64 cores would otherwise start 64 threads on its 2.
 inline int resolveThreads(int requested) {
   if (requested > 0) return requested;
+#ifdef __linux__
+  cpu_set_t allowed;
+  CPU_ZERO(&allowed);
+  if (sched_getaffinity(0, sizeof(allowed), &allowed) == 0) {
+    return std::max(1, CPU_COUNT(&allowed));
+  }
+#endif
   return static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
 }
 
