@@ -28,14 +28,23 @@
 // head-on at distance d is about A / (3 d^2): 0.5 % at 8 widths.
 const float NEAR_FIELD_WIDTHS = 8.0f;
 
-// Whether x at squared distance dist2 from a VPL with patch steps patchU,
-// patchV (m; zero for a point VPL: a later bounce's) is in its near field:
-// dist2 < NEAR_FIELD_WIDTHS^2 A, compared squared, without a square root.
-TOFSIM_PHYSICS_FN bool vplInNearField(float dist2, vec3 patchU, vec3 patchV) {
+// The squared squared radius of a VPL's near field, NEAR_FIELD_WIDTHS^4 A^2
+// (m^4), from its patch steps patchU, patchV (m; zero for a point VPL: a
+// later bounce's, which then has none). One value per VPL: the CPU gather
+// holds it in an array (VplArrays::nearLimit) instead of a cross product
+// per pair.
+TOFSIM_PHYSICS_FN float vplNearFieldLimit(vec3 patchU, vec3 patchV) {
   vec3 normalArea = cross(patchU, patchV);
   float area2 = dot(normalArea, normalArea);
   float widths2 = NEAR_FIELD_WIDTHS * NEAR_FIELD_WIDTHS;
-  return area2 > 0.0f && dist2 * dist2 < widths2 * widths2 * area2;
+  return widths2 * widths2 * area2;
+}
+
+// Whether x at squared distance dist2 from a VPL whose vplNearFieldLimit is
+// `limit` lies in its near field: dist2 < NEAR_FIELD_WIDTHS^2 A, compared
+// squared, without a square root (never for a point VPL: limit 0).
+TOFSIM_PHYSICS_FN bool vplInNearField(float dist2, float limit) {
+  return dist2 * dist2 < limit;
 }
 
 // Projected solid angle (sr) of the parallelogram centre +- patchU / 2 +-
@@ -88,7 +97,9 @@ TOFSIM_PHYSICS_FN float patchProjectedSolidAngle(vec3 x, vec3 n, vec3 centre, ve
 // estimates: the same on every backend, smooth over time).
 TOFSIM_PHYSICS_FN float vplGeometryTerm(float cosVpl, float cosX, float dist2, float clampPerM2,
                                         vec3 x, vec3 n, vec3 vplX, vec3 patchU, vec3 patchV) {
-  if (!vplInNearField(dist2, patchU, patchV)) return geometryTerm(cosVpl, cosX, dist2, clampPerM2);
+  if (!vplInNearField(dist2, vplNearFieldLimit(patchU, patchV))) {
+    return geometryTerm(cosVpl, cosX, dist2, clampPerM2);
+  }
   return patchProjectedSolidAngle(x, n, vplX, patchU, patchV) / length(cross(patchU, patchV));
 }
 

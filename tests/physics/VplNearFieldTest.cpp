@@ -95,7 +95,7 @@ TEST(VplNearFieldTest, ThePointTermTakesOverContinuouslyAtTheNearFieldsEdge) {
     const float h = widths * width;
     const vec3 vpl(0.0f, 0.0f, h);
     const float g = vplGeometryTerm(1.0f, 1.0f, h * h, 0.0f, x, n, vpl, u, v);
-    EXPECT_EQ(vplInNearField(h * h, u, v), widths < NEAR_FIELD_WIDTHS);
+    EXPECT_EQ(vplInNearField(h * h, vplNearFieldLimit(u, v)), widths < NEAR_FIELD_WIDTHS);
     // Both sides within the midpoint rule's error, A / (3 d^2) relative, of 1 / h^2.
     EXPECT_NEAR(g * h * h, 1.0f, 1.0f / (3.0f * widths * widths) + 1e-5f) << widths;
     if (widths < NEAR_FIELD_WIDTHS) {
@@ -155,7 +155,7 @@ TEST(VplNearFieldTest, APatchAboveTheHorizonGivesItsExactIntegralUnclamped) {
 TEST(VplNearFieldTest, APointVplHasNoNearField) {
   // A later bounce's VPL (patch steps 0) keeps the point term, clamp included.
   const vec3 zero(0.0f);
-  EXPECT_FALSE(vplInNearField(1e-8f, zero, zero));
+  EXPECT_FALSE(vplInNearField(1e-8f, vplNearFieldLimit(zero, zero)));
   EXPECT_EQ(vplGeometryTerm(1.0f, 1.0f, 1e-4f, 100.0f, vec3(0.0f), vec3(0.0f, 0.0f, 1.0f),
                             vec3(0.0f, 0.0f, 0.01f), zero, zero),
             100.0f);

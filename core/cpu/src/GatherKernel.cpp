@@ -147,12 +147,7 @@ __attribute__((target_clones("avx2", "default"))) void vplTerms(const PixelSurfa
   const float* fr = v.fr.data() + first;
   const float* fg = v.fg.data() + first;
   const float* fb = v.fb.data() + first;
-  const float* ux = v.ux.data() + first;
-  const float* uy = v.uy.data() + first;
-  const float* uz = v.uz.data() + first;
-  const float* vx = v.vx.data() + first;
-  const float* vy = v.vy.data() + first;
-  const float* vz = v.vz.data() + first;
+  const float* nearLimit = v.nearLimit.data() + first;
   int32_t anyNear = 0;
   const float offAxis_m = c.start_m - 2.0f * c.binWidth_m;  // a finite path for dark lanes
   for (std::size_t i = 0; i < n; ++i) {
@@ -173,8 +168,7 @@ __attribute__((target_clones("avx2", "default"))) void vplTerms(const PixelSurfa
     terms.g[i] = s.brdf.g * fg[i] * g;
     terms.b[i] = s.brdf.b * fb[i] * g;
     terms.dx[i] = dx, terms.dy[i] = dy, terms.dz[i] = dz, terms.dist[i] = dist;
-    const int32_t near = physics::vplInNearField(dist2, glm::vec3(ux[i], uy[i], uz[i]),
-                                                 glm::vec3(vx[i], vy[i], vz[i]));
+    const int32_t near = physics::vplInNearField(dist2, nearLimit[i]);
     terms.nearField[i] = near;
     anyNear |= near;
   }

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "tofsim/ir/IrBackend.h"
+#include "tofsim/physics/VplNearField.h"
 
 namespace tofsim::cpu {
 
@@ -17,6 +18,7 @@ struct VplArrays {
   std::vector<float> fr, fg, fb;        ///< ir::Vpl::flux: albedo * Phi / pi, W/sr (gltf: Phi, W)
   std::vector<float> ux, uy, uz, uw;    ///< patch step along the RSM's right axis, w: light leg
   std::vector<float> vx, vy, vz, vw;    ///< along its up axis (ir::Vpl::patchU / patchV)
+  std::vector<float> nearLimit;         ///< physics::vplNearFieldLimit of the patch, m^4
   /// glossy only (empty otherwise): ir::Vpl::incoming (unit direction the
   /// light came from) and the material (base colour, metallic, roughness).
   std::vector<float> ix, iy, iz, br, bg, bb, metallic, roughness;
@@ -26,7 +28,7 @@ struct VplArrays {
   explicit VplArrays(const std::vector<ir::Vpl>& vpls = {}, bool withMaterials = false)
       : count(vpls.size()), glossy(withMaterials) {
     for (std::vector<float>* a : {&px, &py, &pz, &path, &nx, &ny, &nz, &fr, &fg, &fb, &ux, &uy, &uz,
-                                  &uw, &vx, &vy, &vz, &vw}) {
+                                  &uw, &vx, &vy, &vz, &vw, &nearLimit}) {
       a->resize(count);
     }
     for (std::size_t k = 0; k < count; ++k) {
@@ -37,6 +39,7 @@ struct VplArrays {
       fr[k] = v.flux.r, fg[k] = v.flux.g, fb[k] = v.flux.b;
       ux[k] = v.patchU.x, uy[k] = v.patchU.y, uz[k] = v.patchU.z, uw[k] = v.patchU.w;
       vx[k] = v.patchV.x, vy[k] = v.patchV.y, vz[k] = v.patchV.z, vw[k] = v.patchV.w;
+      nearLimit[k] = physics::vplNearFieldLimit(glm::vec3(v.patchU), glm::vec3(v.patchV));
     }
     if (!glossy) return;
     for (std::vector<float>* a : {&ix, &iy, &iz, &br, &bg, &bb, &metallic, &roughness}) {
@@ -50,7 +53,7 @@ struct VplArrays {
       roughness[k] = v.material.w;
     }
   }
-  std::size_t bytes() const { return count * (glossy ? 26 : 18) * sizeof(float); }
+  std::size_t bytes() const { return count * (glossy ? 27 : 19) * sizeof(float); }
 };
 
 }  // namespace tofsim::cpu
