@@ -65,6 +65,7 @@ render:
   indirect:
     enabled: false
     rsm_resolution: 8
+    rsm_edge_samples: 3
     ism_resolution: 16
     points_per_vpl: 200
     ism_pull_push: false

@@ -42,7 +42,7 @@ TEST_F(RunConfigFieldsTest, TableDocumentedDefaultsReadBackAsTheStructDefaults) 
       ++checked;
     }
   }
-  EXPECT_EQ(checked, 12 + 5);
+  EXPECT_EQ(checked, 13 + 5);
 }
 
 TEST_F(RunConfigFieldsTest, OutputFormatIsNpyOrHdf5WithALocatedError) {

@@ -100,7 +100,7 @@ void expectSameVpls(const capture::RenderJob& job) {
   glm::vec3 lo, hi;
   viewBounds(job, lo, hi);
   const capture::IndirectSettings& s = job.settings.indirect;
-  const auto gl = render::generateVpls(gpuScene, job.light, s.rsm_resolution,
+  const auto gl = render::generateVpls(gpuScene, job.light, s.rsm_resolution, s.rsm_edge_samples,
                                        job.settings.time.index_of_refraction, lo, hi,
                                        job.settings.materials == capture::MaterialModel::Gltf);
   CpuBackend backend({2, true});

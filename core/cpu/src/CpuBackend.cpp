@@ -108,7 +108,8 @@ std::vector<ir::Vpl> CpuBackend::generateVpls(const capture::RenderJob& job) {
   finishSurfaces();
   const capture::IndirectSettings& s = job.settings.indirect;
   if (!s.enabled) return {};
-  return traceRsmVpls(*scene_, job.light, s.rsm_resolution, job.settings.time.index_of_refraction,
+  return traceRsmVpls(*scene_, job.light, s.rsm_resolution, s.rsm_edge_samples,
+                      job.settings.time.index_of_refraction,
                       job.settings.materials == capture::MaterialModel::Gltf, threads_,
                       litBounds_->of(job.light));
 }

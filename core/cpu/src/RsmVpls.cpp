@@ -1,9 +1,11 @@
 #include "RsmVpls.h"
 
 #include <optional>
+#include <utility>
 
 #include "LitBounds.h"
 #include "ParallelFor.h"
+#include "tofsim/ir/RsmEdgeTexels.h"
 #include "tofsim/ir/RsmTexels.h"
 
 namespace tofsim::cpu {
@@ -32,20 +34,50 @@ std::optional<ir::Vpl> texelVpl(const rays::RayScene& scene, const capture::Ligh
 }  // namespace
 
 std::vector<ir::Vpl> traceRsmVpls(const rays::RayScene& scene, const capture::Light& light,
-                                  int resolution, double indexOfRefraction, bool gltf, int threads,
+                                  int resolution, int edgeSamples, double indexOfRefraction,
+                                  bool gltf, int threads,
                                   const std::optional<scene::Bounds>& lit) {
+  const auto trace = [&](const ir::RsmView& view, int side, int x, int y) {
+    return texelVpl(scene, light, view, side, x, y, indexOfRefraction, gltf, lit);
+  };
   std::vector<ir::Vpl> vpls;
   for (const ir::RsmView& view : ir::rsmViews(light)) {
-    // Rows in parallel, then appended in texel order.
-    std::vector<std::vector<ir::Vpl>> rows(static_cast<std::size_t>(resolution));
+    // Rows in parallel, then gathered in texel order.
+    std::vector<std::vector<std::pair<int, ir::Vpl>>> rows(static_cast<std::size_t>(resolution));
     parallelFor(rows.size(), threads, [&](std::size_t row) {
       for (int x = 0; x < resolution; ++x) {
-        const auto vpl = texelVpl(scene, light, view, resolution, x, static_cast<int>(row),
-                                  indexOfRefraction, gltf, lit);
-        if (vpl) rows[row].push_back(*vpl);
+        if (const auto vpl = trace(view, resolution, x, static_cast<int>(row))) {
+          rows[row].emplace_back(x, *vpl);
+        }
       }
     });
-    for (const auto& row : rows) vpls.insert(vpls.end(), row.begin(), row.end());
+    ir::TexelVpls texels(resolution);
+    for (std::size_t row = 0; row < rows.size(); ++row) {
+      for (const auto& [x, vpl] : rows[row]) texels.add(row * resolution + x, vpl);
+      std::vector<std::pair<int, ir::Vpl>>().swap(rows[row]);
+    }
+    // Rays for the edge texels' sub-texels only, an edge texel per task.
+    const ir::SubTexelSource subTexels = [&](const std::vector<uint8_t>& edges, int n) {
+      std::vector<std::size_t> edgeTexels;
+      for (std::size_t i = 0; i < edges.size(); ++i) {
+        if (edges[i]) edgeTexels.push_back(i);
+      }
+      const std::size_t perTexel = static_cast<std::size_t>(n) * n;
+      std::vector<std::optional<ir::Vpl>> subs(edgeTexels.size() * perTexel);
+      parallelFor(edgeTexels.size(), threads, [&](std::size_t e) {
+        const int x = static_cast<int>(edgeTexels[e] % resolution);
+        const int y = static_cast<int>(edgeTexels[e] / resolution);
+        for (int j = 0; j < n; ++j) {
+          for (int i = 0; i < n; ++i) {
+            subs[e * perTexel + j * n + i] = trace(view, n * resolution, x * n + i, y * n + j);
+          }
+        }
+      });
+      return subs;
+    };
+    const std::vector<ir::Vpl> ofView = ir::rsmViewVpls(
+        std::move(texels), resolution, ir::rsmEdgeSamples(edgeSamples, resolution), subTexels);
+    vpls.insert(vpls.end(), ofView.begin(), ofView.end());
   }
   return vpls;
 }

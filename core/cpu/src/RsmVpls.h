@@ -8,7 +8,9 @@
 // tie rule) and in float rounding of the hit point. Unlike the GL, surfaces
 // closer to the light than its near plane (1e-4 of the scene's far distance)
 // are not clipped. `gltf`: glossy VPLs (ir::rsmTexelVpl). `lit`: texels whose
-// ray misses this box trace no ray (LitBounds.h).
+// ray misses this box trace no ray (LitBounds.h). `edgeSamples`
+// (render.indirect.rsm_edge_samples): the texels at edges from their
+// sub-texels' rays (ir::rsmViewVpls).
 
 #include <optional>
 #include <vector>
@@ -20,8 +22,8 @@
 namespace tofsim::cpu {
 
 std::vector<ir::Vpl> traceRsmVpls(const rays::RayScene& scene, const capture::Light& light,
-                                  int rsmResolution, double indexOfRefraction, bool gltf,
-                                  int threads,
+                                  int rsmResolution, int edgeSamples, double indexOfRefraction,
+                                  bool gltf, int threads,
                                   const std::optional<scene::Bounds>& lit = std::nullopt);
 
 }  // namespace tofsim::cpu

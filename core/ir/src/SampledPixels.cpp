@@ -16,11 +16,17 @@ glm::vec4 texel(const std::vector<float>& image, std::size_t pixel) {
 
 }  // namespace
 
+bool onFlatSurface(const glm::vec3& p, const glm::vec3& n, const glm::vec3& q,
+                   const glm::vec3& m) {
+  const float sinTolerance = std::sin(glm::radians(kFlatNeighbourAngle_deg));
+  const float cosTolerance = std::cos(glm::radians(kFlatNeighbourAngle_deg));
+  const glm::vec3 d = q - p;
+  return std::abs(glm::dot(n, d)) <= sinTolerance * glm::length(d) && glm::dot(n, m) >= cosTolerance;
+}
+
 std::vector<uint8_t> sampledPixels(const CentreSurfaces& surfaces, int32_t width, int32_t height) {
   const std::size_t pixels = static_cast<std::size_t>(width) * static_cast<std::size_t>(height);
   TOFSIM_CHECK(surfaces.positions.size() == pixels * 4 && surfaces.normals.size() == pixels * 4);
-  const float sinTolerance = std::sin(glm::radians(kFlatNeighbourAngle_deg));
-  const float cosTolerance = std::cos(glm::radians(kFlatNeighbourAngle_deg));
   std::vector<uint8_t> sampled(pixels, 0);
   for (int32_t y = 0; y < height; ++y) {
     for (int32_t x = 0; x < width; ++x) {
@@ -38,10 +44,8 @@ std::vector<uint8_t> sampledPixels(const CentreSurfaces& surfaces, int32_t width
           if ((other.w != 0.0f) != surface) {
             edge = true;  // a silhouette against the background
           } else if (surface) {
-            const glm::vec3 d = glm::vec3(other) - glm::vec3(position);
-            const float offPlane = std::abs(glm::dot(normal, d));
-            const float turned = glm::dot(normal, glm::vec3(texel(surfaces.normals, q)));
-            edge = offPlane > sinTolerance * glm::length(d) || turned < cosTolerance;
+            edge = !onFlatSurface(glm::vec3(position), normal, glm::vec3(other),
+                                  glm::vec3(texel(surfaces.normals, q)));
           }
         }
       }

@@ -24,9 +24,11 @@ using ir::Vpl;  // matches struct Vpl in shaders/vpl.glsl (std430)
 /// `rsmResolution` covering the cone; wider spots and point lights use six
 /// cube faces of that side. VPLs are in texel order, faces in +X..-Z order.
 /// `gltf` (render.materials: gltf): glossy VPLs, from the RSM's metallic and
-/// roughness too (ir::rsmTexelVpl).
+/// roughness too (ir::rsmTexelVpl). `edgeSamples`
+/// (render.indirect.rsm_edge_samples): the texels at edges from a finer RSM
+/// of the view (ir::rsmViewVpls).
 std::vector<Vpl> generateVpls(const GpuScene& scene, const capture::Light& light, int rsmResolution,
-                              double indexOfRefraction, const glm::vec3& boundsMin,
+                              int edgeSamples, double indexOfRefraction, const glm::vec3& boundsMin,
                               const glm::vec3& boundsMax, bool gltf);
 
 }  // namespace tofsim::render

@@ -21,6 +21,9 @@ enum class MaterialModel { Lambertian, Gltf };
 struct IndirectSettings {
   bool enabled = true;
   int32_t rsm_resolution = 32;    ///< RSM side; VPL count = rsm_resolution^2
+  /// N: a texel at an edge of the RSM is traced at N x N sub-texels, one
+  /// VPL per flat surface among them (ir::rsmViewVpls); 1 = none.
+  int32_t rsm_edge_samples = 4;
   int32_t ism_resolution = 32;    ///< side of each VPL's paraboloid depth map
   int32_t points_per_vpl = 1000;  ///< ISM points splatted per VPL
   bool ism_pull_push = true;      ///< fill ISM holes by pull-push

@@ -8,6 +8,7 @@
 // sample the same pixels.
 
 #include <cstdint>
+#include <glm/glm.hpp>
 #include <vector>
 
 #include "tofsim/ir/IrBackend.h"
@@ -18,6 +19,12 @@ namespace tofsim::ir {
 /// direction to a neighbour's centre point, and between their normals, for
 /// the neighbour to count as the same flat surface.
 constexpr float kFlatNeighbourAngle_deg = 5.0f;
+
+/// Whether the point q with unit normal m lies on the flat surface through p
+/// with unit normal n: within kFlatNeighbourAngle_deg of its tangent plane
+/// (seen from p) and with a normal turned by at most that angle. Also the
+/// RSM's test for texels and sub-texels on one surface (RsmEdgeTexels.h).
+bool onFlatSurface(const glm::vec3& p, const glm::vec3& n, const glm::vec3& q, const glm::vec3& m);
 
 /// One entry per pixel (row-major, row 0 at the top): 1 where any of the 8
 /// neighbours' centre points (those inside the image) lies off the pixel's

@@ -1,0 +1,103 @@
+#include "tofsim/ir/RsmEdgeTexels.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "tofsim/ir/SampledPixels.h"
+#include "tofsim/util/Error.h"
+
+namespace tofsim::ir {
+
+int rsmEdgeSamples(int samples, int resolution) {
+  TOFSIM_CHECK(samples >= 1 && resolution >= 1);
+  return std::max(1, std::min(samples, kMaxRsmEdgeSampleSide / resolution));
+}
+
+std::vector<uint8_t> rsmEdgeTexels(const TexelVpls& texels, int resolution) {
+  const std::size_t count = static_cast<std::size_t>(resolution) * resolution;
+  TOFSIM_CHECK_EQ(texels.index.size(), count);
+  CentreSurfaces surfaces;
+  surfaces.positions.assign(count * 4, 0.0f);
+  surfaces.normals.assign(count * 4, 0.0f);
+  for (std::size_t i = 0; i < count; ++i) {
+    if (texels.index[i] < 0) continue;
+    const Vpl& v = texels.vpls[static_cast<std::size_t>(texels.index[i])];
+    for (int c = 0; c < 3; ++c) {
+      surfaces.positions[i * 4 + c] = v.positionPath[c];
+      surfaces.normals[i * 4 + c] = v.normal[c];
+    }
+    surfaces.positions[i * 4 + 3] = 1.0f;
+  }
+  return sampledPixels(surfaces, resolution, resolution);
+}
+
+std::vector<Vpl> mergeSubTexelVpls(const std::vector<std::optional<Vpl>>& subTexels, int n) {
+  TOFSIM_CHECK_EQ(subTexels.size(), static_cast<std::size_t>(n) * n);
+  // Groups of sub-texels on one flat surface, each tested against its first
+  // member: scan order decides, so both backends group alike.
+  std::vector<std::vector<int>> groups;
+  for (int s = 0; s < n * n; ++s) {
+    if (!subTexels[s]) continue;
+    const Vpl& v = *subTexels[s];
+    auto group = std::find_if(groups.begin(), groups.end(), [&](const std::vector<int>& g) {
+      const Vpl& first = *subTexels[g.front()];
+      return onFlatSurface(glm::vec3(first.positionPath), glm::vec3(first.normal),
+                           glm::vec3(v.positionPath), glm::vec3(v.normal));
+    });
+    if (group == groups.end()) {
+      groups.push_back({s});
+    } else {
+      group->push_back(s);
+    }
+  }
+  std::vector<Vpl> vpls;
+  for (const std::vector<int>& g : groups) {
+    double cx = 0.0, cy = 0.0;
+    for (int s : g) cx += s % n, cy += s / n;
+    cx /= static_cast<double>(g.size()), cy /= static_cast<double>(g.size());
+    // The member nearest the centroid (the first of equals): a point of the
+    // surface, where the merged VPL sits and its light leaves.
+    int nearest = g.front();
+    double best = INFINITY;
+    glm::vec4 flux(0.0f);
+    for (int s : g) {
+      const double d = (s % n - cx) * (s % n - cx) + (s / n - cy) * (s / n - cy);
+      if (d < best) best = d, nearest = s;
+      flux += subTexels[s]->flux;
+    }
+    Vpl vpl = *subTexels[nearest];
+    vpl.flux = flux;
+    // The patch of |g| sub-texels: the nearest one's, scaled to their area.
+    const float scale = std::sqrt(static_cast<float>(g.size()));
+    vpl.patchU *= scale;
+    vpl.patchV *= scale;
+    vpls.push_back(vpl);
+  }
+  return vpls;
+}
+
+std::vector<Vpl> rsmViewVpls(TexelVpls texels, int resolution, int n,
+                             const SubTexelSource& subTexels) {
+  if (n == 1) return std::move(texels.vpls);
+  const std::vector<uint8_t> edges = rsmEdgeTexels(texels, resolution);
+  if (std::find(edges.begin(), edges.end(), 1) == edges.end()) return std::move(texels.vpls);
+  const std::vector<std::optional<Vpl>> subs = subTexels(edges, n);
+  const auto perTexel = static_cast<std::ptrdiff_t>(n) * n;
+  std::vector<Vpl> vpls;
+  auto sub = subs.begin();  // the next edge texel's sub-texels
+  for (std::size_t i = 0; i < edges.size(); ++i) {
+    if (edges[i]) {
+      TOFSIM_CHECK(subs.end() - sub >= perTexel);
+      const std::vector<Vpl> merged =
+          mergeSubTexelVpls(std::vector<std::optional<Vpl>>(sub, sub + perTexel), n);
+      vpls.insert(vpls.end(), merged.begin(), merged.end());
+      sub += perTexel;
+    } else if (texels.index[i] >= 0) {
+      vpls.push_back(texels.vpls[static_cast<std::size_t>(texels.index[i])]);
+    }
+  }
+  TOFSIM_CHECK(sub == subs.end());
+  return vpls;
+}
+
+}  // namespace tofsim::ir
