@@ -80,8 +80,8 @@ TEST(MultiBounceTest, CornellBoxEnergyOfTwoBouncesMatchesTheReference) {
   // (vpls_per_bounce: 0) its energy moved by up to 10 % from seed to seed.
   job.settings.indirect.vpls_per_bounce = 9216;
   const BounceErrors e = energyErrors(exactUnclamped(job), 4096);
-  // Measured: all bounces 0.0094, bounce 2 alone 0.019 (0.025 / 0.046 at
-  // seeds 2 / 3: both estimates' noise); bounce 1 alone is 2.5 % under the
+  // Measured: all bounces 0.0088, bounce 2 alone 0.019 (0.025 / 0.046 at
+  // seeds 2 / 3: both estimates' noise); bounce 1 alone is 2.4 % under the
   // reference. With one VPL per RSM texel (rsm_edge_samples: 1) bounce 1 was
   // 5.0 % low and all bounces 0.021 / 0.018 / 0.015 off at seeds 1 / 2 / 3:
   // the texels across the box's front edges, which the texel centres round to

@@ -1,6 +1,7 @@
 // render.indirect.rsm_edge_samples' bookkeeping on hand-made sub-texels: the
 // sub-texels on one flat surface become one VPL with their summed flux, at
-// the member nearest their centroid, its patch scaled to their area; the
+// the member nearest their centroid, its patch their bounding box shrunk to
+// their area; the
 // edge texels are the RSM's silhouettes and creases; only they are split.
 
 #include <gtest/gtest.h>
@@ -46,13 +47,16 @@ TEST(RsmEdgeTexelsTest, SubTexelsOnTwoSurfacesMakeTwoVplsWithTheirFlux) {
   EXPECT_EQ(merged[0].normal, glm::vec4(0, 0, 1, 0));
   EXPECT_FLOAT_EQ(merged[0].flux.g, wallFlux);
   EXPECT_EQ(merged[0].positionPath, subs[1 * n + 1]->positionPath);
-  EXPECT_FLOAT_EQ(merged[0].patchU.x, 0.01f * std::sqrt(11.0f));
-  EXPECT_FLOAT_EQ(merged[0].patchV.w, 0.003f * std::sqrt(11.0f));
+  // Its patch: its 3 x 4 bounding box, shrunk to 11 sub-texels' area.
+  EXPECT_FLOAT_EQ(merged[0].patchU.x, 0.01f * 3.0f * std::sqrt(11.0f / 12.0f));
+  EXPECT_FLOAT_EQ(merged[0].patchV.w, 0.003f * 4.0f * std::sqrt(11.0f / 12.0f));
   // The floor's column of 4: centroid (3, 1.5), nearest member (3, 1), the first of two.
   EXPECT_EQ(merged[1].normal, glm::vec4(0, 1, 0, 0));
   EXPECT_FLOAT_EQ(merged[1].flux.b, floorFlux);
   EXPECT_EQ(merged[1].positionPath, subs[1 * n + 3]->positionPath);
-  EXPECT_FLOAT_EQ(merged[1].patchU.x, 0.02f);
+  // A strip one sub-texel wide along the crease keeps that width.
+  EXPECT_FLOAT_EQ(merged[1].patchU.x, 0.01f);
+  EXPECT_FLOAT_EQ(merged[1].patchV.z, 0.04f);
 }
 
 TEST(RsmEdgeTexelsTest, NoSubTexelHitsNoVpl) {

@@ -53,7 +53,12 @@ std::vector<Vpl> mergeSubTexelVpls(const std::vector<std::optional<Vpl>>& subTex
   std::vector<Vpl> vpls;
   for (const std::vector<int>& g : groups) {
     double cx = 0.0, cy = 0.0;
-    for (int s : g) cx += s % n, cy += s / n;
+    int x0 = n, x1 = 0, y0 = n, y1 = 0;  // the group's bounding box, in sub-texels
+    for (int s : g) {
+      cx += s % n, cy += s / n;
+      x0 = std::min(x0, s % n), x1 = std::max(x1, s % n);
+      y0 = std::min(y0, s / n), y1 = std::max(y1, s / n);
+    }
     cx /= static_cast<double>(g.size()), cy /= static_cast<double>(g.size());
     // The member nearest the centroid (the first of equals): a point of the
     // surface, where the merged VPL sits and its light leaves.
@@ -67,10 +72,14 @@ std::vector<Vpl> mergeSubTexelVpls(const std::vector<std::optional<Vpl>>& subTex
     }
     Vpl vpl = *subTexels[nearest];
     vpl.flux = flux;
-    // The patch of |g| sub-texels: the nearest one's, scaled to their area.
-    const float scale = std::sqrt(static_cast<float>(g.size()));
-    vpl.patchU *= scale;
-    vpl.patchV *= scale;
+    // The patch of the |g| sub-texels: the nearest one's, stretched to the
+    // group's bounding box and shrunk to its area, so that a strip along a
+    // crease keeps its width instead of reaching through the other surface
+    // as a square of its area would.
+    const float columns = static_cast<float>(x1 - x0 + 1), rows = static_cast<float>(y1 - y0 + 1);
+    const float fill = std::sqrt(static_cast<float>(g.size()) / (columns * rows));
+    vpl.patchU *= columns * fill;
+    vpl.patchV *= rows * fill;
     vpls.push_back(vpl);
   }
   return vpls;

@@ -17,7 +17,7 @@
 // into N x N sub-texels, each a VPL of the RSM of side N R (rsmTexelVpl, the same
 // rays on both backends), and the sub-texels on one flat surface are merged
 // into one VPL: the sum of their fluxes, at the member nearest their centroid,
-// its patch scaled to their joint area. A texel whose centre misses still makes
+// its patch their bounding box shrunk to their joint area. A texel whose centre misses still makes
 // the VPLs of the parts that hit.
 
 #include <cstdint>
