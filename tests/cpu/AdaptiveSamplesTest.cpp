@@ -7,6 +7,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <memory>
 
@@ -16,7 +18,8 @@
 #include "tofsim/capture/VolumeCollector.h"
 #include "tofsim/cpu/CpuBackend.h"
 #include "tofsim/ir/IrRenderer.h"
-#include "tofsim/ir/SampledPixels.h"
+#include "tofsim/ir/LitPixels.h"
+#include "tofsim/rays/RayScene.h"
 #include "tofsim/scene/GltfLoader.h"
 
 namespace tofsim::cpu {
@@ -37,7 +40,8 @@ bool samePixel(const TransientVolume& a, const TransientVolume& b, int32_t y, in
 std::vector<uint8_t> sampledMask(const RenderJob& job) {
   CpuBackend backend(CpuBackendOptions{2, true});
   const test::BackendScene prepared(backend, *job.scene);
-  return ir::sampledPixels(backend.prepareSurfaces(job), job.camera().width, job.camera().height);
+  const rays::RayScene rays(*job.scene, 0);
+  return ir::adaptiveSampledPixels(backend.prepareSurfaces(job), job, rays);
 }
 
 void expectComposition(RenderJob job, int32_t n) {
@@ -102,6 +106,55 @@ TEST_F(AdaptiveSamplesTest, OffOrWithOneSampleNothingChanges) {
       ASSERT_TRUE(samePixel(plain.volume.indirect, adaptiveOne.volume.indirect, y, x));
     }
   }
+}
+
+// A shadow on a flat floor: its edge crosses pixels the G-buffer sees as one
+// plane. The driver's light rays (ir::litPixels) give them their N x N
+// samples, so the adaptive render's direct light there is the full N x N
+// render's, where one sample at the centre gives a pixel all of its light or
+// none.
+TEST(AdaptiveShadowEdgeTest, AShadowEdgeInsideFlatPixelsTakesTheSubSamples) {
+  scene::Scene scene = test::makePlane(3.0f, glm::vec3(0.6f));
+  test::addQuad(scene, glm::vec3(0.0f, 0.0f, 0.4f), glm::vec3(0.0f, 0.0f, 1.0f), 0.2f,
+                glm::vec3(0.5f));  // the occluder, 0.4 m above the floor
+  RenderJob job;
+  job.scene = &scene;
+  job.camera().position_world = {0.0f, 0.0f, 1.5f};
+  job.camera().look_at_world = {0.0f, 0.01f, 0.0f};
+  job.camera().fov_y_deg = 60.0f;
+  job.camera().width = 32;
+  job.camera().height = 32;
+  job.light.position_world = {0.5f, 0.0f, 1.2f};  // the shadow lands beside the occluder's image
+  job.light.intensity_W_per_sr = glm::vec3(1.0f);
+  job.settings.time = TimeAxis{1.5 / kSpeedOfLight_m_per_s, 0.01 / kSpeedOfLight_m_per_s, 400};
+  job.settings.indirect.enabled = false;
+  job.settings.pixel_samples = 4;
+  const auto steady = [](const CpuRender& r) {
+    const TransientVolume& v = r.volume.direct;
+    std::vector<double> light(static_cast<std::size_t>(v.width()) * v.height(), 0.0);
+    const std::size_t perPixel = static_cast<std::size_t>(v.bins()) * v.channels();
+    for (std::size_t i = 0; i < v.size(); ++i) light[i / perPixel] += v.data()[i];
+    return light;
+  };
+  const std::vector<double> all = steady(renderOnCpu(job));
+  job.settings.adaptive_pixel_samples = true;
+  const CpuRender adaptiveRender = renderOnCpu(job);
+  const std::vector<double> adaptive = steady(adaptiveRender);
+  job.settings.pixel_samples = 1;
+  const std::vector<double> one = steady(renderOnCpu(job));
+  const auto l1 = [&](const std::vector<double>& a) {
+    double diff = 0.0, sum = 0.0;
+    for (std::size_t p = 0; p < all.size(); ++p) diff += std::abs(a[p] - all[p]), sum += all[p];
+    return diff / sum;
+  };
+  // The occluder's silhouette and the shadow's edges: some pixels, not most.
+  EXPECT_GT(adaptiveRender.result.sampledPixels, 32u * 2);
+  EXPECT_LT(adaptiveRender.result.sampledPixels, 32u * 32 / 3);
+  // Off the edges one sample with the footprint differs from 4 x 4 only by
+  // the light's curvature across a pixel; at a shadow's edge by up to all of it.
+  EXPECT_GT(l1(one), 0.01) << "the shadow's edges must matter here";
+  std::printf("direct light, relative L1 to 4 x 4 everywhere: one sample %.4f, adaptive %.5f\n", l1(one), l1(adaptive));
+  EXPECT_LT(l1(adaptive), 0.05 * l1(one));
 }
 
 }  // namespace

@@ -106,5 +106,17 @@ TEST(SampledPixelsTest, AShallowCreaseIsAnEdgeBeyondTheTolerance) {
   }
 }
 
+TEST(SampledPixelsTest, AShadowEdgeOnAFlatPlaneMarksTheColumnsBesideIt) {
+  // One flat plane: no edge in its geometry, but the light reaches only the
+  // centres of columns x < 5.
+  const auto g = gbuffer([&](int32_t x, int32_t y) {
+    return std::pair{glm::vec3(0.1f * static_cast<float>(x), 0.1f * static_cast<float>(y), 0.0f), kUp};
+  });
+  std::vector<uint8_t> lit(kSide * kSide);
+  for (std::size_t p = 0; p < lit.size(); ++p) lit[p] = p % kSide < 5 ? 1 : 0;
+  EXPECT_TRUE(markedColumns(sampledPixels(g, kSide, kSide)).empty());
+  EXPECT_EQ(markedColumns(sampledPixels(g, kSide, kSide, lit)), (std::vector<int32_t>{4, 5}));
+}
+
 }  // namespace
 }  // namespace tofsim::ir

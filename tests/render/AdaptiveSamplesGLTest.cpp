@@ -20,7 +20,8 @@
 #include "support/TestJobs.h"
 #include "tofsim/capture/VolumeCollector.h"
 #include "tofsim/ir/IrRenderer.h"
-#include "tofsim/ir/SampledPixels.h"
+#include "tofsim/ir/LitPixels.h"
+#include "tofsim/rays/RayScene.h"
 #include "tofsim/ir/SurfaceImage.h"
 #include "tofsim/render/GlBackend.h"
 #include "tofsim/scene/GltfLoader.h"
@@ -199,8 +200,8 @@ TEST(AdaptiveSamplesGLTest, TheDriversEdgePixelsTakeNxNSamples) {
   capture::RenderJob job = box.job(capture::Visibility::Ism, 2);
   GlBackend backend(test::glTestContext());
   const test::BackendScene prepared(backend, *job.scene);
-  const std::vector<uint8_t> mask =
-      ir::sampledPixels(backend.prepareSurfaces(job), job.camera().width, job.camera().height);
+  const rays::RayScene rays(*job.scene, 0);
+  const std::vector<uint8_t> mask = ir::adaptiveSampledPixels(backend.prepareSurfaces(job), job, rays);
   const auto sampled = static_cast<std::size_t>(std::count(mask.begin(), mask.end(), 1));
   EXPECT_GT(sampled, mask.size() / 10);
   EXPECT_LT(sampled, mask.size() * 3 / 4);  // 16 x 16: edges are most of the box

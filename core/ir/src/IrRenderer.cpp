@@ -8,6 +8,7 @@
 #include "tofsim/capture/DirectLightView.h"
 #include "tofsim/capture/SegmentStream.h"
 #include "tofsim/ir/BounceVpls.h"
+#include "tofsim/ir/LitPixels.h"
 #include "tofsim/ir/SampledPixels.h"
 #include "tofsim/ir/SurfaceImage.h"
 #include "tofsim/rays/RayScene.h"
@@ -227,7 +228,9 @@ RenderResult IrRenderer::render(const RenderJob& job, SegmentSink& sink,
   TOFSIM_CHECK_EQ(positions.size(), static_cast<std::size_t>(width) * height * 4);
   result.depth_m = depthFromPositions(positions, job.imager);
   if (job.settings.adaptive_pixel_samples && job.settings.pixel_samples > 1) {
-    const std::vector<uint8_t> sampled = sampledPixels(centres, width, height);
+    // Shadow edges and a spot's rim inside flat pixels too, by the driver's
+    // rays whatever the backend (LitPixels.h).
+    const std::vector<uint8_t> sampled = adaptiveSampledPixels(centres, job, rays());
     result.sampledPixels = static_cast<std::size_t>(std::count(sampled.begin(), sampled.end(), 1));
     backend.setSampledPixels(sampled);
   }

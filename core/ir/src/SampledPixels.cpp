@@ -24,9 +24,11 @@ bool onFlatSurface(const glm::vec3& p, const glm::vec3& n, const glm::vec3& q,
   return std::abs(glm::dot(n, d)) <= sinTolerance * glm::length(d) && glm::dot(n, m) >= cosTolerance;
 }
 
-std::vector<uint8_t> sampledPixels(const CentreSurfaces& surfaces, int32_t width, int32_t height) {
+std::vector<uint8_t> sampledPixels(const CentreSurfaces& surfaces, int32_t width, int32_t height,
+                                   const std::vector<uint8_t>& lit) {
   const std::size_t pixels = static_cast<std::size_t>(width) * static_cast<std::size_t>(height);
   TOFSIM_CHECK(surfaces.positions.size() == pixels * 4 && surfaces.normals.size() == pixels * 4);
+  TOFSIM_CHECK(lit.empty() || lit.size() == pixels);
   std::vector<uint8_t> sampled(pixels, 0);
   for (int32_t y = 0; y < height; ++y) {
     for (int32_t x = 0; x < width; ++x) {
@@ -45,7 +47,8 @@ std::vector<uint8_t> sampledPixels(const CentreSurfaces& surfaces, int32_t width
             edge = true;  // a silhouette against the background
           } else if (surface) {
             edge = !onFlatSurface(glm::vec3(position), normal, glm::vec3(other),
-                                  glm::vec3(texel(surfaces.normals, q)));
+                                  glm::vec3(texel(surfaces.normals, q))) ||
+                   (!lit.empty() && lit[p] != lit[q]);
           }
         }
       }

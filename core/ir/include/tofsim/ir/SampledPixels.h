@@ -29,7 +29,11 @@ bool onFlatSurface(const glm::vec3& p, const glm::vec3& n, const glm::vec3& q, c
 /// One entry per pixel (row-major, row 0 at the top): 1 where any of the 8
 /// neighbours' centre points (those inside the image) lies off the pixel's
 /// tangent plane or has a turned normal, or where a surface pixel borders
-/// background or a background pixel borders a surface; 0 elsewhere.
-std::vector<uint8_t> sampledPixels(const CentreSurfaces& surfaces, int32_t width, int32_t height);
+/// background or a background pixel borders a surface, or, given `lit` (one
+/// entry per pixel, LitPixels.h), where the light reaches one of two
+/// neighbouring surface pixels' centres and not the other's (a shadow's edge,
+/// a hard spot's rim); 0 elsewhere.
+std::vector<uint8_t> sampledPixels(const CentreSurfaces& surfaces, int32_t width, int32_t height,
+                                   const std::vector<uint8_t>& lit = {});
 
 }  // namespace tofsim::ir
