@@ -8,7 +8,7 @@
 # tracer's own noise). Per run: VPLs, the indirect light's total and its
 # steady relative L1 over the pixels, and the render's seconds
 # (stats.seconds).
-# Usage: bench/rsm_edges/run.sh [N=4] [OUTDIR]
+# Usage: bench/rsm_edges/run.sh [N=4] [OUTDIR]  (PYTHON: a python3 with numpy)
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 n=${1:-4}
@@ -31,7 +31,7 @@ for rsm in 32 64 128 256; do
   for edge in 1 "$n"; do
     dir="$out/rsm$rsm.n$edge"
     render "$dir" "$rsm" "$edge"
-    python3 - "$dir" "$out/truth" "$rsm" "$edge" <<'PY'
+    "${PYTHON:-python3}" - "$dir" "$out/truth" "$rsm" "$edge" <<'PY'
 import json, sys
 import numpy as np
 run, truth, rsm, n = sys.argv[1:5]
