@@ -7,8 +7,10 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <random>
 
 #include "tofsim/ir/RsmEdgeTexels.h"
+#include "tofsim/ir/SampledPixels.h"
 
 namespace tofsim::ir {
 namespace {
@@ -88,6 +90,31 @@ TEST(RsmEdgeTexelsTest, TheSilhouetteTexelsAreTheEdges) {
   const std::vector<uint8_t> edges = rsmEdgeTexels(halfFloor(), 8);
   for (int y = 0; y < 8; ++y) {
     for (int x = 0; x < 8; ++x) EXPECT_EQ(edges[y * 8 + x], x == 4 || x == 5) << x << "," << y;
+  }
+}
+
+// rsmEdgeTexels visits only the texels with a VPL; on views of scattered
+// texels on two planes and nothing it marks what sampledPixels does.
+TEST(RsmEdgeTexelsTest, TheSparseTestIsSampledPixels) {
+  constexpr int side = 12;
+  std::mt19937 random(5);
+  for (int trial = 0; trial < 50; ++trial) {
+    TexelVpls texels(side);
+    CentreSurfaces surfaces;
+    surfaces.positions.assign(side * side * 4, 0.0f);
+    surfaces.normals.assign(side * side * 4, 0.0f);
+    for (int t = 0; t < side * side; ++t) {
+      const unsigned what = random() % 4;  // nothing, floor, wall, floor
+      if (what == 0) continue;
+      const Vpl v = subTexel(what == 2, 0.1f * (t % side), 0.1f * (t / side), 1.0f);
+      texels.add(static_cast<std::size_t>(t), v);
+      for (int c = 0; c < 3; ++c) {
+        surfaces.positions[t * 4 + c] = v.positionPath[c];
+        surfaces.normals[t * 4 + c] = v.normal[c];
+      }
+      surfaces.positions[t * 4 + 3] = 1.0f;
+    }
+    EXPECT_EQ(rsmEdgeTexels(texels, side), sampledPixels(surfaces, side, side)) << trial;
   }
 }
 

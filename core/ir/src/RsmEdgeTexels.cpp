@@ -16,19 +16,36 @@ int rsmEdgeSamples(int samples, int resolution) {
 std::vector<uint8_t> rsmEdgeTexels(const TexelVpls& texels, int resolution) {
   const std::size_t count = static_cast<std::size_t>(resolution) * resolution;
   TOFSIM_CHECK_EQ(texels.index.size(), count);
-  CentreSurfaces surfaces;
-  surfaces.positions.assign(count * 4, 0.0f);
-  surfaces.normals.assign(count * 4, 0.0f);
-  for (std::size_t i = 0; i < count; ++i) {
-    if (texels.index[i] < 0) continue;
-    const Vpl& v = texels.vpls[static_cast<std::size_t>(texels.index[i])];
-    for (int c = 0; c < 3; ++c) {
-      surfaces.positions[i * 4 + c] = v.positionPath[c];
-      surfaces.normals[i * 4 + c] = v.normal[c];
+  // sampledPixels' test, visited from the texels with a VPL only: an NLOS
+  // light's views are mostly empty, and an empty texel is an edge exactly
+  // when a neighbour has a VPL (RsmEdgeTexelsTest checks the two agree).
+  std::vector<uint8_t> edges(count, 0);
+  for (int y = 0; y < resolution; ++y) {
+    for (int x = 0; x < resolution; ++x) {
+      const std::size_t p = static_cast<std::size_t>(y) * resolution + x;
+      if (texels.index[p] < 0) continue;
+      const Vpl& v = texels.vpls[static_cast<std::size_t>(texels.index[p])];
+      for (int dy = -1; dy <= 1; ++dy) {
+        for (int dx = -1; dx <= 1; ++dx) {
+          const int nx = x + dx, ny = y + dy;
+          if ((dx == 0 && dy == 0) || nx < 0 || ny < 0 || nx >= resolution || ny >= resolution) {
+            continue;
+          }
+          const std::size_t q = static_cast<std::size_t>(ny) * resolution + nx;
+          if (texels.index[q] < 0) {
+            edges[p] = edges[q] = 1;  // a silhouette: both sides
+            continue;
+          }
+          const Vpl& w = texels.vpls[static_cast<std::size_t>(texels.index[q])];
+          if (!onFlatSurface(glm::vec3(v.positionPath), glm::vec3(v.normal),
+                             glm::vec3(w.positionPath), glm::vec3(w.normal))) {
+            edges[p] = 1;
+          }
+        }
+      }
     }
-    surfaces.positions[i * 4 + 3] = 1.0f;
   }
-  return sampledPixels(surfaces, resolution, resolution);
+  return edges;
 }
 
 std::vector<Vpl> mergeSubTexelVpls(const std::vector<std::optional<Vpl>>& subTexels, int n) {

@@ -12,12 +12,12 @@ namespace {
 RsmView lookAtView(const glm::vec3& forward, const glm::vec3& upHint, float half) {
   const glm::vec3 f = glm::normalize(forward);
   const glm::vec3 s = glm::normalize(glm::cross(f, upHint));
-  return {f, s, glm::cross(s, f), upHint, half};
+  return {f, s, glm::cross(s, f), upHint, half, std::tan(static_cast<double>(half))};
 }
 
 // Image-plane coordinates (at unit distance along forward) of texel (x, y)'s centre.
 glm::dvec2 texelPlanePoint(const RsmView& v, int resolution, int x, int y) {
-  const double tanHalf = std::tan(static_cast<double>(v.halfAngle_rad));
+  const double tanHalf = v.tanHalf;
   return {(2.0 * (x + 0.5) / resolution - 1.0) * tanHalf,
           (2.0 * (y + 0.5) / resolution - 1.0) * tanHalf};
 }
@@ -70,8 +70,7 @@ std::optional<Vpl> rsmTexelVpl(const capture::Light& light, const RsmView& view,
   const float profile = light.angularProfile(toSurface / dist);
   if (profile <= 0.0f) return std::nullopt;
   // Solid angle of the texel: its area on the unit-distance plane times cos^3.
-  const double tanHalf = std::tan(static_cast<double>(view.halfAngle_rad));
-  const double texelSide = 2.0 * tanHalf / resolution;
+  const double texelSide = 2.0 * view.tanHalf / resolution;
   const glm::dvec2 q = texelPlanePoint(view, resolution, x, y);
   const double r2 = 1.0 + q.x * q.x + q.y * q.y;
   const double solidAngle = texelSide * texelSide / (r2 * std::sqrt(r2));

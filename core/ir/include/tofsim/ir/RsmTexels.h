@@ -19,6 +19,7 @@ struct RsmView {
   glm::vec3 forward{0.0f}, right{0.0f}, up{0.0f};
   glm::vec3 upHint{0.0f};  ///< the up vector given to glm::lookAt
   float halfAngle_rad = 0.0f;
+  double tanHalf = 0.0;  ///< tan(halfAngle_rad): once per view, not per texel
 
   glm::mat4 viewMatrix(const glm::vec3& light_world) const;
 };
