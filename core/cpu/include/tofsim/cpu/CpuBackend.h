@@ -50,6 +50,7 @@ class LitBounds;
 struct PixelSurface;
 struct VplArrays;
 struct VplTerms;
+struct BlockPair;
 
 class CpuBackend : public ir::IrBackend {
  public:
@@ -98,14 +99,10 @@ class CpuBackend : public ir::IrBackend {
   void gatherTile(std::size_t tile, std::size_t firstVpl, std::size_t count);
   IndirectConstants indirectConstants() const;
   /// VPLs [first, + n), one block, into segment pixel i's histogram; `terms`
-  /// holds a block of terms for each of the pixel's samples.
+  /// holds a block of terms for each of the pixel's samples, `pairs` room for
+  /// all of them (the visible contributions, with the footprint).
   void gatherPixelBlock(const IndirectConstants& c, std::size_t first, std::size_t n, std::size_t i,
-                        VplTerms* terms);
-  /// VPL k of the block `t` through its footprint kernel into pixel i's
-  /// histogram (narrow) or footprint buffer (wide). Inline, as directLight.
-  inline void depositVplFootprint(const VplTerms& t, std::size_t k, const glm::vec3& energy,
-                                  std::size_t i, float* histogram, int bins,
-                                  physics::OffAxisSums& lost);
+                        VplTerms* terms, BlockPair* pairs);
   /// Adds pixel i's footprint buffer, if written, to `histogram` and clears it.
   void integratePixel(std::size_t i, float* histogram);
   /// Zero the first `pixels` pixels' histograms and footprint buffers (what

@@ -137,17 +137,19 @@ inline bool depositContribution(float* histogram, double* diff, int32_t bins, co
 
 /// The final pass for one pixel: adds the bin integrals held by `diff`
 /// (bins x 3, as depositFootprint left it) to `histogram` (bins x 3 floats).
-/// Running sums in double, channel by channel, bins in increasing order: the
-/// GL pass must keep this order to give the same bytes.
+/// Running sums in double, each channel's bins in increasing order: the GL
+/// pass must keep this order to give the same bytes. The three channels'
+/// sums are independent, so one pass runs them side by side (three chains of
+/// dependent additions at once, not one after the other; the same additions).
 inline void integrateFootprint(const double* diff, int32_t bins, float* histogram) {
-  for (int c = 0; c < 3; ++c) {
-    double slope = 0.0;  // first prefix sum: I_k - I_(k-1)
-    double value = 0.0;  // second prefix sum: I_k
-    for (int32_t k = 0; k < bins; ++k) {
-      const std::size_t i = static_cast<std::size_t>(k) * 3 + c;
-      slope += diff[i];
-      value += slope;
-      histogram[i] += static_cast<float>(value);
+  double slope[3] = {0.0, 0.0, 0.0};  // first prefix sum: I_k - I_(k-1)
+  double value[3] = {0.0, 0.0, 0.0};  // second prefix sum: I_k
+  for (int32_t k = 0; k < bins; ++k) {
+    const std::size_t i = static_cast<std::size_t>(k) * 3;
+    for (int c = 0; c < 3; ++c) {
+      slope[c] += diff[i + c];
+      value[c] += slope[c];
+      histogram[i + c] += static_cast<float>(value[c]);
     }
   }
 }
