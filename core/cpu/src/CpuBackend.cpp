@@ -151,7 +151,7 @@ void CpuBackend::allocate(std::size_t pixelsPerSegment, std::size_t vplsPerBatch
     direct_ = util::ZeroedBuffer<float>(floats);
     indirect_ = util::ZeroedBuffer<float>(floats);
     footprint_ = util::ZeroedBuffer<double>(footprintFloats);  // the plan counted it
-    footprintWritten_.assign(pixelsPerSegment, 0);
+    footprintBins_.assign(pixelsPerSegment, FootprintBins{});
   } else if (!accumulatorsZero_) {
     clearAccumulators(pixelsPerSegment);
   }
@@ -230,19 +230,25 @@ void CpuBackend::fillSurface(std::size_t i, float weight, const capture::PixelSt
   surface.dxdv = footprint.dxdv;
 }
 
-double* CpuBackend::footprintOf(std::size_t i) {
-  const std::size_t stride = static_cast<std::size_t>(job_.settings.time.bins) * kChannels;
-  footprintWritten_[i] = 1;
-  return footprint_.data() + i * stride;
+double* CpuBackend::footprintOf(std::size_t i, const glm::vec3& kernel) {
+  const int32_t bins = job_.settings.time.bins;
+  widenToWideKernel(kernel, bins, footprintBins_[i].first, footprintBins_[i].last);
+  return footprint_.data() + i * static_cast<std::size_t>(bins) * kChannels;
 }
 
 void CpuBackend::integratePixel(std::size_t i, float* histogram) {
-  if (!footprintWritten_[i]) return;
-  const std::size_t stride = static_cast<std::size_t>(job_.settings.time.bins) * kChannels;
-  double* diff = footprint_.data() + i * stride;
-  physics::integrateFootprint(diff, static_cast<int32_t>(job_.settings.time.bins), histogram);
-  std::fill_n(diff, stride, 0.0);  // while in cache: zero for the next wide kernel
-  footprintWritten_[i] = 0;
+  FootprintBins& written = footprintBins_[i];
+  if (written.first > written.last) return;
+  const int32_t bins = job_.settings.time.bins;
+  const std::size_t first = static_cast<std::size_t>(written.first) * kChannels;
+  double* diff = footprint_.data() + i * static_cast<std::size_t>(bins) * kChannels;
+  // The entries before `first` are zero: so are both running sums there, and
+  // adding +0.0f leaves a histogram bin's bits as they are (a sum of floats
+  // from +0 is never -0), so the sums start at `first`.
+  physics::integrateFootprint(diff + first, bins - written.first, histogram + first);
+  // While in cache: zero for the next wide kernel.
+  std::fill(diff + first, diff + (static_cast<std::size_t>(written.last) + 1) * kChannels, 0.0);
+  written = FootprintBins{};
 }
 
 void CpuBackend::clearAccumulators(std::size_t pixels) {
@@ -250,8 +256,13 @@ void CpuBackend::clearAccumulators(std::size_t pixels) {
   std::fill_n(direct_.data(), pixels * stride, 0.0f);
   std::fill_n(indirect_.data(), pixels * stride, 0.0f);
   for (std::size_t i = 0; i < pixels && footprint_.size() > 0; ++i) {
-    if (footprintWritten_[i]) std::fill_n(footprint_.data() + i * stride, stride, 0.0);
-    footprintWritten_[i] = 0;
+    const FootprintBins written = footprintBins_[i];
+    if (written.first <= written.last) {
+      std::fill(footprint_.data() + i * stride + static_cast<std::size_t>(written.first) * kChannels,
+                footprint_.data() + i * stride + (static_cast<std::size_t>(written.last) + 1) * kChannels,
+                0.0);
+    }
+    footprintBins_[i] = FootprintBins{};
   }
 }
 
@@ -348,10 +359,10 @@ void CpuBackend::gatherPixelBlock(const IndirectConstants& c, std::size_t first,
   // The visible contributions through their footprint kernels, in the order
   // above: narrow ones into the histogram, wide ones into the pixel's
   // difference buffer.
-  const std::size_t stride = static_cast<std::size_t>(bins) * kChannels;
-  if (visible > 0 && depositFootprints(terms, pairs, visible, bins, histogram,
-                                       footprint_.data() + i * stride, lost)) {
-    footprintWritten_[i] = 1;
+  if (visible > 0) {
+    const std::size_t stride = static_cast<std::size_t>(bins) * kChannels;
+    depositFootprints(terms, pairs, visible, bins, histogram, footprint_.data() + i * stride, lost,
+                      footprintBins_[i].first, footprintBins_[i].last);
   }
 }
 

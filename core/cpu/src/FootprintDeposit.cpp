@@ -2,9 +2,15 @@
 
 #include <immintrin.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace tofsim::cpu {
+
+void widenToWideKernel(const glm::vec3& kernel, int32_t bins, int32_t& first, int32_t& last) {
+  first = std::min(first, physics::footprintKnotBin(kernel, 0, bins));
+  last = std::max(last, std::min(physics::footprintKnotBin(kernel, 3, bins) + 2, bins - 1));
+}
 
 namespace {
 
@@ -26,20 +32,18 @@ inline Contribution contributionOf(const VplTerms* terms, BlockPair p) {
           t.first[k], t.count[k]};
 }
 
-bool depositFootprintsScalar(const VplTerms* terms, const BlockPair* pairs, std::size_t count,
+void depositFootprintsScalar(const VplTerms* terms, const BlockPair* pairs, std::size_t count,
                              int32_t bins, float* histogram, double* diff,
-                             physics::OffAxisSums& lost) {
-  bool wrote = false;
+                             physics::OffAxisSums& lost, int32_t& first, int32_t& last) {
   for (std::size_t i = 0; i < count; ++i) {
     const Contribution c = contributionOf(terms, pairs[i]);
     if (c.count == 0) {
       physics::depositWide(diff, bins, c.kernel, c.energy, lost);
-      wrote = true;
+      widenToWideKernel(c.kernel, bins, first, last);
     } else {
       physics::depositNarrow(histogram, bins, c.kernel, c.energy, lost);
     }
   }
-  return wrote;
 }
 
 #pragma GCC push_options
@@ -144,20 +148,18 @@ inline void depositNarrowAvx2(float* histogram, int32_t bins, const glm::vec3& k
   if (count > 8) addBins8(out + 24, mass1, count - 8, e0, e1, e2);
 }
 
-bool depositFootprintsAvx2(const VplTerms* terms, const BlockPair* pairs, std::size_t count,
+void depositFootprintsAvx2(const VplTerms* terms, const BlockPair* pairs, std::size_t count,
                            int32_t bins, float* histogram, double* diff,
-                           physics::OffAxisSums& lost) {
-  bool wrote = false;
+                           physics::OffAxisSums& lost, int32_t& first, int32_t& last) {
   for (std::size_t i = 0; i < count; ++i) {
     const Contribution c = contributionOf(terms, pairs[i]);
     if (c.count == 0) {
       physics::depositWide(diff, bins, c.kernel, c.energy, lost);
-      wrote = true;
+      widenToWideKernel(c.kernel, bins, first, last);
     } else {
       depositNarrowAvx2(histogram, bins, c.kernel, c.first, c.count, c.energy, lost);
     }
   }
-  return wrote;
 }
 
 void depositNarrowKernelAvx2(float* histogram, int32_t bins, const glm::vec3& kernel,
@@ -178,10 +180,14 @@ bool hasAvx2() {
 
 }  // namespace
 
-bool depositFootprints(const VplTerms* terms, const BlockPair* pairs, std::size_t count,
-                       int32_t bins, float* histogram, double* diff, physics::OffAxisSums& lost) {
-  return hasAvx2() ? depositFootprintsAvx2(terms, pairs, count, bins, histogram, diff, lost)
-                   : depositFootprintsScalar(terms, pairs, count, bins, histogram, diff, lost);
+void depositFootprints(const VplTerms* terms, const BlockPair* pairs, std::size_t count,
+                       int32_t bins, float* histogram, double* diff, physics::OffAxisSums& lost,
+                       int32_t& first, int32_t& last) {
+  if (hasAvx2()) {
+    depositFootprintsAvx2(terms, pairs, count, bins, histogram, diff, lost, first, last);
+  } else {
+    depositFootprintsScalar(terms, pairs, count, bins, histogram, diff, lost, first, last);
+  }
 }
 
 void depositNarrowKernel(float* histogram, int32_t bins, const glm::vec3& kernel, int32_t first,

@@ -23,13 +23,19 @@ struct BlockPair {
   uint32_t lane = 0;
 };
 
+/// Widens the bins [first, last] of a difference buffer to those
+/// physics::depositFootprint may write for the wide kernel `kernel`: from
+/// its first kink's bin to two past its last kink's (none past the axis).
+void widenToWideKernel(const glm::vec3& kernel, int32_t bins, int32_t& first, int32_t& last);
+
 /// Adds the contributions pairs[0, count), in that order, of `terms` (one
 /// VplTerms per sample of the pixel) through their footprint kernels: narrow
 /// ones (terms' count > 0) into `histogram` (bins x 3 floats), wide ones into
 /// `diff` (bins x 3 doubles, physics::depositWide), the light off the axis
-/// into `lost`. Returns whether `diff` was written.
-bool depositFootprints(const VplTerms* terms, const BlockPair* pairs, std::size_t count,
-                       int32_t bins, float* histogram, double* diff, physics::OffAxisSums& lost);
+/// into `lost`; [first, last] widened to the bins of `diff` written.
+void depositFootprints(const VplTerms* terms, const BlockPair* pairs, std::size_t count,
+                       int32_t bins, float* histogram, double* diff, physics::OffAxisSums& lost,
+                       int32_t& first, int32_t& last);
 
 /// One narrow kernel's contribution (first = footprintNarrowFirstBin, count =
 /// footprintNarrowBinCount): physics::depositNarrow's bytes, with AVX2 where
