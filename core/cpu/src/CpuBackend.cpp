@@ -258,9 +258,10 @@ void CpuBackend::clearAccumulators(std::size_t pixels) {
   for (std::size_t i = 0; i < pixels && footprint_.size() > 0; ++i) {
     const FootprintBins written = footprintBins_[i];
     if (written.first <= written.last) {
-      std::fill(footprint_.data() + i * stride + static_cast<std::size_t>(written.first) * kChannels,
-                footprint_.data() + i * stride + (static_cast<std::size_t>(written.last) + 1) * kChannels,
-                0.0);
+      std::fill(
+          footprint_.data() + i * stride + static_cast<std::size_t>(written.first) * kChannels,
+          footprint_.data() + i * stride + (static_cast<std::size_t>(written.last) + 1) * kChannels,
+          0.0);
     }
     footprintBins_[i] = FootprintBins{};
   }

@@ -33,7 +33,10 @@ inline FootprintOffAxis depositFootprint(double* diff, int32_t bins, const vec3&
   // footprintSlotBin and footprintSlotValue with the kinks and their bins
   // computed once, and each slot's sum over the four kinks taken only over
   // the kinks within reach of its bin: the others' weights are exactly 0, so
-  // the entries have the same bits at a fraction of the work.
+  // the entries have the same bits at a fraction of the work. Each kink's
+  // weights at its three bins are computed once, in a fixed order (no
+  // branches that depend on how the kinks' bins overlap), and each slot
+  // takes those of the kinks within reach.
   double knot[4];
   int knotBin[4];
   for (int j = 0; j < 4; ++j) {
@@ -47,6 +50,12 @@ inline FootprintOffAxis depositFootprint(double* diff, int32_t bins, const vec3&
   const bool fromCdf = knot[0] < 2.0 || wide < 1.0;
   const bool step = static_cast<double>(kernel.z) < static_cast<double>(1e-6f);
   const double scale = step ? 1.0 / wide : 1.0 / (wide * static_cast<double>(kernel.z));
+  double weight[4][3];  // footprintKinkWeight(knot[i], knotBin[i] + o, step)
+  if (!fromCdf) {
+    for (int i = 0; i < 4; ++i) {
+      for (int o = 0; o < 3; ++o) weight[i][o] = footprintKinkWeight(knot[i], knotBin[i] + o, step);
+    }
+  }
   for (int j = 0; j < 4; ++j) {
     for (int o = 0; o < 3; ++o) {
       const int bin = knotBin[j] + o;
@@ -55,11 +64,10 @@ inline FootprintOffAxis depositFootprint(double* diff, int32_t bins, const vec3&
       if (fromCdf) {
         value = footprintSlotValue(kernel, bin);
       } else {
-        double w[4] = {0.0, 0.0, 0.0, 0.0};
-        for (int i = std::max(0, j - 2); i < 4; ++i) {
-          if (bin >= knotBin[i] && bin <= knotBin[i] + 2) {
-            w[i] = footprintKinkWeight(knot[i], bin, step);
-          }
+        double w[4];
+        for (int i = 0; i < 4; ++i) {
+          const int reach = bin - knotBin[i];  // kink i's weight is 0 outside its three bins
+          w[i] = reach >= 0 && reach <= 2 ? weight[i][reach] : 0.0;
         }
         value = step ? scale * (w[0] - w[3]) : scale * (w[0] - w[1] - w[2] + w[3]);
       }
