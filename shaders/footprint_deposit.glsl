@@ -30,7 +30,8 @@
 // Per pixel of the segment: bins x TOFSIM_CHANNELS doubles, (bin, channel).
 layout(std430, binding = TOFSIM_SSBO_FOOTPRINT) buffer FootprintDiff { double footprintDiff[]; };
 // Per pixel: 1 once a wide kernel wrote its difference buffer (the
-// integration skips the others, as the CPU's footprintWritten_).
+// integration skips the others, as the CPU's footprintBins_, which also keeps
+// the bins written).
 layout(std430, binding = TOFSIM_SSBO_FOOTPRINT_WRITTEN) buffer FootprintWritten {
   uint footprintWritten[];
 };

@@ -6,6 +6,7 @@
 #include <utility>
 
 #include "CpuIsm.h"
+#include "FootprintDeposit.h"
 #include "GatherKernel.h"
 #include "GatherTiles.h"
 #include "LitBounds.h"
@@ -151,7 +152,7 @@ void CpuBackend::allocate(std::size_t pixelsPerSegment, std::size_t vplsPerBatch
     direct_ = util::ZeroedBuffer<float>(floats);
     indirect_ = util::ZeroedBuffer<float>(floats);
     footprint_ = util::ZeroedBuffer<double>(footprintFloats);  // the plan counted it
-    footprintWritten_.assign(pixelsPerSegment, 0);
+    footprintBins_.assign(pixelsPerSegment, FootprintBins{});
   } else if (!accumulatorsZero_) {
     clearAccumulators(pixelsPerSegment);
   }
@@ -230,19 +231,25 @@ void CpuBackend::fillSurface(std::size_t i, float weight, const capture::PixelSt
   surface.dxdv = footprint.dxdv;
 }
 
-double* CpuBackend::footprintOf(std::size_t i) {
-  const std::size_t stride = static_cast<std::size_t>(job_.settings.time.bins) * kChannels;
-  footprintWritten_[i] = 1;
-  return footprint_.data() + i * stride;
+double* CpuBackend::footprintOf(std::size_t i, const glm::vec3& kernel) {
+  const int32_t bins = job_.settings.time.bins;
+  widenToWideKernel(kernel, bins, footprintBins_[i].first, footprintBins_[i].last);
+  return footprint_.data() + i * static_cast<std::size_t>(bins) * kChannels;
 }
 
 void CpuBackend::integratePixel(std::size_t i, float* histogram) {
-  if (!footprintWritten_[i]) return;
-  const std::size_t stride = static_cast<std::size_t>(job_.settings.time.bins) * kChannels;
-  double* diff = footprint_.data() + i * stride;
-  physics::integrateFootprint(diff, static_cast<int32_t>(job_.settings.time.bins), histogram);
-  std::fill_n(diff, stride, 0.0);  // while in cache: zero for the next wide kernel
-  footprintWritten_[i] = 0;
+  FootprintBins& written = footprintBins_[i];
+  if (written.first > written.last) return;
+  const int32_t bins = job_.settings.time.bins;
+  const std::size_t first = static_cast<std::size_t>(written.first) * kChannels;
+  double* diff = footprint_.data() + i * static_cast<std::size_t>(bins) * kChannels;
+  // The entries before `first` are zero: so are both running sums there, and
+  // adding +0.0f leaves a histogram bin's bits as they are (a sum of floats
+  // from +0 is never -0), so the sums start at `first`.
+  physics::integrateFootprint(diff + first, bins - written.first, histogram + first);
+  // While in cache: zero for the next wide kernel.
+  std::fill(diff + first, diff + (static_cast<std::size_t>(written.last) + 1) * kChannels, 0.0);
+  written = FootprintBins{};
 }
 
 void CpuBackend::clearAccumulators(std::size_t pixels) {
@@ -250,8 +257,14 @@ void CpuBackend::clearAccumulators(std::size_t pixels) {
   std::fill_n(direct_.data(), pixels * stride, 0.0f);
   std::fill_n(indirect_.data(), pixels * stride, 0.0f);
   for (std::size_t i = 0; i < pixels && footprint_.size() > 0; ++i) {
-    if (footprintWritten_[i]) std::fill_n(footprint_.data() + i * stride, stride, 0.0);
-    footprintWritten_[i] = 0;
+    const FootprintBins written = footprintBins_[i];
+    if (written.first <= written.last) {
+      std::fill(
+          footprint_.data() + i * stride + static_cast<std::size_t>(written.first) * kChannels,
+          footprint_.data() + i * stride + (static_cast<std::size_t>(written.last) + 1) * kChannels,
+          0.0);
+    }
+    footprintBins_[i] = FootprintBins{};
   }
 }
 
@@ -293,42 +306,19 @@ void CpuBackend::gatherTile(std::size_t tile, std::size_t firstVpl, std::size_t 
   // for each VPL, sample by sample, so the order of the additions (and the
   // bytes) does not depend on where the blocks and batches start.
   std::vector<VplTerms> terms(maxSamplesPerPixel());
+  // With the footprint, each pixel block's visible contributions, in order.
+  std::vector<BlockPair> pairs(c.kernel.footprint ? terms.size() * kVplBlock : 0);
   const std::size_t end = std::min(pixelCount_, (tile + 1) * kTilePixels);
   for (std::size_t first = firstVpl; first < firstVpl + count; first += kVplBlock) {
     const std::size_t n = std::min(kVplBlock, firstVpl + count - first);
     for (std::size_t i = tile * kTilePixels; i < end; ++i) {
-      gatherPixelBlock(c, first, n, i, terms.data());
+      gatherPixelBlock(c, first, n, i, terms.data(), pairs.data());
     }
-  }
-}
-
-// Called per contribution: always inlined, as directLight.
-[[gnu::always_inline]] inline void CpuBackend::depositVplFootprint(const VplTerms& t, std::size_t k,
-                                                                   const glm::vec3& energy,
-                                                                   std::size_t i, float* histogram,
-                                                                   int bins,
-                                                                   physics::OffAxisSums& lost) {
-  // physics::depositNarrow / depositWide, from the block's precomputed terms.
-  const int32_t narrowBins = t.count[k];
-  const int32_t vectorBins = std::min(narrowBins, kVectorNarrowBins);
-  for (int32_t j = 0; j < vectorBins; ++j) {
-    physics::depositInBin(histogram, bins, t.first[k] + j, t.mass[j][k], energy, lost);
-  }
-  if (narrowBins > kVectorNarrowBins) {
-    const glm::vec3 kernel(t.centre[k], t.wide[k], t.narrow[k]);
-    for (int32_t j = kVectorNarrowBins; j < narrowBins; ++j) {
-      physics::depositInBin(histogram, bins, t.first[k] + j,
-                            physics::footprintNarrowMass(kernel, j), energy, lost);
-    }
-  }
-  if (narrowBins == 0) {
-    physics::depositWide(footprintOf(i), bins, glm::vec3(t.centre[k], t.wide[k], t.narrow[k]),
-                         energy, lost);
   }
 }
 
 void CpuBackend::gatherPixelBlock(const IndirectConstants& c, std::size_t first, std::size_t n,
-                                  std::size_t i, VplTerms* terms) {
+                                  std::size_t i, VplTerms* terms, BlockPair* pairs) {
   // Locals, not reads through `c`, in the loop: the histogram's float stores
   // could otherwise alias them.
   const int bins = c.kernel.bins;
@@ -344,6 +334,7 @@ void CpuBackend::gatherPixelBlock(const IndirectConstants& c, std::size_t first,
       vplTerms(segmentSurfaces_[firstOfPixel + s], v, first, n, c.kernel, terms[s]);
     }
   }
+  std::size_t visible = 0;  // contributions in `pairs`
   for (std::size_t k = 0; k < n; ++k) {
     for (std::size_t s = 0; s < perPixel; ++s) {
       if (!segmentLit_[firstOfPixel + s]) continue;
@@ -360,13 +351,20 @@ void CpuBackend::gatherPixelBlock(const IndirectConstants& c, std::size_t first,
                                         sceneScale_m_)) {
         continue;
       }
-      const glm::vec3 energy(t.r[k], t.g[k], t.b[k]);
       if (footprint) {
-        depositVplFootprint(t, k, energy, i, histogram, bins, lost);
+        pairs[visible++] = {static_cast<uint32_t>(s), static_cast<uint32_t>(k)};
         continue;
       }
-      physics::depositInBin(histogram, bins, bin, 1.0f, energy, lost);
+      physics::depositInBin(histogram, bins, bin, 1.0f, glm::vec3(t.r[k], t.g[k], t.b[k]), lost);
     }
+  }
+  // The visible contributions through their footprint kernels, in the order
+  // above: narrow ones into the histogram, wide ones into the pixel's
+  // difference buffer.
+  if (visible > 0) {
+    const std::size_t stride = static_cast<std::size_t>(bins) * kChannels;
+    depositFootprints(terms, pairs, visible, bins, histogram, footprint_.data() + i * stride, lost,
+                      footprintBins_[i].first, footprintBins_[i].last);
   }
 }
 

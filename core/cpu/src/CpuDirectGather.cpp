@@ -117,7 +117,7 @@ void CpuBackend::gatherDirectPixel(const DirectConstants& c, std::size_t i) {
       if (physics::footprintIsNarrow(kernel)) {
         physics::depositNarrow(histogram, c.bins, kernel, value, lost);
       } else {
-        physics::depositWide(footprintOf(i), c.bins, kernel, value, lost);
+        physics::depositWide(footprintOf(i, kernel), c.bins, kernel, value, lost);
       }
       continue;
     }

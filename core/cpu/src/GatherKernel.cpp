@@ -56,21 +56,9 @@ __attribute__((target_clones("avx2", "default"))) void vplKernels(const PixelSur
     const glm::vec3 kernel =
         physics::footprintKernel(path_m, glm::vec4(pixel, patch), start, width);
     terms.centre[i] = kernel.x, terms.wide[i] = kernel.y, terms.narrow[i] = kernel.z;
-    // The first kVectorNarrowBins narrow masses for every lane (a wide
-    // kernel's are not used), so that the loop has no data-dependent branch
-    // and vectorises; each edge's CDF once, carried to the next bin, which
-    // is footprintNarrowMass bit for bit.
     const bool narrow = physics::footprintIsNarrow(kernel);
-    const int firstBin = physics::footprintNarrowFirstBin(kernel, bins);
-    terms.first[i] = firstBin;
+    terms.first[i] = physics::footprintNarrowFirstBin(kernel, bins);
     terms.count[i] = narrow ? physics::footprintNarrowBinCount(kernel) : 0;
-    float lower = 0.0f;
-#pragma GCC unroll 8
-    for (int j = 0; j < kVectorNarrowBins; ++j) {
-      const float upper = physics::footprintNarrowEdgeCdf(kernel, j);
-      terms.mass[j][i] = upper - lower;
-      lower = upper;
-    }
   }
 }
 

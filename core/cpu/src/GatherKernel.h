@@ -20,11 +20,6 @@ namespace tofsim::cpu {
 constexpr std::size_t kVplBlock = 256;    ///< VPLs per block: ~10 KiB of VPL data, in L1
 constexpr int32_t kNoLight = INT_MIN;     ///< bin of a VPL that does not light the pixel
 constexpr int kFootprintDirectBins = 16;  ///< = FOOTPRINT_DIRECT_BINS (checked in GatherKernel.cpp)
-/// Narrow masses vplTerms computes for every lane: most contributions touch
-/// fewer bins, and computing all 16 for every lane cost more than the rest
-/// of the kernel; the gather computes a wider narrow kernel's further masses
-/// itself (physics::footprintNarrowMass, the same bits).
-constexpr int kVectorNarrowBins = 8;
 
 /// The camera G-buffer of one pixel, as the gather needs it.
 struct PixelSurface {
@@ -67,10 +62,9 @@ struct VplTerms {
   alignas(64) int32_t bin[kVplBlock];
   alignas(64) float centre[kVplBlock], wide[kVplBlock], narrow[kVplBlock];
   /// A narrow kernel's bins (footprintNarrowFirstBin, footprintNarrowBinCount;
-  /// count 0 for a wide kernel) and masses, mass[j] for bin first + j, j <
-  /// kVectorNarrowBins.
+  /// count 0 for a wide kernel); the deposit computes their masses
+  /// (FootprintDeposit.h).
   alignas(64) int32_t first[kVplBlock], count[kVplBlock];
-  alignas(64) float mass[kVectorNarrowBins][kVplBlock];
   alignas(64) float r[kVplBlock], g[kVplBlock], b[kVplBlock];
   alignas(64) float dx[kVplBlock], dy[kVplBlock], dz[kVplBlock], dist[kVplBlock];
   /// Whether the pixel lies in the VPL's near field (physics::vplInNearField),

@@ -21,6 +21,7 @@
 // Off-axis light is summed per pixel and then over the segment in pixel order.
 
 #include <cstddef>
+#include <cstdint>
 #include <memory>
 #include <string>
 #include <vector>
@@ -50,6 +51,7 @@ class LitBounds;
 struct PixelSurface;
 struct VplArrays;
 struct VplTerms;
+struct BlockPair;
 
 class CpuBackend : public ir::IrBackend {
  public:
@@ -98,21 +100,18 @@ class CpuBackend : public ir::IrBackend {
   void gatherTile(std::size_t tile, std::size_t firstVpl, std::size_t count);
   IndirectConstants indirectConstants() const;
   /// VPLs [first, + n), one block, into segment pixel i's histogram; `terms`
-  /// holds a block of terms for each of the pixel's samples.
+  /// holds a block of terms for each of the pixel's samples, `pairs` room for
+  /// all of them (the visible contributions, with the footprint).
   void gatherPixelBlock(const IndirectConstants& c, std::size_t first, std::size_t n, std::size_t i,
-                        VplTerms* terms);
-  /// VPL k of the block `t` through its footprint kernel into pixel i's
-  /// histogram (narrow) or footprint buffer (wide). Inline, as directLight.
-  inline void depositVplFootprint(const VplTerms& t, std::size_t k, const glm::vec3& energy,
-                                  std::size_t i, float* histogram, int bins,
-                                  physics::OffAxisSums& lost);
+                        VplTerms* terms, BlockPair* pairs);
   /// Adds pixel i's footprint buffer, if written, to `histogram` and clears it.
   void integratePixel(std::size_t i, float* histogram);
   /// Zero the first `pixels` pixels' histograms and footprint buffers (what
   /// an unfinished segment left).
   void clearAccumulators(std::size_t pixels);
-  /// Pixel i's footprint buffer, zeroed first if it held nothing.
-  double* footprintOf(std::size_t i);
+  /// Pixel i's footprint buffer, for a wide kernel's deposit (its bins
+  /// join the pixel's footprintBins_).
+  double* footprintOf(std::size_t i, const glm::vec3& kernel);
   /// The segment's histograms in `from` out to `to` (with the indirect
   /// light's wide footprint kernels summed in, pixel by pixel), and zeroed.
   void moveOut(float* from, float* to, bool integrateFootprints);
@@ -155,11 +154,17 @@ class CpuBackend : public ir::IrBackend {
   bool accumulatorsZero_ = false;
   std::vector<physics::OffAxisSums> outside_;  ///< per pixel of the segment: light off the axis
   /// The pixel footprint's difference buffers (bins x 3 doubles per pixel of
-  /// the segment) and which pixels' buffers hold something. Zero but where
-  /// written: integratePixel zeroes what it read, while in cache, so pixels
-  /// without a wide kernel never touch their pages.
+  /// the segment) and the bins of each that the wide kernels may have
+  /// written, [first, last] (none when first > last). Zero elsewhere:
+  /// integratePixel sums from `first` on (the entries before are zero, so
+  /// are the sums: the same bytes) and zeroes what was written, while in
+  /// cache, so pixels without a wide kernel never touch their pages.
   util::ZeroedBuffer<double> footprint_;
-  std::vector<unsigned char> footprintWritten_;
+  struct FootprintBins {
+    int32_t first = INT32_MAX;
+    int32_t last = -1;
+  };
+  std::vector<FootprintBins> footprintBins_;
   std::size_t firstPixel_ = 0, pixelCount_ = 0, pixelsPerSegment_ = 0;
   float sceneScale_m_ = 1.0f;
 };

@@ -33,7 +33,10 @@ inline FootprintOffAxis depositFootprint(double* diff, int32_t bins, const vec3&
   // footprintSlotBin and footprintSlotValue with the kinks and their bins
   // computed once, and each slot's sum over the four kinks taken only over
   // the kinks within reach of its bin: the others' weights are exactly 0, so
-  // the entries have the same bits at a fraction of the work.
+  // the entries have the same bits at a fraction of the work. Each kink's
+  // weights at its three bins are computed once, in a fixed order (no
+  // branches that depend on how the kinks' bins overlap), and each slot
+  // takes those of the kinks within reach.
   double knot[4];
   int knotBin[4];
   for (int j = 0; j < 4; ++j) {
@@ -47,6 +50,12 @@ inline FootprintOffAxis depositFootprint(double* diff, int32_t bins, const vec3&
   const bool fromCdf = knot[0] < 2.0 || wide < 1.0;
   const bool step = static_cast<double>(kernel.z) < static_cast<double>(1e-6f);
   const double scale = step ? 1.0 / wide : 1.0 / (wide * static_cast<double>(kernel.z));
+  double weight[4][3];  // footprintKinkWeight(knot[i], knotBin[i] + o, step)
+  if (!fromCdf) {
+    for (int i = 0; i < 4; ++i) {
+      for (int o = 0; o < 3; ++o) weight[i][o] = footprintKinkWeight(knot[i], knotBin[i] + o, step);
+    }
+  }
   for (int j = 0; j < 4; ++j) {
     for (int o = 0; o < 3; ++o) {
       const int bin = knotBin[j] + o;
@@ -55,11 +64,10 @@ inline FootprintOffAxis depositFootprint(double* diff, int32_t bins, const vec3&
       if (fromCdf) {
         value = footprintSlotValue(kernel, bin);
       } else {
-        double w[4] = {0.0, 0.0, 0.0, 0.0};
-        for (int i = std::max(0, j - 2); i < 4; ++i) {
-          if (bin >= knotBin[i] && bin <= knotBin[i] + 2) {
-            w[i] = footprintKinkWeight(knot[i], bin, step);
-          }
+        double w[4];
+        for (int i = 0; i < 4; ++i) {
+          const int reach = bin - knotBin[i];  // kink i's weight is 0 outside its three bins
+          w[i] = reach >= 0 && reach <= 2 ? weight[i][reach] : 0.0;
         }
         value = step ? scale * (w[0] - w[3]) : scale * (w[0] - w[1] - w[2] + w[3]);
       }
@@ -137,17 +145,19 @@ inline bool depositContribution(float* histogram, double* diff, int32_t bins, co
 
 /// The final pass for one pixel: adds the bin integrals held by `diff`
 /// (bins x 3, as depositFootprint left it) to `histogram` (bins x 3 floats).
-/// Running sums in double, channel by channel, bins in increasing order: the
-/// GL pass must keep this order to give the same bytes.
+/// Running sums in double, each channel's bins in increasing order: the GL
+/// pass must keep this order to give the same bytes. The three channels'
+/// sums are independent, so one pass runs them side by side (three chains of
+/// dependent additions at once, not one after the other; the same additions).
 inline void integrateFootprint(const double* diff, int32_t bins, float* histogram) {
-  for (int c = 0; c < 3; ++c) {
-    double slope = 0.0;  // first prefix sum: I_k - I_(k-1)
-    double value = 0.0;  // second prefix sum: I_k
-    for (int32_t k = 0; k < bins; ++k) {
-      const std::size_t i = static_cast<std::size_t>(k) * 3 + c;
-      slope += diff[i];
-      value += slope;
-      histogram[i] += static_cast<float>(value);
+  double slope[3] = {0.0, 0.0, 0.0};  // first prefix sum: I_k - I_(k-1)
+  double value[3] = {0.0, 0.0, 0.0};  // second prefix sum: I_k
+  for (int32_t k = 0; k < bins; ++k) {
+    const std::size_t i = static_cast<std::size_t>(k) * 3;
+    for (int c = 0; c < 3; ++c) {
+      slope[c] += diff[i + c];
+      value[c] += slope[c];
+      histogram[i + c] += static_cast<float>(value[c]);
     }
   }
 }
