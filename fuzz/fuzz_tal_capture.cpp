@@ -5,6 +5,7 @@
 #include <numeric>
 
 #include "FuzzFile.h"
+#include "Hdf5AsanOptions.h"
 #include "tofsim/io/TalCapture.h"
 #include "tofsim/util/Error.h"
 
@@ -13,11 +14,6 @@ std::size_t product(const std::vector<std::size_t>& shape) {
   return std::accumulate(shape.begin(), shape.end(), std::size_t(1), std::multiplies<>());
 }
 }  // namespace
-
-// libhdf5 (Debian's 1.10.8) sizes its metadata-cache entries from the file:
-// a malformed file makes it ask malloc for petabytes. With the allocator
-// returning null, HDF5 fails the read (an InputError here) instead.
-extern "C" const char* __asan_default_options() { return "allocator_may_return_null=1"; }
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   const auto path = tofsim::fuzz::writeInput("input.hdf5", data, size);

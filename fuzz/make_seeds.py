@@ -1,8 +1,9 @@
 #!/usr/bin/env python3
 """Writes the seed corpora in fuzz/corpus/<target>/: the shipped config and
 scene, plus tiny hand-made inputs that reach each code path (indices, strips,
-sparse accessors, a .glb, a .npy, a saved render). Re-run after changing it."""
-import base64, json, os, shutil, struct
+sparse accessors, a .glb, a .npy, a saved render), and a capture.h5 rendered
+by build/apps/cli/tofsim when it is built. Re-run after changing it."""
+import base64, json, os, shutil, struct, subprocess, sys, tempfile
 
 root = os.path.dirname(os.path.abspath(__file__))
 src = os.path.dirname(root)
@@ -94,3 +95,25 @@ out("fuzz_camera_files", "psf_npy", b"\4" + npy((3, 3), [0, 1, 0, 1, 4, 1, 0, 1,
 out("fuzz_camera_files", "delay_npy", b"\5" + npy((4, 4), [1e-11 * i for i in range(16)]))
 out("fuzz_camera_files", "companding_csv", b"\6" + b"in_dn,out_dn\n0,0\n1000,1000\n4095,2000\n")
 out("fuzz_camera_files", "noise_csv", b"\7" + b"mean_e,raw_e\n10,9\n10,12\n12,11\n")
+
+# capture.h5 (output.format: hdf5): HDF5 has no hand-writable form here (no
+# h5py), so a 4 x 4 pixel, 8 bin render of the demo by the CLI, CPU backend,
+# no sensors (transient, steady and depth: 18 KB, mostly HDF5's zero-padded
+# chunk index), and its first half. Its transient.json attribute records the
+# render's timings, so each run changes a few bytes.
+cli = os.path.join(src, "build", "apps", "cli", "tofsim")
+if os.path.exists(cli):
+    with tempfile.TemporaryDirectory() as tmp:
+        subprocess.run([cli, "render", os.path.join(src, "configs", "cornell_box.yaml"),
+                        "-o", os.path.join(tmp, "out"), "-q",
+                        "--set", "camera.resolution=[4,4]", "--set", "time.bins=8",
+                        "--set", "time.bin_width=25 cm", "--set", "render.backend=cpu",
+                        "--set", "render.threads=1", "--set", "output.format=hdf5",
+                        "--set", "output.video=false", "--set", "output.components=[]",
+                        "--set", "sensors=[]"], check=True, stderr=subprocess.DEVNULL)
+        capture = open(os.path.join(tmp, "out", "capture.h5"), "rb").read()
+    out("fuzz_capture_h5", "render_4x4x8.h5", capture)
+    out("fuzz_capture_h5", "truncated_half.h5", capture[:len(capture) // 2])
+else:
+    print("make_seeds.py: %s not built (bash scripts/build.sh): fuzz_capture_h5's seeds left as "
+          "they are" % cli, file=sys.stderr)

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Installs the Debian packages tofsim builds and runs with (as root, or with
-# sudo). Skips apt-get entirely when everything is already there.
+# sudo; scripts/apt-install.sh). Skips apt-get entirely when everything is
+# already there.
 set -euo pipefail
 
 packages=(
@@ -17,16 +18,4 @@ packages=(
   dpkg-dev file                                      # cpack -G DEB: dpkg-shlibdeps finds the Depends (tests/install)
 )
 
-missing=()
-for p in "${packages[@]}"; do
-  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
-done
-if [ ${#missing[@]} -eq 0 ]; then
-  exit 0
-fi
-echo "install-deps: installing ${missing[*]}" >&2
-SUDO=""
-if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
-export DEBIAN_FRONTEND=noninteractive
-$SUDO apt-get update -qq
-$SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+bash "$(dirname "$0")/apt-install.sh" "${packages[@]}"

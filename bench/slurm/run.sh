@@ -33,21 +33,14 @@ trap 'exit 143' TERM
 
 seeds=$(seq -s, 1 64)
 write_batch() { # FILE OUTPUT
-  cat >"$1" <<EOF
-base: $src/configs/cornell_box.yaml
-output: $2
-set:
-  render.backend: cpu
-  camera.resolution: [16, 16]
-  time.bins: 64
-  render.indirect.rsm_resolution: 8
-  output.video: false
-  sensors.0.plot_pixels: [[8, 8]]
-  sensors.1.rows: [8]
+  {
+    write_batch_header "$src" "$2"
+    cat <<EOF
 sweep:
   zip:
     render.seed: [$seeds]
 EOF
+  } >"$1"
 }
 
 slurm_cluster_up "$work/cluster"

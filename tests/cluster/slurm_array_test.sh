@@ -100,17 +100,9 @@ readme_command() {
 
 # --- the batch: 8 runs, r3 slow --------------------------------------------
 write_batch() { # FILE OUTPUT
-  cat >"$1" <<EOF
-base: $src/configs/cornell_box.yaml
-output: $2
-set:
-  render.backend: cpu
-  camera.resolution: [16, 16]
-  time.bins: 64
-  render.indirect.rsm_resolution: 8
-  output.video: false
-  sensors.0.plot_pixels: [[8, 8]]
-  sensors.1.rows: [8]
+  {
+    write_batch_header "$src" "$2"
+    cat <<EOF
 runs:
   - {name: r0, set: {render.seed: 1}}
   - {name: r1, set: {render.seed: 2}}
@@ -121,6 +113,7 @@ runs:
   - {name: r6, set: {render.seed: 7}}
   - {name: r7, set: {render.seed: 8}}
 EOF
+  } >"$1"
 }
 write_batch "$work/sweep.yaml" out
 write_batch "$work/reference.yaml" reference

@@ -5,6 +5,7 @@
 #   slurm_cluster_up DIR                    # munged + slurmctld + slurmd
 #   ... sbatch / squeue / scancel (SLURM_CONF points at DIR/slurm.conf) ...
 #   slurm_cluster_down                      # also from an EXIT trap
+#   write_batch_header SRC OUTPUT >FILE     # the batch both run; append runs
 #
 # Debian's packages (slurm-wlm, munge: scripts/install-cluster-deps.sh), run
 # as root: munged with a generated key and its own socket, slurmctld and one
@@ -52,6 +53,26 @@ slurm_cluster_can_run() {
     return 1
   fi
   return 0
+}
+
+# The start of the batch file that both the test and the bench submit, on
+# stdout: the Cornell box demo of SRC (the source folder) made tiny (CPU
+# backend, 16 x 16 pixels, 64 bins, 64 VPLs, no video, the sensors' plotted
+# pixel and rows inside the image) into OUTPUT. The caller appends its runs
+# (`sweep:` or `runs:`).
+write_batch_header() { # SRC OUTPUT
+  cat <<EOF
+base: $1/configs/cornell_box.yaml
+output: $2
+set:
+  render.backend: cpu
+  camera.resolution: [16, 16]
+  time.bins: 64
+  render.indirect.rsm_resolution: 8
+  output.video: false
+  sensors.0.plot_pixels: [[8, 8]]
+  sensors.1.rows: [8]
+EOF
 }
 
 # A free TCP port on localhost (none listening on it, v4 or v6), from a

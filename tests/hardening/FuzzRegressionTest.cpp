@@ -12,6 +12,7 @@
 #include <sstream>
 
 #include "fuzz/CameraFilesInput.h"
+#include "fuzz/CaptureH5Reads.h"
 #include "fuzz/IrfInput.h"
 #include "fuzz/SceneInvariants.h"
 #include "fuzz/SpadTablesInput.h"
@@ -136,6 +137,16 @@ TEST_F(FuzzRegressionTest, TalCaptures) {
   const int inputs = forEachInput("tal_capture", [&](const std::string& bytes, const fs::path&) {
     writeBytes(dir_ / "input.hdf5", bytes);
     io::readTalCapture(dir_ / "input.hdf5");
+  });
+  EXPECT_GT(inputs, 0);
+}
+
+// As in fuzz/fuzz_capture_h5.cpp: a capture.h5 (output.format: hdf5), every
+// kind of read H5CaptureReader offers (fuzz/CaptureH5Reads.h).
+TEST_F(FuzzRegressionTest, CaptureH5Files) {
+  const int inputs = forEachInput("capture_h5", [&](const std::string& bytes, const fs::path&) {
+    writeBytes(dir_ / "capture.h5", bytes);
+    fuzz::readCaptureH5(dir_ / "capture.h5");
   });
   EXPECT_GT(inputs, 0);
 }

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "Hdf5Attributes.h"
+#include "Hdf5Extent.h"
 #include "Hdf5Handle.h"
 #include "tofsim/io/Hdf5Capture.h"
 #include "tofsim/util/Error.h"
@@ -42,14 +43,9 @@ struct H5CaptureReader::Impl {
     return dataset;
   }
 
+  // Checked against the file (Hdf5Extent.h): callers allocate from it.
   NpyShape shapeOf(hid_t dataset, const std::string& name) const {
-    const H5Space space(h5Check(H5Dget_space(dataset), path, name, "cannot read its shape"));
-    const int rank =
-        h5Check(H5Sget_simple_extent_ndims(space.get()), path, name, "cannot read its shape");
-    std::vector<hsize_t> dims(static_cast<std::size_t>(rank));
-    h5Check(H5Sget_simple_extent_dims(space.get(), dims.data(), nullptr), path, name,
-            "cannot read its shape");
-    return NpyShape(dims.begin(), dims.end());
+    return detail::checkedExtent(dataset, path, name).shape;
   }
 
   // Reads the file's selection `file` of `dataset` into `values` floats.

@@ -3,14 +3,14 @@
 // (1,)) as tal render's files differ from ours there; strict in what cannot
 // mean the same (a missing field, a string where a number belongs, shapes
 // that disagree). Unknown extra keys (tal's empty volume_format) are ignored.
-#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <cstring>
-#include <limits>
 #include <string>
+#include <utility>
 #include <vector>
 
+#include "Hdf5Extent.h"
 #include "Hdf5Handle.h"
 #include "TalLayout.h"
 #include "tofsim/io/TalCapture.h"
@@ -24,11 +24,6 @@ using detail::H5Dataset;
 using detail::H5File;
 using detail::H5Space;
 using detail::H5Type;
-
-// Deflate's largest expansion (1032:1) with a margin, and what small
-// datasets may lack in storage (compact or scalar ones).
-constexpr std::size_t kMaxInflation = 1100;
-constexpr std::uintmax_t kStorageSlack = 65536;
 
 class Reader {
  public:
@@ -158,27 +153,9 @@ class Reader {
     f.type = H5Type(check(H5Dget_type(f.dataset.get()), name, "cannot read its type"));
     const H5Space space(check(H5Dget_space(f.dataset.get()), name, "cannot read its dataspace"));
     require(H5Sget_simple_extent_type(space.get()) != H5S_NULL, name, "is empty (no data)");
-    const int rank = check(H5Sget_simple_extent_ndims(space.get()), name, "cannot read its shape");
-    std::vector<hsize_t> dims(static_cast<std::size_t>(rank));
-    check(H5Sget_simple_extent_dims(space.get(), dims.data(), nullptr), name,
-          "cannot read its shape");
-    f.count = 1;
-    for (const hsize_t d : dims) {
-      // Overflow guard before any allocation: a corrupt extent must be an
-      // error, not a bad_alloc.
-      require(d == 0 || f.count <= std::numeric_limits<std::size_t>::max() / sizeof(float) / d,
-              name, "is too large");
-      f.count *= static_cast<std::size_t>(d);
-      f.shape.push_back(static_cast<std::size_t>(d));
-    }
-    // Nor may a corrupt extent make us allocate more than the file can hold:
-    // the values are on disk, deflated at most ~1032:1 (the format's limit),
-    // or are fill values of chunks never written (tal and tofsim write all).
-    const std::uintmax_t stored = H5Dget_storage_size(f.dataset.get());
-    const std::size_t valueBytes = std::max<std::size_t>(H5Tget_size(f.type.get()), 1);
-    require(f.count / kMaxInflation <= (stored + kStorageSlack) / valueBytes, name,
-            "declares " + std::to_string(f.count) + " values, more than its " +
-                std::to_string(stored) + " stored bytes can hold");
+    detail::H5Extent extent = detail::checkedExtent(f.dataset.get(), path_, name);
+    f.shape = std::move(extent.shape);
+    f.count = extent.count;
     return f;
   }
   template <class T>

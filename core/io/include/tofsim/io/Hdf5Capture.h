@@ -85,8 +85,11 @@ class H5CaptureWriter {
 };
 
 /// Reads a file written by H5CaptureWriter (or any HDF5 file of float
-/// datasets). Every failure, a missing or damaged file included, is an
-/// InputError naming the file and the dataset.
+/// datasets whose chunks are all written). Every failure, a missing or
+/// damaged file included, is an InputError naming the file and the dataset;
+/// a shape that declares more values than the file's stored bytes can hold
+/// is one, so callers may allocate from shape(). libhdf5's own parser is not
+/// safe on hostile files (fuzz/README.md): read files of trusted origin.
 class H5CaptureReader {
  public:
   explicit H5CaptureReader(std::filesystem::path path);
