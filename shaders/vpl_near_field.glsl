@@ -47,6 +47,30 @@ TOFSIM_PHYSICS_FN bool vplInNearField(float dist2, float limit) {
   return dist2 * dist2 < limit;
 }
 
+// The angle between two vectors from |a x b| = sine >= 0 and a . b = cosine:
+// atan2(sine, cosine) in [0, pi] by Cephes' atanf (range reduction to
+// |t| <= tan(pi / 8), then an odd polynomial of degree 9; within 3e-7 rad
+// of atan2, tests/physics/VplNearFieldTest.cpp). Written here rather than
+// taken from each platform's atan: a quarter of a low-resolution RSM's
+// indirect gather was libm's atan2f, and GL and CPU now evaluate the same
+// operations.
+TOFSIM_PHYSICS_FN float edgeAngle(float sine, float cosine) {
+  if (cosine == 0.0f) return 1.5707963267948966f;
+  float t = sine / abs(cosine);  // >= 0
+  float base = 0.0f;
+  if (t > 2.414213562373095f) {
+    base = 1.5707963267948966f;
+    t = -1.0f / t;
+  } else if (t > 0.4142135623730950f) {
+    base = 0.7853981633974483f;
+    t = (t - 1.0f) / (t + 1.0f);
+  }
+  float z = t * t;
+  float angle = base + ((((8.05374449538e-2f * z - 1.38776856032e-1f) * z + 1.99777106478e-1f) * z -
+                         3.33329491539e-1f) * z * t + t);
+  return cosine > 0.0f ? angle : 3.1415926535897932f - angle;
+}
+
 // Projected solid angle (sr) of the parallelogram centre +- patchU / 2 +-
 // patchV / 2 seen from x with unit normal n: the part above x's tangent
 // plane (the quad clipped against it: at most five corners), by Lambert's
@@ -81,7 +105,7 @@ TOFSIM_PHYSICS_FN float patchProjectedSolidAngle(vec3 x, vec3 n, vec3 centre, ve
     vec3 b = polygon[(i + 1) % count];
     vec3 edgePlane = cross(a, b);
     float sine = length(edgePlane);  // |a| |b| sin(angle)
-    if (sine > 0.0f) sum += atan(sine, dot(a, b)) * (dot(n, edgePlane) / sine);
+    if (sine > 0.0f) sum += edgeAngle(sine, dot(a, b)) * (dot(n, edgePlane) / sine);
   }
   return 0.5f * abs(sum);
 }

@@ -10,7 +10,6 @@
 namespace tofsim::physics {
 
 using glm::abs;
-using glm::atan;
 using glm::cross;
 
 #define TOFSIM_PHYSICS_FN inline
