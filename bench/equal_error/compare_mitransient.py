@@ -18,6 +18,10 @@ samples at G-buffer edges and the default clamp: where the error is.
 --footprint: ISM at RSM 64^2 and 128^2 and exact at 128^2, each with the
 footprints (the default), without the VPL's patch footprint, and with point
 pixels (no footprint at all): what the footprint deposit costs and buys.
+--reference: the ladder is tofsim's own reference path tracer (the CLI,
+`renderer: reference`, box pixel filter, 2 interactions, the spot light),
+its process wall at 64 .. 4096 paths per pixel, instead of mitransient's;
+the truth stays mitransient's.
 """
 
 import json
@@ -149,6 +153,15 @@ def tofsim(side, sets, out):
         wall, stats["seconds"]
 
 
+def tofsim_reference(spp, side, out):
+    """tofsim's reference path tracer at `spp` (box filter, direct + one
+    bounce) on the protocol's light and time axis: (volume, process wall s)."""
+    _, _, wall, _ = tofsim(side, ["render.renderer=reference", "render.reference.bounces=2",
+                                  f"render.reference.samples_per_pixel={spp}",
+                                  "render.reference.pixel_filter=box"], out)
+    return np.load(os.path.join(out, "transient.npy")), wall
+
+
 def silhouettes(depth):
     """Pixels whose 3 x 3 neighbourhood's depth jumps by more than 5 %: the
     silhouettes (an edge pixel that is not one is a crease)."""
@@ -170,6 +183,9 @@ def seconds_to(error, ladder):
 
 def main():
     variants = VARIANTS
+    against_reference = "--reference" in sys.argv
+    if against_reference:
+        sys.argv.remove("--reference")
     for flag, rows in (("--edges", EDGE_VARIANTS), ("--footprint", FOOTPRINT_VARIANTS)):
         if flag in sys.argv:
             sys.argv.remove(flag)
@@ -188,17 +204,22 @@ def main():
     everywhere = np.ones_like(truth, dtype=bool)
     ladder_in, ladder_all = [], []
     spp = 64
-    while spp <= min(16384, truth_spp // 4):
-        f = os.path.join(folder, f"mt_{side}_{spp}.npy")
-        s = mitransient(spp, side, f)
-        v = rebinned(np.load(f))
+    ladder_name = "tofsim reference" if against_reference else "mitransient"
+    while spp <= min(16384 if not against_reference else 4096, truth_spp // 4):
+        if against_reference:
+            volume, s = tofsim_reference(spp, side, os.path.join(folder, f"reference{spp}"))
+            v = rebinned(volume)
+        else:
+            f = os.path.join(folder, f"mt_{side}_{spp}.npy")
+            s = mitransient(spp, side, f)
+            v = rebinned(np.load(f))
         ladder_in.append((s, rel_l1(v, truth, inside)))
         ladder_all.append((s, rel_l1(v, truth, everywhere)))
-        print(f"mitransient {spp} spp: {s:.2f} s, L1 interior {ladder_in[-1][1]:.2%} / all {ladder_all[-1][1]:.2%}")
+        print(f"{ladder_name} {spp} spp: {s:.2f} s, L1 interior {ladder_in[-1][1]:.2%} / all {ladder_all[-1][1]:.2%}")
         spp *= 4
     print(f"\n{side}x{side}, truth mitransient {truth_spp} spp, {inside[:, :, 0].sum()} interior pixels of {side * side}")
     print("| tofsim IR (CPU backend, clamp 0) | process s / render s | transient L1 interior / all | "
-          "mitransient s to the same error, interior / all | speed-up (process) interior / all | "
+          f"{ladder_name} s to the same error, interior / all | speed-up (process) interior / all | "
           "edges' share of the error | L1 by pixel class: interior / silhouette / crease |")
     print("|---|---|---|---|---|---|---|")
     for name, v, depth, wall, render in runs:
