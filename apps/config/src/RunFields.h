@@ -32,7 +32,7 @@ inline constexpr auto kIndirectFields = std::tuple{
     Field{"enabled", &capture::IndirectSettings::enabled, Flag{},
           {.doc = "render indirect light"}},
     Field{"rsm_resolution", &capture::IndirectSettings::rsm_resolution, IntegerIn{1, 4096},
-          {.unit = "pixel", .doc = "reflective shadow map side; VPLs = its square per light view (one view for spots up to 60° half angle, six cube faces otherwise; texels that see no lit surface make none); at most 4,194,304 VPLs"}},
+          {.unit = "pixel", .doc = "reflective shadow map side; VPLs = its square per light view (one view for spots up to 60° half angle, six cube faces otherwise; texels that see no lit surface make none, a texel at an edge may make more: `rsm_edge_samples`); at most 4,194,304 texels over the views"}},
     Field{"rsm_edge_samples", &capture::IndirectSettings::rsm_edge_samples, IntegerIn{1, 16},
           {.doc = "N: an RSM texel at an edge (a silhouette, a crease or a depth jump in its 3 x 3 neighbourhood, the test of `adaptive_pixel_samples`) is traced at N x N sub-texels and makes one VPL per flat surface among them, with their summed flux: the first bounce's energy right at the RSM's edges (README.md, \"How it renders\", VPLs). N is lowered so that N `rsm_resolution` <= 2048; 1 = one VPL per texel, at its centre"}},
     Field{"ism_resolution", &capture::IndirectSettings::ism_resolution, IntegerIn{4, 4096},
