@@ -66,6 +66,7 @@ render:
     enabled: false
     rsm_resolution: 8
     rsm_edge_samples: 3
+    merge_pixel_samples: true
     ism_resolution: 16
     points_per_vpl: 200
     ism_pull_push: false

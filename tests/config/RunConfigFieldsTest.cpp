@@ -42,7 +42,7 @@ TEST_F(RunConfigFieldsTest, TableDocumentedDefaultsReadBackAsTheStructDefaults) 
       ++checked;
     }
   }
-  EXPECT_EQ(checked, 13 + 5);
+  EXPECT_EQ(checked, 14 + 5);
 }
 
 TEST_F(RunConfigFieldsTest, OutputFormatIsNpyOrHdf5WithALocatedError) {
@@ -56,6 +56,27 @@ TEST_F(RunConfigFieldsTest, OutputFormatIsNpyOrHdf5WithALocatedError) {
     EXPECT_NE(what.find("c.yaml:6:"), std::string::npos) << what;
     EXPECT_NE(what.find("output.format"), std::string::npos) << what;
     EXPECT_NE(what.find("zarr"), std::string::npos) << what;
+  }
+}
+
+// render.indirect.merge_pixel_samples is the CPU backend's: with the gl
+// backend a located error; auto and cpu take it, and without pixel samples
+// it has nothing to merge.
+TEST_F(RunConfigFieldsTest, MergedPixelSamplesOnTheGlBackendAreALocatedError) {
+  const std::string merged = "    merge_pixel_samples: true\n";
+  EXPECT_NE(effective("render:\n  backend: cpu\n  pixel_samples: 2\n  indirect:\n" + merged)
+                .find("merge_pixel_samples: true"),
+            std::string::npos);
+  EXPECT_NO_THROW(effective("render:\n  pixel_samples: 2\n  indirect:\n" + merged));
+  EXPECT_NO_THROW(effective("render:\n  backend: gl\n  indirect:\n" + merged));
+  try {
+    effective("render:\n  backend: gl\n  pixel_samples: 2\n  indirect:\n" + merged);
+    FAIL() << "merge_pixel_samples on the gl backend was accepted";
+  } catch (const InputError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("c.yaml:9:"), std::string::npos) << what;
+    EXPECT_NE(what.find("render.indirect.merge_pixel_samples"), std::string::npos) << what;
+    EXPECT_NE(what.find("backend: cpu"), std::string::npos) << what;
   }
 }
 

@@ -22,6 +22,7 @@
 #include "tofsim/ir/IrRenderer.h"
 #include "tofsim/ir/LitPixels.h"
 #include "tofsim/rays/RayScene.h"
+#include "tofsim/util/Error.h"
 #include "tofsim/ir/SurfaceImage.h"
 #include "tofsim/render/GlBackend.h"
 #include "tofsim/scene/GltfLoader.h"
@@ -234,6 +235,18 @@ TEST(AdaptiveSamplesGLTest, AnAllOnesMaskGivesTheBytesOfNxNSamples) {
     EXPECT_EQ(std::memcmp(adaptive.direct.data(), many.direct.data(), bytes), 0);
     EXPECT_EQ(std::memcmp(adaptive.indirect.data(), many.indirect.data(), bytes), 0);
   }
+}
+
+// render.indirect.merge_pixel_samples is gathered by the CPU backend only:
+// the GL backend refuses it (the config refuses `backend: gl` with it).
+TEST(AdaptiveSamplesGLTest, MergedPixelSamplesAreRefused) {
+  const CornellBox box;
+  capture::RenderJob job = box.job(capture::Visibility::Ism, 2);
+  job.settings.indirect.merge_pixel_samples = true;
+  capture::VolumeCollector out(job.camera().width, job.camera().height, job.settings.time,
+                               capture::kChannels);
+  ir::IrRenderer renderer(std::make_unique<GlBackend>(test::glTestContext()));
+  EXPECT_THROW(renderer.render(job, out), InputError);
 }
 
 }  // namespace

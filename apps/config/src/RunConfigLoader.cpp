@@ -369,6 +369,20 @@ void checkDefocusBackend(const ConfigNode& root, const RunConfig& config) {
       "aperture samples");
 }
 
+// render.indirect.merge_pixel_samples is gathered by the CPU IR backend only.
+void checkMergeBackend(const ConfigNode& root, const RunConfig& config) {
+  if (config.nlos || !config.render.indirect.merge_pixel_samples ||
+      config.render.pixel_samples == 1) {
+    return;
+  }
+  if (config.renderer != RendererKind::InstantRadiosity || config.backend != IrBackendKind::Gl) {
+    return;
+  }
+  root.child("render").child("indirect").failKey(
+      "merge_pixel_samples",
+      "runs on render.backend: cpu (or auto); the gl backend gathers every pixel sample");
+}
+
 // What an nlos capture cannot do: the outputs of a camera image.
 void checkNlosRun(const ConfigNode& root) {
   if (const auto output = root.optionalChild("output")) {
@@ -447,6 +461,7 @@ RunConfig loadRunConfigYaml(YAML::Node yaml, const std::filesystem::path& file,
   if (const auto render = root.optionalChild("render")) parseRender(*render, config);
   checkVplCount(root, config);
   checkDefocusBackend(root, config);
+  checkMergeBackend(root, config);
   if (const auto output = root.optionalChild("output")) parseOutput(*output, config, config.output);
   if (config.nlos) checkNlosRun(root);
   if (const auto list = root.optionalChild("sensors")) {

@@ -41,9 +41,12 @@ RendererChoice makeRenderer(const config::RunConfig& config, gl::EglPlatform egl
     return {std::make_unique<reference::ReferenceRenderer>(makeReferenceSettings(config)),
             "reference"};
   }
-  // Only the CPU backend gathers a defocused camera's aperture samples.
+  // Only the CPU backend gathers a defocused camera's aperture samples and
+  // merges pixel samples.
   const bool defocused = !config.nlos && config.camera.camera.defocused();
-  const config::IrBackendKind backend = defocused && config.backend == config::IrBackendKind::Auto
+  const bool merged = !config.nlos && config.render.indirect.merge_pixel_samples &&
+                      config.render.pixel_samples > 1;
+  const config::IrBackendKind backend = (defocused || merged) && config.backend == config::IrBackendKind::Auto
                                             ? config::IrBackendKind::Cpu
                                             : resolveIrBackend(config.backend);
   return {std::make_unique<ir::IrRenderer>(makeIrBackend(backend, eglPlatform, config.cpu_threads)),

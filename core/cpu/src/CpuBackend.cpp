@@ -10,6 +10,7 @@
 #include "GatherKernel.h"
 #include "GatherTiles.h"
 #include "LitBounds.h"
+#include "MergedSamples.h"
 #include "ParallelFor.h"
 #include "RsmVpls.h"
 #include "VplArrays.h"
@@ -201,6 +202,28 @@ void CpuBackend::beginSegment(std::size_t firstPixel, std::size_t count) {
       fillSurface(i, weight, steps, eta);
     }
   }
+  mergeSegmentSamples(count);
+}
+
+void CpuBackend::mergeSegmentSamples(std::size_t count) {
+  mergedSurfaces_.clear();
+  mergedFirst_.clear();
+  const capture::RenderSettings& s = job_.settings;
+  // Not with aperture samples (they see through different points of the
+  // lens) nor glTF materials (their BRDFs do not add up as albedos do).
+  if (!s.indirect.merge_pixel_samples || s.pixel_samples == 1 || apertureSamples_ != 1 ||
+      s.materials == capture::MaterialModel::Gltf) {
+    return;
+  }
+  mergedFirst_.push_back(0);
+  for (std::size_t pixel = 0; pixel < count; ++pixel) {
+    const std::size_t first = segmentFirstSample_[pixel];
+    const std::size_t samples = segmentFirstSample_[pixel + 1] - first;
+    const int n = surfaces_->side[firstPixel_ + pixel];
+    TOFSIM_CHECK_EQ(samples, static_cast<std::size_t>(n) * n);
+    mergePixelSamples(&segmentSurfaces_[first], &segmentLit_[first], n, mergedSurfaces_);
+    mergedFirst_.push_back(mergedSurfaces_.size());
+  }
 }
 
 void CpuBackend::fillSurface(std::size_t i, float weight, const capture::PixelSteps& steps,
@@ -327,21 +350,26 @@ void CpuBackend::gatherPixelBlock(const IndirectConstants& c, std::size_t first,
   const VplArrays& v = *vpls_;
   float* histogram = &indirect_[i * bins * kChannels];
   physics::OffAxisSums& lost = outside_[i];
-  const std::size_t firstOfPixel = segmentFirstSample_[i];
-  const std::size_t perPixel = segmentFirstSample_[i + 1] - firstOfPixel;
+  // The pixel's samples, or with merge_pixel_samples its merged ones (all
+  // lit: `lit` null).
+  const bool merged = !mergedFirst_.empty();
+  const std::size_t firstOfPixel = merged ? mergedFirst_[i] : segmentFirstSample_[i];
+  const std::size_t perPixel =
+      (merged ? mergedFirst_[i + 1] : segmentFirstSample_[i + 1]) - firstOfPixel;
+  const PixelSurface* surfaces =
+      (merged ? mergedSurfaces_.data() : segmentSurfaces_.data()) + firstOfPixel;
+  const unsigned char* lit = merged ? nullptr : segmentLit_.data() + firstOfPixel;
   for (std::size_t s = 0; s < perPixel; ++s) {
-    if (segmentLit_[firstOfPixel + s]) {
-      vplTerms(segmentSurfaces_[firstOfPixel + s], v, first, n, c.kernel, terms[s]);
-    }
+    if (!lit || lit[s]) vplTerms(surfaces[s], v, first, n, c.kernel, terms[s]);
   }
   std::size_t visible = 0;  // contributions in `pairs`
   for (std::size_t k = 0; k < n; ++k) {
     for (std::size_t s = 0; s < perPixel; ++s) {
-      if (!segmentLit_[firstOfPixel + s]) continue;
+      if (lit && !lit[s]) continue;
       const VplTerms& t = terms[s];
       const int32_t bin = t.bin[k];
       if (bin == kNoLight) continue;
-      const PixelSurface& surface = segmentSurfaces_[firstOfPixel + s];
+      const PixelSurface& surface = surfaces[s];
       const std::size_t vpl = first + k;
       if (exact) {
         const glm::vec3 from = glm::vec3(v.px[vpl], v.py[vpl], v.pz[vpl]) +

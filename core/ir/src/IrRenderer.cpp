@@ -207,6 +207,11 @@ RenderResult IrRenderer::render(const RenderJob& job, SegmentSink& sink,
                      backend.description() +
                      " backend does not gather aperture samples (set camera.aperture: 0)");
   }
+  if (job.settings.indirect.merge_pixel_samples && job.settings.pixel_samples > 1 &&
+      !backend.mergesPixelSamples()) {
+    throw InputError("render.indirect.merge_pixel_samples runs on render.backend: cpu; the " +
+                     backend.description() + " backend gathers every pixel sample");
+  }
   RenderResult result;
 
   PassClock clock;

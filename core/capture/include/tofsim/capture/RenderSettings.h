@@ -24,6 +24,9 @@ struct IndirectSettings {
   /// N: a texel at an edge of the RSM is traced at N x N sub-texels, one
   /// VPL per flat surface among them (ir::rsmViewVpls); 1 = none.
   int32_t rsm_edge_samples = 4;
+  /// With pixel_samples N > 1, the CPU backend gathers a pixel's indirect
+  /// light once per flat surface among its samples (cpu MergedSamples.h).
+  bool merge_pixel_samples = false;
   int32_t ism_resolution = 32;    ///< side of each VPL's paraboloid depth map
   int32_t points_per_vpl = 1000;  ///< ISM points splatted per VPL
   bool ism_pull_push = true;      ///< fill ISM holes by pull-push

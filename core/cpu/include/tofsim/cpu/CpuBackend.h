@@ -62,6 +62,7 @@ class CpuBackend : public ir::IrBackend {
   ir::DeviceLimits limits() const override;
   bool tracesRays() const override { return true; }
   bool defocuses() const override { return true; }
+  bool mergesPixelSamples() const override { return true; }
   void setScene(const scene::Scene& scene, const rays::RayScene* rays) override;
   ir::CentreSurfaces prepareSurfaces(const capture::RenderJob& job) override;
   /// Never called: the CPU backend traces every imager's samples itself.
@@ -124,6 +125,9 @@ class CpuBackend : public ir::IrBackend {
   /// sample of `weight` (1 / its pixel's samples) whose footprint the
   /// imager's `steps` give.
   void fillSurface(std::size_t i, float weight, const capture::PixelSteps& steps, float eta);
+  /// render.indirect.merge_pixel_samples: mergedSurfaces_ and mergedFirst_
+  /// from the segment's first `count` pixels' samples (cleared without it).
+  void mergeSegmentSamples(std::size_t count);
 
   int threads_ = 1;
   bool indirectVisibility_ = true;
@@ -146,6 +150,12 @@ class CpuBackend : public ir::IrBackend {
   /// Segment pixel i's samples are [segmentFirstSample_[i], [i + 1]) of the
   /// two above, surfaces_ entries from firstSample_ on.
   std::vector<std::size_t> segmentFirstSample_;
+  /// render.indirect.merge_pixel_samples: the indirect gather's samples, a
+  /// pixel's merged per flat surface (MergedSamples.h), pixel i's
+  /// [mergedFirst_[i], [i + 1]); empty without merging (the gather reads the
+  /// samples above).
+  std::vector<PixelSurface> mergedSurfaces_;
+  std::vector<std::size_t> mergedFirst_;
   std::size_t firstSample_ = 0;
   /// The segment's histograms, (pixel, bin, channel); zero from the kernel
   /// (ZeroedBuffer.h) and kept across renders of the same size.

@@ -109,6 +109,8 @@ class IrBackend {
   /// point, SurfaceImage::origin); the driver refuses a defocused camera
   /// otherwise.
   virtual bool defocuses() const { return false; }
+  /// Whether the backend gathers render.indirect.merge_pixel_samples.
+  virtual bool mergesPixelSamples() const { return false; }
   /// The scene every following render sees, prepared once (GL: geometry
   /// upload and the triangle soup's BVH; CPU: nothing but the reference):
   /// `rays` is the driver's one Embree scene of it when tracesRays(), which
