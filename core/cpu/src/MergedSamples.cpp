@@ -1,57 +1,31 @@
 #include "MergedSamples.h"
 
-#include <algorithm>
-#include <cmath>
+#include <optional>
 
-#include "tofsim/ir/SampledPixels.h"
+#include "tofsim/ir/FlatSurfaceGroups.h"
 
 namespace tofsim::cpu {
 
 void mergePixelSamples(const PixelSurface* samples, const unsigned char* lit, int n,
                        std::vector<PixelSurface>& out) {
-  std::vector<std::vector<int>> groups;
-  for (int s = 0; s < n * n; ++s) {
-    if (!lit[s]) continue;
-    auto group = std::find_if(groups.begin(), groups.end(), [&](const std::vector<int>& g) {
-      const PixelSurface& first = samples[g.front()];
-      return ir::onFlatSurface(first.x, first.n, samples[s].x, samples[s].n);
-    });
-    if (group == groups.end()) {
-      groups.push_back({s});
-    } else {
-      group->push_back(s);
-    }
+  std::vector<std::optional<ir::CellSurface>> cells(static_cast<std::size_t>(n) * n);
+  for (std::size_t s = 0; s < cells.size(); ++s) {
+    if (lit[s]) cells[s] = ir::CellSurface{samples[s].x, samples[s].n};
   }
-  for (const std::vector<int>& g : groups) {
-    if (g.size() == 1) {
-      out.push_back(samples[g.front()]);
+  for (const ir::FlatSurfaceGroup& g : ir::flatSurfaceGroups(cells, n)) {
+    if (g.cells.size() == 1) {
+      out.push_back(samples[g.nearest]);  // a lone sample is itself
       continue;
     }
-    double cx = 0.0, cy = 0.0;
-    int x0 = n, x1 = 0, y0 = n, y1 = 0;
-    for (int s : g) {
-      cx += s % n, cy += s / n;
-      x0 = std::min(x0, s % n), x1 = std::max(x1, s % n);
-      y0 = std::min(y0, s / n), y1 = std::max(y1, s / n);
+    PixelSurface merged = samples[g.nearest];
+    merged.brdf = glm::vec3(0.0f);
+    merged.weight = 0.0f;
+    for (int s : g.cells) {
+      merged.brdf += samples[s].brdf;
+      merged.weight += samples[s].weight;
     }
-    cx /= static_cast<double>(g.size()), cy /= static_cast<double>(g.size());
-    int nearest = g.front();
-    double best = INFINITY;
-    glm::vec3 brdf(0.0f);
-    float weight = 0.0f;
-    for (int s : g) {
-      const double d = (s % n - cx) * (s % n - cx) + (s / n - cy) * (s / n - cy);
-      if (d < best) best = d, nearest = s;
-      brdf += samples[s].brdf;
-      weight += samples[s].weight;
-    }
-    PixelSurface merged = samples[nearest];
-    merged.brdf = brdf;
-    merged.weight = weight;
-    const float columns = static_cast<float>(x1 - x0 + 1), rows = static_cast<float>(y1 - y0 + 1);
-    const float fill = std::sqrt(static_cast<float>(g.size()) / (columns * rows));
-    merged.dxdu *= columns * fill;
-    merged.dxdv *= rows * fill;
+    merged.dxdu *= g.stretch.x;
+    merged.dxdv *= g.stretch.y;
     out.push_back(merged);
   }
 }

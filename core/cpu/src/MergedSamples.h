@@ -4,7 +4,7 @@
 // indirect light varies slowly across a surface (it is the direct light that
 // has the sharp shadows, and it keeps every sample); what the samples of an
 // edge pixel are for is which surfaces the pixel sees and how much of it each
-// covers. So, as the RSM's sub-texels (ir::mergeSubTexelVpls), the samples on
+// covers. So, as the RSM's sub-texels (ir::flatSurfaceGroups), the samples on
 // one flat surface (ir::onFlatSurface with the group's first) become one:
 // at the member nearest their centroid, with their summed weight and
 // albedo / pi, its footprint steps their bounding box shrunk to their area.

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "tofsim/ir/FlatSurfaceGroups.h"
 #include "tofsim/ir/SampledPixels.h"
 #include "tofsim/util/Error.h"
 
@@ -50,53 +51,20 @@ std::vector<uint8_t> rsmEdgeTexels(const TexelVpls& texels, int resolution) {
 
 std::vector<Vpl> mergeSubTexelVpls(const std::vector<std::optional<Vpl>>& subTexels, int n) {
   TOFSIM_CHECK_EQ(subTexels.size(), static_cast<std::size_t>(n) * n);
-  // Groups of sub-texels on one flat surface, each tested against its first
-  // member: scan order decides, so both backends group alike.
-  std::vector<std::vector<int>> groups;
-  for (int s = 0; s < n * n; ++s) {
-    if (!subTexels[s]) continue;
-    const Vpl& v = *subTexels[s];
-    auto group = std::find_if(groups.begin(), groups.end(), [&](const std::vector<int>& g) {
-      const Vpl& first = *subTexels[g.front()];
-      return onFlatSurface(glm::vec3(first.positionPath), glm::vec3(first.normal),
-                           glm::vec3(v.positionPath), glm::vec3(v.normal));
-    });
-    if (group == groups.end()) {
-      groups.push_back({s});
-    } else {
-      group->push_back(s);
+  std::vector<std::optional<CellSurface>> cells(subTexels.size());
+  for (std::size_t s = 0; s < subTexels.size(); ++s) {
+    if (subTexels[s]) {
+      cells[s] = CellSurface{glm::vec3(subTexels[s]->positionPath), glm::vec3(subTexels[s]->normal)};
     }
   }
   std::vector<Vpl> vpls;
-  for (const std::vector<int>& g : groups) {
-    double cx = 0.0, cy = 0.0;
-    int x0 = n, x1 = 0, y0 = n, y1 = 0;  // the group's bounding box, in sub-texels
-    for (int s : g) {
-      cx += s % n, cy += s / n;
-      x0 = std::min(x0, s % n), x1 = std::max(x1, s % n);
-      y0 = std::min(y0, s / n), y1 = std::max(y1, s / n);
-    }
-    cx /= static_cast<double>(g.size()), cy /= static_cast<double>(g.size());
-    // The member nearest the centroid (the first of equals): a point of the
-    // surface, where the merged VPL sits and its light leaves.
-    int nearest = g.front();
-    double best = INFINITY;
+  for (const FlatSurfaceGroup& g : flatSurfaceGroups(cells, n)) {
     glm::vec4 flux(0.0f);
-    for (int s : g) {
-      const double d = (s % n - cx) * (s % n - cx) + (s / n - cy) * (s / n - cy);
-      if (d < best) best = d, nearest = s;
-      flux += subTexels[s]->flux;
-    }
-    Vpl vpl = *subTexels[nearest];
+    for (int s : g.cells) flux += subTexels[s]->flux;
+    Vpl vpl = *subTexels[g.nearest];
     vpl.flux = flux;
-    // The patch of the |g| sub-texels: the nearest one's, stretched to the
-    // group's bounding box and shrunk to its area, so that a strip along a
-    // crease keeps its width instead of reaching through the other surface
-    // as a square of its area would.
-    const float columns = static_cast<float>(x1 - x0 + 1), rows = static_cast<float>(y1 - y0 + 1);
-    const float fill = std::sqrt(static_cast<float>(g.size()) / (columns * rows));
-    vpl.patchU *= columns * fill;
-    vpl.patchV *= rows * fill;
+    vpl.patchU *= g.stretch.x;  // the patch of the group's sub-texels
+    vpl.patchV *= g.stretch.y;
     vpls.push_back(vpl);
   }
   return vpls;
