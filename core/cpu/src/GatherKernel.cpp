@@ -124,37 +124,43 @@ __attribute__((target_clones("avx2", "default"))) void vplTerms(const PixelSurfa
                                                                 const VplArrays& v,
                                                                 std::size_t first, std::size_t n,
                                                                 const GatherConstants& c,
-                                                                VplTerms& terms) {
-  const float* px = v.px.data() + first;
-  const float* py = v.py.data() + first;
-  const float* pz = v.pz.data() + first;
-  const float* path = v.path.data() + first;
-  const float* nx = v.nx.data() + first;
-  const float* ny = v.ny.data() + first;
-  const float* nz = v.nz.data() + first;
-  const float* fr = v.fr.data() + first;
-  const float* fg = v.fg.data() + first;
-  const float* fb = v.fb.data() + first;
-  const float* nearLimit = v.nearLimit.data() + first;
+                                                                VplTerms& __restrict terms) {
+  const float* __restrict px = v.px.data() + first;
+  const float* __restrict py = v.py.data() + first;
+  const float* __restrict pz = v.pz.data() + first;
+  const float* __restrict path = v.path.data() + first;
+  const float* __restrict nx = v.nx.data() + first;
+  const float* __restrict ny = v.ny.data() + first;
+  const float* __restrict nz = v.nz.data() + first;
+  const float* __restrict fr = v.fr.data() + first;
+  const float* __restrict fg = v.fg.data() + first;
+  const float* __restrict fb = v.fb.data() + first;
+  const float* __restrict nearLimit = v.nearLimit.data() + first;
+  // __restrict and locals: with a run-time alias check per pointer the
+  // vectoriser passes its limit of ten and leaves the loop scalar (it did so
+  // from the near field on, b100e61).
+  const glm::vec3 x = s.x, normal = s.n, brdf = s.brdf;
+  const float cameraPath = s.cameraPath_m, eta = c.indexOfRefraction, clamp = c.geometryClamp;
+  const float start = c.start_m, width = c.binWidth_m;
+  const float offAxis_m = start - 2.0f * width;  // a finite path for dark lanes
   int32_t anyNear = 0;
-  const float offAxis_m = c.start_m - 2.0f * c.binWidth_m;  // a finite path for dark lanes
   for (std::size_t i = 0; i < n; ++i) {
     // The same steps as indirect_gather.comp, lane by lane.
-    const float tx = s.x.x - px[i], ty = s.x.y - py[i], tz = s.x.z - pz[i];
+    const float tx = x.x - px[i], ty = x.y - py[i], tz = x.z - pz[i];
     const float dist2 = tx * tx + ty * ty + tz * tz;
     const float dist = std::sqrt(dist2);
     const float dx = tx / dist, dy = ty / dist, dz = tz / dist;
     const float cosVpl = nx[i] * dx + ny[i] * dy + nz[i] * dz;
-    const float cosX = -(s.n.x * dx + s.n.y * dy + s.n.z * dz);
+    const float cosX = -(normal.x * dx + normal.y * dy + normal.z * dz);
     // & rather than &&: no branch, so the loop vectorises.
     const bool lit = (dist2 > 0.0f) & (cosVpl > 0.0f) & (cosX > 0.0f);
-    const float g = physics::geometryTerm(cosVpl, cosX, dist2, c.geometryClamp);
-    const float path_m = physics::vplPathLength(path[i], c.indexOfRefraction, dist, s.cameraPath_m);
-    const int bin = physics::binOfPath(lit ? path_m : offAxis_m, c.start_m, c.binWidth_m);
+    const float g = physics::geometryTerm(cosVpl, cosX, dist2, clamp);
+    const float path_m = physics::vplPathLength(path[i], eta, dist, cameraPath);
+    const int bin = physics::binOfPath(lit ? path_m : offAxis_m, start, width);
     terms.bin[i] = lit ? bin : kNoLight;
-    terms.r[i] = s.brdf.r * fr[i] * g;
-    terms.g[i] = s.brdf.g * fg[i] * g;
-    terms.b[i] = s.brdf.b * fb[i] * g;
+    terms.r[i] = brdf.r * fr[i] * g;
+    terms.g[i] = brdf.g * fg[i] * g;
+    terms.b[i] = brdf.b * fb[i] * g;
     terms.dx[i] = dx, terms.dy[i] = dy, terms.dz[i] = dz, terms.dist[i] = dist;
     const int32_t near = physics::vplInNearField(dist2, nearLimit[i]);
     terms.nearField[i] = near;
