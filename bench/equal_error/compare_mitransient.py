@@ -11,13 +11,15 @@ runs. tofsim's time is its process wall (the whole run) and stats.seconds.
 
     python3 -m venv ~/mt && ~/mt/bin/pip install mitransient numpy
     DRJIT_LIBLLVM_PATH=/usr/lib/x86_64-linux-gnu/libLLVM.so.19.1 \\
-      ~/mt/bin/python bench/equal_error/compare_mitransient.py [--edges] [SIDE=64] [TRUTH_SPP=65536] [OUT]
+      ~/mt/bin/python bench/equal_error/compare_mitransient.py [--edges|--footprint|--merged] [--reference] [SIDE=64] [TRUTH_SPP=65536] [OUT]
 
 --edges: instead of the issue's rows, ISM at RSM 64^2 with 1, 2x2, 4x4, 8x8
 samples at G-buffer edges and the default clamp: where the error is.
 --footprint: ISM at RSM 64^2 and 128^2 and exact at 128^2, each with the
 footprints (the default), without the VPL's patch footprint, and with point
 pixels (no footprint at all): what the footprint deposit costs and buys.
+--merged: ISM at RSM 32, 48, 64^2 with 2x2..4x4 samples at edges, merged
+(render.indirect.merge_pixel_samples): the best rows over all pixels.
 --reference: the ladder is tofsim's own reference path tracer (the CLI,
 `renderer: reference`, box pixel filter, 2 interactions, the spot light),
 its process wall at 64 .. 4096 paths per pixel, instead of mitransient's;
@@ -63,6 +65,14 @@ FOOTPRINT_VARIANTS = [
     for vis, rsm in (("ism", 64), ("ism", 128), ("exact", 128))
     for what, sets in (("footprint", []), ("no VPL footprint", ["render.indirect.vpl_footprint=false"]),
                        ("point pixels", ["render.pixel_footprint=false"]))]
+# --merged: the best all-pixel rows, ISM with merged pixel samples
+# (render.indirect.merge_pixel_samples) at edges.
+MERGED_VARIANTS = [
+    (f"ISM, RSM {rsm}^2, {n}x{n} at edges, merged",
+     [f"render.indirect.rsm_resolution={rsm}", "render.indirect.visibility=ism",
+      f"render.pixel_samples={n}", "render.adaptive_pixel_samples=true",
+      "render.indirect.merge_pixel_samples=true"])
+    for rsm, n in ((32, 3), (32, 4), (48, 3), (48, 4), (64, 2), (64, 3))]
 COMMON = ["output.video=false", "sensors=[]", "output.components=[]", "light.cone_angle=30 deg",
           "light.cone_falloff=0 deg", "time.start=1.5 m", "time.bin_width=20 ps", f"time.bins={BINS}",
           "render.indirect.geometry_clamp=0"]  # the protocol's clamp 0 (EDGE_VARIANTS set their own)
@@ -186,7 +196,8 @@ def main():
     against_reference = "--reference" in sys.argv
     if against_reference:
         sys.argv.remove("--reference")
-    for flag, rows in (("--edges", EDGE_VARIANTS), ("--footprint", FOOTPRINT_VARIANTS)):
+    for flag, rows in (("--edges", EDGE_VARIANTS), ("--footprint", FOOTPRINT_VARIANTS),
+                       ("--merged", MERGED_VARIANTS)):
         if flag in sys.argv:
             sys.argv.remove(flag)
             variants = rows

@@ -1,9 +1,13 @@
 #include "tofsim/util/AtomicFile.h"
 
+#include <fcntl.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
+#include <cstdlib>
 #include <cstring>
+#include <new>
 #include <string>
 #include <utility>
 
@@ -12,14 +16,25 @@
 namespace tofsim {
 
 namespace {
+
 std::string errnoText() { return std::strerror(errno); }
+
+// O_DIRECT's alignment of buffers, offsets and lengths: the page size covers
+// every logical block size Linux file systems use.
+constexpr std::size_t kAlign = 4096;
+constexpr std::size_t kFirstStaging = std::size_t{64} << 10;  // small files stay small
+
+static_assert(AtomicFile::kDirectFrom % kAlign == 0);
+
 }  // namespace
+
+void AtomicFile::FreeStaging::operator()(char* p) const noexcept { std::free(p); }
 
 AtomicFile::AtomicFile(std::filesystem::path finalPath) : finalPath_(std::move(finalPath)) {
   tempPath_ = finalPath_;
   tempPath_ += ".tmp-" + std::to_string(::getpid());
-  file_ = std::fopen(tempPath_.c_str(), "wb");
-  if (!file_) {
+  fd_ = ::open(tempPath_.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
+  if (fd_ < 0) {
     throw InputError(FileLoc{finalPath_.string()}, "", "cannot open for writing: " + errnoText());
   }
 }
@@ -29,46 +44,122 @@ AtomicFile::~AtomicFile() { discard(); }
 AtomicFile::AtomicFile(AtomicFile&& other) noexcept
     : finalPath_(std::move(other.finalPath_)),
       tempPath_(std::move(other.tempPath_)),
-      file_(std::exchange(other.file_, nullptr)) {}
+      fd_(std::exchange(other.fd_, -1)),
+      staging_(std::move(other.staging_)),
+      capacity_(std::exchange(other.capacity_, 0)),
+      staged_(std::exchange(other.staged_, 0)),
+      written_(std::exchange(other.written_, 0)),
+      direct_(std::exchange(other.direct_, false)),
+      directTried_(std::exchange(other.directTried_, false)),
+      wroteDirect_(std::exchange(other.wroteDirect_, false)) {}
 
 AtomicFile& AtomicFile::operator=(AtomicFile&& other) noexcept {
   if (this != &other) {
     discard();
     finalPath_ = std::move(other.finalPath_);
     tempPath_ = std::move(other.tempPath_);
-    file_ = std::exchange(other.file_, nullptr);
+    fd_ = std::exchange(other.fd_, -1);
+    staging_ = std::move(other.staging_);
+    capacity_ = std::exchange(other.capacity_, 0);
+    staged_ = std::exchange(other.staged_, 0);
+    written_ = std::exchange(other.written_, 0);
+    direct_ = std::exchange(other.direct_, false);
+    directTried_ = std::exchange(other.directTried_, false);
+    wroteDirect_ = std::exchange(other.wroteDirect_, false);
   }
   return *this;
 }
 
+// Grows the staging buffer to hold `atLeast` bytes, up to kDirectFrom.
+void AtomicFile::stage(std::size_t atLeast) {
+  std::size_t capacity = std::max(capacity_, kFirstStaging);
+  while (capacity < atLeast && capacity < kDirectFrom) capacity *= 2;
+  capacity = std::min(capacity, kDirectFrom);
+  if (capacity == capacity_) return;
+  char* grown = static_cast<char*>(std::aligned_alloc(kAlign, capacity));
+  if (!grown) throw std::bad_alloc();
+  if (staged_ > 0) std::memcpy(grown, staging_.get(), staged_);
+  staging_.reset(grown);
+  capacity_ = capacity;
+}
+
 void AtomicFile::write(const void* data, std::size_t bytes) {
-  TOFSIM_CHECK_MSG(file_, "write after commit");
-  if (bytes == 0) return;
-  if (std::fwrite(data, 1, bytes, file_) != bytes) {
-    throw InputError(FileLoc{finalPath_.string()}, "", "write failed: " + errnoText());
+  TOFSIM_CHECK_MSG(fd_ >= 0, "write after commit");
+  const char* from = static_cast<const char*>(data);
+  while (bytes > 0) {
+    if (staged_ == capacity_) {
+      if (capacity_ < kDirectFrom) {
+        stage(staged_ + bytes);
+      } else {
+        flushStaged();
+      }
+    }
+    const std::size_t chunk = std::min(bytes, capacity_ - staged_);
+    std::memcpy(staging_.get() + staged_, from, chunk);
+    staged_ += chunk, from += chunk, bytes -= chunk;
   }
 }
 
-void AtomicFile::writeAt(std::size_t offset, const void* data, std::size_t bytes) {
-  TOFSIM_CHECK_MSG(file_, "write after commit");
-  const long back = std::ftell(file_);
-  if (std::fseek(file_, static_cast<long>(offset), SEEK_SET) != 0 ||
-      std::fwrite(data, 1, bytes, file_) != bytes || std::fseek(file_, back, SEEK_SET) != 0) {
-    throw InputError(FileLoc{finalPath_.string()}, "", "write failed: " + errnoText());
+// A full staging buffer (kDirectFrom bytes, at an offset that is a multiple of
+// it) to the file: direct from the first one on, where the file system lets.
+void AtomicFile::flushStaged() {
+  if (!directTried_) {
+    directTried_ = true;
+    setDirect(true);
+  }
+  writeOut(staging_.get(), staged_);
+  staged_ = 0;
+}
+
+void AtomicFile::setDirect(bool on) {
+  const int flags = ::fcntl(fd_, F_GETFL);
+  if (flags < 0) return;
+  if (::fcntl(fd_, F_SETFL, on ? (flags | O_DIRECT) : (flags & ~O_DIRECT)) == 0) {
+    direct_ = on;
+  }
+}
+
+void AtomicFile::writeOut(const char* data, std::size_t bytes) {
+  while (bytes > 0) {
+    const ssize_t n = ::pwrite(fd_, data, bytes, static_cast<off_t>(written_));
+    if (n < 0 && errno == EINTR) continue;
+    if (n < 0 && errno == EINVAL && direct_) {
+      // A file system that takes the flag but not the write (or a short
+      // direct write left the offset unaligned): buffered from here on.
+      setDirect(false);
+      if (!direct_) continue;
+    }
+    if (n <= 0) {
+      throw InputError(FileLoc{finalPath_.string()}, "",
+                       "write failed: " + (n < 0 ? errnoText() : std::string("no progress")));
+    }
+    wroteDirect_ = wroteDirect_ || direct_;
+    data += n, bytes -= static_cast<std::size_t>(n), written_ += static_cast<std::size_t>(n);
   }
 }
 
 void AtomicFile::commit() {
-  TOFSIM_CHECK_MSG(file_, "commit twice");
-  // fflush + fsync before rename: a crash after the rename must not expose a
-  // file whose data blocks never reached the disk.
-  const bool ok = std::fflush(file_) == 0 && ::fsync(::fileno(file_)) == 0;
-  const int closeResult = std::fclose(file_);
-  file_ = nullptr;
+  TOFSIM_CHECK_MSG(fd_ >= 0, "commit twice");
+  try {
+    // The tail is not a whole number of blocks: buffered.
+    if (direct_ && staged_ % kAlign != 0) setDirect(false);
+    writeOut(staging_.get(), staged_);
+    staged_ = 0;
+    staging_.reset();
+  } catch (...) {
+    discard();
+    throw;
+  }
+  // fsync before rename: a crash after the rename must not expose a file
+  // whose data blocks never reached the disk.
+  const bool ok = ::fsync(fd_) == 0;
+  const std::string why = ok ? std::string() : errnoText();
+  const int closeResult = ::close(fd_);
+  fd_ = -1;
   if (!ok || closeResult != 0) {
-    const std::string why = errnoText();
     std::filesystem::remove(tempPath_);
-    throw InputError(FileLoc{finalPath_.string()}, "", "write failed: " + why);
+    throw InputError(FileLoc{finalPath_.string()}, "",
+                     "write failed: " + (ok ? errnoText() : why));
   }
   std::error_code ec;
   std::filesystem::rename(tempPath_, finalPath_, ec);
@@ -79,9 +170,11 @@ void AtomicFile::commit() {
 }
 
 void AtomicFile::discard() noexcept {
-  if (file_) {
-    std::fclose(file_);
-    file_ = nullptr;
+  staging_.reset();
+  capacity_ = staged_ = 0;
+  if (fd_ >= 0) {
+    ::close(fd_);
+    fd_ = -1;
     std::error_code ec;
     std::filesystem::remove(tempPath_, ec);
   }
