@@ -359,8 +359,12 @@ void CpuBackend::gatherPixelBlock(const IndirectConstants& c, std::size_t first,
   const PixelSurface* surfaces =
       (merged ? mergedSurfaces_.data() : segmentSurfaces_.data()) + firstOfPixel;
   const unsigned char* lit = merged ? nullptr : segmentLit_.data() + firstOfPixel;
+  // With ISMs the maps' verdicts come with the terms, a block at a time.
+  const CpuIsm* ism = exact ? nullptr : ism_.get();
   for (std::size_t s = 0; s < perPixel; ++s) {
-    if (!lit || lit[s]) vplTerms(surfaces[s], v, first, n, c.kernel, terms[s]);
+    if (lit && !lit[s]) continue;
+    vplTerms(surfaces[s], v, first, n, c.kernel, terms[s]);
+    if (ism) ism->cullHidden(first, n, sceneScale_m_, terms[s]);
   }
   std::size_t visible = 0;  // contributions in `pairs`
   for (std::size_t k = 0; k < n; ++k) {
@@ -375,9 +379,6 @@ void CpuBackend::gatherPixelBlock(const IndirectConstants& c, std::size_t first,
         const glm::vec3 from = glm::vec3(v.px[vpl], v.py[vpl], v.pz[vpl]) +
                                glm::vec3(v.nx[vpl], v.ny[vpl], v.nz[vpl]) * eps;
         if (scene_->occluded(from, surface.x + surface.n * eps)) continue;
-      } else if (ism_ && !ism_->visible(vpl, glm::vec3(t.dx[k], t.dy[k], t.dz[k]), t.dist[k],
-                                        sceneScale_m_)) {
-        continue;
       }
       if (footprint) {
         pairs[visible++] = {static_cast<uint32_t>(s), static_cast<uint32_t>(k)};

@@ -12,7 +12,54 @@
 namespace tofsim::cpu {
 
 namespace {
+
 constexpr float kEmpty = std::numeric_limits<float>::infinity();
+
+/// cullHidden's arrays, from the batch's first VPL of the block on.
+struct CullLanes {
+  const float *tx, *ty, *tz, *bx, *by, *bz, *nx, *ny, *nz;
+  const float* maps;        ///< the block's first VPL's map
+  std::size_t mapStride;    ///< floats per VPL's maps
+  int resolution;
+  float scaleBias;          ///< 0.01 scene scale, as visible()
+};
+
+// visible()'s steps lane by lane: paraboloidTexelOf with the VPL's basis
+// read instead of built (basisAround gives the same floats either way), its
+// products and sums in the order of glm's transpose(B) * d.
+__attribute__((target_clones("avx2", "default"))) void cullLanes(const CullLanes& c,
+                                                                 std::size_t n,
+                                                                 VplTerms& __restrict terms) {
+  const float* __restrict tx = c.tx;
+  const float* __restrict ty = c.ty;
+  const float* __restrict tz = c.tz;
+  const float* __restrict bx = c.bx;
+  const float* __restrict by = c.by;
+  const float* __restrict bz = c.bz;
+  const float* __restrict nx = c.nx;
+  const float* __restrict ny = c.ny;
+  const float* __restrict nz = c.nz;
+  const float* __restrict maps = c.maps;
+  const int r = c.resolution;
+  const int stride = static_cast<int>(c.mapStride);
+  const float rf = static_cast<float>(r), perTexel = 4.0f / static_cast<float>(r);
+  const float scaleBias = c.scaleBias;
+  for (std::size_t i = 0; i < n; ++i) {
+    const float dx = terms.dx[i], dy = terms.dy[i], dz = terms.dz[i], dist = terms.dist[i];
+    const float lx = tx[i] * dx + ty[i] * dy + tz[i] * dz;
+    const float ly = bx[i] * dx + by[i] * dy + bz[i] * dz;
+    const float lz = nx[i] * dx + ny[i] * dy + nz[i] * dz;
+    const float den = 1.0f + std::max(lz, 0.0f);
+    const float u = lx / den * 0.5f + 0.5f, v = ly / den * 0.5f + 0.5f;
+    const int texelX = std::clamp(static_cast<int>(u * rf), 0, r - 1);
+    const int texelY = std::clamp(static_cast<int>(v * rf), 0, r - 1);
+    const float stored = maps[static_cast<int>(i) * stride + texelY * r + texelX];
+    const float bias = dist * perTexel + scaleBias;
+    const bool hidden = !(dist - bias <= stored);
+    terms.bin[i] = hidden ? kNoLight : terms.bin[i];
+  }
+}
+
 }  // namespace
 
 CpuIsm::CpuIsm(const scene::Scene& scene, const std::vector<ir::Vpl>& vpls,
@@ -24,6 +71,10 @@ CpuIsm::CpuIsm(const scene::Scene& scene, const std::vector<ir::Vpl>& vpls,
   for (const ir::Vpl& v : vpls) {
     vplPosition_.emplace_back(v.positionPath);
     vplNormal_.emplace_back(v.normal);
+    const glm::mat3 basis = physics::basisAround(glm::vec3(v.normal));
+    tx_.push_back(basis[0].x), ty_.push_back(basis[0].y), tz_.push_back(basis[0].z);
+    bx_.push_back(basis[1].x), by_.push_back(basis[1].y), bz_.push_back(basis[1].z);
+    nx_.push_back(basis[2].x), ny_.push_back(basis[2].y), nz_.push_back(basis[2].z);
   }
   // The level layout of IndirectLight: finest first, halving (rounded up) to 1x1.
   for (int size = settings_.ism_resolution;; size = (size + 1) / 2) {
@@ -36,7 +87,7 @@ CpuIsm::CpuIsm(const scene::Scene& scene, const std::vector<ir::Vpl>& vpls,
 
 std::size_t CpuIsm::fixedBytes() const {
   return soup_.corners.size() * sizeof(glm::vec4) + soup_.areaCdf.size() * sizeof(float) +
-         vplPosition_.size() * 2 * sizeof(glm::vec3);
+         vplPosition_.size() * (2 * sizeof(glm::vec3) + 9 * sizeof(float));
 }
 
 void CpuIsm::allocate(std::size_t vplsPerBatch) {
@@ -121,6 +172,17 @@ bool CpuIsm::visible(std::size_t vpl, const glm::vec3& d, float dist, float scen
   const float stored = map(vpl)[t.y * r + t.x];
   const float bias = dist * (4.0f / static_cast<float>(r)) + 0.01f * sceneScale_m;
   return dist - bias <= stored;
+}
+
+void CpuIsm::cullHidden(std::size_t first, std::size_t n, float sceneScale_m,
+                        VplTerms& terms) const {
+  TOFSIM_CHECK(first >= firstVpl_ && first + n <= firstVpl_ + builtCount_);
+  const CullLanes lanes{tx_.data() + first, ty_.data() + first, tz_.data() + first,
+                        bx_.data() + first, by_.data() + first, bz_.data() + first,
+                        nx_.data() + first, ny_.data() + first, nz_.data() + first,
+                        map(first),         floatsPerVpl_,      settings_.ism_resolution,
+                        0.01f * sceneScale_m};
+  cullLanes(lanes, n, terms);
 }
 
 }  // namespace tofsim::cpu
