@@ -92,6 +92,11 @@ TEST(FootprintDeposit, MatchesTheScalarDepositBitForBit) {
       t.first[lane] = physics::footprintNarrowFirstBin(kernel, kBins);
       t.count[lane] =
           physics::footprintIsNarrow(kernel) ? physics::footprintNarrowBinCount(kernel) : 0;
+      // As vplKernels fills them: the narrow kernel's shape, checked with
+      // the deposit against the scalar physics.
+      const NarrowShape shape = narrowShapeOf(kernel);
+      t.frac[lane] = shape.frac, t.last[lane] = shape.last;
+      t.perRamps[lane] = shape.perRamps, t.perWide[lane] = shape.perWide;
       pairs.push_back({s, lane});
       physics::depositContribution(expectedHistogram.data(), expectedDiff.data(), kBins, kernel,
                                    all[k].energy, expectedLost);

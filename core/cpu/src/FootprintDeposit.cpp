@@ -23,13 +23,14 @@ struct Contribution {
   glm::vec3 energy;
   int32_t first;
   int32_t count;  ///< 0: a wide kernel
+  NarrowShape shape;
 };
 
 inline Contribution contributionOf(const VplTerms* terms, BlockPair p) {
   const VplTerms& t = terms[p.sample];
   const uint32_t k = p.lane;
   return {glm::vec3(t.centre[k], t.wide[k], t.narrow[k]), glm::vec3(t.r[k], t.g[k], t.b[k]),
-          t.first[k], t.count[k]};
+          t.first[k], t.count[k], {t.frac[k], t.last[k], t.perRamps[k], t.perWide[k]}};
 }
 
 void depositFootprintsScalar(const VplTerms* terms, const BlockPair* pairs, std::size_t count,
@@ -105,18 +106,17 @@ inline void addBins8(float* out, __m256 m, int32_t rem, __m256 e0, __m256 e1, __
 // physics::depositNarrow's masses (each edge's CDF once, mass = upper -
 // lower) and deposit, eight bins per instruction.
 inline void depositNarrowAvx2(float* histogram, int32_t bins, const glm::vec3& kernel,
-                              int32_t first, int32_t count, const glm::vec3& energy,
-                              physics::OffAxisSums& lost) {
-  const glm::vec2 e = physics::footprintLocalExtent(kernel);
+                              const NarrowShape& shape, int32_t first, int32_t count,
+                              const glm::vec3& energy, physics::OffAxisSums& lost) {
   const float wide = kernel.y, narrow = kernel.z;
   NarrowConstants k;
-  k.frac = _mm256_set1_ps(e.x - std::floor(e.x));
-  k.last = _mm256_set1_ps(std::floor(e.y) - std::floor(e.x));
+  k.frac = _mm256_set1_ps(shape.frac);
+  k.last = _mm256_set1_ps(shape.last);
   k.narrow = _mm256_set1_ps(narrow);
   k.wide = _mm256_set1_ps(wide);
   k.total = _mm256_set1_ps(wide + narrow);
-  k.perRamps = _mm256_set1_ps(1.0f / (2.0f * wide * narrow));
-  k.perWide = _mm256_set1_ps(1.0f / wide);
+  k.perRamps = _mm256_set1_ps(shape.perRamps);
+  k.perWide = _mm256_set1_ps(shape.perWide);
   k.halfNarrow = _mm256_set1_ps(0.5f * narrow);
   // Each bin's lower edge is the previous bin's upper one (0 below the first).
   const __m256i previous = _mm256_setr_epi32(7, 0, 1, 2, 3, 4, 5, 6);
@@ -293,14 +293,14 @@ void depositFootprintsAvx2(const VplTerms* terms, const BlockPair* pairs, std::s
         widenToWideKernel(c.kernel, bins, first, last);
       }
     } else {
-      depositNarrowAvx2(histogram, bins, c.kernel, c.first, c.count, c.energy, lost);
+      depositNarrowAvx2(histogram, bins, c.kernel, c.shape, c.first, c.count, c.energy, lost);
     }
   }
 }
 
 void depositNarrowKernelAvx2(float* histogram, int32_t bins, const glm::vec3& kernel, int32_t first,
                              int32_t count, const glm::vec3& energy, physics::OffAxisSums& lost) {
-  depositNarrowAvx2(histogram, bins, kernel, first, count, energy, lost);
+  depositNarrowAvx2(histogram, bins, kernel, narrowShapeOf(kernel), first, count, energy, lost);
 }
 
 #pragma GCC pop_options

@@ -56,6 +56,9 @@ __attribute__((target_clones("avx2", "default"))) void vplKernels(const PixelSur
     const glm::vec3 kernel =
         physics::footprintKernel(path_m, glm::vec4(pixel, patch), start, width);
     terms.centre[i] = kernel.x, terms.wide[i] = kernel.y, terms.narrow[i] = kernel.z;
+    const NarrowShape shape = narrowShapeOf(kernel);
+    terms.frac[i] = shape.frac, terms.last[i] = shape.last;
+    terms.perRamps[i] = shape.perRamps, terms.perWide[i] = shape.perWide;
     const bool narrow = physics::footprintIsNarrow(kernel);
     terms.first[i] = physics::footprintNarrowFirstBin(kernel, bins);
     terms.count[i] = narrow ? physics::footprintNarrowBinCount(kernel) : 0;

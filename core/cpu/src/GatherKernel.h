@@ -9,6 +9,7 @@
 // conflicts, which SIMD cannot do faster.
 
 #include <climits>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <glm/glm.hpp>
@@ -70,7 +71,29 @@ struct VplTerms {
   /// Whether the pixel lies in the VPL's near field (physics::vplInNearField),
   /// where its geometry term is the patch's integral.
   alignas(64) int32_t nearField[kVplBlock];
+  /// With the footprint, each lane's NarrowShape (a narrow kernel's values
+  /// for its deposit), computed eight lanes per instruction with the kernel.
+  alignas(64) float frac[kVplBlock], last[kVplBlock], perRamps[kVplBlock], perWide[kVplBlock];
 };
+
+/// What a narrow footprint kernel's bin masses need besides the kernel
+/// (footprintNarrowEdgeCdf's and footprintNarrowCdf's values, with the same
+/// float operations): the first kink's position in its bin, the last edge
+/// below 1, and the two reciprocals. Per lane in vplKernels' vector pass, so
+/// the deposit's scalar part has no division left.
+struct NarrowShape {
+  float frac, last, perRamps, perWide;
+};
+
+inline NarrowShape narrowShapeOf(const glm::vec3& kernel) {
+  const float wide = kernel.y, narrow = kernel.z;
+  // footprintLocalExtent: the support around the centre's offset in its bin.
+  const float halfWidth = 0.5f * (wide + narrow);
+  const float local = kernel.x - std::floor(kernel.x);
+  const float lo = local - halfWidth, hi = local + halfWidth;
+  return {lo - std::floor(lo), std::floor(hi) - std::floor(lo), 1.0f / (2.0f * wide * narrow),
+          1.0f / wide};
+}
 
 /// Fills terms[0, n) for VPLs [first, first + n), n <= kVplBlock; with
 /// c.gltf the radiance carries the glTF BRDF at both ends (gltfVplRadiance).
