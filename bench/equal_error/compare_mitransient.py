@@ -11,14 +11,20 @@ runs. tofsim's time is its process wall (the whole run) and stats.seconds.
 
     python3 -m venv ~/mt && ~/mt/bin/pip install mitransient numpy
     DRJIT_LIBLLVM_PATH=/usr/lib/x86_64-linux-gnu/libLLVM.so.19.1 \\
-      ~/mt/bin/python bench/equal_error/compare_mitransient.py [--edges|--footprint|--merged] [--reference] [SIDE=64] [TRUTH_SPP=65536] [OUT]
+      ~/mt/bin/python bench/equal_error/compare_mitransient.py [--edges|--footprint|--merged] [--reference] [--repeat N] [SIDE=64] [TRUTH_SPP=65536] [OUT]
 
 --edges: instead of the issue's rows, ISM at RSM 64^2 with 1, 2x2, 4x4, 8x8
 samples at G-buffer edges and the default clamp: where the error is.
 --footprint: ISM at RSM 64^2 and 128^2 and exact at 128^2, each with the
 footprints (the default), without the VPL's patch footprint, and with point
 pixels (no footprint at all): what the footprint deposit costs and buys.
---merged: ISM at RSM 32, 48, 64^2 with 2x2..4x4 samples at edges, merged
+--repeat N: each IR row and each ladder rung run N times, the fastest run's
+seconds kept. Every run starts after an os.sync(), so that no run pays for
+an earlier one's writeback (mitransient's np.save leaves 292 MB of dirty
+pages at 256^2). On a virtual machine whose host takes back free pages a process's first touch of
+memory costs 0.1-4 s more or less from run to run, both programs alike
+(bench/README.md, "Writing volumes").
+--merged: ISM at RSM 32..96^2 with 2x2..4x4 samples at edges, merged
 (render.indirect.merge_pixel_samples): the best rows over all pixels.
 --reference: the ladder is tofsim's own reference path tracer (the CLI,
 `renderer: reference`, box pixel filter, 2 interactions, the spot light),
@@ -72,7 +78,7 @@ MERGED_VARIANTS = [
      [f"render.indirect.rsm_resolution={rsm}", "render.indirect.visibility=ism",
       f"render.pixel_samples={n}", "render.adaptive_pixel_samples=true",
       "render.indirect.merge_pixel_samples=true"])
-    for rsm, n in ((32, 3), (32, 4), (48, 3), (48, 4), (64, 2), (64, 3))]
+    for rsm, n in ((32, 3), (32, 4), (48, 3), (48, 4), (64, 2), (64, 3), (64, 4), (80, 3), (96, 3))]
 COMMON = ["output.video=false", "sensors=[]", "output.components=[]", "light.cone_angle=30 deg",
           "light.cone_falloff=0 deg", "time.start=1.5 m", "time.bin_width=20 ps", f"time.bins={BINS}",
           "render.indirect.geometry_clamp=0"]  # the protocol's clamp 0 (EDGE_VARIANTS set their own)
@@ -143,11 +149,18 @@ def interior(ids):
     return ok
 
 
+REPEAT = 1  # --repeat: runs per row and rung, the fastest kept
+
+
 def mitransient(spp, side, out):
     env = dict(os.environ)
-    r = subprocess.run([sys.executable, MT, str(spp), "3", out, str(side), str(BINS)], env=env,
-                       check=True, capture_output=True, text=True)
-    return json.loads(r.stdout.strip().splitlines()[-1])["seconds"]
+    best = math.inf
+    for _ in range(REPEAT):
+        os.sync()
+        r = subprocess.run([sys.executable, MT, str(spp), "3", out, str(side), str(BINS)], env=env,
+                           check=True, capture_output=True, text=True)
+        best = min(best, json.loads(r.stdout.strip().splitlines()[-1])["seconds"])
+    return best
 
 
 def tofsim(side, sets, out):
@@ -155,12 +168,15 @@ def tofsim(side, sets, out):
             "-q", "-o", out, "--set", f"camera.resolution=[{side}, {side}]"]
     for s in COMMON + sets:
         args += ["--set", s]
-    start = time.time()
-    subprocess.run(args, check=True)
-    wall = time.time() - start
-    stats = json.load(open(os.path.join(out, "transient.json")))["stats"]
+    wall = render = math.inf
+    for _ in range(REPEAT):
+        os.sync()
+        start = time.time()
+        subprocess.run(args, check=True)
+        wall = min(wall, time.time() - start)
+        render = min(render, json.load(open(os.path.join(out, "transient.json")))["stats"]["seconds"])
     return np.load(os.path.join(out, "transient.npy")), np.load(os.path.join(out, "depth.npy")), \
-        wall, stats["seconds"]
+        wall, render
 
 
 def tofsim_reference(spp, side, out):
@@ -192,7 +208,12 @@ def seconds_to(error, ladder):
 
 
 def main():
+    global REPEAT
     variants = VARIANTS
+    if "--repeat" in sys.argv:
+        at = sys.argv.index("--repeat")
+        REPEAT = int(sys.argv[at + 1])
+        del sys.argv[at:at + 2]
     against_reference = "--reference" in sys.argv
     if against_reference:
         sys.argv.remove("--reference")
@@ -228,7 +249,8 @@ def main():
         ladder_all.append((s, rel_l1(v, truth, everywhere)))
         print(f"{ladder_name} {spp} spp: {s:.2f} s, L1 interior {ladder_in[-1][1]:.2%} / all {ladder_all[-1][1]:.2%}")
         spp *= 4
-    print(f"\n{side}x{side}, truth mitransient {truth_spp} spp, {inside[:, :, 0].sum()} interior pixels of {side * side}")
+    print(f"\n{side}x{side}, truth mitransient {truth_spp} spp, {inside[:, :, 0].sum()} interior pixels of {side * side}"
+          f", fastest of {REPEAT} run(s) each")
     print("| tofsim IR (CPU backend, clamp 0) | process s / render s | transient L1 interior / all | "
           f"{ladder_name} s to the same error, interior / all | speed-up (process) interior / all | "
           "edges' share of the error | L1 by pixel class: interior / silhouette / crease |")
