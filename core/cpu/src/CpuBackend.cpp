@@ -342,11 +342,8 @@ void CpuBackend::gatherTile(std::size_t tile, std::size_t firstVpl, std::size_t 
 
 void CpuBackend::gatherPixelBlock(const IndirectConstants& c, std::size_t first, std::size_t n,
                                   std::size_t i, VplTerms* terms, BlockPair* pairs) {
-  // Locals, not reads through `c`, in the loop: the histogram's float stores
-  // could otherwise alias them.
   const int bins = c.kernel.bins;
   const bool exact = c.exact, footprint = c.kernel.footprint;
-  const float eps = c.eps;
   const VplArrays& v = *vpls_;
   float* histogram = &indirect_[i * bins * kChannels];
   physics::OffAxisSums& lost = outside_[i];
@@ -367,6 +364,43 @@ void CpuBackend::gatherPixelBlock(const IndirectConstants& c, std::size_t first,
     if (ism) ism->cullHidden(first, n, sceneScale_m_, terms[s]);
   }
   std::size_t visible = 0;  // contributions in `pairs`
+  if (footprint && !exact && perPixel == 1) {
+    // One sample (most pixels): the lit lanes in order, without a branch per
+    // lane (each lane is written, the count moves past the lit ones).
+    if (!lit || lit[0]) {
+      const int32_t* bin = terms[0].bin;
+      for (std::size_t k = 0; k < n; ++k) {
+        pairs[visible] = {0u, static_cast<uint32_t>(k)};
+        visible += bin[k] != kNoLight;
+      }
+    }
+  } else {
+    visiblePairs(c, first, n, perPixel, surfaces, lit, terms, pairs, histogram, lost, visible);
+  }
+  // The visible contributions through their footprint kernels, in the order
+  // above: narrow ones into the histogram, wide ones into the pixel's
+  // difference buffer.
+  if (visible > 0) {
+    const std::size_t stride = static_cast<std::size_t>(bins) * kChannels;
+    depositFootprints(terms, pairs, visible, bins, histogram, footprint_.data() + i * stride, lost,
+                      footprintBins_[i].first, footprintBins_[i].last);
+  }
+}
+
+// gatherPixelBlock's general case: VPL by VPL and, for each, sample by
+// sample, the exact visibility rays' verdicts; with the footprint the
+// visible pairs into `pairs`, without it each term into its bin.
+void CpuBackend::visiblePairs(const IndirectConstants& c, std::size_t first, std::size_t n,
+                              std::size_t perPixel, const PixelSurface* surfaces,
+                              const unsigned char* lit, const VplTerms* terms, BlockPair* pairs,
+                              float* histogram, physics::OffAxisSums& lost,
+                              std::size_t& visible) const {
+  // Locals, not reads through `c`, in the loop: the histogram's float stores
+  // could otherwise alias them.
+  const int bins = c.kernel.bins;
+  const bool exact = c.exact, footprint = c.kernel.footprint;
+  const float eps = c.eps;
+  const VplArrays& v = *vpls_;
   for (std::size_t k = 0; k < n; ++k) {
     for (std::size_t s = 0; s < perPixel; ++s) {
       if (lit && !lit[s]) continue;
@@ -386,14 +420,6 @@ void CpuBackend::gatherPixelBlock(const IndirectConstants& c, std::size_t first,
       }
       physics::depositInBin(histogram, bins, bin, 1.0f, glm::vec3(t.r[k], t.g[k], t.b[k]), lost);
     }
-  }
-  // The visible contributions through their footprint kernels, in the order
-  // above: narrow ones into the histogram, wide ones into the pixel's
-  // difference buffer.
-  if (visible > 0) {
-    const std::size_t stride = static_cast<std::size_t>(bins) * kChannels;
-    depositFootprints(terms, pairs, visible, bins, histogram, footprint_.data() + i * stride, lost,
-                      footprintBins_[i].first, footprintBins_[i].last);
   }
 }
 
