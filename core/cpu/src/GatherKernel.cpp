@@ -98,22 +98,65 @@ float dist2Of(const PixelSurface& s, const VplArrays& v, std::size_t k) {
   return tx * tx + ty * ty + tz * tz;
 }
 
+// The near-field lanes lanes[0, m) (indices in the block) whose patch lies
+// wholly above the pixel's horizon: g = the patch's projected solid angle
+// over its area (vplGeometryTerm's near field, by the same shared steps),
+// eight lanes per instruction with AVX2; clipped[j] marks the others, whose
+// g the caller takes from vplGeometryTerm itself.
+__attribute__((target_clones("avx2", "default"))) void unclippedNearField(
+    const PixelSurface& s, const VplArrays& v, std::size_t first, const int32_t* __restrict lanes,
+    std::size_t m, float* __restrict g, int32_t* __restrict clipped) {
+  const float* __restrict px = v.px.data() + first;
+  const float* __restrict py = v.py.data() + first;
+  const float* __restrict pz = v.pz.data() + first;
+  const float* __restrict ux = v.ux.data() + first;
+  const float* __restrict uy = v.uy.data() + first;
+  const float* __restrict uz = v.uz.data() + first;
+  const float* __restrict vx = v.vx.data() + first;
+  const float* __restrict vy = v.vy.data() + first;
+  const float* __restrict vz = v.vz.data() + first;
+  const glm::vec3 x = s.x, n = s.n;
+  for (std::size_t j = 0; j < m; ++j) {
+    const int32_t i = lanes[j];
+    const glm::vec3 patchU(ux[i], uy[i], uz[i]), patchV(vx[i], vy[i], vz[i]);
+    const physics::PatchCorners q =
+        physics::patchCornersFrom(x, glm::vec3(px[i], py[i], pz[i]), patchU, patchV);
+    clipped[j] = !physics::patchAboveHorizon(q, n);
+    g[j] = 0.5f * glm::abs(physics::unclippedEdgeSum(q, n)) /
+           glm::length(glm::cross(patchU, patchV));
+  }
+}
+
 // The lanes in a VPL's near field, which vplTerms gave the point VPL's term:
 // the patch's integral instead (vplGeometryTerm), as indirect_gather.comp
-// computes it for every pair. Few lanes, so a scalar pass.
+// computes it for every pair. The lit ones' indices first; their patches
+// above the horizon (most) eight at a time, the clipped ones one by one.
 void nearFieldRadiance(const PixelSurface& s, const VplArrays& v, std::size_t first, std::size_t n,
                        const GatherConstants& c, VplTerms& terms) {
+  alignas(64) int32_t lanes[kVplBlock];
+  std::size_t m = 0;
   for (std::size_t i = 0; i < n; ++i) {
-    if (terms.bin[i] == kNoLight || !terms.nearField[i]) continue;
-    const std::size_t k = first + i;
-    const glm::vec3 d(terms.dx[i], terms.dy[i], terms.dz[i]);
-    const float g = physics::vplGeometryTerm(
-        v.nx[k] * d.x + v.ny[k] * d.y + v.nz[k] * d.z, -(s.n.x * d.x + s.n.y * d.y + s.n.z * d.z),
-        dist2Of(s, v, k), c.geometryClamp, s.x, s.n, glm::vec3(v.px[k], v.py[k], v.pz[k]),
-        glm::vec3(v.ux[k], v.uy[k], v.uz[k]), glm::vec3(v.vx[k], v.vy[k], v.vz[k]));
-    terms.r[i] = s.brdf.r * v.fr[k] * g;
-    terms.g[i] = s.brdf.g * v.fg[k] * g;
-    terms.b[i] = s.brdf.b * v.fb[k] * g;
+    lanes[m] = static_cast<int32_t>(i);
+    m += (terms.bin[i] != kNoLight) & (terms.nearField[i] != 0);
+  }
+  if (m == 0) return;
+  alignas(64) float g[kVplBlock];
+  alignas(64) int32_t clipped[kVplBlock];
+  unclippedNearField(s, v, first, lanes, m, g, clipped);
+  for (std::size_t j = 0; j < m; ++j) {
+    const std::size_t i = static_cast<std::size_t>(lanes[j]), k = first + i;
+    float gi = g[j];
+    if (clipped[j]) {
+      const glm::vec3 d(terms.dx[i], terms.dy[i], terms.dz[i]);
+      gi = physics::vplGeometryTerm(
+          v.nx[k] * d.x + v.ny[k] * d.y + v.nz[k] * d.z,
+          -(s.n.x * d.x + s.n.y * d.y + s.n.z * d.z), dist2Of(s, v, k), c.geometryClamp, s.x, s.n,
+          glm::vec3(v.px[k], v.py[k], v.pz[k]), glm::vec3(v.ux[k], v.uy[k], v.uz[k]),
+          glm::vec3(v.vx[k], v.vy[k], v.vz[k]));
+    }
+    terms.r[i] = s.brdf.r * v.fr[k] * gi;
+    terms.g[i] = s.brdf.g * v.fg[k] * gi;
+    terms.b[i] = s.brdf.b * v.fb[k] * gi;
   }
 }
 
