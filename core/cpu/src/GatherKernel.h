@@ -15,6 +15,7 @@
 #include <glm/glm.hpp>
 
 #include "VplArrays.h"
+#include "tofsim/physics/FootprintKernel.h"
 
 namespace tofsim::cpu {
 
@@ -87,11 +88,8 @@ struct NarrowShape {
 
 inline NarrowShape narrowShapeOf(const glm::vec3& kernel) {
   const float wide = kernel.y, narrow = kernel.z;
-  // footprintLocalExtent: the support around the centre's offset in its bin.
-  const float halfWidth = 0.5f * (wide + narrow);
-  const float local = kernel.x - std::floor(kernel.x);
-  const float lo = local - halfWidth, hi = local + halfWidth;
-  return {lo - std::floor(lo), std::floor(hi) - std::floor(lo), 1.0f / (2.0f * wide * narrow),
+  const glm::vec2 e = physics::footprintLocalExtent(kernel);
+  return {e.x - std::floor(e.x), std::floor(e.y) - std::floor(e.x), 1.0f / (2.0f * wide * narrow),
           1.0f / wide};
 }
 
