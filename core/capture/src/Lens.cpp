@@ -107,37 +107,23 @@ void checkLensInvertible(const Lens& lens, int32_t width, int32_t height) {
   // fuzz_camera_files), and for the border pixels and an 8 x 8 grid the
   // Jacobian along the ideal segment from the centre out to the ray: a fold
   // anywhere inside lies on one such segment when the distortion is close
-  // to radial.
+  // to radial. One pass, row by row.
   constexpr int kSteps = 32;
-  const auto rayOf = [&](int32_t x, int32_t y) {
-    glm::dvec2 ideal;
-    if (!undistortNormalised(lens, pixelToNormalised(lens, {double(x), double(y)}), ideal)) {
-      fail(x, y, "no ray has this distorted position");
-    }
-    return ideal;
-  };
   for (int32_t y = 0; y < height; ++y) {
-    for (int32_t x = 0; x < width; ++x) rayOf(x, y);
-  }
-  const auto checkPixel = [&](int32_t x, int32_t y) {
-    const glm::dvec2 ideal = rayOf(x, y);
-    for (int k = 1; k <= kSteps; ++k) {
-      const glm::dvec2 p = ideal * (static_cast<double>(k) / kSteps);
-      if (!(glm::determinant(distortionJacobian(lens, p)) > 0.0)) {
-        fail(x, y, "the distortion folds between the centre and this pixel's ray");
+    for (int32_t x = 0; x < width; ++x) {
+      glm::dvec2 ideal;
+      if (!undistortNormalised(lens, pixelToNormalised(lens, {double(x), double(y)}), ideal)) {
+        fail(x, y, "no ray has this distorted position");
+      }
+      const bool border = x == 0 || y == 0 || x == width - 1 || y == height - 1;
+      if (!border && (x % 8 != 0 || y % 8 != 0)) continue;
+      for (int k = 1; k <= kSteps; ++k) {
+        const glm::dvec2 p = ideal * (static_cast<double>(k) / kSteps);
+        if (!(glm::determinant(distortionJacobian(lens, p)) > 0.0)) {
+          fail(x, y, "the distortion folds between the centre and this pixel's ray");
+        }
       }
     }
-  };
-  for (int32_t x = 0; x < width; ++x) {
-    checkPixel(x, 0);
-    checkPixel(x, height - 1);
-  }
-  for (int32_t y = 0; y < height; ++y) {
-    checkPixel(0, y);
-    checkPixel(width - 1, y);
-  }
-  for (int32_t y = 0; y < height; y += 8) {
-    for (int32_t x = 0; x < width; x += 8) checkPixel(x, y);
   }
 }
 

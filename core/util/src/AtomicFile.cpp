@@ -41,33 +41,28 @@ AtomicFile::AtomicFile(std::filesystem::path finalPath) : finalPath_(std::move(f
 
 AtomicFile::~AtomicFile() { discard(); }
 
-AtomicFile::AtomicFile(AtomicFile&& other) noexcept
-    : finalPath_(std::move(other.finalPath_)),
-      tempPath_(std::move(other.tempPath_)),
-      fd_(std::exchange(other.fd_, -1)),
-      staging_(std::move(other.staging_)),
-      capacity_(std::exchange(other.capacity_, 0)),
-      staged_(std::exchange(other.staged_, 0)),
-      written_(std::exchange(other.written_, 0)),
-      direct_(std::exchange(other.direct_, false)),
-      directTried_(std::exchange(other.directTried_, false)),
-      wroteDirect_(std::exchange(other.wroteDirect_, false)) {}
+AtomicFile::AtomicFile(AtomicFile&& other) noexcept { takeFrom(other); }
 
 AtomicFile& AtomicFile::operator=(AtomicFile&& other) noexcept {
   if (this != &other) {
     discard();
-    finalPath_ = std::move(other.finalPath_);
-    tempPath_ = std::move(other.tempPath_);
-    fd_ = std::exchange(other.fd_, -1);
-    staging_ = std::move(other.staging_);
-    capacity_ = std::exchange(other.capacity_, 0);
-    staged_ = std::exchange(other.staged_, 0);
-    written_ = std::exchange(other.written_, 0);
-    direct_ = std::exchange(other.direct_, false);
-    directTried_ = std::exchange(other.directTried_, false);
-    wroteDirect_ = std::exchange(other.wroteDirect_, false);
+    takeFrom(other);
   }
   return *this;
+}
+
+// Moves every member over, leaving `other` without a file (its destructor
+// then removes nothing).
+void AtomicFile::takeFrom(AtomicFile& other) noexcept {
+  finalPath_ = std::move(other.finalPath_);
+  tempPath_ = std::move(other.tempPath_);
+  fd_ = std::exchange(other.fd_, -1);
+  staging_ = std::move(other.staging_);
+  capacity_ = std::exchange(other.capacity_, 0);
+  staged_ = std::exchange(other.staged_, 0);
+  written_ = std::exchange(other.written_, 0);
+  direct_ = std::exchange(other.direct_, false);
+  wroteDirect_ = std::exchange(other.wroteDirect_, false);
 }
 
 // Grows the staging buffer to hold `atLeast` bytes, up to kDirectFrom.
@@ -101,12 +96,10 @@ void AtomicFile::write(const void* data, std::size_t bytes) {
 }
 
 // A full staging buffer (kDirectFrom bytes, at an offset that is a multiple of
-// it) to the file: direct from the first one on, where the file system lets.
+// it) to the file: direct from the first one on, where the file system lets
+// (tried once: after a refusal the file stays buffered).
 void AtomicFile::flushStaged() {
-  if (!directTried_) {
-    directTried_ = true;
-    setDirect(true);
-  }
+  if (written_ == 0) setDirect(true);
   writeOut(staging_.get(), staged_);
   staged_ = 0;
 }
@@ -152,14 +145,13 @@ void AtomicFile::commit() {
   }
   // fsync before rename: a crash after the rename must not expose a file
   // whose data blocks never reached the disk.
-  const bool ok = ::fsync(fd_) == 0;
-  const std::string why = ok ? std::string() : errnoText();
-  const int closeResult = ::close(fd_);
+  std::string why;  // the first failure's
+  if (::fsync(fd_) != 0) why = errnoText();
+  if (::close(fd_) != 0 && why.empty()) why = errnoText();
   fd_ = -1;
-  if (!ok || closeResult != 0) {
+  if (!why.empty()) {
     std::filesystem::remove(tempPath_);
-    throw InputError(FileLoc{finalPath_.string()}, "",
-                     "write failed: " + (ok ? errnoText() : why));
+    throw InputError(FileLoc{finalPath_.string()}, "", "write failed: " + why);
   }
   std::error_code ec;
   std::filesystem::rename(tempPath_, finalPath_, ec);

@@ -50,6 +50,7 @@ class AtomicFile {
   };
 
   void discard() noexcept;
+  void takeFrom(AtomicFile& other) noexcept;
   void stage(std::size_t atLeast);
   void flushStaged();
   void writeOut(const char* data, std::size_t bytes);
@@ -63,7 +64,6 @@ class AtomicFile {
   std::size_t staged_ = 0;                      ///< bytes in staging_
   std::size_t written_ = 0;                     ///< bytes in the file
   bool direct_ = false;                         ///< O_DIRECT set on fd_
-  bool directTried_ = false;
   bool wroteDirect_ = false;
 };
 
