@@ -32,7 +32,9 @@ class CpuIsm {
   void allocate(std::size_t vplsPerBatch);
   /// Splats and fills the maps of VPLs [firstVpl, firstVpl + count).
   void build(std::size_t firstVpl, std::size_t count, int threads);
-  /// Whether VPL `vpl` (of the built batch) sees the point at `dist` along unit `d`.
+  /// Whether VPL `vpl` (of the built batch) sees the point at `dist` along
+  /// unit `d`: indirect_gather.comp's test, one pair at a time. The gather
+  /// uses cullHidden; this is the recipe IsmCullTest holds it to.
   bool visible(std::size_t vpl, const glm::vec3& d, float dist, float sceneScale_m) const;
   /// visible() for the n lanes of a block of VPLs [first, first + n) at once:
   /// a lane the map hides gets bin kNoLight. The same float operations, eight
@@ -48,8 +50,8 @@ class CpuIsm {
 
   scene::TriangleSoup soup_;
   std::vector<glm::vec3> vplPosition_, vplNormal_;
-  /// Each VPL's basisAround(normal): tangent t, bitangent b (the normal is
-  /// vplNormal_), as arrays for cullHidden's lanes.
+  /// Each VPL's basisAround(normal) as arrays for cullHidden's lanes:
+  /// tangent t, bitangent b and the normal n (vplNormal_ again, in columns).
   std::vector<float> tx_, ty_, tz_, bx_, by_, bz_, nx_, ny_, nz_;
   capture::IndirectSettings settings_;
   uint32_t seed32_ = 0;
