@@ -364,14 +364,15 @@ void CpuBackend::gatherPixelBlock(const IndirectConstants& c, std::size_t first,
     if (ism) ism->cullHidden(first, n, sceneScale_m_, terms[s]);
   }
   std::size_t visible = 0;  // contributions in `pairs`
-  if (footprint && !exact && perPixel == 1) {
-    // One sample (most pixels): the lit lanes in order, without a branch per
-    // lane (each lane is written, the count moves past the lit ones).
-    if (!lit || lit[0]) {
-      const int32_t* bin = terms[0].bin;
-      for (std::size_t k = 0; k < n; ++k) {
-        pairs[visible] = {0u, static_cast<uint32_t>(k)};
-        visible += bin[k] != kNoLight;
+  if (footprint && !exact) {
+    // ISMs or no visibility: the verdicts are in the bins already, so the
+    // lit lanes go in order without a branch per lane (each is written, the
+    // count moves past the lit ones).
+    for (std::size_t k = 0; k < n; ++k) {
+      for (std::size_t s = 0; s < perPixel; ++s) {
+        if (lit && !lit[s]) continue;
+        pairs[visible] = {static_cast<uint32_t>(s), static_cast<uint32_t>(k)};
+        visible += terms[s].bin[k] != kNoLight;
       }
     }
   } else {
@@ -387,9 +388,10 @@ void CpuBackend::gatherPixelBlock(const IndirectConstants& c, std::size_t first,
   }
 }
 
-// gatherPixelBlock's general case: VPL by VPL and, for each, sample by
-// sample, the exact visibility rays' verdicts; with the footprint the
-// visible pairs into `pairs`, without it each term into its bin.
+// gatherPixelBlock with exact visibility or without the footprint: VPL by
+// VPL and, for each, sample by sample, the exact visibility rays' verdicts;
+// with the footprint the visible pairs into `pairs`, without it each term
+// into its bin.
 void CpuBackend::visiblePairs(const IndirectConstants& c, std::size_t first, std::size_t n,
                               std::size_t perPixel, const PixelSurface* surfaces,
                               const unsigned char* lit, const VplTerms* terms, BlockPair* pairs,

@@ -105,9 +105,9 @@ class CpuBackend : public ir::IrBackend {
   /// all of them (the visible contributions, with the footprint).
   void gatherPixelBlock(const IndirectConstants& c, std::size_t first, std::size_t n, std::size_t i,
                         VplTerms* terms, BlockPair* pairs);
-  /// gatherPixelBlock's pairs beyond one sample with ISMs or none (several
-  /// samples, exact visibility, or no footprint): appends to `pairs` from
-  /// `visible` on, or without the footprint adds each term to `histogram`.
+  /// gatherPixelBlock's pairs with exact visibility or without the
+  /// footprint: appends to `pairs` from `visible` on, or without the
+  /// footprint adds each term to `histogram`.
   void visiblePairs(const IndirectConstants& c, std::size_t first, std::size_t n,
                     std::size_t perPixel, const PixelSurface* surfaces, const unsigned char* lit,
                     const VplTerms* terms, BlockPair* pairs, float* histogram,
