@@ -141,6 +141,11 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
 
   std::string configPath, outputDir, platform, volumeDir, renderer, backend, dirA, dirB;
+  // -o "" would silently mean "no -o" (the config's output.directory, or A):
+  // an empty folder name is a usage error naming the option.
+  const CLI::Validator notEmpty(
+      [](const std::string& s) { return s.empty() ? "must not be empty" : std::string(); }, "",
+      "NOT_EMPTY");
   std::vector<std::string> sets;
   bool quiet = false, strict = false;
   const char* strictHelp =
@@ -148,7 +153,8 @@ int main(int argc, char** argv) {
 
   CLI::App* render = app.add_subcommand("render", "Render a config's transient volume and outputs");
   render->add_option("config", configPath, "YAML config file")->required();
-  render->add_option("-o,--output", outputDir, "Output directory (default: output.directory)");
+  render->add_option("-o,--output", outputDir, "Output directory (default: output.directory)")
+      ->check(notEmpty);
   render->add_option("--set", sets, "Override a config key: key.path=value (repeatable)");
   render->add_flag("-q,--quiet", quiet, "No progress output");
   render->add_flag("--strict", strict, strictHelp);
@@ -167,7 +173,8 @@ int main(int argc, char** argv) {
   sense->add_option("config", configPath, "YAML config file")->required();
   sense->add_option("--volume", volumeDir, "Folder of a render: transient.npy + transient.json")
       ->required();
-  sense->add_option("-o,--output", outputDir, "Output directory (default: the --volume folder)");
+  sense->add_option("-o,--output", outputDir, "Output directory (default: the --volume folder)")
+      ->check(notEmpty);
   sense->add_option("--set", sets, "Override a config key: key.path=value (repeatable)");
   sense->add_flag("-q,--quiet", quiet, "No progress output");
 
@@ -175,8 +182,9 @@ int main(int argc, char** argv) {
       "compare", "Error metrics of render A against reference B (two output directories)");
   compareCommand->add_option("a", dirA, "Output directory under test")->required();
   compareCommand->add_option("b", dirB, "Output directory of the reference")->required();
-  compareCommand->add_option("-o,--output", outputDir,
-                             "Where to write the comparison files (default: A)");
+  compareCommand
+      ->add_option("-o,--output", outputDir, "Where to write the comparison files (default: A)")
+      ->check(notEmpty);
 
   CLI::App* validate = app.add_subcommand("validate", "Check a config without rendering");
   validate->add_option("config", configPath, "YAML config file")->required();

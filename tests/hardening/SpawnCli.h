@@ -10,19 +10,20 @@
 #include <cstdlib>
 #include <string>
 
+#include "pipeline/CliRun.h"  // cliPath: $TOFSIM_TEST_CLI runs another build
+
 namespace tofsim::test {
 
 struct ChildLimits {
   long maxFileBytes = -1;  ///< RLIMIT_FSIZE in the child (-1: unlimited)
 };
 
-/// Runs `sh -c "<TOFSIM_CLI> args > logFile 2>&1"` in a child; returns its pid.
+/// Runs `sh -c "<cliPath()> args > logFile 2>&1"` in a child; returns its pid.
 /// With maxFileBytes, the child ignores SIGXFSZ, so writing past the limit
 /// fails with EFBIG the way a full disk fails with ENOSPC.
 inline pid_t spawnCli(const std::string& args, const std::string& logFile,
                       const ChildLimits& limits = {}) {
-  const std::string command =
-      "exec " + std::string(TOFSIM_CLI) + " " + args + " > '" + logFile + "' 2>&1";
+  const std::string command = "exec " + cliPath() + " " + args + " > '" + logFile + "' 2>&1";
   const pid_t pid = ::fork();
   if (pid == 0) {
     if (limits.maxFileBytes >= 0) {

@@ -158,5 +158,17 @@ TEST_F(AtomicFileTest, WriteFailingHalfWayIsAnErrorAndLeavesTheOldFile) {
   EXPECT_EQ(filesIn(dir_), std::vector<std::string>{"volume.npy"});
 }
 
+// The temporary's name is guessable ("<name>.tmp-<pid>"): a link planted
+// there must neither be written through nor end up as the file.
+TEST_F(AtomicFileTest, ALinkAtTheTemporaryNameIsNotFollowed) {
+  const fs::path victim = dir_ / "victim.txt", file = dir_ / "out.json";
+  { std::ofstream(victim) << "precious"; }
+  fs::create_symlink(victim, fs::path(file.string() + ".tmp-" + std::to_string(::getpid())));
+  writeFileAtomically(file, "new");
+  EXPECT_EQ(read(victim), std::vector<char>({'p', 'r', 'e', 'c', 'i', 'o', 'u', 's'}));
+  EXPECT_FALSE(fs::is_symlink(file));
+  EXPECT_EQ(read(file), std::vector<char>({'n', 'e', 'w'}));
+}
+
 }  // namespace
 }  // namespace tofsim

@@ -105,5 +105,44 @@ TEST_F(StagedFolderTest, APathThatIsAFileIsRejected) {
   EXPECT_EQ(read(dir_ / "file"), "keep");
 }
 
+TEST_F(StagedFolderTest, ALinkAtTheLockIsNeverWrittenThrough) {
+  const fs::path out = dir_ / "out";
+  write(dir_ / "victim.txt", "precious");
+  fs::create_directories(out);
+  fs::create_symlink("../victim.txt", out / FolderLock::kFileName);
+  try {
+    StagedFolder folder(out);
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.location().file, (out / FolderLock::kFileName).string());
+    EXPECT_NE(std::string(e.what()).find("symbolic link"), std::string::npos) << e.what();
+  }
+  EXPECT_EQ(read(dir_ / "victim.txt"), "precious");
+  EXPECT_EQ(folderLockHolder(out), std::nullopt);  // nor read through
+}
+
+TEST_F(StagedFolderTest, AFolderGivenAsALinkIsWrittenThroughAndStaysALink) {
+  const fs::path real = dir_ / "real", link = dir_ / "link";
+  write(real / "old.txt", "old");
+  fs::create_directory_symlink("real", link);
+  {
+    StagedFolder folder(link);
+    EXPECT_EQ(folder.linkedFrom(), link);
+    EXPECT_EQ(folder.folder(), fs::canonical(real));
+    write(folder.staging() / "new.txt", "new");
+    EXPECT_TRUE(folder.commit());
+  }
+  EXPECT_TRUE(fs::is_symlink(link));
+  EXPECT_EQ(read(real / "new.txt"), "new");
+  EXPECT_FALSE(fs::exists(real / "old.txt"));
+  write(dir_ / "file.txt", "keep");
+  fs::create_symlink("file.txt", dir_ / "to_file");
+  EXPECT_THROW(StagedFolder folder(dir_ / "to_file"), InputError);
+  EXPECT_EQ(read(dir_ / "file.txt"), "keep");
+  fs::create_symlink("nowhere", dir_ / "dangling");
+  EXPECT_THROW(StagedFolder folder(dir_ / "dangling"), InputError);
+  EXPECT_FALSE(fs::exists(dir_ / "nowhere"));
+}
+
 }  // namespace
 }  // namespace tofsim

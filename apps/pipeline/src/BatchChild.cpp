@@ -11,15 +11,16 @@
 
 #include "tofsim/pipeline/Manifest.h"
 #include "tofsim/util/Error.h"
+#include "tofsim/util/FolderLock.h"
 
 namespace tofsim::pipeline {
 
 namespace fs = std::filesystem;
 
 std::optional<RunLock> RunLock::tryAcquire(const fs::path& file) {
-  // O_CLOEXEC: only the child of this run may inherit it (spawnRender).
-  const int fd = ::open(file.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
-  if (fd < 0) throw InputError("cannot open lock file " + file.string());
+  // Close-on-exec: only the child of this run may inherit it (spawnRender).
+  // Not through a link at its name (the run's folder lock's rules).
+  const int fd = openLockFile(file);
   if (::flock(fd, LOCK_EX | LOCK_NB) != 0) {
     ::close(fd);
     return std::nullopt;
@@ -69,7 +70,8 @@ namespace {
   ::prctl(PR_SET_PDEATHSIG, SIGTERM);
   if (::getppid() != parent) ::_exit(143);
   if (keepFd >= 0) ::fcntl(keepFd, F_SETFD, 0);  // the run's lock lives as long as the run
-  const int fd = ::open(log, O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+  // O_NOFOLLOW: a link named log.txt must not truncate its target.
+  const int fd = ::open(log, O_WRONLY | O_CREAT | O_TRUNC | O_NOFOLLOW | O_CLOEXEC, 0644);
   if (fd >= 0) {
     ::dup2(fd, STDOUT_FILENO);
     ::dup2(fd, STDERR_FILENO);

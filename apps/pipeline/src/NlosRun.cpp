@@ -8,6 +8,7 @@
 #include "NlosTalFile.h"
 #include "RenderStatsJson.h"
 #include "SensorParametersJson.h"
+#include "StagedOutput.h"
 #include "tofsim/io/Npy.h"
 #include "tofsim/pipeline/Manifest.h"
 #include "tofsim/pipeline/NlosRender.h"
@@ -19,7 +20,6 @@
 #include "tofsim/util/AtomicFile.h"
 #include "tofsim/util/Error.h"
 #include "tofsim/util/Interrupt.h"
-#include "tofsim/util/StagedFolder.h"
 
 namespace tofsim::pipeline {
 
@@ -144,6 +144,7 @@ RunSummary runNlosRender(const config::RunConfig& config, const RunOptions& opti
   summary.outputDirectory =
       options.outputDirectory.empty() ? config.output.directory : options.outputDirectory;
   StagedFolder folder(summary.outputDirectory, keptAcrossRenders);
+  noteLinkedOutput(folder, progress);
   checkOutputsFit(nlosOutputs(config, scan), config, folder.staging());
   const NlosVolume volume = renderNlosScan(
       config, scene, scan,
@@ -160,7 +161,7 @@ RunSummary runNlosRender(const config::RunConfig& config, const RunOptions& opti
   const std::vector<float> firstBounce = nlosFirstBounce(config, scan, scene, volume.axis);
   writeOutputs(config, scan, volume, firstBounce, options, folder.staging(), progress, summary);
   throwIfInterrupted();
-  folder.commit();
+  commitOutput(folder, progress);
   return summary;
 }
 

@@ -13,6 +13,7 @@
 #include "SequenceFrame.h"
 #include "SequenceRun.h"
 #include "SequenceVideo.h"
+#include "StagedOutput.h"
 #include "tofsim/capture/VolumeCollector.h"  // defaultChannelNames
 #include "tofsim/imaging/Pictures.h"
 #include "tofsim/imaging/Video.h"
@@ -33,7 +34,6 @@
 #include "tofsim/util/AtomicFile.h"
 #include "tofsim/util/Error.h"
 #include "tofsim/util/Interrupt.h"
-#include "tofsim/util/StagedFolder.h"
 
 namespace tofsim::pipeline {
 
@@ -131,16 +131,13 @@ RunSummary renderScene(const config::RunConfig& config, const scene::Scene& scen
   // that replaces the earlier results only when complete: an error, Ctrl-C or
   // kill -9 before that leaves the earlier set untouched.
   StagedFolder folder(summary.outputDirectory, keptAcrossRenders);
+  noteLinkedOutput(folder, progress);
   checkOutputsFit(estimateOutputs(config), config, folder.staging());
   writeOutputs(config, job, options, folder.staging(), progress, summary, frame);
   // A signal that came during the last step still means "stop": the earlier
   // results stay rather than being replaced by a run the user abandoned.
   throwIfInterrupted();
-  if (!folder.commit()) {
-    progress.message("note: " + summary.outputDirectory.string() +
-                     " could not be swapped atomically (mount point or file system without "
-                     "RENAME_EXCHANGE); its files were replaced one by one");
-  }
+  commitOutput(folder, progress);
   return summary;
 }
 

@@ -6,6 +6,7 @@
 #include <optional>
 #include <string>
 
+#include "StagedOutput.h"
 #include "Warning.h"
 #include "tofsim/pipeline/Capture.h"
 #include "tofsim/pipeline/OutputProducts.h"
@@ -15,7 +16,6 @@
 #include "tofsim/scene/GltfLoader.h"
 #include "tofsim/util/Error.h"
 #include "tofsim/util/Interrupt.h"
-#include "tofsim/util/StagedFolder.h"
 
 namespace tofsim::pipeline {
 
@@ -164,9 +164,10 @@ SenseSummary runSense(const config::RunConfig& config, const SenseOptions& optio
   StagedFolder folder(summary.outputDirectory, [](const std::string& name) {
     return name != "sensors" && name != "manifest.json";
   });
+  noteLinkedOutput(folder, progress);
   summary.files = runConfiguredSensors(config, saved, components, folder.staging(), progress);
   throwIfInterrupted();
-  folder.commit();
+  commitOutput(folder, progress);
   summary.seconds = secondsSince(start);
   return summary;
 }

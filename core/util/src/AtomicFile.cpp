@@ -33,7 +33,15 @@ void AtomicFile::FreeStaging::operator()(char* p) const noexcept { std::free(p);
 AtomicFile::AtomicFile(std::filesystem::path finalPath) : finalPath_(std::move(finalPath)) {
   tempPath_ = finalPath_;
   tempPath_ += ".tmp-" + std::to_string(::getpid());
-  fd_ = ::open(tempPath_.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
+  // A new file, never one met at that name: O_EXCL does not follow a link
+  // there (one planted at a guessable name cannot redirect the write). What
+  // is there was left by a dead process of the same pid, or planted: only
+  // the name goes.
+  const int flags = O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC;
+  fd_ = ::open(tempPath_.c_str(), flags, 0666);
+  if (fd_ < 0 && errno == EEXIST && ::unlink(tempPath_.c_str()) == 0) {
+    fd_ = ::open(tempPath_.c_str(), flags, 0666);
+  }
   if (fd_ < 0) {
     throw InputError(FileLoc{finalPath_.string()}, "", "cannot open for writing: " + errnoText());
   }

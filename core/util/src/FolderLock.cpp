@@ -2,6 +2,7 @@
 
 #include <fcntl.h>
 #include <sys/file.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <cerrno>
@@ -27,15 +28,50 @@ std::string holderText(std::optional<pid_t> pid) {
   return pid ? "pid " + std::to_string(*pid) : "another process";
 }
 
+const char* kindOf(mode_t mode) {
+  if (S_ISLNK(mode)) return "a symbolic link (tofsim does not follow links there)";
+  if (S_ISDIR(mode)) return "a directory";
+  if (S_ISFIFO(mode)) return "a FIFO";
+  if (S_ISSOCK(mode)) return "a socket";
+  if (S_ISCHR(mode) || S_ISBLK(mode)) return "a device";
+  return "not a regular file";
+}
+
+[[noreturn]] void notALockFile(const std::filesystem::path& file, mode_t mode) {
+  throw InputError(FileLoc{file.string()}, "",
+                   std::string("the lock file is ") + kindOf(mode) +
+                       ", not a regular file; remove it and run again");
+}
+
+// open(2) of `file` that never follows a link at its name, nor blocks on a
+// FIFO; -1 with errno as open's.
+int openNoFollow(const std::filesystem::path& file, int flags) {
+  return ::open(file.c_str(), flags | O_NOFOLLOW | O_NONBLOCK | O_CLOEXEC, 0644);
+}
+
 }  // namespace
 
-FolderLock::FolderLock(const std::filesystem::path& folder) : path_(folder / kFileName) {
-  fd_ = ::open(path_.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
-  if (fd_ < 0) {
-    throw InputError(
-        FileLoc{folder.string()}, "",
-        "cannot create the output folder's lock file: " + std::string(std::strerror(errno)));
+int openLockFile(const std::filesystem::path& file) {
+  const int fd = openNoFollow(file, O_RDWR | O_CREAT);
+  if (fd < 0) {
+    const int error = errno;
+    struct stat st {};
+    // ELOOP: a link; EISDIR: a folder; ENXIO, EWOULDBLOCK: a socket or a FIFO.
+    if (::lstat(file.c_str(), &st) == 0 && !S_ISREG(st.st_mode)) notALockFile(file, st.st_mode);
+    throw InputError(FileLoc{file.string()}, "",
+                     "cannot create the lock file: " + std::string(std::strerror(error)));
   }
+  // Checked on what was opened, not on the name, so nothing can swap it in between.
+  struct stat st {};
+  if (::fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) {
+    ::close(fd);
+    notALockFile(file, st.st_mode);
+  }
+  return fd;
+}
+
+FolderLock::FolderLock(const std::filesystem::path& folder) : path_(folder / kFileName) {
+  fd_ = openLockFile(path_);
   if (::flock(fd_, LOCK_EX | LOCK_NB) != 0) {
     const int error = errno;
     const std::optional<pid_t> holder = readPid(fd_);
@@ -61,15 +97,17 @@ FolderLock::~FolderLock() {
 }
 
 std::optional<pid_t> folderLockHolder(const std::filesystem::path& folder) {
-  const std::filesystem::path path = folder / FolderLock::kFileName;
-  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+  const int fd = openNoFollow(folder / FolderLock::kFileName, O_RDONLY);
   if (fd < 0) return std::nullopt;
+  struct stat st {};
   std::optional<pid_t> holder;
-  if (::flock(fd, LOCK_SH | LOCK_NB) != 0 && errno == EWOULDBLOCK) {
-    holder = readPid(fd);
-    if (!holder) holder = 0;
-  } else {
-    ::flock(fd, LOCK_UN);
+  if (::fstat(fd, &st) == 0 && S_ISREG(st.st_mode)) {  // anything else is no one's lock
+    if (::flock(fd, LOCK_SH | LOCK_NB) != 0 && errno == EWOULDBLOCK) {
+      holder = readPid(fd);
+      if (!holder) holder = 0;
+    } else {
+      ::flock(fd, LOCK_UN);
+    }
   }
   ::close(fd);
   return holder;

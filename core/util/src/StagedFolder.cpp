@@ -46,8 +46,34 @@ bool canStageBeside(const fs::path& folder) {
   return self.st_dev == parent.st_dev && ::access(folder.parent_path().c_str(), W_OK) == 0;
 }
 
-// Hard links (files) or copies of the structure (folders) of `from` at `to`:
-// the kept entries cost no copy and no space.
+bool exchange(const fs::path& a, const fs::path& b) {
+  return ::renameat2(AT_FDCWD, a.c_str(), AT_FDCWD, b.c_str(), RENAME_EXCHANGE) == 0;
+}
+
+// A link at the folder's name is written through: the results go into its
+// target, and the swap is done on the target, so the link stays a link (a
+// swap on the link's name would replace it by a real folder and leave the
+// target as it was). A link to anything but a folder is an error.
+fs::path linkTarget(const fs::path& given, const fs::path& link) {
+  std::error_code ec;
+  const fs::path to = fs::read_symlink(link, ec);
+  const fs::path target = fs::canonical(link, ec);
+  if (ec) {
+    throw InputError(FileLoc{given.string()}, "",
+                     "the output folder is a symbolic link to " + to.string() +
+                         ", which does not exist (" + ec.message() +
+                         "); create the folder it names or remove the link");
+  }
+  if (!fs::is_directory(target, ec)) {
+    throw InputError(
+        FileLoc{given.string()}, "",
+        "the output folder is a symbolic link to " + to.string() + ", which is not a directory");
+  }
+  return target;
+}
+
+}  // namespace
+
 void linkTree(const fs::path& from, const fs::path& to) {
   if (fs::is_symlink(from)) {
     fs::copy_symlink(from, to);
@@ -61,15 +87,13 @@ void linkTree(const fs::path& from, const fs::path& to) {
   }
 }
 
-bool exchange(const fs::path& a, const fs::path& b) {
-  return ::renameat2(AT_FDCWD, a.c_str(), AT_FDCWD, b.c_str(), RENAME_EXCHANGE) == 0;
-}
-
-}  // namespace
-
 StagedFolder::StagedFolder(const fs::path& folder, KeepRule keep)
     : folder_(normalised(folder)), keep_(std::move(keep)) {
   std::error_code ec;
+  if (fs::is_symlink(fs::symlink_status(folder_, ec))) {
+    linkedFrom_ = folder;
+    folder_ = linkTarget(folder, folder_);
+  }
   if (fs::exists(folder_, ec) && !fs::is_directory(folder_, ec)) {
     throw InputError(FileLoc{folder.string()}, "",
                      "output directory exists and is not a directory");
@@ -86,10 +110,11 @@ StagedFolder::StagedFolder(const fs::path& folder, KeepRule keep)
   const std::string pid = std::to_string(::getpid());
   staging_ = siblingStaging_ ? folder_.parent_path() / (siblingPrefix(folder_) + pid)
                              : folder_ / (kInsidePrefix + pid);
-  fs::create_directory(staging_, ec);
-  if (ec) {
+  // A new folder, never one met at that name (mkdir does not follow a link
+  // there): what it holds is this run's alone.
+  if (::mkdir(staging_.c_str(), 0777) != 0) {
     throw InputError(FileLoc{staging_.string()}, "",
-                     "cannot create staging folder: " + ec.message());
+                     "cannot create staging folder: " + std::string(std::strerror(errno)));
   }
 }
 
@@ -105,6 +130,10 @@ StagedFolder::~StagedFolder() {
     lock_.reset();
     if (onlyLock && !ec) fs::remove_all(folder_, ec);
   }
+}
+
+bool StagedFolder::isStaging(const std::string& name) {
+  return startsWith(name, ".") && name.find(kInsidePrefix) != std::string::npos;
 }
 
 void StagedFolder::removeDeadStaging() const {

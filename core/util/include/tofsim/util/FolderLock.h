@@ -7,6 +7,9 @@
 // The lock file is an inode, not a name: StagedFolder hard-links it into the
 // folder that replaces this one, so a writer that opens the name after the
 // swap still meets the same lock.
+//
+// A lock file is opened without following a link at its name: a link there
+// (or a folder, a FIFO) is an error naming it, never a file written through it.
 
 #include <sys/types.h>
 
@@ -22,7 +25,7 @@ class FolderLock {
 
   /// Takes the lock on `folder` (which must exist) without waiting; throws
   /// InputError naming the folder and the holder's pid when another process
-  /// holds it.
+  /// holds it, or naming the lock file when it is not a regular file.
   explicit FolderLock(const std::filesystem::path& folder);
   ~FolderLock();
   FolderLock(const FolderLock&) = delete;
@@ -34,6 +37,12 @@ class FolderLock {
   std::filesystem::path path_;
   int fd_ = -1;
 };
+
+/// Opens (creating) the lock file `file` for reading and writing, without
+/// following a link at its name; InputError naming it when it is a link, a
+/// folder or anything but a regular file, or cannot be made. The descriptor
+/// is close-on-exec.
+int openLockFile(const std::filesystem::path& file);
 
 /// The pid of the process that holds `folder`'s lock, or nothing when no one
 /// does (or the folder has no lock file). Does not take the lock.

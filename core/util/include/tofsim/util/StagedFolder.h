@@ -11,6 +11,11 @@
 // folder. Staging folders of dead writers (a SIGKILL leaves one behind) are
 // removed when the next writer takes the lock.
 //
+// A folder path that is a symbolic link to a directory is written through:
+// the new set goes into the link's target (staged beside the target and
+// swapped there), and the link stays a link; linkedFrom() says so. A link to
+// anything else, or a dangling one, is an error.
+//
 // Where the swap cannot be atomic (the folder is a mount point, its parent is
 // not writable, or the file system has no RENAME_EXCHANGE, e.g. NFS), entries
 // are moved one by one and replaced() says so.
@@ -44,6 +49,13 @@ class StagedFolder {
   const std::filesystem::path& staging() const { return staging_; }
   /// Whether this object created the folder.
   bool created() const { return created_; }
+  /// The path given, when it is a symbolic link (folder() is then its
+  /// target); empty otherwise.
+  const std::filesystem::path& linkedFrom() const { return linkedFrom_; }
+
+  /// Whether `name` is that of a staging folder a StagedFolder makes (of any
+  /// folder; beside it or inside it).
+  static bool isStaging(const std::string& name);
 
   /// Makes the staged set the folder's contents. Returns false when the swap
   /// had to be done entry by entry (not atomic, see above).
@@ -55,6 +67,7 @@ class StagedFolder {
   void replaceEntryByEntry() const;
 
   std::filesystem::path folder_;
+  std::filesystem::path linkedFrom_;
   std::filesystem::path staging_;
   KeepRule keep_;
   bool created_ = false;
@@ -62,5 +75,10 @@ class StagedFolder {
   bool committed_ = false;
   std::unique_ptr<FolderLock> lock_;
 };
+
+/// Hard links (files) or copies of the structure (folders) of `from` at
+/// `to`, links copied as links: a tree carried into a staged set at no cost
+/// in copies or space. `to` and `from` must be on one file system.
+void linkTree(const std::filesystem::path& from, const std::filesystem::path& to);
 
 }  // namespace tofsim
