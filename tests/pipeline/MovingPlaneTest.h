@@ -1,5 +1,6 @@
 #pragma once
-// The sequence tests' scene (SequenceRunTest.cpp, SequenceSensorsTest.cpp):
+// The sequence tests' scene (SequenceRunTest.cpp, SequenceSensorsTest.cpp,
+// hardening/SequenceSwapTest.cpp):
 // a plane at d(t) = d0 + v t along the axis of an 8 x 8 camera with a 10
 // degree field of view (a glTF translation channel, LINEAR, over [0, 1] s),
 // lit by a point light at the camera, rendered on the CPU backend at pixel
@@ -43,19 +44,23 @@ class MovingPlaneTest : public test::TempDirTest {
         R"(]}, {"mesh": 0, "scale": [40, 40, 1], "translation": [-5, -5, 0]}])";
     test::writeText(dir_ / "plane.gltf", f.json(nodes, "[0]"));
   }
+  // The config's text (the CLI tests write it to a file).
+  static std::string configYaml(const std::string& sequence, const std::string& time,
+                                const std::string& sensor = "") {
+    return "scene: plane.gltf\n"
+           "camera: {position: [0, 0, 0], look_at: [0, 0, -1], fov_y: 10 deg, resolution: [8, 8]}\n"
+           "light: {attach_to_camera: true, intensity: 5}\n"
+           "time: " +
+           time +
+           "\n"
+           "render: {backend: cpu, threads: 2, pixel_footprint: false, indirect: {enabled: "
+           "false}}\n"
+           "output: {steady: false, depth: true}\n" +
+           sequence + (sensor.empty() ? "" : "sensors:\n  - " + sensor + "\n");
+  }
   config::RunConfig config(const std::string& sequence, const std::string& time,
                            const std::string& sensor = "") {
-    const std::string yaml =
-        "scene: plane.gltf\n"
-        "camera: {position: [0, 0, 0], look_at: [0, 0, -1], fov_y: 10 deg, resolution: [8, 8]}\n"
-        "light: {attach_to_camera: true, intensity: 5}\n"
-        "time: " +
-        time +
-        "\n"
-        "render: {backend: cpu, threads: 2, pixel_footprint: false, indirect: {enabled: false}}\n"
-        "output: {steady: false, depth: true}\n" +
-        sequence + (sensor.empty() ? "" : "sensors:\n  - " + sensor + "\n");
-    return config::loadRunConfigText(yaml, dir_ / "c.yaml");
+    return config::loadRunConfigText(configYaml(sequence, time, sensor), dir_ / "c.yaml");
   }
   fs::path run(const config::RunConfig& c, const std::string& name) {
     RunOptions options;

@@ -1,14 +1,21 @@
 #include "SequenceRun.h"
 
+#include <sys/stat.h>
+
+#include <cerrno>
 #include <chrono>
 #include <cstdio>
+#include <cstring>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <optional>
 
+#include "KeptAcrossRenders.h"
 #include "RenderStatsJson.h"
 #include "SequenceFrame.h"
 #include "SequenceMotion.h"
 #include "SequenceVideo.h"
+#include "StagedOutput.h"
 #include "Warning.h"
 #include "tofsim/io/Npy.h"
 #include "tofsim/pipeline/Manifest.h"
@@ -19,6 +26,7 @@
 #include "tofsim/util/AtomicFile.h"
 #include "tofsim/util/Error.h"
 #include "tofsim/util/Interrupt.h"
+#include "tofsim/util/StagedFolder.h"
 
 namespace tofsim::pipeline {
 
@@ -34,6 +42,11 @@ uint64_t sequenceFrameSeed(uint64_t seed, std::size_t frame) {
 namespace {
 
 constexpr const char* kFrameRecord = "frame.json";
+// Where this run's frames are rendered, each committed whole as it is done,
+// inside the sequence's folder and hidden: the earlier set beside it stays
+// complete until the new one swaps in, and a rerun of the same inputs after
+// an interrupt resumes from it. The swap carries it away with the earlier set.
+constexpr const char* kPartialFolder = ".tofsim-sequence-partial";
 
 std::string frameFolder(std::size_t k) {
   char name[32];
@@ -80,6 +93,55 @@ bool frameDone(const fs::path& folder, std::size_t k, double t, uint64_t seed, c
   }
 }
 
+// Staging folders that frames' writers left (an abort, kill -9) where
+// frames are rendered now and where they were before kPartialFolder: this
+// run holds the sequence's lock, so no one is writing them.
+void removeDeadFrameStaging(const std::vector<fs::path>& folders, const fs::path& ours) {
+  std::error_code ec;
+  for (const fs::path& folder : folders) {
+    std::vector<fs::path> dead;
+    for (const fs::directory_entry& e : fs::directory_iterator(folder, ec)) {
+      if (StagedFolder::isStaging(e.path().filename().string()) && e.path() != ours) {
+        dead.push_back(e.path());
+      }
+    }
+    for (const fs::path& p : dead) fs::remove_all(p, ec);
+  }
+}
+
+// kPartialFolder, a folder of this run's making: anything else at that name
+// (a link included, never followed) goes.
+void makePartialFolder(const fs::path& partial) {
+  std::error_code ec;
+  if (!fs::is_directory(fs::symlink_status(partial, ec))) fs::remove(partial, ec);
+  if (::mkdir(partial.c_str(), 0777) != 0 && errno != EEXIST) {
+    throw InputError(FileLoc{partial.string()}, "",
+                     "cannot create the frames' folder: " + std::string(std::strerror(errno)));
+  }
+}
+
+// On unwinding: the partial folder goes when it holds no finished frame, so
+// that a run that made the sequence's folder for nothing leaves nothing.
+struct RemoveWhenEmpty {
+  fs::path folder;
+  ~RemoveWhenEmpty() {
+    std::error_code ec;
+    fs::remove(folder, ec);  // fails, and so keeps it, when not empty
+  }
+};
+
+// Frame k's folder of the new set: hard links to where it was rendered or kept.
+void linkFrames(const std::vector<fs::path>& frames, const fs::path& staging) {
+  try {
+    for (std::size_t k = 0; k < frames.size(); ++k) {
+      linkTree(frames[k], staging / frameFolder(k));
+    }
+  } catch (const fs::filesystem_error& e) {
+    throw InputError(FileLoc{staging.parent_path().string()}, "",
+                     std::string("cannot link the frames into the new set: ") + e.what());
+  }
+}
+
 // (F, H, W) of the frames' depth.npy.
 void writeDepthSequence(const fs::path& root, std::size_t frames) {
   std::vector<float> all;
@@ -92,9 +154,7 @@ void writeDepthSequence(const fs::path& root, std::size_t frames) {
   }
   io::NpyShape shape{frames};
   shape.insert(shape.end(), frameShape.begin(), frameShape.end());
-  const fs::path tmp = root / ".depth_sequence.tmp.npy";
-  io::writeNpy(tmp, shape, all.data());
-  fs::rename(tmp, root / "depth_sequence.npy");
+  io::writeNpy(root / "depth_sequence.npy", shape, all.data());  // whole or not at all
 }
 
 }  // namespace
@@ -111,8 +171,15 @@ RunSummary runSequenceRender(const config::RunConfig& config, const RunOptions& 
   RunSummary summary;
   summary.outputDirectory =
       options.outputDirectory.empty() ? config.output.directory : options.outputDirectory;
-  const fs::path& root = summary.outputDirectory;
-  fs::create_directories(root);
+  // A sequence is one result: its frames and files are staged and swap in
+  // together, so an interrupt or an error leaves the earlier set whole.
+  StagedFolder folder(summary.outputDirectory, keptAcrossRenders);
+  noteLinkedOutput(folder, progress);
+  const fs::path root = folder.folder();
+  const fs::path partial = root / kPartialFolder;
+  removeDeadFrameStaging({root, partial}, folder.staging());
+  makePartialFolder(partial);
+  const RemoveWhenEmpty dropUnused{partial};
   const RunContentKey runKey =
       options.batchManifest ? options.batchManifest->inputs : runContentKey(config);
   const json key = keyJson(runKey);
@@ -125,16 +192,24 @@ RunSummary runSequenceRender(const config::RunConfig& config, const RunOptions& 
                    ")");
   scene::Scene scene = animated.restScene();
   json frames = json::array();
+  std::vector<fs::path> done;  // frame k's finished folder
   std::size_t rendered = 0;
   for (std::size_t k = 0; k < seq.times_s.size(); ++k) {
     throwIfInterrupted();
     const double t = seq.times_s[k];
     config::RunConfig frameConfig = config;
     frameConfig.render.seed = sequenceFrameSeed(config.render.seed, k);
-    const std::string folder = frameFolder(k);
+    const std::string name = frameFolder(k);
     frames.push_back(
-        {{"index", k}, {"time_s", t}, {"seed", frameConfig.render.seed}, {"folder", folder}});
-    if (frameDone(root / folder, k, t, frameConfig.render.seed, key)) {
+        {{"index", k}, {"time_s", t}, {"seed", frameConfig.render.seed}, {"folder", name}});
+    // Finished by an interrupted run, or in the earlier complete set.
+    const fs::path fresh = partial / name;
+    std::optional<fs::path> kept;
+    for (const fs::path& f : {fresh, root / name}) {
+      if (!kept && frameDone(f, k, t, frameConfig.render.seed, key)) kept = f;
+    }
+    done.push_back(kept.value_or(fresh));
+    if (kept) {
       progress.message("frame " + std::to_string(k) + " (t = " + std::to_string(t) +
                        " s): kept from an earlier run of the same inputs");
       continue;
@@ -167,7 +242,7 @@ RunSummary runSequenceRender(const config::RunConfig& config, const RunOptions& 
       written.push_back(kFrameRecord);
     };
     RunOptions frameOptions = options;
-    frameOptions.outputDirectory = root / folder;
+    frameOptions.outputDirectory = fresh;
     frameOptions.batchManifest.reset();
     RunSummary one = renderSequenceFrame(frameConfig, scene, frameOptions, progress, frame);
     summary.backend = one.backend;
@@ -178,9 +253,11 @@ RunSummary runSequenceRender(const config::RunConfig& config, const RunOptions& 
   progress.message(std::to_string(rendered) + " frame(s) rendered, " +
                    std::to_string(seq.times_s.size() - rendered) + " kept");
 
-  // The sequence's own files, each written whole.
+  // The new set: the frames, then the sequence's own files.
+  const fs::path& staging = folder.staging();
+  linkFrames(done, staging);
   for (std::size_t k = 0; k < seq.times_s.size(); ++k) {
-    for (const std::string& f : json::parse(std::ifstream(root / frameFolder(k) / kFrameRecord))
+    for (const std::string& f : json::parse(std::ifstream(staging / frameFolder(k) / kFrameRecord))
                                     .at("files")
                                     .get<std::vector<std::string>>()) {
       summary.files.push_back(frameFolder(k) + "/" + f);
@@ -188,15 +265,15 @@ RunSummary runSequenceRender(const config::RunConfig& config, const RunOptions& 
     summary.files.push_back(frameFolder(k) + "/" + kFrameRecord);
   }
   if (config.output.depth) {
-    writeDepthSequence(root, seq.times_s.size());
+    writeDepthSequence(staging, seq.times_s.size());
     summary.files.push_back("depth_sequence.npy");
   }
   if (seq.video && config.output.steady) {
     std::vector<fs::path> steady;
     for (std::size_t k = 0; k < seq.times_s.size(); ++k) {
-      steady.push_back(root / frameFolder(k) / files::kSteadyExr);
+      steady.push_back(staging / frameFolder(k) / files::kSteadyExr);
     }
-    writeSequenceVideo(root / "sequence.mp4", config.output, steady, seq.times_s, progress);
+    writeSequenceVideo(staging / "sequence.mp4", config.output, steady, seq.times_s, progress);
     summary.files.push_back("sequence.mp4");
   }
   const json doc = {{"frames", frames},
@@ -205,15 +282,18 @@ RunSummary runSequenceRender(const config::RunConfig& config, const RunOptions& 
                     {"animation_start_s", animated.start_s()},
                     {"animation_end_s", animated.end_s()},
                     {"run_key", key}};
-  writeFileAtomically(root / "sequence.json", doc.dump(2) + "\n");
+  writeFileAtomically(staging / "sequence.json", doc.dump(2) + "\n");
   summary.files.push_back("sequence.json");
-  writeFileAtomically(root / "config.effective.yaml", config::effectiveConfigYaml(config));
+  writeFileAtomically(staging / "config.effective.yaml", config::effectiveConfigYaml(config));
   summary.files.push_back("config.effective.yaml");
   if (options.batchManifest) {
-    writeManifest(root, options.batchManifest->runName, summary.files,
+    writeManifest(staging, options.batchManifest->runName, summary.files,
                   options.batchManifest->inputs);
     summary.files.push_back(kManifestName);
   }
+  // A signal during the last steps still means "stop" (as for one render).
+  throwIfInterrupted();
+  commitOutput(folder, progress);  // the earlier set, the partial folder with it, goes
   return summary;
 }
 

@@ -1,12 +1,16 @@
 #pragma once
 // `tofsim render` of a config with a `sequence:` section: the scene's glTF
-// animations played, one frame per frame time, each written as a render's
-// outputs in OUTDIR/frame_NNNNN/ (staged, committed when complete), the
-// scene and the renderer prepared once. A frame folder whose frame.json
-// records the same run key and time is kept: an interrupted sequence resumes
-// at its first missing frame. Then OUTDIR/sequence.json (the frames, their
-// times, seeds and folders), depth_sequence.npy (F, H, W) with
-// output.depth, and config.effective.yaml.
+// animations played, one frame per frame time, the scene and the renderer
+// prepared once. The sequence is one result, staged and swapped in whole
+// (StagedFolder on OUTDIR): each frame is rendered as a render's outputs
+// into OUTDIR/.tofsim-sequence-partial/frame_NNNNN/ (committed there when
+// complete), and when all are done they are hard-linked into the staged set
+// as frame_NNNNN/, beside OUTDIR/sequence.json (the frames, their times,
+// seeds and folders), depth_sequence.npy (F, H, W) with output.depth,
+// sequence.mp4 and config.effective.yaml. A frame whose frame.json records
+// the same run key and time (in the partial folder, or in the earlier set)
+// is kept: a rerun after an interrupt resumes at its first missing frame,
+// and the earlier set stays whole until the new one replaces it.
 
 #include "tofsim/pipeline/RenderRun.h"
 
