@@ -1,4 +1,5 @@
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <cmath>
 #include <cstring>
@@ -75,6 +76,22 @@ TEST_F(ExrTest, LeavesOnlyTheFinalFile) {
     ++n;
   }
   EXPECT_EQ(n, 1u);
+}
+
+// The temporary's name is guessable: a link planted there (at this or the
+// earlier "<name>.tmp-<pid>.exr") is neither written through nor kept.
+TEST_F(ExrTest, ALinkAtTheTemporaryNameIsNotFollowed) {
+  const std::filesystem::path file = dir_ / "z.exr", victim = dir_ / "victim.txt";
+  std::ofstream(victim) << "precious";
+  const std::string temp = file.string() + ".tmp-" + std::to_string(::getpid());
+  std::filesystem::create_symlink(victim, temp);
+  std::filesystem::create_symlink(victim, temp + ".exr");
+  expectRoundTrip(file, {"Z"});
+  EXPECT_FALSE(std::filesystem::is_symlink(file));
+  std::ifstream in(victim);
+  std::string text;
+  in >> text;
+  EXPECT_EQ(text, "precious");
 }
 
 TEST_F(ExrTest, ErrorsNameTheFile) {

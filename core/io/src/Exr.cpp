@@ -6,13 +6,14 @@
 #include <ImfInputFile.h>
 #include <ImfOutputFile.h>
 #include <ImfStandardAttributes.h>
+#include <ImfStdIO.h>
 #include <ImfStringVectorAttribute.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <exception>
 #include <set>
 
+#include "tofsim/util/AtomicFile.h"
 #include "tofsim/util/Error.h"
 
 namespace tofsim::io {
@@ -43,7 +44,8 @@ std::vector<std::string> readOrder(const Imf::Header& header) {
   }
   std::vector<std::string> order;
   for (const char* rgba : {"R", "G", "B", "A"}) {
-    if (std::find(fileOrder.begin(), fileOrder.end(), rgba) != fileOrder.end()) order.push_back(rgba);
+    if (std::find(fileOrder.begin(), fileOrder.end(), rgba) != fileOrder.end())
+      order.push_back(rgba);
   }
   for (const std::string& n : fileOrder) {
     if (std::find(order.begin(), order.end(), n) == order.end()) order.push_back(n);
@@ -60,17 +62,20 @@ void writeExr(const std::filesystem::path& path, const Image& image,
   TOFSIM_CHECK(image.data.size() ==
                static_cast<std::size_t>(image.width) * image.height * image.channels);
   if (channelNames.size() != static_cast<std::size_t>(image.channels)) {
-    throw InputError(FileLoc{name}, "", "EXR needs one channel name per channel (got " +
-                                            std::to_string(channelNames.size()) + " names for " +
-                                            std::to_string(image.channels) + " channels)");
+    throw InputError(FileLoc{name}, "",
+                     "EXR needs one channel name per channel (got " +
+                         std::to_string(channelNames.size()) + " names for " +
+                         std::to_string(image.channels) + " channels)");
   }
   const std::set<std::string> unique(channelNames.begin(), channelNames.end());
   if (unique.size() != channelNames.size() || unique.count("")) {
     throw InputError(FileLoc{name}, "", "EXR channel names must be unique and non-empty");
   }
 
-  std::filesystem::path temp = path;
-  temp += ".tmp-" + std::to_string(::getpid()) + ".exr";
+  // Encoded in memory and written by AtomicFile: whole or not at all, and
+  // its temporary is opened without following a link (OpenEXR's own file
+  // opening would follow one planted at a guessable name).
+  std::string bytes;
   try {
     Imf::Header header(image.width, image.height);
     header.compression() = Imf::ZIP_COMPRESSION;
@@ -82,17 +87,17 @@ void writeExr(const std::filesystem::path& path, const Image& image,
       header.channels().insert(channelNames[c], Imf::Channel(Imf::FLOAT));
       frame.insert(channelNames[c], floatSlice(base, image, c));
     }
+    Imf::StdOSStream stream;
     {
-      Imf::OutputFile out(temp.c_str(), header);
+      Imf::OutputFile out(stream, header);
       out.setFrameBuffer(frame);
       out.writePixels(image.height);
     }
-    std::filesystem::rename(temp, path);
+    bytes = stream.str();
   } catch (const std::exception& e) {
-    std::error_code ec;
-    std::filesystem::remove(temp, ec);
     throw InputError(FileLoc{name}, "", std::string("cannot write EXR: ") + e.what());
   }
+  writeFileAtomically(path, bytes);
 }
 
 Image readExr(const std::filesystem::path& path, std::vector<std::string>* channelNames) {
@@ -106,9 +111,9 @@ Image readExr(const std::filesystem::path& path, std::vector<std::string>* chann
     Image image(window.max.x - window.min.x + 1, window.max.y - window.min.y + 1,
                 static_cast<int32_t>(order.size()));
     // The slice base is offset so that pixel (min.x, min.y) lands at index 0.
-    float* origin = image.data.data() -
-                    (static_cast<std::ptrdiff_t>(window.min.y) * image.width + window.min.x) *
-                        image.channels;
+    float* origin =
+        image.data.data() -
+        (static_cast<std::ptrdiff_t>(window.min.y) * image.width + window.min.x) * image.channels;
     Imf::FrameBuffer frame;
     for (int c = 0; c < image.channels; ++c) {
       frame.insert(order[c], floatSlice(origin, image, c));
