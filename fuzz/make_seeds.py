@@ -96,6 +96,16 @@ out("fuzz_camera_files", "delay_npy", b"\5" + npy((4, 4), [1e-11 * i for i in ra
 out("fuzz_camera_files", "companding_csv", b"\6" + b"in_dn,out_dn\n0,0\n1000,1000\n4095,2000\n")
 out("fuzz_camera_files", "noise_csv", b"\7" + b"mean_e,raw_e\n10,9\n10,12\n12,11\n")
 
+# Inputs once taken without a word (issue 39), the regression files as they
+# are: a key given twice, an alias bomb, a calibration with a key twice, a
+# saved volume of NaN.
+for target, name in [("fuzz_config", "config/duplicate_key.yaml"),
+                     ("fuzz_config", "config/alias_bomb.yaml"),
+                     ("fuzz_camera_files", "camera_files/lens_duplicate_key_yaml"),
+                     ("fuzz_saved_volume", "saved_volume/all_nan")]:
+    out(target, os.path.basename(name),
+        open(os.path.join(src, "tests", "regressions", name), "rb").read())
+
 # capture.h5 (output.format: hdf5): HDF5 has no hand-writable form here (no
 # h5py), so a 4 x 4 pixel, 8 bin render of the demo by the CLI, CPU backend,
 # no sensors (transient, steady and depth: 18 KB, mostly HDF5's zero-padded

@@ -2,6 +2,7 @@
 // pixel's gain, and the indirect light still the float sum of its bounces.
 #include <gtest/gtest.h>
 
+#include <limits>
 #include <vector>
 
 #include "tofsim/pipeline/VignettedSegments.h"
@@ -55,6 +56,20 @@ TEST(VignettedSegmentsTest, ScalesEachPixelAndKeepsTheBouncesSum) {
     EXPECT_EQ(out.components[3][i], bounce2[i] * g);
     EXPECT_EQ(out.components[1][i], out.components[2][i] + out.components[3][i]);
   }
+}
+
+// The light on the time axis is counted before the gains, as the renderer
+// counts the light off it (AxisReport's shares must not change with the
+// lens): direct + indirect, the values that are not finite left out.
+TEST(VignettedSegmentsTest, CountsTheLightBeforeTheGains) {
+  constexpr int32_t kBins = 2;
+  Collect out;
+  VignettedSegments vignetted(out, kBins, {0.0f, 0.5f});
+  std::vector<float> direct(12, 1.0f), indirect(12, 0.25f);
+  direct[7] = std::numeric_limits<float>::quiet_NaN();
+  vignetted.consume(
+      {0, 2, {{capture::kDirect, direct.data()}, {capture::kIndirect, indirect.data()}}});
+  EXPECT_EQ(vignetted.lightBeforeGain(), 11.0 + 3.0);
 }
 
 }  // namespace

@@ -7,12 +7,16 @@
 
 #include "LensConfig.h"
 #include "PsfConfig.h"
+#include "ShortestNumber.h"
 #include "SpadTableFile.h"
 #include "Vec3Key.h"
 
 namespace tofsim::config {
 
 namespace {
+
+// The largest gain a vignetting map may hold (configs/README.md).
+constexpr double kMaxVignettingGain = 1000.0;
 
 // camera.vignetting: none, cos4 or a .npy map of the camera's size.
 capture::Vignetting parseVignetting(const ConfigNode& node, const capture::Camera& camera) {
@@ -32,6 +36,24 @@ capture::Vignetting parseVignetting(const ConfigNode& node, const capture::Camer
                                    std::to_string(map.width) + " map for a " +
                                    std::to_string(camera.height) + " x " +
                                    std::to_string(camera.width) + " (H x W) image");
+  }
+  // A flat field's gains are near 1. Far larger ones would overflow float
+  // in radiance x gain (3e38 turned most values infinite, written as 0), and
+  // a map of zeros makes every pixel black.
+  std::size_t largest = 0;
+  for (std::size_t k = 1; k < map.values.size(); ++k) {
+    if (map.values[k] > map.values[largest]) largest = k;
+  }
+  if (map.values[largest] > kMaxVignettingGain) {
+    node.failKey("vignetting", map.file + ": gain " +
+                                   shortest(static_cast<float>(map.values[largest])) +
+                                   " at (y, x) = (" + std::to_string(largest / map.width) + ", " +
+                                   std::to_string(largest % map.width) + ") is over " +
+                                   std::to_string(static_cast<int>(kMaxVignettingGain)) +
+                                   " (a flat field's gains are near 1)");
+  }
+  if (map.values[largest] == 0.0) {
+    node.failKey("vignetting", map.file + ": every gain is 0, which makes every pixel black");
   }
   v.kind = capture::Vignetting::Kind::Map;
   v.width = map.width;

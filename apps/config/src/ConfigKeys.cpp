@@ -47,7 +47,7 @@ const ConfigKey kRunConfigKeys[] = {
     {"camera.resolution", "[int, int]", "", "[64, 64]", "pixel",
      "width, height, each in [1, 16384]; with a lens calibration file, its image size"},
     {"camera.vignetting", "string", "", "none", "-",
-     "`none`; `cos4`, a thin lens's fall-off: each pixel's light times cos^4 of its ray's angle to the optical axis; or a .npy (H, W) float32 map of gains >= 0 (a flat field, relative to the config). Every output and sensor sees it"},
+     "`none`; `cos4`, a thin lens's fall-off: each pixel's light times cos^4 of its ray's angle to the optical axis; or a .npy (H, W) float32 map of gains in [0, 1000], not all 0 (a flat field, relative to the config). Every output and sensor sees it"},
     {"camera.lens", "mapping", "", "none", "-",
      "a calibrated lens (OpenCV's model) in place of `fov_y`, see below"},
     {"camera.aperture", "length", ">= 0", "0", "m",

@@ -6,6 +6,7 @@
 #include <stdexcept>
 #include <utility>
 
+#include "YamlText.h"
 #include "tofsim/config/Units.h"
 
 namespace tofsim::config {
@@ -21,8 +22,10 @@ FileLoc locOf(const YAML::Node& node, const std::string& file) {
 YAML::Node loadYamlFile(const std::string& path) {
   std::ifstream in(path);
   if (!in) throw InputError(FileLoc{path}, "", "cannot open config file");
+  std::stringstream text;
+  text << in.rdbuf();
   try {
-    return YAML::Load(in);
+    return parseYaml(text.str());
   } catch (const YAML::Exception& e) {
     throw InputError(FileLoc{path, e.mark.line + 1, e.mark.column + 1}, "", e.msg);
   }
@@ -31,7 +34,7 @@ YAML::Node loadYamlFile(const std::string& path) {
 namespace {
 YAML::Node parseOverrideValue(const std::string& keyPath, const std::string& valueYaml) {
   try {
-    return YAML::Load(valueYaml);
+    return parseYaml(valueYaml);
   } catch (const YAML::Exception& e) {
     throw InputError(FileLoc{"--set " + keyPath + "=" + valueYaml}, keyPath, e.msg);
   }

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "ConfigPath.h"
+#include "YamlText.h"
 
 namespace tofsim::config {
 
@@ -110,10 +111,10 @@ ParsedLens fromCalibration(const ConfigNode& lensNode) {
       configRelativePath(lensNode, lensNode.requireString("calibration")).string();
   YAML::Node root;
   try {
-    root = YAML::Load(openCvYamlText(lensNode, out.calibration_file));
+    root = parseYaml(openCvYamlText(lensNode, out.calibration_file));
   } catch (const YAML::Exception& e) {
     lensNode.failKey("calibration", out.calibration_file + ":" + std::to_string(e.mark.line + 1) +
-                                        ": not YAML: " + e.msg);
+                                        ":" + std::to_string(e.mark.column + 1) + ": " + e.msg);
   }
   // Its keys are located in the calibration file; the other keys OpenCV
   // writes there (calibration_time, avg_reprojection_error, ...) are not read.

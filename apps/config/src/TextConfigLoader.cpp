@@ -5,6 +5,7 @@
 
 #include "ConfigNode.h"
 #include "RunConfigYaml.h"
+#include "YamlText.h"
 #include "tofsim/config/RunConfig.h"
 #include "tofsim/config/SensorConfig.h"
 
@@ -13,7 +14,7 @@ namespace tofsim::config {
 namespace {
 YAML::Node parseYamlText(const std::string& text, const std::string& file) {
   try {
-    return YAML::Load(text);
+    return parseYaml(text);
   } catch (const YAML::Exception& e) {
     throw InputError(FileLoc{file, e.mark.line + 1, e.mark.column + 1}, "", e.msg);
   }

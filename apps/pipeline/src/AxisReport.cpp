@@ -59,12 +59,6 @@ void warnOrThrow(const config::RunConfig& config, const std::string& key, const 
   warn(text);
 }
 
-double sumOf(const Image& image) {
-  double sum = 0.0;
-  for (float v : image.data) sum += v;
-  return sum;
-}
-
 }  // namespace
 
 int32_t surfaceVertices(const config::RunConfig& config) {
@@ -118,8 +112,7 @@ AxisLossFractions axisLossFractions(const capture::RenderResult& result) {
 }
 
 void checkAxisAfterRender(const config::RunConfig& config, const capture::RenderJob& job,
-                          const Image& steady, capture::RenderResult& result) {
-  result.onAxisEnergy = sumOf(steady);
+                          const capture::RenderResult& result) {
   const AxisLossFractions f = axisLossFractions(result);
   const TimeAxis& axis = job.settings.time;
   const bool before = f.before > kWindowLossWarning, after = f.after > kWindowLossWarning;

@@ -67,6 +67,8 @@ CompareSummary runCompare(const std::filesystem::path& a, const std::filesystem:
   CompareSummary summary;
   summary.comparison = compare::compareVolumes(volumeA.volume, volumeB.volume);
   const compare::VolumeComparison& c = summary.comparison;
+  // Every volume read (and checked) before the first file is written.
+  summary.components = compareComponents(a, b);
 
   std::filesystem::create_directories(outputDirectory);
   writeFileAtomically(outputDirectory / "compare_energy.csv", compare::energyCurveCsv(c));
@@ -93,7 +95,6 @@ CompareSummary runCompare(const std::filesystem::path& a, const std::filesystem:
                                "earliest arrival A - B [ps]", scale);
   summary.files.push_back("compare_arrival.exr");
   summary.files.push_back("compare_arrival.png");
-  summary.components = compareComponents(a, b);
   if (!summary.components.empty()) {
     writeFileAtomically(outputDirectory / "compare_components.csv",
                         componentsCsv(summary.components));

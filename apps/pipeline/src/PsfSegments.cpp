@@ -80,6 +80,10 @@ void PsfSegments::convolveAndSend() {
     if (names_[i] == kTotal) continue;
     optics::applyPsf(kernel_, volumes_[i].data(), perPixel, layout,
                      {optics::PsfMethod::Auto, threads_});
+    // A kernel >= 0 on light >= 0 gives light >= 0: what the FFT leaves
+    // below 0 is its round-off, which a saved volume must not hold
+    // (SavedVolume.cpp refuses negative radiance).
+    for (float& v : volumes_[i]) v = std::max(v, 0.0f);
     if (names_[i] == capture::kDirect) direct = volumes_[i].data();
     if (names_[i] == capture::kIndirect) indirect = volumes_[i].data();
   }

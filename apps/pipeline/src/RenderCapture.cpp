@@ -18,6 +18,14 @@
 
 namespace tofsim::pipeline {
 
+namespace {
+double sumOf(const Image& image) {
+  double sum = 0.0;
+  for (float v : image.data) sum += v;
+  return sum;
+}
+}  // namespace
+
 capture::RenderJob prepareCapture(const config::RunConfig& config, const scene::Scene& scene) {
   capture::RenderJob job = makeRenderJob(config, scene);
   checkAxisBeforeRender(config, job, false);  // a proven cut fails here under --strict
@@ -89,7 +97,11 @@ RenderedCapture renderCapture(const config::RunConfig& config, const capture::Re
                      {s.width, s.height, static_cast<std::size_t>(s.channels), 1},
                      {optics::PsfMethod::Auto, config.cpu_threads});
   }
-  checkAxisAfterRender(config, job, rendered.steady, rendered.result);  // throws under --strict
+  // The light on the axis in the terms of the light the renderer counted off
+  // it: before the vignetting's gains (with a gain after it on the axis and
+  // before it off it, an all-zero map made all the light "late").
+  rendered.result.onAxisEnergy = vignetted ? vignetted->lightBeforeGain() : sumOf(rendered.steady);
+  checkAxisAfterRender(config, job, rendered.result);  // throws under --strict
   return rendered;
 }
 

@@ -1,5 +1,6 @@
 #include "tofsim/pipeline/VignettedSegments.h"
 
+#include <cmath>
 #include <string_view>
 #include <utility>
 
@@ -34,6 +35,14 @@ void VignettedSegments::consume(const capture::Segment& segment) {
       const float* from = in.values + p * perPixel;
       float* to = out.data() + p * perPixel;
       for (std::size_t i = 0; i < perPixel; ++i) to[i] = from[i] * gain;
+    }
+    if (in.name == capture::kDirect || in.name == capture::kIndirect) {
+      // The light as the renderer gave it (what it counts off the axis too);
+      // a value that is not finite is written as 0 (FiniteSegments).
+      double sum = 0.0;
+      for (std::size_t i = 0; i < floats; ++i)
+        sum += std::isfinite(in.values[i]) ? in.values[i] : 0.0f;
+      lightBeforeGain_ += sum;
     }
     if (in.name == capture::kIndirect) indirect = &out;
     bounces = bounces || isBounce(in.name);

@@ -55,12 +55,12 @@ struct AxisLossFractions {
 };
 AxisLossFractions axisLossFractions(const capture::RenderResult& result);
 
-/// After rendering, before the outputs are committed: records the binned
-/// energy (the sum of `steady`, the volume summed over time) in result.onAxisEnergy, warns
-/// (config.strict: throws InputError) when the axis lost more than kWindowLossWarning. (The
-/// sensors' windows are checked as they stream: SensorStreams::checkWindows.)
+/// After rendering, before the outputs are committed: warns (config.strict:
+/// throws InputError) when the axis lost more than kWindowLossWarning of the
+/// light (result.onAxisEnergy filled in). (The sensors' windows are checked
+/// as they stream: SensorStreams::checkWindows.)
 void checkAxisAfterRender(const config::RunConfig& config, const capture::RenderJob& job,
-                          const Image& steady, capture::RenderResult& result);
+                          const capture::RenderResult& result);
 
 /// Sensor `index` of the config, whose window drops the fraction `lost` of
 /// its light from a volume with time axis `axis`: warns (config.strict:

@@ -37,7 +37,10 @@ struct SavedVolume {
 };
 
 /// Throws InputError naming the file when transient.npy or transient.json is
-/// missing or unreadable, or when the files disagree on the shape.
+/// missing or unreadable, or when the files disagree on the shape; and
+/// naming the value too when one is NaN, infinite or negative past
+/// round-off (no radiance). SavedVolumeStream and loadSavedComponent check
+/// the values alike, each run of pixels as it is read.
 SavedVolume loadSavedVolume(const std::filesystem::path& directory);
 
 /// The render's `indirect_bounces` from its transient.json (how many bounces

@@ -58,8 +58,9 @@ struct RenderResult {
   /// Radiance that arrived before the first or after the last bin (summed over
   /// channels); it is in neither the volume nor the steady image.
   AxisLoss offAxis;
-  /// Radiance summed over pixels, bins and channels that landed on the axis;
-  /// filled by the output stage, so offAxis can be given as a fraction.
+  /// Radiance summed over pixels, bins and channels that landed on the axis,
+  /// before the camera's vignetting as offAxis is; filled by the output
+  /// stage, so offAxis can be given as a fraction.
   double onAxisEnergy = 0.0;
   /// Volume values that were NaN or infinite (degenerate geometry, overflow)
   /// and were written as 0 instead; counted by the output stage.
