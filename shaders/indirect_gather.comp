@@ -75,9 +75,8 @@ bool visible(uint ismIndex, Vpl vpl, vec3 x, vec3 n, vec3 d, float dist, inout u
 #else
   ivec2 texel = paraboloidTexel(vpl, d, uIsmResolution);
   float stored = ism[ismIndex * uVplStride + uint(texel.y * uIsmResolution + texel.x)];
-  // One texel spans about 4/R radians; points are a sparse sample of the
-  // surfaces, so the bias grows with distance.
-  float bias = dist * (4.0 / float(uIsmResolution)) + 0.01 * uSceneScale_m;
+  // One texel spans at most 4/R radians (at the paraboloid's centre).
+  float bias = ismDepthBias(dist, -dot(n, d), 4.0 / float(uIsmResolution), 0.01 * uSceneScale_m);
   return dist - bias <= stored;
 #endif
 }

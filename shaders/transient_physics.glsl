@@ -123,6 +123,29 @@ TOFSIM_PHYSICS_FN ivec2 paraboloidTexelOf(vec3 normal, vec3 d, int resolution) {
   return clamp(ivec2(uv * float(resolution)), ivec2(0), ivec2(resolution - 1));
 }
 
+// The steepest slope the ISM test's depth tolerance allows for (ismDepthBias):
+// beyond it (receivers more than about 80 degrees from facing the VPL, whose
+// light cos(alpha) makes small) a larger tolerance would let light through
+// thin occluders.
+const float kIsmMaxSlope = 8.0f;
+
+// The imperfect shadow map's depth tolerance, metres: how much nearer than
+// the receiver a texel's stored depth may be with the receiver still lit. A
+// texel holds the nearest of the points splatted into its solid angle; on the
+// receiver's own surface those lie up to the texel's diagonal (sqrt(2)
+// texelAngle) away in direction, so up to dist sqrt(2) texelAngle tan(alpha)
+// nearer, alpha the angle between the receiver's normal and the direction to
+// the VPL (cosX = cos(alpha)). A tolerance without the slope hid visible VPLs
+// from every receiver seen obliquely, more for the longer paths: IR's late
+// light 9-12 % under exact visibility's (bench/README.md, "The ISM's bias").
+// At least one texel's depth (dist texelAngle, the tolerance of before for a
+// receiver that faces the VPL); sceneBias_m for the points' float spread.
+TOFSIM_PHYSICS_FN float ismDepthBias(float dist, float cosX, float texelAngle, float sceneBias_m) {
+  float c = max(cosX, 1e-6f);
+  float slope = 1.41421356f * sqrt(max(1.0f - c * c, 0.0f)) / c;
+  return dist * texelAngle * min(max(slope, 1.0f), kIsmMaxSlope) + sceneBias_m;
+}
+
 // Point of triangle (a, b, c) for two uniform numbers, uniform by area.
 TOFSIM_PHYSICS_FN vec3 pointOnTriangle(vec3 a, vec3 b, vec3 c, float r1, float r2) {
   float s = sqrt(r1);

@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <random>
 
@@ -41,6 +42,9 @@ TEST(IsmCullTest, EightLanesAtATimeGiveVisiblesVerdicts) {
   const float sceneScale = 1.0f;
   std::uniform_real_distribution<float> u(-1.0f, 1.0f), dist(0.0f, 1.5f);
   std::size_t hidden = 0, shown = 0;
+  // Receivers facing every way: the tolerance's slope from facing the VPL to grazing.
+  const std::array<glm::vec3, 3> receiverNormals{
+      glm::vec3(0, 0, 1), glm::normalize(glm::vec3(1, -2, 0.3f)), glm::vec3(0, -1, 0)};
   for (std::size_t first = 0; first < vpls.size(); first += kVplBlock) {
     const std::size_t n = std::min(kVplBlock, vpls.size() - first);
     for (int round = 0; round < 20; ++round) {
@@ -52,10 +56,11 @@ TEST(IsmCullTest, EightLanesAtATimeGiveVisiblesVerdicts) {
         terms.bin[i] = static_cast<int32_t>(i % 3 == 0 ? kNoLight : 5 + i);
       }
       VplTerms culled = terms;
-      ism.cullHidden(first, n, sceneScale, culled);
+      const glm::vec3 receiverNormal = receiverNormals[(first / kVplBlock + round) % 3];
+      ism.cullHidden(first, n, sceneScale, receiverNormal, culled);
       for (std::size_t i = 0; i < n; ++i) {
         const glm::vec3 d(terms.dx[i], terms.dy[i], terms.dz[i]);
-        const bool visible = ism.visible(first + i, d, terms.dist[i], sceneScale);
+        const bool visible = ism.visible(first + i, d, terms.dist[i], receiverNormal, sceneScale);
         const int32_t expected = visible ? terms.bin[i] : kNoLight;
         ASSERT_EQ(culled.bin[i], expected) << "vpl " << first + i << " lane " << i;
         (visible ? shown : hidden) += terms.bin[i] != kNoLight;
@@ -63,7 +68,7 @@ TEST(IsmCullTest, EightLanesAtATimeGiveVisiblesVerdicts) {
     }
   }
   // Both verdicts occur: the test compares something.
-  EXPECT_GT(hidden, 500u);
+  EXPECT_GT(hidden, 300u);
   EXPECT_GT(shown, 500u);
 }
 

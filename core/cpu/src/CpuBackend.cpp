@@ -361,7 +361,7 @@ void CpuBackend::gatherPixelBlock(const IndirectConstants& c, std::size_t first,
   for (std::size_t s = 0; s < perPixel; ++s) {
     if (lit && !lit[s]) continue;
     vplTerms(surfaces[s], v, first, n, c.kernel, terms[s]);
-    if (ism) ism->cullHidden(first, n, sceneScale_m_, terms[s]);
+    if (ism) ism->cullHidden(first, n, sceneScale_m_, surfaces[s].n, terms[s]);
   }
   std::size_t visible = 0;  // contributions in `pairs`
   if (footprint && !exact) {

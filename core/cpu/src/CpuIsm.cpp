@@ -22,6 +22,7 @@ struct CullLanes {
   std::size_t mapStride;    ///< floats per VPL's maps
   int resolution;
   float scaleBias;          ///< 0.01 scene scale, as visible()
+  glm::vec3 receiverNormal; ///< the pixel sample's normal (the bias's slope)
 };
 
 // visible()'s steps lane by lane: paraboloidTexelOf with the VPL's basis
@@ -44,6 +45,7 @@ __attribute__((target_clones("avx2", "default"))) void cullLanes(const CullLanes
   const int stride = static_cast<int>(c.mapStride);
   const float rf = static_cast<float>(r), perTexel = 4.0f / static_cast<float>(r);
   const float scaleBias = c.scaleBias;
+  const float rnx = c.receiverNormal.x, rny = c.receiverNormal.y, rnz = c.receiverNormal.z;
   for (std::size_t i = 0; i < n; ++i) {
     const float dx = terms.dx[i], dy = terms.dy[i], dz = terms.dz[i], dist = terms.dist[i];
     const float lx = tx[i] * dx + ty[i] * dy + tz[i] * dz;
@@ -54,7 +56,8 @@ __attribute__((target_clones("avx2", "default"))) void cullLanes(const CullLanes
     const int texelX = std::clamp(static_cast<int>(u * rf), 0, r - 1);
     const int texelY = std::clamp(static_cast<int>(v * rf), 0, r - 1);
     const float stored = maps[static_cast<int>(i) * stride + texelY * r + texelX];
-    const float bias = dist * perTexel + scaleBias;
+    const float cosX = -(rnx * dx + rny * dy + rnz * dz);
+    const float bias = physics::ismDepthBias(dist, cosX, perTexel, scaleBias);
     const bool hidden = !(dist - bias <= stored);
     terms.bin[i] = hidden ? kNoLight : terms.bin[i];
   }
@@ -108,7 +111,8 @@ glm::vec3 CpuIsm::samplePoint(uint32_t h0, uint32_t h1, uint32_t h2) const {
 void CpuIsm::splat(std::size_t vpl, float* map) const {
   const int r = settings_.ism_resolution;
   const auto index = static_cast<uint32_t>(vpl);
-  for (uint32_t j = 0; j < static_cast<uint32_t>(settings_.points_per_vpl); ++j) {
+  const auto points = static_cast<uint32_t>(capture::ismPointsPerVpl(settings_));
+  for (uint32_t j = 0; j < points; ++j) {
     // The steps of ism_splat.comp.
     const uint32_t h0 = physics::hash3(seed32_, index, j);
     const uint32_t h1 = physics::pcgHash(h0), h2 = physics::pcgHash(h1);
@@ -165,23 +169,26 @@ void CpuIsm::build(std::size_t firstVpl, std::size_t count, int threads) {
   });
 }
 
-bool CpuIsm::visible(std::size_t vpl, const glm::vec3& d, float dist, float sceneScale_m) const {
+bool CpuIsm::visible(std::size_t vpl, const glm::vec3& d, float dist, const glm::vec3& receiverNormal,
+                     float sceneScale_m) const {
   // The ISM branch of visible() in indirect_gather.comp.
   const int r = settings_.ism_resolution;
   const glm::ivec2 t = physics::paraboloidTexelOf(vplNormal_[vpl], d, r);
   const float stored = map(vpl)[t.y * r + t.x];
-  const float bias = dist * (4.0f / static_cast<float>(r)) + 0.01f * sceneScale_m;
+  const float cosX = -(receiverNormal.x * d.x + receiverNormal.y * d.y + receiverNormal.z * d.z);
+  const float bias =
+      physics::ismDepthBias(dist, cosX, 4.0f / static_cast<float>(r), 0.01f * sceneScale_m);
   return dist - bias <= stored;
 }
 
 void CpuIsm::cullHidden(std::size_t first, std::size_t n, float sceneScale_m,
-                        VplTerms& terms) const {
+                        const glm::vec3& receiverNormal, VplTerms& terms) const {
   TOFSIM_CHECK(first >= firstVpl_ && first + n <= firstVpl_ + builtCount_);
   const CullLanes lanes{tx_.data() + first, ty_.data() + first, tz_.data() + first,
                         bx_.data() + first, by_.data() + first, bz_.data() + first,
                         nx_.data() + first, ny_.data() + first, nz_.data() + first,
                         map(first),         floatsPerVpl_,      settings_.ism_resolution,
-                        0.01f * sceneScale_m};
+                        0.01f * sceneScale_m, receiverNormal};
   cullLanes(lanes, n, terms);
 }
 

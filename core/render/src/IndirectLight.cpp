@@ -127,12 +127,12 @@ void IndirectLight::buildVisibility(std::size_t firstVpl, std::size_t count) {
   splat_.use();
   splat_.set("uFirstVpl", static_cast<unsigned>(firstVpl));
   splat_.set("uVplCount", static_cast<unsigned>(count));
-  splat_.set("uPointsPerVpl", static_cast<unsigned>(settings_.points_per_vpl));
+  splat_.set("uPointsPerVpl", static_cast<unsigned>(capture::ismPointsPerVpl(settings_)));
   splat_.set("uVplStride", stride);
   splat_.set("uIsmResolution", settings_.ism_resolution);
   splat_.set("uSeed", static_cast<unsigned>(seed_ ^ (seed_ >> 32)));
   splat_.set("uTriangleCount", static_cast<unsigned>(triangleCount_));
-  dispatchThreads(count * static_cast<std::size_t>(settings_.points_per_vpl));
+  dispatchThreads(count * static_cast<std::size_t>(capture::ismPointsPerVpl(settings_)));
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
   const auto level = [&](const gl::Program& p, std::size_t fine, std::size_t threadsPerVpl) {
     p.use();

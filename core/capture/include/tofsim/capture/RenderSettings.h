@@ -28,7 +28,9 @@ struct IndirectSettings {
   /// light once per flat surface among its samples (cpu MergedSamples.h).
   bool merge_pixel_samples = false;
   int32_t ism_resolution = 32;    ///< side of each VPL's paraboloid depth map
-  int32_t points_per_vpl = 1000;  ///< ISM points splatted per VPL
+  /// ISM points splatted per VPL; 0 = two per texel of the finest map
+  /// (ismPointsPerVpl).
+  int32_t points_per_vpl = 0;
   bool ism_pull_push = true;      ///< fill ISM holes by pull-push
   Visibility visibility = Visibility::Ism;
   /// Upper bound of the geometry term cos*cos/d^2 (1/m^2); <= 0 disables clamping.
@@ -55,6 +57,18 @@ struct IndirectSettings {
   /// bytes do not depend on it.
   int32_t trace_threads = 0;
 };
+
+/// The ISM points splatted per VPL: points_per_vpl, or where 0, two per
+/// texel of the map (2 ism_resolution^2). The ISM's verdicts depend on the
+/// points per texel: sparser maps have holes whose pull-push fill lies
+/// behind the occluders (light leaks), denser ones find each texel's nearest
+/// surface where two meet (light hidden); about two per texel balances them
+/// (bench/README.md, "The ISM's bias").
+inline int32_t ismPointsPerVpl(const IndirectSettings& s) {
+  if (s.points_per_vpl > 0) return s.points_per_vpl;
+  const int64_t two = 2 * int64_t{s.ism_resolution} * s.ism_resolution;
+  return static_cast<int32_t>(two < (int64_t{1} << 24) ? two : (int64_t{1} << 24));
+}
 
 struct RenderSettings {
   /// Arrival-time histogram bins, and how optical path becomes time: the
