@@ -2,7 +2,8 @@
 // volume is collected in memory (capture::VolumeCollector) through the CLI's
 // way through a render (pipeline::renderCapture); with one, the CLI's own run
 // (pipeline::runRender) writes the files and the arrays are read back from
-// them. The GIL is released while rendering; Ctrl-C interrupts it.
+// them. _Renderer keeps a scene and its renderer across in-memory renders
+// (tofsim.Renderer). The GIL is released while rendering; Ctrl-C interrupts it.
 
 #include <pybind11/stl.h>
 
@@ -21,6 +22,7 @@
 #include "tofsim/io/Exr.h"
 #include "tofsim/io/Hdf5Capture.h"
 #include "tofsim/io/Npy.h"
+#include "tofsim/ir/IrRenderer.h"
 #include "tofsim/pipeline/FiniteSegments.h"
 #include "tofsim/pipeline/OutputProducts.h"
 #include "tofsim/pipeline/Progress.h"
@@ -86,10 +88,11 @@ struct Rendered {
 
 // The CLI's way through a render (pipeline::renderCapture: the same renderer,
 // non-finite values written as 0 and counted, the time axis checked before
-// and after under render.strict) into memory instead of files.
-Rendered renderInMemory(const config::RunConfig& config, bool quiet) {
+// and after under render.strict) into memory instead of files: of `scene`,
+// with `kept` (a renderer made earlier, its scene prepared once) or a new one.
+Rendered renderInMemory(const config::RunConfig& config, const scene::Scene& scene,
+                        const pipeline::RendererChoice* kept, bool quiet) {
   pipeline::Progress progress("render", quiet);
-  const scene::Scene scene = scene::loadGltf(config.scene_file);
   const capture::RenderJob job = pipeline::prepareCapture(config, scene);
   // IR's light by bounce: with N > 1 bounces the segments carry bounce1 ..
   // bounceN (N more volumes in memory); with one, bounce 1 is the indirect light.
@@ -100,7 +103,9 @@ Rendered renderInMemory(const config::RunConfig& config, bool quiet) {
   pipeline::CaptureConsumers consumers{{&collector}, {}};
   for (int32_t k = 1; bounces > 1 && k <= bounces; ++k) consumers.bounces.push_back(k);
   pipeline::RenderedCapture rendered =
-      pipeline::renderCapture(config, job, gl::eglPlatformFromEnvironment(), consumers, progress);
+      kept ? pipeline::renderCapture(config, job, *kept, consumers, progress)
+           : pipeline::renderCapture(config, job, gl::eglPlatformFromEnvironment(), consumers,
+                                     progress);
   Rendered r;
   r.device = rendered.device;
   r.result = std::move(rendered.result);
@@ -215,10 +220,72 @@ py::dict render(const config::RunConfig& config, const std::optional<std::string
   {
     py::gil_scoped_release released;
     SigintScope sigint(mainThread);
-    r = outputDir ? renderToFolder(config, *outputDir, quiet) : renderInMemory(config, quiet);
+    r = outputDir ? renderToFolder(config, *outputDir, quiet)
+                  : renderInMemory(config, scene::loadGltf(config.scene_file), nullptr, quiet);
   }
   return toPython(r, config.render.time);
 }
+
+// A scene loaded and a renderer made once (its device; the scene's buffers
+// and BVH at the first render, IrRenderer keeping them while the scene is
+// the same object), then any number of in-memory renders of configs of the
+// same scene, renderer and backend: another camera, light, time axis, render
+// settings. Dataset generation, sweeps and optimisation loops pay the
+// loading once (bench/README.md, "A renderer that stays loaded").
+class KeptRenderer {
+ public:
+  KeptRenderer(const config::RunConfig& config, bool quiet)
+      : first_(config), quiet_(quiet), scene_(loadScene(config)) {
+    renderer_ = pipeline::makeRenderer(config, gl::eglPlatformFromEnvironment());
+  }
+
+  py::dict render(const config::RunConfig& config) {
+    checkSameSetup(config);
+    Rendered r;
+    {
+      py::gil_scoped_release released;
+      SigintScope sigint(onMainThread());
+      r = renderInMemory(config, scene_, &renderer_, quiet_);
+    }
+    return toPython(r, config.render.time);
+  }
+
+  /// How many times the renderer prepared the scene (IR; 0 for the reference).
+  std::size_t scenePreparations() const {
+    const auto* ir = dynamic_cast<const ir::IrRenderer*>(renderer_.renderer.get());
+    return ir ? ir->scenePreparations() : 0;
+  }
+
+  std::string device() const { return renderer_.renderer->description(); }
+
+ private:
+  static scene::Scene loadScene(const config::RunConfig& config) {
+    if (config.nlos || config.sequence) {
+      throw py::value_error(
+          "tofsim.Renderer renders camera captures; render an `nlos:` or `sequence:` config "
+          "with tofsim.render");
+    }
+    return scene::loadGltf(config.scene_file);
+  }
+
+  // What the kept scene and renderer were made from cannot change.
+  void checkSameSetup(const config::RunConfig& c) const {
+    const auto refuse = [](const std::string& what) {
+      throw py::value_error(what +
+                            " differs from the Renderer's; make a new tofsim.Renderer for it");
+    };
+    if (c.nlos || c.sequence) loadScene(c);
+    if (c.scene_file != first_.scene_file) refuse("the scene (" + c.scene_file.string() + ")");
+    if (c.renderer != first_.renderer) refuse("render.renderer");
+    if (c.backend != first_.backend) refuse("render.backend");
+    if (c.cpu_threads != first_.cpu_threads) refuse("render.threads");
+  }
+
+  config::RunConfig first_;
+  bool quiet_;
+  scene::Scene scene_;
+  pipeline::RendererChoice renderer_;
+};
 
 }  // namespace
 
@@ -238,6 +305,11 @@ py::object readCaptureArray(const std::string& path, const std::string& dataset)
 
 void bindRender(py::module_& m) {
   m.def("_render", &render, py::arg("config"), py::arg("output_dir"), py::arg("quiet"));
+  py::class_<KeptRenderer>(m, "_Renderer")
+      .def(py::init<const config::RunConfig&, bool>(), py::arg("config"), py::arg("quiet"))
+      .def("render", &KeptRenderer::render, py::arg("config"))
+      .def("scene_preparations", &KeptRenderer::scenePreparations)
+      .def("device", &KeptRenderer::device);
   m.def("_read_exr", &readExrArray, py::arg("path"));
   m.def("_read_capture", &readCaptureArray, py::arg("path"), py::arg("dataset"));
 }

@@ -3,6 +3,8 @@
     import tofsim
     config = tofsim.load_config("configs/cornell_box.yaml", overrides={"time.bins": 300})
     result = tofsim.render(config)           # NumPy arrays, no files
+    renderer = tofsim.Renderer(config)       # the scene prepared once
+    moved = renderer.render({"light.position": [0.3, 0.5, -0.8]})
     result.transient.shape                   # (H, W, T, C) float32
     spad = tofsim.sense(result.transient, result.time,
                         {"type": "spad", "cycles": 10000, "pde": 0.3})
@@ -15,13 +17,14 @@ bad input raises ConfigError (a ValueError) with file, line, column and key.
 
 from ._tofsim import Config, ConfigError
 from ._config import load_config
-from ._render import NlosResult, RenderResult, SequenceResult, TimeAxis, load, render
+from ._render import NlosResult, Renderer, RenderResult, SequenceResult, TimeAxis, load, render
 from ._sense import SensorResult, SensorWarning, sense
 
 __all__ = [
     "Config",
     "ConfigError",
     "NlosResult",
+    "Renderer",
     "RenderResult",
     "SensorResult",
     "SequenceResult",

@@ -232,6 +232,62 @@ def render(config, renderer=None, backend=None, output_dir=None, quiet=True):
     return RenderResult(**out)
 
 
+class Renderer:
+    """A scene prepared once, rendered many times: for dataset generation,
+    sweeps and optimisation loops, where tofsim.render would load the glTF,
+    make the renderer (its GL context or CPU threads) and build the scene's
+    buffers and BVH again for every capture.
+
+        r = tofsim.Renderer("configs/cornell_box.yaml", overrides={"sensors": []})
+        for x in numpy.linspace(0.1, 0.5, 100):
+            result = r.render({"light.position": [x, 0.5, -0.8]})  # a RenderResult
+
+    config, overrides, renderer, backend: as for tofsim.render; they fix the
+    scene (render.scene), render.renderer, render.backend and render.threads.
+    render(overrides) renders that config with further overrides (a dict or
+    "key.path=value" strings: another camera, light, time axis or render
+    settings, each render validated as tofsim.render's) into NumPy arrays,
+    without files, the same bytes as tofsim.render of the same config; an
+    override of what the Renderer was made from raises ValueError. Camera
+    captures only (not `nlos:` nor `sequence:` configs). Use it from one
+    thread at a time.
+    """
+
+    def __init__(self, config, overrides=None, renderer=None, backend=None, quiet=True):
+        extra = {}
+        if renderer is not None:
+            extra["render.renderer"] = renderer
+        if backend is not None:
+            extra["render.backend"] = backend
+        self._config = load_config(config, overrides)
+        if extra:
+            self._config = load_config(self._config, extra)
+        self._native = _tofsim._Renderer(self._config, quiet)
+
+    @property
+    def config(self):
+        """The Config every render starts from."""
+        return self._config
+
+    @property
+    def device(self):
+        """What renders (the GL renderer string, or the CPU backend)."""
+        return self._native.device()
+
+    @property
+    def scene_preparations(self):
+        """How many times the scene was prepared (buffers, BVH): 1 after any
+        number of renders with instant radiosity; 0 for the reference renderer."""
+        return self._native.scene_preparations()
+
+    def render(self, overrides=None):
+        config = self._config if not overrides else load_config(self._config, overrides)
+        out = self._native.render(config)
+        out["time"] = TimeAxis(**out["time"])
+        out["output_dir"] = None
+        return RenderResult(**out)
+
+
 def load(folder):
     """Reads back the output folder of a camera render (`tofsim render -o
     folder` or render(..., output_dir=folder)) as a RenderResult: its .npy
