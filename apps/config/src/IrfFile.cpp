@@ -3,13 +3,11 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
-#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
-#include <utility>
 #include <vector>
 
 #include "ConfigPath.h"
@@ -141,24 +139,9 @@ SpadIrf parseIrf(const ConfigNode& n) {
     const double lo = s.first_time_s - 0.5 * s.width_s;
     const double hi = lo + static_cast<double>(s.values.size()) * s.width_s;
     if (!(irf.t0_s >= lo && irf.t0_s <= hi)) {
-      // The span's ends to 6 digits in a unit that reads: sums of sample
-      // widths, not values read (durationText would write every digit).
-      const auto rounded = [](double v) {
-        const std::pair<double, const char*> units[] = {
-            {1.0, "s"}, {1e-3, "ms"}, {1e-6, "us"}, {1e-9, "ns"}, {1e-12, "ps"}};
-        std::pair<double, const char*> unit{1e-15, "fs"};
-        for (const auto& u : units) {
-          if (std::fabs(v) >= u.first) {
-            unit = u;
-            break;
-          }
-        }
-        char text[48];
-        std::snprintf(text, sizeof text, "%.6g %s", v / unit.first, unit.second);
-        return std::string(text);
-      };
       n.failKey("t0", "t0 " + durationText(irf.t0_s) + " lies outside the response in " +
-                          path.string() + ", which spans [" + rounded(lo) + ", " + rounded(hi) +
+                          path.string() + ", which spans [" + readableDuration(lo) + ", " +
+                          readableDuration(hi) +
                           "] on its own time axis (t0 is a time of that response: peak, "
                           "centroid or a time within it)");
     }

@@ -20,10 +20,11 @@ constexpr double kMaxFrameTime_s = 1e9;
 std::string frameTimeProblem(double t, const double* previous) {
   if (!(std::fabs(t) <= kMaxFrameTime_s)) {
     return "a frame time must be within +-" + durationText(kMaxFrameTime_s) +
-           " (about 32 years of scene time; got " + durationText(t) + ")";
+           " (about 32 years of scene time; got " + readableDuration(t) + ")";
   }
   if (previous && !(t > *previous)) {
-    return "frame times must increase: " + durationText(t) + " after " + durationText(*previous);
+    return "frame times must increase: " + readableDuration(t) + " after " +
+           readableDuration(*previous);
   }
   return "";
 }
