@@ -207,6 +207,9 @@ void parseOutput(const ConfigNode& node, const RunConfig& config, OutputConfig& 
       ranges->fail("expected a mapping of picture name -> [lo, hi]");
     }
     for (const std::string& name : ranges->keys()) {
+      // A key without a value (`depth:`) is listed but not `has` (found by
+      // fuzz_sequence: r[0] of no values).
+      if (!ranges->has(name)) ranges->failKey(name, "must be [lo, hi] with lo < hi (got nothing)");
       const std::vector<double> r = ranges->getDoubles(name, 2, {});
       if (!(std::isfinite(r[0]) && std::isfinite(r[1]) && r[0] < r[1])) {
         ranges->failKey(name, "must be [lo, hi] with lo < hi");
