@@ -60,6 +60,37 @@ binChunk = buf + b"\0" * ((4 - len(buf) % 4) % 4)
 body = struct.pack("<I4s", len(jsonChunk), b"JSON") + jsonChunk + struct.pack("<I4s", len(binChunk), b"BIN\0") + binChunk
 out("fuzz_gltf", "triangle.glb", b"glTF" + struct.pack("<II", 2, 12 + len(body)) + body)
 
+# capture sequences (fuzz/SequenceInput.h): the shipped moving block (its
+# config alone, the scene through the scenes/ link), and a config, NUL, the
+# triangle moved by a LINEAR translation, a CUBICSPLINE rotation and a STEP
+# scale channel (times accessor 2, outputs 3 to 5).
+out("fuzz_sequence", "moving_block.yaml", open(os.path.join(src, "configs/moving_block.yaml")).read())
+times = struct.pack("<2f", 0, 1)
+moves = {"translation": struct.pack("<6f", 0, 0, 0, 0.1, 0, 0),
+         "rotation": struct.pack("<24f", *([0] * 4 + [0, 0, 0, 1] + [0] * 4) * 2),
+         "scale": struct.pack("<6f", 1, 1, 1, 2, 2, 2)}
+animated = json.loads(json.dumps(embedded))
+abuf = buf + times + b"".join(moves.values())
+animated["buffers"] = [{"byteLength": len(abuf), "uri": "data:application/octet-stream;base64," +
+                        base64.b64encode(abuf).decode()}]
+offset = len(buf)
+for data in [times] + list(moves.values()):
+    animated["bufferViews"].append({"buffer": 0, "byteOffset": offset, "byteLength": len(data)})
+    offset += len(data)
+animated["accessors"].append({"bufferView": 2, "componentType": 5126, "count": 2, "type": "SCALAR",
+                              "min": [0], "max": [1]})
+animated["accessors"] += [{"bufferView": 3, "componentType": 5126, "count": 2, "type": "VEC3"},
+                          {"bufferView": 4, "componentType": 5126, "count": 6, "type": "VEC4"},
+                          {"bufferView": 5, "componentType": 5126, "count": 2, "type": "VEC3"}]
+animated["animations"] = [{"name": "move", "channels": [
+    {"sampler": i, "target": {"node": 0, "path": p}} for i, p in enumerate(moves)], "samplers": [
+    {"input": 2, "output": 3, "interpolation": "LINEAR"},
+    {"input": 2, "output": 4, "interpolation": "CUBICSPLINE"},
+    {"input": 2, "output": 5, "interpolation": "STEP"}]}]
+out("fuzz_sequence", "triangle_moving", "scene: input.gltf\ncamera: {position: [0, 0, 3], look_at: [0, 0, 0], "
+    "resolution: [4, 4]}\nlight: {position: [0, 0, 3]}\ntime: {bins: 8}\n"
+    "sequence: {rate: 4 Hz, count: 5, video: false}\n\0" + json.dumps(animated))
+
 # npy and a saved render (transient.json, NUL, transient.npy)
 out("fuzz_npy", "volume.npy", npy((2, 1, 2, 3), [float(i) for i in range(12)]))
 out("fuzz_npy", "scalar.npy", npy((), [1.5]))

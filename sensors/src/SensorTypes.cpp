@@ -1,9 +1,14 @@
 // The sensor descriptors of SensorType.h, one block per model.
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <string>
 
+#include "SpadCrosstalk.h"
+#include "SpadFlux.h"
 #include "tofsim/sensors/CwTofPresets.h"
 #include "tofsim/sensors/SensorType.h"
+#include "tofsim/util/Error.h"
 
 namespace tofsim::sensors {
 
@@ -15,10 +20,37 @@ std::uintmax_t imageBytes(int32_t width, int32_t height) {
 }
 }  // namespace
 
+std::string timeKernelProblem(const TimeKernelUse& k) {
+  const double reach = kernelReachBins(k.support, k.bin_width);
+  if (reach <= kMaxKernelReachBins) return "";
+  char text[200];
+  std::snprintf(text, sizeof text,
+                "reaches %.3g bins of %.3g %s (%.3g %s) from zero delay; a blur kernel reaches at "
+                "most %.0f bins",
+                reach, k.bin_width, k.unit, std::max(std::fabs(k.support.lo), std::fabs(k.support.hi)),
+                k.unit, kMaxKernelReachBins);
+  return text;
+}
+
+namespace {
+// The config checks each kernel where it reads the keys; a volume on another
+// axis (`tofsim sense`, the Python module) is checked again where it opens.
+template <typename Params>
+void checkTimeKernels(const Params& p, const TimeAxis& axis) {
+  for (const TimeKernelUse& k : SensorType<Params>::timeKernels(p, axis)) {
+    const std::string problem = timeKernelProblem(k);
+    if (!problem.empty()) {
+      throw InputError(std::string(SensorType<Params>::name) + " sensor `" + k.key + "`: " + problem);
+    }
+  }
+}
+}  // namespace
+
 // --- streak --------------------------------------------------------------------
 std::unique_ptr<SensorStream> SensorType<StreakParams>::open(const StreakParams& p,
                                                              const VolumeShape& shape,
                                                              const StreamOptions& options) {
+  checkTimeKernels(p, shape.axis);
   return openStreak(p, shape, options);
 }
 std::vector<std::string> SensorType<StreakParams>::warnings(const StreakParams&, const VolumeShape&,
@@ -34,11 +66,20 @@ std::uintmax_t SensorType<StreakParams>::outputBytes(const StreakParams& p, int3
 std::optional<InstrumentWindow> SensorType<StreakParams>::window(const StreakParams& p) {
   return InstrumentWindow{p.common, p.bins, p.rows};
 }
+std::vector<TimeKernelUse> SensorType<StreakParams>::timeKernels(const StreakParams& p,
+                                                                 const TimeAxis& render) {
+  // StreakStream's: a Gaussian in time on its bins, one along x on pixels.
+  return {{"time_fwhm", gaussianTailSupport(fwhmToSigma(p.time_fwhm_s), 0.0, 0.0),
+           resolveBins(p.bins, render).bin_width_s, "s"},
+          {"spatial_fwhm", gaussianTailSupport(fwhmToSigma(p.spatial_fwhm_px), 0.0, 0.0), 1.0,
+           "px"}};
+}
 
 // --- spad ----------------------------------------------------------------------
 std::unique_ptr<SensorStream> SensorType<SpadParams>::open(const SpadParams& p,
                                                            const VolumeShape& shape,
                                                            const StreamOptions& options) {
+  checkTimeKernels(p, shape.axis);
   return openSpad(p, shape, options);
 }
 std::vector<std::string> SensorType<SpadParams>::warnings(const SpadParams& p,
@@ -76,6 +117,19 @@ std::uintmax_t SensorType<SpadParams>::outputBytes(const SpadParams& p, int32_t 
 std::optional<InstrumentWindow> SensorType<SpadParams>::window(const SpadParams& p) {
   return InstrumentWindow{p.common, p.bins, {}};
 }
+std::vector<TimeKernelUse> SensorType<SpadParams>::timeKernels(const SpadParams& p,
+                                                               const TimeAxis& render) {
+  const double binWidth_s = resolveBins(p.bins, render).bin_width_s;
+  const KernelSupport support = detail::spadKernelSupport(p);
+  // The key named is the one that widens the kernel most: the tail reaches
+  // past the Gaussian's 6 sigma by its 14 time constants.
+  const char* key = p.irf.present() ? "irf"
+                    : support.hi + support.lo > -support.lo ? "jitter_tail"
+                    : p.jitter_fwhm_s >= p.pulse_fwhm_s     ? "jitter_fwhm"
+                                                            : "pulse_fwhm";
+  return {{key, support, binWidth_s, "s"},
+          {"crosstalk_delay", detail::crosstalkDelaySupport(p.crosstalk_delay_s), binWidth_s, "s"}};
+}
 
 // --- cwtof ---------------------------------------------------------------------
 std::unique_ptr<SensorStream> SensorType<CwTofParams>::open(const CwTofParams& p,
@@ -107,6 +161,10 @@ std::uintmax_t SensorType<CwTofParams>::outputBytes(const CwTofParams& p, int32_
 }
 std::optional<InstrumentWindow> SensorType<CwTofParams>::window(const CwTofParams&) {
   return std::nullopt;
+}
+std::vector<TimeKernelUse> SensorType<CwTofParams>::timeKernels(const CwTofParams&,
+                                                                const TimeAxis&) {
+  return {};
 }
 
 }  // namespace tofsim::sensors

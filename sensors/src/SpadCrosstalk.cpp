@@ -13,11 +13,15 @@ namespace {
 constexpr double kMaxHazard = 1.0 - 1e-12;
 
 BinKernel delayKernel(double delay_s, double binWidth_s) {
-  // An exponential delay (no Gaussian part), transferred exactly into bins
-  // for an avalanche uniform in its bin.
+  // An exponential delay (no Gaussian part: sigma 0, all of it tail),
+  // transferred exactly into bins for an avalanche uniform in its bin.
   return delay_s > 0.0 ? gaussianTailKernel(0.0, 1.0, delay_s, binWidth_s) : BinKernel{};
 }
 }  // namespace
+
+KernelSupport crosstalkDelaySupport(double delay_s) {
+  return delay_s > 0.0 ? gaussianTailSupport(0.0, 1.0, delay_s) : KernelSupport{};
+}
 
 SpadCrosstalk::SpadCrosstalk(const SpadParams& p, int32_t bins, double binWidth_s, int32_t deadBins,
                              int32_t width, int32_t height, std::size_t batch)

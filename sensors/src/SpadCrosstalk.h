@@ -34,6 +34,9 @@
 
 namespace tofsim::sensors::detail {
 
+/// The shifts (s) of the delayed crosstalk's kernel, for the check of its width.
+KernelSupport crosstalkDelaySupport(double delay_s);
+
 class SpadCrosstalk {
  public:
   SpadCrosstalk(const SpadParams& p, int32_t bins, double binWidth_s, int32_t deadBins,

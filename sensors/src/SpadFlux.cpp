@@ -11,16 +11,35 @@ namespace tofsim::sensors {
 
 namespace detail {
 
+namespace {
+// The measured response's first sample edge, relative to its time zero.
+double irfStart_s(const SpadIrf& irf) {
+  return irf.first_time_s - 0.5 * irf.sample_width_s - irfTimeZero_s(irf);
+}
+
+// Pulse and jitter, both Gaussian: their sum's sigma.
+double pulseJitterSigma_s(const SpadParams& p) {
+  const double sp = fwhmToSigma(p.pulse_fwhm_s);
+  const double sj = fwhmToSigma(p.jitter_fwhm_s);
+  return std::sqrt(sp * sp + sj * sj);
+}
+}  // namespace
+
 BinKernel spadKernel(const SpadParams& p, const TimeAxis& axis) {
   if (p.irf.present()) {
     const SpadIrf& irf = p.irf;
-    const double start = irf.first_time_s - 0.5 * irf.sample_width_s - irfTimeZero_s(irf);
-    return piecewiseConstantKernel(irf.values, start, irf.sample_width_s, axis.bin_width_s);
+    return piecewiseConstantKernel(irf.values, irfStart_s(irf), irf.sample_width_s,
+                                   axis.bin_width_s);
   }
-  const double sp = fwhmToSigma(p.pulse_fwhm_s);
-  const double sj = fwhmToSigma(p.jitter_fwhm_s);
-  return gaussianTailKernel(std::sqrt(sp * sp + sj * sj), p.jitter_tail_fraction, p.jitter_tail_s,
+  return gaussianTailKernel(pulseJitterSigma_s(p), p.jitter_tail_fraction, p.jitter_tail_s,
                             axis.bin_width_s);
+}
+
+KernelSupport spadKernelSupport(const SpadParams& p) {
+  if (p.irf.present()) {
+    return piecewiseConstantSupport(p.irf.values.size(), irfStart_s(p.irf), p.irf.sample_width_s);
+  }
+  return gaussianTailSupport(pulseJitterSigma_s(p), p.jitter_tail_fraction, p.jitter_tail_s);
 }
 
 // With a DNL table the light is first spread over the nominal bins (where the

@@ -19,6 +19,8 @@ namespace tofsim::sensors::detail {
 /// Arrival-to-timestamp kernel on `axis`'s bins: the measured IRF (its time
 /// zero at 0) or the Gaussian of pulse and jitter with its exponential tail.
 BinKernel spadKernel(const SpadParams& p, const TimeAxis& axis);
+/// The shifts spadKernel lays out (s), for the check of its width.
+KernelSupport spadKernelSupport(const SpadParams& p);
 
 /// Flux per cycle of one pixel from its render bins (signal in
 /// photo-electrons) before the gate; `resampled` is scratch.

@@ -23,9 +23,27 @@ double erfcx(double u) {
 
 double fwhmToSigma(double fwhm) { return fwhm / (2.0 * std::sqrt(2.0 * std::log(2.0))); }
 
+double kernelReachBins(const KernelSupport& support, double binWidth) {
+  return std::max(std::fabs(std::floor(support.lo / binWidth)),
+                  std::fabs(std::ceil(support.hi / binWidth))) +
+         1.0;
+}
+
+KernelSupport gaussianTailSupport(double sigma, double tailFraction, double tailTau) {
+  const bool tail = tailFraction > 0.0 && tailTau > 0.0;
+  return {-6.0 * sigma, 6.0 * sigma + (tail ? 14.0 * tailTau : 0.0)};
+}
+
+KernelSupport piecewiseConstantSupport(std::size_t samples, double start, double sampleWidth) {
+  return {start, start + static_cast<double>(samples) * sampleWidth};
+}
+
 BinKernel makeBinKernel(const std::function<double(double)>& integratedCdf, double binWidth,
                         double lo, double hi) {
   TOFSIM_CHECK(binWidth > 0.0 && hi >= lo);
+  // Bad input never gets here (the config checks each model's kernels):
+  // beyond this the bin indices below would not fit an int32.
+  TOFSIM_CHECK(kernelReachBins({lo, hi}, binWidth) <= kMaxKernelReachBins);
   const auto dLo = static_cast<int32_t>(std::floor(lo / binWidth)) - 1;
   const auto dHi = static_cast<int32_t>(std::ceil(hi / binWidth)) + 1;
   BinKernel k;
@@ -67,7 +85,7 @@ BinKernel piecewiseConstantKernel(const std::vector<double>& density, double sta
     F[k + 1] = F[k] + p[k];
     G[k + 1] = G[k] + (F[k] + 0.5 * p[k]) * sampleWidth;
   }
-  const double end = start + static_cast<double>(n) * sampleWidth;
+  const double end = piecewiseConstantSupport(n, start, sampleWidth).hi;
   auto integrated = [&](double x) {
     if (x <= start) return 0.0;
     if (x >= end) return G[n] + F[n] * (x - end);
@@ -111,9 +129,8 @@ BinKernel gaussianTailKernel(double sigma, double tailFraction, double tailTau, 
   auto integrated = [=](double x) {
     return tail ? (1.0 - tailFraction) * gaussG(x) + tailFraction * exGaussG(x) : gaussG(x);
   };
-  const double lo = -6.0 * sigma;
-  const double hi = 6.0 * sigma + (tail ? 14.0 * tailTau : 0.0);
-  return makeBinKernel(integrated, binWidth, lo, hi);
+  const KernelSupport support = gaussianTailSupport(sigma, tailFraction, tailTau);
+  return makeBinKernel(integrated, binWidth, support.lo, support.hi);
 }
 
 void convolveConserving(const double* in, int32_t n, int64_t stride, const BinKernel& kernel,

@@ -139,7 +139,8 @@ TEST_F(ConfigKeysWriterTest, EffectiveConfigWritesEveryDeclaredKey) {
     leafPaths(YAML::Load(effectiveConfigYaml(loadRunConfig(dir_ / "n.yaml"))), "", written);
   }
   // A lens, inline and from a calibration file (their keys exclude each other).
-  std::ofstream(dir_ / "calib.yaml") << "%YAML:1.0\n---\ncamera_matrix: !!opencv-matrix\n"
+  std::ofstream(dir_ / "calib.yaml") << "%YAML:1.0\n---\nimage_width: 64\nimage_height: 64\n"
+                                        "camera_matrix: !!opencv-matrix\n"
                                         "  rows: 3\n  cols: 3\n  dt: d\n"
                                         "  data: [50, 0, 31.5, 0, 50, 31.5, 0, 0, 1]\n"
                                         "distortion_coefficients: [0.1, 0, 0, 0, 0]\n";

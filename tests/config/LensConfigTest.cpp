@@ -157,7 +157,48 @@ TEST_F(LensConfigTest, BadCalibrationFilesAreLocatedInThem) {
   EXPECT_NE(rows.find("rows.yaml:3"), std::string::npos) << rows;
   EXPECT_NE(rows.find("rows x cols"), std::string::npos) << rows;
   const std::string missing = errorOf("  lens: {calibration: missing.yaml}\n");
-  EXPECT_NE(missing.find("cannot read the calibration"), std::string::npos) << missing;
+  EXPECT_NE(missing.find("calibration file not found"), std::string::npos) << missing;
+  std::filesystem::create_directory(dir_ / "calib_folder.yaml");
+  const std::string folder = errorOf("  lens: {calibration: calib_folder.yaml}\n");
+  EXPECT_NE(folder.find("camera.lens.calibration"), std::string::npos) << folder;
+  EXPECT_NE(folder.find("is a folder, not a file"), std::string::npos) << folder;
+}
+
+// Issue 39: a camera matrix is in pixels of the image it was calibrated on,
+// so a calibration file must say which (it was accepted silently without).
+TEST_F(LensConfigTest, CalibrationWithoutItsImageSizeIsALocatedError) {
+  std::string text = kCalibration;
+  text.erase(text.find("image_height: 60\n"), std::string("image_height: 60\n").size());
+  write("noheight.yaml", text);
+  const std::string e = errorOf("  resolution: [80, 60]\n  lens: {calibration: noheight.yaml}\n");
+  EXPECT_NE(e.find("noheight.yaml"), std::string::npos) << e;
+  EXPECT_NE(e.find("has no image_height"), std::string::npos) << e;
+  EXPECT_NE(e.find("add image_width and image_height"), std::string::npos) << e;
+}
+
+// Issue 39: intrinsics far from the image (cx = 1e6 px, fx = 1e-300 px) are
+// named as such, at the matrix, not reported as a distortion that does not
+// invert.
+TEST_F(LensConfigTest, IntrinsicsOutOfRangeForTheImageAreNamed) {
+  const auto matrix = [](const std::string& fx, const std::string& cx) {
+    return "  resolution: [64, 48]\n  lens: {camera_matrix: [" + fx + ", 0, " + cx +
+           ", 0, 60, 23.5, 0, 0, 1], distortion: [-0.1, 0, 0, 0]}\n";
+  };
+  const std::string cx = errorOf(matrix("60", "1e6"));
+  EXPECT_NE(cx.find("camera.lens.camera_matrix"), std::string::npos) << cx;
+  EXPECT_NE(cx.find("cx = 1e+06 px is outside [-64, 128] px"), std::string::npos) << cx;
+  EXPECT_EQ(cx.find("invertible"), std::string::npos) << cx;
+  const std::string fx = errorOf(matrix("1e-300", "31.5"));
+  EXPECT_NE(fx.find("fx = 1e-300 px is outside [0.064, 64000] px"), std::string::npos) << fx;
+  EXPECT_NE(fx.find("64 x 48 image"), std::string::npos) << fx;
+  EXPECT_EQ(errorOf(matrix("60", "31.5")), "");
+  // In a calibration file: located there.
+  std::string text = kCalibration;
+  text.replace(text.find("39.25"), 5, "1e6");
+  write("farcx.yaml", text);
+  const std::string file = errorOf("  lens: {calibration: farcx.yaml}\n");
+  EXPECT_NE(file.find("farcx.yaml:7"), std::string::npos) << file;
+  EXPECT_NE(file.find("cx = 1e+06 px"), std::string::npos) << file;
 }
 
 }  // namespace

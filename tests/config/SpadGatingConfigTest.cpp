@@ -163,6 +163,17 @@ TEST_F(SpadGatingConfigTest, TdcDnlFromAListOrAFileWithLocatedErrors) {
   expectError("    tdc_dnl: dnl.npy\n", "tdc_dnl", "DNL nan of bin 7 is not finite");
 }
 
+// Issue 39: a table one value short (here 99 for the 100 bins; the trial's 63
+// for 64) is reported as short, not as a bad sum (the values it has do not
+// sum to 0 because one is missing).
+TEST_F(SpadGatingConfigTest, DnlOfTheWrongLengthIsReportedBeforeItsSum) {
+  std::string list = "    tdc_dnl: [0.1";
+  for (int i = 1; i < 99; ++i) list += ", 0";
+  expectError(list + "]\n", "tdc_dnl", "has 99 values but the TDC has 100 bins");
+  EXPECT_EQ(errorOf(list + "]\n").find("sum to"), std::string::npos);
+  expectError(list + ", -0.2]\n", "tdc_dnl", "sum to -0.1");  // the length right: the sum
+}
+
 TEST_F(SpadGatingConfigTest, DarkCountMapMustBeTheImagesShape) {
   std::vector<float> rates(24 * 32, 100.0f);
   rates[5] = 2e4f;

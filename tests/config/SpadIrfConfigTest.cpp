@@ -126,9 +126,9 @@ TEST_F(SpadIrfConfigTest, RelativePathsFloorAndTimeZeroRoundTrip) {
   EXPECT_DOUBLE_EQ(p.irf.sample_width_s, 1e-12);
   EXPECT_EQ(p.irf.t0, SpadIrf::TimeZero::Centroid);
   EXPECT_EQ(parse("{file: irf.csv}").irf.t0, SpadIrf::TimeZero::Peak);
-  const SpadParams at = parse("{file: irf.csv, t0: 35 ps}");
+  const SpadParams at = parse("{file: irf.csv, t0: 2.5 ps}");  // within [-0.5, 3.5] ps
   EXPECT_EQ(at.irf.t0, SpadIrf::TimeZero::Time);
-  EXPECT_DOUBLE_EQ(at.irf.t0_s, 35e-12);
+  EXPECT_DOUBLE_EQ(at.irf.t0_s, 2.5e-12);
   // The effective config reads back to the same response.
   SensorSpec spec;
   spec.params = p;

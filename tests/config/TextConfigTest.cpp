@@ -76,6 +76,15 @@ TEST_F(TextConfigTest, KeysThatAreNotNamesAreLocatedErrors) {
   }
 }
 
+// A plot range named without a value read past an empty list (a segfault in
+// `validate`; found by fuzz_sequence, tests/regressions/sequence/).
+TEST_F(TextConfigTest, PlotRangeWithoutAValueIsALocatedError) {
+  const InputError e =
+      errorOf(config("  bins: 8\noutput:\n  plot_ranges:\n    depth:\n"), "<string>");
+  EXPECT_EQ(e.key(), "output.plot_ranges.depth");
+  EXPECT_NE(std::string(e.what()).find("got nothing"), std::string::npos) << e.what();
+}
+
 TEST_F(TextConfigTest, SensorTextParsesOneSensorWithLocatedErrors) {
   const sensors::SensorSpec spec =
       parseSensorText(R"({"type": "spad", "cycles": 100000.0, "pde": 0.5})", "<sensor>");

@@ -15,6 +15,7 @@
 #include "fuzz/CaptureH5Reads.h"
 #include "fuzz/IrfInput.h"
 #include "fuzz/SceneInvariants.h"
+#include "fuzz/SequenceInput.h"
 #include "fuzz/SpadTablesInput.h"
 #include "support/TempDir.h"
 #include "tofsim/config/RunConfig.h"
@@ -120,6 +121,18 @@ TEST_F(FuzzRegressionTest, GltfScenes) {
     writeBytes(file, bytes);
     // A scene that loads must pass what fuzz_gltf checks.
     EXPECT_TRUE(fuzz::renderable(scene::loadGltf(file)));
+  });
+  EXPECT_GT(inputs, 0);
+}
+
+// As in fuzz/fuzz_sequence.cpp: a capture sequence config and its animated
+// glTF; one that loads must give a renderable scene at every frame time.
+TEST_F(FuzzRegressionTest, SequenceInputs) {
+  fs::create_directory_symlink(fs::path(TOFSIM_SOURCE_DIR) / "configs" / "scenes", dir_ / "scenes");
+  const int inputs = forEachInput("sequence", [&](const std::string& bytes, const fs::path&) {
+    const auto* data = reinterpret_cast<const uint8_t*>(bytes.data());
+    const fs::path config = fuzz::writeSequenceInput(dir_, data, bytes.size());
+    EXPECT_TRUE(fuzz::sequenceFramesRenderable(config::loadRunConfig(config, {})));
   });
   EXPECT_GT(inputs, 0);
 }

@@ -150,6 +150,15 @@ TEST_F(SequenceRunTest, BadSequencesAreLocatedErrors) {
   EXPECT_TRUE(has(e, "c.yaml:7") && has(e, "frame 1 at 2") && has(e, "outside")) << e;
   e = errorOf("sequence: {times: [0 s], rate: 3 Hz}\n");
   EXPECT_TRUE(has(e, "sequence.rate") && has(e, "not with `times`")) << e;
+  // Issue 39: a rate of 1e-300 Hz printed a frame time of 300 digits; frame
+  // times are bounded (+-1e9 s) and said in readable units.
+  e = errorOf("sequence: {rate: 1e-300 Hz, count: 2}\n");
+  EXPECT_TRUE(has(e, "sequence.rate") && has(e, "1e+300 s") && has(e, "+-1e+09 s")) << e;
+  EXPECT_LT(e.size(), 300u) << e;
+  // Issue 39: sequence.mp4 is made of steady images; without them (this
+  // config has output.steady: false) asking for it is an error, not silence.
+  e = errorOf("sequence: {times: [0 s], video: true}\n");
+  EXPECT_TRUE(has(e, "c.yaml:7") && has(e, "sequence.video") && has(e, "output.steady")) << e;
   // A scene without animations has nothing to play.
   test::writeText(dir_ / "plane.gltf", test::AnimatedGltf().json(R"([{"mesh": 0}])", "[0]"));
   e = errorOf("sequence: {times: [0 s]}\n");

@@ -349,5 +349,55 @@ TEST_F(AnimatedSceneTest, AnimatedNodeWithAMatrixIsALocatedError) {
                 "channels[0]", "has a matrix");
 }
 
+// Issue 39: keyframes that carry the scene past what float positions and the
+// tracers hold (Embree asserted mid-sequence on a translation of 1e30) are
+// refused at load, naming the channel and the keyframe.
+TEST_F(AnimatedSceneTest, KeyframeBeyondTheSceneBoundIsALocatedError) {
+  AnimatedGltf translation;
+  translation.addChannel(0, "translation", {0, 1, 2}, {0, 0, 0, 1, 0, 0, 1e30f, 0, 0}, "LINEAR");
+  const std::string t = errorOf(translation);
+  expectLocated(t, "channels[0]", "keyframe 2 (translation at 2 s) puts mesh[0] (node 0)");
+  EXPECT_NE(t.find("1e+30 m from the origin (at most 1e+06 m)"), std::string::npos) << t;
+
+  AnimatedGltf scale;
+  scale.addChannel(0, "scale", {0, 1}, {1, 1, 1, 1e30f, 1e30f, 1e30f}, "STEP");
+  expectLocated(errorOf(scale), "channels[0]", "keyframe 1 (scale at 1 s)");
+
+  // A parent's keyframe moves the child's mesh: the parent's channel is named.
+  AnimatedGltf parent;
+  parent.addChannel(0, "translation", {0, 1}, {0, 0, 0, 0, -2e6f, 0}, "LINEAR");
+  expectLocated(errorOf(parent, R"([{"children": [1]}, {"mesh": 0}])"), "channels[0]",
+                "keyframe 1 (translation at 1 s) puts mesh[0] (node 1)");
+}
+
+// Keyframes in bound, but a cubic tangent of 1e30 m/s throws the segment
+// between them out: its middle is checked too, in its first keyframe's name.
+TEST_F(AnimatedSceneTest, CubicSegmentOvershootIsALocatedError) {
+  AnimatedGltf f;
+  f.addChannel(0, "translation", {0, 1},
+               {0, 0, 0, 0, 0, 0, 1e30f, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0}, "CUBICSPLINE");
+  expectLocated(errorOf(f), "channels[0]", "keyframe 0 (translation at 0.5 s)");
+}
+
+// The bound itself is within reach: a scene 1000 km across still loads.
+TEST_F(AnimatedSceneTest, KeyframesWithinTheSceneBoundLoad) {
+  AnimatedGltf f;
+  f.addChannel(0, "translation", {0, 1}, {0, 0, 0, 9e5f, 0, 0}, "LINEAR");
+  EXPECT_EQ(errorOf(f), "(no error)");
+}
+
+// A zero quaternion is no rotation at all (glTF asks for unit ones).
+TEST_F(AnimatedSceneTest, ZeroQuaternionKeyframeIsALocatedError) {
+  AnimatedGltf f;
+  f.addChannel(0, "rotation", {0, 1}, {0, 0, 0, 1, 0, 0, 0, 0}, "LINEAR");
+  expectLocated(errorOf(f), "samplers[0]", "output keyframe 1 is the zero quaternion");
+  // CUBICSPLINE's zero tangents are fine; its zero value is not.
+  AnimatedGltf cubic;
+  cubic.addChannel(0, "rotation", {0, 1}, {0, 0, 0, 0, 0, 0, 0, 1, 0, 0, 0, 0,  //
+                                           0, 0, 0, 0, 0, 0, 0, 1, 0, 0, 0, 0},
+                   "CUBICSPLINE");
+  EXPECT_EQ(errorOf(cubic), "(no error)");
+}
+
 }  // namespace
 }  // namespace tofsim::scene

@@ -127,6 +127,26 @@ TEST_F(GltfLoaderTest, NanPositionIsAnError) {
   EXPECT_NE(e.find("NaN"), std::string::npos) << e;
 }
 
+// Issue 39: a static scene is bound like an animated one (Scene.h,
+// kMaxSceneCoordinate_m): 1e30 m fits a float but not the tracers.
+TEST_F(GltfLoaderTest, PositionBeyondTheSceneBoundIsAnError) {
+  const auto path = writeText(
+      dir_ / "far.gltf", triangleGltf(R"("nodes": [{"mesh": 0}])", {0, 0, 0, 1e30f, 0, 0, 0, 1, 0}));
+  const std::string e = errorOf(path);
+  EXPECT_NE(e.find("far.gltf"), std::string::npos) << e;
+  EXPECT_NE(e.find("POSITION element 1 lies 1e+30 m from the origin (at most 1e+06 m)"),
+            std::string::npos)
+      << e;
+  const auto camera = writeText(
+      dir_ / "far_camera.gltf",
+      triangleGltf(R"("nodes": [{"mesh": 0}, {"camera": 0, "translation": [0, 0, 2e6]}],
+  "cameras": [{"type": "perspective", "perspective": {"yfov": 0.7, "znear": 0.1}}])",
+                   {0, 0, 0, 1, 0, 0, 0, 1, 0}));
+  const std::string c = errorOf(camera);
+  EXPECT_NE(c.find("node[1]"), std::string::npos) << c;
+  EXPECT_NE(c.find("2e+06 m from the origin"), std::string::npos) << c;
+}
+
 TEST_F(GltfLoaderTest, MissingFileNamesIt) {
   const std::string e = errorOf(dir_ / "absent.glb");
   EXPECT_NE(e.find("absent.glb"), std::string::npos) << e;

@@ -138,6 +138,7 @@ void parseCamera(const ConfigNode& node, CameraConfig& out) {
                                      std::to_string(lens->image_size->y) + " (" +
                                      lens->calibration_file + ")");
     }
+    checkIntrinsics(*lens, c.width, c.height);
     try {
       capture::checkLensInvertible(lens->lens, c.width, c.height);
     } catch (const InputError& e) {

@@ -52,11 +52,7 @@ sensors::CwTofCompanding parseCompanding(const ConfigNode& n) {
       where.push_back("point " + std::to_string(i++));
     }
   } else {
-    const std::filesystem::path path = configRelativePath(n, n.requireString(key));
-    std::error_code ec;
-    if (!std::filesystem::is_regular_file(path, ec)) {
-      n.failKey(key, "file not found: " + path.string());
-    }
+    const std::filesystem::path path = existingDataFile(n, key);
     if (lowerExtension(path) != ".csv") {
       n.failKey(key, "a list of [input, output] or a two-column .csv file (got '" +
                          path.filename().string() + "')");
@@ -117,11 +113,7 @@ std::vector<sensors::CwTofCaptureStep> parseCaptureOrder(const ConfigNode& n,
 
 sensors::CwTofNoiseTable parseNoiseTable(const ConfigNode& n) {
   const char* key = "noise_table";
-  const std::filesystem::path path = configRelativePath(n, n.requireString(key));
-  std::error_code ec;
-  if (!std::filesystem::is_regular_file(path, ec)) {
-    n.failKey(key, "file not found: " + path.string());
-  }
+  const std::filesystem::path path = existingDataFile(n, key);
   std::vector<double> means, samples;
   std::vector<std::string> where;
   const std::string ext = lowerExtension(path);

@@ -98,13 +98,9 @@ CorrelationWaveform parseOne(const ConfigNode& n) {
     if (w.values.empty()) s->fail("must list at least two samples");
     evenlySpaced(w);
   } else {
-    const std::filesystem::path path = configRelativePath(n, n.requireString("file"));
+    const std::filesystem::path path = existingDataFile(n, "file");
     w.file = path.string();
     where = w.file + ": ";
-    std::error_code ec;
-    if (!std::filesystem::is_regular_file(path, ec)) {
-      n.failKey("file", "file not found: " + path.string());
-    }
     const std::string ext = lowerExtension(path);
     if (ext == ".csv") {
       readCsv(n, path, w);

@@ -93,12 +93,8 @@ Samples readNpySamples(const ConfigNode& n, const std::filesystem::path& path) {
 SpadIrf parseIrf(const ConfigNode& n) {
   if (!n.isMap()) n.fail("expected a mapping (file, bin_width, t0, floor)");
   SpadIrf irf;
-  const std::filesystem::path path = configRelativePath(n, n.requireString("file"));
+  const std::filesystem::path path = existingDataFile(n, "file", "IRF file");
   irf.file = path.string();
-  std::error_code ec;
-  if (!std::filesystem::is_regular_file(path, ec)) {
-    n.failKey("file", "IRF file not found: " + path.string());
-  }
   const std::string ext = lowerExtension(path);
   if (ext != ".npy" && ext != ".csv") {
     n.failKey("file", "an IRF file is .npy or .csv (got '" + path.filename().string() + "')");
@@ -133,6 +129,21 @@ SpadIrf parseIrf(const ConfigNode& n) {
       } catch (const std::invalid_argument& e) {
         t0->fail("must be peak, centroid or a time (" + std::string(e.what()) + ")");
       }
+    }
+  }
+  // A time zero outside the response would delay (or advance) all of the
+  // light by more than the response itself: a wrong unit or a time of
+  // another axis, not a response. The support check of the kernel
+  // (checkSensorKernels) then bounds the span by the TDC's bins.
+  if (irf.t0 == SpadIrf::TimeZero::Time) {
+    const double lo = s.first_time_s - 0.5 * s.width_s;
+    const double hi = lo + static_cast<double>(s.values.size()) * s.width_s;
+    if (!(irf.t0_s >= lo && irf.t0_s <= hi)) {
+      n.failKey("t0", "t0 " + durationText(irf.t0_s) + " lies outside the response in " +
+                          path.string() + ", which spans [" + readableDuration(lo) + ", " +
+                          readableDuration(hi) +
+                          "] on its own time axis (t0 is a time of that response: peak, "
+                          "centroid or a time within it)");
     }
   }
   irf.floor = n.getDouble("floor", 0.0);

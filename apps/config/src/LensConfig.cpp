@@ -2,13 +2,17 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <fstream>
 #include <sstream>
+#include <tuple>
+#include <utility>
 #include <vector>
 
 #include "ConfigPath.h"
+#include "ShortestNumber.h"
 #include "YamlText.h"
 
 namespace tofsim::config {
@@ -54,7 +58,10 @@ std::string firstKey(const ConfigNode& node, std::initializer_list<const char*> 
   return "";
 }
 
-void setCameraMatrix(const ConfigNode& node, const std::string& key, capture::Lens& lens) {
+void setCameraMatrix(const ConfigNode& node, const std::string& key, ParsedLens& out) {
+  capture::Lens& lens = out.lens;
+  out.matrix_at = node.locationOf(key);
+  out.matrix_key = node.pathOf(key);
   const std::vector<double> m = numbersOf(node, key);
   if (m.size() != 9) {
     node.failKey(key, "expected the 3 x 3 camera matrix (9 numbers, row by row), got " +
@@ -108,7 +115,7 @@ std::string openCvYamlText(const ConfigNode& lensNode, const std::string& path) 
 ParsedLens fromCalibration(const ConfigNode& lensNode) {
   ParsedLens out;
   out.calibration_file =
-      configRelativePath(lensNode, lensNode.requireString("calibration")).string();
+      existingDataFile(lensNode, "calibration", "calibration file").string();
   YAML::Node root;
   try {
     root = parseYaml(openCvYamlText(lensNode, out.calibration_file));
@@ -125,15 +132,23 @@ ParsedLens fromCalibration(const ConfigNode& lensNode) {
       firstKey(file, {"distortion_coefficients", "dist_coeffs", "distCoeffs", "D"});
   if (matrix.empty()) file.fail("has no camera_matrix (nor cameraMatrix, K)");
   if (dist.empty()) file.fail("has no distortion_coefficients (nor dist_coeffs, distCoeffs, D)");
-  setCameraMatrix(file, matrix, out.lens);
+  setCameraMatrix(file, matrix, out);
   setDistortion(file, dist, out.lens);
-  if (file.has("image_width") || file.has("image_height")) {
-    const long long w = file.getInt("image_width", 0), h = file.getInt("image_height", 0);
-    if (w < 1 || h < 1 || w > 16384 || h > 16384) {
-      file.fail("image_width and image_height must both be in [1, 16384]");
+  // A camera matrix is in pixels of the image it was calibrated on: without
+  // that size nothing says which resolution it fits (OpenCV's calibration
+  // writes both keys).
+  for (const char* key : {"image_width", "image_height"}) {
+    if (!file.has(key)) {
+      file.fail(std::string("has no ") + key +
+                ": a calibration's camera matrix holds at the image size it was made at; add "
+                "image_width and image_height (pixels) to the file");
     }
-    out.image_size = glm::ivec2(static_cast<int>(w), static_cast<int>(h));
   }
+  const long long w = file.getInt("image_width", 0), h = file.getInt("image_height", 0);
+  if (w < 1 || h < 1 || w > 16384 || h > 16384) {
+    file.fail("image_width and image_height must both be in [1, 16384]");
+  }
+  out.image_size = glm::ivec2(static_cast<int>(w), static_cast<int>(h));
   return out;
 }
 
@@ -152,9 +167,36 @@ ParsedLens parseLens(const ConfigNode& camera) {
     return fromCalibration(lensNode);
   }
   ParsedLens out;
-  setCameraMatrix(lensNode, "camera_matrix", out.lens);
+  setCameraMatrix(lensNode, "camera_matrix", out);
   if (lensNode.has("distortion")) setDistortion(lensNode, "distortion", out.lens);
   return out;
+}
+
+void checkIntrinsics(const ParsedLens& parsed, int32_t width, int32_t height) {
+  const capture::Lens& lens = parsed.lens;
+  const double side = std::max(width, height);
+  const auto fail = [&](const std::string& message) {
+    throw InputError(parsed.matrix_at, parsed.matrix_key,
+                     message + " for a " + std::to_string(width) + " x " + std::to_string(height) +
+                         " image");
+  };
+  const auto range = [](double lo, double hi) {
+    return "[" + shortest(lo) + ", " + shortest(hi) + "] px";
+  };
+  for (const auto& [name, f] : {std::pair{"fx", lens.fx}, std::pair{"fy", lens.fy}}) {
+    if (!(f >= side / 1000.0 && f <= side * 1000.0)) {
+      fail(std::string(name) + " = " + shortest(f) + " px is outside " +
+           range(side / 1000.0, side * 1000.0) +
+           " (1/1000 to 1000 times the larger side: fields of view of 179.9 to 0.06 degrees)");
+    }
+  }
+  for (const auto& [name, c, size] :
+       {std::tuple{"cx", lens.cx, double(width)}, std::tuple{"cy", lens.cy, double(height)}}) {
+    if (!(c >= -size && c <= 2.0 * size)) {
+      fail(std::string(name) + " = " + shortest(c) + " px is outside " + range(-size, 2.0 * size) +
+           " (the principal point at most an image size outside the image)");
+    }
+  }
 }
 
 std::size_t distortionCount(const capture::Lens& lens) {

@@ -8,6 +8,7 @@
 
 #include <glm/glm.hpp>
 #include <optional>
+#include <cstdint>
 #include <string>
 
 #include "ConfigNode.h"
@@ -19,9 +20,19 @@ struct ParsedLens {
   capture::Lens lens;
   /// The calibration file (absolute), empty when the values were inline.
   std::string calibration_file;
-  /// image_width, image_height from the calibration file, where it has them.
+  /// image_width, image_height from the calibration file (required there).
   std::optional<glm::ivec2> image_size;
+  /// Where the camera matrix was given (its file, line and key path).
+  FileLoc matrix_at;
+  std::string matrix_key;
 };
+
+/// fx, fy, cx, cy in pixels must be sane for a width x height image: focal
+/// lengths within [1/1000, 1000] x the larger side (fields of view between
+/// about 0.06 and 179.9 degrees), the principal point at most one image size
+/// outside the image. Checked before the distortion's inversion, whose
+/// errors such values would only obscure. A located error at the matrix.
+void checkIntrinsics(const ParsedLens& lens, int32_t width, int32_t height);
 
 /// The `lens` mapping of the camera node `camera`.
 ParsedLens parseLens(const ConfigNode& camera);

@@ -4,6 +4,7 @@
 // docs and the errors say it ("in [0, 1]", ">= 0").
 
 #include <cmath>
+#include <cstdio>
 #include <string>
 #include <utility>
 
@@ -21,6 +22,24 @@ inline std::string durationText(double s) {
     if (std::abs(s) >= scale) return withUnit(s, scale, name, "s");
   }
   return withUnit(s, 1e-15, "fs", "s");
+}
+
+/// "-0.5 ps", "1e+300 s": 6 significant digits in the largest unit giving a
+/// magnitude >= 1 (fs below), for messages about computed times, which
+/// durationText would write with every digit they need to read back.
+inline std::string readableDuration(double s) {
+  const std::pair<double, const char*> units[] = {
+      {1.0, "s"}, {1e-3, "ms"}, {1e-6, "us"}, {1e-9, "ns"}, {1e-12, "ps"}};
+  std::pair<double, const char*> unit{1e-15, "fs"};
+  for (const auto& u : units) {
+    if (std::abs(s) >= u.first) {
+      unit = u;
+      break;
+    }
+  }
+  char text[48];
+  std::snprintf(text, sizeof text, "%.6g %s", s / unit.first, unit.second);
+  return text;
 }
 
 inline std::string frequencyText(double hz) {

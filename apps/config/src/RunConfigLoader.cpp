@@ -11,6 +11,7 @@
 #include "RunConfigYaml.h"
 #include "RunFields.h"
 #include "SequenceConfigParser.h"
+#include "SpadTableFile.h"
 #include "ShortestNumber.h"
 #include "Vec3Key.h"
 #include "tofsim/config/RunConfig.h"
@@ -206,6 +207,9 @@ void parseOutput(const ConfigNode& node, const RunConfig& config, OutputConfig& 
       ranges->fail("expected a mapping of picture name -> [lo, hi]");
     }
     for (const std::string& name : ranges->keys()) {
+      // A key without a value (`depth:`) is listed but not `has` (found by
+      // fuzz_sequence: r[0] of no values).
+      if (!ranges->has(name)) ranges->failKey(name, "must be [lo, hi] with lo < hi (got nothing)");
       const std::vector<double> r = ranges->getDoubles(name, 2, {});
       if (!(std::isfinite(r[0]) && std::isfinite(r[1]) && r[0] < r[1])) {
         ranges->failKey(name, "must be [lo, hi] with lo < hi");
@@ -288,6 +292,7 @@ void checkSpadGates(const ConfigNode& list, const RunConfig& config) {
                                          " values but the TDC has " + std::to_string(tdc.bins) +
                                          " bins (one DNL per bin)");
     }
+    if (spad->tdc_dnl.present()) checkDnlSum(elements[i], spad->tdc_dnl);
     if (spad->gate_width_s <= 0.0) continue;
     const double g0 = spad->gate_start_s, g1 = g0 + spad->gate_width_s;
     if (!(g1 > tdc.start_s && g0 < tdc.end_s())) {
@@ -383,6 +388,19 @@ void checkMergeBackend(const ConfigNode& root, const RunConfig& config) {
       "runs on render.backend: cpu (or auto); the gl backend gathers every pixel sample");
 }
 
+// sequence.mp4 is made of the frames' steady.exr: without them there is no
+// video, which is said rather than skipped. Its default follows
+// output.steady (so the effective config, which writes both, reloads).
+void checkSequenceVideo(const ConfigNode& sequence, RunConfig& config) {
+  if (config.output.steady) return;
+  if (sequence.has("video") && config.sequence->video) {
+    sequence.failKey("video",
+                     "sequence.mp4 is made of the frames' steady images: it needs "
+                     "output.steady: true (or set sequence.video: false)");
+  }
+  config.sequence->video = false;
+}
+
 // What an nlos capture cannot do: the outputs of a camera image.
 void checkNlosRun(const ConfigNode& root) {
   if (const auto output = root.optionalChild("output")) {
@@ -463,6 +481,7 @@ RunConfig loadRunConfigYaml(YAML::Node yaml, const std::filesystem::path& file,
   checkDefocusBackend(root, config);
   checkMergeBackend(root, config);
   if (const auto output = root.optionalChild("output")) parseOutput(*output, config, config.output);
+  if (config.sequence) checkSequenceVideo(root.child("sequence"), config);
   if (config.nlos) checkNlosRun(root);
   if (const auto list = root.optionalChild("sensors")) {
     // parseSensors reports unknown keys inside each sensor itself; the keys it
@@ -482,6 +501,7 @@ RunConfig loadRunConfigYaml(YAML::Node yaml, const std::filesystem::path& file,
     checkSensorsFitImage(*list, config.sensors, image);
     checkBounceOrders(*list, config);
     checkSpadGates(*list, config);
+    checkSensorKernels(*list, config.sensors, config.render.time);
   }
   root.reportUnusedKeys();
   return config;

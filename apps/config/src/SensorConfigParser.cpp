@@ -18,6 +18,7 @@
 #include "tofsim/config/Units.h"
 #include "tofsim/sensors/CwTofPresets.h"
 #include "tofsim/sensors/SensorFields.h"
+#include "tofsim/sensors/SensorType.h"
 #include "tofsim/sensors/SpadPresets.h"
 
 namespace tofsim::config {
@@ -413,6 +414,31 @@ void checkSensorsFitImage(const ConfigNode& list, const std::vector<SensorSpec>&
           SensorConfigType<std::decay_t<decltype(p)>>::checkImage(nodes[i], p, camera);
         },
         specs[i].params);
+  }
+}
+
+void checkSensorKernels(const ConfigNode& list, const std::vector<SensorSpec>& specs,
+                        const TimeAxis& render) {
+  const std::vector<ConfigNode> nodes = list.elements();
+  for (std::size_t i = 0; i < specs.size() && i < nodes.size(); ++i) {
+    const std::vector<TimeKernelUse> kernels = std::visit(
+        [&](const auto& p) {
+          return SensorType<std::decay_t<decltype(p)>>::timeKernels(p, render);
+        },
+        specs[i].params);
+    for (const TimeKernelUse& k : kernels) {
+      const std::string problem = timeKernelProblem(k);
+      if (problem.empty()) continue;
+      if (std::string_view(k.key) == "irf") {
+        const auto* spad = std::get_if<SpadParams>(&specs[i].params);
+        nodes[i].child("irf").failKey(
+            "file", (spad ? spad->irf.file + ": " : std::string()) + "the response (" +
+                        std::to_string(spad ? spad->irf.values.size() : 0) + " samples " +
+                        (spad ? durationText(spad->irf.sample_width_s) : "") + " apart) " +
+                        problem);
+      }
+      nodes[i].failKey(k.key, problem);
+    }
   }
 }
 

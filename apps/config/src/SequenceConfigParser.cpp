@@ -4,11 +4,30 @@
 #include <string>
 
 #include "FieldParse.h"
+#include "QuantityText.h"
 #include "SequenceFields.h"
 
 namespace tofsim::config {
 
 namespace {
+
+// Frame times beyond it mean nothing for a glTF animation (its keyframe
+// times are float seconds: a step of 64 s there) and print as numbers
+// nobody can read; about 32 years of scene time.
+constexpr double kMaxFrameTime_s = 1e9;
+
+// Why frame time t (after `previous`, if any) cannot be one; "" when it can.
+std::string frameTimeProblem(double t, const double* previous) {
+  if (!(std::fabs(t) <= kMaxFrameTime_s)) {
+    return "a frame time must be within +-" + durationText(kMaxFrameTime_s) +
+           " (about 32 years of scene time; got " + readableDuration(t) + ")";
+  }
+  if (previous && !(t > *previous)) {
+    return "frame times must increase: " + readableDuration(t) + " after " +
+           readableDuration(*previous);
+  }
+  return "";
+}
 
 std::vector<double> parseTimes(const ConfigNode& node) {
   const ConfigNode list = node.child("times");
@@ -16,11 +35,8 @@ std::vector<double> parseTimes(const ConfigNode& node) {
   std::vector<double> times;
   for (const ConfigNode& e : list.elements()) {
     const double t = e.asDuration_s();
-    if (!std::isfinite(t)) e.fail("a frame time must be finite");
-    if (!times.empty() && !(t > times.back())) {
-      e.fail("frame times must increase: " + std::to_string(t) + " s after " +
-             std::to_string(times.back()) + " s");
-    }
+    const std::string problem = frameTimeProblem(t, times.empty() ? nullptr : &times.back());
+    if (!problem.empty()) e.fail(problem);
     times.push_back(t);
   }
   if (times.empty()) list.fail("a sequence needs at least one frame");
@@ -50,10 +66,15 @@ SequenceConfig parseSequence(const ConfigNode& node) {
   }
   out.times_s.reserve(static_cast<std::size_t>(out.count));
   for (int32_t k = 0; k < out.count; ++k) {
-    out.times_s.push_back(out.start_s + static_cast<double>(k) / out.rate_Hz);
-    if (!std::isfinite(out.times_s.back())) {
-      node.failKey("rate", "frame " + std::to_string(k) + "'s time start + k / rate is not finite");
+    const double t = out.start_s + static_cast<double>(k) / out.rate_Hz;
+    const std::string problem =
+        frameTimeProblem(t, out.times_s.empty() ? nullptr : &out.times_s.back());
+    if (!problem.empty()) {
+      node.failKey(k == 0 ? "start" : "rate",
+                   "frame " + std::to_string(k) + " at start + " + std::to_string(k) +
+                       " / rate (rate " + frequencyText(out.rate_Hz) + "): " + problem);
     }
+    out.times_s.push_back(t);
   }
   return out;
 }

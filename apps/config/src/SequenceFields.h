@@ -22,7 +22,7 @@ inline constexpr auto kSequenceFields = std::tuple{
     sensors::Field{"exposure_samples", &SequenceConfig::exposure_samples, sensors::IntegerIn{1, 64},
           {.doc = "samples of an exposure that moves: renders per CW-ToF raw over its `integration_time`, and per SPAD `exposure_time`, at the middles of equal parts of it (1: its middle); each distinct time is one render"}},
     sensors::Field{"video", &SequenceConfig::video, sensors::Flag{},
-          {.doc = "`sequence.mp4`: the frames' steady images in order, one tone scale for all, stamped with their times (needs `output.steady`)"}},
+          {.doc = "`sequence.mp4`: the frames' steady images in order, one tone scale for all, stamped with their times; needs `output.steady` (an error with `output.steady: false`, where it defaults to false)"}},
 };
 // clang-format on
 

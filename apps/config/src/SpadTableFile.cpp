@@ -16,15 +16,6 @@
 namespace tofsim::config {
 
 namespace {
-std::filesystem::path existingFile(const ConfigNode& n, const char* key) {
-  const std::filesystem::path path = configRelativePath(n, n.requireString(key));
-  std::error_code ec;
-  if (!std::filesystem::is_regular_file(path, ec)) {
-    n.failKey(key, "file not found: " + path.string());
-  }
-  return path;
-}
-
 io::NpyArray readNpyAt(const ConfigNode& n, const char* key, const std::filesystem::path& path,
                        const char* what) {
   try {
@@ -64,7 +55,7 @@ Rows readTwoColumnCsv(const ConfigNode& n, const char* key, const std::filesyste
 
 sensors::SpadAfterpulseTable parseAfterpulseDelayTable(const ConfigNode& n) {
   const char* key = "afterpulse_delay_table";
-  const std::filesystem::path path = existingFile(n, key);
+  const std::filesystem::path path = existingDataFile(n, key);
   const std::string file = path.string();
   const std::string ext = lowerExtension(path);
   Rows rows;
@@ -122,7 +113,7 @@ sensors::SpadDnl parseDnl(const ConfigNode& n) {
   if (node.isSequence()) {
     for (const ConfigNode& e : node.elements()) dnl.values.push_back(e.asDouble());
   } else {
-    const std::filesystem::path path = existingFile(n, key);
+    const std::filesystem::path path = existingDataFile(n, key);
     dnl.file = path.string();
     const std::string ext = lowerExtension(path);
     if (ext == ".npy") {
@@ -141,7 +132,6 @@ sensors::SpadDnl parseDnl(const ConfigNode& n) {
   }
   const std::string where = dnl.file.empty() ? "" : dnl.file + ": ";
   if (dnl.values.empty()) n.failKey(key, where + "no values");
-  double sum = 0.0;
   for (std::size_t i = 0; i < dnl.values.size(); ++i) {
     const double d = dnl.values[i];
     if (!std::isfinite(d) || !(d > -1.0)) {
@@ -149,21 +139,26 @@ sensors::SpadDnl parseDnl(const ConfigNode& n) {
           key, where + "DNL " + shortest(d) + " of bin " + std::to_string(i) +
                    (std::isfinite(d) ? " gives a bin width LSB (1 + DNL) <= 0" : " is not finite"));
     }
-    sum += d;
-  }
-  const double tolerance = 1e-6 * static_cast<double>(dnl.values.size());
-  if (std::fabs(sum) > tolerance) {
-    n.failKey(key, where + "the DNL values sum to " + shortest(sum) +
-                       ", not 0 (the bins must fill the TDC's range; tolerance " +
-                       shortest(tolerance) + ")");
   }
   return dnl;
+}
+
+void checkDnlSum(const ConfigNode& n, const sensors::SpadDnl& dnl) {
+  double sum = 0.0;
+  for (const double d : dnl.values) sum += d;
+  const double tolerance = 1e-6 * static_cast<double>(dnl.values.size());
+  if (std::fabs(sum) > tolerance) {
+    n.failKey("tdc_dnl", (dnl.file.empty() ? "" : dnl.file + ": ") + "the DNL values sum to " +
+                             shortest(sum) +
+                             ", not 0 (the bins must fill the TDC's range; tolerance " +
+                             shortest(tolerance) + ")");
+  }
 }
 
 PixelMap readPixelMap(const ConfigNode& n, const char* key, const char* what, const char* valueName,
                       bool signedValues) {
   PixelMap map;
-  const std::filesystem::path path = existingFile(n, key);
+  const std::filesystem::path path = existingDataFile(n, key);
   map.file = path.string();
   const std::string expected = std::string("a ") + what + " is a 2-D float32 .npy";
   if (lowerExtension(path) != ".npy") {

@@ -18,10 +18,13 @@
 namespace tofsim::config {
 
 /// `tdc_dnl` of node n: a list of numbers or a file; each value finite and >
-/// -1 (a code of width LSB (1 + DNL) > 0), |sum| <= 1e-6 x count. The length
-/// is checked against the TDC's bins where the window is known
-/// (RunConfigLoader).
+/// -1 (a code of width LSB (1 + DNL) > 0). The length is checked against the
+/// TDC's bins where the window is known (RunConfigLoader), then the sum.
 sensors::SpadDnl parseDnl(const ConfigNode& n);
+
+/// |sum| <= 1e-6 x count (the bins fill the TDC's range): after the length,
+/// so that a table one value short is reported as such, not as a bad sum.
+void checkDnlSum(const ConfigNode& n, const sensors::SpadDnl& dnl);
 
 /// A per-pixel map read from a 2-D float32 .npy (H, W), row-major.
 struct PixelMap {

@@ -2,9 +2,11 @@
 // module hands over for a YAML string or a dict (as JSON, which YAML reads).
 
 #include <string>
+#include <variant>
 
 #include "ConfigNode.h"
 #include "RunConfigYaml.h"
+#include "SpadTableFile.h"
 #include "YamlText.h"
 #include "tofsim/config/RunConfig.h"
 #include "tofsim/config/SensorConfig.h"
@@ -34,6 +36,10 @@ sensors::SensorSpec parseSensorText(const std::string& yamlText, const std::stri
   const ConfigNode root(document, file);
   std::vector<sensors::SensorSpec> specs = parseSensors(root.child("sensors"));
   root.reportUnusedKeys();
+  // No TDC axis here (the volume gives it): the DNL's sum alone.
+  if (const auto* spad = std::get_if<sensors::SpadParams>(&specs.front().params)) {
+    if (spad->tdc_dnl.present()) checkDnlSum(root.child("sensors").elements().front(), spad->tdc_dnl);
+  }
   return std::move(specs.front());
 }
 

@@ -6,6 +6,7 @@
 
 #include "Warning.h"
 #include "tofsim/pipeline/Capture.h"
+#include "tofsim/scene/AnimatedScene.h"
 #include "tofsim/scene/GltfLoader.h"
 #include "tofsim/sensors/WindowLoss.h"
 #include "tofsim/util/Error.h"
@@ -101,7 +102,12 @@ void checkAxisBeforeRender(const config::RunConfig& config, const capture::Rende
 }
 
 void validateTimeAxis(const config::RunConfig& config) {
-  const scene::Scene scene = scene::loadGltf(config.scene_file);
+  // A sequence's scene is read with its animations, as its render reads it
+  // first, so that their errors (a keyframe past the scene bound, a zero
+  // quaternion) come from `validate` too.
+  const scene::Scene scene = config.sequence
+                                 ? scene::AnimatedScene::load(config.scene_file).restScene()
+                                 : scene::loadGltf(config.scene_file);
   checkAxisBeforeRender(config, makeRenderJob(config, scene), true);
 }
 

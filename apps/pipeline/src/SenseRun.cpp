@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <optional>
 #include <string>
+#include <variant>
 
 #include "StagedOutput.h"
 #include "Warning.h"
@@ -14,6 +15,7 @@
 #include "tofsim/pipeline/SavedVolume.h"
 #include "tofsim/pipeline/SensorStreams.h"
 #include "tofsim/scene/GltfLoader.h"
+#include "tofsim/sensors/SensorType.h"
 #include "tofsim/util/Error.h"
 #include "tofsim/util/Interrupt.h"
 
@@ -110,6 +112,26 @@ std::optional<capture::Camera> senseCamera(const config::RunConfig& config,
   }
 }
 
+// The sensors' blur kernels on the saved volume's axis, which may not be the
+// config's the loader checked (checkSensorKernels): refused before anything
+// is staged.
+void checkKernelsOnVolume(const config::RunConfig& config, const TimeAxis& axis) {
+  for (std::size_t i = 0; i < config.sensors.size(); ++i) {
+    const std::vector<sensors::TimeKernelUse> kernels = std::visit(
+        [&](const auto& p) {
+          return sensors::SensorType<std::decay_t<decltype(p)>>::timeKernels(p, axis);
+        },
+        config.sensors[i].params);
+    for (const sensors::TimeKernelUse& k : kernels) {
+      const std::string problem = sensors::timeKernelProblem(k);
+      if (problem.empty()) continue;
+      throw InputError(FileLoc{config.config_file.string()},
+                       "sensors[" + std::to_string(i) + "]." + k.key,
+                       problem + " on the saved volume's time axis");
+    }
+  }
+}
+
 }  // namespace
 
 std::vector<std::string> runConfiguredSensors(const config::RunConfig& config,
@@ -153,6 +175,7 @@ SenseSummary runSense(const config::RunConfig& config, const SenseOptions& optio
   const std::vector<std::string> components = sensedComponents(config, options.volumeDirectory);
   SavedVolumeStream saved(options.volumeDirectory, components);
   noteDifferences(config, saved.shape(), progress);
+  checkKernelsOnVolume(config, saved.shape().axis);
   SenseSummary summary;
   summary.outputDirectory =
       options.outputDirectory.empty() ? options.volumeDirectory : options.outputDirectory;

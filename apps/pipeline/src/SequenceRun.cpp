@@ -72,10 +72,15 @@ void checkFrameTimes(const config::SequenceConfig& seq, const scene::AnimatedSce
   for (std::size_t k = 0; k < seq.times_s.size(); ++k) {
     const double t = seq.times_s[k];
     if (t < a || t > b) {
+      const auto seconds = [](double s) {
+        char text[32];
+        std::snprintf(text, sizeof text, "%.6g", s);
+        return std::string(text);
+      };
       throw InputError(seq.at, seq.rate_Hz > 0.0 ? "sequence.count" : "sequence.times",
-                       "frame " + std::to_string(k) + " at " + std::to_string(t) +
-                           " s is outside the scene's animations, [" + std::to_string(a) + ", " +
-                           std::to_string(b) + "] s");
+                       "frame " + std::to_string(k) + " at " + seconds(t) +
+                           " s is outside the scene's animations, [" + seconds(a) + ", " +
+                           seconds(b) + "] s");
     }
   }
 }

@@ -2,13 +2,16 @@
 
 #include <algorithm>
 #include <array>
+#include <cstdio>
 #include <optional>
 #include <string>
 #include <utility>
 
+#include "AccessorReader.h"
 #include "GltfAnimations.h"
 #include "LoadedDocument.h"
 #include "SceneAssembly.h"
+#include "tofsim/scene/SceneBound.h"
 #include "tofsim/util/Error.h"
 
 namespace tofsim::scene {
@@ -84,7 +87,98 @@ std::vector<NodeChannels> driverChannels(const detail::GltfDocument& doc,
   return out;
 }
 
+/// The 8 corners of the box around a mesh slot's POSITION values (model
+/// space): an affine pose maps the box around the vertices onto a
+/// parallelepiped around them, so its corners bound the posed vertices.
+std::array<glm::dvec3, 8> slotCorners(const detail::GltfDocument& doc,
+                                      const detail::MeshSlot& slot) {
+  const detail::Primitive& prim =
+      doc.meshes[slot.primitive.mesh].primitives[slot.primitive.primitive];
+  glm::dvec3 lo(0.0), hi(0.0);
+  bool first = true;
+  for (const glm::vec3& v : detail::readVec3(doc, prim.position, "POSITION")) {
+    lo = first ? glm::dvec3(v) : glm::min(lo, glm::dvec3(v));
+    hi = first ? glm::dvec3(v) : glm::max(hi, glm::dvec3(v));
+    first = false;
+  }
+  std::array<glm::dvec3, 8> corners;
+  for (int c = 0; c < 8; ++c) {
+    corners[c] = glm::dvec3(c & 1 ? hi.x : lo.x, c & 2 ? hi.y : lo.y, c & 4 ? hi.z : lo.z);
+  }
+  return corners;
+}
+
+/// Whether `node` is the node of instance i or of one above it.
+bool movedBy(const std::vector<detail::NodeInstance>& instances, std::size_t i, int node) {
+  for (int k = static_cast<int>(i); k >= 0; k = instances[k].parent) {
+    if (instances[k].node == node) return true;
+  }
+  return false;
+}
+
 }  // namespace
+
+void AnimatedScene::checkKeyframeExtents() const {
+  const State& s = *state_;
+  const std::vector<detail::NodeInstance>& instances = s.assembly.instances;
+  std::vector<std::array<glm::dvec3, 8>> corners;
+  for (const std::size_t m : s.movingMeshes) {
+    corners.push_back(slotCorners(s.doc, s.assembly.meshSlots[m]));
+  }
+  for (std::size_t a = 0; a < s.animations.size(); ++a) {
+    const Animation& animation = s.animations[a];
+    for (const AnimationChannel& channel : animation.channels) {
+      const auto fail = [&](std::size_t k, double t, const std::string& what,
+                            const glm::dvec3& p) {
+        const std::string name = animation.name.empty() ? "" : " '" + animation.name + "'";
+        char time[48];
+        std::snprintf(time, sizeof time, "%.6g s", t);
+        throw InputError(FileLoc{s.doc.file},
+                         "animation[" + std::to_string(a) + "].channels[" +
+                             std::to_string(channel.index) + "]" + name,
+                         "keyframe " + std::to_string(k) + " (" + toString(channel.property) +
+                             " at " + time + ") puts " + what + " " + sceneBoundText(p));
+      };
+      // What this channel moves (the poses of the rest are not its doing).
+      std::vector<std::size_t> meshes, cameras;
+      for (std::size_t i = 0; i < s.movingMeshes.size(); ++i) {
+        const std::size_t inst = s.assembly.meshSlots[s.movingMeshes[i]].instance;
+        if (movedBy(instances, inst, channel.node)) meshes.push_back(i);
+      }
+      for (const std::size_t c : s.movingCameras) {
+        const std::size_t inst = s.assembly.cameraSlots[c].instance;
+        if (movedBy(instances, inst, channel.node)) cameras.push_back(inst);
+      }
+      if (meshes.empty() && cameras.empty()) continue;
+      // CUBICSPLINE's tangents can carry a segment past both its keyframes:
+      // its middles too, in the name of the keyframe that starts it.
+      const bool cubic = channel.interpolation == Interpolation::CubicSpline;
+      const std::size_t n = channel.times_s.size();
+      for (std::size_t j = 0; j < (cubic ? 2 * n - 1 : n); ++j) {
+        const std::size_t k = cubic ? j / 2 : j;
+        const double t = cubic && j % 2 ? 0.5 * (channel.times_s[k] + channel.times_s[k + 1])
+                                        : channel.times_s[k];
+        const std::vector<glm::dmat4> world = s.instanceWorldsAt(t);
+        for (const std::size_t i : meshes) {
+          const detail::MeshSlot& slot = s.assembly.meshSlots[s.movingMeshes[i]];
+          for (const glm::dvec3& corner : corners[i]) {
+            const glm::dvec3 p(world[slot.instance] * glm::dvec4(corner, 1.0));
+            if (!withinSceneBound(p)) {
+              fail(k, t, "mesh[" + std::to_string(slot.primitive.mesh) + "] (node " +
+                             std::to_string(instances[slot.instance].node) + ")", p);
+            }
+          }
+        }
+        for (const std::size_t inst : cameras) {
+          const glm::dvec3 p(world[inst][3]);
+          if (!withinSceneBound(p)) {
+            fail(k, t, "the camera of node " + std::to_string(instances[inst].node), p);
+          }
+        }
+      }
+    }
+  }
+}
 
 AnimatedScene::AnimatedScene(std::unique_ptr<State> state) : state_(std::move(state)) {}
 AnimatedScene::AnimatedScene(AnimatedScene&&) noexcept = default;
@@ -120,8 +214,10 @@ AnimatedScene AnimatedScene::load(const std::filesystem::path& path, LoadReport*
   for (std::size_t c = 0; c < s.assembly.cameraSlots.size(); ++c) {
     if (s.instanceMoves[s.assembly.cameraSlots[c].instance]) s.movingCameras.push_back(c);
   }
+  AnimatedScene scene(std::move(state));
+  scene.checkKeyframeExtents();
   if (reportOut) *reportOut = std::move(report);
-  return AnimatedScene(std::move(state));
+  return scene;
 }
 
 const Scene& AnimatedScene::restScene() const { return state_->assembly.scene; }

@@ -102,6 +102,23 @@ std::vector<glm::dvec4> readValues(const GltfDocument& doc, int accessor, Animat
   return values;
 }
 
+/// A rotation keyframe is a unit quaternion (glTF); a zero one is no
+/// rotation at all (nothing to normalise), so it is refused. CUBICSPLINE's
+/// tangents (the first and last of each triple) may be zero.
+void checkRotations(const AnimationChannel& channel, const AnimationErrors& errors,
+                    const std::string& part) {
+  const bool cubic = channel.interpolation == Interpolation::CubicSpline;
+  for (std::size_t k = 0; k < channel.times_s.size(); ++k) {
+    const glm::dvec4& q = channel.values[cubic ? 3 * k + 1 : k];
+    if (!(glm::length(q) > 1e-6)) {
+      errors.fail(part, "output keyframe " + std::to_string(k) + " is the zero quaternion (" +
+                            std::to_string(q.x) + ", " + std::to_string(q.y) + ", " +
+                            std::to_string(q.z) + ", " + std::to_string(q.w) +
+                            "): a rotation is a unit quaternion (x, y, z, w)");
+    }
+  }
+}
+
 Animation readAnimation(const GltfDocument& doc, std::size_t index) {
   const AnimationDesc& desc = doc.animations[index];
   const AnimationErrors errors(doc, index);
@@ -138,6 +155,7 @@ Animation readAnimation(const GltfDocument& doc, std::size_t index) {
     const AnimationSamplerDesc& sampler = desc.samplers[ch.sampler];
     const std::string samplerPart = "samplers[" + std::to_string(ch.sampler) + "]";
     AnimationChannel channel;
+    channel.index = c;
     channel.node = ch.node;
     channel.nodeName = doc.nodes[ch.node].name;
     channel.property = *property;
@@ -152,6 +170,7 @@ Animation readAnimation(const GltfDocument& doc, std::size_t index) {
                                    " input times (" + toString(channel.interpolation) + " needs " +
                                    std::to_string(expected) + ")");
     }
+    if (channel.property == AnimatedProperty::Rotation) checkRotations(channel, errors, samplerPart);
     out.channels.push_back(std::move(channel));
   }
   return out;

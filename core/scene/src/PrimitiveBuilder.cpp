@@ -6,6 +6,7 @@
 #include <utility>
 
 #include "AccessorReader.h"
+#include "tofsim/scene/SceneBound.h"
 #include "tofsim/util/Error.h"
 
 namespace tofsim::scene::detail {
@@ -98,18 +99,21 @@ std::vector<uint32_t> readVertexIndices(const GltfDocument& doc, const Primitive
   return idx;
 }
 
-/// Positions moved into the world by `world`, in double; each must still fit
-/// in the float the scene stores it as.
+/// Positions moved into the world by `world`, in double; each must lie within
+/// kMaxSceneCoordinate_m (Scene.h), which the float the scene stores it as
+/// and the tracers can hold.
 std::vector<glm::dvec3> worldPositions(const std::vector<glm::vec3>& pos, const glm::dmat4& world,
                                        int accessor, const PrimitiveErrors& errors) {
   std::vector<glm::dvec3> p(pos.size());
   for (std::size_t i = 0; i < pos.size(); ++i) {
     p[i] = glm::dvec3(world * glm::dvec4(pos[i], 1.0));
     // Finite in the file, but the node transforms may carry it past float's
-    // range, where the scene stores it (found by fuzz_gltf).
-    if (!finite(glm::dvec3(glm::vec3(p[i])))) {
+    // range (found by fuzz_gltf), or past what a ray can start from (an
+    // Embree assertion mid-render).
+    if (!withinSceneBound(p[i])) {
       errors.fail("accessor[" + std::to_string(accessor) + "] POSITION element " +
-                  std::to_string(i) + " is beyond the float range after the node transforms");
+                  std::to_string(i) + " lies " + sceneBoundText(p[i]) +
+                  " after the node transforms");
     }
   }
   return p;

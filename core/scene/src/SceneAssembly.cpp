@@ -6,6 +6,7 @@
 
 #include "GltfCameras.h"
 #include "GltfMaterials.h"
+#include "tofsim/scene/SceneBound.h"
 #include "tofsim/util/Error.h"
 
 namespace tofsim::scene::detail {
@@ -28,6 +29,11 @@ SceneCamera placeCamera(const GltfDocument& doc, const CameraSlot& slot, int nod
                         const glm::dmat4& world) {
   const CameraDesc& camera = doc.cameras[slot.camera];
   SceneCamera out = convertCamera(camera, NodeInstance{node, -1, world});
+  const glm::dvec3 position(world[3]);
+  if (!withinSceneBound(position)) {
+    throw InputError(FileLoc{doc.file}, nodeKey(node),
+                     "camera '" + camera.name + "' lies " + sceneBoundText(position));
+  }
   if (!usable(out)) {
     throw InputError(FileLoc{doc.file}, nodeKey(node),
                      "camera '" + camera.name +

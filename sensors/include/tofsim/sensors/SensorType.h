@@ -19,6 +19,7 @@
 #include "tofsim/sensors/SensorStream.h"
 #include "tofsim/sensors/Spad.h"
 #include "tofsim/sensors/Streak.h"
+#include "tofsim/sensors/TimeKernel.h"
 
 namespace tofsim::sensors {
 
@@ -29,6 +30,22 @@ struct InstrumentWindow {
   InstrumentBins bins;
   std::vector<int32_t> rows;
 };
+
+/// One blur kernel a model builds (TimeKernel.h): the config key that sets it,
+/// where it reaches and the bins it is laid out on (`unit` names them: "s"
+/// for time, "px" for a spatial blur), so that the config can refuse one
+/// wider than kMaxKernelReachBins where it reads the key.
+struct TimeKernelUse {
+  const char* key = "";
+  KernelSupport support;
+  double bin_width = 0.0;
+  const char* unit = "s";
+};
+
+/// Why the kernel cannot be laid out (it reaches more than
+/// kMaxKernelReachBins bins from zero delay), in words with its numbers;
+/// empty when it can.
+std::string timeKernelProblem(const TimeKernelUse& kernel);
 
 /// Specialised once per model, below; never defined for anything else.
 template <typename Params>
@@ -54,6 +71,8 @@ concept SensorModel = requires(const P& p, const VolumeShape& shape, const Strea
   /// The instrument window light can fall outside of (WindowLoss.h), or
   /// none for a model that integrates every bin.
   { SensorType<P>::window(p) } -> std::same_as<std::optional<InstrumentWindow>>;
+  /// The blur kernels it builds for a render axis (none for CW-ToF).
+  { SensorType<P>::timeKernels(p, axis) } -> std::same_as<std::vector<TimeKernelUse>>;
 };
 
 template <>
@@ -66,6 +85,7 @@ struct SensorType<StreakParams> {
   static std::uintmax_t outputBytes(const StreakParams& p, int32_t width, int32_t height,
                                     const TimeAxis& render);
   static std::optional<InstrumentWindow> window(const StreakParams& p);
+  static std::vector<TimeKernelUse> timeKernels(const StreakParams& p, const TimeAxis& render);
 };
 
 template <>
@@ -78,6 +98,7 @@ struct SensorType<SpadParams> {
   static std::uintmax_t outputBytes(const SpadParams& p, int32_t width, int32_t height,
                                     const TimeAxis& render);
   static std::optional<InstrumentWindow> window(const SpadParams& p);
+  static std::vector<TimeKernelUse> timeKernels(const SpadParams& p, const TimeAxis& render);
 };
 
 template <>
@@ -91,6 +112,7 @@ struct SensorType<CwTofParams> {
                                     const TimeAxis& render);
   /// CW-ToF integrates every render bin: it has no window to lose light from.
   static std::optional<InstrumentWindow> window(const CwTofParams& p);
+  static std::vector<TimeKernelUse> timeKernels(const CwTofParams& p, const TimeAxis& render);
 };
 
 }  // namespace tofsim::sensors

@@ -4,6 +4,7 @@
 // its own samples, turned into bin-to-bin transfer weights for energy spread
 // uniformly within each source bin.
 
+#include <cstddef>
 #include <cstdint>
 #include <functional>
 #include <vector>
@@ -19,6 +20,32 @@ struct BinKernel {
   int32_t first = 0;
   std::vector<double> weights{1.0};
 };
+
+/// The shifts [lo, hi] a kernel is laid out over (in the unit of its bin
+/// width): makeBinKernel's, named once for the kernels below and for the
+/// check that refuses one too wide (SensorType<>::timeKernels).
+struct KernelSupport {
+  double lo = 0.0;
+  double hi = 0.0;
+};
+
+/// The farthest a kernel may reach from zero delay, in bins (its weights are
+/// laid out from there, 32 MiB at most). Wider is bad input (a jitter of
+/// seconds on picosecond bins, a response file in the wrong unit): the
+/// config layer refuses it with the key that sets it, and makeBinKernel
+/// CHECKs it.
+inline constexpr double kMaxKernelReachBins = 4194304.0;
+
+/// How many bins of `binWidth` the support reaches from zero delay, a bin of
+/// margin included (as a double: any support, even a non-finite one, gives a
+/// number, NaN compares false).
+double kernelReachBins(const KernelSupport& support, double binWidth);
+
+/// gaussianTailKernel's support: 6 sigma each side, and 14 tailTau more after.
+KernelSupport gaussianTailSupport(double sigma, double tailFraction, double tailTau);
+
+/// piecewiseConstantKernel's support: [start, start + samples sampleWidth].
+KernelSupport piecewiseConstantSupport(std::size_t samples, double start, double sampleWidth);
 
 /// Kernel for a shift distribution given by its integrated CDF G(x) =
 /// int_-inf^x cdf (argument in the unit of `binWidth`), nonzero on [lo, hi]:

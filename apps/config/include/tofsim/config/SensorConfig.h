@@ -33,6 +33,12 @@ void checkSensorsFitImage(const ConfigNode& sensorsList,
                           const std::vector<sensors::SensorSpec>& specs,
                           const capture::Camera& camera);
 
+/// Every blur kernel a sensor builds on its bins of the `render` axis must be
+/// one it can lay out (sensors/SensorType.h, timeKernelProblem): a located
+/// error at the key that sets it (an IRF's `file`) before the render.
+void checkSensorKernels(const ConfigNode& sensorsList,
+                        const std::vector<sensors::SensorSpec>& specs, const TimeAxis& render);
+
 /// The effective configuration (defaults filled in) as a YAML sequence that
 /// parseSensors reads back to the same parameters.
 YAML::Node sensorsToYaml(const std::vector<sensors::SensorSpec>& specs);

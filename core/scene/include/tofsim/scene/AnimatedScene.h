@@ -31,7 +31,12 @@ class AnimatedScene {
  public:
   /// Loads as loadGltf does and reads the animations. Throws InputError
   /// naming the file, the animation and its channel or sampler for bad
-  /// animation data (GltfLoader.h's errors otherwise).
+  /// animation data (GltfLoader.h's errors otherwise): among them a zero
+  /// rotation quaternion, and a keyframe that puts a mesh or a camera it
+  /// moves beyond kMaxSceneCoordinate_m (Scene.h), checked at every
+  /// keyframe's time (and CUBICSPLINE segments' middles), so that a
+  /// sequence fails before its first frame; a frame between keyframes that
+  /// still leaves the bound fails where it is baked.
   static AnimatedScene load(const std::filesystem::path& path, LoadReport* report = nullptr);
 
   AnimatedScene(AnimatedScene&&) noexcept;
@@ -65,6 +70,7 @@ class AnimatedScene {
  private:
   struct State;
   explicit AnimatedScene(std::unique_ptr<State> state);
+  void checkKeyframeExtents() const;
   std::unique_ptr<State> state_;
 };
 

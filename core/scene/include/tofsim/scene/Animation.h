@@ -25,7 +25,8 @@ const char* toString(AnimatedProperty property);    ///< glTF's path: "translati
 
 /// One animated property of one node, with its sampler's keyframes.
 struct AnimationChannel {
-  int node = -1;         ///< glTF node index
+  std::size_t index = 0;  ///< its place in the glTF animation's `channels` (for errors)
+  int node = -1;          ///< glTF node index
   std::string nodeName;  ///< its name, empty if unnamed
   AnimatedProperty property = AnimatedProperty::Translation;
   Interpolation interpolation = Interpolation::Linear;
