@@ -25,10 +25,14 @@
 
 namespace tofsim::pipeline {
 
+/// The most runs at once (--jobs): each is a child process with its own
+/// render buffers (and GL context).
+inline constexpr int kMaxJobs = 256;
+
 struct BatchOptions {
   std::filesystem::path batchFile;
   std::vector<config::Override> overrides;  ///< the CLI's --set, after the batch's own
-  int jobs = 1;                             ///< child processes at once, >= 1
+  int jobs = 1;                             ///< child processes at once, 1 .. kMaxJobs
   int shardIndex = 1;                       ///< K of --shard K/N, 1-based
   int shardCount = 1;                       ///< N of --shard K/N
   bool dryRun = false;                      ///< list the runs, render nothing
