@@ -114,8 +114,9 @@ std::size_t sweepRunCount(const ConfigNode& sweep, const std::vector<SweepAxis>&
 // A run's name is its folder's: plain characters, not hidden (the batch's own
 // lock files are .<run>.lock beside the run folders) and of a listable length.
 void checkRunName(const ConfigNode& entry, const std::string& name) {
+  const std::string shown = name.size() > 40 ? name.substr(0, 40) + "..." : name;
   const auto fail = [&](const std::string& rule) {
-    entry.failKey("name", "run name '" + name + "' " + rule);
+    entry.failKey("name", "run name '" + shown + "' " + rule);
   };
   if (name.size() > kMaxRunName) {
     fail("is " + std::to_string(name.size()) + " characters long: at most " +
