@@ -172,6 +172,10 @@ TEST_F(BatchConfigTest, RunNamesMustBePlainFolderNames) {
   EXPECT_NE(longName.find("is 300 characters long: at most 80"), std::string::npos) << longName;
   const std::string slash = errorOf("runs:\n  - name: a/b\n");
   EXPECT_NE(slash.find("must be letters, digits"), std::string::npos) << slash;
+  // A sweep run's name keeps only those characters of its key too (the key
+  // itself is checked when the run's config loads).
+  EXPECT_EQ(loadBatchConfig(write("sweep: {product: {\"x.a/b\": [\"1/2\"]}}\n")).run(0).name,
+            "run0000_ab-12");
   // A listed name that a sweep run has.
   EXPECT_NE(errorOf("sweep: {zip: {time.bins: [100, 200]}}\nruns:\n  - name: run0001_bins-200\n")
                 .find("used twice"),

@@ -17,17 +17,25 @@ namespace tofsim::config {
 
 namespace {
 
-// "sensors.0.jitter_fwhm" = "30 ps" -> "jitter_fwhm-30ps": the last key part
-// and the value with everything but [A-Za-z0-9.,+-_] dropped.
-std::string suffixPart(const Override& o) {
-  const std::size_t dot = o.keyPath.rfind('.');
-  std::string text = (dot == std::string::npos ? o.keyPath : o.keyPath.substr(dot + 1)) + "-";
-  for (char c : o.value) {
+// Only the characters a run name may have (letters, digits, `.,+-_`).
+std::string plainPart(const std::string& text) {
+  std::string kept;
+  for (char c : text) {
     const bool keep = std::isalnum(static_cast<unsigned char>(c)) || c == '.' || c == ',' ||
                       c == '+' || c == '-' || c == '_';
-    if (keep) text += c;
+    if (keep) kept += c;
   }
-  return text;
+  return kept;
+}
+
+// "sensors.0.jitter_fwhm" = "30 ps" -> "jitter_fwhm-30ps": the last key part
+// and the value, each with every other character dropped (a key is checked
+// only when the run's config loads, after the name is made: fuzz_batch found
+// a '/' kept from one).
+std::string suffixPart(const Override& o) {
+  const std::size_t dot = o.keyPath.rfind('.');
+  return plainPart(dot == std::string::npos ? o.keyPath : o.keyPath.substr(dot + 1)) + "-" +
+         plainPart(o.value);
 }
 
 }  // namespace
