@@ -72,8 +72,12 @@ bool inShard(std::size_t index, int shardIndex, int shardCount);
 /// Loads and validates the batch (every run's config, before anything runs),
 /// then runs this shard's runs that are not done. Throws InputError for a bad
 /// batch file or an invalid run config; a run that fails while running is
-/// reported in the summary, and the others still run. An interrupt is not an
-/// exception here: the summary says which runs it stopped.
+/// reported in the summary, and the others still run. An interrupt while runs
+/// render is not an exception here: the summary says which runs it stopped;
+/// one during the passes over every run before that (their configs, content
+/// keys and folders' states, with progress from 1000 runs on) throws
+/// tofsim::Interrupted, as nothing has started; a dry run interrupted after
+/// its last pass returns its summary with interruptSignal set.
 BatchSummary runBatch(const BatchOptions& options);
 
 /// The table printed at the end: run, status, seconds, output folder; for a
