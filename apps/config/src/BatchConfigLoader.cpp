@@ -153,8 +153,10 @@ BatchConfig loadBatchConfig(const std::filesystem::path& file, const std::vector
   BatchConfig batch;
   batch.batch_file = file;
   batch.base_config = (file.parent_path() / root.requireString("base")).lexically_normal();
-  if (!std::filesystem::exists(batch.base_config)) {
-    root.failKey("base", "base config not found: " + batch.base_config.string());
+  std::error_code ec;  // (a name too long for the file system is an error, not an exception)
+  if (!std::filesystem::exists(batch.base_config, ec)) {
+    root.failKey("base", (ec ? ec.message() + ": " : "base config not found: ") +
+                             batch.base_config.string());
   }
   batch.output_root =
       (file.parent_path() / root.getString("output", "out/batch")).lexically_normal();
