@@ -137,6 +137,22 @@ for target, name in [("fuzz_config", "config/duplicate_key.yaml"),
     out(target, os.path.basename(name),
         open(os.path.join(src, "tests", "regressions", name), "rb").read())
 
+# batch files (fuzz/BatchInput.h: the bytes are the batch, beside tiny.yaml):
+# a product and a zip sweep with `set` and named runs, runs alone (a sensor
+# list as a value, a default name), a sweep of mappings, and the base alone
+out("fuzz_batch", "sweep_and_runs.yaml",
+    "base: tiny.yaml\noutput: out/sweep\nset: {time.bins: 12}\nsweep:\n  product:\n"
+    "    light.position: [[0.28, 0.5, 0.28], [0.2, 0.5, 0.2]]\n    render.seed: [1, 2, 3]\n"
+    "  zip:\n    camera.resolution: [[4, 4], [2, 2]]\n    time.bin_width: [10 ps, 20 ps]\n"
+    "runs:\n  - name: baseline\n    set: {render.seed: 7}\n  - set: {time.bins: 8}\n")
+out("fuzz_batch", "runs_only.yaml",
+    "base: tiny.yaml\nruns:\n  - name: spad.1+a,b-c_d\n"
+    "    set: {sensors: [{type: spad, bins: 8}]}\n  - {}\n")
+out("fuzz_batch", "sweep_mappings.yaml",
+    "base: tiny.yaml\nsweep:\n  product:\n    sensors.0: [{type: spad, bins: 4}, {type: cwtof}]\n"
+    "    time: [{bins: 8}, {bins: 4, bin_width: 1 m}]\n")
+out("fuzz_batch", "base_only.yaml", "base: tiny.yaml\n")
+
 # capture.h5 (output.format: hdf5): HDF5 has no hand-writable form here (no
 # h5py), so a 4 x 4 pixel, 8 bin render of the demo by the CLI, CPU backend,
 # no sensors (transient, steady and depth: 18 KB, mostly HDF5's zero-padded

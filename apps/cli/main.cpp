@@ -12,6 +12,7 @@
 #include "tofsim/config/RunConfig.h"
 #include "tofsim/pipeline/AxisReport.h"
 #include "tofsim/pipeline/BatchRun.h"
+#include "tofsim/pipeline/OutputEstimate.h"
 #include "tofsim/pipeline/CompareRun.h"
 #include "tofsim/pipeline/RenderRun.h"
 #include "tofsim/pipeline/RunContentKey.h"
@@ -106,6 +107,7 @@ int runCompareCommand(const std::string& a, const std::string& b, const std::str
 int runValidateCommand(const std::string& configPath, const std::vector<std::string>& sets,
                        bool strict) {
   const config::RunConfig config = config::loadRunConfig(configPath, parseOverrides(sets, strict));
+  pipeline::checkRunSizes(config);     // output.max_bytes, an NLOS scan's memory
   pipeline::validateTimeAxis(config);  // warnings and notes on stderr; --strict: a proven cut fails
   std::printf("%s: ok\n", configPath.c_str());
   return 0;
@@ -200,7 +202,7 @@ int main(int argc, char** argv) {
       ->required();
   batch->add_option("--set", sets, "Override a config key in every run: key.path=value");
   batch->add_option("-j,--jobs", jobs, "Runs at once, each a child process (default 1)")
-      ->check(CLI::PositiveNumber);
+      ->check(CLI::Range(1, tofsim::pipeline::kMaxJobs));
   batch->add_option("--shard", shard, "K/N: only runs i with i % N == K-1 (1-based K)");
   batch->add_flag("--dry-run", dryRun, "List the runs and their status; render nothing");
   batch->add_flag("--verify", verify, "Skip a run only if its files match their checksums");

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "tofsim/optics/Fft.h"
 #include "tofsim/util/Error.h"
 
 namespace tofsim::sensors {
@@ -22,9 +23,23 @@ double fourierValue(const std::vector<std::complex<double>>& c, double theta) {
   return sum;
 }
 
+/// rho at the N phases 2 pi j / N at once (N a power of two > K): Re sum_k
+/// c_k e^{2 pi i k j / N} is the real part of the forward transform of the
+/// conjugate coefficients. O(N log N), where evaluating each phase by itself
+/// is O(N K), quadratic in K for a grid that grows with K.
+std::vector<double> fourierOnGrid(const std::vector<std::complex<double>>& c, int N) {
+  std::vector<std::complex<double>> x(static_cast<std::size_t>(N), 0.0);
+  for (std::size_t k = 1; k <= c.size(); ++k) x[k] = std::conj(c[k - 1]);
+  optics::fourierTransform(x);
+  std::vector<double> rho(x.size());
+  for (std::size_t j = 0; j < x.size(); ++j) rho[j] = x[j].real();
+  return rho;
+}
+
 /// max |rho| of a Fourier series: exact for one harmonic, else the best of a
-/// dense grid polished by Newton steps on rho' = 0 (to ~1e-15; the scale only
-/// sets the amplitude, never a phase).
+/// dense grid (at least 64 points per period of the highest harmonic)
+/// polished by Newton steps on rho' = 0 (to ~1e-15; the scale only sets the
+/// amplitude, never a phase).
 double fourierMaxAbs(const std::vector<std::complex<double>>& c) {
   int nonzero = 0;
   double only = 0.0;
@@ -35,16 +50,15 @@ double fourierMaxAbs(const std::vector<std::complex<double>>& c) {
     }
   }
   if (nonzero <= 1) return only;
-  const int grid = std::max<int>(1024, 64 * static_cast<int>(c.size()));
-  double best = 0.0, bestTheta = 0.0;
-  for (int i = 0; i < grid; ++i) {
-    const double theta = kTwoPi * i / grid;
-    const double v = std::fabs(fourierValue(c, theta));
-    if (v > best) {
-      best = v;
-      bestTheta = theta;
-    }
+  const int grid = optics::powerOfTwoAtLeast(std::max<int>(1024, 64 * static_cast<int>(c.size())));
+  const std::vector<double> rho = fourierOnGrid(c, grid);
+  int bestIndex = 0;
+  for (int i = 1; i < grid; ++i) {
+    if (std::fabs(rho[i]) > std::fabs(rho[bestIndex])) bestIndex = i;
   }
+  const double bestTheta = kTwoPi * bestIndex / grid;
+  // The grid's best evaluated directly, as the Newton steps' values are.
+  double best = std::fabs(fourierValue(c, bestTheta));
   double theta = bestTheta;
   for (int iter = 0; iter < 8; ++iter) {
     double d1 = 0.0, d2 = 0.0;
@@ -78,6 +92,11 @@ std::string waveformProblem(const CorrelationWaveform& w) {
   const bool fourier = !w.harmonics.empty(), samples = !w.values.empty();
   if (fourier == samples) return "give either harmonics or samples (exactly one form)";
   if (fourier) {
+    if (w.harmonics.size() > kMaxHarmonics) {
+      return std::to_string(w.harmonics.size()) + " harmonics: at most " +
+             std::to_string(kMaxHarmonics) + " (c_1 .. c_" + std::to_string(kMaxHarmonics) +
+             "; higher ones are far beyond what a sensor's correlation holds)";
+    }
     for (std::size_t k = 0; k < w.harmonics.size(); ++k) {
       if (!std::isfinite(w.harmonics[k].real()) || !std::isfinite(w.harmonics[k].imag())) {
         return "harmonic " + std::to_string(k + 1) + " is not finite";
@@ -87,6 +106,10 @@ std::string waveformProblem(const CorrelationWaveform& w) {
       return "every harmonic is 0: the waveform has no AC part (zero energy), so no phase";
     }
     return "";
+  }
+  if (w.values.size() > kMaxSamples) {
+    return std::to_string(w.values.size()) + " samples: at most " + std::to_string(kMaxSamples) +
+           " per period";
   }
   if (w.phases_rad.size() != w.values.size()) {
     return std::to_string(w.values.size()) + " values for " + std::to_string(w.phases_rad.size()) +

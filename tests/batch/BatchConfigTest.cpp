@@ -1,6 +1,8 @@
 // Batch expansion (the config side, no rendering): product and zip counts,
 // deterministic order and names, explicit runs, --set on every run, shards,
-// and located errors for bad batch files.
+// a sweep counted without being made and its cap, and located errors for bad
+// batch files (run names that are no plain folder name, an output that is a
+// file).
 
 #include <gtest/gtest.h>
 
@@ -49,22 +51,22 @@ sweep:
     camera.resolution: [[16, 16], [32, 32]]
     time.bin_width: ["10 ps", "20 ps"]
 )"));
-  ASSERT_EQ(b.runs.size(), 2u * 3u * 2u);
+  ASSERT_EQ(b.runCount(), 2u * 3u * 2u);
   EXPECT_EQ(b.output_root, dir_ / "sweep");
   // First product key slowest, the zip group fastest.
-  EXPECT_EQ(b.runs[0].name,
+  EXPECT_EQ(b.run(0).name,
             "run0000_offset-0.05,0,0_jitter_fwhm-30ps_resolution-16,16_bin_width-10ps");
-  EXPECT_EQ(b.runs[1].name,
+  EXPECT_EQ(b.run(1).name,
             "run0001_offset-0.05,0,0_jitter_fwhm-30ps_resolution-32,32_bin_width-20ps");
-  EXPECT_EQ(b.runs[2].varied[1].value, "80 ps");
-  EXPECT_EQ(b.runs[6].varied[0].value, "[0.1, 0, 0]");
+  EXPECT_EQ(b.run(2).varied[1].value, "80 ps");
+  EXPECT_EQ(b.run(6).varied[0].value, "[0.1, 0, 0]");
   // `set` first, then the sweep values.
-  ASSERT_EQ(b.runs[11].overrides.size(), 5u);
-  EXPECT_EQ(b.runs[11].overrides[0].keyPath, "time.bins");
-  EXPECT_EQ(b.runs[11].overrides[4].value, "20 ps");
+  ASSERT_EQ(b.run(11).overrides.size(), 5u);
+  EXPECT_EQ(b.run(11).overrides[0].keyPath, "time.bins");
+  EXPECT_EQ(b.run(11).overrides[4].value, "20 ps");
   std::set<std::string> names;
-  for (const auto& r : b.runs) names.insert(r.name);
-  EXPECT_EQ(names.size(), b.runs.size());
+  for (std::size_t i = 0; i < b.runCount(); ++i) names.insert(b.run(i).name);
+  EXPECT_EQ(names.size(), b.runCount());
 }
 
 TEST_F(BatchConfigTest, ZipAloneAndExplicitRunsAndCliOverrides) {
@@ -79,20 +81,22 @@ runs:
   - set: {sensors: [{type: spad, bins: 10}]}
 )"),
                                         {config::Override{"camera.resolution", "[16,16]"}});
-  ASSERT_EQ(b.runs.size(), 5u);
-  EXPECT_EQ(b.runs[2].name, "run0002_bins-300_seed-3");
-  EXPECT_EQ(b.runs[3].name, "baseline");
-  EXPECT_EQ(b.runs[3].index, 3u);
-  EXPECT_EQ(b.runs[4].name, "run0004");
-  for (const auto& r : b.runs) EXPECT_EQ(r.overrides.back().keyPath, "camera.resolution");
-  EXPECT_EQ(b.runs[3].overrides.front().value, "7");
-  EXPECT_EQ(b.runs[4].overrides.front().value, "[{type: spad, bins: 10}]");
+  ASSERT_EQ(b.runCount(), 5u);
+  EXPECT_EQ(b.run(2).name, "run0002_bins-300_seed-3");
+  EXPECT_EQ(b.run(3).name, "baseline");
+  EXPECT_EQ(b.run(3).index, 3u);
+  EXPECT_EQ(b.run(4).name, "run0004");
+  for (std::size_t i = 0; i < b.runCount(); ++i) {
+    EXPECT_EQ(b.run(i).overrides.back().keyPath, "camera.resolution");
+  }
+  EXPECT_EQ(b.run(3).overrides.front().value, "7");
+  EXPECT_EQ(b.run(4).overrides.front().value, "[{type: spad, bins: 10}]");
 }
 
 TEST_F(BatchConfigTest, NoSweepIsOneRun) {
   const BatchConfig b = loadBatchConfig(write("set: {time.bins: 20}\n"));
-  ASSERT_EQ(b.runs.size(), 1u);
-  EXPECT_EQ(b.runs[0].name, "run0000");
+  ASSERT_EQ(b.runCount(), 1u);
+  EXPECT_EQ(b.run(0).name, "run0000");
 }
 
 TEST_F(BatchConfigTest, LocatedErrors) {
@@ -122,6 +126,96 @@ TEST_F(BatchConfigTest, ValidationNamesTheRun) {
     EXPECT_NE(m.find("time.bins"), std::string::npos) << m;
     EXPECT_EQ(m.find("run ok:"), std::string::npos) << m;
   }
+}
+
+// "key: [0, 1, .., n - 1]".
+std::string valuesList(const std::string& key, int n) {
+  std::string list = "    " + key + ": [";
+  for (int i = 0; i < n; ++i) list += (i ? ", " : "") + std::to_string(i + 1);
+  return list + "]\n";
+}
+
+// A sweep is counted and its runs made on demand: 100000 runs (the cap) cost
+// nothing to load, and run i is the same whichever is asked first. (Made
+// eagerly, a 32^4 sweep took 1 GB and minutes before the dry run printed.)
+TEST_F(BatchConfigTest, SweepRunsAreCountedAndMadeOnDemand) {
+  const BatchConfig b = loadBatchConfig(
+      write("sweep:\n  product:\n" + valuesList("time.bins", 100) + valuesList("render.seed", 1000)));
+  ASSERT_EQ(b.runCount(), config::kMaxBatchRuns);
+  EXPECT_EQ(b.run(99999).name, "run99999_bins-100_seed-1000");
+  EXPECT_EQ(b.run(1234).name, "run1234_bins-2_seed-235");
+  EXPECT_EQ(b.run(1234).overrides.size(), 2u);
+}
+
+TEST_F(BatchConfigTest, SweepOverTheCapIsALocatedError) {
+  const std::string body =
+      "sweep:\n  product:\n" + valuesList("time.bins", 317) + valuesList("render.seed", 316);
+  const std::string e = errorOf(body);
+  EXPECT_NE(e.find("batch.yaml:3:3: sweep: expands to 317 (time.bins) x 316 (render.seed) = "
+                   "100172 runs, more than the 100000"),
+            std::string::npos)
+      << e;
+  // Counted without overflow: 64 axes of 2 values are 2^64 runs.
+  std::string huge = "sweep:\n  product:\n";
+  for (int k = 0; k < 64; ++k) huge += "    sensors." + std::to_string(k) + ".bins: [1, 2]\n";
+  EXPECT_NE(errorOf(huge).find("= 1.84e+19 runs"), std::string::npos) << errorOf(huge);
+}
+
+// A run's name is its folder's: the rules in the error, at the name's line.
+TEST_F(BatchConfigTest, RunNamesMustBePlainFolderNames) {
+  const std::string dot = errorOf("runs:\n  - name: .a.lock\n");
+  EXPECT_NE(dot.find("batch.yaml:3:11: runs[0].name: run name '.a.lock' must not start with '.'"),
+            std::string::npos)
+      << dot;
+  const std::string longName = errorOf("runs:\n  - name: " + std::string(300, 'a') + "\n");
+  EXPECT_NE(longName.find("batch.yaml:3:11"), std::string::npos) << longName;
+  EXPECT_NE(longName.find("is 300 characters long: at most 80"), std::string::npos) << longName;
+  const std::string slash = errorOf("runs:\n  - name: a/b\n");
+  EXPECT_NE(slash.find("must be letters, digits"), std::string::npos) << slash;
+  // A sweep run's name keeps only those characters of its key too (the key
+  // itself is checked when the run's config loads).
+  EXPECT_EQ(loadBatchConfig(write("sweep: {product: {\"x.a/b\": [\"1/2\"]}}\n")).run(0).name,
+            "run0000_ab-12");
+  // A listed name that a sweep run has.
+  EXPECT_NE(errorOf("sweep: {zip: {time.bins: [100, 200]}}\nruns:\n  - name: run0001_bins-200\n")
+                .find("used twice"),
+            std::string::npos);
+}
+
+TEST_F(BatchConfigTest, AnOutputThatIsAFileIsALocatedError) {
+  std::ofstream(dir_ / "taken") << "x";
+  const std::string e = errorOf("output: taken\n");
+  EXPECT_NE(e.find("batch.yaml:2:9: output: " + (dir_ / "taken").string() +
+                   " is a file, not a folder"),
+            std::string::npos)
+      << e;
+  const std::string below = errorOf("output: taken/runs\n");
+  EXPECT_NE(below.find("is a file, so the folder " + (dir_ / "taken/runs").string()),
+            std::string::npos)
+      << below;
+}
+
+// Every run's config is checked with progress after each; a long list of
+// failures is cut to the first 20 and a count.
+TEST_F(BatchConfigTest, ValidationReportsProgressAndCutsTheList) {
+  const BatchConfig b =
+      loadBatchConfig(write("sweep:\n  product:\n    time.bins: [-1, -2, -3, -4, -5]\n" +
+                            valuesList("render.seed", 6)));
+  std::size_t calls = 0, last = 0;
+  try {
+    config::validateBatch(b, [&](std::size_t done, std::size_t total) {
+      ++calls;
+      last = done;
+      EXPECT_EQ(total, 30u);
+    });
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    const std::string m = e.what();
+    EXPECT_NE(m.find("30 of 30 run(s) have invalid configs"), std::string::npos) << m;
+    EXPECT_NE(m.find("... and 10 more"), std::string::npos) << m;
+  }
+  EXPECT_EQ(calls, 30u);
+  EXPECT_EQ(last, 30u);
 }
 
 TEST(BatchShardTest, ShardsPartitionTheRuns) {

@@ -7,6 +7,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <string>
 #include <vector>
@@ -17,6 +18,7 @@
 #include "tofsim/config/SensorConfig.h"
 #include "tofsim/io/Npy.h"
 #include "tofsim/sensors/CwTof.h"
+#include "tofsim/sensors/CwTofWaveform.h"
 
 namespace tofsim::config {
 namespace {
@@ -137,6 +139,39 @@ TEST_F(CwTofWaveformConfigTest, BadWaveformsAreLocatedErrors) {
               "waveform: measured");
   expectError(measured, 3, "sensors[0].waveform", "needs `correlation`");
   expectError("    modulation_contrast: 0\n", 3, "sensors[0].modulation_contrast", "(0, 1]");
+}
+
+// The stated caps (CwTofWaveform.h): one past them is a located error, and a
+// waveform at the harmonics' cap loads (its scale found in O(K log K): the
+// grid search was O(K^2), minutes at 20000 harmonics), its maximum right.
+TEST_F(CwTofWaveformConfigTest, HarmonicsAndSamplesAreCappedAndTheCapLoads) {
+  const std::string measured = "    waveform: measured\n";
+  const auto harmonics = [](std::size_t K) {
+    std::string list;
+    char pair[64];
+    for (std::size_t k = 1; k <= K; ++k) {
+      std::snprintf(pair, sizeof pair, "%s[%.17g, 0]", k > 1 ? ", " : "", 1.0 / double(k * k));
+      list += pair;
+    }
+    return "    correlation: {harmonics: [" + list + "]}\n";
+  };
+  expectError(measured + harmonics(kMaxHarmonics + 1), 4, "sensors[0].correlation.harmonics",
+              "at most 4096");
+  const CwTofParams p = parse(measured + harmonics(kMaxHarmonics));
+  ASSERT_EQ(p.correlation[0].harmonics.size(), kMaxHarmonics);
+  // sum c_k cos(k theta) with c_k > 0 peaks at theta = 0: max = sum c_k.
+  double sum = 0.0;
+  for (const auto& c : p.correlation[0].harmonics) sum += c.real();
+  EXPECT_NEAR(PhaseCorrelation(p.correlation[0]).scale(), sum, 1e-12);
+
+  std::vector<float> samples(kMaxSamples + 1);
+  for (std::size_t j = 0; j < samples.size(); ++j) samples[j] = float(std::cos(0.001 * double(j)));
+  io::writeNpy(dir_ / "long.npy", io::NpyShape{samples.size()}, samples.data());
+  expectError(measured + "    correlation: {file: long.npy}\n", 4, "sensors[0].correlation.file",
+              "at most 65536");
+  io::writeNpy(dir_ / "cap.npy", io::NpyShape{kMaxSamples}, samples.data());
+  EXPECT_EQ(parse(measured + "    correlation: {file: cap.npy}\n").correlation[0].values.size(),
+            kMaxSamples);
 }
 
 }  // namespace

@@ -11,6 +11,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "fuzz/BatchInput.h"
 #include "fuzz/CameraFilesInput.h"
 #include "fuzz/CaptureH5Reads.h"
 #include "fuzz/IrfInput.h"
@@ -66,6 +67,17 @@ TEST_F(FuzzRegressionTest, Configs) {
   const int inputs = forEachInput("config", [&](const std::string& bytes, const fs::path&) {
     writeBytes(dir_ / "input.yaml", bytes);
     config::loadRunConfig(dir_ / "input.yaml", {});
+  });
+  EXPECT_GT(inputs, 0);
+}
+
+// As in fuzz/fuzz_batch.cpp: a batch file beside a tiny run config; one that
+// loads has its first runs and its last made and their configs loaded.
+TEST_F(FuzzRegressionTest, BatchFiles) {
+  fs::create_directory_symlink(fs::path(TOFSIM_SOURCE_DIR) / "configs" / "scenes", dir_ / "scenes");
+  const int inputs = forEachInput("batch", [&](const std::string& bytes, const fs::path&) {
+    const auto* data = reinterpret_cast<const uint8_t*>(bytes.data());
+    fuzz::runBatchInput(config::loadBatchConfig(fuzz::writeBatchInput(dir_, data, bytes.size())));
   });
   EXPECT_GT(inputs, 0);
 }

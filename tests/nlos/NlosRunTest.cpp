@@ -204,5 +204,52 @@ TEST_F(NlosRunTest, OutputsOverMaxBytesFailBeforeRenderingAndLeaveEarlierResults
             (std::vector<std::size_t>{6, 5, 3}));
 }
 
+// A scan whose H does not fit render.memory_budget fails before the scene
+// loads, naming the budget and the keys that set H's size (not the camera's:
+// an NLOS config has no camera.resolution), and writes nothing. (It ran, and
+// at 4096 x 4096 points ran out of memory or for an hour.)
+TEST_F(NlosRunTest, ScansOverTheMemoryBudgetFailBeforeRendering) {
+  // H: 2048 bins x 2 x 1 x 6 x 5 points x 4 B = 480 KiB, twice (with
+  // first_bounce), and one laser position's light for all 30 sensor points:
+  // 2.3 MiB, over the smallest budget.
+  std::string yaml = smallScan("exhaustive", "  laser_grid: [2, 1]\n");
+  yaml.replace(yaml.find("bins: 128"), 9, "bins: 2048");
+  yaml.replace(yaml.find("render: {"), 9, "render: {memory_budget: 1 MiB, ");
+  try {
+    run(yaml);
+    ADD_FAILURE() << "no error";
+  } catch (const InputError& e) {
+    const std::string what = e.what();
+    for (const char* words :
+         {"test_nlos.yaml: render.memory_budget: the NLOS scan holds about 2.3 MiB",
+          "time.bins x nlos.laser_grid x nlos.sensor_grid", "over render.memory_budget (1.0 MiB)"}) {
+      EXPECT_NE(what.find(words), std::string::npos) << words << "\n" << what;
+    }
+  }
+  EXPECT_FALSE(std::filesystem::exists(dir_ / "out"));
+}
+
+// A wall whose triangles all lost their area (scaled flat along x) is
+// dropped when the scene loads; the error says so, at nlos.relay_wall,
+// instead of calling the node missing.
+TEST_F(NlosRunTest, AWallWithoutAreaIsReportedAsSuch) {
+  std::ifstream in(kConfigs / "scenes" / "nlos_letter.gltf");
+  nlohmann::json gltf = nlohmann::json::parse(in);
+  ASSERT_EQ(gltf["nodes"][0]["name"], "wall");
+  gltf["nodes"][0]["scale"] = {0.0, 1.0, 1.0};
+  std::ofstream(dir_ / "flat_wall.gltf") << gltf.dump();
+  std::string yaml = smallScan("confocal");
+  yaml.replace(0, yaml.find('\n'), "scene: " + (dir_ / "flat_wall.gltf").string());
+  try {
+    run(yaml);
+    ADD_FAILURE() << "no error";
+  } catch (const InputError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("test_nlos.yaml:3:"), std::string::npos) << what;
+    EXPECT_NE(what.find("nlos.relay_wall: relay wall 'wall' has no area"), std::string::npos)
+        << what;
+  }
+}
+
 }  // namespace
 }  // namespace tofsim::pipeline

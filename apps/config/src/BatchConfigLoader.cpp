@@ -1,28 +1,20 @@
-// Expands a batch file into runs. Order: the sweep first, then `runs:`.
-// Sweep: the cartesian product of the `product:` keys in file order (the
-// first key varies slowest), times the `zip:` lists advanced together (the
-// zip group is the innermost, fastest varying axis). Sweep run i is named
-// "run%04d" plus a short suffix of its values; explicit runs take their
-// `name` (or "run%04d"). Indices count all runs, so names stay stable when
-// only the explicit list grows.
+// Reads a batch file: its base, `set:`, the sweep's axes (counted, not
+// expanded: BatchExpansion.cpp makes the runs on demand) and the `runs:`
+// list, with their names checked as folder names.
 
 #include <yaml-cpp/yaml.h>
 
-#include <cctype>
 #include <cstdio>
 #include <map>
 
+#include "BatchExpansion.h"
 #include "ConfigNode.h"
 #include "tofsim/config/BatchConfig.h"
+#include "tofsim/util/FolderPath.h"
 
 namespace tofsim::config {
 
 namespace {
-
-struct Axis {
-  std::vector<std::string> keys;                 // one key, or the zipped keys
-  std::vector<std::vector<std::string>> values;  // values[position][key]
-};
 
 std::string flowText(const YAML::Node& node) {
   YAML::Emitter out;
@@ -61,20 +53,20 @@ std::vector<Override> setOf(const ConfigNode& node) {
   return out;
 }
 
-std::vector<Axis> sweepAxes(const ConfigNode& sweep) {
-  std::vector<Axis> axes;
+std::vector<SweepAxis> sweepAxes(const ConfigNode& sweep) {
+  std::vector<SweepAxis> axes;
   if (!sweep.isMap()) sweep.fail("must be a mapping with product: and/or zip:");
   if (const auto product = sweep.optionalChild("product")) {
     if (!product->isMap()) product->fail("must map config keys to lists of values");
     for (const std::string& key : product->keys()) {
-      axes.push_back(Axis{{key}, {}});
+      axes.push_back(SweepAxis{{key}, {}});
       for (const std::string& v : valuesOf(product->child(key))) axes.back().values.push_back({v});
     }
     markAll(*product);
   }
   if (const auto zip = sweep.optionalChild("zip")) {
     if (!zip->isMap()) zip->fail("must map config keys to lists of equal length");
-    Axis axis;
+    SweepAxis axis;
     std::string firstKey;
     for (const std::string& key : zip->keys()) {
       const std::vector<std::string> values = valuesOf(zip->child(key));
@@ -95,34 +87,60 @@ std::vector<Axis> sweepAxes(const ConfigNode& sweep) {
   return axes;
 }
 
-// "sensors.0.jitter_fwhm" = "30 ps" -> "jitter_fwhm-30ps": the last key part
-// and the value with everything but [A-Za-z0-9.,+-] dropped.
-std::string suffixPart(const Override& o) {
-  const std::size_t dot = o.keyPath.rfind('.');
-  std::string text = (dot == std::string::npos ? o.keyPath : o.keyPath.substr(dot + 1)) + "-";
-  for (char c : o.value) {
-    const bool keep = std::isalnum(static_cast<unsigned char>(c)) || c == '.' || c == ',' ||
-                      c == '+' || c == '-' || c == '_';
-    if (keep) text += c;
+// The number of runs of the axes, or a located error at `sweep` when it is
+// over kMaxBatchRuns (counted without overflow: 32^4 runs or 10^30).
+std::size_t sweepRunCount(const ConfigNode& sweep, const std::vector<SweepAxis>& axes) {
+  std::size_t runs = 1;
+  double product = 1.0;  // the count when it overflows
+  std::string factors;
+  for (const SweepAxis& a : axes) {
+    const std::size_t n = a.values.size();
+    product *= static_cast<double>(n);
+    runs = runs > kMaxBatchRuns ? runs : runs * n;  // past the cap: the count is not used
+    std::string keys = a.keys[0];
+    if (a.keys.size() > 1) keys = "zip " + keys + " +" + std::to_string(a.keys.size() - 1);
+    factors += (factors.empty() ? "" : " x ") + std::to_string(n) + " (" + keys + ")";
   }
-  return text;
+  if (product > static_cast<double>(kMaxBatchRuns)) {
+    char total[32];
+    std::snprintf(total, sizeof total, product < 1e15 ? "%.0f" : "%.3g", product);
+    sweep.fail("expands to " + factors + " = " + total + " runs, more than the " +
+               std::to_string(kMaxBatchRuns) +
+               " a batch may have: sweep fewer values, or split it into several batches");
+  }
+  return runs;
 }
 
-std::string runName(std::size_t index, const std::vector<Override>& varied) {
-  char base[16];
-  std::snprintf(base, sizeof base, "run%04zu", index);
-  std::string name = base;
-  for (const Override& o : varied) name += "_" + suffixPart(o);
-  constexpr std::size_t kMaxName = 80;  // well under NAME_MAX, readable in a listing
-  if (name.size() > kMaxName) name.resize(kMaxName);
-  return name;
+// A run's name is its folder's: plain characters, not hidden (the batch's own
+// lock files are .<run>.lock beside the run folders) and of a listable length.
+void checkRunName(const ConfigNode& entry, const std::string& name) {
+  const std::string shown = name.size() > 40 ? name.substr(0, 40) + "..." : name;
+  const auto fail = [&](const std::string& rule) {
+    entry.failKey("name", "run name '" + shown + "' " + rule);
+  };
+  if (name.size() > kMaxRunName) {
+    fail("is " + std::to_string(name.size()) + " characters long: at most " +
+         std::to_string(kMaxRunName));
+  }
+  if (name.empty() || name.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ"
+                                             "0123456789_.,+-") != std::string::npos) {
+    fail("must be letters, digits, '_', '-', '.', ',' or '+'");
+  }
+  if (name[0] == '.') {
+    fail("must not start with '.' (a hidden folder; .<run>.lock files are the batch's own)");
+  }
+  if (name == "base") fail("is reserved");
 }
 
-bool plainName(const std::string& name) {
-  return !name.empty() && name != "." && name != ".." && name != "base" &&
-         name.find_first_not_of(
-             "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ"
-             "0123456789_.,+-") == std::string::npos;
+// Whether an explicit name is one the sweep gives: "run<digits>..." names
+// sweep run <digits> at most, so one comparison, not a list of every name.
+bool sweepHasName(const BatchConfig& batch, const std::string& name) {
+  if (name.rfind("run", 0) != 0) return false;
+  const std::size_t end = name.find_first_not_of("0123456789", 3);
+  const std::string digits = name.substr(3, end == std::string::npos ? end : end - 3);
+  if (digits.empty() || digits.size() > 9) return false;
+  const std::size_t index = std::stoul(digits);
+  return index < batch.sweepRuns && batch.run(index).name == name;
 }
 
 }  // namespace
@@ -135,85 +153,65 @@ BatchConfig loadBatchConfig(const std::filesystem::path& file, const std::vector
   BatchConfig batch;
   batch.batch_file = file;
   batch.base_config = (file.parent_path() / root.requireString("base")).lexically_normal();
-  if (!std::filesystem::exists(batch.base_config)) {
-    root.failKey("base", "base config not found: " + batch.base_config.string());
+  std::error_code ec;  // (a name too long for the file system is an error, not an exception)
+  if (!std::filesystem::exists(batch.base_config, ec)) {
+    root.failKey("base", (ec ? ec.message() + ": " : "base config not found: ") +
+                             batch.base_config.string());
   }
   batch.output_root =
       (file.parent_path() / root.getString("output", "out/batch")).lexically_normal();
-  std::vector<Override> common;
-  if (const auto set = root.optionalChild("set")) common = setOf(*set);
+  const std::string outputProblem = folderPathProblem(batch.output_root);
+  if (!outputProblem.empty()) root.failKey("output", outputProblem);
+  if (const auto set = root.optionalChild("set")) batch.common = setOf(*set);
+  batch.extra = extra;
 
-  std::vector<Axis> axes;
-  if (const auto sweep = root.optionalChild("sweep")) axes = sweepAxes(*sweep);
-  std::size_t combinations = axes.empty() ? 0 : 1;
-  for (const Axis& a : axes) combinations *= a.values.size();
-  for (std::size_t i = 0; i < combinations; ++i) {
-    BatchRun run;
-    run.index = i;
-    // Mixed-radix digits of i, the last axis fastest.
-    std::vector<std::size_t> digit(axes.size());
-    std::size_t rest = i;
-    for (std::size_t a = axes.size(); a-- > 0;) {
-      digit[a] = rest % axes[a].values.size();
-      rest /= axes[a].values.size();
-    }
-    for (std::size_t a = 0; a < axes.size(); ++a) {
-      for (std::size_t k = 0; k < axes[a].keys.size(); ++k) {
-        run.varied.push_back(Override{axes[a].keys[k], axes[a].values[digit[a]][k]});
-      }
-    }
-    run.name = runName(i, run.varied);
-    run.overrides = common;
-    run.overrides.insert(run.overrides.end(), run.varied.begin(), run.varied.end());
-    batch.runs.push_back(std::move(run));
+  if (const auto sweep = root.optionalChild("sweep")) {
+    batch.sweep = sweepAxes(*sweep);
+    if (!batch.sweep.empty()) batch.sweepRuns = sweepRunCount(*sweep, batch.sweep);
   }
-
-  std::map<std::string, std::size_t> seen;
-  for (const BatchRun& r : batch.runs) seen[r.name] = r.index;
   if (const auto runs = root.optionalChild("runs")) {
+    if (!runs->isSequence()) runs->fail("must be a list of runs (name:, set:)");
+    std::map<std::string, std::size_t> seen;  // the listed runs' names
     for (const ConfigNode& entry : runs->elements()) {
-      BatchRun run;
-      run.index = batch.runs.size();
-      run.name = entry.getString("name", runName(run.index, {}));
-      if (!plainName(run.name)) {
-        entry.failKey(
-            "name", "must be letters, digits, '_', '-', '.', ',' or '+' (got '" + run.name + "')");
+      if (batch.sweepRuns + batch.listed.size() >= kMaxBatchRuns) {
+        runs->fail("the sweep and the runs listed make more than the " +
+                   std::to_string(kMaxBatchRuns) + " runs a batch may have");
       }
-      if (seen.count(run.name)) entry.failKey("name", "run name '" + run.name + "' is used twice");
+      BatchRun run;
+      run.index = batch.sweepRuns + batch.listed.size();
+      run.name = entry.getString("name", batchRunName(run.index, {}));
+      checkRunName(entry, run.name);
+      if (seen.count(run.name) || sweepHasName(batch, run.name)) {
+        entry.failKey("name", "run name '" + run.name + "' is used twice");
+      }
       seen[run.name] = run.index;
       if (const auto set = entry.optionalChild("set")) run.varied = setOf(*set);
-      run.overrides = common;
-      run.overrides.insert(run.overrides.end(), run.varied.begin(), run.varied.end());
-      batch.runs.push_back(std::move(run));
+      batch.listed.push_back(std::move(run));
     }
   }
-  if (batch.runs.empty()) {
-    // No sweep, no runs: the base config (with `set`) is the one run.
-    BatchRun run;
-    run.name = "run0000";
-    run.overrides = common;
-    batch.runs.push_back(std::move(run));
-  }
-  for (BatchRun& run : batch.runs)
-    run.overrides.insert(run.overrides.end(), extra.begin(), extra.end());
   root.reportUnusedKeys();
   return batch;
 }
 
-void validateBatch(const BatchConfig& batch) {
+void validateBatch(const BatchConfig& batch,
+                   const std::function<void(std::size_t, std::size_t)>& progress) {
+  constexpr std::size_t kListed = 20;  // failing runs whose errors the message shows
   std::string errors;
   std::size_t failed = 0;
-  for (const BatchRun& run : batch.runs) {
+  const std::size_t runs = batch.runCount();
+  for (std::size_t i = 0; i < runs; ++i) {
+    const BatchRun run = batch.run(i);
     try {
       loadRunConfig(batch.base_config, run.overrides);
-    } catch (const std::exception& e) {
-      errors += "\n  run " + run.name + ": " + e.what();
-      ++failed;
+    } catch (const InputError& e) {
+      if (++failed <= kListed) errors += "\n  run " + run.name + ": " + e.what();
     }
+    if (progress) progress(i + 1, runs);
   }
+  if (failed > kListed) errors += "\n  ... and " + std::to_string(failed - kListed) + " more";
   if (failed > 0) {
     throw InputError(batch.batch_file.string() + ": " + std::to_string(failed) + " of " +
-                     std::to_string(batch.runs.size()) + " run(s) have invalid configs:" + errors);
+                     std::to_string(runs) + " run(s) have invalid configs:" + errors);
   }
 }
 

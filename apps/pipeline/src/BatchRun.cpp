@@ -11,7 +11,9 @@
 #include <cstring>
 #include <deque>
 #include <fstream>
+#include <functional>
 #include <map>
+#include <memory>
 #include <thread>
 
 #include "BatchChild.h"
@@ -26,6 +28,10 @@ namespace fs = std::filesystem;
 using Clock = std::chrono::steady_clock;
 
 namespace {
+
+// A batch of fewer runs passes them in seconds (about 10 ms a run, most of it
+// the content key): no progress lines, which end each pass with a line.
+constexpr std::size_t kRunsWithProgress = 1000;
 
 struct Child {
   std::size_t slot;  // into summary.runs
@@ -74,14 +80,16 @@ fs::path lockFile(const BatchRunResult& r) {
 // The content key of every run of the shard; the scene digest once per scene
 // file, as a sweep usually renders one scene many times.
 std::vector<RunContentKey> runKeys(const config::BatchConfig& batch, const fs::path& base,
-                                   const std::vector<BatchRunResult>& runs) {
+                                   const std::vector<BatchRunResult>& runs,
+                                   const std::function<void(std::size_t, std::size_t)>& visited) {
   std::map<fs::path, std::string> sceneDigests;
   std::vector<RunContentKey> keys;
   for (const BatchRunResult& r : runs) {
-    const config::RunConfig config = config::loadRunConfig(base, batch.runs[r.index].overrides);
+    const config::RunConfig config = config::loadRunConfig(base, batch.run(r.index).overrides);
     std::string& scene = sceneDigests[fs::absolute(config.scene_file).lexically_normal()];
     if (scene.empty()) scene = sceneInputsDigest(config.scene_file);
     keys.push_back(runContentKey(config, scene));
+    visited(keys.size(), runs.size());
   }
   return keys;
 }
@@ -106,7 +114,7 @@ bool startRun(const BatchOptions& options, const config::BatchConfig& batch, con
   }
   // The folder is not emptied: the render replaces the earlier outputs only
   // once its own set is complete, and its manifest lists only its own files.
-  RenderChildArgs args{options.executable, base,   batch.runs[r.index].overrides,
+  RenderChildArgs args{options.executable, base,   batch.run(r.index).overrides,
                        r.directory,        r.name, lock->fd()};
   const pid_t pid = spawnRender(args);
   running.emplace(pid, Child{slot, Clock::now(), std::move(*lock)});
@@ -184,8 +192,7 @@ namespace {
 
 void runPending(const BatchOptions& options, const config::BatchConfig& batch, const fs::path& base,
                 const std::vector<RunContentKey>& keys, std::deque<std::size_t> pending,
-                BatchSummary& summary) {
-  Progress progress("batch", options.quiet);
+                const Progress& progress, BatchSummary& summary) {
   std::map<pid_t, Child> running;
   // Runs another batch is rendering: asked again when this batch has nothing
   // else to start, so that both batches end with every run done.
@@ -232,15 +239,31 @@ void runPending(const BatchOptions& options, const config::BatchConfig& batch, c
 }  // namespace
 
 BatchSummary runBatch(const BatchOptions& options) {
-  if (options.jobs < 1) throw InputError("--jobs must be >= 1");
+  if (options.jobs < 1 || options.jobs > kMaxJobs) {
+    throw InputError("--jobs must be between 1 and " + std::to_string(kMaxJobs) + " (got " +
+                     std::to_string(options.jobs) + ")");
+  }
   const config::BatchConfig batch = config::loadBatchConfig(options.batchFile, options.overrides);
-  config::validateBatch(batch);
+  // Every run is visited three times before anything renders (its config
+  // checked, its content key, its folder's state): each pass stops at an
+  // interrupt, and a long one (a large sweep) reports its progress, timed
+  // from the pass's start.
+  const auto pass = [&](const char* what) {
+    auto progress = std::make_shared<Progress>("batch", options.quiet);
+    return [progress, what](std::size_t done, std::size_t total) {
+      throwIfInterrupted();
+      if (total >= kRunsWithProgress) progress->update(done, total, what);
+    };
+  };
+  config::validateBatch(batch, pass("run configs checked"));
   const fs::path base = fs::absolute(batch.base_config);
 
   BatchSummary summary;
-  summary.totalRuns = batch.runs.size();
-  for (const config::BatchRun& run : batch.runs) {
-    if (!inShard(run.index, options.shardIndex, options.shardCount)) continue;
+  summary.totalRuns = batch.runCount();
+  for (std::size_t i = 0; i < summary.totalRuns; ++i) {
+    throwIfInterrupted();
+    if (!inShard(i, options.shardIndex, options.shardCount)) continue;
+    const config::BatchRun run = batch.run(i);
     BatchRunResult r;
     r.index = run.index;
     r.name = run.name;
@@ -248,7 +271,8 @@ BatchSummary runBatch(const BatchOptions& options) {
     for (const config::Override& o : run.varied) r.message += o.keyPath + "=" + o.value + "  ";
     summary.runs.push_back(std::move(r));
   }
-  const std::vector<RunContentKey> keys = runKeys(batch, base, summary.runs);
+  const std::vector<RunContentKey> keys = runKeys(batch, base, summary.runs, pass("runs keyed"));
+  const auto assessed = pass("runs assessed");
   std::deque<std::size_t> pending;
   for (std::size_t i = 0; i < summary.runs.size(); ++i) {
     BatchRunResult& r = summary.runs[i];
@@ -260,8 +284,14 @@ BatchSummary runBatch(const BatchOptions& options) {
       pending.push_back(i);
     }
     if (!options.dryRun) r.message.clear();
+    assessed(i + 1, summary.runs.size());
   }
-  if (!options.dryRun) runPending(options, batch, base, keys, std::move(pending), summary);
+  if (options.dryRun) {
+    summary.interruptSignal = pendingInterrupt();  // one that came after the last check
+  } else {
+    const Progress progress("batch", options.quiet);
+    runPending(options, batch, base, keys, std::move(pending), progress, summary);
+  }
   return summary;
 }
 

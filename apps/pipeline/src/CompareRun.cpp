@@ -8,6 +8,8 @@
 #include "tofsim/io/Exr.h"
 #include "tofsim/pipeline/SavedVolume.h"
 #include "tofsim/util/AtomicFile.h"
+#include "tofsim/util/Error.h"
+#include "tofsim/util/FolderPath.h"
 
 namespace tofsim::pipeline {
 
@@ -62,6 +64,12 @@ std::string componentsTable(const std::vector<ComponentComparison>& components) 
 
 CompareSummary runCompare(const std::filesystem::path& a, const std::filesystem::path& b,
                           const std::filesystem::path& outputDirectory) {
+  // Before the volumes are read: a file in the folder's place is the option's
+  // error, not a bare "cannot create directories" after the work.
+  const std::string folderProblem = folderPathProblem(outputDirectory);
+  if (!folderProblem.empty()) {
+    throw InputError(FileLoc{outputDirectory.string()}, "-o/--output", folderProblem);
+  }
   const SavedVolume volumeA = loadSavedVolume(a);
   const SavedVolume volumeB = loadSavedVolume(b);
   CompareSummary summary;
@@ -70,7 +78,12 @@ CompareSummary runCompare(const std::filesystem::path& a, const std::filesystem:
   // Every volume read (and checked) before the first file is written.
   summary.components = compareComponents(a, b);
 
-  std::filesystem::create_directories(outputDirectory);
+  std::error_code ec;
+  std::filesystem::create_directories(outputDirectory, ec);
+  if (ec) {
+    throw InputError(FileLoc{outputDirectory.string()}, "-o/--output",
+                     "cannot create the folder: " + ec.message());
+  }
   writeFileAtomically(outputDirectory / "compare_energy.csv", compare::energyCurveCsv(c));
   summary.files.push_back("compare_energy.csv");
 

@@ -11,6 +11,7 @@
 #include "StagedOutput.h"
 #include "tofsim/io/Npy.h"
 #include "tofsim/pipeline/Manifest.h"
+#include "tofsim/pipeline/NlosEstimate.h"
 #include "tofsim/pipeline/NlosRender.h"
 #include "tofsim/pipeline/NlosScan.h"
 #include "tofsim/pipeline/OutputEstimate.h"
@@ -118,26 +119,11 @@ void writeOutputs(const config::RunConfig& config, const NlosScanGeometry& scan,
   }
 }
 
-// The capture's files by size, for output.max_bytes and the free space:
-// H.npy and first_bounce.npy exactly, capture.hdf5 at most H's bytes
-// (compressed).
-OutputEstimate nlosOutputs(const config::RunConfig& config, const NlosScanGeometry& scan) {
-  std::uintmax_t hBytes = 4u * static_cast<std::uintmax_t>(config.render.time.bins);
-  for (std::size_t n : scan.pointShape()) hBytes *= n;
-  const std::string keys = "time.bins, nlos.sensor_grid, nlos.laser_grid";
-  OutputEstimate estimate;
-  if (config.output.transient) {
-    estimate.items.push_back({"H.npy", hBytes, keys});
-    estimate.items.push_back({"first_bounce.npy", hBytes, keys});
-  }
-  if (config.nlos->hdf5) estimate.items.push_back({"capture.hdf5", hBytes, keys});
-  return estimate;
-}
-
 }  // namespace
 
 RunSummary runNlosRender(const config::RunConfig& config, const RunOptions& options) {
   Progress progress("render", options.quiet);
+  checkNlosMemory(config);  // from the config alone: before the scene loads
   const scene::Scene scene = scene::loadGltf(config.scene_file);
   const NlosScanGeometry scan = planNlosScan(config, scene);
   RunSummary summary;
@@ -145,7 +131,7 @@ RunSummary runNlosRender(const config::RunConfig& config, const RunOptions& opti
       options.outputDirectory.empty() ? config.output.directory : options.outputDirectory;
   StagedFolder folder(summary.outputDirectory, keptAcrossRenders);
   noteLinkedOutput(folder, progress);
-  checkOutputsFit(nlosOutputs(config, scan), config, folder.staging());
+  checkOutputsFit(nlosOutputs(config), config, folder.staging());
   const NlosVolume volume = renderNlosScan(
       config, scene, scan,
       [&](std::size_t done, std::size_t total, const std::string& what) {

@@ -37,10 +37,15 @@ std::size_t NlosScanGeometry::pointsPerCapture() const {
   return scan == config::NlosScan::Confocal ? 1 : sensorPoints.size();
 }
 
+std::vector<std::size_t> nlosPointShape(config::NlosScan scan, const std::array<int32_t, 2>& sensor,
+                                        const std::array<int32_t, 2>& laser) {
+  const std::vector<std::size_t> s{std::size_t(sensor[0]), std::size_t(sensor[1])};
+  if (scan != config::NlosScan::Exhaustive) return s;
+  return {std::size_t(laser[0]), std::size_t(laser[1]), s[0], s[1]};
+}
+
 std::vector<std::size_t> NlosScanGeometry::pointShape() const {
-  const std::vector<std::size_t> sensor{std::size_t(sensorGrid[0]), std::size_t(sensorGrid[1])};
-  if (scan != config::NlosScan::Exhaustive) return sensor;
-  return {std::size_t(laserGrid[0]), std::size_t(laserGrid[1]), sensor[0], sensor[1]};
+  return nlosPointShape(scan, sensorGrid, laserGrid);
 }
 
 NlosCapture NlosScanGeometry::capture(std::size_t i, const config::RunConfig& config,

@@ -4,15 +4,22 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <limits>
 
+#include "tofsim/pipeline/NlosEstimate.h"
 #include "tofsim/pipeline/OutputProducts.h"
 #include "tofsim/util/Error.h"
 
 namespace tofsim::pipeline {
 
 std::uintmax_t OutputEstimate::totalBytes() const {
+  // Saturating: an NLOS estimate's items may be at the type's maximum.
   std::uintmax_t total = 0;
-  for (const OutputItem& item : items) total += item.bytes;
+  for (const OutputItem& item : items) {
+    total = item.bytes > std::numeric_limits<std::uintmax_t>::max() - total
+                ? std::numeric_limits<std::uintmax_t>::max()
+                : total + item.bytes;
+  }
   return total;
 }
 
@@ -84,9 +91,10 @@ std::string formatBytes(std::uintmax_t bytes) {
   return text;
 }
 
-void checkOutputsFit(const OutputEstimate& estimate, const config::RunConfig& config,
-                     const std::filesystem::path& directory) {
-  const std::uintmax_t total = estimate.totalBytes();
+namespace {
+
+// "the outputs need about 27.0 GiB: transient.npy 13.5 GiB (keys), ..."
+std::string needText(const OutputEstimate& estimate) {
   std::vector<OutputItem> largest = estimate.items;
   std::sort(largest.begin(), largest.end(),
             [](const OutputItem& a, const OutputItem& b) { return a.bytes > b.bytes; });
@@ -95,14 +103,33 @@ void checkOutputsFit(const OutputEstimate& estimate, const config::RunConfig& co
     detail += (i ? ", " : "") + largest[i].what + " " + formatBytes(largest[i].bytes) + " (" +
               largest[i].drivenBy + ")";
   }
-  const std::string need = "the outputs need about " + formatBytes(total) + ": " + detail;
-  if (total > config.output.max_bytes) {
-    throw InputError(FileLoc{config.config_file.string()}, "output.max_bytes",
-                     need + "; that is over output.max_bytes (" +
-                         formatBytes(config.output.max_bytes) +
-                         "): lower time.bins or camera.resolution, turn outputs off, or raise "
-                         "output.max_bytes");
+  return "the outputs need about " + formatBytes(estimate.totalBytes()) + ": " + detail;
+}
+
+}  // namespace
+
+void checkMaxBytes(const OutputEstimate& estimate, const config::RunConfig& config) {
+  if (estimate.totalBytes() <= config.output.max_bytes) return;
+  throw InputError(FileLoc{config.config_file.string()}, "output.max_bytes",
+                   needText(estimate) + "; that is over output.max_bytes (" +
+                       formatBytes(config.output.max_bytes) +
+                       "): lower the keys named, turn outputs off, or raise output.max_bytes");
+}
+
+void checkRunSizes(const config::RunConfig& config) {
+  if (config.nlos) {
+    checkNlosMemory(config);
+    checkMaxBytes(nlosOutputs(config), config);
+  } else {
+    checkMaxBytes(estimateOutputs(config), config);
   }
+}
+
+void checkOutputsFit(const OutputEstimate& estimate, const config::RunConfig& config,
+                     const std::filesystem::path& directory) {
+  checkMaxBytes(estimate, config);
+  const std::uintmax_t total = estimate.totalBytes();
+  const std::string need = needText(estimate);
   struct statvfs fs {};
   if (::statvfs(directory.c_str(), &fs) != 0) return;  // unknown: the writes will tell
   const std::uintmax_t available = static_cast<std::uintmax_t>(fs.f_bavail) * fs.f_frsize;

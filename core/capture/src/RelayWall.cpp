@@ -23,6 +23,10 @@ RelayWall relayWallOf(const scene::Scene& scene, const std::string& name) {
     if (m.node == name || m.name == name) meshes.push_back(&m);
   }
   if (meshes.empty()) {
+    if (std::find(scene.arealess.begin(), scene.arealess.end(), name) != scene.arealess.end()) {
+      throw InputError("relay wall '" + name +
+                       "' has no area (every triangle of it is degenerate: the scene dropped it)");
+    }
     throw InputError("no node or mesh named '" + name + "' in the scene for the relay wall");
   }
   // The plane: the area-weighted normal of every triangle.

@@ -97,8 +97,11 @@ SceneAssembly assembleScene(const GltfDocument& doc, LoadReport& report,
       if (meshDesc.primitives.size() > 1) mesh.name += "/" + std::to_string(p);
       mesh.node = node.name;
       const bool keep = i < keepEmpty.size() && keepEmpty[i];
-      if (!buildPrimitive(doc, ref, instance.world, mesh, report) ||
-          (mesh.indices.empty() && !keep)) {
+      if (!buildPrimitive(doc, ref, instance.world, mesh, report)) continue;
+      if (mesh.indices.empty() && !keep) {
+        for (const std::string* n : {&mesh.node, &mesh.name}) {
+          if (!n->empty()) scene.arealess.push_back(*n);
+        }
         continue;
       }
       if (material >= 0) {

@@ -4,6 +4,7 @@
 // (binCorrelation). Model: sensors/README.md, "Measured correlation waveforms".
 
 #include <complex>
+#include <cstddef>
 #include <string>
 #include <vector>
 
@@ -27,8 +28,14 @@ struct CorrelationWaveform {
   bool fourier() const { return !harmonics.empty(); }
 };
 
-/// Why w cannot be used (empty when it can): no form or both, a value not
-/// finite, phases not increasing in [0, 2 pi), or no AC part (zero energy).
+/// The most harmonics (K) and samples (M) a waveform may have: each bin's
+/// mean costs O(K) (a harmonic's closed form) and the scale's search
+/// O(K log K); a measured correlation has a few dozen of either.
+inline constexpr std::size_t kMaxHarmonics = 4096;
+inline constexpr std::size_t kMaxSamples = 65536;
+
+/// Why w cannot be used (empty when it can): more than kMaxHarmonics or
+/// kMaxSamples, no form or both, a value not finite, phases not increasing in [0, 2 pi), or no AC part (zero energy).
 std::string waveformProblem(const CorrelationWaveform& w);
 
 /// A waveform ready to integrate: mean removed, scaled to max |rho| = 1.

@@ -25,10 +25,14 @@
 
 namespace tofsim::pipeline {
 
+/// The most runs at once (--jobs): each is a child process with its own
+/// render buffers (and GL context).
+inline constexpr int kMaxJobs = 256;
+
 struct BatchOptions {
   std::filesystem::path batchFile;
   std::vector<config::Override> overrides;  ///< the CLI's --set, after the batch's own
-  int jobs = 1;                             ///< child processes at once, >= 1
+  int jobs = 1;                             ///< child processes at once, 1 .. kMaxJobs
   int shardIndex = 1;                       ///< K of --shard K/N, 1-based
   int shardCount = 1;                       ///< N of --shard K/N
   bool dryRun = false;                      ///< list the runs, render nothing
@@ -68,8 +72,12 @@ bool inShard(std::size_t index, int shardIndex, int shardCount);
 /// Loads and validates the batch (every run's config, before anything runs),
 /// then runs this shard's runs that are not done. Throws InputError for a bad
 /// batch file or an invalid run config; a run that fails while running is
-/// reported in the summary, and the others still run. An interrupt is not an
-/// exception here: the summary says which runs it stopped.
+/// reported in the summary, and the others still run. An interrupt while runs
+/// render is not an exception here: the summary says which runs it stopped;
+/// one during the passes over every run before that (their configs, content
+/// keys and folders' states, with progress from 1000 runs on) throws
+/// tofsim::Interrupted, as nothing has started; a dry run interrupted after
+/// its last pass returns its summary with interruptSignal set.
 BatchSummary runBatch(const BatchOptions& options);
 
 /// The table printed at the end: run, status, seconds, output folder; for a

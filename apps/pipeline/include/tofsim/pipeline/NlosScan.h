@@ -43,6 +43,11 @@ struct NlosScanGeometry {
                       const scene::Scene& scene) const;
 };
 
+/// H's axes after time for a scan of these grids, from the config alone:
+/// {sx, sy}, or {lx, ly, sx, sy} for exhaustive scans (NlosEstimate.h).
+std::vector<std::size_t> nlosPointShape(config::NlosScan scan, const std::array<int32_t, 2>& sensor,
+                                        const std::array<int32_t, 2>& laser);
+
 /// Points as x, y, z floats one after another (the grids' .npy, HDF5 and
 /// NumPy layout).
 std::vector<float> flatXyz(const std::vector<glm::vec3>& points);

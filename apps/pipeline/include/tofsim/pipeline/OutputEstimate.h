@@ -32,8 +32,16 @@ struct OutputEstimate {
 OutputEstimate estimateOutputs(const config::RunConfig& config);
 
 /// Throws InputError naming the sizes and their keys when the estimate
-/// exceeds output.max_bytes, or with the temporary bytes the free space of
-/// `directory`'s file system.
+/// exceeds output.max_bytes.
+void checkMaxBytes(const OutputEstimate& estimate, const config::RunConfig& config);
+
+/// What `validate` checks of a run's size, from the config alone: its outputs
+/// against output.max_bytes, and an NLOS scan's memory against
+/// render.memory_budget (NlosEstimate.h).
+void checkRunSizes(const config::RunConfig& config);
+
+/// checkMaxBytes, then the outputs with the temporary bytes against the free
+/// space of `directory`'s file system.
 void checkOutputsFit(const OutputEstimate& estimate, const config::RunConfig& config,
                      const std::filesystem::path& directory);
 

@@ -67,6 +67,10 @@ struct Scene {
   std::vector<Material> materials;
   std::vector<Texture> textures;
   std::vector<SceneCamera> cameras;
+  /// Node and mesh names of primitives dropped because none of their
+  /// triangles has area: a name asked for later (a relay wall) is then
+  /// "has no area", not "missing".
+  std::vector<std::string> arealess;
 
   std::size_t triangleCount() const;
   /// Axis-aligned box of all referenced vertices, metres; zero box when empty.
