@@ -28,6 +28,19 @@ inline const std::filesystem::path& workDir() {
   return dir;
 }
 
+#ifdef TOFSIM_SOURCE_DIR
+/// Links the shipped configs/scenes into workDir() once, so that a config
+/// written there with `scene: scenes/cornell_box.gltf` resolves as in configs/.
+inline void linkShippedScenes() {
+  static const bool linked = [] {
+    std::filesystem::create_directory_symlink(TOFSIM_SOURCE_DIR "/configs/scenes",
+                                              workDir() / "scenes");
+    return true;
+  }();
+  (void)linked;
+}
+#endif
+
 /// Writes the bytes to workDir()/name and returns the path.
 inline std::filesystem::path writeInput(const std::string& name, const uint8_t* data, size_t size) {
   const std::filesystem::path path = workDir() / name;

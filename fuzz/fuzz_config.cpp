@@ -8,12 +8,7 @@
 #include "tofsim/util/Error.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
-  static const bool linked = [] {
-    std::filesystem::create_directory_symlink(TOFSIM_SOURCE_DIR "/configs/scenes",
-                                              tofsim::fuzz::workDir() / "scenes");
-    return true;
-  }();
-  (void)linked;
+  tofsim::fuzz::linkShippedScenes();
   const auto path = tofsim::fuzz::writeInput("input.yaml", data, size);
   try {
     tofsim::config::loadRunConfig(path, {});

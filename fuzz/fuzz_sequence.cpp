@@ -7,12 +7,7 @@
 #include "tofsim/util/Error.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
-  static const bool linked = [] {
-    std::filesystem::create_directory_symlink(TOFSIM_SOURCE_DIR "/configs/scenes",
-                                              tofsim::fuzz::workDir() / "scenes");
-    return true;
-  }();
-  (void)linked;
+  tofsim::fuzz::linkShippedScenes();
   const auto config = tofsim::fuzz::writeSequenceInput(tofsim::fuzz::workDir(), data, size);
   try {
     if (!tofsim::fuzz::sequenceFramesRenderable(tofsim::config::loadRunConfig(config, {}))) {

@@ -241,10 +241,11 @@ class KeptRenderer {
 
   py::dict render(const config::RunConfig& config) {
     checkSameSetup(config);
+    const bool mainThread = onMainThread();  // asks Python: before the GIL goes
     Rendered r;
     {
       py::gil_scoped_release released;
-      SigintScope sigint(onMainThread());
+      SigintScope sigint(mainThread);
       r = renderInMemory(config, scene_, &renderer_, quiet_);
     }
     return toPython(r, config.render.time);

@@ -20,12 +20,14 @@ def test_each_render_is_render_s_bytes_and_the_scene_is_prepared_once():
     renderer = tofsim.Renderer(CORNELL, overrides=SMALL_CORNELL)
     seen = []
     for x in (0.2, 0.3, 0.4):
-        moved = {"light.attach_to_camera": False, "light.position": [x, 0.5, -0.8]}
+        moved = {"light.attach_to_camera": False, "light.position": [x, 0.273, -0.8],
+                 "light.direction": [0, 0, 1]}
         kept = renderer.render(moved)
         fresh = tofsim.render(tofsim.load_config(CORNELL, {**SMALL_CORNELL, **moved}))
         np.testing.assert_array_equal(kept.transient, fresh.transient)
         np.testing.assert_array_equal(kept.depth, fresh.depth)
         assert kept.files == [] and kept.output_dir is None
+        assert kept.transient.sum() > 0
         seen.append(kept.transient)
     # The light moved: each render differs from the one before.
     assert not np.array_equal(seen[0], seen[1])
@@ -41,7 +43,7 @@ def test_a_moved_camera_sees_the_plane_at_its_closed_form_bins(plane_config):
         config = dict(plane_config, camera=dict(plane_config["camera"], position=[0, 0, z]))
         expected = expected_bins(config, result.time)
         checked = expected >= 0
-        assert checked.sum() > 1000
+        assert checked.sum() > 900
         np.testing.assert_array_equal(peak_bins(result.direct)[checked], expected[checked])
     assert renderer.scene_preparations == 1
 
