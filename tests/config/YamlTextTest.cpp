@@ -13,23 +13,13 @@
 #include <string>
 
 #include "YamlText.h"
+#include "support/AliasBomb.h"
 #include "support/TempDir.h"
 #include "tofsim/config/BatchConfig.h"
 #include "tofsim/config/RunConfig.h"
 
 namespace tofsim::config {
 namespace {
-
-// Nine levels of ten aliases each: 10^9 nodes once expanded, 200 bytes of text.
-std::string aliasBomb() {
-  std::string text = "[&l0 lol";
-  for (int level = 1; level <= 9; ++level) {
-    text += ", &l" + std::to_string(level) + " [";
-    for (int k = 0; k < 10; ++k) text += (k ? ", *l" : "*l") + std::to_string(level - 1);
-    text += "]";
-  }
-  return text + "]";
-}
 
 class YamlTextTest : public test::TempDirTest {
  protected:
@@ -152,20 +142,20 @@ TEST_F(YamlTextTest, DuplicateKeyInALensCalibration) {
 // memory ran out. Now refused at once, at the alias that passes the cap.
 TEST_F(YamlTextTest, AliasBombIsRefusedAtOnceInEveryLoader) {
   const auto start = std::chrono::steady_clock::now();
-  write("c.yaml", "scene: scene.gltf\nbomb: " + aliasBomb() + "\n");
+  write("c.yaml", "scene: scene.gltf\nbomb: " + test::aliasBomb() + "\n");
   const std::string file = errorOf([&] { loadRunConfig(dir_ / "c.yaml"); });
   EXPECT_NE(file.find("c.yaml:2:"), std::string::npos) << file;
   EXPECT_NE(file.find("aliases expand this document past 1000000 nodes"), std::string::npos)
       << file;
 
   write("base.yaml", "scene: scene.gltf\n");
-  write("b.yaml", "base: base.yaml\nset:\n  camera.resolution: " + aliasBomb() + "\n");
+  write("b.yaml", "base: base.yaml\nset:\n  camera.resolution: " + test::aliasBomb() + "\n");
   const std::string batch = errorOf([&] { loadBatchConfig(dir_ / "b.yaml", {}); });
   EXPECT_NE(batch.find("b.yaml:3:"), std::string::npos) << batch;
   EXPECT_NE(batch.find("past 1000000 nodes"), std::string::npos) << batch;
 
   const std::string set = errorOf([&] {
-    loadRunConfig(dir_ / "base.yaml", {{"camera.resolution", aliasBomb()}});
+    loadRunConfig(dir_ / "base.yaml", {{"camera.resolution", test::aliasBomb()}});
   });
   EXPECT_NE(set.find("--set camera.resolution="), std::string::npos) << set;
   EXPECT_NE(set.find("past 1000000 nodes"), std::string::npos) << set;

@@ -18,6 +18,7 @@
 
 #include "pipeline/CliRun.h"
 #include "pipeline/StatsJson.h"
+#include "support/AliasBomb.h"
 #include "support/TempDir.h"
 #include "tofsim/io/Hdf5Capture.h"
 #include "tofsim/io/Npy.h"
@@ -44,17 +45,6 @@ fs::path writeConfig(const fs::path& file, const std::string& more) {
                "scene: " + std::string(TOFSIM_SOURCE_DIR) + "/configs/scenes/");
   std::ofstream(file) << text << more;
   return file;
-}
-
-// Nine levels of ten aliases each: 10^9 nodes once expanded.
-std::string aliasBomb() {
-  std::string text = "[&l0 lol";
-  for (int level = 1; level <= 9; ++level) {
-    text += ", &l" + std::to_string(level) + " [";
-    for (int k = 0; k < 10; ++k) text += (k ? ", *l" : "*l") + std::to_string(level - 1);
-    text += "]";
-  }
-  return text + "]";
 }
 
 using SilentInputCliTest = TempDirTest;
