@@ -6,21 +6,6 @@
 
 namespace tofsim::sensors {
 
-uint64_t splitMix64(uint64_t x) {
-  x += 0x9E3779B97F4A7C15ull;
-  x = (x ^ (x >> 30)) * 0xBF58476D1CE4E5B9ull;
-  x = (x ^ (x >> 27)) * 0x94D049BB133111EBull;
-  return x ^ (x >> 31);
-}
-
-Rng::Rng(uint64_t seed, uint64_t stream) {
-  inc_ = (splitMix64(stream ^ 0x5851F42D4C957F2Dull) << 1) | 1u;
-  state_ = 0;
-  nextU32();
-  state_ += splitMix64(seed + splitMix64(stream));
-  nextU32();
-}
-
 double Rng::normal() {
   if (hasSpare_) {
     hasSpare_ = false;

@@ -1,34 +1,25 @@
 #pragma once
-// Reproducible random numbers: PCG32 (O'Neill 2014) seeded through SplitMix64,
-// and samplers written on top of it, so that the same seed gives the same bytes
-// on every platform's standard library. Each pixel gets its own stream derived
-// from (seed, stream id), so results do not depend on iteration order. The
-// generator's step and the uniform are inline: the SPAD draws one per
-// detection or bin.
+// Reproducible random numbers for the sensor models: the samplers of the
+// laws they draw (normal, Poisson, binomial, gamma, beta), written on tofsim's
+// one generator (PCG32 seeded through SplitMix64, util/Random.h), so that the
+// same seed gives the same bytes on every platform's standard library. Each
+// pixel gets its own stream derived from (seed, stream id), so results do not
+// depend on iteration order. The generator's step and the uniform are inline:
+// the SPAD draws one per detection or bin.
 
 #include <cstdint>
 
-namespace tofsim::sensors {
+#include "tofsim/util/Random.h"
 
-uint64_t splitMix64(uint64_t x);
+namespace tofsim::sensors {
 
 class Rng {
  public:
-  Rng(uint64_t seed, uint64_t stream);
+  Rng(uint64_t seed, uint64_t stream) : engine_(Pcg32::forStream(seed, stream)) {}
 
-  uint32_t nextU32() {
-    const uint64_t old = state_;
-    state_ = old * 6364136223846793005ull + inc_;
-    const auto xorshifted = static_cast<uint32_t>(((old >> 18u) ^ old) >> 27u);
-    const auto rot = static_cast<uint32_t>(old >> 59u);
-    return (xorshifted >> rot) | (xorshifted << ((32u - rot) & 31u));
-  }
+  uint32_t nextU32() { return engine_.nextUint(); }
   /// Uniform in [0, 1) with 53 random bits.
-  double uniform() {
-    const uint64_t hi = nextU32() >> 5;  // 27 bits
-    const uint64_t lo = nextU32() >> 6;  // 26 bits
-    return static_cast<double>((hi << 26) | lo) * 0x1.0p-53;
-  }
+  double uniform() { return engine_.nextDouble(); }
   /// uniform() when it is >= p, else -1: the same law, but the low 26 bits
   /// are drawn only when the high 27 do not decide (a generator step saved
   /// where u < p is likely).
@@ -56,8 +47,7 @@ class Rng {
   uint64_t binomialInversion(uint64_t n, double p);
   uint64_t binomialBtrs(uint64_t n, double p);
 
-  uint64_t state_ = 0;
-  uint64_t inc_ = 1;
+  Pcg32 engine_;
   double spare_ = 0.0;
   bool hasSpare_ = false;
 };

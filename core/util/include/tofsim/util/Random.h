@@ -1,5 +1,6 @@
 #pragma once
-// Deterministic random numbers for Monte Carlo renderers.
+// Deterministic random numbers: tofsim's one generator, for the renderers
+// and the sensor models (sensors/Random.h draws its laws from it).
 //
 // Every independent unit of work (a pixel, a VPL, ...) gets its own generator
 // derived from (run seed, unit index) by SplitMix64, so results depend only on
@@ -20,6 +21,9 @@ inline uint64_t splitMix64(uint64_t& state) {
   return z ^ (z >> 31);
 }
 
+/// SplitMix64 of one value: the output of a step from state x (x not kept).
+inline uint64_t splitMix64Of(uint64_t x) { return splitMix64(x); }
+
 class Pcg32 {
  public:
   Pcg32(uint64_t initState, uint64_t stream) : inc_((stream << 1u) | 1u) {
@@ -34,6 +38,14 @@ class Pcg32 {
     const uint64_t initState = splitMix64(mix);
     const uint64_t stream = splitMix64(mix);
     return Pcg32(initState, stream);
+  }
+
+  /// The generator of stream `stream` in a sensor run seeded with `seed`
+  /// (sensors::Rng; sensors::pixelStream makes the stream ids). Its own
+  /// derivation, not forUnit's: the sensors' bytes were pinned with it.
+  static Pcg32 forStream(uint64_t seed, uint64_t stream) {
+    return Pcg32(splitMix64Of(seed + splitMix64Of(stream)),
+                 splitMix64Of(stream ^ 0x5851F42D4C957F2Dull));
   }
 
   uint32_t nextUint() {
