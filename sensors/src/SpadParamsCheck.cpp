@@ -14,7 +14,7 @@ void checkSpadParams(const SpadParams& p) {
   TOFSIM_CHECK(p.dead_time_s >= 0.0 && p.tdc_stops >= 0);
   TOFSIM_CHECK(p.gate_width_s >= 0.0 && p.gate_skew_sigma_s >= 0.0);
   TOFSIM_CHECK(p.gated_frames >= 0 && p.pulses_per_frame >= 1 && p.gate_positions >= 1);
-  TOFSIM_CHECK(p.counter_bits >= 0 && p.counter_bits <= 62);
+  TOFSIM_CHECK(p.counter_bits >= 0 && p.counter_bits <= kMaxCounterBits);
   TOFSIM_CHECK(p.afterpulse_probability >= 0.0 && p.afterpulse_probability <= 1.0);
   TOFSIM_CHECK(!p.afterpulse_delays_s.empty());
   for (double d : p.afterpulse_delays_s) TOFSIM_CHECK(d > 0.0);

@@ -122,7 +122,7 @@ inline constexpr auto kSpadFields = std::tuple{
           {.json = "gate_step_s", .doc = "gated frames: the gate moves by this much per position"}},
     Field{"gate_positions", &SpadParams::gate_positions, Integer{.max = 100000},
           {.json = "gate_positions", .doc = "gated frames: gate positions swept (position k: `gate_start` + k `gate_step`)"}},
-    Field{"counter_bits", &SpadParams::counter_bits, IntegerIn{0, 32},
+    Field{"counter_bits", &SpadParams::counter_bits, IntegerIn{0, kMaxCounterBits},
           {.json = "counter_bits", .doc = "counter depth: every count (`spad_counts` bins, gated counts) clips at 2^bits - 1; 0: unlimited"}},
     Custom{"tdc_dnl", "list or file", "", "none (equal bins)", "LSB", "TDC differential non-linearity, one value per bin (each > -1, sum 0): code i is `bin_width` (1 + DNL_i) wide, so pile-up acts on the true unequal bins; a list, or a .npy (1-D float32) or one-column .csv file (see \"TDC non-linearity\" above)"},
     Field{"afterpulse_probability", &SpadParams::afterpulse_probability, Number{kFraction},

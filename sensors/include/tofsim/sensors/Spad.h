@@ -97,6 +97,10 @@ SpadAfterpulseTable afterpulseTable(std::string file, std::vector<double> delays
 /// mean), or t0_s (Time).
 double irfTimeZero_s(const SpadIrf& irf);
 
+/// The deepest counter a SPAD's counter_bits may ask for: the config's range
+/// (SensorFields.h) and the model's check (SpadParamsCheck.cpp) both read it.
+inline constexpr int32_t kMaxCounterBits = 32;
+
 struct SpadParams {
   /// The device preset whose values were the defaults (SpadPresets.h); empty: none.
   std::string preset;
@@ -148,7 +152,7 @@ struct SpadParams {
   double gate_step_s = 0.0;
   int32_t gate_positions = 1;
   /// Counter depth: every count (spad_counts' bins, the gated counts) clips
-  /// at 2^counter_bits - 1. 0: unlimited.
+  /// at 2^counter_bits - 1. 0: unlimited. At most kMaxCounterBits.
   int32_t counter_bits = 0;
   SpadDnl tdc_dnl;  ///< TDC differential non-linearity; none: equal bins
   /// Afterpulsing (both modes; the exact event engine, SpadEventEngine.h,
