@@ -1,5 +1,6 @@
 #include "tofsim/pipeline/RendererFactory.h"
 
+#include "tofsim/capture/IrCapabilities.h"
 #include "tofsim/cpu/CpuBackend.h"
 #include "tofsim/ir/IrRenderer.h"
 #include "tofsim/reference/ReferenceRenderer.h"
@@ -41,12 +42,11 @@ RendererChoice makeRenderer(const config::RunConfig& config, gl::EglPlatform egl
     return {std::make_unique<reference::ReferenceRenderer>(makeReferenceSettings(config)),
             "reference"};
   }
-  // Only the CPU backend gathers a defocused camera's aperture samples and
-  // merges pixel samples.
-  const bool defocused = !config.nlos && config.camera.camera.defocused();
-  const bool merged = !config.nlos && config.render.indirect.merge_pixel_samples &&
-                      config.render.pixel_samples > 1;
-  const config::IrBackendKind backend = (defocused || merged) && config.backend == config::IrBackendKind::Auto
+  // What the GL backend does not gather, auto gives to the CPU backend.
+  const capture::IrCapabilities need =
+      capture::irNeeds(config.nlos ? nullptr : &config.camera.camera, config.render);
+  const config::IrBackendKind backend = !capture::covers(capture::kGlCapabilities, need) &&
+                                                config.backend == config::IrBackendKind::Auto
                                             ? config::IrBackendKind::Cpu
                                             : resolveIrBackend(config.backend);
   return {std::make_unique<ir::IrRenderer>(makeIrBackend(backend, eglPlatform, config.cpu_threads)),

@@ -200,15 +200,14 @@ RenderResult IrRenderer::render(const RenderJob& job, SegmentSink& sink,
   IrBackend& backend = *backend_;
   const DeviceLimits limits = backend.limits();
   validateJob(job, limits);
-  if (const Camera* camera = cameraOf(job.imager);
-      camera != nullptr && camera->defocused() && !backend.defocuses()) {
-    throw InputError("camera.aperture " + std::to_string(camera->aperture_m) +
+  const capture::IrCapabilities need = capture::irNeeds(cameraOf(job.imager), job.settings);
+  if (need.defocus && !backend.capabilities().defocus) {
+    throw InputError("camera.aperture " + std::to_string(cameraOf(job.imager)->aperture_m) +
                      " m: defocus (thin-lens aperture sampling) runs on render.backend: cpu; the " +
                      backend.description() +
                      " backend does not gather aperture samples (set camera.aperture: 0)");
   }
-  if (job.settings.indirect.merge_pixel_samples && job.settings.pixel_samples > 1 &&
-      !backend.mergesPixelSamples()) {
+  if (need.merged_pixel_samples && !backend.capabilities().merged_pixel_samples) {
     throw InputError("render.indirect.merge_pixel_samples runs on render.backend: cpu; the " +
                      backend.description() + " backend gathers every pixel sample");
   }

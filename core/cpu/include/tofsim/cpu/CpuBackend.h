@@ -61,8 +61,7 @@ class CpuBackend : public ir::IrBackend {
   std::string description() const override;
   ir::DeviceLimits limits() const override;
   bool tracesRays() const override { return true; }
-  bool defocuses() const override { return true; }
-  bool mergesPixelSamples() const override { return true; }
+  capture::IrCapabilities capabilities() const override { return capture::kCpuCapabilities; }
   void setScene(const scene::Scene& scene, const rays::RayScene* rays) override;
   ir::CentreSurfaces prepareSurfaces(const capture::RenderJob& job) override;
   /// Never called: the CPU backend traces every imager's samples itself.

@@ -39,6 +39,7 @@
 #include <string>
 #include <vector>
 
+#include "tofsim/capture/IrCapabilities.h"
 #include "tofsim/capture/RenderJob.h"
 #include "tofsim/volume/TimeAxis.h"
 
@@ -104,13 +105,11 @@ class IrBackend {
   /// gets the driver's RayScene; otherwise the driver builds none unless a
   /// later bounce needs it).
   virtual bool tracesRays() const { return false; }
-  /// Whether the backend gathers a defocused camera's aperture samples
-  /// (capture::ThinLens: each sample's camera leg ends on its own aperture
-  /// point, SurfaceImage::origin); the driver refuses a defocused camera
-  /// otherwise.
-  virtual bool defocuses() const { return false; }
-  /// Whether the backend gathers render.indirect.merge_pixel_samples.
-  virtual bool mergesPixelSamples() const { return false; }
+  /// What the backend gathers beyond the common work (capture/IrCapabilities.h:
+  /// a defocused camera's aperture samples, each sample's camera leg ending on
+  /// its own aperture point, SurfaceImage::origin; merged pixel samples); the
+  /// driver refuses a job that needs more. Default: the GL backend's, none.
+  virtual capture::IrCapabilities capabilities() const { return capture::kGlCapabilities; }
   /// The scene every following render sees, prepared once (GL: geometry
   /// upload and the triangle soup's BVH; CPU: nothing but the reference):
   /// `rays` is the driver's one Embree scene of it when tracesRays(), which
