@@ -1,14 +1,20 @@
 // The declared config keys (ConfigKeys.h). The README tables are checked
 // against these rows by tests/config/ConfigKeysTest.cpp: change both together.
-// Sensor parameters are declared in their tables (sensors/SensorFields.h).
+// The rows of a section with a parameter table come from it (RunFields.h,
+// TimeFields.h, LightFields.h, OutputFields.h, NlosFields.h,
+// SequenceFields.h; sensors: sensors/SensorFields.h); the literal rows below
+// are the top level's and `camera`'s.
 #include "tofsim/config/ConfigKeys.h"
 
 #include <iterator>
 
 #include "FieldDoc.h"
+#include "LightFields.h"
 #include "NlosFields.h"
+#include "OutputFields.h"
 #include "RunFields.h"
 #include "SequenceFields.h"
+#include "TimeFields.h"
 #include "tofsim/sensors/SensorFields.h"
 
 namespace tofsim::config {
@@ -74,96 +80,6 @@ const ConfigKey kRunConfigKeys[] = {
      "the halo's sigma or decay length; required with `halo_weight` > 0"},
     {"camera.psf.file", "path", "", "none", "-",
      "a measured kernel in place of the four keys above: a 2-D float32 .npy (H, W), odd sizes, centre at (H/2, W/2), values finite and >= 0, normalised on load; relative to the config"},
-    {"light.type", "string", "", "point", "-",
-     "`point` or `spot`"},
-    {"light.attach_to_camera", "bool", "", "false", "-",
-     "put the light at the camera (plus `offset`) aimed along the view, as ToF illuminators are mounted; then `position`/`direction` are ignored"},
-    {"light.offset", "vec3", "", "[0, 0, 0]", "m",
-     "with `attach_to_camera`: right, up, forward of the pinhole"},
-    {"light.position", "vec3", "", "[0, 0, 0]", "m",
-     "light position"},
-    {"light.direction", "vec3", "", "[0, 0, -1]", "-",
-     "spot axis (normalised; not zero)"},
-    {"light.cone_angle", "angle", "in (0, 180]", "30", "deg",
-     "spot half angle"},
-    {"light.cone_falloff", "angle", "in [0, cone_angle]", "0", "deg",
-     "spot edge softening"},
-    {"light.intensity", "number or vec3", ">= 0", "1", "W/sr",
-     "radiant intensity per channel (R, G, B)"},
-    {"time.start", "duration", "", "0", "s",
-     "leading edge of bin 0 (time from the light's impulse to arrival at the camera)"},
-    {"time.bin_width", "duration", "> 0", "10 ps", "s",
-     "bin width"},
-    {"time.bins", "int", "in [1, 2^20]", "512", "-",
-     "number of bins"},
-    {"time.index_of_refraction", "number", ">= 1", "1", "-",
-     "of the medium filling the scene (slows light)"},
-    {"time.camera_unwarp", "bool", "", "false", "-",
-     "drop the surface -> camera delay (time at the surface)"},
-    {"render.renderer", "string", "", "ir", "-",
-     "`ir` (instant radiosity) or `reference`"},
-    {"render.backend", "string", "", "auto", "-",
-     "device of `ir`: `gl` (OpenGL 4.5 through EGL: a GPU, or Mesa's llvmpipe), `cpu` (the "
-     "native CPU backend, all cores, needs no EGL), or `auto`: `gl` when the EGL device platform "
-     "offers a hardware GPU (llvmpipe/softpipe do not count), `cpu` otherwise. The choice is "
-     "printed (`device: ...`) and recorded in `transient.json` (`backend`, `device`); "
-     "`--backend` on `render` sets it. Both give the same volume within float rounding "
-     "(tests/cpu)"},
-    {"render.threads", "int", "in [0, 4096]", "0", "-",
-     "worker threads of the `cpu` backend, and of the later bounces' ray tracing on both backends (0 = every core this process may run on: its CPU affinity, e.g. a Slurm task's `--cpus-per-task`, taskset or a container's cpuset); the bytes do not depend on it (tests/cpu, tests/ir BounceVplsTest)"},
-    {"render.seed", "int", "in [0, 2^62]", "1", "-",
-     "seed of every random choice: the renderer's and the sensors'"},
-    {"render.shadow_map_resolution", "int", "in [16, 16384]", "1024", "pixel",
-     "per cube face of the light's shadow map"},
-    {"render.memory_budget", "bytes", "in [1 MiB, 1 PiB]", "512 MiB", "B",
-     "device memory (GPU, or RAM for `backend: cpu`) for volume segments and ISM batches; for `tofsim sense`, the host memory of the runs of pixels it reads from the saved files"},
-    {"render.strict", "bool", "", "false", "-",
-     "light cut off by the time axis or a sensor window (more than 0.1 %) is an error, not a warning; `--strict` on `render` / `validate` sets it (see \"Time windows\")"},
-    {"render.pixel_footprint", "bool", "", "true", "-",
-     "a pixel integrates its area: every contribution is spread over the distribution of its optical path across the pixel (a trapezoid in time, first order; see README.md, \"Pixel footprints\"); `false`: all of a pixel's light in the bin of its centre's path (closed-form tests). `ir` only: the reference integrates by `reference.pixel_filter`"},
-    {"render.pixel_samples", "int", "in [1, 16]", "1", "-",
-     "N x N stratified surface samples per pixel, averaged (silhouettes, pixels that see two surfaces); each sample's footprint is its sub-pixel; costs N^2 gathers"},
-    {"render.adaptive_pixel_samples", "bool", "", "false", "-",
-     "with `pixel_samples` N > 1: the N x N samples only in pixels at an edge of the pixel-centre G-buffer (a 3 x 3 neighbour off the pixel's tangent plane by more than 5 degrees, a normal turned by more than 5 degrees, or surface next to background), or where the light reaches one of two neighbouring pixel centres and not the other (a shadow's edge or a hard spot's rim inside a flat pixel: a ray from each centre to the light, traced by the driver on either backend); every other pixel takes one sample at its centre with the whole pixel's footprint, exactly what `pixel_samples: 1` computes there (README.md, \"Pixel footprints\"). Silhouettes, creases and shadow edges at a fraction of N^2 the cost; texture edges inside a flat pixel are not detected. `ir` only"},
-    {"render.materials", "string", "", "lambertian", "-",
-     "`lambertian`: every material reflects albedo / pi (base colour only; metallic and roughness ignored), the output of before, byte for byte. `gltf`: the glTF metallic-roughness BRDF (GGX, height-correlated Smith, Schlick; `metallicFactor`, `roughnessFactor`, `metallicRoughnessTexture`; README.md, \"Materials\") in the direct light seen by the camera, on both `ir` backends and in the reference, and in IR's indirect light: glossy VPLs (each records the direction its light came from and its material, and lights a point with its BRDF, clamped at `indirect.vpl_brdf_clamp`) and the BRDF on the camera side of every VPL contribution. The default stays `lambertian` because glTF's metallic 0, roughness 1 is not Lambertian: the shipped scenes would change"},
-    {"render.indirect", "mapping", "", "defaults", "-",
-     "indirect light (instant radiosity: VPLs), below"},
-    {"render.reference", "mapping", "", "defaults", "-",
-     "the CPU path tracer's settings (`renderer: reference`), below"},
-};
-// render.indirect.* and render.reference.* come from their tables (RunFields.h),
-// spliced in here.
-const ConfigKey kRunConfigKeysAfterRender[] = {
-    {"output.directory", "string", "", "out", "-",
-     "output folder (`-o` overrides)"},
-    {"output.transient", "bool", "", "true", "-",
-     "`transient.npy` (H, W, T, 3) + `transient.json` (axes, units, time axis)"},
-    {"output.steady", "bool", "", "true", "-",
-     "`steady.exr` + `steady.png` (sum over time)"},
-    {"output.depth", "bool", "", "true", "-",
-     "`depth.exr` (channels Y and Z, the same metres; 0 = no surface), `depth.npy` (float32 (H, W), "
-     "metres) + `depth.png`"},
-    {"output.frames", "bool", "", "false", "-",
-     "`frames/frame_NNNNN.exr`, one per time bin"},
-    {"output.components", "list", "", "[]", "-",
-     "also write `direct` (`direct.npy`), `indirect` (`indirect.npy`) and/or `bounce1` .. `bounceN` (`bounce<k>.npy`, the light of exactly k indirect bounces, k <= `render.indirect.bounces`, `renderer: ir` only; `indirect` = their sum exactly)"},
-    {"output.video", "bool", "", "false", "-",
-     "`transient.mp4`: light in flight, one frame per `video_stride` bins, time stamp in each frame"},
-    {"output.video_tone_map", "string", "", "global", "-",
-     "`global`: linear, one scale for the whole video (the 99.5th percentile of all frames' values maps to white); `log`: `1 + log10(v / white) / 4`, four decades below that white"},
-    {"output.video_stride", "int", "in [1, 2^20]", "1", "bins",
-     "one frame every `video_stride` time bins"},
-    {"output.video_window", "int", "", "1", "bins",
-     "exposure of each video frame / frame PNG: frame t sums bins t-(w-1)/2 .. t+w/2, so a wavefront shows w bins wide"},
-    {"output.video_fps", "number", "> 0", "30", "1/s",
-     "frames per second of the video"},
-    {"output.max_bytes", "bytes", "in [1 B, 1 EiB]", "64 GiB", "B",
-     "before rendering, the outputs' size is estimated (`.npy` volumes, EXR frames and sensor arrays exactly, PNG and MP4 roughly); a run over this, or over the output folder's free space, fails at once naming the sizes and the keys that drive them"},
-    {"output.frame_pngs", "bool", "", "false", "-",
-     "`frames/frame_NNNNN.png` (NNNNN = time bin): the video's frames as PNG (needs no `video`)"},
-    {"output.plot_ranges", "map of [lo, hi]", "lo < hi", "{}", "unit of the picture",
-     "fixed colour ranges, so pictures compare across runs: key = the PNG's path without `.png` (`depth`, `steady`, `sensors/<sensor>/<output>`), e.g. `{depth: [0.5, 3], sensors/cwtof/cwtof_mpi_error: [-0.05, 0.05]}`; `steady` maps lo..hi to black..white; a key that names no picture of the run is warned about; a sensor picture's JSON records the range it was drawn with, fixed or automatic (`picture.range`, `sensors/README.md`)"},
 };
 // The keys of a sensor entry itself, and the one-of-two channel keys; every
 // other sensor key's row comes from its parameter table (SensorFields.h).
@@ -184,12 +100,13 @@ std::span<const ConfigKey> runConfigKeys() {
   static const DocRows rows = [] {
     DocRows r;
     r.keys.assign(std::begin(kRunConfigKeys), std::end(kRunConfigKeys));
+    addDocRows<LightConfig>(r, "light", kLightFields);
+    addDocRows(r, "time", kTimeFields, RunConfig{}.render.time);
+    addDocRows<RunConfig>(r, "render", kRenderFields);
     addDocRows<capture::IndirectSettings>(r, "render.indirect", kIndirectFields);
     addDocRows<ReferenceConfig>(r, "render.reference", kReferenceFields);
     addDocRows<NlosConfig>(r, "nlos", kNlosFields);
     addDocRows<SequenceConfig>(r, "sequence", kSequenceFields);
-    r.keys.insert(r.keys.end(), std::begin(kRunConfigKeysAfterRender),
-                  std::end(kRunConfigKeysAfterRender));
     addDocRows<OutputConfig>(r, "output", kOutputFields);
     return r;
   }();

@@ -5,18 +5,19 @@
 
 #include "FieldEmit.h"
 #include "LensConfig.h"
+#include "LightFields.h"
 #include "NlosFields.h"
+#include "OutputFields.h"
 #include "RunFields.h"
 #include "SequenceFields.h"
 #include "ShortestNumber.h"
+#include "TimeFields.h"
 #include "tofsim/config/RunConfig.h"
 #include "tofsim/config/SensorConfig.h"
 
 namespace tofsim::config {
 
 namespace {
-
-std::string picoseconds(double seconds) { return withUnit(seconds, 1e-12, "ps", "s"); }
 
 YAML::Node vec(const glm::vec3& v) {
   YAML::Node n(YAML::NodeType::Sequence);
@@ -140,71 +141,37 @@ YAML::Node sequenceNode(const SequenceConfig& c) {
 
 YAML::Node lightNode(const LightConfig& c) {
   YAML::Node n;
-  const capture::Light& l = c.light;
-  n["type"] = l.type == capture::Light::Type::Spot ? "spot" : "point";
-  n["attach_to_camera"] = c.attach_to_camera;
-  n["offset"] = vec(c.offset_camera_m);
-  n["position"] = vec(l.position_world);
-  n["direction"] = vec(l.direction_world);
-  n["cone_angle"] = shortest(l.cone_half_angle_deg) + " deg";
-  n["cone_falloff"] = shortest(l.cone_falloff_deg) + " deg";
-  n["intensity"] = vec(l.intensity_W_per_sr);
+  emitFields(n, kLightFields, c);
   return n;
 }
 
 YAML::Node renderNode(const RunConfig& config) {
-  const capture::RenderSettings& r = config.render;
   YAML::Node n;
-  n["renderer"] = config.renderer == RendererKind::Reference ? "reference" : "ir";
-  n["backend"] = irBackendName(config.backend);
-  n["threads"] = config.cpu_threads;
-  n["seed"] = r.seed;
-  n["shadow_map_resolution"] = r.shadow_map_resolution;
-  n["memory_budget"] = std::to_string(r.memory_budget_bytes) + " B";
-  n["strict"] = config.strict;
-  n["pixel_footprint"] = r.pixel_footprint;
-  n["pixel_samples"] = r.pixel_samples;
-  n["adaptive_pixel_samples"] = r.adaptive_pixel_samples;
-  n["materials"] = r.materials == capture::MaterialModel::Gltf ? "gltf" : "lambertian";
-  YAML::Node i;
-  emitFields(i, kIndirectFields, r.indirect);
-  n["indirect"] = i;
-  YAML::Node ref;
-  emitFields(ref, kReferenceFields, config.reference);
-  n["reference"] = ref;
+  emitFields(n, kRenderFields, config, [&](const std::string& key) {
+    YAML::Node section;
+    if (key == "indirect") emitFields(section, kIndirectFields, config.render.indirect);
+    if (key == "reference") emitFields(section, kReferenceFields, config.reference);
+    n[key] = section;
+  });
   return n;
 }
 
 YAML::Node outputNode(const OutputConfig& o) {
   YAML::Node n;
-  n["directory"] = o.directory.string();
-  emitFields(n, kOutputFields, o);
-  n["transient"] = o.transient;
-  n["steady"] = o.steady;
-  n["depth"] = o.depth;
-  n["frames"] = o.frames;
-  n["video"] = o.video;
-  n["frame_pngs"] = o.frame_pngs;
-  n["video_tone_map"] = o.video_tone_map == VideoToneMap::Log ? "log" : "global";
-  n["video_stride"] = o.video_stride;
-  n["video_window"] = o.video_window;
-  n["video_fps"] = shortest(o.video_fps);
-  n["max_bytes"] = std::to_string(o.max_bytes) + " B";
-  YAML::Node components(YAML::NodeType::Sequence);
-  if (o.direct) components.push_back("direct");
-  if (o.indirect) components.push_back("indirect");
-  for (const int32_t k : o.bounces) components.push_back("bounce" + std::to_string(k));
-  components.SetStyle(YAML::EmitterStyle::Flow);
-  n["components"] = components;
-  YAML::Node ranges(YAML::NodeType::Map);
-  for (const auto& [name, range] : o.plot_ranges) {
-    YAML::Node r(YAML::NodeType::Sequence);
-    r.push_back(shortest(range[0]));
-    r.push_back(shortest(range[1]));
-    r.SetStyle(YAML::EmitterStyle::Flow);
-    ranges[name] = r;
-  }
-  n["plot_ranges"] = ranges;
+  emitFields(n, kOutputFields, o, [&](const std::string& key) {
+    if (key == "components") {
+      YAML::Node components(YAML::NodeType::Sequence);
+      if (o.direct) components.push_back("direct");
+      if (o.indirect) components.push_back("indirect");
+      for (const int32_t k : o.bounces) components.push_back("bounce" + std::to_string(k));
+      components.SetStyle(YAML::EmitterStyle::Flow);
+      n[key] = components;
+    } else if (key == "plot_ranges") {
+      YAML::Node ranges(YAML::NodeType::Map);
+      for (const auto& [name, range] : o.plot_ranges) ranges[name] = flowPair(range[0], range[1]);
+      n[key] = ranges;
+    }
+  });
   return n;
 }
 
@@ -221,15 +188,11 @@ std::string effectiveConfigYaml(const RunConfig& config) {
   }
   if (config.sequence) root["sequence"] = sequenceNode(*config.sequence);
   YAML::Node time;
-  time["start"] = picoseconds(config.render.time.start_s);
-  time["bin_width"] = picoseconds(config.render.time.bin_width_s);
-  time["bins"] = config.render.time.bins;
-  time["index_of_refraction"] = shortest(config.render.time.index_of_refraction);
-  time["camera_unwarp"] = config.render.time.camera_unwarp;
+  emitFields(time, kTimeFields, config.render.time);
   root["time"] = time;
   root["render"] = renderNode(config);
   YAML::Node output = outputNode(config.output);
-  if (config.nlos) {  // the keys an nlos capture reads (RunConfigLoader's checkNlosRun)
+  if (config.nlos) {  // the keys an nlos capture reads (RunChecks.cpp's checkNlosRun)
     YAML::Node kept;
     for (const char* key : {"directory", "transient", "max_bytes"}) kept[key] = output[key];
     output = kept;

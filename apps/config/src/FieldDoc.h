@@ -8,6 +8,7 @@
 #include <type_traits>
 #include <vector>
 
+#include "FieldKinds.h"
 #include "QuantityText.h"
 #include "ShortestNumber.h"
 #include "tofsim/config/ConfigKeys.h"
@@ -58,6 +59,16 @@ KindDoc kindDoc(const K& kind) {
     return {"bool", "", "-"};
   } else if constexpr (std::is_same_v<K, sensors::OptionalDuration>) {
     return {"duration", "", "s"};
+  } else if constexpr (std::is_same_v<K, Picoseconds>) {
+    return {"duration", rangeText(kind.range), "s"};
+  } else if constexpr (std::is_same_v<K, Bytes>) {
+    return {"bytes", "in [" + bytesText(kind.min) + ", " + bytesText(kind.max) + "]", "B"};
+  } else if constexpr (std::is_same_v<K, Angle>) {
+    return {"angle", kind.rangeDoc ? kind.rangeDoc : rangeText(kind.range), "deg"};
+  } else if constexpr (std::is_same_v<K, Vec3>) {
+    return {"vec3", "", "-"};
+  } else if constexpr (std::is_same_v<K, Rgb>) {
+    return {"number or vec3", ">= 0", "-"};
   } else {  // Text, Choice<E>
     return {"string", "", "-"};
   }
@@ -75,6 +86,17 @@ std::string defaultText(const K& kind, const T& value) {
     return std::to_string(value);
   } else if constexpr (std::is_same_v<K, sensors::OptionalDuration>) {
     return value ? durationText(*value) : "unset";
+  } else if constexpr (std::is_same_v<K, Picoseconds>) {
+    return value == 0.0 ? "0" : durationText(value);
+  } else if constexpr (std::is_same_v<K, Bytes>) {
+    return bytesText(static_cast<double>(value));
+  } else if constexpr (std::is_same_v<K, Angle>) {
+    return shortest(value);
+  } else if constexpr (std::is_same_v<K, Vec3> || std::is_same_v<K, Rgb>) {
+    if (std::is_same_v<K, Rgb> && value[0] == value[1] && value[1] == value[2]) {
+      return shortest(value[0]);
+    }
+    return "[" + shortest(value[0]) + ", " + shortest(value[1]) + ", " + shortest(value[2]) + "]";
   } else if constexpr (std::is_same_v<K, sensors::Number> || std::is_same_v<K, sensors::Rate> ||
                        std::is_same_v<K, sensors::Duration> || std::is_same_v<K, sensors::Length>) {
     if (value == 0.0) return "0";
@@ -87,16 +109,16 @@ std::string defaultText(const K& kind, const T& value) {
 }
 }  // namespace detail
 
-/// Appends one row per entry of `table`, keyed "<prefix>.<name>".
+/// Appends one row per entry of `table`, keyed "<prefix>.<name>", the
+/// defaults read from `defaults`.
 template <typename S, typename Table>
-void addDocRows(DocRows& rows, const char* prefix, const Table& table) {
-  const S defaults{};
+void addDocRows(DocRows& rows, const char* prefix, const Table& table, const S& defaults) {
   sensors::forEachField(table, [&](const auto& e) {
     const std::string path = std::string(prefix) + "." + e.name;
-    if constexpr (sensors::kIsField<std::decay_t<decltype(e)>>) {
+    if constexpr (kHasValue<std::decay_t<decltype(e)>>) {
       const detail::KindDoc kind = detail::kindDoc(e.kind);
       std::string value = e.info.unset ? std::string(e.info.unset)
-                                       : detail::defaultText(e.kind, defaults.*e.member);
+                                       : detail::defaultText(e.kind, valueIn(e, defaults));
       if (e.info.note) value += std::string(" (") + e.info.note + ")";
       rows.keys.push_back({rows.keep(path), kind.type, rows.keep(kind.range),
                            rows.keep(std::move(value)), e.info.unit ? e.info.unit : kind.unit,
@@ -105,6 +127,12 @@ void addDocRows(DocRows& rows, const char* prefix, const Table& table) {
       rows.keys.push_back({rows.keep(path), e.type, e.range, e.defaultValue, e.unit, e.doc});
     }
   });
+}
+
+/// As above, the defaults a default-constructed S holds.
+template <typename S, typename Table>
+void addDocRows(DocRows& rows, const char* prefix, const Table& table) {
+  addDocRows(rows, prefix, table, S{});
 }
 
 }  // namespace tofsim::config

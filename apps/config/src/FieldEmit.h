@@ -5,8 +5,10 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include <string>
 #include <type_traits>
 
+#include "FieldKinds.h"
 #include "QuantityText.h"
 #include "ShortestNumber.h"
 #include "tofsim/sensors/ParamField.h"
@@ -19,8 +21,20 @@ void emitValue(YAML::Node& n, const char* key, const K& kind, const sensors::Inf
                const T& value) {
   if constexpr (std::is_same_v<K, sensors::OptionalDuration>) {
     if (value) n[key] = durationText(*value);
-  } else if constexpr (std::is_same_v<K, sensors::Flag> || std::is_same_v<K, sensors::Text> ||
-                       std::is_same_v<K, sensors::IntegerIn>) {
+  } else if constexpr (std::is_same_v<K, sensors::Text>) {
+    n[key] = std::string(value);  // a std::filesystem::path too
+  } else if constexpr (std::is_same_v<K, Picoseconds>) {
+    n[key] = withUnit(value, 1e-12, "ps", "s");
+  } else if constexpr (std::is_same_v<K, Bytes>) {
+    n[key] = std::to_string(value) + " B";
+  } else if constexpr (std::is_same_v<K, Angle>) {
+    n[key] = shortest(value) + " deg";
+  } else if constexpr (std::is_same_v<K, Vec3> || std::is_same_v<K, Rgb>) {
+    YAML::Node v(YAML::NodeType::Sequence);
+    for (int i = 0; i < 3; ++i) v.push_back(shortest(value[i]));
+    v.SetStyle(YAML::EmitterStyle::Flow);
+    n[key] = v;
+  } else if constexpr (std::is_same_v<K, sensors::Flag> || std::is_same_v<K, sensors::IntegerIn>) {
     n[key] = value;
   } else if constexpr (std::is_same_v<K, sensors::Number> || std::is_same_v<K, sensors::Rate> ||
                        std::is_same_v<K, sensors::Duration> || std::is_same_v<K, sensors::Length> ||
@@ -45,8 +59,8 @@ void emitValue(YAML::Node& n, const char* key, const K& kind, const sensors::Inf
 template <typename Table, typename S, typename CustomFn>
 void emitFields(YAML::Node& n, const Table& table, const S& s, CustomFn&& custom) {
   sensors::forEachField(table, [&](const auto& entry) {
-    if constexpr (sensors::kIsField<std::decay_t<decltype(entry)>>) {
-      detail::emitValue(n, entry.name, entry.kind, entry.info, s.*entry.member);
+    if constexpr (kHasValue<std::decay_t<decltype(entry)>>) {
+      detail::emitValue(n, entry.name, entry.kind, entry.info, valueIn(entry, s));
     } else {
       custom(entry.name);
     }

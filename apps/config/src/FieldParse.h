@@ -1,6 +1,6 @@
 #pragma once
 // Private to the config module: reads the keys of a parameter table
-// (sensors/ParamField.h) from one `sensors:` entry into a struct, with the
+// (sensors/ParamField.h, FieldKinds.h) from a config section into a struct, with the
 // range checks and located errors the config has always given. Custom entries
 // go to a callback by name (their parsing is hand-written beside the visit).
 
@@ -8,8 +8,10 @@
 #include <type_traits>
 
 #include "ConfigNode.h"
+#include "FieldKinds.h"
 #include "QuantityText.h"
 #include "ShortestNumber.h"
+#include "Vec3Key.h"
 #include "tofsim/sensors/ParamField.h"
 
 namespace tofsim::config {
@@ -69,6 +71,30 @@ void parseValue(const ConfigNode& n, const char* key, const K& kind, T& value) {
     value = n.getString(key, value);
   } else if constexpr (std::is_same_v<K, sensors::OptionalDuration>) {
     if (n.has(key)) value = n.getDuration_s(key, 0.0);
+  } else if constexpr (std::is_same_v<K, Picoseconds>) {
+    value = n.getDuration_s(key, value);
+    checkRange(n, key, kind.range, value);
+  } else if constexpr (std::is_same_v<K, Bytes>) {
+    // The upper bound keeps the conversion to an integer defined (found by fuzz_config).
+    const double bytes = n.getBytes(key, static_cast<double>(value));
+    if (!(bytes >= kind.min && bytes <= kind.max)) {
+      n.failKey(key, "must be between " + bytesText(kind.min) + " and " + bytesText(kind.max));
+    }
+    value = static_cast<T>(bytes);
+  } else if constexpr (std::is_same_v<K, Angle>) {
+    value = static_cast<T>(n.getAngle_deg(key, value));
+    checkRange(n, key, kind.range, value);
+  } else if constexpr (std::is_same_v<K, Vec3>) {
+    value = vec3Of(n, key, value);
+  } else if constexpr (std::is_same_v<K, Rgb>) {
+    if (n.has(key) && n.child(key).isScalar()) {
+      value = T(static_cast<float>(n.getDouble(key, 1.0)));
+    } else {
+      value = vec3Of(n, key, value);
+    }
+    for (int c = 0; c < 3; ++c) {
+      if (!(value[c] >= 0.0f)) n.failKey(key, "must be >= 0");
+    }
   } else {  // Choice<E>
     const std::string name = n.getString(key, sensors::nameOf(kind, value));
     for (const auto& c : kind.names) {
@@ -82,13 +108,13 @@ void parseValue(const ConfigNode& n, const char* key, const K& kind, T& value) {
 }
 }  // namespace detail
 
-/// Reads every Field of `table` into `s` (which holds the defaults); calls
-/// custom(name) for each Custom entry, in table order.
+/// Reads every Field (and In) of `table` into `s` (which holds the defaults);
+/// calls custom(name) for each Custom entry, in table order.
 template <typename Table, typename S, typename CustomFn>
 void parseFields(const ConfigNode& n, const Table& table, S& s, CustomFn&& custom) {
   sensors::forEachField(table, [&](const auto& entry) {
-    if constexpr (sensors::kIsField<std::decay_t<decltype(entry)>>) {
-      detail::parseValue(n, entry.name, entry.kind, s.*entry.member);
+    if constexpr (kHasValue<std::decay_t<decltype(entry)>>) {
+      detail::parseValue(n, entry.name, entry.kind, valueIn(entry, s));
     } else {
       custom(entry.name);
     }

@@ -49,6 +49,17 @@ inline std::string frequencyText(double hz) {
   return shortest(hz) + " Hz";
 }
 
+/// "512 MiB": a byte count in the largest binary unit that divides it.
+inline std::string bytesText(double bytes) {
+  const char* units[] = {"B", "KiB", "MiB", "GiB", "TiB", "PiB", "EiB"};
+  int u = 0;
+  while (u < 6 && bytes >= 1024.0 && std::fmod(bytes, 1024.0) == 0.0) {
+    bytes /= 1024.0;
+    ++u;
+  }
+  return shortest(bytes) + " " + units[u];
+}
+
 /// "> 0", ">= 0", "in [0, 1]"; "" for any value.
 inline std::string rangeText(const sensors::Range& r) {
   if (r.any()) return "";

@@ -1,15 +1,17 @@
 #pragma once
 // Private to the config module: the run config's parameter tables, in the
-// vocabulary of the sensor tables (sensors/ParamField.h), visited by the same
-// parse, emit and doc functions (Field*.h). Defaults are the structs'
-// initialisers. So far `render.indirect` and `render.reference`; the other sections are still
-// hand-written in RunConfigLoader.cpp and EffectiveConfig.cpp because their
-// defaults are literals in the parser, not struct initialisers, and their keys
-// mix vectors, angles and cross-field checks.
+// vocabulary of the sensor tables (sensors/ParamField.h, and FieldKinds.h for
+// the kinds only a run has), visited by the same parse, emit and doc
+// functions (Field*.h): each key's name, kind, range, unit and doc are
+// written here once; its default is the struct's initialiser. This file:
+// `render`, `render.indirect` and `render.reference`; TimeFields.h,
+// LightFields.h and OutputFields.h the others. `camera`'s keys are still
+// hand-written (CameraConfigParser.cpp, EffectiveConfig.cpp, ConfigKeys.cpp).
 
 #include <array>
 #include <tuple>
 
+#include "FieldKinds.h"
 #include "tofsim/capture/RenderSettings.h"
 #include "tofsim/config/RunConfig.h"
 #include "tofsim/sensors/ParamField.h"
@@ -17,12 +19,15 @@
 namespace tofsim::config {
 
 using sensors::Choice;
+using sensors::Custom;
 using sensors::Field;
 using sensors::Flag;
 using sensors::IntegerIn;
 using sensors::kAnyValue;
 using sensors::Name;
 using sensors::Number;
+using sensors::kPositive;
+using sensors::Text;
 
 inline constexpr std::array<Name<capture::Visibility>, 2> kVisibilityNames{
     {{"ism", capture::Visibility::Ism}, {"exact", capture::Visibility::Exact}}};
@@ -78,13 +83,41 @@ inline constexpr auto kReferenceFields = std::tuple{
           {.doc = "continuation at glTF surfaces (`render.materials: gltf`): `brdf` draws from a mixture of the cosine lobe and GGX visible normals weighted by the mixture's pdf (one-sample MIS); `cosine`: cosine sampling weighted by pi f (noisier on glossy surfaces; the bytes of before). Lambertian surfaces are cosine-sampled either way"}},
 };
 
-inline constexpr std::array<Name<OutputFormat>, 2> kOutputFormatNames{
-    {{"npy", OutputFormat::Npy}, {"hdf5", OutputFormat::Hdf5}}};
+inline constexpr std::array<Name<RendererKind>, 2> kRendererNames{
+    {{"ir", RendererKind::InstantRadiosity}, {"reference", RendererKind::Reference}}};
+inline constexpr std::array<Name<IrBackendKind>, 3> kIrBackendNames{
+    {{"auto", IrBackendKind::Auto}, {"gl", IrBackendKind::Gl}, {"cpu", IrBackendKind::Cpu}}};
+inline constexpr std::array<Name<capture::MaterialModel>, 2> kMaterialNames{
+    {{"lambertian", capture::MaterialModel::Lambertian}, {"gltf", capture::MaterialModel::Gltf}}};
 
-// The keys of `output` declared here; the others are hand-written.
-inline constexpr auto kOutputFields = std::tuple{
-    Field{"format", &OutputConfig::format, Choice<OutputFormat>{kOutputFormatNames},
-          {.doc = "`npy`: each array its own `.npy` (`transient.npy`, `direct.npy`, ...); `hdf5`: the volumes, `depth`, `steady` and every sensor array as datasets of one `capture.h5`, chunked along the pixels, shuffle + gzip, each with its metadata as attributes (README.md, \"What a render writes\"); the EXR and PNG pictures and the JSON files stay. An `nlos` capture writes its own files either way"}},
+// The keys of `render` (on RunConfig: some are the renderer's settings,
+// RunConfig::render, others the run's); `indirect` and `reference` are
+// sections of their own (kIndirectFields, kReferenceFields).
+inline constexpr auto kRenderFields = std::tuple{
+    Field{"renderer", &RunConfig::renderer, Choice<RendererKind>{kRendererNames},
+          {.doc = "`ir` (instant radiosity) or `reference`"}},
+    Field{"backend", &RunConfig::backend, Choice<IrBackendKind>{kIrBackendNames},
+          {.doc = "device of `ir`: `gl` (OpenGL 4.5 through EGL: a GPU, or Mesa's llvmpipe), `cpu` (the native CPU backend, all cores, needs no EGL), or `auto`: `gl` when the EGL device platform offers a hardware GPU (llvmpipe/softpipe do not count), `cpu` otherwise. The choice is printed (`device: ...`) and recorded in `transient.json` (`backend`, `device`); `--backend` on `render` sets it. Both give the same volume within float rounding (tests/cpu)"}},
+    Field{"threads", &RunConfig::cpu_threads, IntegerIn{0, 4096},
+          {.doc = "worker threads of the `cpu` backend, and of the later bounces' ray tracing on both backends (0 = every core this process may run on: its CPU affinity, e.g. a Slurm task's `--cpus-per-task`, taskset or a container's cpuset); the bytes do not depend on it (tests/cpu, tests/ir BounceVplsTest)"}},
+    In{"seed", &RunConfig::render, &capture::RenderSettings::seed, IntegerIn{0, 1LL << 62},
+       {.doc = "seed of every random choice: the renderer's and the sensors'"}},
+    In{"shadow_map_resolution", &RunConfig::render, &capture::RenderSettings::shadow_map_resolution, IntegerIn{16, 16384},
+       {.unit = "pixel", .doc = "per cube face of the light's shadow map"}},
+    In{"memory_budget", &RunConfig::render, &capture::RenderSettings::memory_budget_bytes, Bytes{0x1p20, 0x1p50},
+       {.doc = "device memory (GPU, or RAM for `backend: cpu`) for volume segments and ISM batches; for `tofsim sense`, the host memory of the runs of pixels it reads from the saved files"}},
+    Field{"strict", &RunConfig::strict, Flag{},
+          {.doc = "light cut off by the time axis or a sensor window (more than 0.1 %) is an error, not a warning; `--strict` on `render` / `validate` sets it (see \"Time windows\")"}},
+    In{"pixel_footprint", &RunConfig::render, &capture::RenderSettings::pixel_footprint, Flag{},
+       {.doc = "a pixel integrates its area: every contribution is spread over the distribution of its optical path across the pixel (a trapezoid in time, first order; see README.md, \"Pixel footprints\"); `false`: all of a pixel's light in the bin of its centre's path (closed-form tests). `ir` only: the reference integrates by `reference.pixel_filter`"}},
+    In{"pixel_samples", &RunConfig::render, &capture::RenderSettings::pixel_samples, IntegerIn{1, 16},
+       {.doc = "N x N stratified surface samples per pixel, averaged (silhouettes, pixels that see two surfaces); each sample's footprint is its sub-pixel; costs N^2 gathers"}},
+    In{"adaptive_pixel_samples", &RunConfig::render, &capture::RenderSettings::adaptive_pixel_samples, Flag{},
+       {.doc = "with `pixel_samples` N > 1: the N x N samples only in pixels at an edge of the pixel-centre G-buffer (a 3 x 3 neighbour off the pixel's tangent plane by more than 5 degrees, a normal turned by more than 5 degrees, or surface next to background), or where the light reaches one of two neighbouring pixel centres and not the other (a shadow's edge or a hard spot's rim inside a flat pixel: a ray from each centre to the light, traced by the driver on either backend); every other pixel takes one sample at its centre with the whole pixel's footprint, exactly what `pixel_samples: 1` computes there (README.md, \"Pixel footprints\"). Silhouettes, creases and shadow edges at a fraction of N^2 the cost; texture edges inside a flat pixel are not detected. `ir` only"}},
+    In{"materials", &RunConfig::render, &capture::RenderSettings::materials, Choice<capture::MaterialModel>{kMaterialNames},
+       {.doc = "`lambertian`: every material reflects albedo / pi (base colour only; metallic and roughness ignored), the output of before, byte for byte. `gltf`: the glTF metallic-roughness BRDF (GGX, height-correlated Smith, Schlick; `metallicFactor`, `roughnessFactor`, `metallicRoughnessTexture`; README.md, \"Materials\") in the direct light seen by the camera, on both `ir` backends and in the reference, and in IR's indirect light: glossy VPLs (each records the direction its light came from and its material, and lights a point with its BRDF, clamped at `indirect.vpl_brdf_clamp`) and the BRDF on the camera side of every VPL contribution. The default stays `lambertian` because glTF's metallic 0, roughness 1 is not Lambertian: the shipped scenes would change"}},
+    Custom{"indirect", "mapping", "", "defaults", "-", "indirect light (instant radiosity: VPLs), below"},
+    Custom{"reference", "mapping", "", "defaults", "-", "the CPU path tracer's settings (`renderer: reference`), below"},
 };
 // clang-format on
 

@@ -19,7 +19,7 @@ namespace tofsim::config {
 
 /// `tdc_dnl` of node n: a list of numbers or a file; each value finite and >
 /// -1 (a code of width LSB (1 + DNL) > 0). The length is checked against the
-/// TDC's bins where the window is known (RunConfigLoader), then the sum.
+/// TDC's bins where the window is known (SensorListChecks.cpp), then the sum.
 sensors::SpadDnl parseDnl(const ConfigNode& n);
 
 /// |sum| <= 1e-6 x count (the bins fill the TDC's range): after the length,

@@ -15,7 +15,7 @@ namespace tofsim::pipeline {
 
 namespace {
 
-constexpr int32_t kMaxBins = 1 << 20;  // time.bins' limit (RunConfigLoader.cpp)
+constexpr int32_t kMaxBins = config::kMaxTimeBins;
 
 std::string format(const char* pattern, double value) {
   char text[64];

@@ -122,6 +122,14 @@ struct OutputConfig {
   std::map<std::string, std::array<double, 2>> plot_ranges;
 };
 
+/// The most bins time.bins may ask for (its range, TimeFields.h; the time
+/// axis report's advice reads it too).
+inline constexpr int32_t kMaxTimeBins = 1 << 20;
+
+/// The time axis of a config's `time: {}`: time.*'s defaults (a TimeAxis
+/// itself has none: 0 bins of 0 s).
+inline constexpr TimeAxis kDefaultTimeAxis{.start_s = 0.0, .bin_width_s = 10e-12, .bins = 512};
+
 struct RunConfig {
   std::filesystem::path config_file;
   std::filesystem::path scene_file;  ///< resolved against the config's folder
@@ -134,7 +142,7 @@ struct RunConfig {
   /// A capture sequence of the scene's animations (SequenceConfig.h); unset:
   /// one capture at the rest pose. Not with nlos.
   std::optional<SequenceConfig> sequence;
-  capture::RenderSettings render;
+  capture::RenderSettings render{.time = kDefaultTimeAxis};
   RendererKind renderer = RendererKind::InstantRadiosity;
   IrBackendKind backend = IrBackendKind::Auto;  ///< render.backend (IR only)
   int32_t cpu_threads = 0;  ///< render.threads: the CPU IR backend's threads, 0 = all
