@@ -12,8 +12,8 @@
 #include "tofsim/config/RunConfig.h"
 #include "tofsim/pipeline/AxisReport.h"
 #include "tofsim/pipeline/BatchRun.h"
-#include "tofsim/pipeline/OutputEstimate.h"
 #include "tofsim/pipeline/CompareRun.h"
+#include "tofsim/pipeline/OutputEstimate.h"
 #include "tofsim/pipeline/RenderRun.h"
 #include "tofsim/pipeline/RunContentKey.h"
 #include "tofsim/pipeline/SceneInfo.h"
@@ -135,101 +135,126 @@ int runInfoCommand(const std::string& scenePath) {
   return 0;
 }
 
-}  // namespace
-
-int main(int argc, char** argv) {
-  CLI::App app{"tofsim: time-of-flight sensor simulator (transient instant radiosity)"};
-  app.set_version_flag("--version", std::string("tofsim ") + tofsim::pipeline::kVersion);
-  app.require_subcommand(1);
-
+// Every option of every subcommand: CLI11 writes into these.
+struct Args {
   std::string configPath, outputDir, platform, volumeDir, renderer, backend, dirA, dirB;
-  // -o "" would silently mean "no -o" (the config's output.directory, or A):
-  // an empty folder name is a usage error naming the option.
-  const CLI::Validator notEmpty(
+  std::string batchRun, shard, scenePath;
+  std::vector<std::string> sets;
+  bool quiet = false, strict = false, dryRun = false, verify = false;
+  int jobs = 1;
+};
+
+struct Commands {
+  CLI::App *render, *sense, *compare, *validate, *batch, *info;
+};
+
+const char* kStrictHelp =
+    "Light cut off by the time axis or a sensor window is an error (= --set render.strict=true)";
+const char* kSetHelp = "Override a config key: key.path=value (repeatable)";
+
+// -o "" would silently mean "no -o" (the config's output.directory, or A):
+// an empty folder name is a usage error naming the option.
+CLI::Validator notEmpty() {
+  return CLI::Validator(
       [](const std::string& s) { return s.empty() ? "must not be empty" : std::string(); }, "",
       "NOT_EMPTY");
-  std::vector<std::string> sets;
-  bool quiet = false, strict = false;
-  const char* strictHelp =
-      "Light cut off by the time axis or a sensor window is an error (= --set render.strict=true)";
+}
 
+CLI::App* addRender(CLI::App& app, Args& a) {
   CLI::App* render = app.add_subcommand("render", "Render a config's transient volume and outputs");
-  render->add_option("config", configPath, "YAML config file")->required();
-  render->add_option("-o,--output", outputDir, "Output directory (default: output.directory)")
-      ->check(notEmpty);
-  render->add_option("--set", sets, "Override a config key: key.path=value (repeatable)");
-  render->add_flag("-q,--quiet", quiet, "No progress output");
-  render->add_flag("--strict", strict, strictHelp);
-  render->add_option("--egl-platform", platform,
+  render->add_option("config", a.configPath, "YAML config file")->required();
+  render->add_option("-o,--output", a.outputDir, "Output directory (default: output.directory)")
+      ->check(notEmpty());
+  render->add_option("--set", a.sets, kSetHelp);
+  render->add_flag("-q,--quiet", a.quiet, "No progress output");
+  render->add_flag("--strict", a.strict, kStrictHelp);
+  render->add_option("--egl-platform", a.platform,
                      "auto | surfaceless | device (default: $TOFSIM_EGL_PLATFORM or auto)");
-  render->add_option("--renderer", renderer, "ir | reference (same as --set render.renderer=...)")
+  render->add_option("--renderer", a.renderer, "ir | reference (same as --set render.renderer=...)")
       ->check(CLI::IsMember({"ir", "reference"}));
-  render->add_option("--backend", backend, "auto | gl | cpu (same as --set render.backend=...)")
+  render->add_option("--backend", a.backend, "auto | gl | cpu (same as --set render.backend=...)")
       ->check(CLI::IsMember({"auto", "gl", "cpu"}));
   // Internal, for `tofsim batch`: write the run's manifest.json last.
-  std::string batchRun;
-  render->add_option("--batch-run", batchRun, "Batch run name (internal)")->group("");
+  render->add_option("--batch-run", a.batchRun, "Batch run name (internal)")->group("");
+  return render;
+}
 
+CLI::App* addSense(CLI::App& app, Args& a) {
   CLI::App* sense = app.add_subcommand(
       "sense", "Run a config's sensors on a saved render (uses only sensors: and render.seed)");
-  sense->add_option("config", configPath, "YAML config file")->required();
-  sense->add_option("--volume", volumeDir, "Folder of a render: transient.npy + transient.json")
+  sense->add_option("config", a.configPath, "YAML config file")->required();
+  sense->add_option("--volume", a.volumeDir, "Folder of a render: transient.npy + transient.json")
       ->required();
-  sense->add_option("-o,--output", outputDir, "Output directory (default: the --volume folder)")
-      ->check(notEmpty);
-  sense->add_option("--set", sets, "Override a config key: key.path=value (repeatable)");
-  sense->add_flag("-q,--quiet", quiet, "No progress output");
+  sense->add_option("-o,--output", a.outputDir, "Output directory (default: the --volume folder)")
+      ->check(notEmpty());
+  sense->add_option("--set", a.sets, kSetHelp);
+  sense->add_flag("-q,--quiet", a.quiet, "No progress output");
+  return sense;
+}
 
-  CLI::App* compareCommand = app.add_subcommand(
+CLI::App* addCompare(CLI::App& app, Args& a) {
+  CLI::App* compare = app.add_subcommand(
       "compare", "Error metrics of render A against reference B (two output directories)");
-  compareCommand->add_option("a", dirA, "Output directory under test")->required();
-  compareCommand->add_option("b", dirB, "Output directory of the reference")->required();
-  compareCommand
-      ->add_option("-o,--output", outputDir, "Where to write the comparison files (default: A)")
-      ->check(notEmpty);
+  compare->add_option("a", a.dirA, "Output directory under test")->required();
+  compare->add_option("b", a.dirB, "Output directory of the reference")->required();
+  compare
+      ->add_option("-o,--output", a.outputDir, "Where to write the comparison files (default: A)")
+      ->check(notEmpty());
+  return compare;
+}
 
+CLI::App* addValidate(CLI::App& app, Args& a) {
   CLI::App* validate = app.add_subcommand("validate", "Check a config without rendering");
-  validate->add_option("config", configPath, "YAML config file")->required();
-  validate->add_option("--set", sets, "Override a config key: key.path=value (repeatable)");
-  validate->add_flag("--strict", strict, strictHelp);
+  validate->add_option("config", a.configPath, "YAML config file")->required();
+  validate->add_option("--set", a.sets, kSetHelp);
+  validate->add_flag("--strict", a.strict, kStrictHelp);
+  return validate;
+}
 
+CLI::App* addBatch(CLI::App& app, Args& a) {
   CLI::App* batch = app.add_subcommand(
       "batch", "Run a batch file's runs and sweeps, each into <output>/<run name>/ (resumable)");
-  std::string shard;
-  int jobs = 1;
-  bool dryRun = false, verify = false;
-  batch->add_option("batch", configPath, "Batch YAML file (configs/README.md, Batch files)")
+  batch->add_option("batch", a.configPath, "Batch YAML file (configs/README.md, Batch files)")
       ->required();
-  batch->add_option("--set", sets, "Override a config key in every run: key.path=value");
-  batch->add_option("-j,--jobs", jobs, "Runs at once, each a child process (default 1)")
+  batch->add_option("--set", a.sets, "Override a config key in every run: key.path=value");
+  batch->add_option("-j,--jobs", a.jobs, "Runs at once, each a child process (default 1)")
       ->check(CLI::Range(1, tofsim::pipeline::kMaxJobs));
-  batch->add_option("--shard", shard, "K/N: only runs i with i % N == K-1 (1-based K)");
-  batch->add_flag("--dry-run", dryRun, "List the runs and their status; render nothing");
-  batch->add_flag("--verify", verify, "Skip a run only if its files match their checksums");
-  batch->add_flag("-q,--quiet", quiet, "No progress output (the summary is still printed)");
+  batch->add_option("--shard", a.shard, "K/N: only runs i with i % N == K-1 (1-based K)");
+  batch->add_flag("--dry-run", a.dryRun, "List the runs and their status; render nothing");
+  batch->add_flag("--verify", a.verify, "Skip a run only if its files match their checksums");
+  batch->add_flag("-q,--quiet", a.quiet, "No progress output (the summary is still printed)");
+  return batch;
+}
 
+CLI::App* addInfo(CLI::App& app, Args& a) {
   CLI::App* info = app.add_subcommand("info", "Describe a glTF scene as tofsim loads it");
-  std::string scenePath;
-  info->add_option("scene", scenePath, "glTF file (.gltf or .glb)")->required();
+  info->add_option("scene", a.scenePath, "glTF file (.gltf or .glb)")->required();
+  return info;
+}
 
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::ParseError& e) {
-    return app.exit(e) == 0 ? 0 : 2;
+// The one subcommand parsed.
+int dispatch(const Commands& c, const Args& a) {
+  if (c.render->parsed()) {
+    return runRenderCommand(a.configPath, a.outputDir, a.sets, a.quiet, a.strict, a.platform,
+                            a.renderer, a.backend, a.batchRun);
   }
-  tofsim::installInterruptHandlers();
+  if (c.compare->parsed()) return runCompareCommand(a.dirA, a.dirB, a.outputDir);
+  if (c.sense->parsed())
+    return runSenseCommand(a.configPath, a.volumeDir, a.outputDir, a.sets, a.quiet);
+  if (c.validate->parsed()) return runValidateCommand(a.configPath, a.sets, a.strict);
+  if (c.batch->parsed()) {
+    return runBatchCommand(a.configPath, a.sets, a.jobs, a.shard, a.dryRun, a.verify, a.quiet);
+  }
+  if (c.info->parsed()) return runInfoCommand(a.scenePath);
+  return 2;
+}
+
+// Runs `command`, mapping what escapes it to one line on stderr and the exit
+// code (the header's table).
+template <typename Command>
+int mapErrors(Command&& command) {
   try {
-    if (render->parsed()) {
-      return runRenderCommand(configPath, outputDir, sets, quiet, strict, platform, renderer,
-                              backend, batchRun);
-    }
-    if (compareCommand->parsed()) return runCompareCommand(dirA, dirB, outputDir);
-    if (sense->parsed()) return runSenseCommand(configPath, volumeDir, outputDir, sets, quiet);
-    if (validate->parsed()) return runValidateCommand(configPath, sets, strict);
-    if (batch->parsed()) {
-      return runBatchCommand(configPath, sets, jobs, shard, dryRun, verify, quiet);
-    }
-    if (info->parsed()) return runInfoCommand(scenePath);
+    return command();
   } catch (const tofsim::Interrupted& e) {
     std::fprintf(stderr, "tofsim: %s\n", e.what());
     return e.exitCode();
@@ -245,5 +270,22 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "tofsim: error: %s\n", e.what());
     return 1;
   }
-  return 2;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"tofsim: time-of-flight sensor simulator (transient instant radiosity)"};
+  app.set_version_flag("--version", std::string("tofsim ") + tofsim::pipeline::kVersion);
+  app.require_subcommand(1);
+  Args args;
+  const Commands commands{addRender(app, args),   addSense(app, args), addCompare(app, args),
+                          addValidate(app, args), addBatch(app, args), addInfo(app, args)};
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e) == 0 ? 0 : 2;
+  }
+  tofsim::installInterruptHandlers();
+  return mapErrors([&] { return dispatch(commands, args); });
 }
