@@ -12,6 +12,7 @@
 #include "LitBounds.h"
 #include "MergedSamples.h"
 #include "ParallelFor.h"
+#include "ResponseClasses.h"
 #include "RsmVpls.h"
 #include "VplArrays.h"
 #include "tofsim/capture/SegmentSink.h"
@@ -19,6 +20,7 @@
 #include "tofsim/ir/SurfaceImage.h"
 #include "tofsim/physics/FootprintBuffer.h"
 #include "tofsim/physics/GltfBrdf.h"
+#include "tofsim/physics/TemporalResponse.h"
 #include "tofsim/physics/TransientPhysics.h"
 #include "tofsim/rays/RayScene.h"
 #include "tofsim/util/Error.h"
@@ -30,7 +32,9 @@ using ir::traceSampledPixels;
 using ir::traceSurfaces;
 
 CpuBackend::CpuBackend(const CpuBackendOptions& options)
-    : threads_(resolveThreads(options.threads)), indirectVisibility_(options.indirectVisibility) {}
+    : threads_(resolveThreads(options.threads)),
+      indirectVisibility_(options.indirectVisibility),
+      responses_(std::make_unique<ResponseClasses>()) {}
 
 CpuBackend::~CpuBackend() = default;
 
@@ -157,6 +161,13 @@ void CpuBackend::allocate(std::size_t pixelsPerSegment, std::size_t vplsPerBatch
   } else if (!accumulatorsZero_) {
     clearAccumulators(pixelsPerSegment);
   }
+  if (!responseKernels_.empty() || !responses_->empty()) {
+    std::vector<physics::ResponseTaps> taps;
+    for (const physics::ResponseKernel& k : responseKernels_) {
+      taps.push_back(physics::responseTaps(k, job_.settings.time.bin_width_s));
+    }
+    responses_->configure(std::move(taps), pixelsPerSegment, job_.settings.time.bins);
+  }
   accumulatorsZero_ = true;
   outside_.assign(pixelsPerSegment, physics::OffAxisSums{});
   segmentSurfaces_.resize(pixelsPerSegment * maxSamplesPerPixel());
@@ -260,19 +271,26 @@ double* CpuBackend::footprintOf(std::size_t i, const glm::vec3& kernel) {
   return footprint_.data() + i * static_cast<std::size_t>(bins) * kChannels;
 }
 
+void CpuBackend::setResponseKernels(const std::vector<physics::ResponseKernel>& delayed) {
+  responseKernels_ = delayed;
+}
+
 void CpuBackend::integratePixel(std::size_t i, float* histogram) {
   FootprintBins& written = footprintBins_[i];
-  if (written.first > written.last) return;
-  const int32_t bins = job_.settings.time.bins;
-  const std::size_t first = static_cast<std::size_t>(written.first) * kChannels;
-  double* diff = footprint_.data() + i * static_cast<std::size_t>(bins) * kChannels;
-  // The entries before `first` are zero: so are both running sums there, and
-  // adding +0.0f leaves a histogram bin's bits as they are (a sum of floats
-  // from +0 is never -0), so the sums start at `first`.
-  physics::integrateFootprint(diff + first, bins - written.first, histogram + first);
-  // While in cache: zero for the next wide kernel.
-  std::fill(diff + first, diff + (static_cast<std::size_t>(written.last) + 1) * kChannels, 0.0);
-  written = FootprintBins{};
+  if (written.first <= written.last) {
+    const int32_t bins = job_.settings.time.bins;
+    const std::size_t first = static_cast<std::size_t>(written.first) * kChannels;
+    double* diff = footprint_.data() + i * static_cast<std::size_t>(bins) * kChannels;
+    // The entries before `first` are zero: so are both running sums there, and
+    // adding +0.0f leaves a histogram bin's bits as they are (a sum of floats
+    // from +0 is never -0), so the sums start at `first`.
+    physics::integrateFootprint(diff + first, bins - written.first, histogram + first);
+    // While in cache: zero for the next wide kernel.
+    std::fill(diff + first, diff + (static_cast<std::size_t>(written.last) + 1) * kChannels, 0.0);
+    written = FootprintBins{};
+  }
+  // The instant class's light is in; the delayed classes' (none today) after it.
+  if (!responses_->empty()) responses_->integrateInto(i, histogram, outside_[i]);
 }
 
 void CpuBackend::clearAccumulators(std::size_t pixels) {
@@ -289,6 +307,7 @@ void CpuBackend::clearAccumulators(std::size_t pixels) {
     }
     footprintBins_[i] = FootprintBins{};
   }
+  responses_->clear();
 }
 
 void CpuBackend::gatherIndirect(std::size_t firstVpl, std::size_t count) {
@@ -443,14 +462,14 @@ void CpuBackend::moveOut(float* from, float* to, bool integrateFootprints) {
 }
 
 void CpuBackend::takeIndirect(float* indirect) {
-  moveOut(indirect_.data(), indirect, job_.settings.pixel_footprint);
+  moveOut(indirect_.data(), indirect, job_.settings.pixel_footprint || !responses_->empty());
 }
 
 void CpuBackend::readSegment(float* direct, float* indirect, AxisLoss& offAxis) {
   // The direct gather integrated its footprints itself; the indirect gathers'
   // wide kernels, added after every batch, are summed once per pixel here.
   moveOut(direct_.data(), direct, false);
-  moveOut(indirect_.data(), indirect, job_.settings.pixel_footprint);
+  moveOut(indirect_.data(), indirect, job_.settings.pixel_footprint || !responses_->empty());
   accumulatorsZero_ = true;
   for (std::size_t i = 0; i < pixelCount_; ++i) {
     offAxis.before += outside_[i].before;
