@@ -91,7 +91,12 @@ std::vector<physics::ResponseKernel> delayedKernels() {
 
 TEST(ResponseStageGLTest, DelayedClassesGiveTheCpuVolume) {
   test::glTestContext();
-  gl::Program::setStrictUniforms(true);
+  // Every uniform the backend sets must exist (restored after the test).
+  struct StrictUniforms {
+    bool before = gl::Program::strictUniforms();
+    StrictUniforms() { gl::Program::setStrictUniforms(true); }
+    ~StrictUniforms() { gl::Program::setStrictUniforms(before); }
+  } strict;
   using physics::vec3;
   struct Contribution {
     vec3 kernel;
