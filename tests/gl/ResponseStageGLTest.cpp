@@ -178,7 +178,9 @@ TEST(ResponseStageGLTest, DelayedClassesGiveTheCpuVolume) {
     }
     EXPECT_NEAR(gpuLost[2 * p], off.before, 1e-6f * (1.0f + off.before)) << "pixel " << p;
     EXPECT_NEAR(gpuLost[2 * p + 1], off.after, 1e-6f * (1.0f + off.after)) << "pixel " << p;
-    if (p == 2) EXPECT_GT(off.after, 0.01f);  // the tails pass the end
+    if (p == 2) {
+      EXPECT_GT(off.after, 0.01f);  // the tails pass the end
+    }
   }
   std::size_t exact = 0, nonZero = 0;
   for (std::size_t i = 0; i < floats; ++i) {
