@@ -100,13 +100,13 @@ void footprintAddNarrowBin(uint local, vec3 kernel, int first, int count, int j,
   depositInBin(local, first + j, mass, energy, lostBefore, lostAfter);
 }
 
-// Wide kernel: slot `slot` of the difference buffer (footprintSlotBin,
-// footprintSlotValue; physics::depositFootprint).
-void footprintAddSlot(uint local, vec3 kernel, int slot, vec3 energy) {
+// Wide kernel: slot `slot` of the difference buffer of `region`
+// (footprintSlotBin, footprintSlotValue; physics::depositFootprint).
+void footprintAddSlot(uint region, vec3 kernel, int slot, vec3 energy) {
   int bin = footprintSlotBin(kernel, slot, uBins);
   if (bin < 0) return;
   double value = footprintSlotValue(kernel, bin);
-  uint i = (local * uint(uBins) + uint(bin)) * uint(TOFSIM_CHANNELS);
+  uint i = (region * uint(uBins) + uint(bin)) * uint(TOFSIM_CHANNELS);
   footprintDiff[i + 0u] += value * double(energy.r);
   footprintDiff[i + 1u] += value * double(energy.g);
   footprintDiff[i + 2u] += value * double(energy.b);
@@ -114,7 +114,24 @@ void footprintAddSlot(uint local, vec3 kernel, int slot, vec3 energy) {
 
 #define TOFSIM_NARROW_BIN(j) \
   footprintAddNarrowBin(local, kernel, first, count, j, energy, lower, lostBefore, lostAfter)
-#define TOFSIM_SLOT(s) footprintAddSlot(local, kernel, s, energy)
+#define TOFSIM_SLOT(s) footprintAddSlot(region, kernel, s, energy)
+
+// A kernel into the difference buffer of `region` (pixel `local` of the
+// segment, or a delayed class's pixel), exact however narrow; the part off the
+// axis to lostBefore / lostAfter (physics::depositWide).
+void depositWideAt(uint region, vec3 kernel, vec3 energy, inout float lostBefore,
+                   inout float lostAfter) {
+  // FOOTPRINT_SLOTS (12): three per kink, in increasing bin order.
+  TOFSIM_SLOT(0); TOFSIM_SLOT(1); TOFSIM_SLOT(2); TOFSIM_SLOT(3);
+  TOFSIM_SLOT(4); TOFSIM_SLOT(5); TOFSIM_SLOT(6); TOFSIM_SLOT(7);
+  TOFSIM_SLOT(8); TOFSIM_SLOT(9); TOFSIM_SLOT(10); TOFSIM_SLOT(11);
+  float total = energy.r + energy.g + energy.b;
+  double before = footprintMassBefore(kernel);
+  double after = footprintMassAfter(kernel, uBins);
+  if (before > 0.0lf) lostBefore += float(before) * total;
+  if (after > 0.0lf) lostAfter += float(after) * total;
+  footprintWritten[region] = 1u;
+}
 
 // Adds a contribution of `energy` spread by `kernel` to pixel `local` of the
 // segment; the part off the axis to lostBefore / lostAfter
@@ -122,16 +139,7 @@ void footprintAddSlot(uint local, vec3 kernel, int slot, vec3 energy) {
 void depositContribution(uint local, vec3 kernel, vec3 energy, inout float lostBefore,
                          inout float lostAfter) {
   if (!footprintIsNarrow(kernel)) {
-    // FOOTPRINT_SLOTS (12): three per kink, in increasing bin order.
-    TOFSIM_SLOT(0); TOFSIM_SLOT(1); TOFSIM_SLOT(2); TOFSIM_SLOT(3);
-    TOFSIM_SLOT(4); TOFSIM_SLOT(5); TOFSIM_SLOT(6); TOFSIM_SLOT(7);
-    TOFSIM_SLOT(8); TOFSIM_SLOT(9); TOFSIM_SLOT(10); TOFSIM_SLOT(11);
-    float total = energy.r + energy.g + energy.b;
-    double before = footprintMassBefore(kernel);
-    double after = footprintMassAfter(kernel, uBins);
-    if (before > 0.0lf) lostBefore += float(before) * total;
-    if (after > 0.0lf) lostAfter += float(after) * total;
-    footprintWritten[local] = 1u;
+    depositWideAt(local, kernel, energy, lostBefore, lostAfter);
     return;
   }
   // FOOTPRINT_DIRECT_BINS (16) bins at most, ascending.
@@ -143,6 +151,23 @@ void depositContribution(uint local, vec3 kernel, vec3 energy, inout float lostB
   TOFSIM_NARROW_BIN(8); TOFSIM_NARROW_BIN(9); TOFSIM_NARROW_BIN(10); TOFSIM_NARROW_BIN(11);
   TOFSIM_NARROW_BIN(12); TOFSIM_NARROW_BIN(13); TOFSIM_NARROW_BIN(14); TOFSIM_NARROW_BIN(15);
 }
+
+#ifdef RESPONSE_CLASSES
+// The delayed response classes (core/physics/temporal_response.md): class c
+// >= 1 owns region c of the difference buffer, uResponseRegionPixels pixels
+// after region c - 1 (region 0 is the instant class's, the segment's pixels).
+uniform uint uResponseRegionPixels;
+
+// A contribution of delayed class `responseClass` (>= 1) to pixel `local`:
+// into its class's difference buffer whatever its width, which
+// response_integrate.comp filters by the class's kernel
+// (cpu::ResponseClasses::deposit: the same entries).
+void depositDelayed(uint local, uint responseClass, vec3 kernel, vec3 energy,
+                    inout float lostBefore, inout float lostAfter) {
+  depositWideAt(responseClass * uResponseRegionPixels + local, kernel, energy, lostBefore,
+                lostAfter);
+}
+#endif
 
 #undef TOFSIM_NARROW_BIN
 #undef TOFSIM_SLOT

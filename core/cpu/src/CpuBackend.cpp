@@ -12,6 +12,7 @@
 #include "LitBounds.h"
 #include "MergedSamples.h"
 #include "ParallelFor.h"
+#include "ResponseClasses.h"
 #include "RsmVpls.h"
 #include "VplArrays.h"
 #include "tofsim/capture/SegmentSink.h"
@@ -19,6 +20,7 @@
 #include "tofsim/ir/SurfaceImage.h"
 #include "tofsim/physics/FootprintBuffer.h"
 #include "tofsim/physics/GltfBrdf.h"
+#include "tofsim/physics/TemporalResponse.h"
 #include "tofsim/physics/TransientPhysics.h"
 #include "tofsim/rays/RayScene.h"
 #include "tofsim/util/Error.h"
@@ -30,7 +32,9 @@ using ir::traceSampledPixels;
 using ir::traceSurfaces;
 
 CpuBackend::CpuBackend(const CpuBackendOptions& options)
-    : threads_(resolveThreads(options.threads)), indirectVisibility_(options.indirectVisibility) {}
+    : threads_(resolveThreads(options.threads)),
+      indirectVisibility_(options.indirectVisibility),
+      responses_(std::make_unique<ResponseClasses>()) {}
 
 CpuBackend::~CpuBackend() = default;
 
@@ -141,30 +145,6 @@ std::size_t CpuBackend::fixedBytes() const {
 
 std::size_t CpuBackend::visibilityBytesPerVpl() const { return ism_ ? ism_->bytesPerVpl() : 0; }
 
-void CpuBackend::allocate(std::size_t pixelsPerSegment, std::size_t vplsPerBatch) {
-  finishSurfaces();
-  pixelsPerSegment_ = pixelsPerSegment;
-  const std::size_t floats = pixelsPerSegment * job_.settings.time.bins * kChannels;
-  const std::size_t footprintFloats = job_.settings.pixel_footprint ? floats : 0;
-  // Fresh buffers come zero from the kernel; buffers of the same size (the
-  // next render of a sequence) are kept, zeroed where an unfinished segment
-  // left something.
-  if (direct_.size() != floats || footprint_.size() != footprintFloats) {
-    direct_ = util::ZeroedBuffer<float>(floats);
-    indirect_ = util::ZeroedBuffer<float>(floats);
-    footprint_ = util::ZeroedBuffer<double>(footprintFloats);  // the plan counted it
-    footprintBins_.assign(pixelsPerSegment, FootprintBins{});
-  } else if (!accumulatorsZero_) {
-    clearAccumulators(pixelsPerSegment);
-  }
-  accumulatorsZero_ = true;
-  outside_.assign(pixelsPerSegment, physics::OffAxisSums{});
-  segmentSurfaces_.resize(pixelsPerSegment * maxSamplesPerPixel());
-  segmentLit_.resize(pixelsPerSegment * maxSamplesPerPixel());
-  segmentFirstSample_.resize(pixelsPerSegment + 1);
-  if (ism_) ism_->allocate(vplsPerBatch);
-}
-
 void CpuBackend::buildVisibility(std::size_t firstVpl, std::size_t count) {
   if (ism_) ism_->build(firstVpl, count, threads_);
 }
@@ -252,43 +232,6 @@ void CpuBackend::fillSurface(std::size_t i, float weight, const capture::PixelSt
   const capture::FootprintSteps footprint = steps.at(surface.x, surface.n, viewpoint);
   surface.dxdu = footprint.dxdu;
   surface.dxdv = footprint.dxdv;
-}
-
-double* CpuBackend::footprintOf(std::size_t i, const glm::vec3& kernel) {
-  const int32_t bins = job_.settings.time.bins;
-  widenToWideKernel(kernel, bins, footprintBins_[i].first, footprintBins_[i].last);
-  return footprint_.data() + i * static_cast<std::size_t>(bins) * kChannels;
-}
-
-void CpuBackend::integratePixel(std::size_t i, float* histogram) {
-  FootprintBins& written = footprintBins_[i];
-  if (written.first > written.last) return;
-  const int32_t bins = job_.settings.time.bins;
-  const std::size_t first = static_cast<std::size_t>(written.first) * kChannels;
-  double* diff = footprint_.data() + i * static_cast<std::size_t>(bins) * kChannels;
-  // The entries before `first` are zero: so are both running sums there, and
-  // adding +0.0f leaves a histogram bin's bits as they are (a sum of floats
-  // from +0 is never -0), so the sums start at `first`.
-  physics::integrateFootprint(diff + first, bins - written.first, histogram + first);
-  // While in cache: zero for the next wide kernel.
-  std::fill(diff + first, diff + (static_cast<std::size_t>(written.last) + 1) * kChannels, 0.0);
-  written = FootprintBins{};
-}
-
-void CpuBackend::clearAccumulators(std::size_t pixels) {
-  const std::size_t stride = static_cast<std::size_t>(job_.settings.time.bins) * kChannels;
-  std::fill_n(direct_.data(), pixels * stride, 0.0f);
-  std::fill_n(indirect_.data(), pixels * stride, 0.0f);
-  for (std::size_t i = 0; i < pixels && footprint_.size() > 0; ++i) {
-    const FootprintBins written = footprintBins_[i];
-    if (written.first <= written.last) {
-      std::fill(
-          footprint_.data() + i * stride + static_cast<std::size_t>(written.first) * kChannels,
-          footprint_.data() + i * stride + (static_cast<std::size_t>(written.last) + 1) * kChannels,
-          0.0);
-    }
-    footprintBins_[i] = FootprintBins{};
-  }
 }
 
 void CpuBackend::gatherIndirect(std::size_t firstVpl, std::size_t count) {
@@ -422,39 +365,6 @@ void CpuBackend::visiblePairs(const IndirectConstants& c, std::size_t first, std
       }
       physics::depositInBin(histogram, bins, bin, 1.0f, glm::vec3(t.r[k], t.g[k], t.b[k]), lost);
     }
-  }
-}
-
-void CpuBackend::moveOut(float* from, float* to, bool integrateFootprints) {
-  const std::size_t tiles = (pixelCount_ + kTilePixels - 1) / kTilePixels;
-  const std::size_t stride = static_cast<std::size_t>(job_.settings.time.bins) * kChannels;
-  // Per pixel while its histogram is in cache: the wide footprint kernels
-  // summed in (integratePixel clears each footprint buffer it read), copied
-  // out, zeroed for the next bounce or segment.
-  parallelFor(tiles, threads_, [&](std::size_t tile) {
-    const std::size_t end = std::min(pixelCount_, (tile + 1) * kTilePixels);
-    for (std::size_t i = tile * kTilePixels; i < end; ++i) {
-      float* histogram = &from[i * stride];
-      if (integrateFootprints) integratePixel(i, histogram);
-      std::copy_n(histogram, stride, to + i * stride);
-      std::fill_n(histogram, stride, 0.0f);
-    }
-  });
-}
-
-void CpuBackend::takeIndirect(float* indirect) {
-  moveOut(indirect_.data(), indirect, job_.settings.pixel_footprint);
-}
-
-void CpuBackend::readSegment(float* direct, float* indirect, AxisLoss& offAxis) {
-  // The direct gather integrated its footprints itself; the indirect gathers'
-  // wide kernels, added after every batch, are summed once per pixel here.
-  moveOut(direct_.data(), direct, false);
-  moveOut(indirect_.data(), indirect, job_.settings.pixel_footprint);
-  accumulatorsZero_ = true;
-  for (std::size_t i = 0; i < pixelCount_; ++i) {
-    offAxis.before += outside_[i].before;
-    offAxis.after += outside_[i].after;
   }
 }
 

@@ -178,6 +178,67 @@ inline __m256d kinkWeight4(__m256d t, bool step) {
   return _mm256_blendv_pd(w, zero, outside);
 }
 
+// depositWideAvx2's slots when the kinks' bins are apart (no slot within
+// reach of two kinks) and on the axis: every slot written, slot (j, o)'s sum
+// over the kinks that of kink j's weight and zeros, taken lane by lane with
+// the same operations as the general case's.
+inline void addApartKinks(double* diff, const int32_t kb[4], const __m256d weight[3], bool step,
+                          double scale, const glm::vec3& energy) {
+  const __m256d all = _mm256_castsi256_pd(_mm256_set1_epi64x(-1));
+  const __m256d kink0 = _mm256_blend_pd(_mm256_setzero_pd(), all, 0x1);
+  const __m256d kink1 = _mm256_blend_pd(_mm256_setzero_pd(), all, 0x2);
+  const __m256d kink2 = _mm256_blend_pd(_mm256_setzero_pd(), all, 0x4);
+  const __m256d kink3 = _mm256_blend_pd(_mm256_setzero_pd(), all, 0x8);
+  const __m256d scales = _mm256_set1_pd(scale);
+  alignas(32) double value[3][4];
+  for (int o = 0; o < 3; ++o) {
+    const __m256d w0 = _mm256_and_pd(weight[o], kink0), w3 = _mm256_and_pd(weight[o], kink3);
+    __m256d sum;
+    if (step) {
+      sum = _mm256_sub_pd(w0, w3);
+    } else {
+      const __m256d w1 = _mm256_and_pd(weight[o], kink1), w2 = _mm256_and_pd(weight[o], kink2);
+      sum = _mm256_add_pd(_mm256_sub_pd(_mm256_sub_pd(w0, w1), w2), w3);
+    }
+    _mm256_store_pd(value[o], _mm256_mul_pd(scales, sum));
+  }
+  const __m128d rg = _mm_setr_pd(static_cast<double>(energy.r), static_cast<double>(energy.g));
+  const __m128d bb = _mm_set_sd(static_cast<double>(energy.b));
+  for (int j = 0; j < 4; ++j) {
+    double* entry = diff + static_cast<std::size_t>(kb[j]) * 3;
+    for (int o = 0; o < 3; ++o, entry += 3) {
+      const __m128d v = _mm_set1_pd(value[o][j]);
+      _mm_storeu_pd(entry, _mm_add_pd(_mm_loadu_pd(entry), _mm_mul_pd(v, rg)));
+      _mm_store_sd(entry + 2, _mm_add_sd(_mm_load_sd(entry + 2), _mm_mul_sd(v, bb)));
+    }
+  }
+}
+
+// depositWideAvx2's slots in general: slot (j, o) writes bin kb[j] + o unless
+// past the axis or already written by kink j - 1; its value sums the weights
+// w[reach][i] of the kinks i within reach.
+inline void addNearKinks(double* diff, int32_t bins, const int32_t kb[4], const double w[3][4],
+                         bool step, double scale, const glm::vec3& energy) {
+  const double r = static_cast<double>(energy.r), g = static_cast<double>(energy.g),
+               b = static_cast<double>(energy.b);
+  for (int j = 0; j < 4; ++j) {
+    for (int o = 0; o < 3; ++o) {
+      const int bin = kb[j] + o;
+      if (bin >= bins || (j > 0 && bin <= kb[j - 1] + 2)) continue;
+      double wi[4];
+      for (int i = 0; i < 4; ++i) {
+        const int reach = bin - kb[i];
+        wi[i] = reach >= 0 && reach <= 2 ? w[reach][i] : 0.0;
+      }
+      const double value = step ? scale * (wi[0] - wi[3]) : scale * (wi[0] - wi[1] - wi[2] + wi[3]);
+      double* entry = diff + static_cast<std::size_t>(bin) * 3;
+      entry[0] += value * r;
+      entry[1] += value * g;
+      entry[2] += value * b;
+    }
+  }
+}
+
 // physics::depositWide where the kernel lies on the axis from bin 2 on and
 // is at least a bin wide (depositFootprint's sums of kink weights, not its
 // CDF): the four kinks side by side in one vector, the twelve slots in three.
@@ -207,69 +268,20 @@ inline bool depositWideAvx2(double* diff, int32_t bins, const glm::vec3& kernel,
   const double scale = step ? 1.0 / wide : 1.0 / (wide * narrow);
   // Each kink's weights at its bins knotBin + o: t = (knotBin + o + 1) - knot.
   __m256d weight[3];
+  alignas(32) double w[3][4];
   for (int o = 0; o < 3; ++o) {
     const __m256d k1 = _mm256_cvtepi32_pd(_mm_add_epi32(knotBin, _mm_set1_epi32(o + 1)));
     weight[o] = kinkWeight4(_mm256_sub_pd(k1, knot), step);
+    _mm256_store_pd(w[o], weight[o]);
   }
-  alignas(32) double w[3][4];
-  for (int o = 0; o < 3; ++o) _mm256_store_pd(w[o], weight[o]);
   alignas(16) int32_t kb[4];
   _mm_store_si128(reinterpret_cast<__m128i*>(kb), knotBin);
   first = std::min(first, kb[0]);
   last = std::max(last, std::min(kb[3] + 2, bins - 1));
-  // Slot (j, o) writes bin kb[j] + o unless past the axis or already written
-  // by kink j - 1; its value sums the weights of the kinks within reach.
-  const double r = static_cast<double>(energy.r), g = static_cast<double>(energy.g),
-               b = static_cast<double>(energy.b);
   if (kb[1] > kb[0] + 2 && kb[2] > kb[1] + 2 && kb[3] > kb[2] + 2 && kb[3] + 2 < bins) {
-    // The kinks' bins apart (no slot within reach of two kinks) and on the
-    // axis: every slot written, slot (j, o)'s sum over the kinks that of
-    // kink j's weight and zeros, taken lane by lane with the same operations.
-    const __m256d all = _mm256_castsi256_pd(_mm256_set1_epi64x(-1));
-    const __m256d kink0 = _mm256_blend_pd(_mm256_setzero_pd(), all, 0x1);
-    const __m256d kink1 = _mm256_blend_pd(_mm256_setzero_pd(), all, 0x2);
-    const __m256d kink2 = _mm256_blend_pd(_mm256_setzero_pd(), all, 0x4);
-    const __m256d kink3 = _mm256_blend_pd(_mm256_setzero_pd(), all, 0x8);
-    const __m256d scales = _mm256_set1_pd(scale);
-    alignas(32) double value[3][4];
-    for (int o = 0; o < 3; ++o) {
-      const __m256d w0 = _mm256_and_pd(weight[o], kink0), w3 = _mm256_and_pd(weight[o], kink3);
-      __m256d sum;
-      if (step) {
-        sum = _mm256_sub_pd(w0, w3);
-      } else {
-        const __m256d w1 = _mm256_and_pd(weight[o], kink1), w2 = _mm256_and_pd(weight[o], kink2);
-        sum = _mm256_add_pd(_mm256_sub_pd(_mm256_sub_pd(w0, w1), w2), w3);
-      }
-      _mm256_store_pd(value[o], _mm256_mul_pd(scales, sum));
-    }
-    const __m128d rg = _mm_setr_pd(r, g), bb = _mm_set_sd(b);
-    for (int j = 0; j < 4; ++j) {
-      double* entry = diff + static_cast<std::size_t>(kb[j]) * 3;
-      for (int o = 0; o < 3; ++o, entry += 3) {
-        const __m128d v = _mm_set1_pd(value[o][j]);
-        _mm_storeu_pd(entry, _mm_add_pd(_mm_loadu_pd(entry), _mm_mul_pd(v, rg)));
-        _mm_store_sd(entry + 2, _mm_add_sd(_mm_load_sd(entry + 2), _mm_mul_sd(v, bb)));
-      }
-    }
+    addApartKinks(diff, kb, weight, step, scale, energy);
   } else {
-    for (int j = 0; j < 4; ++j) {
-      for (int o = 0; o < 3; ++o) {
-        const int bin = kb[j] + o;
-        if (bin >= bins || (j > 0 && bin <= kb[j - 1] + 2)) continue;
-        double wi[4];
-        for (int i = 0; i < 4; ++i) {
-          const int reach = bin - kb[i];
-          wi[i] = reach >= 0 && reach <= 2 ? w[reach][i] : 0.0;
-        }
-        const double value =
-            step ? scale * (wi[0] - wi[3]) : scale * (wi[0] - wi[1] - wi[2] + wi[3]);
-        double* entry = diff + static_cast<std::size_t>(bin) * 3;
-        entry[0] += value * r;
-        entry[1] += value * g;
-        entry[2] += value * b;
-      }
-    }
+    addNearKinks(diff, bins, kb, w, step, scale, energy);
   }
   // Nothing before the axis (the first knot is >= 2); after it, 1 - F(bins).
   if (knots[3] >= static_cast<double>(bins)) {

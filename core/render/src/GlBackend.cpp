@@ -16,6 +16,7 @@
 #include "tofsim/gl/Context.h"
 #include "tofsim/ir/SurfaceImage.h"
 #include "tofsim/physics/FootprintKernel.h"
+#include "tofsim/physics/TemporalResponse.h"
 #include "tofsim/util/Error.h"
 
 namespace tofsim::render {
@@ -357,9 +358,18 @@ void GlBackend::allocate(std::size_t pixelsPerSegment, std::size_t vplsPerBatch)
   p.outside.resize(pixelsPerSegment * 2);
   // The plan counted the difference buffer (capture::PixelBuffers::footprintBuffers).
   p.footprint.reset();
-  if (p.job.settings.pixel_footprint) {
-    p.footprint = std::make_unique<PixelFootprint>(pixelsPerSegment, p.job.settings.time.bins);
+  if (p.job.settings.pixel_footprint || !responseKernels_.empty()) {
+    std::vector<physics::ResponseTaps> delayed;
+    for (const physics::ResponseKernel& k : responseKernels_) {
+      delayed.push_back(physics::responseTaps(k, p.job.settings.time.bin_width_s));
+    }
+    p.footprint =
+        std::make_unique<PixelFootprint>(pixelsPerSegment, p.job.settings.time.bins, delayed);
   }
+}
+
+void GlBackend::setResponseKernels(const std::vector<physics::ResponseKernel>& delayed) {
+  responseKernels_ = delayed;
 }
 
 void GlBackend::buildVisibility(std::size_t firstVpl, std::size_t count) {

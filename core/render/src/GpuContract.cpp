@@ -21,6 +21,8 @@ std::vector<std::pair<std::string, std::string>> shaderDefines() {
       {"TOFSIM_SSBO_FOOTPRINT_VOLUME", n(kFootprintVolume)},
       {"TOFSIM_SSBO_SAMPLED_PIXELS", n(kSampledPixels)},
       {"TOFSIM_SSBO_PIXEL_RAY_STEPS", n(kPixelRaySteps)},
+      {"TOFSIM_SSBO_RESPONSE_STATE", n(kResponseState)},
+      {"TOFSIM_SSBO_RESPONSE_TAPS", n(kResponseTaps)},
       {"TOFSIM_UNIT_G_POSITION", n(kGPosition)},
       {"TOFSIM_UNIT_G_NORMAL", n(kGNormal)},
       {"TOFSIM_UNIT_G_ALBEDO", n(kGAlbedo)},

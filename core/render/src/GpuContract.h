@@ -42,6 +42,8 @@ enum StorageBinding : uint32_t {
   kFootprintVolume,   ///< the volume footprint_integrate.comp adds the buffer to
   kSampledPixels,     ///< one uint per pixel: 1 = N x N samples, 0 = its centre (ADAPTIVE_SAMPLES)
   kPixelRaySteps,  ///< two vec4 per pixel: a lens camera's ray steps along x, y (PIXEL_RAY_STEPS)
+  kResponseState,  ///< 16 doubles per pixel: response_integrate.comp's sums between chunks
+  kResponseTaps,   ///< the delayed response classes' filters (PixelFootprint)
 };
 
 /// Texture units (TOFSIM_UNIT_...).

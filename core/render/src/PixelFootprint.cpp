@@ -15,14 +15,40 @@ namespace {
 // each of the 3 channels; a third of the limit, as the gathers keep.
 constexpr int32_t kBinsPerDispatch = 20000 / gpu::kChannels;
 
+// The doubles of the classes' filters, one after another: prompt, tail
+// ratio, tail weight, taps.
+std::vector<double> packTaps(const std::vector<physics::ResponseTaps>& delayed) {
+  std::vector<double> packed;
+  for (const physics::ResponseTaps& t : delayed) {
+    packed.insert(packed.end(), {t.prompt, t.tailRatio, t.tailWeight});
+    packed.insert(packed.end(), t.taps.begin(), t.taps.end());
+  }
+  return packed;
+}
+
 }  // namespace
 
-PixelFootprint::PixelFootprint(std::size_t pixelsPerSegment, int32_t bins)
+PixelFootprint::PixelFootprint(std::size_t pixelsPerSegment, int32_t bins,
+                               const std::vector<physics::ResponseTaps>& delayed)
     : bins_(bins),
-      diff_(pixelsPerSegment * static_cast<std::size_t>(bins) * gpu::kChannels * sizeof(double)),
-      written_(pixelsPerSegment * sizeof(uint32_t)),
+      regionPixels_(pixelsPerSegment),
+      classes_(delayed.size()),
+      diff_((1 + classes_) * pixelsPerSegment * static_cast<std::size_t>(bins) * gpu::kChannels *
+            sizeof(double)),
+      written_((1 + classes_) * pixelsPerSegment * sizeof(uint32_t)),
       integrate_(gpu::makeProgram({{GL_COMPUTE_SHADER, "footprint_integrate.comp"}})) {
   integrate_.set("uBins", bins_);
+  if (classes_ == 0) return;
+  uint32_t offset = 0;
+  for (const physics::ResponseTaps& t : delayed) {
+    classTaps_.push_back({offset, t.delay, static_cast<int32_t>(t.taps.size())});
+    offset += 3 + static_cast<uint32_t>(t.taps.size());
+  }
+  const std::vector<double> packed = packTaps(delayed);
+  taps_ = gl::Buffer(packed.size() * sizeof(double), packed.data());
+  state_ = gl::Buffer(pixelsPerSegment * 16 * sizeof(double));
+  response_ = gpu::makeProgram({{GL_COMPUTE_SHADER, "response_integrate.comp"}});
+  response_.set("uBins", bins_);
 }
 
 void PixelFootprint::beginSegment(std::size_t pixels) {
@@ -30,13 +56,15 @@ void PixelFootprint::beginSegment(std::size_t pixels) {
   // render interrupted between a gather and its integration.
   diff_.clear();
   written_.clear();
+  // Region 0 alone (the segment's pixels), or every region.
+  const std::size_t bound = classes_ == 0 ? pixels : (1 + classes_) * regionPixels_;
   diff_.bindRange(GL_SHADER_STORAGE_BUFFER, gpu::kFootprint, 0,
-                  pixels * static_cast<std::size_t>(bins_) * gpu::kChannels * sizeof(double));
+                  bound * static_cast<std::size_t>(bins_) * gpu::kChannels * sizeof(double));
   written_.bindRange(GL_SHADER_STORAGE_BUFFER, gpu::kFootprintWritten, 0,
-                     pixels * sizeof(uint32_t));
+                     bound * sizeof(uint32_t));
 }
 
-void PixelFootprint::integrateInto(const gl::Buffer& volume, std::size_t pixels) const {
+void PixelFootprint::integrateInto(const gl::Buffer& volume, std::size_t pixels) {
   volume.bindRange(GL_SHADER_STORAGE_BUFFER, gpu::kFootprintVolume, 0,
                    pixels * static_cast<std::size_t>(bins_) * gpu::kChannels * sizeof(float));
   integrate_.use();
@@ -48,7 +76,34 @@ void PixelFootprint::integrateInto(const gl::Buffer& volume, std::size_t pixels)
     gl::dispatchThreads(pixels, gpu::kWorkGroupSize);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
   }
+  if (classes_ > 0) integrateClasses(pixels);
   TOFSIM_GL_CHECK("footprint integration");
+}
+
+void PixelFootprint::integrateClasses(std::size_t pixels) {
+  taps_.bindBase(GL_SHADER_STORAGE_BUFFER, gpu::kResponseTaps);
+  state_.bindBase(GL_SHADER_STORAGE_BUFFER, gpu::kResponseState);
+  response_.use();
+  response_.set("uPixelCount", static_cast<unsigned>(pixels));
+  for (std::size_t c = 0; c < classes_; ++c) {
+    const ClassTaps& t = classTaps_[c];
+    response_.set("uRegion", static_cast<unsigned>((c + 1) * regionPixels_));
+    response_.set("uDelay", t.delay);
+    response_.set("uTapCount", t.count);
+    response_.set("uTapsOffset", t.offset);
+    // Each bin is 1 + taps trips of the invocation's loops (llvmpipe's limit).
+    const int32_t chunk = std::max(1, 20000 / (1 + t.count));
+    for (int32_t first = 0; first < bins_; first += chunk) {
+      response_.set("uFirstBin", first);
+      response_.set("uBinCount", std::min(chunk, bins_ - first));
+      gl::dispatchThreads(pixels, gpu::kWorkGroupSize);
+      glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+    }
+  }
+  // The classes' regions hold their bin integrals: zero for the next
+  // gathers (region 0 is zero already: footprint_integrate.comp).
+  diff_.clear();
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
 }
 
 }  // namespace tofsim::render

@@ -35,6 +35,7 @@ class RayScene;
 }
 namespace tofsim::physics {
 struct OffAxisSums;
+struct ResponseKernel;
 }
 
 namespace tofsim::cpu {
@@ -48,6 +49,7 @@ struct CpuBackendOptions {
 
 class CpuIsm;
 class LitBounds;
+class ResponseClasses;
 struct PixelSurface;
 struct VplArrays;
 struct VplTerms;
@@ -82,6 +84,11 @@ class CpuBackend : public ir::IrBackend {
 
   int threads() const { return threads_; }
 
+  /// The delayed response classes' kernels (core/physics/temporal_response.md):
+  /// class c >= 1 is delayed[c - 1], class 0 the instant light. Taken at the
+  /// next allocate; empty (the default) keeps only the instant class.
+  void setResponseKernels(const std::vector<physics::ResponseKernel>& delayed);
+
  private:
   struct DirectConstants;
   struct DirectLight;
@@ -111,7 +118,8 @@ class CpuBackend : public ir::IrBackend {
                     std::size_t perPixel, const PixelSurface* surfaces, const unsigned char* lit,
                     const VplTerms* terms, BlockPair* pairs, float* histogram,
                     physics::OffAxisSums& lost, std::size_t& visible) const;
-  /// Adds pixel i's footprint buffer, if written, to `histogram` and clears it.
+  /// Adds pixel i's footprint buffer, if written, and its delayed classes'
+  /// light to `histogram` and clears them.
   void integratePixel(std::size_t i, float* histogram);
   /// Zero the first `pixels` pixels' histograms and footprint buffers (what
   /// an unfinished segment left).
@@ -181,6 +189,10 @@ class CpuBackend : public ir::IrBackend {
     int32_t last = -1;
   };
   std::vector<FootprintBins> footprintBins_;
+  /// The delayed classes' kernels and buffers (empty: none), integrated into
+  /// a pixel's histogram by integratePixel.
+  std::vector<physics::ResponseKernel> responseKernels_;
+  std::unique_ptr<ResponseClasses> responses_;
   std::size_t firstPixel_ = 0, pixelCount_ = 0, pixelsPerSegment_ = 0;
   float sceneScale_m_ = 1.0f;
 };

@@ -9,11 +9,15 @@
 // class only runs the passes.
 
 #include <memory>
+#include <vector>
 
 #include "tofsim/ir/IrBackend.h"
 
 namespace tofsim::gl {
 class Context;
+}
+namespace tofsim::physics {
+struct ResponseKernel;
 }
 
 namespace tofsim::render {
@@ -47,6 +51,11 @@ class GlBackend : public ir::IrBackend {
   void takeIndirect(float* indirect) override;
   void readSegment(float* direct, float* indirect, AxisLoss& offAxis) override;
 
+  /// The delayed response classes' kernels (core/physics/temporal_response.md):
+  /// class c >= 1 is delayed[c - 1], class 0 the instant light. Taken at the
+  /// next allocate; empty (the default) keeps only the instant class.
+  void setResponseKernels(const std::vector<physics::ResponseKernel>& delayed);
+
  private:
   struct SceneObjects;  // the scene's GL objects, kept across renders (GlBackend.cpp)
   struct Passes;        // one render's GL objects (GlBackend.cpp)
@@ -62,6 +71,7 @@ class GlBackend : public ir::IrBackend {
   std::unique_ptr<SceneObjects> sceneObjects_;
   std::unique_ptr<Passes> passes_;
   std::unique_ptr<ir::SurfaceImage> givenSamples_, givenCentres_;  ///< setSurfaces', until used
+  std::vector<physics::ResponseKernel> responseKernels_;  ///< setResponseKernels'
 };
 
 }  // namespace tofsim::render
