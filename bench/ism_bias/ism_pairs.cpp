@@ -21,8 +21,8 @@
 // distance from the VPL. Usage (bench/README.md, "The ISM's bias"):
 //   tofsim_ism_pairs [side=64] [rsm=32] [threads=2]
 #include <algorithm>
-#include <cmath>
 #include <array>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <string>
@@ -44,16 +44,16 @@ using namespace tofsim;
 /// A pair that would carry light: pixel sample and VPL on each other's lit side.
 struct Pair {
   uint32_t pixel = 0, vpl = 0;
-  float dist = 0.0f;     ///< VPL to pixel, m
-  float excess = 0.0f;   ///< path past the pixel's direct path, m
-  float light = 0.0f;    ///< VPL flux (R+G+B) times clamped cos cos / d^2
+  float dist = 0.0f;       ///< VPL to pixel, m
+  float excess = 0.0f;     ///< path past the pixel's direct path, m
+  float light = 0.0f;      ///< VPL flux (R+G+B) times clamped cos cos / d^2
   float alpha_deg = 0.0f;  ///< between the pixel's normal and the direction to the VPL
-  bool visible = false;  ///< exact: no occluder between them
+  bool visible = false;    ///< exact: no occluder between them
 };
 
 constexpr std::array<float, 3> kPathEdges{0.12f, 0.30f, 0.60f};  // m past the direct path
 constexpr std::array<const char*, 4> kPathNames{"peak..400 ps", "400 ps..1 ns", "1..2 ns",
-                                                 "> 2 ns"};
+                                                "> 2 ns"};
 constexpr std::array<float, 3> kDistEdges{0.10f, 0.20f, 0.40f};  // m from the VPL
 constexpr std::array<const char*, 4> kDistNames{"< 10 cm", "10-20 cm", "20-40 cm", "> 40 cm"};
 constexpr std::array<float, 3> kAlphaEdges{35.0f, 60.0f, 80.0f};  // the receiver's angle, degrees
@@ -107,7 +107,9 @@ void findPairs(Setup& s, const rays::RayScene& rays, int threads) {
       if (dist < 1e-6f) continue;
       const float cosV = glm::dot(vn, d) / dist, cosX = -glm::dot(s.n[i], d) / dist;
       if (cosV <= 0.0f || cosX <= 0.0f) continue;
-      Pair pair{static_cast<uint32_t>(i), static_cast<uint32_t>(k), dist,
+      Pair pair{static_cast<uint32_t>(i),
+                static_cast<uint32_t>(k),
+                dist,
                 v.positionPath.w + dist + glm::length(s.x[i] - camera) - direct,
                 (v.flux.x + v.flux.y + v.flux.z) * std::min(cosV * cosX / (dist * dist), clamp),
                 glm::degrees(std::acos(std::min(cosX, 1.0f)))};
@@ -177,9 +179,10 @@ void printGrid(const char* title, const Setup& s, const std::vector<uint8_t>& ve
     const Pair& p = s.pairs[j];
     grid[bucket(p.excess, kPathEdges)][bucket(p.dist, kDistEdges)].add(p, verdict[j] != 0);
   }
-  std::printf("\n%s: hidden light / leaked light (share of the visible pairs' light; visible "
-              "pairs)\n\n| path past the direct one |",
-              title);
+  std::printf(
+      "\n%s: hidden light / leaked light (share of the visible pairs' light; visible "
+      "pairs)\n\n| path past the direct one |",
+      title);
   for (const char* d : kDistNames) std::printf(" %s |", d);
   std::printf("\n|---|---|---|---|---|\n");
   for (int a = 0; a < 4; ++a) {
@@ -201,13 +204,14 @@ void printByAngle(const Setup& s, const Verdicts& v) {
     old[a].add(s.pairs[j], v.oldBias[j] != 0);
     slope[a].add(s.pairs[j], v.newBias[j] != 0);
   }
-  std::printf("\nISM 32^2, 2048 points, by the angle between the pixel's normal and the "
-              "direction to the VPL: hidden light / leaked light, old tolerance -> slope\n\n"
-              "| receiver's angle | visible pairs | old | slope |\n|---|---|---|---|\n");
+  std::printf(
+      "\nISM 32^2, 2048 points, by the angle between the pixel's normal and the "
+      "direction to the VPL: hidden light / leaked light, old tolerance -> slope\n\n"
+      "| receiver's angle | visible pairs | old | slope |\n|---|---|---|---|\n");
   for (int a = 0; a < 4; ++a) {
     std::printf("| %s | %.0fk | %.1f%% / %.1f%% | %.1f%% / %.1f%% |\n", kAlphaNames[a],
-                old[a].visible / 1000.0, old[a].hidLight(), old[a].leakLight(),
-                slope[a].hidLight(), slope[a].leakLight());
+                old[a].visible / 1000.0, old[a].hidLight(), old[a].leakLight(), slope[a].hidLight(),
+                slope[a].leakLight());
   }
 }
 
@@ -233,24 +237,27 @@ int main(int argc, char** argv) {
     if (centres.positions[4 * i + 3] == 0.0f) continue;
     s.x.emplace_back(centres.positions[4 * i], centres.positions[4 * i + 1],
                      centres.positions[4 * i + 2]);
-    s.n.emplace_back(centres.normals[4 * i], centres.normals[4 * i + 1], centres.normals[4 * i + 2]);
+    s.n.emplace_back(centres.normals[4 * i], centres.normals[4 * i + 1],
+                     centres.normals[4 * i + 2]);
   }
   findPairs(s, rays, threads);
   std::size_t visible = 0;
   for (const Pair& p : s.pairs) visible += p.visible;
-  std::printf("%dx%d pixel centres (%zu on surfaces), %zu VPLs (RSM %d^2): %zu pairs carry light, "
-              "%zu visible\n\n",
-              side, side, s.x.size(), s.vpls.size(), rsm, s.pairs.size(), visible);
-  std::printf("| ISM | tolerance | hid: pairs / light | leak: pairs / light | ISM / exact "
-              "light |");
+  std::printf(
+      "%dx%d pixel centres (%zu on surfaces), %zu VPLs (RSM %d^2): %zu pairs carry light, "
+      "%zu visible\n\n",
+      side, side, s.x.size(), s.vpls.size(), rsm, s.pairs.size(), visible);
+  std::printf(
+      "| ISM | tolerance | hid: pairs / light | leak: pairs / light | ISM / exact "
+      "light |");
   for (const char* p : kPathNames) std::printf(" hid / leak light, %s |", p);
   std::printf("\n|---|---|---|---|---|---|---|---|---|\n");
   struct Variant {
     int resolution, points;
     bool pullPush;
   };
-  const Variant variants[] = {{32, 1000, true}, {32, 2048, true}, {32, 4000, true},
-                              {32, 8000, true}, {32, 2048, false}, {16, 512, true},
+  const Variant variants[] = {{32, 1000, true}, {32, 2048, true},   {32, 4000, true},
+                              {32, 8000, true}, {32, 2048, false},  {16, 512, true},
                               {64, 8192, true}, {128, 32768, true}, {128, 2000, true}};
   Verdicts defaults;
   for (const Variant& v : variants) {
