@@ -37,7 +37,7 @@ for config in "${configs[@]}"; do
       fi
     done
     differ=$(cd "$work/before/$name-$backend" &&
-      find . -type f ! -name '*.json' ! -name '*.h5' ! -name '*.hdf5' ! -name '*.yaml' ! -name '*.txt' | sort |
+      find . -type f ! -name '.tofsim.lock' ! -name '*.json' ! -name '*.h5' ! -name '*.hdf5' ! -name '*.yaml' ! -name '*.txt' | sort |
       while read -r f; do
         cmp -s "$f" "$work/after/$name-$backend/$f" || echo "$f"
       done)

@@ -65,7 +65,11 @@ class CpuBackend : public ir::IrBackend {
   bool mergesPixelSamples() const override { return true; }
   void setScene(const scene::Scene& scene, const rays::RayScene* rays) override;
   ir::CentreSurfaces prepareSurfaces(const capture::RenderJob& job) override;
-  /// Never called: the CPU backend traces every imager's samples itself.
+  /// Not called by the driver (the CPU backend traces every imager's samples
+  /// itself): samples made otherwise (points of a medium, whose vertices
+  /// have no normal: physics::VERTEX_MEDIUM), which the next prepareSurfaces
+  /// gathers instead of tracing, at one sample per pixel (centres null) or
+  /// with their centres.
   void setSurfaces(std::unique_ptr<ir::SurfaceImage> samples,
                    std::unique_ptr<ir::SurfaceImage> centres) override;
   void setSampledPixels(const std::vector<uint8_t>& sampled) override;
@@ -84,6 +88,8 @@ class CpuBackend : public ir::IrBackend {
   int threads() const { return threads_; }
 
  private:
+  /// prepareSurfaces with setSurfaces' samples.
+  ir::CentreSurfaces takeGivenSurfaces(const capture::RenderJob& job);
   struct DirectConstants;
   struct DirectLight;
   struct IndirectConstants;
@@ -149,6 +155,7 @@ class CpuBackend : public ir::IrBackend {
   /// render.adaptive_pixel_samples: surfaces_ holds the centres until
   /// setSampledPixels (or finishSurfaces) traces the sub-samples.
   bool subSamplesPending_ = false;
+  std::unique_ptr<ir::SurfaceImage> givenSamples_, givenCentres_;  ///< setSurfaces', until used
   int32_t apertureSamples_ = 1;  ///< per pixel sample (capture::apertureSamplesOf)
   std::unique_ptr<VplArrays> vpls_;
   std::unique_ptr<CpuIsm> ism_;

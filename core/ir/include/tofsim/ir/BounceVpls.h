@@ -42,7 +42,7 @@ struct BounceTracing {
 
 /// How later bounces reflect (render.materials, render.indirect.vpl_brdf_clamp).
 struct BounceMaterials {
-  bool gltf = false;       ///< glossy VPLs (Vpl::incoming, Vpl::material)
+  int vertexModel = physics::VERTEX_LAMBERTIAN;  ///< of the children's vertices (Vpl::vertex)
   float brdfClamp = 0.0f;  ///< 1/sr, <= 0: none
 };
 
