@@ -44,7 +44,7 @@ TEST(GlossyBounceVplsTest, ChildrenCarryTheParentsPowerTimesItsDirectionalAlbedo
   const rays::RayScene scene(box, 1);
   const glm::vec3 incoming = glm::normalize(glm::vec3(0.5f, 1.0f, 0.2f));
   Vpl parent{glm::vec4(0.2f, -1.0f, 0.1f, 2.0f), glm::vec4(0, 1, 0, 0),
-             glm::vec4(1.0f, 0.5f, 0.25f, 0.0f)};       // the power it received, W
+             glm::vec4(1.0f, 0.5f, 0.25f, 0.0f)};  // the power it received, W
   parent.incoming = glm::vec4(incoming, 0.0f);
   // A metal of roughness 0.4.
   parent.vertex = physics::scatterVertex(physics::VERTEX_GLTF, {0.9f, 0.7f, 0.5f}, 1.0f, 0.4f);
@@ -73,8 +73,8 @@ TEST(GlossyBounceVplsTest, ChildrenCarryTheParentsPowerTimesItsDirectionalAlbedo
     EXPECT_NEAR(sum[c] / parent.flux[c], albedo[c], 0.04 * albedo[c]) << "channel " << c;
   }
   // The same directions (same seed) with the clamp: no child gains light.
-  const std::vector<Vpl> clamped =
-      traceBounce(scene, {parent}, count, 2, 7, 1.0, {}, BounceMaterials{physics::VERTEX_GLTF, 0.5f});
+  const std::vector<Vpl> clamped = traceBounce(scene, {parent}, count, 2, 7, 1.0, {},
+                                               BounceMaterials{physics::VERTEX_GLTF, 0.5f});
   ASSERT_EQ(clamped.size(), children.size());
   double removed = 0.0;
   for (std::size_t k = 0; k < clamped.size(); ++k) {

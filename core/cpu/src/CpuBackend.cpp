@@ -18,7 +18,7 @@
 #include "tofsim/capture/ThinLens.h"
 #include "tofsim/ir/SurfaceImage.h"
 #include "tofsim/physics/FootprintBuffer.h"
-#include "tofsim/physics/GltfBrdf.h"
+#include "tofsim/physics/ScatterVertex.h"
 #include "tofsim/physics/TransientPhysics.h"
 #include "tofsim/rays/RayScene.h"
 #include "tofsim/util/Error.h"
@@ -103,9 +103,9 @@ ir::CentreSurfaces CpuBackend::takeGivenSurfaces(const capture::RenderJob& job) 
 void CpuBackend::setSampledPixels(const std::vector<uint8_t>& sampled) {
   TOFSIM_CHECK_MSG(subSamplesPending_,
                    "setSampledPixels needs adaptive_pixel_samples with pixel_samples > 1");
-  surfaces_ = std::make_unique<SurfaceImage>(traceSampledPixels(
-      *scene_, job_.imager, threads_, job_.settings.pixel_samples, sampled, apertureSamples_,
-      ir::vertexModelOf(job_.settings.materials)));
+  surfaces_ = std::make_unique<SurfaceImage>(
+      traceSampledPixels(*scene_, job_.imager, threads_, job_.settings.pixel_samples, sampled,
+                         apertureSamples_, ir::vertexModelOf(job_.settings.materials)));
   subSamplesPending_ = false;
 }
 
@@ -145,11 +145,10 @@ void CpuBackend::setVpls(const std::vector<ir::Vpl>& vpls) {
 
 std::size_t CpuBackend::fixedBytes() const {
   std::size_t bytes =
-      surfaces_
-          ? surfaces_->size() * (2 * sizeof(glm::vec4) + sizeof(physics::ScatterVertex) +
-                                 sizeof(glm::vec3)) +
-                surfaces_->aperture.size() * sizeof(glm::vec4)
-          : 0;
+      surfaces_ ? surfaces_->size() * (2 * sizeof(glm::vec4) + sizeof(physics::ScatterVertex) +
+                                       sizeof(glm::vec3)) +
+                      surfaces_->aperture.size() * sizeof(glm::vec4)
+                : 0;
   // Embree's BVH and vertex copies: about 100 bytes per triangle (measured order).
   if (job_.scene != nullptr) bytes += job_.scene->triangleCount() * 100;
   if (vpls_) bytes += vpls_->bytes();
@@ -228,25 +227,33 @@ void CpuBackend::mergeSegmentSamples(std::size_t count) {
   mergedFirst_.clear();
   const capture::RenderSettings& s = job_.settings;
   // Not with aperture samples (they see through different points of the
-  // lens) nor glTF materials (their BRDFs do not add up as albedos do).
-  if (!s.indirect.merge_pixel_samples || s.pixel_samples == 1 || apertureSamples_ != 1 ||
-      ir::vertexModelOf(s.materials) == physics::VERTEX_GLTF) {
-    return;
-  }
+  // lens).
+  if (!s.indirect.merge_pixel_samples || s.pixel_samples == 1 || apertureSamples_ != 1) return;
   mergedFirst_.push_back(0);
   for (std::size_t pixel = 0; pixel < count; ++pixel) {
     const std::size_t first = segmentFirstSample_[pixel];
     const std::size_t samples = segmentFirstSample_[pixel + 1] - first;
     const int n = surfaces_->side[firstPixel_ + pixel];
     TOFSIM_CHECK_EQ(samples, static_cast<std::size_t>(n) * n);
-    mergePixelSamples(&segmentSurfaces_[first], &segmentLit_[first], n, mergedSurfaces_);
+    // Only where every scatter is constant: a glTF BRDF's does not add up as
+    // albedos do. The others' lit samples stay as they are, in order.
+    bool constant = true;
+    for (std::size_t i = first; i < first + samples; ++i) {
+      constant = constant && physics::scatterIsConstant(segmentSurfaces_[i].vertex);
+    }
+    if (constant) {
+      mergePixelSamples(&segmentSurfaces_[first], &segmentLit_[first], n, mergedSurfaces_);
+    } else {
+      for (std::size_t i = first; i < first + samples; ++i) {
+        if (segmentLit_[i]) mergedSurfaces_.push_back(segmentSurfaces_[i]);
+      }
+    }
     mergedFirst_.push_back(mergedSurfaces_.size());
   }
 }
 
 void CpuBackend::fillSurface(std::size_t i, float weight, const capture::PixelSteps& steps,
                              float eta) {
-  const capture::RenderSettings& s = job_.settings;
   const std::size_t p = firstSample_ + i;
   // The camera leg ends on the sample's aperture point (the viewpoint without
   // one), where the lens's path to the pixel starts.
@@ -261,8 +268,8 @@ void CpuBackend::fillSurface(std::size_t i, float weight, const capture::PixelSt
   surface.toCamera = glm::normalize(viewpoint - surface.x);
   surface.weight = weight;
   // The constant scatter's f (the directions do not matter to it).
-  surface.brdf = physics::scatter(surface.vertex, surface.n, surface.toCamera, surface.toCamera).f *
-                 weight;
+  surface.brdf =
+      physics::scatter(surface.vertex, surface.n, surface.toCamera, surface.toCamera).f * weight;
   surface.cameraPath_m = physics::cameraPathLength(
       dropLastLeg_, eta, glm::length(surface.x - viewpoint) + surface.lensPath_m);
   const capture::FootprintSteps footprint = steps.at(surface.x, surface.n, viewpoint);

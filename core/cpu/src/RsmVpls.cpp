@@ -5,6 +5,7 @@
 
 #include "LitBounds.h"
 #include "ParallelFor.h"
+#include "tofsim/ir/HitVertex.h"
 #include "tofsim/ir/RsmEdgeTexels.h"
 #include "tofsim/ir/RsmTexels.h"
 
@@ -25,11 +26,9 @@ std::optional<ir::Vpl> texelVpl(const rays::RayScene& scene, const capture::Ligh
   if (lit && !rayMeetsBox(light.position_world, direction, *lit)) return std::nullopt;
   const auto hit = scene.intersect(light.position_world, direction);
   if (!hit) return std::nullopt;
-  return ir::rsmTexelVpl(
-      light, v, resolution, x, y,
-      {hit->position_world, hit->normal_world,
-       physics::scatterVertex(vertexModel, hit->albedo, hit->metallic, hit->roughness)},
-      eta);
+  return ir::rsmTexelVpl(light, v, resolution, x, y,
+                         {hit->position_world, hit->normal_world, ir::hitVertex(*hit, vertexModel)},
+                         eta);
 }
 
 }  // namespace

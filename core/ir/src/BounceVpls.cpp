@@ -5,6 +5,7 @@
 #include <optional>
 #include <thread>
 
+#include "tofsim/ir/HitVertex.h"
 #include "tofsim/physics/ScatterSampling.h"
 #include "tofsim/rays/RayScene.h"
 #include "tofsim/rays/Sampling.h"
@@ -47,8 +48,7 @@ std::optional<Vpl> shootChild(const rays::RayScene& scene, const Vpl& parent,
   // The child receives the parent's share times the continuation's weight
   // and carries the hit's vertex (and, where its flux does not hold its
   // scatter, the direction its light came from, -w).
-  const physics::ScatterVertex vertex =
-      physics::scatterVertex(materials.vertexModel, hit->albedo, hit->metallic, hit->roughness);
+  const physics::ScatterVertex vertex = hitVertex(*hit, materials.vertexModel);
   const glm::vec3 flux = physics::bounceVplFlux(vertex, share, continuation.weight);
   std::optional<Vpl> child;
   if (flux.r + flux.g + flux.b > 0.0f) {

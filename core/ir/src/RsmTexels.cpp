@@ -75,10 +75,10 @@ std::optional<Vpl> rsmTexelVpl(const capture::Light& light, const RsmView& view,
   const double r2 = 1.0 + q.x * q.x + q.y * q.y;
   const double solidAngle = texelSide * texelSide / (r2 * std::sqrt(r2));
   const bool holdsScatter = physics::vplFluxHoldsScatter(surface.vertex);
-  const glm::vec3 flux = holdsScatter ? glm::vec3(surface.vertex.color) * light.intensity_W_per_sr *
-                                            static_cast<float>(profile * solidAngle / M_PI)
-                                      : light.intensity_W_per_sr *
-                                            static_cast<float>(profile * solidAngle);
+  const glm::vec3 flux = holdsScatter
+                             ? glm::vec3(surface.vertex.color) * light.intensity_W_per_sr *
+                                   static_cast<float>(profile * solidAngle / M_PI)
+                             : light.intensity_W_per_sr * static_cast<float>(profile * solidAngle);
   if (flux.r + flux.g + flux.b <= 0.0f) return std::nullopt;
   // The texel's patch on the surface: the surface point's steps across one
   // texel (ray differentials, as for a camera pixel), and the light leg's

@@ -3,6 +3,7 @@
 #include <optional>
 
 #include "tofsim/capture/ThinLens.h"
+#include "tofsim/ir/HitVertex.h"
 #include "tofsim/rays/RayScene.h"
 #include "tofsim/util/Error.h"
 #include "tofsim/util/ParallelFor.h"
@@ -31,8 +32,8 @@ SurfaceImage emptyImage(const capture::Imager& imager, std::vector<int32_t> side
   const std::size_t samples = image.firstSample[pixelCount];
   image.position.assign(samples, glm::vec4(0.0f));
   image.normal.assign(samples, glm::vec4(0.0f));
-  image.vertex.assign(samples, physics::scatterVertex(physics::VERTEX_LAMBERTIAN, glm::vec3(0.0f),
-                                                      0.0f, 0.0f));
+  image.vertex.assign(
+      samples, physics::scatterVertex(physics::VERTEX_LAMBERTIAN, glm::vec3(0.0f), 0.0f, 0.0f));
   image.geometric.assign(samples, glm::vec3(0.0f));
   if (apertureSamples > 1) image.aperture.assign(samples, glm::vec4(0.0f));
   return image;
@@ -66,8 +67,7 @@ void traceInto(SurfaceImage& image, const rays::RayScene& scene, const capture::
         if (!hit) continue;
         image.position[i] = glm::vec4(hit->position_world, 1.0f);
         image.normal[i] = glm::vec4(hit->normal_world, 0.0f);
-        image.vertex[i] =
-            physics::scatterVertex(vertexModel, hit->albedo, hit->metallic, hit->roughness);
+        image.vertex[i] = hitVertex(*hit, vertexModel);
         image.geometric[i] = hit->geometric_world;
       }
     }

@@ -48,9 +48,7 @@ struct SurfaceMaps {
 
 /// Whether maps of surfaces whose vertices have `vertexModel`
 /// (physics::VERTEX_*) carry (metallic, roughness): the glTF BRDF's.
-inline bool mapsMetallicRoughness(int vertexModel) {
-  return vertexModel == physics::VERTEX_GLTF;
-}
+inline bool mapsMetallicRoughness(int vertexModel) { return vertexModel == physics::VERTEX_GLTF; }
 
 /// Near and far planes that enclose the scene's bounds seen from `eye`.
 glm::vec2 depthRange(const glm::vec3& boundsMin, const glm::vec3& boundsMax, const glm::vec3& eye);

@@ -43,7 +43,7 @@ struct BounceTracing {
 /// How later bounces reflect (render.materials, render.indirect.vpl_brdf_clamp).
 struct BounceMaterials {
   int vertexModel = physics::VERTEX_LAMBERTIAN;  ///< of the children's vertices (Vpl::vertex)
-  float brdfClamp = 0.0f;  ///< 1/sr, <= 0: none
+  float brdfClamp = 0.0f;                        ///< 1/sr, <= 0: none
 };
 
 /// The VPLs of one bounce after `parents` (those of bounce `bounce` - 1):

@@ -41,8 +41,8 @@ struct SurfaceImage {
   /// less the chief ray's (w, m: capture::ApertureRay::lensPath_m); empty
   /// otherwise (the imager's viewpoint, no lens path).
   std::vector<glm::vec4> aperture;
-  std::vector<glm::vec4> position;           ///< xyz world, w = 1 on a surface, 0 else
-  std::vector<glm::vec4> normal;  ///< xyz unit shading normal facing the viewpoint (0: a medium)
+  std::vector<glm::vec4> position;  ///< xyz world, w = 1 on a surface, 0 else
+  std::vector<glm::vec4> normal;    ///< xyz unit shading normal facing the viewpoint (0: a medium)
   /// What the sample scatters (physics::scatter): its only material member.
   std::vector<physics::ScatterVertex> vertex;
   std::vector<glm::vec3> geometric;  ///< triangle normal facing the viewpoint (ray offsets)

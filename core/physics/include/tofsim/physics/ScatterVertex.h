@@ -7,22 +7,12 @@
 #include <cstddef>
 #include <glm/glm.hpp>
 
+// The two files scatter_vertex.glsl includes, with the GLM names they use.
+#include "tofsim/physics/GltfBrdf.h"
+#include "tofsim/physics/TransientPhysics.h"
+
 namespace tofsim::physics {
 
-using glm::abs;
-using glm::clamp;
-using glm::dot;
-using glm::floor;
-using glm::ivec2;
-using glm::length;
-using glm::mat3;
-using glm::max;
-using glm::min;
-using glm::normalize;
-using glm::sqrt;
-using glm::transpose;
-using glm::vec2;
-using glm::vec3;
 using glm::vec4;
 
 #define TOFSIM_PHYSICS_FN inline
