@@ -2,9 +2,9 @@
 // Direct transient light: one thread per pixel of the segment, over the
 // pixel's G-buffer samples in order: its PIXEL_SAMPLES^2 sub-pixel samples, or
 // with ADAPTIVE_SAMPLES one centre sample where the mask says so
-// (surface_samples.glsl). A sample's surface point x receives the light's
-// impulse after |l - x| and reflects it (Lambertian, or with GLTF_MATERIALS
-// the glTF BRDF of gltf_brdf.glsl) to the camera after |x - c|; the radiance
+// (surface_samples.glsl). A sample's point x receives the light's impulse
+// after |l - x| and scatters it (its vertex's scatter(), scatter_vertex.glsl)
+// to the camera after |x - c|; the radiance
 // lands in the bin of the full optical path eta * (|l - x| + |x - c|), or
 // eta * |l - x| when the camera delay is unwarped. With PIXEL_FOOTPRINT it is
 // spread instead over that path's distribution across the sample's footprint
@@ -14,11 +14,8 @@
 // times, far below llvmpipe's 65535 loop trips per invocation.
 layout(local_size_x = TOFSIM_WORK_GROUP_SIZE) in;
 
-#include "light.glsl"
 #include "surface_samples.glsl"
-#ifdef GLTF_MATERIALS
-#include "gltf_brdf.glsl"
-#endif
+#include "light.glsl"
 
 layout(std430, binding = TOFSIM_SSBO_DIRECT_VOLUME) buffer DirectVolume { float direct[]; };
 layout(std430, binding = TOFSIM_SSBO_OUTSIDE_AXIS) buffer OutsideAxis { float outside[]; };  // [2 * pixel]: before, [2 * pixel + 1]: after
@@ -44,21 +41,15 @@ void gatherSample(uint local, SurfaceSample g, inout float lostBefore, inout flo
   if (g.position.w == 0.0) return;
   vec3 x = g.position.xyz;
   vec3 n = g.normal;
-  vec3 albedo = g.albedo;
 
-  LightArrival arrival = arrivalAt(x, n);
+  LightArrival arrival = arrivalAt(g.vertex, x, n);
   float profile = arrival.profile, cosX = arrival.cosX, dLight = arrival.dLight;
   vec3 wLight = arrival.wLight;
   if (profile <= 0.0 || !visibleFromLight(x, cosX)) return;
 
-#ifdef GLTF_MATERIALS
-  vec2 metallicRoughness = g.metallicRoughness;
   vec3 wCamera = normalize(uCameraPosition_world - x);
-  vec3 radiance = gltfDirect(n, wLight, wCamera, albedo, metallicRoughness.x, metallicRoughness.y,
-                             uLightIntensity_W_per_sr, profile, cosX, dLight);
-#else
-  vec3 radiance = lambertianDirect(albedo, uLightIntensity_W_per_sr, profile, cosX, dLight);
-#endif
+  vec3 radiance = directRadiance(scatter(g.vertex, n, wLight, wCamera).f,
+                                 uLightIntensity_W_per_sr, profile, cosX, dLight);
   float dCamera = uCameraUnwarp != 0 ? 0.0 : length(x - uCameraPosition_world);
   float path_m = directPathLength(uIndexOfRefraction, dLight, dCamera);
 #ifdef PIXEL_FOOTPRINT

@@ -72,16 +72,6 @@ TOFSIM_PHYSICS_FN vec3 gltfBrdf(vec3 n, vec3 l, vec3 v, vec3 baseColor, float me
   return (1.0f - metallic) * dielectric + metallic * metal;
 }
 
-// Radiance a surface with the glTF BRDF at distance dLight from a point light
-// of `intensity` (W/sr) reflects towards the viewer: f(l, v) I profile cosX /
-// dLight^2, the counterpart of transient_physics.glsl's lambertianDirect.
-TOFSIM_PHYSICS_FN vec3 gltfDirect(vec3 n, vec3 l, vec3 v, vec3 baseColor, float metallic,
-                                  float roughness, vec3 intensity, float profile, float cosX,
-                                  float dLight) {
-  return gltfBrdf(n, l, v, baseColor, metallic, roughness) * intensity *
-         (profile * cosX / (dLight * dLight));
-}
-
 // The BRDF value a glossy VPL gives the light it sends toward x: f(l, v) of
 // the VPL's material for l = `incoming` (unit, toward where its light came
 // from) and v = `toX` (unit, VPL -> x), each channel clamped at clampPerSr
@@ -92,14 +82,6 @@ TOFSIM_PHYSICS_FN vec3 gltfVplBrdf(vec3 n, vec3 incoming, vec3 toX, vec3 baseCol
   vec3 f = gltfBrdf(n, incoming, toX, baseColor, metallic, roughness);
   if (clampPerSr > 0.0f) f = min(f, vec3(clampPerSr));
   return f;
-}
-
-// Radiance toward the camera at x from a glossy VPL that received `power`
-// (W, rgb): f_x (to the VPL, to the camera) * f_vpl (toward x) * power * g,
-// with g the geometry term cos cos / d^2 (clamped or not) and fCamera
-// carrying the sample's share of the pixel.
-TOFSIM_PHYSICS_FN vec3 gltfVplRadiance(vec3 fCamera, vec3 fVpl, vec3 power, float g) {
-  return fCamera * fVpl * power * g;
 }
 
 #endif  // TOFSIM_GLTF_BRDF_GLSL

@@ -11,10 +11,9 @@
 // sample: an order that does not depend on where the batches and dispatches
 // split the VPLs), makes the sum reproducible bit for bit whatever the batch
 // and segment sizes.
-// With GLTF_MATERIALS (render.materials: gltf) both ends of a contribution
-// carry the glTF BRDF (gltf_brdf.glsl): the VPL's toward x for the direction
-// its light arrived from (clamped at uVplBrdfClamp), and x's toward the
-// camera for the direction to the VPL.
+// Both ends of a contribution scatter (scatter_vertex.glsl): the VPL toward x
+// (vplScatterToward: 1 where its flux holds it), and x toward the camera for
+// the direction to the VPL (scatter()).
 layout(local_size_x = TOFSIM_WORK_GROUP_SIZE) in;
 
 #include "transient_physics.glsl"
@@ -29,10 +28,6 @@ uniform int uIsmResolution;
 #endif
 
 #include "surface_samples.glsl"
-#ifdef GLTF_MATERIALS
-#include "gltf_brdf.glsl"
-uniform float uVplBrdfClamp;  // 1/sr, <= 0: no clamping
-#endif
 
 layout(std430, binding = TOFSIM_SSBO_INDIRECT_VOLUME) buffer IndirectVolume { float indirect[]; };
 layout(std430, binding = TOFSIM_SSBO_OUTSIDE_AXIS) buffer OutsideAxis { float outside[]; };  // [2 * pixel]: before, [2 * pixel + 1]: after
@@ -86,14 +81,9 @@ struct Sample {
   bool lit;  // a surface was seen
   vec3 x;
   vec3 n;
-  vec3 brdf;          // albedo / pi, times the sample's weight with several samples
-#ifdef GLTF_MATERIALS
-  vec3 baseColor;     // the glTF BRDF's parameters at x
-  float metallic;
-  float roughness;
-  vec3 toCamera;      // unit, x -> camera
-  float weight;       // the sample's share of the pixel (1 with one point sample)
-#endif
+  ScatterVertex vertex;  // what x scatters
+  vec3 toCamera;         // unit, x -> camera
+  float weight;          // the sample's share of the pixel (1 with one point sample)
   float cameraPath;   // eta |x - c|, or 0 when unwarped
 #ifdef PIXEL_FOOTPRINT
   vec3 dxdu, dxdv;    // the surface's steps across the sample's footprint
@@ -107,20 +97,12 @@ Sample loadSample(ivec2 xy, int samples, int s) {
   o.lit = g.position.w != 0.0;
   o.x = g.position.xyz;
   o.n = g.normal;
-  o.brdf = g.albedo / PI;
-#if defined(PIXEL_FOOTPRINT) || PIXEL_SAMPLES > 1
-  o.brdf = o.brdf * g.weight;  // as the CPU's PixelSurface::brdf
-#endif
-#ifdef GLTF_MATERIALS
-  o.baseColor = g.albedo;
-  o.metallic = g.metallicRoughness.x;
-  o.roughness = g.metallicRoughness.y;
+  o.vertex = g.vertex;
   o.toCamera = normalize(uCameraPosition_world - o.x);
 #if defined(PIXEL_FOOTPRINT) || PIXEL_SAMPLES > 1
-  o.weight = g.weight;
+  o.weight = g.weight;  // as the CPU's PixelSurface::weight
 #else
   o.weight = 1.0;
-#endif
 #endif
   o.cameraPath = cameraPathLength(uCameraUnwarp != 0, uIndexOfRefraction,
                                   length(o.x - uCameraPosition_world));
@@ -144,14 +126,8 @@ void gatherVpl(uint local, Sample at, uint k, Vpl vpl, inout float lostBefore,
   float g = vplGeometryTerm(cosVpl, cosX, dist2, uGeometryClamp, at.x, at.n, vpl.positionPath.xyz,
                             vpl.patchU.xyz, vpl.patchV.xyz);
   if (!visible(uFirstVpl - uIsmFirstVpl + k, vpl, at.x, at.n, d, dist, iterations)) return;
-#ifdef GLTF_MATERIALS
-  vec3 fVpl = gltfVplBrdf(vpl.normal.xyz, vpl.incoming.xyz, d, vpl.material.rgb, vpl.incoming.w,
-                          vpl.material.w, uVplBrdfClamp);
-  vec3 fCamera = gltfBrdf(at.n, -d, at.toCamera, at.baseColor, at.metallic, at.roughness) * at.weight;
-  vec3 radiance = gltfVplRadiance(fCamera, fVpl, vpl.flux.rgb, g);
-#else
-  vec3 radiance = at.brdf * vpl.flux.rgb * g;
-#endif
+  vec3 fCamera = scatter(at.vertex, at.n, -d, at.toCamera).f * at.weight;
+  vec3 radiance = vplRadianceAt(vpl, fCamera, d, g);
   float path_m = vplPathLength(vpl.positionPath.w, uIndexOfRefraction, dist, at.cameraPath);
 #ifdef PIXEL_FOOTPRINT
   vec2 pixelSteps = pathStepsAcrossPixel(

@@ -16,9 +16,9 @@ uniform int uShadowResolution;
 layout(binding = TOFSIM_UNIT_SHADOW_MAP) uniform sampler2DArray uShadowMap;
 
 // transient_physics.glsl's lightArrival for this light.
-LightArrival arrivalAt(vec3 x, vec3 n) {
-  return lightArrival(x, n, uLightPosition_world, uLightProfile, uLightDirection_world,
-                      uSpotCosOuter, uSpotCosInner);
+LightArrival arrivalAt(ScatterVertex v, vec3 x, vec3 n) {
+  return vertexLightArrival(v, x, n, uLightPosition_world, uLightProfile, uLightDirection_world,
+                            uSpotCosOuter, uSpotCosInner);
 }
 
 int cubeFace(vec3 d) {

@@ -18,6 +18,8 @@
 #ifndef PIXEL_SAMPLES
 #define PIXEL_SAMPLES 1
 #endif
+
+#include "scatter_vertex.glsl"
 const int kSamplesPerPixel = PIXEL_SAMPLES * PIXEL_SAMPLES;
 
 layout(binding = TOFSIM_UNIT_G_POSITION) uniform sampler2D uGPosition;
@@ -48,12 +50,10 @@ ivec2 sampleTexel(ivec2 pixelXy, int s) {
 
 // One sample's G-buffer texels and what it stands for.
 struct SurfaceSample {
-  vec4 position;  // xyz world, w = 1 on a surface, 0 else
-  vec3 normal;    // unit, facing the camera
-  vec3 albedo;
-#ifdef GLTF_MATERIALS
-  vec2 metallicRoughness;
-#endif
+  vec4 position;         // xyz world, w = 1 on a surface, 0 else
+  vec3 normal;           // unit, facing the camera
+  ScatterVertex vertex;  // what it scatters: the G-buffer's albedo and
+                         // (GLTF_MATERIALS) metallic-roughness, of the model SCATTER_MODEL
   ivec2 pixel;      // the pixel's image position (a lens's steps are the pixel's own)
   float weight;     // share of the pixel: uSampleWeight, 1 for a whole-pixel sample
   bool wholePixel;  // its footprint is the whole pixel, not a sub-pixel (footprint_deposit.glsl)
@@ -78,10 +78,12 @@ SurfaceSample pixelSample(ivec2 xy, int samples, int s) {
   if (samples == 1) {
     o.position = texelFetch(uCentrePosition, xy, 0);
     o.normal = texelFetch(uCentreNormal, xy, 0).xyz;
-    o.albedo = texelFetch(uCentreAlbedo, xy, 0).rgb;
 #ifdef GLTF_MATERIALS
-    o.metallicRoughness = texelFetch(uCentreMetallicRoughness, xy, 0).rg;
+    vec2 mr = texelFetch(uCentreMetallicRoughness, xy, 0).rg;
+#else
+    vec2 mr = vec2(0.0, 1.0);
 #endif
+    o.vertex = scatterVertex(SCATTER_MODEL, texelFetch(uCentreAlbedo, xy, 0).rgb, mr.x, mr.y);
     o.weight = 1.0;
     o.wholePixel = true;
     return o;
@@ -90,10 +92,12 @@ SurfaceSample pixelSample(ivec2 xy, int samples, int s) {
   ivec2 texel = sampleTexel(xy, s);
   o.position = texelFetch(uGPosition, texel, 0);
   o.normal = texelFetch(uGNormal, texel, 0).xyz;
-  o.albedo = texelFetch(uGAlbedo, texel, 0).rgb;
 #ifdef GLTF_MATERIALS
-  o.metallicRoughness = texelFetch(uGMetallicRoughness, texel, 0).rg;
+  vec2 mr = texelFetch(uGMetallicRoughness, texel, 0).rg;
+#else
+  vec2 mr = vec2(0.0, 1.0);
 #endif
+  o.vertex = scatterVertex(SCATTER_MODEL, texelFetch(uGAlbedo, texel, 0).rgb, mr.x, mr.y);
   o.weight = uSampleWeight;
   // With N = 1 the one sample is the whole pixel, and uSampleStepX/Y are its
   // steps: either choice of footprint steps gives the same numbers.

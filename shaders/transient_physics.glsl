@@ -65,12 +65,27 @@ TOFSIM_PHYSICS_FN LightArrival lightArrival(vec3 x, vec3 n, vec3 lightPosition, 
   return a;
 }
 
-// Radiance a Lambertian surface of `albedo` at distance dLight from a point
-// light of `intensity` (W/sr) reflects towards any direction, with cosX the
-// cosine at the surface and `profile` the light's angular profile.
+// Radiance a vertex that scatters by f (1/sr: scatter_vertex.glsl's
+// scatter) at distance dLight from a point light of `intensity` (W/sr)
+// sends toward the viewer, with cosX the cosine at the vertex and `profile`
+// the light's angular profile.
+TOFSIM_PHYSICS_FN vec3 directRadiance(vec3 f, vec3 intensity, float profile, float cosX,
+                                      float dLight) {
+  return f * intensity * (profile * cosX / (dLight * dLight));
+}
+
+// directRadiance of a Lambertian surface of `albedo` (f = albedo / pi).
 TOFSIM_PHYSICS_FN vec3 lambertianDirect(vec3 albedo, vec3 intensity, float profile, float cosX,
                                         float dLight) {
-  return albedo / PI * intensity * (profile * cosX / (dLight * dLight));
+  return directRadiance(albedo / PI, intensity, profile, cosX, dLight);
+}
+
+// Radiance toward the camera at x from a VPL that sends its flux (W/sr, or
+// W with vplScatter's factor fVpl, 1/sr) toward x, with fCamera what x
+// scatters toward the camera (scatter()'s f times the sample's share of the
+// pixel) and g the geometry term cos cos / d^2 (clamped or not).
+TOFSIM_PHYSICS_FN vec3 vplRadiance(vec3 fCamera, vec3 fVpl, vec3 flux, float g) {
+  return fCamera * fVpl * flux * g;
 }
 
 // Optical path of the direct light: light -> x -> camera, times eta. dCamera

@@ -79,7 +79,7 @@ void expectSameGBuffer(const capture::RenderJob& job, int32_t samples = 1) {
     for (int k = 0; k < 3; ++k) {
       EXPECT_NEAR(cpu.position[i][k], position[4 * t + k], tol) << "sample " << i;
       EXPECT_NEAR(cpu.normal[i][k], normal[4 * t + k], 1e-5f) << "sample " << i;
-      EXPECT_NEAR(cpu.albedo[i][k], albedo[4 * t + k], 1e-5f) << "sample " << i;
+      EXPECT_NEAR(cpu.vertex[i].color[k], albedo[4 * t + k], 1e-5f) << "sample " << i;
     }
   }
   EXPECT_GT(surfaces, pixels / 2);
@@ -102,7 +102,7 @@ void expectSameVpls(const capture::RenderJob& job) {
   const capture::IndirectSettings& s = job.settings.indirect;
   const auto gl = render::generateVpls(gpuScene, job.light, s.rsm_resolution, s.rsm_edge_samples,
                                        job.settings.time.index_of_refraction, lo, hi,
-                                       job.settings.materials == capture::MaterialModel::Gltf);
+                                       ir::vertexModelOf(job.settings.materials));
   CpuBackend backend({2, true});
   const test::BackendScene prepared(backend, *job.scene);
   backend.prepareSurfaces(job);
@@ -115,12 +115,16 @@ void expectSameVpls(const capture::RenderJob& job) {
       EXPECT_NEAR(cpu[k].positionPath[i], gl[k].positionPath[i], tol) << "VPL " << k;
       EXPECT_NEAR(cpu[k].normal[i], gl[k].normal[i], 1e-5f) << "VPL " << k;
       EXPECT_NEAR(cpu[k].flux[i], gl[k].flux[i], 2e-4f * gl[k].flux[i]) << "VPL " << k;
-      // render.materials: gltf: the direction to the light and the material (0 otherwise).
+      // render.materials: gltf: the direction to the light (0 otherwise).
       EXPECT_NEAR(cpu[k].incoming[i], gl[k].incoming[i], 1e-5f) << "VPL " << k;
-      EXPECT_NEAR(cpu[k].material[i], gl[k].material[i], 1e-5f) << "VPL " << k;
     }
-    EXPECT_NEAR(cpu[k].incoming.w, gl[k].incoming.w, 1e-6f) << "VPL " << k;
-    EXPECT_NEAR(cpu[k].material.w, gl[k].material.w, 1e-6f) << "VPL " << k;
+    // The vertex: base colour and metallic, roughness, model.
+    for (int i = 0; i < 4; ++i) {
+      EXPECT_NEAR(cpu[k].vertex.color[i], gl[k].vertex.color[i], 1e-5f) << "VPL " << k;
+    }
+    EXPECT_NEAR(cpu[k].vertex.roughness, gl[k].vertex.roughness, 1e-6f) << "VPL " << k;
+    EXPECT_EQ(cpu[k].vertex.model, gl[k].vertex.model) << "VPL " << k;
+    EXPECT_EQ(cpu[k].incoming.w, 0.0f) << "VPL " << k;
     EXPECT_NEAR(cpu[k].positionPath.w, gl[k].positionPath.w, tol) << "VPL " << k;
   }
 }

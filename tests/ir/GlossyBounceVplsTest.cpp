@@ -44,11 +44,12 @@ TEST(GlossyBounceVplsTest, ChildrenCarryTheParentsPowerTimesItsDirectionalAlbedo
   const rays::RayScene scene(box, 1);
   const glm::vec3 incoming = glm::normalize(glm::vec3(0.5f, 1.0f, 0.2f));
   Vpl parent{glm::vec4(0.2f, -1.0f, 0.1f, 2.0f), glm::vec4(0, 1, 0, 0),
-             glm::vec4(1.0f, 0.5f, 0.25f, 0.0f)};       // the power it received, W
-  parent.incoming = glm::vec4(incoming, 1.0f);          // a metal...
-  parent.material = glm::vec4(0.9f, 0.7f, 0.5f, 0.4f);  // ... of roughness 0.4
+             glm::vec4(1.0f, 0.5f, 0.25f, 0.0f)};  // the power it received, W
+  parent.incoming = glm::vec4(incoming, 0.0f);
+  // A metal of roughness 0.4.
+  parent.vertex = physics::scatterVertex(physics::VERTEX_GLTF, {0.9f, 0.7f, 0.5f}, 1.0f, 0.4f);
   const std::size_t count = 20000;
-  const BounceMaterials gltf{true, 0.0f};
+  const BounceMaterials gltf{physics::VERTEX_GLTF, 0.0f};
   const std::vector<Vpl> children = traceBounce(scene, {parent}, count, 2, 7, 1.0, {}, gltf);
   // Closed: no ray escapes; the GGX lobe's directions below the surface end
   // their paths (the light the surface does not reflect), a few per cent here.
@@ -59,8 +60,10 @@ TEST(GlossyBounceVplsTest, ChildrenCarryTheParentsPowerTimesItsDirectionalAlbedo
     sum += glm::dvec3(glm::vec3(c.flux));
     const glm::vec3 toParent = glm::normalize(glm::vec3(parent.positionPath - c.positionPath));
     for (int i = 0; i < 3; ++i) EXPECT_NEAR(c.incoming[i], toParent[i], 1e-4f);
-    EXPECT_EQ(c.incoming.w, 0.3f);
-    EXPECT_EQ(glm::vec4(c.material), glm::vec4(0.6f, 0.5f, 0.4f, 0.5f));
+    EXPECT_EQ(c.incoming.w, 0.0f);
+    EXPECT_EQ(c.vertex.color, glm::vec4(0.6f, 0.5f, 0.4f, 0.3f));
+    EXPECT_EQ(c.vertex.roughness, 0.5f);
+    EXPECT_EQ(c.vertex.model, physics::VERTEX_GLTF);
   }
   const glm::dvec3 albedo =
       directionalAlbedo(glm::dvec3(incoming), glm::dvec3(0.9, 0.7, 0.5), 1.0, 0.4);
@@ -70,8 +73,8 @@ TEST(GlossyBounceVplsTest, ChildrenCarryTheParentsPowerTimesItsDirectionalAlbedo
     EXPECT_NEAR(sum[c] / parent.flux[c], albedo[c], 0.04 * albedo[c]) << "channel " << c;
   }
   // The same directions (same seed) with the clamp: no child gains light.
-  const std::vector<Vpl> clamped =
-      traceBounce(scene, {parent}, count, 2, 7, 1.0, {}, BounceMaterials{true, 0.5f});
+  const std::vector<Vpl> clamped = traceBounce(scene, {parent}, count, 2, 7, 1.0, {},
+                                               BounceMaterials{physics::VERTEX_GLTF, 0.5f});
   ASSERT_EQ(clamped.size(), children.size());
   double removed = 0.0;
   for (std::size_t k = 0; k < clamped.size(); ++k) {

@@ -64,8 +64,9 @@ struct OneVplPlane : test::PlaneJob {
     vpl.positionPath = glm::vec4(p, 1.0f);
     vpl.normal = glm::vec4(n, 0.0f);
     vpl.flux = glm::vec4(0.8f, 0.5f, 0.3f, 0.0f);  // the power it received, W
-    vpl.incoming = glm::vec4(incoming, c.vplMetallic);
-    vpl.material = glm::vec4(0.9f, 0.6f, 0.3f, c.vplRoughness);
+    vpl.incoming = glm::vec4(incoming, 0.0f);
+    vpl.vertex = physics::scatterVertex(physics::VERTEX_GLTF, {0.9f, 0.6f, 0.3f}, c.vplMetallic,
+                                        c.vplRoughness);
   }
 };
 
@@ -103,7 +104,7 @@ TEST_P(GlossyVplGLTest, OneVplOnAPlaneIsBothBrdfsTimesPowerAndGeometryTerm) {
     const auto backend = makeBackend(GetParam());
     const std::vector<double> steady = gatherOne(*backend, s);
     const dvec3 eye(s.job.camera().position_world), x0(s.vpl.positionPath), nVpl(s.vpl.normal);
-    const dvec3 incoming(s.vpl.incoming), vplBase(s.vpl.material), power(s.vpl.flux);
+    const dvec3 incoming(s.vpl.incoming), vplBase(glm::vec3(s.vpl.vertex.color)), power(s.vpl.flux);
     const dvec3 planeBase(s.scene.materials[0].albedo), n(0, 0, 1);
     int failures = 0;
     double peak = 0.0;
@@ -167,12 +168,14 @@ TEST_P(GlossyVplGLTest, RsmVplsRecordTheDirectionToTheLightAndTheMaterial) {
       EXPECT_NEAR(g.incoming[i], toLight[i], 1e-5f) << "VPL " << k;
       const float power = lambertian[k].flux[i] * 3.14159265f / albedo[i];
       EXPECT_NEAR(g.flux[i], power, 1e-5f * power) << "VPL " << k;
-      EXPECT_EQ(g.material[i], albedo[i]) << "VPL " << k;
+      EXPECT_EQ(g.vertex.color[i], albedo[i]) << "VPL " << k;
       EXPECT_EQ(g.positionPath[i], lambertian[k].positionPath[i]) << "VPL " << k;
     }
-    EXPECT_EQ(g.incoming.w, 0.25f);
-    EXPECT_EQ(g.material.w, 0.4f);
+    EXPECT_EQ(g.vertex.color.w, 0.25f);
+    EXPECT_EQ(g.vertex.roughness, 0.4f);
+    EXPECT_EQ(g.vertex.model, physics::VERTEX_GLTF);
     EXPECT_EQ(lambertian[k].incoming, glm::vec4(0.0f));
+    EXPECT_EQ(lambertian[k].vertex.model, physics::VERTEX_LAMBERTIAN);
   }
 }
 

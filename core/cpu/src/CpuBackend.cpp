@@ -19,7 +19,7 @@
 #include "tofsim/capture/ThinLens.h"
 #include "tofsim/ir/SurfaceImage.h"
 #include "tofsim/physics/FootprintBuffer.h"
-#include "tofsim/physics/GltfBrdf.h"
+#include "tofsim/physics/ScatterVertex.h"
 #include "tofsim/physics/TemporalResponse.h"
 #include "tofsim/physics/TransientPhysics.h"
 #include "tofsim/rays/RayScene.h"
@@ -69,30 +69,47 @@ ir::CentreSurfaces CpuBackend::prepareSurfaces(const capture::RenderJob& job) {
   // (setSampledPixels), so only the edge pixels' rays are traced.
   // A defocused camera's centres are its chief rays (the aperture's centre),
   // every gathered sample one of its aperture points'.
+  if (givenSamples_) return takeGivenSurfaces(job);
   const int32_t samples = job.settings.pixel_samples;
   apertureSamples_ = capture::apertureSamplesOf(job.imager);
-  SurfaceImage centres = traceSurfaces(*scene_, job.imager, threads_, 1);
+  const int model = ir::vertexModelOf(job.settings.materials);
+  SurfaceImage centres = traceSurfaces(*scene_, job.imager, threads_, 1, 1, model);
   ir::CentreSurfaces out = ir::centresOf(centres);
   subSamplesPending_ = samples > 1 && job.settings.adaptive_pixel_samples;
   if (subSamplesPending_ || (samples == 1 && apertureSamples_ == 1)) {
     surfaces_ = std::make_unique<SurfaceImage>(std::move(centres));
   } else {
     surfaces_ = std::make_unique<SurfaceImage>(
-        traceSurfaces(*scene_, job.imager, threads_, samples, apertureSamples_));
+        traceSurfaces(*scene_, job.imager, threads_, samples, apertureSamples_, model));
   }
   return out;
 }
 
-void CpuBackend::setSurfaces(std::unique_ptr<SurfaceImage> /*samples*/,
-                             std::unique_ptr<SurfaceImage> /*centres*/) {
-  TOFSIM_CHECK_MSG(false, "the CPU backend traces its own surface samples (tracesRays)");
+void CpuBackend::setSurfaces(std::unique_ptr<SurfaceImage> samples,
+                             std::unique_ptr<SurfaceImage> centres) {
+  TOFSIM_CHECK(samples != nullptr);
+  givenSamples_ = std::move(samples);
+  givenCentres_ = std::move(centres);
+}
+
+ir::CentreSurfaces CpuBackend::takeGivenSurfaces(const capture::RenderJob& job) {
+  TOFSIM_CHECK_MSG(!(job.settings.pixel_samples > 1 && job.settings.adaptive_pixel_samples),
+                   "given samples take no adaptive pixel samples");
+  TOFSIM_CHECK_EQ(givenSamples_->apertureSamples, 1);
+  apertureSamples_ = 1;
+  subSamplesPending_ = false;
+  ir::CentreSurfaces out = ir::centresOf(givenCentres_ ? *givenCentres_ : *givenSamples_);
+  surfaces_ = std::move(givenSamples_);
+  givenCentres_.reset();
+  return out;
 }
 
 void CpuBackend::setSampledPixels(const std::vector<uint8_t>& sampled) {
   TOFSIM_CHECK_MSG(subSamplesPending_,
                    "setSampledPixels needs adaptive_pixel_samples with pixel_samples > 1");
-  surfaces_ = std::make_unique<SurfaceImage>(traceSampledPixels(
-      *scene_, job_.imager, threads_, job_.settings.pixel_samples, sampled, apertureSamples_));
+  surfaces_ = std::make_unique<SurfaceImage>(
+      traceSampledPixels(*scene_, job_.imager, threads_, job_.settings.pixel_samples, sampled,
+                         apertureSamples_, ir::vertexModelOf(job_.settings.materials)));
   subSamplesPending_ = false;
 }
 
@@ -100,7 +117,8 @@ void CpuBackend::finishSurfaces() {
   // No mask came (IrBackend: every pixel then takes its N x N samples).
   if (!subSamplesPending_) return;
   surfaces_ = std::make_unique<SurfaceImage>(
-      traceSurfaces(*scene_, job_.imager, threads_, job_.settings.pixel_samples, apertureSamples_));
+      traceSurfaces(*scene_, job_.imager, threads_, job_.settings.pixel_samples, apertureSamples_,
+                    ir::vertexModelOf(job_.settings.materials)));
   subSamplesPending_ = false;
 }
 
@@ -116,13 +134,12 @@ std::vector<ir::Vpl> CpuBackend::generateVpls(const capture::RenderJob& job) {
   if (!s.enabled) return {};
   return traceRsmVpls(*scene_, job.light, s.rsm_resolution, s.rsm_edge_samples,
                       job.settings.time.index_of_refraction,
-                      job.settings.materials == capture::MaterialModel::Gltf, threads_,
+                      ir::vertexModelOf(job.settings.materials), threads_,
                       litBounds_->of(job.light));
 }
 
 void CpuBackend::setVpls(const std::vector<ir::Vpl>& vpls) {
-  vpls_ =
-      std::make_unique<VplArrays>(vpls, job_.settings.materials == capture::MaterialModel::Gltf);
+  vpls_ = std::make_unique<VplArrays>(vpls);
   ism_.reset();
   if (indirectVisibility_ && job_.settings.indirect.visibility == capture::Visibility::Ism &&
       !vpls.empty()) {
@@ -132,10 +149,10 @@ void CpuBackend::setVpls(const std::vector<ir::Vpl>& vpls) {
 
 std::size_t CpuBackend::fixedBytes() const {
   std::size_t bytes =
-      surfaces_
-          ? surfaces_->size() * (3 * sizeof(glm::vec4) + sizeof(glm::vec3) + sizeof(glm::vec2)) +
-                surfaces_->aperture.size() * sizeof(glm::vec4)
-          : 0;
+      surfaces_ ? surfaces_->size() * (2 * sizeof(glm::vec4) + sizeof(physics::ScatterVertex) +
+                                       sizeof(glm::vec3)) +
+                      surfaces_->aperture.size() * sizeof(glm::vec4)
+                : 0;
   // Embree's BVH and vertex copies: about 100 bytes per triangle (measured order).
   if (job_.scene != nullptr) bytes += job_.scene->triangleCount() * 100;
   if (vpls_) bytes += vpls_->bytes();
@@ -190,25 +207,33 @@ void CpuBackend::mergeSegmentSamples(std::size_t count) {
   mergedFirst_.clear();
   const capture::RenderSettings& s = job_.settings;
   // Not with aperture samples (they see through different points of the
-  // lens) nor glTF materials (their BRDFs do not add up as albedos do).
-  if (!s.indirect.merge_pixel_samples || s.pixel_samples == 1 || apertureSamples_ != 1 ||
-      s.materials == capture::MaterialModel::Gltf) {
-    return;
-  }
+  // lens).
+  if (!s.indirect.merge_pixel_samples || s.pixel_samples == 1 || apertureSamples_ != 1) return;
   mergedFirst_.push_back(0);
   for (std::size_t pixel = 0; pixel < count; ++pixel) {
     const std::size_t first = segmentFirstSample_[pixel];
     const std::size_t samples = segmentFirstSample_[pixel + 1] - first;
     const int n = surfaces_->side[firstPixel_ + pixel];
     TOFSIM_CHECK_EQ(samples, static_cast<std::size_t>(n) * n);
-    mergePixelSamples(&segmentSurfaces_[first], &segmentLit_[first], n, mergedSurfaces_);
+    // Only where every scatter is constant: a glTF BRDF's does not add up as
+    // albedos do. The others' lit samples stay as they are, in order.
+    bool constant = true;
+    for (std::size_t i = first; i < first + samples; ++i) {
+      constant = constant && physics::scatterIsConstant(segmentSurfaces_[i].vertex);
+    }
+    if (constant) {
+      mergePixelSamples(&segmentSurfaces_[first], &segmentLit_[first], n, mergedSurfaces_);
+    } else {
+      for (std::size_t i = first; i < first + samples; ++i) {
+        if (segmentLit_[i]) mergedSurfaces_.push_back(segmentSurfaces_[i]);
+      }
+    }
     mergedFirst_.push_back(mergedSurfaces_.size());
   }
 }
 
 void CpuBackend::fillSurface(std::size_t i, float weight, const capture::PixelSteps& steps,
                              float eta) {
-  const capture::RenderSettings& s = job_.settings;
   const std::size_t p = firstSample_ + i;
   // The camera leg ends on the sample's aperture point (the viewpoint without
   // one), where the lens's path to the pixel starts.
@@ -219,14 +244,12 @@ void CpuBackend::fillSurface(std::size_t i, float weight, const capture::PixelSt
   surface.camera = viewpoint;
   surface.lensPath_m = surfaces_->lensPathOf(p);
   surface.n = glm::vec3(surfaces_->normal[p]);
-  surface.brdf = glm::vec3(surfaces_->albedo[p]) / physics::PI * weight;
-  if (s.materials == capture::MaterialModel::Gltf) {
-    surface.baseColor = glm::vec3(surfaces_->albedo[p]);
-    surface.metallic = surfaces_->metallicRoughness[p].x;
-    surface.roughness = surfaces_->metallicRoughness[p].y;
-    surface.toCamera = glm::normalize(viewpoint - surface.x);
-    surface.weight = weight;
-  }
+  surface.vertex = surfaces_->vertex[p];
+  surface.toCamera = glm::normalize(viewpoint - surface.x);
+  surface.weight = weight;
+  // The constant scatter's f (the directions do not matter to it).
+  surface.brdf =
+      physics::scatter(surface.vertex, surface.n, surface.toCamera, surface.toCamera).f * weight;
   surface.cameraPath_m = physics::cameraPathLength(
       dropLastLeg_, eta, glm::length(surface.x - viewpoint) + surface.lensPath_m);
   const capture::FootprintSteps footprint = steps.at(surface.x, surface.n, viewpoint);
@@ -258,7 +281,6 @@ CpuBackend::IndirectConstants CpuBackend::indirectConstants() const {
   c.footprint = s.pixel_footprint;
   c.vplFootprint = s.pixel_footprint && s.indirect.vpl_footprint;
   c.cameraUnwarp = dropLastLeg_;
-  c.gltf = s.materials == capture::MaterialModel::Gltf;
   c.vplBrdfClamp = static_cast<float>(s.indirect.vpl_brdf_clamp_per_sr);
   c.bins = s.time.bins;
   ic.exact = indirectVisibility_ && s.indirect.visibility == capture::Visibility::Exact;

@@ -11,7 +11,7 @@
 #include "tofsim/cpu/CpuBackend.h"
 #include "tofsim/ir/SurfaceImage.h"
 #include "tofsim/physics/FootprintBuffer.h"
-#include "tofsim/physics/GltfBrdf.h"
+#include "tofsim/physics/ScatterVertex.h"
 #include "tofsim/physics/TransientPhysics.h"
 #include "tofsim/rays/RayScene.h"
 #include "tofsim/util/Error.h"
@@ -33,7 +33,6 @@ struct CpuBackend::DirectConstants {
   float width_m = 1.0f;  ///< of a bin, as optical path
   float eta = 1.0f;      ///< index of refraction
   int bins = 0;
-  bool gltf = false;       ///< render.materials: gltf
   bool footprint = false;  ///< render.pixel_footprint
 };
 
@@ -53,7 +52,6 @@ CpuBackend::DirectConstants CpuBackend::directConstants() const {
   c.width_m = static_cast<float>(s.time.bin_width_m());
   c.eta = static_cast<float>(s.time.index_of_refraction);
   c.bins = s.time.bins;
-  c.gltf = s.materials == capture::MaterialModel::Gltf;
   c.footprint = s.pixel_footprint;
   return c;
 }
@@ -68,8 +66,9 @@ CpuBackend::DirectConstants CpuBackend::directConstants() const {
   const glm::vec3 x = surface.x, n = surface.n;
   // direct_gather.comp's steps: how the light arrives (shared), whether
   // it is visible (here a ray, there the shadow map), what x reflects.
-  const physics::LightArrival arrival = physics::lightArrival(
-      x, n, c.light_world, c.profile.kind, c.profile.axis, c.profile.cosOuter, c.profile.cosInner);
+  const physics::LightArrival arrival =
+      physics::vertexLightArrival(surface.vertex, x, n, c.light_world, c.profile.kind,
+                                  c.profile.axis, c.profile.cosOuter, c.profile.cosInner);
   const float profile = arrival.profile, cosX = arrival.cosX, dLight = arrival.dLight;
   const glm::vec3 wLight = arrival.wLight;
   if (profile <= 0.0f) return false;
@@ -77,15 +76,8 @@ CpuBackend::DirectConstants CpuBackend::directConstants() const {
   const glm::vec3 g = surfaces_->geometric[p];
   const glm::vec3 offset = (glm::dot(g, toLight) < 0.0f ? -g : g) * scene_->epsilon_m();
   if (scene_->occluded(x + offset, c.light_world)) return false;
-  const glm::vec3 albedo(surfaces_->albedo[p]);
-  if (c.gltf) {
-    const glm::vec2 mr = surfaces_->metallicRoughness[p];
-    const glm::vec3 wCamera = glm::normalize(surface.camera - x);
-    out.radiance = physics::gltfDirect(n, wLight, wCamera, albedo, mr.x, mr.y, c.intensity_W_per_sr,
-                                       profile, cosX, dLight);
-  } else {
-    out.radiance = physics::lambertianDirect(albedo, c.intensity_W_per_sr, profile, cosX, dLight);
-  }
+  const glm::vec3 f = physics::scatter(surface.vertex, n, wLight, surface.toCamera).f;
+  out.radiance = physics::directRadiance(f, c.intensity_W_per_sr, profile, cosX, dLight);
   const float dCamera = dropLastLeg_ ? 0.0f : glm::length(x - surface.camera) + surface.lensPath_m;
   out.path_m = physics::directPathLength(c.eta, dLight, dCamera);
   return true;

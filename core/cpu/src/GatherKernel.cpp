@@ -3,7 +3,6 @@
 #include <cmath>
 
 #include "tofsim/physics/FootprintKernel.h"
-#include "tofsim/physics/GltfBrdf.h"
 #include "tofsim/physics/TransientPhysics.h"
 #include "tofsim/physics/VplNearField.h"
 
@@ -65,11 +64,13 @@ __attribute__((target_clones("avx2", "default"))) void vplKernels(const PixelSur
   }
 }
 
-// render.materials: gltf: the block's radiance with the glTF BRDF at both
-// ends, as indirect_gather.comp's GLTF_MATERIALS, from the directions and
-// distances vplTerms left in `terms` (lanes that light nothing are not read).
-void glossyRadiance(const PixelSurface& s, const VplArrays& v, std::size_t first, std::size_t n,
-                    const GatherConstants& c, VplTerms& terms) {
+// The block's radiance where x's scatter depends on the directions or the
+// VPLs scatter what they send (a glTF BRDF at either end), contribution by
+// contribution as indirect_gather.comp computes every one, from the
+// directions and distances vplTerms left in `terms` (lanes that light
+// nothing are not read).
+void scatteredRadiance(const PixelSurface& s, const VplArrays& v, std::size_t first, std::size_t n,
+                       const GatherConstants& c, VplTerms& terms) {
   for (std::size_t i = 0; i < n; ++i) {
     if (terms.bin[i] == kNoLight) continue;
     const std::size_t k = first + i;
@@ -81,13 +82,10 @@ void glossyRadiance(const PixelSurface& s, const VplArrays& v, std::size_t first
         glm::dot(vplN, d), -glm::dot(s.n, d), dist2, c.geometryClamp, s.x, s.n,
         glm::vec3(v.px[k], v.py[k], v.pz[k]), glm::vec3(v.ux[k], v.uy[k], v.uz[k]),
         glm::vec3(v.vx[k], v.vy[k], v.vz[k]));
-    const glm::vec3 fVpl = physics::gltfVplBrdf(vplN, glm::vec3(v.ix[k], v.iy[k], v.iz[k]), d,
-                                                glm::vec3(v.br[k], v.bg[k], v.bb[k]), v.metallic[k],
-                                                v.roughness[k], c.vplBrdfClamp);
-    const glm::vec3 fCamera =
-        physics::gltfBrdf(s.n, -d, s.toCamera, s.baseColor, s.metallic, s.roughness) * s.weight;
+    const glm::vec3 fVpl = v.scatterToward(k, d, c.vplBrdfClamp);
+    const glm::vec3 fCamera = physics::scatter(s.vertex, s.n, -d, s.toCamera).f * s.weight;
     const glm::vec3 radiance =
-        physics::gltfVplRadiance(fCamera, fVpl, glm::vec3(v.fr[k], v.fg[k], v.fb[k]), g);
+        physics::vplRadiance(fCamera, fVpl, glm::vec3(v.fr[k], v.fg[k], v.fb[k]), g);
     terms.r[i] = radiance.r, terms.g[i] = radiance.g, terms.b[i] = radiance.b;
   }
 }
@@ -212,8 +210,8 @@ __attribute__((target_clones("avx2", "default"))) void vplTerms(const PixelSurfa
     terms.nearField[i] = near;
     anyNear |= near;
   }
-  if (c.gltf) {
-    glossyRadiance(s, v, first, n, c, terms);
+  if (v.scattering || !physics::scatterIsConstant(s.vertex)) {
+    scatteredRadiance(s, v, first, n, c, terms);
   } else if (anyNear) {
     nearFieldRadiance(s, v, first, n, c, terms);
   }

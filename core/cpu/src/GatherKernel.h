@@ -16,6 +16,7 @@
 
 #include "VplArrays.h"
 #include "tofsim/physics/FootprintKernel.h"
+#include "tofsim/physics/ScatterVertex.h"
 
 namespace tofsim::cpu {
 
@@ -25,21 +26,21 @@ constexpr int kFootprintDirectBins = 16;  ///< = FOOTPRINT_DIRECT_BINS (checked 
 
 /// The camera G-buffer of one pixel, as the gather needs it.
 struct PixelSurface {
-  glm::vec3 x{0.0f};          ///< world position, m
-  glm::vec3 n{0.0f};          ///< unit normal facing the camera
-  glm::vec3 brdf{0.0f};       ///< albedo / pi, times the sample's weight 1 / N^2
+  glm::vec3 x{0.0f};  ///< world position, m
+  glm::vec3 n{0.0f};  ///< unit normal facing the camera (0 for a medium point)
+  /// Where the vertex's scatter is constant (physics::scatterIsConstant: a
+  /// Lambertian surface, albedo / pi), its f times the sample's weight
+  /// 1 / N^2: the factor the vectorised pass multiplies by.
+  glm::vec3 brdf{0.0f};
   float cameraPath_m = 0.0f;  ///< eta * (|x - c| + lensPath_m), or 0 when unwarped
   /// c: where the camera leg ends, the viewpoint or the sample's aperture point.
   glm::vec3 camera{0.0f};
   float lensPath_m = 0.0f;  ///< a thin lens's path from c on (SurfaceImage::lensPathOf)
   glm::vec3 dxdu{0.0f};     ///< x's steps across the (sub-)pixel (surfaceStepAcrossPixel)
   glm::vec3 dxdv{0.0f};
-  // render.materials: gltf: the glTF BRDF's parameters at x.
-  glm::vec3 baseColor{0.0f};
-  float metallic = 0.0f;
-  float roughness = 1.0f;
-  glm::vec3 toCamera{0.0f};  ///< unit, x -> camera
-  float weight = 1.0f;       ///< the sample's share of the pixel, 1 / N^2
+  physics::ScatterVertex vertex{};  ///< what x scatters (physics::scatter)
+  glm::vec3 toCamera{0.0f};         ///< unit, x -> camera
+  float weight = 1.0f;              ///< the sample's share of the pixel, 1 / N^2
 };
 
 /// What the time axis and the job fix for every contribution.
@@ -51,8 +52,7 @@ struct GatherConstants {
   bool footprint = false;      ///< compute the footprint kernels (render.pixel_footprint)
   bool vplFootprint = false;   ///< include the VPL patch's widths (render.indirect.vpl_footprint)
   bool cameraUnwarp = false;
-  bool gltf = false;          ///< render.materials: gltf (VplArrays::glossy)
-  float vplBrdfClamp = 0.0f;  ///< 1/sr, <= 0: no clamp
+  float vplBrdfClamp = 0.0f;  ///< 1/sr, <= 0: no clamp (physics::vplScatter)
   int32_t bins = 0;           ///< of the time axis
 };
 
@@ -93,8 +93,9 @@ inline NarrowShape narrowShapeOf(const glm::vec3& kernel) {
           1.0f / wide};
 }
 
-/// Fills terms[0, n) for VPLs [first, first + n), n <= kVplBlock; with
-/// c.gltf the radiance carries the glTF BRDF at both ends (gltfVplRadiance).
+/// Fills terms[0, n) for VPLs [first, first + n), n <= kVplBlock: the
+/// radiance scatter()'s f at x (per contribution where it is not constant)
+/// times what the VPL sends (physics::vplRadiance).
 void vplTerms(const PixelSurface& s, const VplArrays& v, std::size_t first, std::size_t n,
               const GatherConstants& c, VplTerms& terms);
 

@@ -5,6 +5,7 @@
 
 #include "LitBounds.h"
 #include "ParallelFor.h"
+#include "tofsim/ir/HitVertex.h"
 #include "tofsim/ir/RsmEdgeTexels.h"
 #include "tofsim/ir/RsmTexels.h"
 
@@ -16,7 +17,7 @@ namespace {
 // nothing when the texel sees no lit surface: a ray where the GL rasterises.
 std::optional<ir::Vpl> texelVpl(const rays::RayScene& scene, const capture::Light& light,
                                 const ir::RsmView& v, int resolution, int x, int y, double eta,
-                                bool gltf, const std::optional<scene::Bounds>& lit) {
+                                int vertexModel, const std::optional<scene::Bounds>& lit) {
   const glm::vec3 direction = ir::rsmTexelDirection(v, resolution, x, y);
   // A Lambertian light's side views look half behind it: no ray there.
   if (light.type == capture::Light::Type::Lambertian && light.angularProfile(direction) <= 0.0f) {
@@ -25,20 +26,19 @@ std::optional<ir::Vpl> texelVpl(const rays::RayScene& scene, const capture::Ligh
   if (lit && !rayMeetsBox(light.position_world, direction, *lit)) return std::nullopt;
   const auto hit = scene.intersect(light.position_world, direction);
   if (!hit) return std::nullopt;
-  return ir::rsmTexelVpl(
-      light, v, resolution, x, y,
-      {hit->position_world, hit->normal_world, hit->albedo, hit->metallic, hit->roughness}, eta,
-      gltf);
+  return ir::rsmTexelVpl(light, v, resolution, x, y,
+                         {hit->position_world, hit->normal_world, ir::hitVertex(*hit, vertexModel)},
+                         eta);
 }
 
 }  // namespace
 
 std::vector<ir::Vpl> traceRsmVpls(const rays::RayScene& scene, const capture::Light& light,
                                   int resolution, int edgeSamples, double indexOfRefraction,
-                                  bool gltf, int threads,
+                                  int vertexModel, int threads,
                                   const std::optional<scene::Bounds>& lit) {
   const auto trace = [&](const ir::RsmView& view, int side, int x, int y) {
-    return texelVpl(scene, light, view, side, x, y, indexOfRefraction, gltf, lit);
+    return texelVpl(scene, light, view, side, x, y, indexOfRefraction, vertexModel, lit);
   };
   std::vector<ir::Vpl> vpls;
   for (const ir::RsmView& view : ir::rsmViews(light)) {

@@ -7,7 +7,7 @@
 // differ only where a triangle edge crosses a texel centre (the rasterizer's
 // tie rule) and in float rounding of the hit point. Unlike the GL, surfaces
 // closer to the light than its near plane (1e-4 of the scene's far distance)
-// are not clipped. `gltf`: glossy VPLs (ir::rsmTexelVpl). `lit`: texels whose
+// are not clipped. `vertexModel`: the surfaces' (ir::rsmTexelVpl). `lit`: texels whose
 // ray misses this box trace no ray (LitBounds.h). `edgeSamples`
 // (render.indirect.rsm_edge_samples): the texels at edges from their
 // sub-texels' rays (ir::rsmViewVpls).
@@ -23,7 +23,7 @@ namespace tofsim::cpu {
 
 std::vector<ir::Vpl> traceRsmVpls(const rays::RayScene& scene, const capture::Light& light,
                                   int rsmResolution, int edgeSamples, double indexOfRefraction,
-                                  bool gltf, int threads,
+                                  int vertexModel, int threads,
                                   const std::optional<scene::Bounds>& lit = std::nullopt);
 
 }  // namespace tofsim::cpu

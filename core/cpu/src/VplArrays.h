@@ -1,13 +1,16 @@
 #pragma once
 // VPLs as structure-of-arrays, so the gather's inner loop reads each quantity
-// of consecutive VPLs from consecutive floats (SIMD loads, no gathers). The
-// glossy VPL's direction and material (render.materials: gltf) are held only
-// when asked for.
+// of consecutive VPLs from consecutive floats (SIMD loads, no gathers): one
+// array per float of ir::Vpl that the gathers read. The direction a VPL's
+// light came from and its vertex (ir::Vpl::incoming, ::vertex) are held only
+// where some VPL's scatter is not in its flux (physics::vplFluxHoldsScatter:
+// all of them are for Lambertian VPLs), which `scattering` says.
 
 #include <cstddef>
 #include <vector>
 
 #include "tofsim/ir/IrBackend.h"
+#include "tofsim/physics/ScatterVertex.h"
 #include "tofsim/physics/VplNearField.h"
 
 namespace tofsim::cpu {
@@ -15,18 +18,17 @@ namespace tofsim::cpu {
 struct VplArrays {
   std::vector<float> px, py, pz, path;  ///< position (world, m), optical path light -> VPL (m)
   std::vector<float> nx, ny, nz;        ///< unit normal, lit side
-  std::vector<float> fr, fg, fb;        ///< ir::Vpl::flux: albedo * Phi / pi, W/sr (gltf: Phi, W)
+  std::vector<float> fr, fg, fb;        ///< ir::Vpl::flux (W/sr, or W where `scattering`)
   std::vector<float> ux, uy, uz, uw;    ///< patch step along the RSM's right axis, w: light leg
   std::vector<float> vx, vy, vz, vw;    ///< along its up axis (ir::Vpl::patchU / patchV)
   std::vector<float> nearLimit;         ///< physics::vplNearFieldLimit of the patch, m^4
-  /// glossy only (empty otherwise): ir::Vpl::incoming (unit direction the
-  /// light came from) and the material (base colour, metallic, roughness).
-  std::vector<float> ix, iy, iz, br, bg, bb, metallic, roughness;
+  /// Only where `scattering` (empty otherwise): ir::Vpl::incoming and ::vertex.
+  std::vector<float> ix, iy, iz;
+  std::vector<physics::ScatterVertex> vertex;
   std::size_t count = 0;
-  bool glossy = false;
+  bool scattering = false;  ///< some VPL's scatter is not in its flux: vplScatter it
 
-  explicit VplArrays(const std::vector<ir::Vpl>& vpls = {}, bool withMaterials = false)
-      : count(vpls.size()), glossy(withMaterials) {
+  explicit VplArrays(const std::vector<ir::Vpl>& vpls = {}) : count(vpls.size()) {
     for (std::vector<float>* a : {&px, &py, &pz, &path, &nx, &ny, &nz, &fr, &fg, &fb, &ux, &uy, &uz,
                                   &uw, &vx, &vy, &vz, &vw, &nearLimit}) {
       a->resize(count);
@@ -40,20 +42,29 @@ struct VplArrays {
       ux[k] = v.patchU.x, uy[k] = v.patchU.y, uz[k] = v.patchU.z, uw[k] = v.patchU.w;
       vx[k] = v.patchV.x, vy[k] = v.patchV.y, vz[k] = v.patchV.z, vw[k] = v.patchV.w;
       nearLimit[k] = physics::vplNearFieldLimit(glm::vec3(v.patchU), glm::vec3(v.patchV));
+      scattering = scattering || !physics::vplFluxHoldsScatter(v.vertex);
     }
-    if (!glossy) return;
-    for (std::vector<float>* a : {&ix, &iy, &iz, &br, &bg, &bb, &metallic, &roughness}) {
-      a->resize(count);
-    }
+    if (!scattering) return;
+    for (std::vector<float>* a : {&ix, &iy, &iz}) a->resize(count);
+    vertex.resize(count);
     for (std::size_t k = 0; k < count; ++k) {
       const ir::Vpl& v = vpls[k];
       ix[k] = v.incoming.x, iy[k] = v.incoming.y, iz[k] = v.incoming.z;
-      metallic[k] = v.incoming.w;
-      br[k] = v.material.r, bg[k] = v.material.g, bb[k] = v.material.b;
-      roughness[k] = v.material.w;
+      vertex[k] = v.vertex;
     }
   }
-  std::size_t bytes() const { return count * (glossy ? 27 : 19) * sizeof(float); }
+
+  /// What VPL k sends toward unit d besides its flux (physics::vplScatter).
+  glm::vec3 scatterToward(std::size_t k, const glm::vec3& d, float clampPerSr) const {
+    if (!scattering) return glm::vec3(1.0f);
+    return physics::vplScatter(vertex[k], glm::vec3(nx[k], ny[k], nz[k]),
+                               glm::vec3(ix[k], iy[k], iz[k]), d, clampPerSr);
+  }
+
+  std::size_t bytes() const {
+    return count * (19 * sizeof(float) +
+                    (scattering ? 3 * sizeof(float) + sizeof(physics::ScatterVertex) : 0));
+  }
 };
 
 }  // namespace tofsim::cpu

@@ -5,8 +5,8 @@
 #include <optional>
 #include <thread>
 
-#include "tofsim/physics/GltfBrdf.h"
-#include "tofsim/physics/GltfSampling.h"
+#include "tofsim/ir/HitVertex.h"
+#include "tofsim/physics/ScatterSampling.h"
 #include "tofsim/rays/RayScene.h"
 #include "tofsim/rays/Sampling.h"
 #include "tofsim/util/Error.h"
@@ -28,43 +28,6 @@ uint64_t unitOf(uint64_t tag, int32_t bounce, std::size_t index) {
 
 double powerOf(const Vpl& v) { return static_cast<double>(v.flux.r) + v.flux.g + v.flux.b; }
 
-// The continuation of the light path at `parent`: its direction and the
-// factor its power gains there. Cosine-weighted about the parent's normal for
-// a Lambertian VPL (its albedo is in its flux already: weight 1). A glossy VPL
-// (render.materials: gltf) samples its BRDF as the reference does
-// (physics::sampleGltfBounce: the mixture of the cosine lobe and GGX visible
-// normals about the direction its light came from) and gains f cos / pdf, f
-// clamped as the gather clamps the VPL's BRDF. From the child's generator.
-physics::GltfBounce continuationOf(const Vpl& parent, Pcg32& rng,
-                                   const BounceMaterials& materials) {
-  const glm::vec3 n(parent.normal);
-  if (!materials.gltf) {
-    const float u1 = rng.nextFloat();
-    const float u2 = rng.nextFloat();
-    return {rays::cosineSampleHemisphere(n, u1, u2), glm::vec3(1.0f)};
-  }
-  const float uLobe = rng.nextFloat();
-  const float u1 = rng.nextFloat();
-  const float u2 = rng.nextFloat();
-  return physics::sampleGltfBounce(n, glm::vec3(parent.incoming), glm::vec3(parent.material),
-                                   parent.incoming.w, parent.material.w, uLobe, u1, u2,
-                                   materials.brdfClamp);
-}
-
-// A glossy child (render.materials: gltf) at `hit`, reached from `parent`
-// along w with the continuation's weight: it receives the parent's share
-// times that weight, comes in from -w, and carries the hit's material.
-std::optional<Vpl> glossyChild(const glm::vec3& share, const physics::GltfBounce& c,
-                               const rays::SurfaceHit& hit, float path_m) {
-  const glm::vec3 power = share * c.weight;
-  if (!(power.r + power.g + power.b > 0.0f)) return std::nullopt;
-  Vpl child{glm::vec4(hit.position_world, path_m), glm::vec4(hit.normal_world, 0.0f),
-            glm::vec4(power, 0.0f)};
-  child.incoming = glm::vec4(-c.direction, hit.metallic);
-  child.material = glm::vec4(hit.albedo, hit.roughness);
-  return child;
-}
-
 // Child `index`'s light path continued from `parent`, whose power share is
 // `share` (rgb: the parent's flux scaled to total power / count; W/sr, or W
 // for glossy VPLs).
@@ -75,18 +38,24 @@ std::optional<Vpl> shootChild(const rays::RayScene& scene, const Vpl& parent,
   Pcg32 rng = Pcg32::forUnit(seed, unitOf(kChildUnit, bounce, index));
   const glm::vec3 p(parent.positionPath);
   const glm::vec3 n(parent.normal);
-  const physics::GltfBounce continuation = continuationOf(parent, rng, materials);
+  const physics::GltfBounce continuation = physics::sampleVplContinuation(
+      parent.vertex, n, glm::vec3(parent.incoming), materials.brdfClamp, rng);
   const glm::vec3 w = continuation.direction;
   if (!(glm::dot(w, n) > 0.0f)) return std::nullopt;
   const auto hit = scene.intersect(p + n * scene.epsilon_m(), w);
   if (!hit) return std::nullopt;  // the light leaves the scene
   const float path_m = parent.positionPath.w + eta * glm::length(hit->position_world - p);
+  // The child receives the parent's share times the continuation's weight
+  // and carries the hit's vertex (and, where its flux does not hold its
+  // scatter, the direction its light came from, -w).
+  const physics::ScatterVertex vertex = hitVertex(*hit, materials.vertexModel);
+  const glm::vec3 flux = physics::bounceVplFlux(vertex, share, continuation.weight);
   std::optional<Vpl> child;
-  if (materials.gltf) {
-    child = glossyChild(share, continuation, *hit, path_m);
-  } else if (const glm::vec3 flux = hit->albedo * share; flux.r + flux.g + flux.b > 0.0f) {
+  if (flux.r + flux.g + flux.b > 0.0f) {
     child = Vpl{glm::vec4(hit->position_world, path_m), glm::vec4(hit->normal_world, 0.0f),
                 glm::vec4(flux, 0.0f)};
+    child->vertex = vertex;
+    if (!physics::vplFluxHoldsScatter(vertex)) child->incoming = glm::vec4(-w, 0.0f);
   }
   if (child && tracing.russian_roulette) {
     // Survival q = the largest albedo channel: a survivor's flux / q stays
@@ -169,7 +138,7 @@ BouncedVpls traceLaterBounces(const capture::RenderJob& job, const rays::RayScen
   if (given == nullptr) built = std::make_unique<rays::RayScene>(*job.scene, 0);
   const rays::RayScene& scene = given != nullptr ? *given : *built;
   const BounceTracing tracing{s.russian_roulette, s.trace_threads};
-  const BounceMaterials materials{job.settings.materials == capture::MaterialModel::Gltf,
+  const BounceMaterials materials{vertexModelOf(job.settings.materials),
                                   static_cast<float>(s.vpl_brdf_clamp_per_sr)};
   std::vector<Vpl> parents(out.vpls);
   for (int32_t bounce = 2; bounce <= s.bounces; ++bounce) {

@@ -220,10 +220,13 @@ RenderResult IrRenderer::render(const RenderJob& job, SegmentSink& sink,
     // CPU backend traces for itself) and the backend gathers from.
     const int threads = job.settings.indirect.trace_threads;
     const int32_t n = job.settings.pixel_samples;
-    auto samples = std::make_unique<SurfaceImage>(traceSurfaces(rays(), job.imager, threads, n));
+    const int model = vertexModelOf(job.settings.materials);
+    auto samples =
+        std::make_unique<SurfaceImage>(traceSurfaces(rays(), job.imager, threads, n, 1, model));
     std::unique_ptr<SurfaceImage> centres;
     if (n > 1)
-      centres = std::make_unique<SurfaceImage>(traceSurfaces(rays(), job.imager, threads, 1));
+      centres =
+          std::make_unique<SurfaceImage>(traceSurfaces(rays(), job.imager, threads, 1, 1, model));
     backend.setSurfaces(std::move(samples), std::move(centres));
   }
   const CentreSurfaces centres = backend.prepareSurfaces(job);

@@ -62,7 +62,7 @@ glm::vec3 rsmTexelDirection(const RsmView& view, int resolution, int x, int y) {
 
 std::optional<Vpl> rsmTexelVpl(const capture::Light& light, const RsmView& view, int resolution,
                                int x, int y, const RsmTexelSurface& surface,
-                               double indexOfRefraction, bool gltf) {
+                               double indexOfRefraction) {
   const glm::vec3 p = surface.position_world;
   const glm::vec3 toSurface = p - light.position_world;
   const float dist = glm::length(toSurface);
@@ -74,9 +74,11 @@ std::optional<Vpl> rsmTexelVpl(const capture::Light& light, const RsmView& view,
   const glm::dvec2 q = texelPlanePoint(view, resolution, x, y);
   const double r2 = 1.0 + q.x * q.x + q.y * q.y;
   const double solidAngle = texelSide * texelSide / (r2 * std::sqrt(r2));
-  const glm::vec3 flux = gltf ? light.intensity_W_per_sr * static_cast<float>(profile * solidAngle)
-                              : surface.albedo * light.intensity_W_per_sr *
-                                    static_cast<float>(profile * solidAngle / M_PI);
+  const bool holdsScatter = physics::vplFluxHoldsScatter(surface.vertex);
+  const glm::vec3 flux = holdsScatter
+                             ? glm::vec3(surface.vertex.color) * light.intensity_W_per_sr *
+                                   static_cast<float>(profile * solidAngle / M_PI)
+                             : light.intensity_W_per_sr * static_cast<float>(profile * solidAngle);
   if (flux.r + flux.g + flux.b <= 0.0f) return std::nullopt;
   // The texel's patch on the surface: the surface point's steps across one
   // texel (ray differentials, as for a camera pixel), and the light leg's
@@ -92,10 +94,8 @@ std::optional<Vpl> rsmTexelVpl(const capture::Light& light, const RsmView& view,
           glm::vec4(surface.normal, 0.0f), glm::vec4(flux, 0.0f),
           glm::vec4(stepU, eta * glm::dot(fromLight, stepU)),
           glm::vec4(stepV, eta * glm::dot(fromLight, stepV))};
-  if (gltf) {
-    vpl.incoming = glm::vec4(-fromLight, surface.metallic);
-    vpl.material = glm::vec4(surface.albedo, surface.roughness);
-  }
+  vpl.vertex = surface.vertex;
+  if (!holdsScatter) vpl.incoming = glm::vec4(-fromLight, 0.0f);
   return vpl;
 }
 

@@ -3,6 +3,7 @@
 #include <optional>
 
 #include "tofsim/capture/ThinLens.h"
+#include "tofsim/ir/HitVertex.h"
 #include "tofsim/rays/RayScene.h"
 #include "tofsim/util/Error.h"
 #include "tofsim/util/ParallelFor.h"
@@ -31,16 +32,16 @@ SurfaceImage emptyImage(const capture::Imager& imager, std::vector<int32_t> side
   const std::size_t samples = image.firstSample[pixelCount];
   image.position.assign(samples, glm::vec4(0.0f));
   image.normal.assign(samples, glm::vec4(0.0f));
-  image.albedo.assign(samples, glm::vec4(0.0f));
+  image.vertex.assign(
+      samples, physics::scatterVertex(physics::VERTEX_LAMBERTIAN, glm::vec3(0.0f), 0.0f, 0.0f));
   image.geometric.assign(samples, glm::vec3(0.0f));
-  image.metallicRoughness.assign(samples, glm::vec2(0.0f));
   if (apertureSamples > 1) image.aperture.assign(samples, glm::vec4(0.0f));
   return image;
 }
 
 // Traces every sample of `image` (its layout set), row by row on `threads`.
 void traceInto(SurfaceImage& image, const rays::RayScene& scene, const capture::Imager& imager,
-               int threads) {
+               int threads, int vertexModel) {
   const capture::PrimaryRays rays(imager);
   const int32_t k = image.apertureSamples;
   std::optional<capture::ThinLens> lens;
@@ -66,9 +67,8 @@ void traceInto(SurfaceImage& image, const rays::RayScene& scene, const capture::
         if (!hit) continue;
         image.position[i] = glm::vec4(hit->position_world, 1.0f);
         image.normal[i] = glm::vec4(hit->normal_world, 0.0f);
-        image.albedo[i] = glm::vec4(hit->albedo, 1.0f);
+        image.vertex[i] = hitVertex(*hit, vertexModel);
         image.geometric[i] = hit->geometric_world;
-        image.metallicRoughness[i] = glm::vec2(hit->metallic, hit->roughness);
       }
     }
   });
@@ -77,24 +77,25 @@ void traceInto(SurfaceImage& image, const rays::RayScene& scene, const capture::
 }  // namespace
 
 SurfaceImage traceSurfaces(const rays::RayScene& scene, const capture::Imager& imager, int threads,
-                           int32_t samplesPerSide, int32_t apertureSamples) {
+                           int32_t samplesPerSide, int32_t apertureSamples, int vertexModel) {
   const std::size_t pixels =
       static_cast<std::size_t>(capture::imageWidth(imager)) * capture::imageHeight(imager);
   SurfaceImage image =
       emptyImage(imager, std::vector<int32_t>(pixels, samplesPerSide), apertureSamples);
-  traceInto(image, scene, imager, threads);
+  traceInto(image, scene, imager, threads, vertexModel);
   return image;
 }
 
 SurfaceImage traceSampledPixels(const rays::RayScene& scene, const capture::Imager& imager,
                                 int threads, int32_t samplesPerSide,
-                                const std::vector<uint8_t>& sampled, int32_t apertureSamples) {
+                                const std::vector<uint8_t>& sampled, int32_t apertureSamples,
+                                int vertexModel) {
   TOFSIM_CHECK_EQ(sampled.size(), static_cast<std::size_t>(capture::imageWidth(imager)) *
                                       capture::imageHeight(imager));
   std::vector<int32_t> sides(sampled.size());
   for (std::size_t p = 0; p < sampled.size(); ++p) sides[p] = sampled[p] ? samplesPerSide : 1;
   SurfaceImage image = emptyImage(imager, std::move(sides), apertureSamples);
-  traceInto(image, scene, imager, threads);
+  traceInto(image, scene, imager, threads, vertexModel);
   return image;
 }
 

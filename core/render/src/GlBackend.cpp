@@ -316,7 +316,7 @@ std::vector<ir::Vpl> GlBackend::generateVpls(const RenderJob& job) {
   const Passes& p = passes();
   return render::generateVpls(p.gpuScene, job.light, s.rsm_resolution, s.rsm_edge_samples,
                               job.settings.time.index_of_refraction, p.bounds.lo, p.bounds.hi,
-                              job.settings.materials == capture::MaterialModel::Gltf);
+                              ir::vertexModelOf(job.settings.materials));
 }
 
 void GlBackend::setVpls(const std::vector<ir::Vpl>& vpls) {

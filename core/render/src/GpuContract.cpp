@@ -1,5 +1,7 @@
 #include "GpuContract.h"
 
+#include "tofsim/ir/IrBackend.h"
+
 namespace tofsim::render::gpu {
 
 std::vector<std::pair<std::string, std::string>> shaderDefines() {
@@ -50,7 +52,10 @@ std::vector<std::pair<std::string, std::string>> gatherDefines(const capture::Re
       {"PIXEL_SAMPLES", std::to_string(s.pixel_samples)}};
   if (s.pixel_footprint) defines.emplace_back("PIXEL_FOOTPRINT", "1");
   if (s.pixel_footprint && s.indirect.vpl_footprint) defines.emplace_back("VPL_FOOTPRINT", "1");
+  // The G-buffer's and the VPL records' layout (their glTF parameters), and
+  // the one model of every vertex (scatter_vertex.glsl folds on it).
   if (s.materials == capture::MaterialModel::Gltf) defines.emplace_back("GLTF_MATERIALS", "1");
+  defines.emplace_back("SCATTER_MODEL", std::to_string(ir::vertexModelOf(s.materials)));
   // Only with sub-samples to skip: every other render compiles the gathers
   // of before, which read no mask.
   if (adaptiveSamples(s)) defines.emplace_back("ADAPTIVE_SAMPLES", "1");

@@ -76,8 +76,11 @@ void SurfaceMaps::load(const ir::SurfaceImage& samples, int32_t samplesPerSide) 
                         static_cast<std::size_t>(x * n + s % n);
         positions[to] = samples.position[from];
         normals[to] = samples.normal[from];
-        albedos[to] = samples.albedo[from];
-        if (withMetallicRoughness_) metallicRoughnesses[to] = samples.metallicRoughness[from];
+        // The G-buffer's layout of the vertex (gbuffer.frag): albedo with
+        // a = 1, and (metallic, roughness).
+        const physics::ScatterVertex& v = samples.vertex[from];
+        albedos[to] = glm::vec4(glm::vec3(v.color), 1.0f);
+        if (withMetallicRoughness_) metallicRoughnesses[to] = glm::vec2(v.color.w, v.roughness);
       }
     }
   }

@@ -9,6 +9,7 @@
 #include "tofsim/gl/Framebuffer.h"
 #include "tofsim/gl/Program.h"
 #include "tofsim/gl/Texture.h"
+#include "tofsim/physics/ScatterVertex.h"
 
 namespace tofsim::render {
 
@@ -44,6 +45,10 @@ struct SurfaceMaps {
   gl::Program program_;
   bool withMetallicRoughness_;
 };
+
+/// Whether maps of surfaces whose vertices have `vertexModel`
+/// (physics::VERTEX_*) carry (metallic, roughness): the glTF BRDF's.
+inline bool mapsMetallicRoughness(int vertexModel) { return vertexModel == physics::VERTEX_GLTF; }
 
 /// Near and far planes that enclose the scene's bounds seen from `eye`.
 glm::vec2 depthRange(const glm::vec3& boundsMin, const glm::vec3& boundsMax, const glm::vec3& eye);

@@ -19,7 +19,7 @@ class RsmReadback {
  public:
   RsmReadback(const GpuScene& scene, const glm::mat4& viewProjection, const glm::vec3& light_world,
               int side, bool gltf)
-      : side_(side), gltf_(gltf) {
+      : side_(side) {
     const std::size_t texels = static_cast<std::size_t>(side) * side;
     SurfaceMaps rsm(side, side, gltf);
     rsm.render(scene, viewProjection, light_world);
@@ -36,22 +36,23 @@ class RsmReadback {
 
   /// Texel (x, y)'s VPL (row 0 at the bottom), or nothing.
   std::optional<Vpl> vpl(const capture::Light& light, const ir::RsmView& view, int x, int y,
-                         double indexOfRefraction) const {
+                         double indexOfRefraction, int vertexModel) const {
     const std::size_t i = (static_cast<std::size_t>(y) * side_ + x) * 4;
     if (position_[i + 3] == 0.0f) return std::nullopt;
-    ir::RsmTexelSurface surface{glm::vec3(position_[i], position_[i + 1], position_[i + 2]),
-                                glm::vec3(normal_[i], normal_[i + 1], normal_[i + 2]),
-                                glm::vec3(albedo_[i], albedo_[i + 1], albedo_[i + 2])};
-    if (gltf_) {
-      surface.metallic = metallicRoughness_[i / 2];
-      surface.roughness = metallicRoughness_[i / 2 + 1];
-    }
-    return ir::rsmTexelVpl(light, view, side_, x, y, surface, indexOfRefraction, gltf_);
+    // Without the (metallic, roughness) map the vertex's are glTF's defaults
+    // of a Lambertian render, never read.
+    const bool mr = !metallicRoughness_.empty();
+    const ir::RsmTexelSurface surface{
+        glm::vec3(position_[i], position_[i + 1], position_[i + 2]),
+        glm::vec3(normal_[i], normal_[i + 1], normal_[i + 2]),
+        physics::scatterVertex(vertexModel, glm::vec3(albedo_[i], albedo_[i + 1], albedo_[i + 2]),
+                               mr ? metallicRoughness_[i / 2] : 0.0f,
+                               mr ? metallicRoughness_[i / 2 + 1] : 1.0f)};
+    return ir::rsmTexelVpl(light, view, side_, x, y, surface, indexOfRefraction);
   }
 
  private:
   int side_;
-  bool gltf_;
   std::vector<float> position_, normal_, albedo_, metallicRoughness_;
 };
 
@@ -59,7 +60,8 @@ class RsmReadback {
 
 std::vector<Vpl> generateVpls(const GpuScene& scene, const capture::Light& light, int resolution,
                               int edgeSamples, double indexOfRefraction, const glm::vec3& lo,
-                              const glm::vec3& hi, bool gltf) {
+                              const glm::vec3& hi, int vertexModel) {
+  const bool gltf = mapsMetallicRoughness(vertexModel);
   std::vector<Vpl> vpls;
   const glm::vec2 range = depthRange(lo, hi, light.position_world);
   for (const ir::RsmView& v : ir::rsmViews(light)) {
@@ -70,7 +72,7 @@ std::vector<Vpl> generateVpls(const GpuScene& scene, const capture::Light& light
     ir::TexelVpls texels(resolution);
     for (int y = 0; y < resolution; ++y) {
       for (int x = 0; x < resolution; ++x) {
-        if (const auto vpl = rsm.vpl(light, v, x, y, indexOfRefraction)) {
+        if (const auto vpl = rsm.vpl(light, v, x, y, indexOfRefraction, vertexModel)) {
           texels.add(static_cast<std::size_t>(y) * resolution + x, *vpl);
         }
       }
@@ -86,7 +88,8 @@ std::vector<Vpl> generateVpls(const GpuScene& scene, const capture::Light& light
         const int x = static_cast<int>(t % resolution), y = static_cast<int>(t / resolution);
         for (int j = 0; j < n; ++j) {
           for (int i = 0; i < n; ++i) {
-            subs.push_back(fine.vpl(light, v, x * n + i, y * n + j, indexOfRefraction));
+            subs.push_back(
+                fine.vpl(light, v, x * n + i, y * n + j, indexOfRefraction, vertexModel));
           }
         }
       }

@@ -23,12 +23,13 @@ using ir::Vpl;  // matches struct Vpl in shaders/vpl.glsl (std430)
 /// Spot lights narrower than 60 degrees (half angle) use one view of side
 /// `rsmResolution` covering the cone; wider spots and point lights use six
 /// cube faces of that side. VPLs are in texel order, faces in +X..-Z order.
-/// `gltf` (render.materials: gltf): glossy VPLs, from the RSM's metallic and
-/// roughness too (ir::rsmTexelVpl). `edgeSamples`
+/// `vertexModel` (ir::vertexModelOf render.materials): the surfaces' vertices
+/// (glTF: glossy VPLs, from the RSM's metallic and roughness too;
+/// ir::rsmTexelVpl). `edgeSamples`
 /// (render.indirect.rsm_edge_samples): the texels at edges from a finer RSM
 /// of the view (ir::rsmViewVpls).
 std::vector<Vpl> generateVpls(const GpuScene& scene, const capture::Light& light, int rsmResolution,
                               int edgeSamples, double indexOfRefraction, const glm::vec3& boundsMin,
-                              const glm::vec3& boundsMax, bool gltf);
+                              const glm::vec3& boundsMax, int vertexModel);
 
 }  // namespace tofsim::render

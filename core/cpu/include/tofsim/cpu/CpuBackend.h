@@ -66,7 +66,11 @@ class CpuBackend : public ir::IrBackend {
   capture::IrCapabilities capabilities() const override { return capture::kCpuCapabilities; }
   void setScene(const scene::Scene& scene, const rays::RayScene* rays) override;
   ir::CentreSurfaces prepareSurfaces(const capture::RenderJob& job) override;
-  /// Never called: the CPU backend traces every imager's samples itself.
+  /// Not called by the driver (the CPU backend traces every imager's samples
+  /// itself): samples made otherwise (points of a medium, whose vertices
+  /// have no normal: physics::VERTEX_MEDIUM), which the next prepareSurfaces
+  /// gathers instead of tracing, at one sample per pixel (centres null) or
+  /// with their centres.
   void setSurfaces(std::unique_ptr<ir::SurfaceImage> samples,
                    std::unique_ptr<ir::SurfaceImage> centres) override;
   void setSampledPixels(const std::vector<uint8_t>& sampled) override;
@@ -90,6 +94,8 @@ class CpuBackend : public ir::IrBackend {
   void setResponseKernels(const std::vector<physics::ResponseKernel>& delayed);
 
  private:
+  /// prepareSurfaces with setSurfaces' samples.
+  ir::CentreSurfaces takeGivenSurfaces(const capture::RenderJob& job);
   struct DirectConstants;
   struct DirectLight;
   struct IndirectConstants;
@@ -156,6 +162,7 @@ class CpuBackend : public ir::IrBackend {
   /// render.adaptive_pixel_samples: surfaces_ holds the centres until
   /// setSampledPixels (or finishSurfaces) traces the sub-samples.
   bool subSamplesPending_ = false;
+  std::unique_ptr<ir::SurfaceImage> givenSamples_, givenCentres_;  ///< setSurfaces', until used
   int32_t apertureSamples_ = 1;  ///< per pixel sample (capture::apertureSamplesOf)
   std::unique_ptr<VplArrays> vpls_;
   std::unique_ptr<CpuIsm> ism_;

@@ -42,8 +42,8 @@ struct BounceTracing {
 
 /// How later bounces reflect (render.materials, render.indirect.vpl_brdf_clamp).
 struct BounceMaterials {
-  bool gltf = false;       ///< glossy VPLs (Vpl::incoming, Vpl::material)
-  float brdfClamp = 0.0f;  ///< 1/sr, <= 0: none
+  int vertexModel = physics::VERTEX_LAMBERTIAN;  ///< of the children's vertices (Vpl::vertex)
+  float brdfClamp = 0.0f;                        ///< 1/sr, <= 0: none
 };
 
 /// The VPLs of one bounce after `parents` (those of bounce `bounce` - 1):

@@ -41,6 +41,7 @@
 
 #include "tofsim/capture/IrCapabilities.h"
 #include "tofsim/capture/RenderJob.h"
+#include "tofsim/physics/ScatterVertex.h"
 #include "tofsim/volume/TimeAxis.h"
 
 namespace tofsim::rays {
@@ -59,16 +60,17 @@ struct DeviceLimits {
   std::size_t maxPixelsPerPass = 0;  ///< most pixels one gather call may cover (GL: groups x 64)
 };
 
-/// A virtual point light; layout = struct Vpl in shaders/vpl.glsl (std430),
-/// whose last two members (the glossy VPL's) exist only with
-/// render.materials: gltf: the GL backend uploads the first 80 bytes of each
-/// VPL otherwise, so the Lambertian gather reads what it did before.
+/// A virtual point light; layout = struct Vpl in shaders/vpl.glsl (std430,
+/// asserted below), whose last two members (`incoming` and `vertex`) the GL
+/// backend uploads only where a VPL's scatter is not in its flux
+/// (render.materials: gltf): otherwise the first kLambertianVplBytes of each,
+/// so the Lambertian gather reads what it did before.
 struct Vpl {
   glm::vec4 positionPath;  ///< xyz world, w = optical path light -> VPL, m (eta included)
   glm::vec4 normal;        ///< xyz unit, lit side
-  /// rgb: lambertian: albedo * Phi / pi, W/sr (the cosine emitter's
-  /// intensity); gltf: Phi, W, the power the VPL received (its BRDF toward x,
-  /// from `incoming` and `material`, turns it into intensity).
+  /// rgb: where physics::vplFluxHoldsScatter(vertex) (Lambertian): albedo *
+  /// Phi / pi, W/sr (the cosine emitter's intensity); otherwise Phi, W, the
+  /// power the VPL received (physics::vplScatter turns it into intensity).
   glm::vec4 flux;
   /// The VPL's patch (its RSM texel on the surface), for the VPL footprint:
   /// xyz = the surface point's step across one texel along the RSM view's
@@ -76,13 +78,21 @@ struct Vpl {
   /// the light leg's change of path along it (vplPatchPathSteps).
   glm::vec4 patchU{0.0f};
   glm::vec4 patchV{0.0f};
-  /// render.materials: gltf only (zero otherwise). xyz: unit direction from
-  /// the VPL toward where its light came from (the light, or the parent VPL
-  /// of a later bounce); w: metallic.
+  /// xyz: unit direction from the VPL toward where its light came from (the
+  /// light, or the parent VPL of a later bounce); w: 0. Zero where the
+  /// vertex's scatter is in the flux.
   glm::vec4 incoming{0.0f};
-  /// gltf only: rgb base colour (textures applied), w: perceptual roughness.
-  glm::vec4 material{0.0f};
+  /// The surface point the VPL stands on: its BRDF, its temporal response.
+  physics::ScatterVertex vertex{};
 };
+static_assert(sizeof(Vpl) == 128 && offsetof(Vpl, vertex) == 96, "Vpl: std430 layout of vpl.glsl");
+
+/// The model (physics::VERTEX_*) of every surface vertex of a render with
+/// `materials` (render.materials).
+inline int vertexModelOf(capture::MaterialModel materials) {
+  return materials == capture::MaterialModel::Gltf ? physics::VERTEX_GLTF
+                                                   : physics::VERTEX_LAMBERTIAN;
+}
 
 /// The camera G-buffer at the pixel centres, as prepareSurfaces returns it:
 /// RGBA floats per pixel, row-major, row 0 at the top.
@@ -92,7 +102,7 @@ struct CentreSurfaces {
 };
 
 /// Bytes of a VPL as the Lambertian gathers read it (Vpl without incoming
-/// and material).
+/// and vertex).
 constexpr std::size_t kLambertianVplBytes = 5 * sizeof(glm::vec4);
 
 class IrBackend {

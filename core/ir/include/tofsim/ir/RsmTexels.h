@@ -35,21 +35,20 @@ glm::vec3 rsmTexelDirection(const RsmView& view, int resolution, int x, int y);
 /// The surface a texel sees, as the RSM holds it.
 struct RsmTexelSurface {
   glm::vec3 position_world{0.0f};
-  glm::vec3 normal{0.0f};  ///< unit, facing the light
-  glm::vec3 albedo{0.0f};  ///< base colour
-  float metallic = 0.0f;   ///< read with render.materials: gltf only
-  float roughness = 1.0f;
+  glm::vec3 normal{0.0f};           ///< unit, facing the light
+  physics::ScatterVertex vertex{};  ///< its material (physics::scatterVertex)
 };
 
-/// The VPL standing for texel (x, y)'s surface (flux = albedo * I * profile *
-/// the texel's solid angle / pi, path = eta |x_l - l|, and the texel's patch
-/// on the surface for the VPL footprint), or nothing when that surface is not
-/// lit (outside the spot, black). `gltf` (render.materials: gltf): a glossy
-/// VPL instead, flux = Phi = I * profile * solid angle (the power it
-/// receives), incoming = the unit direction to the light, and the surface's
-/// material; a black surface still makes one (its Fresnel lobe reflects).
+/// The VPL standing for texel (x, y)'s surface (path = eta |x_l - l|, and the
+/// texel's patch on the surface for the VPL footprint, the surface's vertex),
+/// or nothing when that surface is not lit (outside the spot, black). Its
+/// flux: where the vertex's scatter is in the flux (physics::
+/// vplFluxHoldsScatter: Lambertian) albedo * I * profile * the texel's solid
+/// angle / pi; otherwise (glTF) Phi = I * profile * solid angle, the power it
+/// receives, with incoming = the unit direction to the light (a black glTF
+/// surface still makes one: its Fresnel lobe reflects).
 std::optional<Vpl> rsmTexelVpl(const capture::Light& light, const RsmView& view, int resolution,
                                int x, int y, const RsmTexelSurface& surface,
-                               double indexOfRefraction, bool gltf);
+                               double indexOfRefraction);
 
 }  // namespace tofsim::ir

@@ -7,7 +7,9 @@
 // into its G-buffer textures. Their conventions are the rasterized
 // SurfaceMaps' (shaders/gbuffer.frag, read by shaders/surface_samples.glsl):
 // world position with w = 1 on a surface and 0 elsewhere, unit normal facing
-// the viewpoint, albedo and metallic-roughness with textures.
+// the viewpoint, the scattering vertex (albedo and metallic-roughness with
+// textures). A sample the driver makes itself may be a medium point
+// (physics::VERTEX_MEDIUM: no normal, an isotropic phase function).
 
 #include <cstdint>
 #include <glm/glm.hpp>
@@ -39,11 +41,11 @@ struct SurfaceImage {
   /// less the chief ray's (w, m: capture::ApertureRay::lensPath_m); empty
   /// otherwise (the imager's viewpoint, no lens path).
   std::vector<glm::vec4> aperture;
-  std::vector<glm::vec4> position;           ///< xyz world, w = 1 on a surface, 0 else
-  std::vector<glm::vec4> normal;             ///< xyz unit shading normal facing the viewpoint
-  std::vector<glm::vec4> albedo;             ///< rgb diffuse albedo, a = 1
-  std::vector<glm::vec3> geometric;          ///< triangle normal facing the viewpoint (ray offsets)
-  std::vector<glm::vec2> metallicRoughness;  ///< (metallic, roughness), render.materials: gltf
+  std::vector<glm::vec4> position;  ///< xyz world, w = 1 on a surface, 0 else
+  std::vector<glm::vec4> normal;    ///< xyz unit shading normal facing the viewpoint (0: a medium)
+  /// What the sample scatters (physics::scatter): its only material member.
+  std::vector<physics::ScatterVertex> vertex;
+  std::vector<glm::vec3> geometric;  ///< triangle normal facing the viewpoint (ray offsets)
 
   std::size_t size() const { return position.size(); }
   std::size_t samplesOf(std::size_t pixel) const {
@@ -62,16 +64,20 @@ struct SurfaceImage {
 /// ((i + 1/2) / N - 1/2, (j + 1/2) / N - 1/2), entry j * N + i. With
 /// apertureSamples K > 1 (capture::apertureSamplesOf: a defocused camera)
 /// each of them K times, from the aperture's points (capture::ThinLens),
-/// entry (j * N + i) * K + a; K = 1: the chief rays.
+/// entry (j * N + i) * K + a; K = 1: the chief rays. Each hit's vertex has
+/// the model vertexModel (physics::VERTEX_*: vertexModelOf the render's
+/// materials).
 SurfaceImage traceSurfaces(const rays::RayScene& scene, const capture::Imager& imager, int threads,
-                           int32_t samplesPerSide = 1, int32_t apertureSamples = 1);
+                           int32_t samplesPerSide = 1, int32_t apertureSamples = 1,
+                           int vertexModel = physics::VERTEX_LAMBERTIAN);
 
 /// render.adaptive_pixel_samples: N x N samples (as traceSurfaces places
 /// them) for the pixels where sampled[p] is 1, the centre's one elsewhere,
 /// each through apertureSamples aperture points; only those rays are traced.
 SurfaceImage traceSampledPixels(const rays::RayScene& scene, const capture::Imager& imager,
                                 int threads, int32_t samplesPerSide,
-                                const std::vector<uint8_t>& sampled, int32_t apertureSamples = 1);
+                                const std::vector<uint8_t>& sampled, int32_t apertureSamples = 1,
+                                int vertexModel = physics::VERTEX_LAMBERTIAN);
 
 /// The pixel centres' positions and normals, as prepareSurfaces returns
 /// them, of an image of one sample per pixel.

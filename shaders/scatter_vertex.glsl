@@ -1,0 +1,137 @@
+// The scattering vertex: what the transport needs to know of a point where
+// light changes direction (a camera sample's surface point, a VPL, a point of
+// a medium), declared once for both backends in the common subset of GLSL
+// 4.50 and C++/GLM (the rules of transient_physics.glsl); C++ includes it
+// through core/physics/include/tofsim/physics/ScatterVertex.h, which checks
+// its layout (it is a member of the std430 VPL record, shaders/vpl.glsl).
+//
+// A gather never asks which material model a vertex has: it calls scatter()
+// for the factor the light gains at the vertex, vertexLightArrival() for how
+// the light reaches it, and vplScatter() for what a VPL sends on. The models
+// are handled here only. A GL program whose vertices all have one model
+// defines SCATTER_MODEL to it (GpuContract.cpp, from render.materials), so
+// that its compiler folds the model's branches away.
+#ifndef TOFSIM_SCATTER_VERTEX_GLSL
+#define TOFSIM_SCATTER_VERTEX_GLSL
+
+#ifndef TOFSIM_PHYSICS_FN
+#define TOFSIM_PHYSICS_FN
+#endif
+
+#include "transient_physics.glsl"
+#include "gltf_brdf.glsl"
+
+// Material models (ScatterVertex::model).
+const int VERTEX_LAMBERTIAN = 0;  // albedo / pi (render.materials: lambertian)
+const int VERTEX_GLTF = 1;        // the glTF metallic-roughness BRDF (gltf_brdf.glsl)
+const int VERTEX_MEDIUM = 2;      // a point of a medium: isotropic phase 1 / (4 pi), no normal
+
+// Temporal response classes (ScatterVertex::response): how long the vertex
+// holds the light it scatters. Only RESPONSE_INSTANT today (issue 41).
+const int RESPONSE_INSTANT = 0;
+
+// 32 bytes, std430 and C++ alike (ScatterVertex.h asserts it).
+struct ScatterVertex {
+  vec4 color;           // rgb: Lambertian albedo, glTF base colour, or a medium's
+                        //   single-scattering albedo; w: glTF metallic
+  float roughness;      // glTF perceptual roughness
+  int model;            // VERTEX_*
+  int response;         // RESPONSE_*: the class of its temporal response
+  float responseParam;  // the response's parameter (none for RESPONSE_INSTANT)
+};
+
+// What scatter() returns: the factor the light gains at the vertex, and the
+// temporal response it leaves with (always instant today).
+struct Scattered {
+  vec3 f;  // BRDF (1/sr) or albedo times phase function (1/sr)
+  int response;
+  float responseParam;
+};
+
+TOFSIM_PHYSICS_FN ScatterVertex scatterVertex(int model, vec3 color, float metallic,
+                                              float roughness) {
+  ScatterVertex v;
+  v.color = vec4(color, metallic);
+  v.roughness = roughness;
+  v.model = model;
+  v.response = RESPONSE_INSTANT;
+  v.responseParam = 0.0f;
+  return v;
+}
+
+// The vertex's model; a compile-time constant in a program that defines
+// SCATTER_MODEL.
+TOFSIM_PHYSICS_FN int vertexModel(ScatterVertex v) {
+#ifdef SCATTER_MODEL
+  return SCATTER_MODEL;
+#else
+  return v.model;
+#endif
+}
+
+// Whether scatter() is the same for every pair of directions (a Lambertian
+// surface, an isotropic medium): a gather may then evaluate it once per
+// vertex instead of once per contribution.
+TOFSIM_PHYSICS_FN bool scatterIsConstant(ScatterVertex v) {
+  return vertexModel(v) != VERTEX_GLTF;
+}
+
+// The light that arrives at the vertex from unit direction wi (toward where
+// it came from) and leaves toward unit wo, with n the surface's unit normal
+// (ignored by a medium point): f, in the order of the products the gathers
+// computed before (albedo / pi; gltfBrdf(n, wi, wo, ...)).
+TOFSIM_PHYSICS_FN Scattered scatter(ScatterVertex v, vec3 n, vec3 wi, vec3 wo) {
+  Scattered s;
+  s.response = v.response;
+  s.responseParam = v.responseParam;
+  int model = vertexModel(v);
+  if (model == VERTEX_GLTF) {
+    s.f = gltfBrdf(n, wi, wo, vec3(v.color), v.color.w, v.roughness);
+  } else if (model == VERTEX_MEDIUM) {
+    s.f = vec3(v.color) / (4.0f * PI);
+  } else {
+    s.f = vec3(v.color) / PI;
+  }
+  return s;
+}
+
+// The cosine a vertex weighs light arriving along unit w (toward the light)
+// with: n . w on a surface, 1 in a medium (a phase function, no normal).
+TOFSIM_PHYSICS_FN float receiverCosine(ScatterVertex v, vec3 n, vec3 w) {
+  return vertexModel(v) == VERTEX_MEDIUM ? 1.0f : dot(n, w);
+}
+
+// lightArrival (transient_physics.glsl) at vertex v: a medium point takes the
+// light from every direction, with no cosine.
+TOFSIM_PHYSICS_FN LightArrival vertexLightArrival(ScatterVertex v, vec3 x, vec3 n,
+                                                  vec3 lightPosition, int kind, vec3 axis,
+                                                  float cosOuter, float cosInner) {
+  LightArrival a = lightArrival(x, n, lightPosition, kind, axis, cosOuter, cosInner);
+  if (vertexModel(v) == VERTEX_MEDIUM) {
+    a.cosX = 1.0f;
+    a.profile = lightProfile(kind, axis, cosOuter, cosInner, -a.wLight);
+  }
+  return a;
+}
+
+// Whether a VPL of this vertex carries its scatter in its flux: a Lambertian
+// VPL is the cosine emitter albedo Phi / pi (W/sr) and scatters by 1; any
+// other VPL's flux is the power it received (W), scattered by vplScatter.
+TOFSIM_PHYSICS_FN bool vplFluxHoldsScatter(ScatterVertex v) {
+  return vertexModel(v) == VERTEX_LAMBERTIAN;
+}
+
+// What a VPL of vertex v (unit normal n) that received its light from unit
+// `incoming` (toward where it came from) gives toward unit toX: 1 when its
+// flux holds it (vplFluxHoldsScatter), else scatter()'s f, each channel
+// clamped at clampPerSr when that is positive
+// (render.indirect.vpl_brdf_clamp: it bounds the spikes of smooth VPLs).
+TOFSIM_PHYSICS_FN vec3 vplScatter(ScatterVertex v, vec3 n, vec3 incoming, vec3 toX,
+                                  float clampPerSr) {
+  if (vplFluxHoldsScatter(v)) return vec3(1.0f);
+  vec3 f = scatter(v, n, incoming, toX).f;
+  if (clampPerSr > 0.0f) f = min(f, vec3(clampPerSr));
+  return f;
+}
+
+#endif  // TOFSIM_SCATTER_VERTEX_GLSL
