@@ -26,6 +26,7 @@
 #include "tofsim/pipeline/OutputProducts.h"
 #include "tofsim/pipeline/PixelSpanSink.h"
 #include "tofsim/pipeline/PlotRanges.h"
+#include "tofsim/pipeline/PreparedRenderer.h"
 #include "tofsim/pipeline/Progress.h"
 #include "tofsim/pipeline/RenderCapture.h"
 #include "tofsim/pipeline/SensorStreams.h"
@@ -85,41 +86,69 @@ constexpr const char* kBinMajorSpillName = ".transient_bin_major.tmp";
 }  // namespace
 
 namespace {
+// `prepared` gives the renderer of a run; a sequence's frame brings its own.
 void writeOutputs(const config::RunConfig& config, const capture::RenderJob& job,
                   const RunOptions& options, const std::filesystem::path& dir, Progress& progress,
-                  RunSummary& summary, const SequenceFrame* frame);
+                  RunSummary& summary, PreparedRenderer* prepared, const SequenceFrame* frame);
 RunSummary renderScene(const config::RunConfig& config, const scene::Scene& scene,
-                       const RunOptions& options, Progress& progress,
+                       const RunOptions& options, Progress& progress, PreparedRenderer* prepared,
                        const SequenceFrame* frame = nullptr);
 
 }  // namespace
 
 RunSummary runRender(const config::RunConfig& config, const RunOptions& options) {
+  PreparedRenderer prepared(options.eglPlatform);
+  return runRender(config, prepared, options);
+}
+
+RunSummary runRender(const config::RunConfig& config, PreparedRenderer& prepared,
+                     const RunOptions& options) {
   if (config.nlos) return runNlosRender(config, options);
   if (config.sequence) return runSequenceRender(config, options);
   Progress progress("render", options.quiet);  // its time includes the scene's loading
-  scene::LoadReport report;
-  const scene::Scene scene = scene::loadGltf(config.scene_file, &report);
-  reportLoad(report, progress, false);
-  return renderScene(config, scene, options, progress);
+  prepared.prepare(config);
+  reportLoad(prepared.loadReport(), progress, false);
+  return renderScene(config, prepared.scene(), options, progress, &prepared);
 }
 
 RunSummary renderSequenceFrame(const config::RunConfig& config, const scene::Scene& scene,
                                const RunOptions& options, Progress& progress,
                                const SequenceFrame& frame) {
-  return renderScene(config, scene, options, progress, &frame);
+  return renderScene(config, scene, options, progress, nullptr, &frame);
 }
 
 RunSummary runRender(const config::RunConfig& config, const scene::Scene& scene,
                      const RunOptions& options) {
   TOFSIM_CHECK(!config.nlos);
   Progress progress("render", options.quiet);
-  return renderScene(config, scene, options, progress);
+  PreparedRenderer prepared(options.eglPlatform);
+  return renderScene(config, scene, options, progress, &prepared);
+}
+
+std::string renderSummaryText(const config::RunConfig& config, const RunSummary& summary) {
+  char line[512];
+  std::snprintf(line, sizeof line, "render: %.2f s, %zu segment(s); wrote %zu file(s) to %s\n",
+                summary.result.seconds, summary.result.segments, summary.files.size(),
+                summary.outputDirectory.string().c_str());
+  std::string text = line;
+  const capture::RenderSettings& s = config.render;
+  if (config.renderer != config::RendererKind::Reference && s.adaptive_pixel_samples &&
+      s.pixel_samples > 1) {
+    const double pixels =
+        static_cast<double>(config.camera.camera.width) * config.camera.camera.height;
+    std::snprintf(line, sizeof line, "render: %zu pixel(s) (%.1f %%) at edges took %d x %d samples\n",
+                  summary.result.sampledPixels,
+                  100.0 * static_cast<double>(summary.result.sampledPixels) / pixels,
+                  s.pixel_samples, s.pixel_samples);
+    text += line;
+  }
+  return text;
 }
 
 namespace {
 RunSummary renderScene(const config::RunConfig& config, const scene::Scene& scene,
-                       const RunOptions& options, Progress& progress, const SequenceFrame* frame) {
+                       const RunOptions& options, Progress& progress, PreparedRenderer* prepared,
+                       const SequenceFrame* frame) {
   const capture::RenderJob job =
       frame ? frame->jobAt(0.0) : prepareCapture(config, scene);  // fails under --strict
 
@@ -133,7 +162,7 @@ RunSummary renderScene(const config::RunConfig& config, const scene::Scene& scen
   StagedFolder folder(summary.outputDirectory, keptAcrossRenders);
   noteLinkedOutput(folder, progress);
   checkOutputsFit(estimateOutputs(config), config, folder.staging());
-  writeOutputs(config, job, options, folder.staging(), progress, summary, frame);
+  writeOutputs(config, job, options, folder.staging(), progress, summary, prepared, frame);
   // A signal that came during the last step still means "stop": the earlier
   // results stay rather than being replaced by a run the user abandoned.
   throwIfInterrupted();
@@ -251,7 +280,7 @@ void renderSensorPasses(const config::RunConfig& config, const SequenceFrame& fr
 // Writes every output into `dir`, the staging folder.
 void writeOutputs(const config::RunConfig& config, const capture::RenderJob& job,
                   const RunOptions& options, const std::filesystem::path& dir, Progress& progress,
-                  RunSummary& summary, const SequenceFrame* frame) {
+                  RunSummary& summary, PreparedRenderer* prepared, const SequenceFrame* frame) {
   const config::OutputConfig& out = config.output;
   const std::vector<OutputProduct> products = renderProducts(config);
   // Its encoder loaded before the render, not found missing after it.
@@ -323,9 +352,9 @@ void writeOutputs(const config::RunConfig& config, const capture::RenderJob& job
   if (frame && sensorStreams) {
     renderSensorPasses(config, *frame, *sensorStreams, consumers, bounces, progress);
   }
-  RenderedCapture rendered =
-      frame ? renderCapture(config, job, *frame->renderer, consumers, progress)
-            : renderCapture(config, job, options.eglPlatform, consumers, progress);  // --strict
+  RenderedCapture rendered = renderCapture(
+      config, job, frame ? *frame->renderer : prepared->renderer(config), consumers, progress);
+  if (!frame) progress.message("device: " + rendered.device + " (backend " + rendered.backend + ")");
   summary.backend = rendered.backend;
   summary.device = rendered.device;
   summary.result = std::move(rendered.result);
