@@ -98,7 +98,8 @@ Rendered renderInMemory(const config::RunConfig& config, pipeline::PreparedRende
   // bounceN (N more volumes in memory); with one, bounce 1 is the indirect light.
   const bool ir = config.renderer == config::RendererKind::InstantRadiosity;
   const int32_t bounces = ir && job.settings.indirect.enabled ? job.settings.indirect.bounces : 0;
-  capture::VolumeCollector collector(job.camera().width, job.camera().height, job.settings.time,
+  capture::VolumeCollector collector(capture::imageWidth(job.imager),
+                                     capture::imageHeight(job.imager), job.settings.time,
                                      capture::kChannels, bounces > 1 ? bounces : 0);
   pipeline::CaptureConsumers consumers{{&collector}, {}};
   for (int32_t k = 1; bounces > 1 && k <= bounces; ++k) consumers.bounces.push_back(k);
