@@ -2,7 +2,8 @@
 # Renders every example config on both IR backends with two tofsim binaries
 # and compares the arrays and pictures they write byte for byte: the check
 # that a refactor keeps the output (issue 40). JSON and HDF5 files are left
-# out (their render statistics hold times); everything else must be equal.
+# out (their render statistics hold times), and the folder's lock .tofsim.lock
+# (it holds the pid of its last writer); everything else must be equal.
 #
 #   bash scripts/same-bytes.sh BEFORE_TOFSIM AFTER_TOFSIM [config.yaml ...]
 #
@@ -37,7 +38,7 @@ for config in "${configs[@]}"; do
       fi
     done
     differ=$(cd "$work/before/$name-$backend" &&
-      find . -type f ! -name '*.json' ! -name '*.h5' ! -name '*.hdf5' ! -name '*.yaml' ! -name '*.txt' | sort |
+      find . -type f ! -name '.tofsim.lock' ! -name '*.json' ! -name '*.h5' ! -name '*.hdf5' ! -name '*.yaml' ! -name '*.txt' | sort |
       while read -r f; do
         cmp -s "$f" "$work/after/$name-$backend/$f" || echo "$f"
       done)
