@@ -5,7 +5,6 @@
 
 #include <CLI/CLI.hpp>
 #include <cstdio>
-#include <new>
 #include <string>
 #include <vector>
 
@@ -13,6 +12,7 @@
 #include "tofsim/pipeline/AxisReport.h"
 #include "tofsim/pipeline/BatchRun.h"
 #include "tofsim/pipeline/CompareRun.h"
+#include "tofsim/pipeline/ExitCode.h"
 #include "tofsim/pipeline/OutputEstimate.h"
 #include "tofsim/pipeline/RenderRun.h"
 #include "tofsim/pipeline/RunContentKey.h"
@@ -58,21 +58,7 @@ int runRenderCommand(const std::string& configPath, const std::string& outputDir
   // loaded, so the manifest records what was rendered.
   if (!batchRun.empty()) options.batchManifest = {batchRun, pipeline::runContentKey(config)};
   const pipeline::RunSummary summary = pipeline::runRender(config, options);
-  if (!quiet) {
-    std::fprintf(stderr, "render: %.2f s, %zu segment(s); wrote %zu file(s) to %s\n",
-                 summary.result.seconds, summary.result.segments, summary.files.size(),
-                 summary.outputDirectory.string().c_str());
-    const capture::RenderSettings& s = config.render;
-    if (config.renderer != config::RendererKind::Reference && s.adaptive_pixel_samples &&
-        s.pixel_samples > 1) {
-      const double pixels =
-          static_cast<double>(config.camera.camera.width) * config.camera.camera.height;
-      std::fprintf(stderr, "render: %zu pixel(s) (%.1f %%) at edges took %d x %d samples\n",
-                   summary.result.sampledPixels,
-                   100.0 * static_cast<double>(summary.result.sampledPixels) / pixels,
-                   s.pixel_samples, s.pixel_samples);
-    }
-  }
+  if (!quiet) std::fputs(pipeline::renderSummaryText(config, summary).c_str(), stderr);
   return 0;
 }
 
@@ -217,7 +203,8 @@ CLI::App* addBatch(CLI::App& app, Args& a) {
   batch->add_option("batch", a.configPath, "Batch YAML file (configs/README.md, Batch files)")
       ->required();
   batch->add_option("--set", a.sets, "Override a config key in every run: key.path=value");
-  batch->add_option("-j,--jobs", a.jobs, "Runs at once, each a child process (default 1)")
+  batch->add_option("-j,--jobs", a.jobs,
+                    "Runs at once, each on a worker process that keeps its renderer (default 1)")
       ->check(CLI::Range(1, tofsim::pipeline::kMaxJobs));
   batch->add_option("--shard", a.shard, "K/N: only runs i with i % N == K-1 (1-based K)");
   batch->add_flag("--dry-run", a.dryRun, "List the runs and their status; render nothing");
@@ -249,29 +236,6 @@ int dispatch(const Commands& c, const Args& a) {
   return 2;
 }
 
-// Runs `command`, mapping what escapes it to one line on stderr and the exit
-// code (the header's table).
-template <typename Command>
-int mapErrors(Command&& command) {
-  try {
-    return command();
-  } catch (const tofsim::Interrupted& e) {
-    std::fprintf(stderr, "tofsim: %s\n", e.what());
-    return e.exitCode();
-  } catch (const tofsim::InputError& e) {
-    std::fprintf(stderr, "tofsim: error: %s\n", e.what());
-    return 1;
-  } catch (const std::bad_alloc&) {
-    std::fprintf(stderr,
-                 "tofsim: error: out of memory (the video, frames and sensors hold the whole "
-                 "volume in host memory: lower camera.resolution or time.bins)\n");
-    return 1;
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "tofsim: error: %s\n", e.what());
-    return 1;
-  }
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -287,5 +251,5 @@ int main(int argc, char** argv) {
     return app.exit(e) == 0 ? 0 : 2;
   }
   tofsim::installInterruptHandlers();
-  return mapErrors([&] { return dispatch(commands, args); });
+  return tofsim::pipeline::exitCodeOf([&] { return dispatch(commands, args); });
 }

@@ -22,14 +22,13 @@
 #include "tofsim/io/Exr.h"
 #include "tofsim/io/Hdf5Capture.h"
 #include "tofsim/io/Npy.h"
-#include "tofsim/ir/IrRenderer.h"
 #include "tofsim/pipeline/FiniteSegments.h"
 #include "tofsim/pipeline/OutputProducts.h"
+#include "tofsim/pipeline/PreparedRenderer.h"
 #include "tofsim/pipeline/Progress.h"
 #include "tofsim/pipeline/RenderCapture.h"
 #include "tofsim/pipeline/RenderRun.h"
 #include "tofsim/pipeline/RenderStats.h"
-#include "tofsim/scene/GltfLoader.h"
 #include "tofsim/util/Interrupt.h"
 
 namespace py = pybind11;
@@ -88,24 +87,27 @@ struct Rendered {
 
 // The CLI's way through a render (pipeline::renderCapture: the same renderer,
 // non-finite values written as 0 and counted, the time axis checked before
-// and after under render.strict) into memory instead of files: of `scene`,
-// with `kept` (a renderer made earlier, its scene prepared once) or a new one.
-Rendered renderInMemory(const config::RunConfig& config, const scene::Scene& scene,
-                        const pipeline::RendererChoice* kept, bool quiet) {
+// and after under render.strict) into memory instead of files, through
+// `prepared` (prepared for `config` already); `nameDevice`: say which device
+// rendered (a one-off render does, a kept renderer's renders do not).
+Rendered renderInMemory(const config::RunConfig& config, pipeline::PreparedRenderer& prepared,
+                        bool nameDevice, bool quiet) {
   pipeline::Progress progress("render", quiet);
-  const capture::RenderJob job = pipeline::prepareCapture(config, scene);
+  const capture::RenderJob job = pipeline::prepareCapture(config, prepared.scene());
   // IR's light by bounce: with N > 1 bounces the segments carry bounce1 ..
   // bounceN (N more volumes in memory); with one, bounce 1 is the indirect light.
   const bool ir = config.renderer == config::RendererKind::InstantRadiosity;
   const int32_t bounces = ir && job.settings.indirect.enabled ? job.settings.indirect.bounces : 0;
-  capture::VolumeCollector collector(job.camera().width, job.camera().height, job.settings.time,
+  capture::VolumeCollector collector(capture::imageWidth(job.imager),
+                                     capture::imageHeight(job.imager), job.settings.time,
                                      capture::kChannels, bounces > 1 ? bounces : 0);
   pipeline::CaptureConsumers consumers{{&collector}, {}};
   for (int32_t k = 1; bounces > 1 && k <= bounces; ++k) consumers.bounces.push_back(k);
   pipeline::RenderedCapture rendered =
-      kept ? pipeline::renderCapture(config, job, *kept, consumers, progress)
-           : pipeline::renderCapture(config, job, gl::eglPlatformFromEnvironment(), consumers,
-                                     progress);
+      pipeline::renderCapture(config, job, prepared.renderer(config), consumers, progress);
+  if (nameDevice) {
+    progress.message("device: " + rendered.device + " (backend " + rendered.backend + ")");
+  }
   Rendered r;
   r.device = rendered.device;
   r.result = std::move(rendered.result);
@@ -220,72 +222,66 @@ py::dict render(const config::RunConfig& config, const std::optional<std::string
   {
     py::gil_scoped_release released;
     SigintScope sigint(mainThread);
-    r = outputDir ? renderToFolder(config, *outputDir, quiet)
-                  : renderInMemory(config, scene::loadGltf(config.scene_file), nullptr, quiet);
+    if (outputDir) {
+      r = renderToFolder(config, *outputDir, quiet);
+    } else {
+      pipeline::PreparedRenderer once(gl::eglPlatformFromEnvironment());
+      once.prepare(config);
+      r = renderInMemory(config, once, true, quiet);
+    }
   }
   return toPython(r, config.render.time);
 }
 
-// A scene loaded and a renderer made once (its device; the scene's buffers
-// and BVH at the first render, IrRenderer keeping them while the scene is
-// the same object), then any number of in-memory renders of configs of the
-// same scene, renderer and backend: another camera, light, time axis, render
-// settings. Dataset generation, sweeps and optimisation loops pay the
-// loading once (bench/README.md, "A renderer that stays loaded").
+// A scene loaded and a renderer made once (pipeline::PreparedRenderer: its
+// device; the scene's buffers and BVH at the first render), then any number
+// of in-memory renders of configs of the same scene, renderer and backend:
+// another camera, light, time axis, render settings. What would load the
+// scene or make the renderer again is refused here (a new tofsim.Renderer
+// says so in the user's code). Dataset generation, sweeps and optimisation
+// loops pay the loading once (bench/README.md, "A renderer that stays loaded").
 class KeptRenderer {
  public:
   KeptRenderer(const config::RunConfig& config, bool quiet)
-      : first_(config), quiet_(quiet), scene_(loadScene(config)) {
-    renderer_ = pipeline::makeRenderer(config, gl::eglPlatformFromEnvironment());
+      : quiet_(quiet), prepared_(gl::eglPlatformFromEnvironment()) {
+    refuseNlosAndSequences(config);
+    prepared_.prepare(config);
+    // Its device now, not at the first render.
+    device_ = prepared_.renderer(config).renderer->description();
   }
 
   py::dict render(const config::RunConfig& config) {
-    checkSameSetup(config);
+    refuseNlosAndSequences(config);
+    if (const pipeline::SetupChange change = prepared_.changeFor(config); change.any()) {
+      throw py::value_error(change.what +
+                            " differs from the Renderer's; make a new tofsim.Renderer for it");
+    }
     const bool mainThread = onMainThread();  // asks Python: before the GIL goes
     Rendered r;
     {
       py::gil_scoped_release released;
       SigintScope sigint(mainThread);
-      r = renderInMemory(config, scene_, &renderer_, quiet_);
+      r = renderInMemory(config, prepared_, false, quiet_);
     }
     return toPython(r, config.render.time);
   }
 
   /// How many times the renderer prepared the scene (IR; 0 for the reference).
-  std::size_t scenePreparations() const {
-    const auto* ir = dynamic_cast<const ir::IrRenderer*>(renderer_.renderer.get());
-    return ir ? ir->scenePreparations() : 0;
-  }
+  std::size_t scenePreparations() const { return prepared_.scenePreparations(); }
 
-  std::string device() const { return renderer_.renderer->description(); }
+  std::string device() const { return device_; }
 
  private:
-  static scene::Scene loadScene(const config::RunConfig& config) {
+  static void refuseNlosAndSequences(const config::RunConfig& config) {
     if (config.nlos || config.sequence) {
       throw py::value_error(
           "tofsim.Renderer renders camera captures; render an `nlos:` or `sequence:` config "
           "with tofsim.render");
     }
-    return scene::loadGltf(config.scene_file);
   }
-
-  // What the kept scene and renderer were made from cannot change.
-  void checkSameSetup(const config::RunConfig& c) const {
-    const auto refuse = [](const std::string& what) {
-      throw py::value_error(what +
-                            " differs from the Renderer's; make a new tofsim.Renderer for it");
-    };
-    if (c.nlos || c.sequence) loadScene(c);
-    if (c.scene_file != first_.scene_file) refuse("the scene (" + c.scene_file.string() + ")");
-    if (c.renderer != first_.renderer) refuse("render.renderer");
-    if (c.backend != first_.backend) refuse("render.backend");
-    if (c.cpu_threads != first_.cpu_threads) refuse("render.threads");
-  }
-
-  config::RunConfig first_;
   bool quiet_;
-  scene::Scene scene_;
-  pipeline::RendererChoice renderer_;
+  pipeline::PreparedRenderer prepared_;
+  std::string device_;
 };
 
 }  // namespace

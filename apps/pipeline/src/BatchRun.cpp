@@ -1,5 +1,6 @@
 #include "tofsim/pipeline/BatchRun.h"
 
+#include <poll.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -13,10 +14,14 @@
 #include <fstream>
 #include <functional>
 #include <map>
+#include <optional>
 #include <memory>
 #include <thread>
 
-#include "BatchChild.h"
+#include "BatchWorker.h"
+#include "tofsim/pipeline/ExitCode.h"
+#include "tofsim/pipeline/PreparedRenderer.h"
+#include "tofsim/pipeline/RenderRun.h"
 #include "tofsim/pipeline/Manifest.h"
 #include "tofsim/pipeline/Progress.h"
 #include "tofsim/util/Error.h"
@@ -33,10 +38,12 @@ namespace {
 // the content key): no progress lines, which end each pass with a line.
 constexpr std::size_t kRunsWithProgress = 1000;
 
-struct Child {
-  std::size_t slot;  // into summary.runs
+// One worker and the run it renders, if any.
+struct WorkerSlot {
+  std::optional<BatchWorker> worker;
+  std::optional<std::size_t> run;  // into summary.runs
   Clock::time_point start;
-  RunLock lock;
+  std::optional<RunLock> lock;
   bool signalled = false;  // the batch's interrupt was passed on to it
 };
 
@@ -94,12 +101,11 @@ std::vector<RunContentKey> runKeys(const config::BatchConfig& batch, const fs::p
   return keys;
 }
 
-// Takes the run's lock and starts its render; or marks it busy (another batch
-// has it: returns false) or skipped (another batch finished it since it was
-// assessed).
-bool startRun(const BatchOptions& options, const config::BatchConfig& batch, const fs::path& base,
-              std::size_t slot, const RunContentKey& key, BatchRunResult& r,
-              std::map<pid_t, Child>& running) {
+// Takes the run's lock and sends it to the slot's worker (started when the
+// slot has none); or marks it busy (another batch has it: returns false) or
+// skipped (another batch finished it since it was assessed).
+bool startRun(const BatchOptions& options, const WorkerTask& task, std::size_t run,
+              const RunContentKey& key, BatchRunResult& r, WorkerSlot& slot) {
   fs::create_directories(r.directory);
   std::optional<RunLock> lock = RunLock::tryAcquire(lockFile(r));
   if (!lock) {
@@ -114,26 +120,42 @@ bool startRun(const BatchOptions& options, const config::BatchConfig& batch, con
   }
   // The folder is not emptied: the render replaces the earlier outputs only
   // once its own set is complete, and its manifest lists only its own files.
-  RenderChildArgs args{options.executable, base,   batch.run(r.index).overrides,
-                       r.directory,        r.name, lock->fd()};
-  const pid_t pid = spawnRender(args);
-  running.emplace(pid, Child{slot, Clock::now(), std::move(*lock)});
+  // A worker that ended while idle (a signal of its own) is replaced.
+  if (!slot.worker || !slot.worker->send(run, *lock)) {
+    slot.worker.reset();
+    slot.worker = BatchWorker::spawn(task);
+    if (!slot.worker->send(run, *lock)) {
+      throw InputError("batch: a new worker process ended before its first run");
+    }
+  }
+  slot.run = run;
+  slot.start = Clock::now();
+  slot.lock = std::move(lock);
+  slot.signalled = false;
   return true;
 }
 
-// Passes the batch's signal on to every child that has not had it. A child
-// whose handler is not armed either already got it (a Ctrl-C goes to the
-// whole process group) or has not installed it yet: asked again next time.
-void forwardInterrupt(int signal, std::map<pid_t, Child>& running) {
-  for (auto& [pid, child] : running) {
-    if (child.signalled || !catchesSignal(pid, signal)) continue;
-    ::kill(pid, signal);
-    child.signalled = true;
+// Passes the batch's signal on to every busy worker that has not had it. A
+// worker whose handler is not armed already got it (a Ctrl-C goes to the
+// whole process group): it is not asked again. Idle workers are closed.
+void forwardInterrupt(int signal, std::vector<WorkerSlot>& slots) {
+  for (WorkerSlot& slot : slots) {
+    if (!slot.worker) continue;
+    if (!slot.run) {
+      slot.worker.reset();
+      continue;
+    }
+    if (slot.signalled || !catchesSignal(slot.worker->pid(), signal)) continue;
+    ::kill(slot.worker->pid(), signal);
+    slot.signalled = true;
   }
 }
 
-void recordExit(int status, int interruptSignal, const RunContentKey& key, BatchRunResult& r) {
-  if (WIFEXITED(status) && WEXITSTATUS(status) == 0) {
+// The run's outcome from its exit code (a worker's answer, as `tofsim
+// render`'s), or from the wait status of a worker that ended without one.
+void recordOutcome(std::optional<int> code, int waitStatus, int interruptSignal,
+                   const RunContentKey& key, BatchRunResult& r) {
+  if (code && *code == 0) {
     const RunAssessment after = assessRun(r.directory, key, false);
     r.status = after.state == RunState::Done ? BatchRunStatus::Done : BatchRunStatus::Failed;
     if (after.state != RunState::Done) r.message = "exit code 0 but " + after.text;
@@ -141,20 +163,26 @@ void recordExit(int status, int interruptSignal, const RunContentKey& key, Batch
     r.status = BatchRunStatus::Interrupted;
   } else {
     r.status = BatchRunStatus::Failed;
-    r.message = exitText(status) + ": " + lastLogLine(r.directory);
+    r.message = (code ? "exit code " + std::to_string(*code) : "worker " + exitText(waitStatus)) +
+                ": " + lastLogLine(r.directory);
   }
 }
 
-// One reaped child, or none after a short sleep. Polling rather than a
-// blocking waitpid: a signal that arrives just before a blocking call would
-// go unnoticed until some run ends by itself.
-pid_t reapOne(int& status) {
-  const pid_t pid = ::waitpid(-1, &status, WNOHANG);
-  if (pid < 0 && errno != EINTR) {
-    throw InputError(std::string("batch: waitpid failed: ") + std::strerror(errno));
+// The slots whose worker answered or ended, after waiting up to `timeoutMs`.
+std::vector<std::size_t> answered(const std::vector<WorkerSlot>& slots, int timeoutMs) {
+  std::vector<pollfd> fds;
+  std::vector<std::size_t> index;
+  for (std::size_t i = 0; i < slots.size(); ++i) {
+    if (!slots[i].run) continue;
+    fds.push_back({slots[i].worker->fd(), POLLIN, 0});
+    index.push_back(i);
   }
-  if (pid <= 0) std::this_thread::sleep_for(std::chrono::milliseconds(20));
-  return pid;
+  std::vector<std::size_t> ready;
+  if (::poll(fds.data(), fds.size(), timeoutMs) <= 0) return ready;  // none, or EINTR
+  for (std::size_t k = 0; k < fds.size(); ++k) {
+    if (fds[k].revents != 0) ready.push_back(index[k]);
+  }
+  return ready;
 }
 
 }  // namespace
@@ -190,10 +218,37 @@ bool inShard(std::size_t index, int shardIndex, int shardCount) {
 
 namespace {
 
+// In the worker: the run rendered as `tofsim render <base> --set ... -o <dir>
+// --batch-run <name>` renders it, through the worker's renderer.
+int renderRun(const fs::path& base, const config::BatchRun& run, const BatchRunResult& r,
+              PreparedRenderer& prepared) {
+  return exitCodeOf([&] {
+    const config::RunConfig config = config::loadRunConfig(base, run.overrides);
+    RunOptions options;
+    options.outputDirectory = r.directory;
+    options.eglPlatform = gl::eglPlatformFromEnvironment();
+    // The key from the config this render loaded: the manifest records what was rendered.
+    options.batchManifest = {r.name, runContentKey(config)};
+    const RunSummary summary = runRender(config, prepared, options);
+    std::fputs(renderSummaryText(config, summary).c_str(), stderr);
+    std::fprintf(stderr,
+                 "batch: worker %d: scene loaded %zu time(s), renderer made %zu time(s), scene "
+                 "prepared %zu time(s)\n",
+                 static_cast<int>(::getpid()), prepared.sceneLoads(), prepared.rendererMakes(),
+                 prepared.scenePreparations());
+    return 0;
+  });
+}
+
 void runPending(const BatchOptions& options, const config::BatchConfig& batch, const fs::path& base,
                 const std::vector<RunContentKey>& keys, std::deque<std::size_t> pending,
                 const Progress& progress, BatchSummary& summary) {
-  std::map<pid_t, Child> running;
+  const WorkerTask task{
+      [&](std::size_t run) { return summary.runs[run].directory / kRunLogName; },
+      [&](std::size_t run, PreparedRenderer& prepared) {
+        return renderRun(base, batch.run(summary.runs[run].index), summary.runs[run], prepared);
+      }};
+  std::vector<WorkerSlot> slots(static_cast<std::size_t>(options.jobs));
   // Runs another batch is rendering: asked again when this batch has nothing
   // else to start, so that both batches end with every run done.
   std::deque<std::size_t> waiting;
@@ -205,35 +260,45 @@ void runPending(const BatchOptions& options, const config::BatchConfig& batch, c
     if (summary.interruptSignal != 0) {
       pending.clear();  // never started: they stay `pending` (or `busy`)
       waiting.clear();
-      forwardInterrupt(summary.interruptSignal, running);
+      forwardInterrupt(summary.interruptSignal, slots);
     }
     if (pending.empty() && Clock::now() >= retryAt) pending.swap(waiting);
-    while (!pending.empty() && running.size() < static_cast<std::size_t>(options.jobs)) {
-      const std::size_t slot = pending.front();
-      pending.pop_front();
-      if (!startRun(options, batch, base, slot, keys[slot], summary.runs[slot], running)) {
-        waiting.push_back(slot);
-        retryAt = Clock::now() + std::chrono::milliseconds(250);
+    for (WorkerSlot& slot : slots) {
+      while (!slot.run && !pending.empty()) {
+        const std::size_t run = pending.front();
+        pending.pop_front();
+        if (!startRun(options, task, run, keys[run], summary.runs[run], slot)) {
+          waiting.push_back(run);
+          retryAt = Clock::now() + std::chrono::milliseconds(250);
+        }
       }
     }
-    if (running.empty()) {
+    const bool busy = std::any_of(slots.begin(), slots.end(), [](auto& s) { return s.run; });
+    if (!busy) {
       if (pending.empty() && waiting.empty()) break;
       std::this_thread::sleep_for(std::chrono::milliseconds(50));
       continue;
     }
-    int status = 0;
-    const pid_t pid = reapOne(status);
-    const auto it = running.find(pid);
-    if (it == running.end()) continue;  // nothing yet, or not one of ours
-    BatchRunResult& r = summary.runs[it->second.slot];
-    r.seconds = std::chrono::duration<double>(Clock::now() - it->second.start).count();
-    recordExit(status, pendingInterrupt(), keys[it->second.slot], r);
-    running.erase(it);  // and with it the run's lock
-    char line[256];
-    std::snprintf(line, sizeof line, "[%zu/%zu] %s %s (%.1f s)", ++finished, toRun, r.name.c_str(),
-                  statusName(r.status), r.seconds);
-    progress.message(line);
+    // Polling with a timeout rather than blocking: a signal that arrives
+    // just before a blocking call would go unnoticed until some run ends.
+    for (std::size_t i : answered(slots, 20)) {
+      WorkerSlot& slot = slots[i];
+      const std::optional<int> code = slot.worker->receive();
+      const int status = code ? 0 : slot.worker->waitStatus();
+      if (!code) slot.worker.reset();  // ended: the next run gets a new one
+      BatchRunResult& r = summary.runs[*slot.run];
+      r.seconds = std::chrono::duration<double>(Clock::now() - slot.start).count();
+      recordOutcome(code, status, pendingInterrupt(), keys[*slot.run], r);
+      slot.run.reset();
+      slot.lock.reset();  // the batch's hold on the run's lock; the worker let go already
+      char line[256];
+      std::snprintf(line, sizeof line, "[%zu/%zu] %s %s (%.1f s)", ++finished, toRun,
+                    r.name.c_str(), statusName(r.status), r.seconds);
+      progress.message(line);
+    }
   }
+  // Every worker ends (its channel closed) before the batch returns.
+  slots.clear();
 }
 
 }  // namespace

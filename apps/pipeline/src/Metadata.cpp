@@ -16,8 +16,8 @@ namespace {
 nlohmann::json vec(const glm::vec3& v) { return {v.x, v.y, v.z}; }
 
 /// How transient.npy is laid out and what its values are.
-void addVolumeLayout(nlohmann::json& j, const capture::Camera& cam, const TimeAxis& axis) {
-  j["shape"] = {cam.height, cam.width, axis.bins, 3};
+void addVolumeLayout(nlohmann::json& j, const capture::Imager& imager, const TimeAxis& axis) {
+  j["shape"] = {capture::imageHeight(imager), capture::imageWidth(imager), axis.bins, 3};
   j["axes"] = {"y", "x", "t", "c"};
   j["axes_doc"] =
       "value[y][x][t][c]: row y (0 = top), column x (0 = left), time bin t, channel c; "
@@ -124,12 +124,15 @@ std::string transientMetadataJson(const config::RunConfig& config, const capture
   j["tofsim_version"] = kVersion;
   j["files"] = nlohmann::json::object();
   for (const auto& [role, file] : metadataFiles(config.output)) j["files"][role] = file;
-  addVolumeLayout(j, job.camera(), axis);
+  addVolumeLayout(j, job.imager, axis);
   j["time"] = timeJson(axis);
-  j["camera"] = cameraJson(job.camera());
-  j["camera"]["vignetting"] = vignettingJson(config.camera.vignetting);
-  // Only with a PSF: the files of a sharp lens keep their bytes.
-  if (config.camera.psf) j["camera"]["psf"] = psfJson(*config.camera.psf);
+  // The camera, for an imager that is one (other kinds say their own).
+  if (const capture::Camera* camera = capture::cameraOf(job.imager)) {
+    j["camera"] = cameraJson(*camera);
+    j["camera"]["vignetting"] = vignettingJson(config.camera.vignetting);
+    // Only with a PSF: the files of a sharp lens keep their bytes.
+    if (config.camera.psf) j["camera"]["psf"] = psfJson(*config.camera.psf);
+  }
   j["light"] = lightJson(job.light, config.light.attach_to_camera);
   j["renderer"] = config.renderer == config::RendererKind::Reference ? "reference" : "ir";
   j["backend"] = backend;

@@ -20,7 +20,7 @@ namespace {
 constexpr std::size_t kPointsForParallelGather = 256;
 
 reference::ReferenceSettings referenceSettings(const config::RunConfig& config, int threads) {
-  reference::ReferenceSettings settings = makeReferenceSettings(config);
+  reference::ReferenceSettings settings = makeReferenceSettings(config.reference);
   settings.threads = threads;
   return settings;
 }

@@ -44,9 +44,9 @@ RenderedCapture renderCapture(const config::RunConfig& config, const capture::Re
 RenderedCapture renderCapture(const config::RunConfig& config, const capture::RenderJob& job,
                               const RendererChoice& choice, const CaptureConsumers& consumers,
                               Progress& progress) {
-  const capture::Camera& camera = job.camera();
+  const int32_t width = capture::imageWidth(job.imager), height = capture::imageHeight(job.imager);
   const TimeAxis& axis = job.settings.time;
-  SteadySink steady(camera.width, camera.height, axis.bins);
+  SteadySink steady(width, height, axis.bins);
   std::vector<capture::SegmentSink*> sinks = consumers.sinks;
   sinks.push_back(&steady);
   const auto& psfConfig = config.camera.psf;
@@ -60,8 +60,8 @@ RenderedCapture renderCapture(const config::RunConfig& config, const capture::Re
   std::optional<PsfSegments> psf;
   std::optional<capture::TeeSink> psfAndSharp;
   if (psfOnTransient) {
-    checkPsfFits(config, camera.width, camera.height, axis.bins, consumers.bounces.size());
-    psf.emplace(tee, camera.width, camera.height, axis.bins, psfConfig->kernel, config.cpu_threads);
+    checkPsfFits(config, width, height, axis.bins, consumers.bounces.size());
+    psf.emplace(tee, width, height, axis.bins, psfConfig->kernel, config.cpu_threads);
     std::vector<capture::SegmentSink*> both = consumers.beforePsf;
     both.push_back(&*psf);
     psfAndSharp.emplace(std::move(both));
@@ -71,7 +71,9 @@ RenderedCapture renderCapture(const config::RunConfig& config, const capture::Re
   FiniteSegments finite(cleaned, axis.bins, consumers.bounces);
   // The camera's vignetting, before anything reads the light.
   std::optional<VignettedSegments> vignetted;
-  if (std::vector<float> gains = capture::vignettingGains(camera, config.camera.vignetting);
+  const capture::Camera* camera = capture::cameraOf(job.imager);
+  if (std::vector<float> gains = camera ? capture::vignettingGains(*camera, config.camera.vignetting)
+                                        : std::vector<float>{};
       !gains.empty()) {
     vignetted.emplace(finite, axis.bins, std::move(gains));
   }

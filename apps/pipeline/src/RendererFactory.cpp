@@ -23,34 +23,61 @@ std::unique_ptr<ir::IrBackend> makeIrBackend(config::IrBackendKind backend,
   return std::make_unique<render::GlBackend>(std::make_unique<gl::Context>(eglPlatform));
 }
 
-reference::ReferenceSettings makeReferenceSettings(const config::RunConfig& config) {
+reference::ReferenceSettings makeReferenceSettings(const config::ReferenceConfig& config) {
   reference::ReferenceSettings settings;
-  settings.bounces = config.reference.bounces;
-  settings.samples_per_pixel = config.reference.samples_per_pixel;
-  settings.threads = config.reference.threads;
-  settings.pixel_filter = config.reference.pixel_filter == config::ReferencePixelFilter::Box
+  settings.bounces = config.bounces;
+  settings.samples_per_pixel = config.samples_per_pixel;
+  settings.threads = config.threads;
+  settings.pixel_filter = config.pixel_filter == config::ReferencePixelFilter::Box
                               ? reference::PixelFilter::Box
                               : reference::PixelFilter::Point;
-  settings.sampling = config.reference.sampling == config::ReferenceSampling::Brdf
+  settings.sampling = config.sampling == config::ReferenceSampling::Brdf
                           ? reference::ContinuationSampling::BrdfMixture
                           : reference::ContinuationSampling::Cosine;
   return settings;
 }
 
-RendererChoice makeRenderer(const config::RunConfig& config, gl::EglPlatform eglPlatform) {
-  if (config.renderer == config::RendererKind::Reference) {
-    return {std::make_unique<reference::ReferenceRenderer>(makeReferenceSettings(config)),
-            "reference"};
+bool RendererSpec::operator==(const RendererSpec& o) const {
+  if (kind != o.kind) return false;
+  if (kind == config::RendererKind::Reference) {
+    const config::ReferenceConfig &a = reference, &b = o.reference;
+    return a.bounces == b.bounces && a.samples_per_pixel == b.samples_per_pixel &&
+           a.threads == b.threads && a.pixel_filter == b.pixel_filter && a.sampling == b.sampling;
   }
+  return backend == o.backend && cpuThreads == o.cpuThreads;
+}
+
+RendererSpec rendererSpec(const config::RunConfig& config,
+                          std::optional<config::IrBackendKind> autoBackend) {
+  RendererSpec spec;
+  spec.kind = config.renderer;
+  spec.reference = config.reference;
+  spec.cpuThreads = config.cpu_threads;
+  if (config.renderer == config::RendererKind::Reference) return spec;
   // What the GL backend does not gather, auto gives to the CPU backend.
   const capture::IrCapabilities need =
       capture::irNeeds(config.nlos ? nullptr : &config.camera.camera, config.render);
-  const config::IrBackendKind backend = !capture::covers(capture::kGlCapabilities, need) &&
-                                                config.backend == config::IrBackendKind::Auto
-                                            ? config::IrBackendKind::Cpu
-                                            : resolveIrBackend(config.backend);
-  return {std::make_unique<ir::IrRenderer>(makeIrBackend(backend, eglPlatform, config.cpu_threads)),
-          config::irBackendName(backend)};
+  if (config.backend != config::IrBackendKind::Auto) {
+    spec.backend = config.backend;
+  } else if (!capture::covers(capture::kGlCapabilities, need)) {
+    spec.backend = config::IrBackendKind::Cpu;
+  } else {
+    spec.backend = autoBackend ? *autoBackend : resolveIrBackend(config.backend);
+  }
+  return spec;
+}
+
+RendererChoice makeRenderer(const RendererSpec& spec, gl::EglPlatform eglPlatform) {
+  if (spec.kind == config::RendererKind::Reference) {
+    return {std::make_unique<reference::ReferenceRenderer>(makeReferenceSettings(spec.reference)),
+            "reference"};
+  }
+  return {std::make_unique<ir::IrRenderer>(makeIrBackend(spec.backend, eglPlatform, spec.cpuThreads)),
+          config::irBackendName(spec.backend)};
+}
+
+RendererChoice makeRenderer(const config::RunConfig& config, gl::EglPlatform eglPlatform) {
+  return makeRenderer(rendererSpec(config), eglPlatform);
 }
 
 }  // namespace tofsim::pipeline

@@ -162,6 +162,93 @@ void writeDepthSequence(const fs::path& root, std::size_t frames) {
   io::writeNpy(root / "depth_sequence.npy", shape, all.data());  // whole or not at all
 }
 
+// Frame k at its time: rendered into `fresh` (staged, committed whole) by
+// the sequence's renderer, the scene moved in place to each time a sensor
+// samples within the frame; its record frame.json written last.
+void renderFrame(const config::RunConfig& frameConfig, std::size_t k,
+                 const scene::AnimatedScene& animated, scene::Scene& scene,
+                 const RendererChoice& renderer, const json& key, const fs::path& fresh,
+                 const RunOptions& options, Progress& progress, RunSummary& summary) {
+  const std::vector<double>& times = frameConfig.sequence->times_s;
+  const double t = times[k];
+  SequenceFrame frame;
+  frame.renderer = &renderer;
+  frame.jobAt = [&](double offset_s) {
+    animated.updateScene(scene, t + offset_s);
+    renderer.renderer->sceneChanged();
+    return prepareCapture(frameConfig, scene);
+  };
+  const bool withMotion = frameConfig.output.depth && k + 1 < times.size();
+  const Clock::time_point started = Clock::now();
+  frame.record = [&](const fs::path& dir, std::vector<std::string>& written,
+                     const capture::RenderResult& result) {
+    json doc = {{"index", k}, {"time_s", t}, {"seed", frameConfig.render.seed}, {"run_key", key}};
+    if (withMotion) {
+      const double next = times[k + 1];
+      writeMotionFields(dir, motionFields(frameConfig, animated, scene, t, next), written);
+      doc["motion_to_time_s"] = next;  // scene_flow.npy, optical_flow.npy: to frame k + 1
+    }
+    // The frame's cost: every render of it (the sensors' sample times
+    // too), its sensors and files; and its render at t_k's own stats.
+    doc["seconds"] = std::chrono::duration<double>(Clock::now() - started).count();
+    doc["render_stats"] = renderStatsJson(result);
+    doc["files"] = written;
+    writeFileAtomically(dir / kFrameRecord, doc.dump(2) + "\n");
+    written.push_back(kFrameRecord);
+  };
+  RunOptions frameOptions = options;
+  frameOptions.outputDirectory = fresh;
+  frameOptions.batchManifest.reset();
+  RunSummary one = renderSequenceFrame(frameConfig, scene, frameOptions, progress, frame);
+  summary.backend = one.backend;
+  summary.device = one.device;
+  summary.result = std::move(one.result);
+}
+
+// The sequence's own files beside its frames (linked into `staging`): every
+// frame's files listed, depth_sequence.npy, sequence.mp4, sequence.json, the
+// effective config and, for a batch's run, the manifest.
+void writeSequenceFiles(const config::RunConfig& config, const scene::AnimatedScene& animated,
+                        const json& frames, const json& key, const fs::path& staging,
+                        const RunOptions& options, Progress& progress, RunSummary& summary) {
+  const config::SequenceConfig& seq = *config.sequence;
+  for (std::size_t k = 0; k < seq.times_s.size(); ++k) {
+    for (const std::string& f : json::parse(std::ifstream(staging / frameFolder(k) / kFrameRecord))
+                                    .at("files")
+                                    .get<std::vector<std::string>>()) {
+      summary.files.push_back(frameFolder(k) + "/" + f);
+    }
+    summary.files.push_back(frameFolder(k) + "/" + kFrameRecord);
+  }
+  if (config.output.depth) {
+    writeDepthSequence(staging, seq.times_s.size());
+    summary.files.push_back("depth_sequence.npy");
+  }
+  if (seq.video && config.output.steady) {
+    std::vector<fs::path> steady;
+    for (std::size_t k = 0; k < seq.times_s.size(); ++k) {
+      steady.push_back(staging / frameFolder(k) / files::kSteadyExr);
+    }
+    writeSequenceVideo(staging / "sequence.mp4", config.output, steady, seq.times_s, progress);
+    summary.files.push_back("sequence.mp4");
+  }
+  const json doc = {{"frames", frames},
+                    {"count", seq.times_s.size()},
+                    {"exposure_samples", seq.exposure_samples},
+                    {"animation_start_s", animated.start_s()},
+                    {"animation_end_s", animated.end_s()},
+                    {"run_key", key}};
+  writeFileAtomically(staging / "sequence.json", doc.dump(2) + "\n");
+  summary.files.push_back("sequence.json");
+  writeFileAtomically(staging / "config.effective.yaml", config::effectiveConfigYaml(config));
+  summary.files.push_back("config.effective.yaml");
+  if (options.batchManifest) {
+    writeManifest(staging, options.batchManifest->runName, summary.files,
+                  options.batchManifest->inputs);
+    summary.files.push_back(kManifestName);
+  }
+}
+
 }  // namespace
 
 RunSummary runSequenceRender(const config::RunConfig& config, const RunOptions& options) {
@@ -221,81 +308,15 @@ RunSummary runSequenceRender(const config::RunConfig& config, const RunOptions& 
     }
     progress.message("frame " + std::to_string(k + 1) + "/" + std::to_string(seq.times_s.size()) +
                      " at t = " + std::to_string(t) + " s");
-    SequenceFrame frame;
-    frame.renderer = &renderer;
-    frame.jobAt = [&](double offset_s) {
-      animated.updateScene(scene, t + offset_s);
-      renderer.renderer->sceneChanged();
-      return prepareCapture(frameConfig, scene);
-    };
-    const bool withMotion = config.output.depth && k + 1 < seq.times_s.size();
-    const Clock::time_point started = Clock::now();
-    frame.record = [&](const fs::path& dir, std::vector<std::string>& written,
-                       const capture::RenderResult& result) {
-      json doc = {{"index", k}, {"time_s", t}, {"seed", frameConfig.render.seed}, {"run_key", key}};
-      if (withMotion) {
-        const double next = seq.times_s[k + 1];
-        writeMotionFields(dir, motionFields(frameConfig, animated, scene, t, next), written);
-        doc["motion_to_time_s"] = next;  // scene_flow.npy, optical_flow.npy: to frame k + 1
-      }
-      // The frame's cost: every render of it (the sensors' sample times
-      // too), its sensors and files; and its render at t_k's own stats.
-      doc["seconds"] = std::chrono::duration<double>(Clock::now() - started).count();
-      doc["render_stats"] = renderStatsJson(result);
-      doc["files"] = written;
-      writeFileAtomically(dir / kFrameRecord, doc.dump(2) + "\n");
-      written.push_back(kFrameRecord);
-    };
-    RunOptions frameOptions = options;
-    frameOptions.outputDirectory = fresh;
-    frameOptions.batchManifest.reset();
-    RunSummary one = renderSequenceFrame(frameConfig, scene, frameOptions, progress, frame);
-    summary.backend = one.backend;
-    summary.device = one.device;
-    summary.result = std::move(one.result);
+    renderFrame(frameConfig, k, animated, scene, renderer, key, fresh, options, progress, summary);
     ++rendered;
   }
   progress.message(std::to_string(rendered) + " frame(s) rendered, " +
                    std::to_string(seq.times_s.size() - rendered) + " kept");
 
   // The new set: the frames, then the sequence's own files.
-  const fs::path& staging = folder.staging();
-  linkFrames(done, staging);
-  for (std::size_t k = 0; k < seq.times_s.size(); ++k) {
-    for (const std::string& f : json::parse(std::ifstream(staging / frameFolder(k) / kFrameRecord))
-                                    .at("files")
-                                    .get<std::vector<std::string>>()) {
-      summary.files.push_back(frameFolder(k) + "/" + f);
-    }
-    summary.files.push_back(frameFolder(k) + "/" + kFrameRecord);
-  }
-  if (config.output.depth) {
-    writeDepthSequence(staging, seq.times_s.size());
-    summary.files.push_back("depth_sequence.npy");
-  }
-  if (seq.video && config.output.steady) {
-    std::vector<fs::path> steady;
-    for (std::size_t k = 0; k < seq.times_s.size(); ++k) {
-      steady.push_back(staging / frameFolder(k) / files::kSteadyExr);
-    }
-    writeSequenceVideo(staging / "sequence.mp4", config.output, steady, seq.times_s, progress);
-    summary.files.push_back("sequence.mp4");
-  }
-  const json doc = {{"frames", frames},
-                    {"count", seq.times_s.size()},
-                    {"exposure_samples", seq.exposure_samples},
-                    {"animation_start_s", animated.start_s()},
-                    {"animation_end_s", animated.end_s()},
-                    {"run_key", key}};
-  writeFileAtomically(staging / "sequence.json", doc.dump(2) + "\n");
-  summary.files.push_back("sequence.json");
-  writeFileAtomically(staging / "config.effective.yaml", config::effectiveConfigYaml(config));
-  summary.files.push_back("config.effective.yaml");
-  if (options.batchManifest) {
-    writeManifest(staging, options.batchManifest->runName, summary.files,
-                  options.batchManifest->inputs);
-    summary.files.push_back(kManifestName);
-  }
+  linkFrames(done, folder.staging());
+  writeSequenceFiles(config, animated, frames, key, folder.staging(), options, progress, summary);
   // A signal during the last steps still means "stop" (as for one render).
   throwIfInterrupted();
   commitOutput(folder, progress);  // the earlier set, the partial folder with it, goes

@@ -36,8 +36,9 @@ glm::vec3 viewpoint(const Imager& imager) {
 }
 
 bool lastLegCounts(const Imager& imager) {
-  const auto* points = std::get_if<PointSetImager>(&imager);
-  return points == nullptr || points->last_leg_counts;
+  return std::visit(Overloaded{[](const Camera&) { return true; },
+                               [](const PointSetImager& p) { return p.last_leg_counts; }},
+                    imager);
 }
 
 const Camera* pinhole(const Imager& imager) {
@@ -48,39 +49,54 @@ const Camera* pinhole(const Imager& imager) {
 const Camera* cameraOf(const Imager& imager) { return std::get_if<Camera>(&imager); }
 
 PrimaryRays::PrimaryRays(const Imager& imager) : imager_(imager) {
+  // A camera's frame, computed once for all its rays.
   if (const Camera* camera = cameraOf(imager)) pinholeRays_.emplace(*camera);
 }
 
+// Each kind's rays by overload: a kind without one does not compile.
 PrimaryRay PrimaryRays::ray(int32_t x, int32_t y) const {
-  if (pinholeRays_) return {viewpoint(imager_), pinholeRays_->direction(x, y)};
-  const auto& points = std::get<PointSetImager>(imager_);
-  const glm::vec3 target = points.points_world[static_cast<std::size_t>(y) * points.width + x];
-  return {points.origin_world, glm::normalize(target - points.origin_world)};
+  return std::visit(
+      Overloaded{[&](const Camera& c) -> PrimaryRay {
+                   return {c.position_world, pinholeRays_->direction(x, y)};
+                 },
+                 [&](const PointSetImager& p) -> PrimaryRay {
+                   const glm::vec3 target = p.points_world[static_cast<std::size_t>(y) * p.width + x];
+                   return {p.origin_world, glm::normalize(target - p.origin_world)};
+                 }},
+      imager_);
 }
 
 PrimaryRay PrimaryRays::ray(int32_t x, int32_t y, glm::vec2 offset) const {
-  if (pinholeRays_) return {viewpoint(imager_), pinholeRays_->direction(x, y, offset)};
-  const auto& points = std::get<PointSetImager>(imager_);
-  const glm::vec3 target = points.points_world[static_cast<std::size_t>(y) * points.width + x] +
-                           offset.x * points.step_u_world + offset.y * points.step_v_world;
-  return {points.origin_world, glm::normalize(target - points.origin_world)};
+  return std::visit(
+      Overloaded{[&](const Camera& c) -> PrimaryRay {
+                   return {c.position_world, pinholeRays_->direction(x, y, offset)};
+                 },
+                 [&](const PointSetImager& p) -> PrimaryRay {
+                   const glm::vec3 target =
+                       p.points_world[static_cast<std::size_t>(y) * p.width + x] +
+                       offset.x * p.step_u_world + offset.y * p.step_v_world;
+                   return {p.origin_world, glm::normalize(target - p.origin_world)};
+                 }},
+      imager_);
 }
 
 PixelSteps::PixelSteps(const Imager& imager, float side, int32_t x, int32_t y) {
-  if (const Camera* c = cameraOf(imager)) {
-    pinhole_ = true;
-    origin_ = c->position_world;
-    forward_ = c->forward();
-    // A lens's steps are the distorted pixel's own; a pinhole's the same everywhere.
-    const Camera::RaySteps steps = c->rayStepsAt(x, y);
-    stepX_ = steps.alongX * side;
-    stepY_ = steps.alongY * side;
-  } else {
-    // The points' own spacing: the cell each point stands for.
-    const auto& p = std::get<PointSetImager>(imager);
-    stepX_ = p.step_u_world * side;
-    stepY_ = p.step_v_world * side;
-  }
+  std::visit(Overloaded{[&](const Camera& c) {
+                          pinhole_ = true;
+                          origin_ = c.position_world;
+                          forward_ = c.forward();
+                          // A lens's steps are the distorted pixel's own; a
+                          // pinhole's the same everywhere.
+                          const Camera::RaySteps steps = c.rayStepsAt(x, y);
+                          stepX_ = steps.alongX * side;
+                          stepY_ = steps.alongY * side;
+                        },
+                        [&](const PointSetImager& p) {
+                          // The points' own spacing: the cell each point stands for.
+                          stepX_ = p.step_u_world * side;
+                          stepY_ = p.step_v_world * side;
+                        }},
+             imager);
 }
 
 FootprintSteps PixelSteps::at(const glm::vec3& x, const glm::vec3& n) const {

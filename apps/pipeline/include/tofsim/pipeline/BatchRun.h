@@ -4,17 +4,18 @@
 // for their current content key (Manifest.h, RunContentKey.h) and redoing
 // missing, stale and incomplete ones.
 //
-// Each run is a child process: the tofsim executable itself, as
-// `tofsim render <base config> --set ... -o <run dir> --batch-run <name>`,
-// its stdout and stderr in <run dir>/log.txt; the render writes the run's
-// manifest last. The batch holds <output>/.<run name>.lock (flock) while a
-// run is going, so two batches over one output tree never run the same run
-// at once: the second reports it `busy`. SIGINT/SIGTERM: no new run starts,
-// the signal goes on to the running children, the batch waits for them and
-// returns a summary with `interruptSignal` set. Processes rather than threads because every render
-// owns a GL context and large buffers, and because a crash (or a driver
-// abort) in one run must not take the batch down: the parent only counts
-// exit codes. `jobs` children run at once.
+// The runs render on `jobs` worker processes forked from the batch
+// (BatchWorker.h), each keeping its scene and renderer loaded across the
+// runs it is given (PreparedRenderer.h), each run rendered as `tofsim render
+// <base config> --set ... -o <run dir> --batch-run <name>` renders it (the
+// same files, byte for byte), its stdout and stderr in <run dir>/log.txt;
+// the render writes the run's manifest last. The batch holds <output>/.<run
+// name>.lock (flock) while a run is going, and hands it to the worker, so
+// two batches over one output tree never run the same run at once: the
+// second reports it `busy`. SIGINT/SIGTERM: no new run starts, the signal
+// goes on to the busy workers, the batch waits for them and returns a
+// summary with `interruptSignal` set. A worker that crashes takes only its
+// run down: the batch counts its exit status and starts another worker.
 
 #include <cstddef>
 #include <filesystem>
@@ -25,20 +26,19 @@
 
 namespace tofsim::pipeline {
 
-/// The most runs at once (--jobs): each is a child process with its own
+/// The most runs at once (--jobs): each on a worker process with its own
 /// render buffers (and GL context).
 inline constexpr int kMaxJobs = 256;
 
 struct BatchOptions {
   std::filesystem::path batchFile;
   std::vector<config::Override> overrides;  ///< the CLI's --set, after the batch's own
-  int jobs = 1;                             ///< child processes at once, 1 .. kMaxJobs
+  int jobs = 1;                             ///< worker processes, 1 .. kMaxJobs
   int shardIndex = 1;                       ///< K of --shard K/N, 1-based
   int shardCount = 1;                       ///< N of --shard K/N
   bool dryRun = false;                      ///< list the runs, render nothing
   bool verify = false;                      ///< check checksums, not only sizes, to skip
   bool quiet = false;
-  std::filesystem::path executable = "/proc/self/exe";  ///< the tofsim binary to run
 };
 
 enum class BatchRunStatus { Done, Skipped, Failed, Pending, Interrupted, Busy };

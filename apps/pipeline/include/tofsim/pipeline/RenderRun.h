@@ -41,10 +41,24 @@ struct RunSummary {
       device;  ///< the renderer's device, e.g. "llvmpipe (LLVM 15...)" or "CPU (2 threads, Embree)"
 };
 
+class PreparedRenderer;
+
 RunSummary runRender(const config::RunConfig& config, const RunOptions& options);
+/// The same through a renderer that stays loaded (PreparedRenderer.h): its
+/// scene and renderer kept where the config allows, loaded or made again
+/// where it does not; the files are those of a render of its own. NLOS and
+/// sequence configs load their own scene and renderer (kept across their
+/// captures).
+RunSummary runRender(const config::RunConfig& config, PreparedRenderer& prepared,
+                     const RunOptions& options);
 /// The same over a scene already loaded (or built in code by a test) in
 /// place of config.scene_file's; not for NLOS configs.
 RunSummary runRender(const config::RunConfig& config, const scene::Scene& scene,
                      const RunOptions& options);
+
+/// What `tofsim render` says at its end: "render: 0.42 s, 3 segment(s); wrote
+/// 9 file(s) to out" and, with adaptive pixel samples, how many pixels took
+/// them (lines ending in a newline).
+std::string renderSummaryText(const config::RunConfig& config, const RunSummary& summary);
 
 }  // namespace tofsim::pipeline

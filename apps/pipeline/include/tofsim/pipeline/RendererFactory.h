@@ -5,6 +5,7 @@
 // context) or the CPU one (core/cpu, no EGL at all).
 
 #include <memory>
+#include <optional>
 #include <string>
 
 #include "tofsim/capture/Renderer.h"
@@ -26,7 +27,7 @@ std::unique_ptr<ir::IrBackend> makeIrBackend(config::IrBackendKind backend,
                                              gl::EglPlatform eglPlatform, int cpuThreads = 0);
 
 /// The reference path tracer's settings from render.reference.*.
-reference::ReferenceSettings makeReferenceSettings(const config::RunConfig& config);
+reference::ReferenceSettings makeReferenceSettings(const config::ReferenceConfig& config);
 
 /// What renders a run, for the log and transient.json.
 struct RendererChoice {
@@ -34,9 +35,29 @@ struct RendererChoice {
   std::string backend;  ///< "gl" or "cpu" for IR, "reference" for the path tracer
 };
 
-/// render.renderer: ir -> ir::IrRenderer over makeIrBackend(resolved
-/// render.backend); reference -> the CPU path tracer with render.reference.*
-/// (needs no GL context).
+/// What a renderer is made from: configs with equal specs get renderers that
+/// render alike, so one made for the first serves the others
+/// (PreparedRenderer keeps it).
+struct RendererSpec {
+  config::RendererKind kind = config::RendererKind::InstantRadiosity;
+  /// IR: render.backend decided (never Auto); a defocused camera or merged
+  /// pixel samples under auto take the CPU backend, the one that does them.
+  config::IrBackendKind backend = config::IrBackendKind::Cpu;
+  int cpuThreads = 0;                 ///< IR: render.threads
+  config::ReferenceConfig reference;  ///< reference: render.reference.*
+  bool operator==(const RendererSpec& other) const;
+};
+
+/// The spec of `config`'s renderer; `autoBackend`: what render.backend: auto
+/// resolves to (resolveIrBackend(Auto), which asks EGL, when not given).
+RendererSpec rendererSpec(const config::RunConfig& config,
+                          std::optional<config::IrBackendKind> autoBackend = std::nullopt);
+
+/// render.renderer: ir -> ir::IrRenderer over makeIrBackend(spec.backend);
+/// reference -> the CPU path tracer with render.reference.* (needs no GL
+/// context).
+RendererChoice makeRenderer(const RendererSpec& spec, gl::EglPlatform eglPlatform);
+/// makeRenderer(rendererSpec(config), eglPlatform).
 RendererChoice makeRenderer(const config::RunConfig& config, gl::EglPlatform eglPlatform);
 
 }  // namespace tofsim::pipeline

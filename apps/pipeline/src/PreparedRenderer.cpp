@@ -1,0 +1,109 @@
+#include "tofsim/pipeline/PreparedRenderer.h"
+
+#include <system_error>
+
+#include "tofsim/ir/IrRenderer.h"
+#include "tofsim/util/Error.h"
+
+namespace tofsim::pipeline {
+
+namespace fs = std::filesystem;
+
+namespace {
+std::size_t preparationsOf(const RendererChoice& choice) {
+  const auto* ir = dynamic_cast<const ir::IrRenderer*>(choice.renderer.get());
+  return ir ? ir->scenePreparations() : 0;
+}
+}  // namespace
+
+PreparedRenderer::PreparedRenderer(gl::EglPlatform eglPlatform) : eglPlatform_(eglPlatform) {}
+
+PreparedRenderer::~PreparedRenderer() = default;
+
+PreparedRenderer::SceneKey PreparedRenderer::sceneKey(const fs::path& file) {
+  // An unreadable file keeps size 0 and the epoch: loadGltf reports it.
+  std::error_code ec;
+  SceneKey key{fs::absolute(file, ec).lexically_normal(), 0, {}};
+  key.size = fs::file_size(file, ec);
+  if (ec) key.size = 0;
+  key.modified = fs::last_write_time(file, ec);
+  return key;
+}
+
+RendererSpec PreparedRenderer::specFor(const config::RunConfig& config) const {
+  if (config.renderer == config::RendererKind::InstantRadiosity &&
+      config.backend == config::IrBackendKind::Auto && !autoBackend_) {
+    autoBackend_ = resolveIrBackend(config::IrBackendKind::Auto);
+  }
+  return rendererSpec(config, autoBackend_);
+}
+
+SetupChange PreparedRenderer::changeFor(const config::RunConfig& config) const {
+  SetupChange change;
+  if (!sceneKey_ || !(sceneKey(config.scene_file) == *sceneKey_)) {
+    change.scene = true;
+    change.what = sceneKey_ && sceneKey_->file == sceneKey(config.scene_file).file
+                      ? "the scene file's contents (" + config.scene_file.string() + ")"
+                      : "the scene (" + config.scene_file.string() + ")";
+  }
+  if (spec_) {
+    const RendererSpec spec = specFor(config);
+    const auto differs = [&](bool d, const char* what) {
+      if (!d || change.renderer) return;
+      change.renderer = true;
+      if (change.what.empty()) change.what = what;
+    };
+    differs(spec.kind != spec_->kind, "render.renderer");
+    differs(spec.backend != spec_->backend, "render.backend");
+    differs(spec.cpuThreads != spec_->cpuThreads, "render.threads");
+    differs(!(spec == *spec_), "render.reference");
+  }
+  return change;
+}
+
+SetupChange PreparedRenderer::prepare(const config::RunConfig& config) {
+  const SetupChange change = changeFor(config);
+  if (change.renderer) {
+    earlierPreparations_ += preparationsOf(renderer_);
+    renderer_ = {};
+    spec_.reset();
+  }
+  if (change.scene) {
+    scene::LoadReport report;
+    auto scene = std::make_unique<scene::Scene>(scene::loadGltf(config.scene_file, &report));
+    // A new object: a renderer kept across prepares it again at its next
+    // render (IrRenderer compares the scene it holds by address).
+    scene_ = std::move(scene);
+    report_ = report;
+    sceneKey_ = sceneKey(config.scene_file);
+    ++sceneLoads_;
+    if (renderer_.renderer) renderer_.renderer->sceneChanged();
+  }
+  return change;
+}
+
+const scene::Scene& PreparedRenderer::scene() const {
+  TOFSIM_CHECK(scene_ != nullptr);
+  return *scene_;
+}
+
+const RendererChoice& PreparedRenderer::renderer(const config::RunConfig& config) {
+  const RendererSpec spec = specFor(config);
+  if (spec_ && !(spec == *spec_)) {
+    earlierPreparations_ += preparationsOf(renderer_);
+    renderer_ = {};
+    spec_.reset();
+  }
+  if (!renderer_.renderer) {
+    renderer_ = makeRenderer(spec, eglPlatform_);
+    spec_ = spec;
+    ++rendererMakes_;
+  }
+  return renderer_;
+}
+
+std::size_t PreparedRenderer::scenePreparations() const {
+  return earlierPreparations_ + preparationsOf(renderer_);
+}
+
+}  // namespace tofsim::pipeline
