@@ -132,23 +132,17 @@ submit() { # the README's command line; prints the job id
   echo "${BASH_REMATCH[1]}"
 }
 
-# The pid of r3's render (`tofsim render ... -o OUT/r3 --batch-run r3`), if
-# one is running.
+# The pid of the process that renders r3, if one does: a batch renders its
+# runs on worker processes it forks (tofsim batch, "Batch files"); the worker
+# that renders r3 holds r3's folder lock (out/r3/.tofsim.lock), and
+# /proc/locks names a lock's holder by the lock file's inode.
 render_pid() {
-  local e pid n
-  local -a args
-  for e in /proc/[0-9]*/cmdline; do
-    args=()
-    { mapfile -d '' -t args <"$e"; } 2>/dev/null || continue
-    n=${#args[@]}
-    if [ "$n" -gt 5 ] && [ "${args[1]}" = render ] && [ "${args[n - 1]}" = r3 ] &&
-      [ "${args[n - 2]}" = --batch-run ] && [ "${args[n - 3]}" = "$out/r3" ]; then
-      pid=${e#/proc/}
-      echo "${pid%/cmdline}"
-      return 0
-    fi
-  done
-  return 0
+  local lock="$out/r3/.tofsim.lock" ino
+  [ -e "$lock" ] || return 0
+  ino=$(stat -c %i "$lock" 2>/dev/null) || return 0
+  awk -v ino="$ino" '{ for (i = 1; i <= NF; i++) if ($i ~ /^[0-9a-f]+:[0-9a-f]+:[0-9]+$/) {
+         split($i, d, ":"); if (d[3] == ino && $(i - 1) ~ /^[0-9]+$/) print $(i - 1) } }' \
+    /proc/locks | head -n1
 }
 
 # --- 2. the array, task 3 cancelled while r3 renders -------------------------
