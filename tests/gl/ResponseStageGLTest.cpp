@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "GpuContract.h"
+#include "FootprintDepositSource.h"
 #include "PixelFootprint.h"
 #include "support/GlTestContext.h"
 #include "tofsim/gl/Buffer.h"
@@ -60,19 +61,8 @@ void main() {
 )";
 
 std::string gatherSource() {
-  std::string deposit = gl::embeddedShaderSource("footprint_deposit.glsl");
-  for (const std::string include :
-       {"#include \"footprint_kernel.glsl\"", "#include \"bin_deposit.glsl\""}) {
-    deposit.replace(deposit.find(include), include.size(), "");
-  }
-  std::string source = "#version 450 core\n";
-  for (const auto& [name, value] : gpu::shaderDefines()) {
-    source += "#define " + name + " " + value + "\n";
-  }
-  source += "#define CONTRIBUTIONS " + std::to_string(kPerPixel) + "\n";
-  source += "#define GATHER_HISTOGRAM volume\n#define RESPONSE_CLASSES\n";
-  return source + kGatherBuffers + gl::embeddedShaderSource("footprint_kernel.glsl") +
-         gl::embeddedShaderSource("bin_deposit.glsl") + deposit + kGather;
+  return test::footprintDepositSource(kPerPixel, "#define RESPONSE_CLASSES\n", kGatherBuffers,
+                                      kGather);
 }
 
 std::vector<physics::ResponseKernel> delayedKernels() {

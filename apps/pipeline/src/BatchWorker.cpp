@@ -67,15 +67,25 @@ struct Request {
   std::uint64_t run = 0;
 };
 
-bool sendRequest(int fd, std::uint64_t run, int lockFd) {
-  Request request{run};
-  iovec iov{&request, sizeof request};
+// A message of one request and room for one descriptor.
+struct RequestMessage {
+  iovec iov;
   alignas(cmsghdr) char control[CMSG_SPACE(sizeof(int))] = {};
   msghdr msg{};
-  msg.msg_iov = &iov;
-  msg.msg_iovlen = 1;
-  msg.msg_control = control;
-  msg.msg_controllen = sizeof control;
+  explicit RequestMessage(Request& request) : iov{&request, sizeof request} {
+    msg.msg_iov = &iov;
+    msg.msg_iovlen = 1;
+    msg.msg_control = control;
+    msg.msg_controllen = sizeof control;
+  }
+  RequestMessage(const RequestMessage&) = delete;
+  RequestMessage& operator=(const RequestMessage&) = delete;
+};
+
+bool sendRequest(int fd, std::uint64_t run, int lockFd) {
+  Request request{run};
+  RequestMessage m(request);
+  msghdr& msg = m.msg;
   cmsghdr* c = CMSG_FIRSTHDR(&msg);
   c->cmsg_level = SOL_SOCKET;
   c->cmsg_type = SCM_RIGHTS;
@@ -90,13 +100,8 @@ bool sendRequest(int fd, std::uint64_t run, int lockFd) {
 // The next request, or false at the end (the batch closed the channel, or
 // a signal came while waiting).
 bool receiveRequest(int fd, Request& request, int& lockFd) {
-  iovec iov{&request, sizeof request};
-  alignas(cmsghdr) char control[CMSG_SPACE(sizeof(int))] = {};
-  msghdr msg{};
-  msg.msg_iov = &iov;
-  msg.msg_iovlen = 1;
-  msg.msg_control = control;
-  msg.msg_controllen = sizeof control;
+  RequestMessage m(request);
+  msghdr& msg = m.msg;
   const ssize_t n = ::recvmsg(fd, &msg, MSG_CMSG_CLOEXEC);
   if (n != static_cast<ssize_t>(sizeof request)) return false;
   lockFd = -1;
