@@ -54,7 +54,8 @@ void gatherSample(uint local, SurfaceSample g, inout float lostBefore, inout flo
   float path_m = directPathLength(uIndexOfRefraction, dLight, dCamera);
 #ifdef PIXEL_FOOTPRINT
   vec3 dxdu, dxdv;
-  surfaceStepsAcrossSample(x, n, g.pixel, g.wholePixel, dxdu, dxdv);
+  surfaceStepsAcrossSample(x, footprintPlaneNormal(g.vertex, n, -wCamera), g.pixel, g.wholePixel,
+                           dxdu, dxdv);
   vec2 steps = pathStepsAcrossPixel(
       opticalPathGradient(x, uLightPosition_world, uCameraPosition_world, uIndexOfRefraction,
                           uCameraUnwarp != 0),

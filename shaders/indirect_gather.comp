@@ -63,7 +63,8 @@ uniform float uSceneScale_m;
 const uint kLoopTripLimit = 30000u;
 layout(std430, binding = TOFSIM_SSBO_LOOP_GUARD) buffer LoopGuard { uint loopLimitHit; };
 
-bool visible(uint ismIndex, Vpl vpl, vec3 x, vec3 n, vec3 d, float dist, inout uint iterations) {
+bool visible(uint ismIndex, Vpl vpl, vec3 x, vec3 n, vec3 d, float dist, float cosX,
+             inout uint iterations) {
 #ifdef EXACT_VISIBILITY
   float eps = 1e-4 * uSceneScale_m;
   return !segmentOccluded(vpl.positionPath.xyz + vpl.normal.xyz * eps, x + n * eps, iterations);
@@ -71,7 +72,7 @@ bool visible(uint ismIndex, Vpl vpl, vec3 x, vec3 n, vec3 d, float dist, inout u
   ivec2 texel = paraboloidTexel(vpl, d, uIsmResolution);
   float stored = ism[ismIndex * uVplStride + uint(texel.y * uIsmResolution + texel.x)];
   // One texel spans at most 4/R radians (at the paraboloid's centre).
-  float bias = ismDepthBias(dist, -dot(n, d), 4.0 / float(uIsmResolution), 0.01 * uSceneScale_m);
+  float bias = ismDepthBias(dist, cosX, 4.0 / float(uIsmResolution), 0.01 * uSceneScale_m);
   return dist - bias <= stored;
 #endif
 }
@@ -107,7 +108,8 @@ Sample loadSample(ivec2 xy, int samples, int s) {
   o.cameraPath = cameraPathLength(uCameraUnwarp != 0, uIndexOfRefraction,
                                   length(o.x - uCameraPosition_world));
 #ifdef PIXEL_FOOTPRINT
-  surfaceStepsAcrossSample(o.x, o.n, g.pixel, g.wholePixel, o.dxdu, o.dxdv);
+  surfaceStepsAcrossSample(o.x, footprintPlaneNormal(o.vertex, o.n, -o.toCamera), g.pixel,
+                           g.wholePixel, o.dxdu, o.dxdv);
 #endif
   return o;
 }
@@ -121,11 +123,14 @@ void gatherVpl(uint local, Sample at, uint k, Vpl vpl, inout float lostBefore,
   float dist = sqrt(dist2);
   vec3 d = toX / dist;
   float cosVpl = dot(vpl.normal.xyz, d);
-  float cosX = -dot(at.n, d);
+  float cosX = receiverCosine(at.vertex, at.n, -d);
   if (cosVpl <= 0.0 || cosX <= 0.0) return;
-  float g = vplGeometryTerm(cosVpl, cosX, dist2, uGeometryClamp, at.x, at.n, vpl.positionPath.xyz,
-                            vpl.patchU.xyz, vpl.patchV.xyz);
-  if (!visible(uFirstVpl - uIsmFirstVpl + k, vpl, at.x, at.n, d, dist, iterations)) return;
+  float g = vertexOnSurface(at.vertex)
+                ? vplGeometryTerm(cosVpl, cosX, dist2, uGeometryClamp, at.x, at.n,
+                                  vpl.positionPath.xyz, vpl.patchU.xyz, vpl.patchV.xyz)
+                : vplMediumGeometryTerm(cosVpl, dist2, uGeometryClamp, at.x, vpl.positionPath.xyz,
+                                        vpl.patchU.xyz, vpl.patchV.xyz);
+  if (!visible(uFirstVpl - uIsmFirstVpl + k, vpl, at.x, at.n, d, dist, cosX, iterations)) return;
   vec3 fCamera = scatter(at.vertex, at.n, -d, at.toCamera).f * at.weight;
   vec3 radiance = vplRadianceAt(vpl, fCamera, d, g);
   float path_m = vplPathLength(vpl.positionPath.w, uIndexOfRefraction, dist, at.cameraPath);

@@ -95,10 +95,42 @@ TOFSIM_PHYSICS_FN Scattered scatter(ScatterVertex v, vec3 n, vec3 wi, vec3 wo) {
   return s;
 }
 
+// Whether the vertex lies on a surface: it has a normal, a tangent plane and
+// a side. A medium point (VERTEX_MEDIUM) has none of them: what it shares
+// with a surface point on its way through the gathers, and what differs,
+// function by function, is core/physics/medium_points.md.
+TOFSIM_PHYSICS_FN bool vertexOnSurface(ScatterVertex v) {
+  return vertexModel(v) != VERTEX_MEDIUM;
+}
+
 // The cosine a vertex weighs light arriving along unit w (toward the light)
 // with: n . w on a surface, 1 in a medium (a phase function, no normal).
 TOFSIM_PHYSICS_FN float receiverCosine(ScatterVertex v, vec3 n, vec3 w) {
   return vertexModel(v) == VERTEX_MEDIUM ? 1.0f : dot(n, w);
+}
+
+// receiverCosine with no branch per direction, for a gather that weighs many
+// directions at one vertex (the CPU's vectorised VPL lanes): it equals
+//   receiverCosineOffset(v) + dot(receiverNormal(v, n), w),
+// with the vertex's normal zeroed on a medium point and 1 added there (on a
+// surface the offset is 0, and 0 - a = -a exactly: the same floats).
+TOFSIM_PHYSICS_FN vec3 receiverNormal(ScatterVertex v, vec3 n) {
+  return vertexOnSurface(v) ? n : vec3(0.0f);
+}
+
+TOFSIM_PHYSICS_FN float receiverCosineOffset(ScatterVertex v) {
+  return vertexOnSurface(v) ? 0.0f : 1.0f;
+}
+
+// The normal of the plane a pixel's footprint is measured in at the vertex
+// (surfaceStepAcrossPixel, footprint_kernel.glsl): a surface's tangent plane
+// (n), or for a medium point the plane through it normal to the camera ray
+// (unit direction `ray`): the ray's cross-section at its distance, the area
+// the pixel's cone covers there. (Its extent along the ray, the depth a
+// medium sample stands for, is the driver's to spread in time: the samples'
+// own weights and path times, issue 42.)
+TOFSIM_PHYSICS_FN vec3 footprintPlaneNormal(ScatterVertex v, vec3 n, vec3 ray) {
+  return vertexOnSurface(v) ? n : ray;
 }
 
 // lightArrival (transient_physics.glsl) at vertex v: a medium point takes the

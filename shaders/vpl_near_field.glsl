@@ -167,4 +167,42 @@ TOFSIM_PHYSICS_FN float vplGeometryTerm(float cosVpl, float cosX, float dist2, f
   return patchProjectedSolidAngle(x, n, vplX, patchU, patchV) / length(cross(patchU, patchV));
 }
 
+// A medium point x (no normal: it takes light from every direction, its
+// phase function in scatter()) weighs the patch's light by
+//   integral over the patch of cos_l / d^2 dA = the patch's solid angle seen
+//   from x,
+// the same patch integral as above without x's cosine: at most 2 pi / A (x
+// on the patch's plane, inside it), where the point VPL's cos_l / d^2 has no
+// bound. The solid angle of triangle (a, b, c), corners relative to x, by
+// Van Oosterom and Strackee's formula:
+//   tan(omega / 2) = |a . (b x c)| / (|a||b||c| + (a.b)|c| + (a.c)|b| + (b.c)|a|),
+// with edgeAngle for atan2 (the denominator may be negative: omega > pi).
+TOFSIM_PHYSICS_FN float triangleSolidAngle(vec3 a, vec3 b, vec3 c) {
+  float la = length(a);
+  float lb = length(b);
+  float lc = length(c);
+  float numerator = abs(dot(a, cross(b, c)));
+  float denominator = la * lb * lc + dot(a, b) * lc + dot(a, c) * lb + dot(b, c) * la;
+  return 2.0f * edgeAngle(numerator, denominator);
+}
+
+// Solid angle (sr) of the parallelogram centre +- patchU / 2 +- patchV / 2
+// seen from x: its two triangles c0 c1 c2 and c0 c2 c3.
+TOFSIM_PHYSICS_FN float patchSolidAngle(vec3 x, vec3 centre, vec3 patchU, vec3 patchV) {
+  PatchCorners q = patchCornersFrom(x, centre, patchU, patchV);
+  return triangleSolidAngle(q.c0, q.c1, q.c2) + triangleSolidAngle(q.c0, q.c2, q.c3);
+}
+
+// vplGeometryTerm for a medium point x (receiver cosine 1, receiverCosine):
+// in the near field the patch's solid angle over its area, unclamped (it is
+// bounded); else the point VPL's clamped cos_l / d^2. Only a lit pair asks
+// (cosVpl > 0): x then sees the patch's lit face, all of it (a plane).
+TOFSIM_PHYSICS_FN float vplMediumGeometryTerm(float cosVpl, float dist2, float clampPerM2, vec3 x,
+                                              vec3 vplX, vec3 patchU, vec3 patchV) {
+  if (!vplInNearField(dist2, vplNearFieldLimit(patchU, patchV))) {
+    return geometryTerm(cosVpl, 1.0f, dist2, clampPerM2);
+  }
+  return patchSolidAngle(x, vplX, patchU, patchV) / length(cross(patchU, patchV));
+}
+
 #endif  // TOFSIM_VPL_NEAR_FIELD_GLSL

@@ -42,9 +42,11 @@ TEST(IsmCullTest, EightLanesAtATimeGiveVisiblesVerdicts) {
   const float sceneScale = 1.0f;
   std::uniform_real_distribution<float> u(-1.0f, 1.0f), dist(0.0f, 1.5f);
   std::size_t hidden = 0, shown = 0;
-  // Receivers facing every way: the tolerance's slope from facing the VPL to grazing.
-  const std::array<glm::vec3, 3> receiverNormals{
-      glm::vec3(0, 0, 1), glm::normalize(glm::vec3(1, -2, 0.3f)), glm::vec3(0, -1, 0)};
+  // Receivers facing every way: the tolerance's slope from facing the VPL to
+  // grazing; and a medium point (normal 0, receiver cosine 1: offset 1).
+  const std::array<glm::vec3, 4> receiverNormals{glm::vec3(0, 0, 1),
+                                                 glm::normalize(glm::vec3(1, -2, 0.3f)),
+                                                 glm::vec3(0, -1, 0), glm::vec3(0.0f)};
   for (std::size_t first = 0; first < vpls.size(); first += kVplBlock) {
     const std::size_t n = std::min(kVplBlock, vpls.size() - first);
     for (int round = 0; round < 20; ++round) {
@@ -56,11 +58,13 @@ TEST(IsmCullTest, EightLanesAtATimeGiveVisiblesVerdicts) {
         terms.bin[i] = static_cast<int32_t>(i % 3 == 0 ? kNoLight : 5 + i);
       }
       VplTerms culled = terms;
-      const glm::vec3 receiverNormal = receiverNormals[(first / kVplBlock + round) % 3];
-      ism.cullHidden(first, n, sceneScale, receiverNormal, culled);
+      const glm::vec3 receiverNormal = receiverNormals[(first / kVplBlock + round) % 4];
+      const float offset = receiverNormal == glm::vec3(0.0f) ? 1.0f : 0.0f;
+      ism.cullHidden(first, n, sceneScale, receiverNormal, offset, culled);
       for (std::size_t i = 0; i < n; ++i) {
         const glm::vec3 d(terms.dx[i], terms.dy[i], terms.dz[i]);
-        const bool visible = ism.visible(first + i, d, terms.dist[i], receiverNormal, sceneScale);
+        const bool visible = ism.visible(first + i, d, terms.dist[i], receiverNormal, offset,
+                                         sceneScale);
         const int32_t expected = visible ? terms.bin[i] : kNoLight;
         ASSERT_EQ(culled.bin[i], expected) << "vpl " << first + i << " lane " << i;
         (visible ? shown : hidden) += terms.bin[i] != kNoLight;

@@ -44,6 +44,25 @@ TEST(ScatterVertexTest, AMediumPointIsAnIsotropicPhaseFunctionWithNoCosine) {
   EXPECT_EQ(vertexLightArrival(surface, x, kN, below, LIGHT_POINT, kN, 0.0f, 1.0f).profile, 0.0f);
 }
 
+// The lanes' branch-free receiver cosine (receiverCosineOffset plus the dot
+// with receiverNormal) is receiverCosine: bit for bit on a surface, 1 in a
+// medium whatever normal it was given; the footprint's plane is a surface's
+// tangent plane and a medium point's cross-section of the ray.
+TEST(ScatterVertexTest, TheLanesReceiverCosineAndFootprintPlaneFollowTheVertex) {
+  const ScatterVertex medium = scatterVertex(VERTEX_MEDIUM, kColor, 0.0f, 1.0f);
+  const ScatterVertex surface = scatterVertex(VERTEX_GLTF, kColor, 0.0f, 1.0f);
+  EXPECT_FALSE(vertexOnSurface(medium));
+  EXPECT_TRUE(vertexOnSurface(surface));
+  for (const glm::vec3& w : {kIn, kOut, -kIn, glm::vec3(1.0f, 0.0f, 0.0f)}) {
+    const float lane =
+        receiverCosineOffset(surface) - glm::dot(receiverNormal(surface, kN), -w);
+    EXPECT_EQ(lane, receiverCosine(surface, kN, w));
+    EXPECT_EQ(receiverCosineOffset(medium) + glm::dot(receiverNormal(medium, kN), w), 1.0f);
+  }
+  EXPECT_EQ(footprintPlaneNormal(surface, kN, kOut), kN);
+  EXPECT_EQ(footprintPlaneNormal(medium, glm::vec3(0.0f), kOut), kOut);
+}
+
 TEST(ScatterVertexTest, AVplScattersByOneWhereItsFluxHoldsItElseByItsClampedBrdf) {
   const ScatterVertex lambert = scatterVertex(VERTEX_LAMBERTIAN, kColor, 0.0f, 1.0f);
   EXPECT_TRUE(vplFluxHoldsScatter(lambert));

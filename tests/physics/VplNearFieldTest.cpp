@@ -182,5 +182,37 @@ TEST(VplNearFieldTest, APointVplHasNoNearField) {
             100.0f);
 }
 
+// A medium point's near field (vplMediumGeometryTerm): the patch's solid
+// angle, by Van Oosterom and Strackee's formula, against closed forms: an
+// octant's triangle is pi / 2 from the origin; a square of side a seen on its
+// axis at height h is 4 asin(a^2 / (a^2 + 4 h^2)), 2 pi on its plane inside
+// it and 0 on it outside it.
+TEST(VplNearFieldTest, APatchsSolidAngleMatchesClosedForms) {
+  EXPECT_NEAR(triangleSolidAngle(glm::vec3(1, 0, 0), glm::vec3(0, 1, 0), glm::vec3(0, 0, 1)),
+              1.5707963, 1e-6);
+  const float a = 0.3f;
+  const glm::vec3 u(a, 0.0f, 0.0f), v(0.0f, a, 0.0f), centre(0.5f, -0.2f, 1.0f);
+  for (const float h : {1e-4f, 0.01f, 0.1f, 1.0f, 10.0f}) {
+    const double expected = 4.0 * std::asin(double(a) * a / (double(a) * a + 4.0 * h * h));
+    EXPECT_NEAR(patchSolidAngle(centre + glm::vec3(0, 0, h), centre, u, v), expected,
+                2e-6 + 1e-5 * expected)
+        << "h " << h;
+    // From below: the same (the lit side is the caller's test).
+    EXPECT_NEAR(patchSolidAngle(centre - glm::vec3(0, 0, h), centre, u, v), expected,
+                2e-6 + 1e-5 * expected);
+  }
+  EXPECT_NEAR(patchSolidAngle(centre + glm::vec3(0.05f, 0.1f, 0.0f), centre, u, v), 6.2831853,
+              1e-5);
+  EXPECT_NEAR(patchSolidAngle(centre + glm::vec3(1.0f, 0.0f, 0.0f), centre, u, v), 0.0, 1e-6);
+  // Beyond the near field: the point VPL's cos / d^2, clamped.
+  const float far = 10.0f * a;
+  EXPECT_EQ(vplMediumGeometryTerm(1.0f, far * far, 0.0f, centre + glm::vec3(0, 0, far), centre,
+                                  u, v),
+            1.0f / (far * far));
+  EXPECT_EQ(vplMediumGeometryTerm(1.0f, 1e-4f, 50.0f, centre + glm::vec3(0, 0, far), glm::vec3(0),
+                                  glm::vec3(0), glm::vec3(0)),
+            50.0f);
+}
+
 }  // namespace
 }  // namespace tofsim::physics

@@ -217,9 +217,11 @@ void CpuBackend::mergeSegmentSamples(std::size_t count) {
     TOFSIM_CHECK_EQ(samples, static_cast<std::size_t>(n) * n);
     // Only where every scatter is constant: a glTF BRDF's does not add up as
     // albedos do. The others' lit samples stay as they are, in order.
+    // Nor where a sample is a medium point: it has no plane to be flat in.
     bool constant = true;
     for (std::size_t i = first; i < first + samples; ++i) {
-      constant = constant && physics::scatterIsConstant(segmentSurfaces_[i].vertex);
+      const physics::ScatterVertex& vertex = segmentSurfaces_[i].vertex;
+      constant = constant && physics::scatterIsConstant(vertex) && physics::vertexOnSurface(vertex);
     }
     if (constant) {
       mergePixelSamples(&segmentSurfaces_[first], &segmentLit_[first], n, mergedSurfaces_);
@@ -243,8 +245,9 @@ void CpuBackend::fillSurface(std::size_t i, float weight, const capture::PixelSt
   surface.x = glm::vec3(surfaces_->position[p]);
   surface.camera = viewpoint;
   surface.lensPath_m = surfaces_->lensPathOf(p);
-  surface.n = glm::vec3(surfaces_->normal[p]);
   surface.vertex = surfaces_->vertex[p];
+  surface.n = physics::receiverNormal(surface.vertex, glm::vec3(surfaces_->normal[p]));
+  surface.cosineOffset = physics::receiverCosineOffset(surface.vertex);
   surface.toCamera = glm::normalize(viewpoint - surface.x);
   surface.weight = weight;
   // The constant scatter's f (the directions do not matter to it).
@@ -252,7 +255,10 @@ void CpuBackend::fillSurface(std::size_t i, float weight, const capture::PixelSt
       physics::scatter(surface.vertex, surface.n, surface.toCamera, surface.toCamera).f * weight;
   surface.cameraPath_m = physics::cameraPathLength(
       dropLastLeg_, eta, glm::length(surface.x - viewpoint) + surface.lensPath_m);
-  const capture::FootprintSteps footprint = steps.at(surface.x, surface.n, viewpoint);
+  // On a surface its tangent plane; at a medium point the ray's cross-section.
+  const capture::FootprintSteps footprint = steps.at(
+      surface.x, physics::footprintPlaneNormal(surface.vertex, surface.n, -surface.toCamera),
+      viewpoint);
   surface.dxdu = footprint.dxdu;
   surface.dxdv = footprint.dxdv;
 }
@@ -326,7 +332,9 @@ void CpuBackend::gatherPixelBlock(const IndirectConstants& c, std::size_t first,
   for (std::size_t s = 0; s < perPixel; ++s) {
     if (lit && !lit[s]) continue;
     vplTerms(surfaces[s], v, first, n, c.kernel, terms[s]);
-    if (ism) ism->cullHidden(first, n, sceneScale_m_, surfaces[s].n, terms[s]);
+    if (ism) {
+      ism->cullHidden(first, n, sceneScale_m_, surfaces[s].n, surfaces[s].cosineOffset, terms[s]);
+    }
   }
   std::size_t visible = 0;  // contributions in `pairs`
   if (footprint && !exact) {

@@ -23,6 +23,7 @@ struct CullLanes {
   int resolution;
   float scaleBias;          ///< 0.01 scene scale, as visible()
   glm::vec3 receiverNormal; ///< the pixel sample's normal (the bias's slope)
+  float cosineOffset;       ///< its receiver cosine's offset (PixelSurface::cosineOffset)
 };
 
 // visible()'s steps lane by lane: paraboloidTexelOf with the VPL's basis
@@ -46,6 +47,7 @@ __attribute__((target_clones("avx2", "default"))) void cullLanes(const CullLanes
   const float rf = static_cast<float>(r), perTexel = 4.0f / static_cast<float>(r);
   const float scaleBias = c.scaleBias;
   const float rnx = c.receiverNormal.x, rny = c.receiverNormal.y, rnz = c.receiverNormal.z;
+  const float cosineOffset = c.cosineOffset;
   for (std::size_t i = 0; i < n; ++i) {
     const float dx = terms.dx[i], dy = terms.dy[i], dz = terms.dz[i], dist = terms.dist[i];
     const float lx = tx[i] * dx + ty[i] * dy + tz[i] * dz;
@@ -56,7 +58,7 @@ __attribute__((target_clones("avx2", "default"))) void cullLanes(const CullLanes
     const int texelX = std::clamp(static_cast<int>(u * rf), 0, r - 1);
     const int texelY = std::clamp(static_cast<int>(v * rf), 0, r - 1);
     const float stored = maps[static_cast<int>(i) * stride + texelY * r + texelX];
-    const float cosX = -(rnx * dx + rny * dy + rnz * dz);
+    const float cosX = cosineOffset - (rnx * dx + rny * dy + rnz * dz);
     const float bias = physics::ismDepthBias(dist, cosX, perTexel, scaleBias);
     const bool hidden = !(dist - bias <= stored);
     terms.bin[i] = hidden ? kNoLight : terms.bin[i];
@@ -170,25 +172,27 @@ void CpuIsm::build(std::size_t firstVpl, std::size_t count, int threads) {
 }
 
 bool CpuIsm::visible(std::size_t vpl, const glm::vec3& d, float dist, const glm::vec3& receiverNormal,
-                     float sceneScale_m) const {
+                     float receiverCosineOffset, float sceneScale_m) const {
   // The ISM branch of visible() in indirect_gather.comp.
   const int r = settings_.ism_resolution;
   const glm::ivec2 t = physics::paraboloidTexelOf(vplNormal_[vpl], d, r);
   const float stored = map(vpl)[t.y * r + t.x];
-  const float cosX = -(receiverNormal.x * d.x + receiverNormal.y * d.y + receiverNormal.z * d.z);
+  const float cosX = receiverCosineOffset -
+                     (receiverNormal.x * d.x + receiverNormal.y * d.y + receiverNormal.z * d.z);
   const float bias =
       physics::ismDepthBias(dist, cosX, 4.0f / static_cast<float>(r), 0.01f * sceneScale_m);
   return dist - bias <= stored;
 }
 
 void CpuIsm::cullHidden(std::size_t first, std::size_t n, float sceneScale_m,
-                        const glm::vec3& receiverNormal, VplTerms& terms) const {
+                        const glm::vec3& receiverNormal, float receiverCosineOffset,
+                        VplTerms& terms) const {
   TOFSIM_CHECK(first >= firstVpl_ && first + n <= firstVpl_ + builtCount_);
   const CullLanes lanes{tx_.data() + first, ty_.data() + first, tz_.data() + first,
                         bx_.data() + first, by_.data() + first, bz_.data() + first,
                         nx_.data() + first, ny_.data() + first, nz_.data() + first,
                         map(first),         floatsPerVpl_,      settings_.ism_resolution,
-                        0.01f * sceneScale_m, receiverNormal};
+                        0.01f * sceneScale_m, receiverNormal,     receiverCosineOffset};
   cullLanes(lanes, n, terms);
 }
 

@@ -35,14 +35,17 @@ class CpuIsm {
   /// Whether VPL `vpl` (of the built batch) sees the point at `dist` along
   /// unit `d`: indirect_gather.comp's test, one pair at a time. The gather
   /// uses cullHidden; this is the recipe IsmCullTest holds it to.
-  /// `receiverNormal`: the lit point's (the tolerance's slope, ismDepthBias).
+  /// `receiverNormal`, `receiverCosineOffset`: the lit point's
+  /// (PixelSurface::n, ::cosineOffset): its receiver cosine sets the
+  /// tolerance's slope (ismDepthBias), none for a medium point (cosine 1).
   bool visible(std::size_t vpl, const glm::vec3& d, float dist, const glm::vec3& receiverNormal,
-               float sceneScale_m) const;
+               float receiverCosineOffset, float sceneScale_m) const;
   /// visible() for the n lanes of a block of VPLs [first, first + n) at once:
   /// a lane the map hides gets bin kNoLight. The same float operations, eight
   /// lanes per instruction with AVX2 (the map reads a gather).
   void cullHidden(std::size_t first, std::size_t n, float sceneScale_m,
-                  const glm::vec3& receiverNormal, VplTerms& terms) const;
+                  const glm::vec3& receiverNormal, float receiverCosineOffset,
+                  VplTerms& terms) const;
   /// The finest level of VPL `vpl`'s map (resolution^2 floats, +inf = empty).
   const float* map(std::size_t vpl) const { return &maps_[(vpl - firstVpl_) * floatsPerVpl_]; }
 

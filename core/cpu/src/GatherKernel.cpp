@@ -1,5 +1,6 @@
 #include "GatherKernel.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "tofsim/physics/FootprintKernel.h"
@@ -64,6 +65,19 @@ __attribute__((target_clones("avx2", "default"))) void vplKernels(const PixelSur
   }
 }
 
+// physics::vplGeometryTerm of VPL k at x, or vplMediumGeometryTerm where x
+// is a medium point (no plane to project the near field's patch onto: its
+// solid angle instead); cosX is the receiver cosine (PixelSurface::n, ::cosineOffset).
+float geometryAt(const PixelSurface& s, const VplArrays& v, std::size_t k, float cosVpl,
+                 float cosX, float dist2, float clampPerM2) {
+  const glm::vec3 vplX(v.px[k], v.py[k], v.pz[k]), patchU(v.ux[k], v.uy[k], v.uz[k]),
+      patchV(v.vx[k], v.vy[k], v.vz[k]);
+  if (!physics::vertexOnSurface(s.vertex)) {
+    return physics::vplMediumGeometryTerm(cosVpl, dist2, clampPerM2, s.x, vplX, patchU, patchV);
+  }
+  return physics::vplGeometryTerm(cosVpl, cosX, dist2, clampPerM2, s.x, s.n, vplX, patchU, patchV);
+}
+
 // The block's radiance where x's scatter depends on the directions or the
 // VPLs scatter what they send (a glTF BRDF at either end), contribution by
 // contribution as indirect_gather.comp computes every one, from the
@@ -78,10 +92,8 @@ void scatteredRadiance(const PixelSurface& s, const VplArrays& v, std::size_t fi
     const glm::vec3 vplN(v.nx[k], v.ny[k], v.nz[k]);
     const glm::vec3 toX = s.x - glm::vec3(v.px[k], v.py[k], v.pz[k]);
     const float dist2 = glm::dot(toX, toX);
-    const float g = physics::vplGeometryTerm(
-        glm::dot(vplN, d), -glm::dot(s.n, d), dist2, c.geometryClamp, s.x, s.n,
-        glm::vec3(v.px[k], v.py[k], v.pz[k]), glm::vec3(v.ux[k], v.uy[k], v.uz[k]),
-        glm::vec3(v.vx[k], v.vy[k], v.vz[k]));
+    const float g = geometryAt(s, v, k, glm::dot(vplN, d), s.cosineOffset - glm::dot(s.n, d),
+                               dist2, c.geometryClamp);
     const glm::vec3 fVpl = v.scatterToward(k, d, c.vplBrdfClamp);
     const glm::vec3 fCamera = physics::scatter(s.vertex, s.n, -d, s.toCamera).f * s.weight;
     const glm::vec3 radiance =
@@ -140,17 +152,22 @@ void nearFieldRadiance(const PixelSurface& s, const VplArrays& v, std::size_t fi
   if (m == 0) return;
   alignas(64) float g[kVplBlock];
   alignas(64) int32_t clipped[kVplBlock];
-  unclippedNearField(s, v, first, lanes, m, g, clipped);
+  // A medium point has no horizon to clip at: every lane one by one
+  // (geometryAt).
+  const bool onSurface = physics::vertexOnSurface(s.vertex);
+  if (onSurface) {
+    unclippedNearField(s, v, first, lanes, m, g, clipped);
+  } else {
+    std::fill_n(clipped, m, 1);
+  }
   for (std::size_t j = 0; j < m; ++j) {
     const std::size_t i = static_cast<std::size_t>(lanes[j]), k = first + i;
     float gi = g[j];
     if (clipped[j]) {
       const glm::vec3 d(terms.dx[i], terms.dy[i], terms.dz[i]);
-      gi = physics::vplGeometryTerm(
-          v.nx[k] * d.x + v.ny[k] * d.y + v.nz[k] * d.z,
-          -(s.n.x * d.x + s.n.y * d.y + s.n.z * d.z), dist2Of(s, v, k), c.geometryClamp, s.x, s.n,
-          glm::vec3(v.px[k], v.py[k], v.pz[k]), glm::vec3(v.ux[k], v.uy[k], v.uz[k]),
-          glm::vec3(v.vx[k], v.vy[k], v.vz[k]));
+      gi = geometryAt(s, v, k, v.nx[k] * d.x + v.ny[k] * d.y + v.nz[k] * d.z,
+                      s.cosineOffset - (s.n.x * d.x + s.n.y * d.y + s.n.z * d.z),
+                      dist2Of(s, v, k), c.geometryClamp);
     }
     terms.r[i] = s.brdf.r * v.fr[k] * gi;
     terms.g[i] = s.brdf.g * v.fg[k] * gi;
@@ -184,6 +201,7 @@ __attribute__((target_clones("avx2", "default"))) void vplTerms(const PixelSurfa
   // vectoriser passes its limit of ten and leaves the loop scalar (it did so
   // from the near field on, b100e61).
   const glm::vec3 x = s.x, normal = s.n, brdf = s.brdf;
+  const float cosineOffset = s.cosineOffset;  // 1 at a medium point (n = 0), else 0
   const float cameraPath = s.cameraPath_m, eta = c.indexOfRefraction, clamp = c.geometryClamp;
   const float start = c.start_m, width = c.binWidth_m;
   const float offAxis_m = start - 2.0f * width;  // a finite path for dark lanes
@@ -195,7 +213,7 @@ __attribute__((target_clones("avx2", "default"))) void vplTerms(const PixelSurfa
     const float dist = std::sqrt(dist2);
     const float dx = tx / dist, dy = ty / dist, dz = tz / dist;
     const float cosVpl = nx[i] * dx + ny[i] * dy + nz[i] * dz;
-    const float cosX = -(normal.x * dx + normal.y * dy + normal.z * dz);
+    const float cosX = cosineOffset - (normal.x * dx + normal.y * dy + normal.z * dz);
     // & rather than &&: no branch, so the loop vectorises.
     const bool lit = (dist2 > 0.0f) & (cosVpl > 0.0f) & (cosX > 0.0f);
     const float g = physics::geometryTerm(cosVpl, cosX, dist2, clamp);

@@ -27,7 +27,13 @@ constexpr int kFootprintDirectBins = 16;  ///< = FOOTPRINT_DIRECT_BINS (checked 
 /// The camera G-buffer of one pixel, as the gather needs it.
 struct PixelSurface {
   glm::vec3 x{0.0f};  ///< world position, m
-  glm::vec3 n{0.0f};  ///< unit normal facing the camera (0 for a medium point)
+  /// Unit normal facing the camera; 0 for a medium point
+  /// (physics::receiverNormal), whose receiver cosine is cosineOffset.
+  glm::vec3 n{0.0f};
+  /// physics::receiverCosineOffset: the receiver cosine toward unit w is
+  /// cosineOffset + dot(n, w) (1 in a medium, n . w on a surface), with no
+  /// branch per VPL.
+  float cosineOffset = 0.0f;
   /// Where the vertex's scatter is constant (physics::scatterIsConstant: a
   /// Lambertian surface, albedo / pi), its f times the sample's weight
   /// 1 / N^2: the factor the vectorised pass multiplies by.
