@@ -46,8 +46,10 @@ ir::Vpl pointVpl(const glm::vec3& at, const glm::vec3& normal, const glm::vec3& 
   return v;
 }
 
-// Given medium samples, one per point, seen from `origin`.
-ir::SurfaceImage mediumSamples(const std::vector<glm::vec3>& points, const glm::vec3& albedo) {
+// Given medium samples, one per point, with `normal` (which a medium point
+// ignores: physics::receiverNormal).
+ir::SurfaceImage mediumSamples(const std::vector<glm::vec3>& points, const glm::vec3& albedo,
+                               const glm::vec3& normal = glm::vec3(0.0f)) {
   ir::SurfaceImage s;
   s.width = static_cast<int32_t>(points.size());
   s.height = 1;
@@ -55,7 +57,7 @@ ir::SurfaceImage mediumSamples(const std::vector<glm::vec3>& points, const glm::
   s.side.assign(points.size(), 1);
   for (const glm::vec3& x : points) {
     s.position.emplace_back(x, 1.0f);
-    s.normal.emplace_back(0.0f);
+    s.normal.emplace_back(normal, 0.0f);
     s.vertex.push_back(physics::scatterVertex(physics::VERTEX_MEDIUM, albedo, 0.0f, 1.0f));
     s.geometric.emplace_back(0.0f);
   }
@@ -112,8 +114,9 @@ TEST(MediumIndirectTest, AVplLightsMediumPointsWithNoReceiverCosineInTheirBins) 
 }
 
 // A pixel's 2 x 2 medium samples in one plane are not a flat surface to be
-// merged (render.indirect.merge_pixel_samples): each keeps its own place,
-// and the pixel receives the mean of their closed forms, merged or not.
+// merged (render.indirect.merge_pixel_samples), even where the driver gave
+// them that plane's normal: each keeps its own place, and the pixel receives
+// the mean of their closed forms, merged or not.
 TEST(MediumIndirectTest, MediumSamplesAreNotMergedAsAFlatSurface) {
   scene::Scene scene;
   test::addQuad(scene, glm::vec3(0.0f, 0.0f, -5.0f), glm::vec3(0, 0, 1), 1.0f, glm::vec3(0.5f));
@@ -123,7 +126,7 @@ TEST(MediumIndirectTest, MediumSamplesAreNotMergedAsAFlatSurface) {
       {-0.2f, 0.0f, 0.3f}, {0.2f, 0.0f, 0.3f}, {-0.2f, 0.0f, 0.7f}, {0.2f, 0.0f, 0.7f}};
   const ir::Vpl vpl = pointVpl(glm::vec3(0.0f), glm::vec3(0, 0, 1), glm::vec3(0.3f, 0.2f, 0.1f),
                                1.0f);
-  ir::SurfaceImage given = mediumSamples(points, albedo);
+  ir::SurfaceImage given = mediumSamples(points, albedo, glm::vec3(0.0f, -1.0f, 0.0f));
   given.width = 1;
   given.firstSample = {0, points.size()};
   given.side = {2};
