@@ -148,7 +148,8 @@ Verdicts ismVerdicts(const Setup& s, const capture::IndirectSettings& settings, 
     const float cosX = -glm::dot(s.n[p.pixel], d);
     out.oldBias[j] = p.dist - (p.dist * texelAngle + sceneBias) <= stored;
     out.newBias[j] = p.dist - physics::ismDepthBias(p.dist, cosX, texelAngle, sceneBias) <= stored;
-    disagree[j] = out.newBias[j] != ism.visible(p.vpl, d, p.dist, s.n[p.pixel], 0.0f, s.sceneScale_m);
+    disagree[j] =
+        out.newBias[j] != ism.visible(p.vpl, d, p.dist, s.n[p.pixel], 0.0f, s.sceneScale_m);
   });
   std::size_t n = 0;
   for (std::size_t c : disagree) n += c;

@@ -63,8 +63,8 @@ TEST(IsmCullTest, EightLanesAtATimeGiveVisiblesVerdicts) {
       ism.cullHidden(first, n, sceneScale, receiverNormal, offset, culled);
       for (std::size_t i = 0; i < n; ++i) {
         const glm::vec3 d(terms.dx[i], terms.dy[i], terms.dz[i]);
-        const bool visible = ism.visible(first + i, d, terms.dist[i], receiverNormal, offset,
-                                         sceneScale);
+        const bool visible =
+            ism.visible(first + i, d, terms.dist[i], receiverNormal, offset, sceneScale);
         const int32_t expected = visible ? terms.bin[i] : kNoLight;
         ASSERT_EQ(culled.bin[i], expected) << "vpl " << first + i << " lane " << i;
         (visible ? shown : hidden) += terms.bin[i] != kNoLight;

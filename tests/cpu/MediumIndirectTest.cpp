@@ -69,11 +69,13 @@ TEST(MediumIndirectTest, AVplLightsMediumPointsWithNoReceiverCosineInTheirBins) 
   test::addQuad(scene, glm::vec3(0.0f, 0.0f, -5.0f), glm::vec3(0, 0, 1), 1.0f, glm::vec3(0.5f));
   const glm::vec3 albedo(0.6f, 0.5f, 0.4f), origin(0.0f, -2.0f, 0.5f);
   // Above the VPL's plane at several angles, and one below it (dark).
-  const std::vector<glm::vec3> points{
-      {0.3f, 0.0f, 0.5f}, {-0.4f, 0.2f, 0.8f}, {0.0f, 0.0f, 1.2f}, {0.9f, 0.1f, 0.05f},
-      {0.5f, 0.0f, -0.3f}};
-  const ir::Vpl vpl = pointVpl(glm::vec3(0.0f), glm::vec3(0, 0, 1), glm::vec3(0.3f, 0.2f, 0.1f),
-                               1.25f);
+  const std::vector<glm::vec3> points{{0.3f, 0.0f, 0.5f},
+                                      {-0.4f, 0.2f, 0.8f},
+                                      {0.0f, 0.0f, 1.2f},
+                                      {0.9f, 0.1f, 0.05f},
+                                      {0.5f, 0.0f, -0.3f}};
+  const ir::Vpl vpl =
+      pointVpl(glm::vec3(0.0f), glm::vec3(0, 0, 1), glm::vec3(0.3f, 0.2f, 0.1f), 1.25f);
   capture::RenderJob job;
   job.scene = &scene;
   capture::PointSetImager imager;
@@ -97,8 +99,8 @@ TEST(MediumIndirectTest, AVplLightsMediumPointsWithNoReceiverCosineInTheirBins) 
     const auto x = static_cast<int32_t>(p);
     const glm::vec3 toX = points[p] - glm::vec3(vpl.positionPath);
     const double r = glm::length(toX), cosVpl = std::max(0.0, double(toX.z) / r);
-    const int bin =
-        axis.binOf((vpl.positionPath.w + r + glm::length(origin - points[p])) / kSpeedOfLight_m_per_s);
+    const int bin = axis.binOf((vpl.positionPath.w + r + glm::length(origin - points[p])) /
+                               kSpeedOfLight_m_per_s);
     for (int c = 0; c < 3; ++c) {
       // albedo / (4 pi) * I_vpl cos_l / r^2, I_vpl = flux (W/sr).
       const double expected = albedo[c] / (4.0 * kPi) * vpl.flux[c] * cosVpl / (r * r);
@@ -124,8 +126,8 @@ TEST(MediumIndirectTest, MediumSamplesAreNotMergedAsAFlatSurface) {
   const glm::vec3 albedo(0.6f, 0.5f, 0.4f), origin(0.3f, -2.0f, 0.5f);
   const std::vector<glm::vec3> points{
       {-0.2f, 0.0f, 0.3f}, {0.2f, 0.0f, 0.3f}, {-0.2f, 0.0f, 0.7f}, {0.2f, 0.0f, 0.7f}};
-  const ir::Vpl vpl = pointVpl(glm::vec3(0.0f), glm::vec3(0, 0, 1), glm::vec3(0.3f, 0.2f, 0.1f),
-                               1.0f);
+  const ir::Vpl vpl =
+      pointVpl(glm::vec3(0.0f), glm::vec3(0, 0, 1), glm::vec3(0.3f, 0.2f, 0.1f), 1.0f);
   ir::SurfaceImage given = mediumSamples(points, albedo, glm::vec3(0.0f, -1.0f, 0.0f));
   given.width = 1;
   given.firstSample = {0, points.size()};
@@ -155,9 +157,9 @@ TEST(MediumIndirectTest, MediumSamplesAreNotMergedAsAFlatSurface) {
     job.settings.indirect.merge_pixel_samples = merge;
     capture::VolumeCollector volume(1, 1, axis, capture::kChannels);
     auto backend = std::make_unique<GivenVplsBackend>(std::vector<ir::Vpl>{vpl});
-    backend->setSurfaces(std::make_unique<ir::SurfaceImage>(given),
-                         std::make_unique<ir::SurfaceImage>(
-                             mediumSamples({glm::vec3(0.0f, 0.0f, 0.5f)}, albedo)));
+    backend->setSurfaces(
+        std::make_unique<ir::SurfaceImage>(given),
+        std::make_unique<ir::SurfaceImage>(mediumSamples({glm::vec3(0.0f, 0.0f, 0.5f)}, albedo)));
     ir::IrRenderer(std::move(backend)).render(job, volume);
     double sum = 0.0;
     int binsLit = 0;
@@ -242,10 +244,10 @@ TEST(MediumIndirectTest, TheIsmHidesAMediumPointBehindAPlateAndNotOneInTheOpen) 
     ism.cullHidden(0, 1, 1.0f, n, offset, terms);
     return terms.bin[0] != kNoLight;
   };
-  EXPECT_FALSE(lit(glm::vec3(0.0f, 0.0f, 1.0f)));    // behind the plate
-  EXPECT_FALSE(lit(glm::vec3(0.05f, 0.0f, 0.8f)));   // behind it, off the axis
-  EXPECT_TRUE(lit(glm::vec3(1.0f, 0.0f, 0.6f)));     // in the open
-  EXPECT_TRUE(lit(glm::vec3(0.0f, -0.3f, 0.2f)));    // between the VPL and the plate's side
+  EXPECT_FALSE(lit(glm::vec3(0.0f, 0.0f, 1.0f)));   // behind the plate
+  EXPECT_FALSE(lit(glm::vec3(0.05f, 0.0f, 0.8f)));  // behind it, off the axis
+  EXPECT_TRUE(lit(glm::vec3(1.0f, 0.0f, 0.6f)));    // in the open
+  EXPECT_TRUE(lit(glm::vec3(0.0f, -0.3f, 0.2f)));   // between the VPL and the plate's side
 }
 
 }  // namespace

@@ -54,8 +54,7 @@ TEST(ScatterVertexTest, TheLanesReceiverCosineAndFootprintPlaneFollowTheVertex) 
   EXPECT_FALSE(vertexOnSurface(medium));
   EXPECT_TRUE(vertexOnSurface(surface));
   for (const glm::vec3& w : {kIn, kOut, -kIn, glm::vec3(1.0f, 0.0f, 0.0f)}) {
-    const float lane =
-        receiverCosineOffset(surface) - glm::dot(receiverNormal(surface, kN), -w);
+    const float lane = receiverCosineOffset(surface) - glm::dot(receiverNormal(surface, kN), -w);
     EXPECT_EQ(lane, receiverCosine(surface, kN, w));
     EXPECT_EQ(receiverCosineOffset(medium) + glm::dot(receiverNormal(medium, kN), w), 1.0f);
   }

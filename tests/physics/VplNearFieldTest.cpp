@@ -206,9 +206,9 @@ TEST(VplNearFieldTest, APatchsSolidAngleMatchesClosedForms) {
   EXPECT_NEAR(patchSolidAngle(centre + glm::vec3(1.0f, 0.0f, 0.0f), centre, u, v), 0.0, 1e-6);
   // Beyond the near field: the point VPL's cos / d^2, clamped.
   const float far = 10.0f * a;
-  EXPECT_EQ(vplMediumGeometryTerm(1.0f, far * far, 0.0f, centre + glm::vec3(0, 0, far), centre,
-                                  u, v),
-            1.0f / (far * far));
+  EXPECT_EQ(
+      vplMediumGeometryTerm(1.0f, far * far, 0.0f, centre + glm::vec3(0, 0, far), centre, u, v),
+      1.0f / (far * far));
   EXPECT_EQ(vplMediumGeometryTerm(1.0f, 1e-4f, 50.0f, centre + glm::vec3(0, 0, far), glm::vec3(0),
                                   glm::vec3(0), glm::vec3(0)),
             50.0f);

@@ -171,8 +171,9 @@ void CpuIsm::build(std::size_t firstVpl, std::size_t count, int threads) {
   });
 }
 
-bool CpuIsm::visible(std::size_t vpl, const glm::vec3& d, float dist, const glm::vec3& receiverNormal,
-                     float receiverCosineOffset, float sceneScale_m) const {
+bool CpuIsm::visible(std::size_t vpl, const glm::vec3& d, float dist,
+                     const glm::vec3& receiverNormal, float receiverCosineOffset,
+                     float sceneScale_m) const {
   // The ISM branch of visible() in indirect_gather.comp.
   const int r = settings_.ism_resolution;
   const glm::ivec2 t = physics::paraboloidTexelOf(vplNormal_[vpl], d, r);
@@ -188,10 +189,10 @@ void CpuIsm::cullHidden(std::size_t first, std::size_t n, float sceneScale_m,
                         const glm::vec3& receiverNormal, float receiverCosineOffset,
                         VplTerms& terms) const {
   TOFSIM_CHECK(first >= firstVpl_ && first + n <= firstVpl_ + builtCount_);
-  const CullLanes lanes{tx_.data() + first, ty_.data() + first, tz_.data() + first,
-                        bx_.data() + first, by_.data() + first, bz_.data() + first,
-                        nx_.data() + first, ny_.data() + first, nz_.data() + first,
-                        map(first),         floatsPerVpl_,      settings_.ism_resolution,
+  const CullLanes lanes{tx_.data() + first,   ty_.data() + first, tz_.data() + first,
+                        bx_.data() + first,   by_.data() + first, bz_.data() + first,
+                        nx_.data() + first,   ny_.data() + first, nz_.data() + first,
+                        map(first),           floatsPerVpl_,      settings_.ism_resolution,
                         0.01f * sceneScale_m, receiverNormal,     receiverCosineOffset};
   cullLanes(lanes, n, terms);
 }

@@ -67,9 +67,10 @@ __attribute__((target_clones("avx2", "default"))) void vplKernels(const PixelSur
 
 // physics::vplGeometryTerm of VPL k at x, or vplMediumGeometryTerm where x
 // is a medium point (no plane to project the near field's patch onto: its
-// solid angle instead); cosX is the receiver cosine (PixelSurface::n, ::cosineOffset).
-float geometryAt(const PixelSurface& s, const VplArrays& v, std::size_t k, float cosVpl,
-                 float cosX, float dist2, float clampPerM2) {
+// solid angle instead); cosX is the receiver cosine (PixelSurface::n,
+// ::cosineOffset).
+float geometryAt(const PixelSurface& s, const VplArrays& v, std::size_t k, float cosVpl, float cosX,
+                 float dist2, float clampPerM2) {
   const glm::vec3 vplX(v.px[k], v.py[k], v.pz[k]), patchU(v.ux[k], v.uy[k], v.uz[k]),
       patchV(v.vx[k], v.vy[k], v.vz[k]);
   if (!physics::vertexOnSurface(s.vertex)) {
@@ -92,8 +93,8 @@ void scatteredRadiance(const PixelSurface& s, const VplArrays& v, std::size_t fi
     const glm::vec3 vplN(v.nx[k], v.ny[k], v.nz[k]);
     const glm::vec3 toX = s.x - glm::vec3(v.px[k], v.py[k], v.pz[k]);
     const float dist2 = glm::dot(toX, toX);
-    const float g = geometryAt(s, v, k, glm::dot(vplN, d), s.cosineOffset - glm::dot(s.n, d),
-                               dist2, c.geometryClamp);
+    const float g = geometryAt(s, v, k, glm::dot(vplN, d), s.cosineOffset - glm::dot(s.n, d), dist2,
+                               c.geometryClamp);
     const glm::vec3 fVpl = v.scatterToward(k, d, c.vplBrdfClamp);
     const glm::vec3 fCamera = physics::scatter(s.vertex, s.n, -d, s.toCamera).f * s.weight;
     const glm::vec3 radiance =
@@ -166,8 +167,8 @@ void nearFieldRadiance(const PixelSurface& s, const VplArrays& v, std::size_t fi
     if (clipped[j]) {
       const glm::vec3 d(terms.dx[i], terms.dy[i], terms.dz[i]);
       gi = geometryAt(s, v, k, v.nx[k] * d.x + v.ny[k] * d.y + v.nz[k] * d.z,
-                      s.cosineOffset - (s.n.x * d.x + s.n.y * d.y + s.n.z * d.z),
-                      dist2Of(s, v, k), c.geometryClamp);
+                      s.cosineOffset - (s.n.x * d.x + s.n.y * d.y + s.n.z * d.z), dist2Of(s, v, k),
+                      c.geometryClamp);
     }
     terms.r[i] = s.brdf.r * v.fr[k] * gi;
     terms.g[i] = s.brdf.g * v.fg[k] * gi;
