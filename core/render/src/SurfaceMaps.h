@@ -52,7 +52,7 @@ struct SurfaceMaps {
 };
 
 /// Whether maps of surfaces whose vertices have `vertexModel`
-/// (physics::VERTEX_*) carry (metallic, roughness): the glTF BRDF's.
+/// (physics::VERTEX_*) carry the metallic-roughness texel: the glTF BRDF's.
 inline bool mapsMetallicRoughness(int vertexModel) { return vertexModel == physics::VERTEX_GLTF; }
 
 /// Near and far planes that enclose the scene's bounds seen from `eye`.
