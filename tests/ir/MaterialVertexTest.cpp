@@ -9,9 +9,6 @@
 
 #include "tofsim/ir/HitVertex.h"
 #include "tofsim/ir/MaterialVertex.h"
-#include "scene/GltfTestFiles.h"
-#include "tofsim/scene/GltfLoader.h"
-#include <filesystem>
 
 namespace tofsim::ir {
 namespace {
@@ -59,21 +56,6 @@ TEST(MaterialVertexTest, AHitsVertexIsItsMaterialsTimesItsTexels) {
   EXPECT_EQ(v.color.w, s.materials[1].metallic * 0.25f);
   EXPECT_EQ(v.roughness, s.materials[1].roughness * 0.5f);
   EXPECT_EQ(v.model, physics::VERTEX_GLTF);
-}
-
-// THROWAWAY (issue 40 (a)): a glTF material's extras.albedo_scale reaches
-// its table entry and scatter() (the one every gather calls).
-TEST(MaterialVertexTest, ThrowawayAlbedoScaleFromExtrasReachesScatter) {
-  const auto path = std::filesystem::temp_directory_path() / "mat40_albedo_scale.gltf";
-  test::writeText(path, test::triangleGltf(R"("nodes": [{"mesh": 0}], "scenes": [{"nodes": [0]}],
-      "materials": [{"name": "half", "pbrMetallicRoughness": {"baseColorFactor": [0.8, 0.6, 0.4, 1]},
-                     "extras": {"albedo_scale": 0.5}}])"));
-  const scene::Scene s = scene::loadGltf(path);
-  std::filesystem::remove(path);
-  const auto table = materialVertices(s, physics::VERTEX_LAMBERTIAN);
-  EXPECT_EQ(glm::vec3(table.at(0).color), s.materials[0].albedo * 0.5f);
-  const glm::vec3 n(0, 0, 1);
-  EXPECT_EQ(physics::scatter(table.at(0), n, n, n).f, s.materials[0].albedo * 0.5f / physics::PI);
 }
 
 }  // namespace

@@ -3,7 +3,7 @@
 namespace tofsim::ir {
 
 physics::ScatterVertex materialVertex(const scene::Material& m, int model) {
-  return physics::scatterVertex(model, m.albedo * m.albedoScale, m.metallic, m.roughness);
+  return physics::scatterVertex(model, m.albedo, m.metallic, m.roughness);
 }
 
 std::vector<physics::ScatterVertex> materialVertices(const scene::Scene& scene, int model) {

@@ -93,9 +93,6 @@ void convertMaterials(const GltfDocument& doc, Scene& scene, LoadReport& report)
                                 std::to_string(m.metallicRoughnessTexCoord) +
                                 " for its metallic-roughness");
     }
-    if (const auto it = m.extras.find("albedo_scale"); it != m.extras.end()) {
-      out.albedoScale = std::stof(it->second);  // THROWAWAY (issue 40 (a))
-    }
     report.metallicMaterials += m.metallic;
     report.emissiveMaterials += m.emissive;
     report.transmissiveMaterials += m.transmissive;

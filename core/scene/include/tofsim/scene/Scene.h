@@ -32,7 +32,6 @@ struct Material {
   float metallic = 0.0f;                  ///< in [0, 1]
   float roughness = 1.0f;                 ///< perceptual roughness in [0, 1]; alpha = roughness^2
   int32_t metallicRoughnessTexture = -1;  ///< index into Scene::textures (B metal, G rough), or -1
-  float albedoScale = 1.0f;               ///< THROWAWAY (issue 40 (a)): extras.albedo_scale
 };
 
 /// One triangle list with one material, in world space.
