@@ -66,7 +66,10 @@ void SurfaceMaps::load(const ir::SurfaceImage& samples, int32_t samplesPerSide,
   TOFSIM_CHECK(position.width() == samples.width * n && position.height() == samples.height * n);
   const auto texels = static_cast<std::size_t>(position.width()) * position.height();
   // The index travels as a float: exact below 2^24.
-  TOFSIM_CHECK(firstVertex + samples.vertex.size() <= (std::size_t{1} << 24));
+  if (firstVertex + samples.vertex.size() > (std::size_t{1} << 24)) {
+    throw InputError("the GL backend's G-buffer indexes at most 2^24 given samples (" +
+                     std::to_string(samples.vertex.size()) + " given); use render.backend: cpu");
+  }
   std::vector<glm::vec4> positions(texels), normals(texels), albedos(texels);
   std::vector<glm::vec2> metallicRoughnesses(withMetallicRoughness_ ? texels : 0,
                                              glm::vec2(1.0f));
