@@ -59,6 +59,18 @@ TOFSIM_PHYSICS_FN ScatterVertex scatterVertex(int model, vec3 color, float metal
   return v;
 }
 
+// Vertex v (a material's, ir::materialVertex) at a point where its textures
+// give baseColorTexel (rgb, 1 where it has no base-colour texture) and
+// metallicRoughnessTexel (the texture's (b, g), 1 where none): the factors
+// times the texels, glTF's rule. The one per-point step of a material, on a
+// traced hit (ir::hitVertex) and a G-buffer texel (surface_samples.glsl).
+TOFSIM_PHYSICS_FN ScatterVertex texturedVertex(ScatterVertex v, vec3 baseColorTexel,
+                                               vec2 metallicRoughnessTexel) {
+  v.color = vec4(vec3(v.color) * baseColorTexel, v.color.w * metallicRoughnessTexel.x);
+  v.roughness = v.roughness * metallicRoughnessTexel.y;
+  return v;
+}
+
 // The vertex's model; a compile-time constant in a program that defines
 // SCATTER_MODEL.
 TOFSIM_PHYSICS_FN int vertexModel(ScatterVertex v) {

@@ -22,6 +22,14 @@
 #include "scatter_vertex.glsl"
 const int kSamplesPerPixel = PIXEL_SAMPLES * PIXEL_SAMPLES;
 
+// The vertices the G-buffers' texels name (their albedo's a): the scene's
+// materials' (ir::materialVertices, index = material), then one per given
+// sample (SurfaceMaps::load). A texel's vertex is its entry with what the
+// material's textures give there (physics::texturedVertex).
+layout(std430, binding = TOFSIM_SSBO_SCATTER_VERTICES) readonly buffer ScatterVertices {
+  ScatterVertex scatterVertices[];
+};
+
 layout(binding = TOFSIM_UNIT_G_POSITION) uniform sampler2D uGPosition;
 layout(binding = TOFSIM_UNIT_G_NORMAL) uniform sampler2D uGNormal;
 layout(binding = TOFSIM_UNIT_G_ALBEDO) uniform sampler2D uGAlbedo;
@@ -52,12 +60,17 @@ ivec2 sampleTexel(ivec2 pixelXy, int s) {
 struct SurfaceSample {
   vec4 position;         // xyz world, w = 1 on a surface, 0 else
   vec3 normal;           // unit, facing the camera
-  ScatterVertex vertex;  // what it scatters: the G-buffer's albedo and
-                         // (GLTF_MATERIALS) metallic-roughness, of the model SCATTER_MODEL
+  ScatterVertex vertex;  // what it scatters (texelVertex)
   ivec2 pixel;      // the pixel's image position (a lens's steps are the pixel's own)
   float weight;     // share of the pixel: uSampleWeight, 1 for a whole-pixel sample
   bool wholePixel;  // its footprint is the whole pixel, not a sub-pixel (footprint_deposit.glsl)
 };
+
+// The vertex of a G-buffer texel whose albedo map holds `baseColor` (rgb
+// texel, a vertex index) and metallic-roughness map `metallicRoughness`.
+ScatterVertex texelVertex(vec4 baseColor, vec2 metallicRoughness) {
+  return texturedVertex(scatterVertices[int(baseColor.a)], baseColor.rgb, metallicRoughness);
+}
 
 // Samples the pixel (image index `pixel`) takes, in order 0, 1, ...
 int samplesOfPixel(uint pixel) {
@@ -81,9 +94,9 @@ SurfaceSample pixelSample(ivec2 xy, int samples, int s) {
 #ifdef GLTF_MATERIALS
     vec2 mr = texelFetch(uCentreMetallicRoughness, xy, 0).rg;
 #else
-    vec2 mr = vec2(0.0, 1.0);
+    vec2 mr = vec2(1.0);
 #endif
-    o.vertex = scatterVertex(SCATTER_MODEL, texelFetch(uCentreAlbedo, xy, 0).rgb, mr.x, mr.y);
+    o.vertex = texelVertex(texelFetch(uCentreAlbedo, xy, 0), mr);
     o.weight = 1.0;
     o.wholePixel = true;
     return o;
@@ -95,9 +108,9 @@ SurfaceSample pixelSample(ivec2 xy, int samples, int s) {
 #ifdef GLTF_MATERIALS
   vec2 mr = texelFetch(uGMetallicRoughness, texel, 0).rg;
 #else
-  vec2 mr = vec2(0.0, 1.0);
+  vec2 mr = vec2(1.0);
 #endif
-  o.vertex = scatterVertex(SCATTER_MODEL, texelFetch(uGAlbedo, texel, 0).rgb, mr.x, mr.y);
+  o.vertex = texelVertex(texelFetch(uGAlbedo, texel, 0), mr);
   o.weight = uSampleWeight;
   // With N = 1 the one sample is the whole pixel, and uSampleStepX/Y are its
   // steps: either choice of footprint steps gives the same numbers.

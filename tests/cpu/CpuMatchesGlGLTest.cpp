@@ -24,6 +24,7 @@
 #include "tofsim/capture/VolumeCollector.h"
 #include "tofsim/cpu/CpuBackend.h"
 #include "tofsim/ir/IrRenderer.h"
+#include "tofsim/ir/MaterialVertex.h"
 #include "tofsim/ir/SampledPixels.h"
 #include "tofsim/ir/SurfaceImage.h"
 #include "tofsim/rays/RayScene.h"
@@ -68,6 +69,9 @@ void expectSameGBuffer(const capture::RenderJob& job, int32_t samples = 1) {
   const rays::RayScene rays(*job.scene, 1);
   const ir::SurfaceImage cpu = ir::traceSurfaces(rays, job.camera(), 2, samples);
   const float tol = 1e-5f * glm::length(hi - lo);
+  // GL's texels name their vertex in the scene's table (surface_samples.glsl).
+  const std::vector<physics::ScatterVertex> materials =
+      ir::materialVertices(*job.scene, physics::VERTEX_LAMBERTIAN);
   std::size_t surfaces = 0;
   for (std::size_t t = 0; t < pixels; ++t) {
     const std::size_t tx = t % width, ty = t / width;
@@ -76,10 +80,13 @@ void expectSameGBuffer(const capture::RenderJob& job, int32_t samples = 1) {
     ASSERT_EQ(cpu.position[i].w, position[4 * t + 3]) << "sample " << i;
     if (cpu.position[i].w == 0.0f) continue;
     ++surfaces;
+    const physics::ScatterVertex glVertex = physics::texturedVertex(
+        materials.at(static_cast<std::size_t>(albedo[4 * t + 3])),
+        glm::vec3(albedo[4 * t], albedo[4 * t + 1], albedo[4 * t + 2]), glm::vec2(1.0f));
     for (int k = 0; k < 3; ++k) {
       EXPECT_NEAR(cpu.position[i][k], position[4 * t + k], tol) << "sample " << i;
       EXPECT_NEAR(cpu.normal[i][k], normal[4 * t + k], 1e-5f) << "sample " << i;
-      EXPECT_NEAR(cpu.vertex[i].color[k], albedo[4 * t + k], 1e-5f) << "sample " << i;
+      EXPECT_NEAR(cpu.vertex[i].color[k], glVertex.color[k], 1e-5f) << "sample " << i;
     }
   }
   EXPECT_GT(surfaces, pixels / 2);

@@ -34,7 +34,7 @@ TEST(TextureSamplingTest, InterpolatesBetweenCentresAndWraps) {
   EXPECT_FLOAT_EQ(sampleBilinear(t, {1.25f, -0.75f}).r, 1.0f);
 }
 
-TEST(TextureSamplingTest, MaterialAlbedoMultipliesFactorAndTexture) {
+TEST(TextureSamplingTest, BaseColorTexelIsTheTextureOrOne) {
   Scene scene;
   scene.textures.push_back(twoByTwo());
   Material plain;
@@ -42,11 +42,13 @@ TEST(TextureSamplingTest, MaterialAlbedoMultipliesFactorAndTexture) {
   Material textured = plain;
   textured.albedoTexture = 0;
   scene.materials = {plain, textured};
-  EXPECT_EQ(materialAlbedo(scene, 0, {0.75f, 0.75f}), glm::vec3(0.5f, 0.25f, 1.0f));
-  EXPECT_EQ(materialAlbedo(scene, 1, {0.75f, 0.75f}), glm::vec3(2.0f, 0.0f, 0.0f));
+  EXPECT_EQ(baseColorTexel(scene, 0, {0.75f, 0.75f}), glm::vec3(1.0f));
+  EXPECT_EQ(baseColorTexel(scene, 1, {0.75f, 0.75f}),
+            sampleBilinear(scene.textures[0], {0.75f, 0.75f}));
+  EXPECT_EQ(baseColorTexel(scene, 1, {0.75f, 0.75f}), glm::vec3(4.0f, 0.0f, 0.0f));
 }
 
-TEST(TextureSamplingTest, MetallicRoughnessIsFactorsTimesBlueAndGreen) {
+TEST(TextureSamplingTest, MetallicRoughnessTexelIsBlueAndGreenOrOne) {
   Scene scene;
   Texture t;
   t.width = t.height = 1;
@@ -58,9 +60,8 @@ TEST(TextureSamplingTest, MetallicRoughnessIsFactorsTimesBlueAndGreen) {
   Material textured = plain;
   textured.metallicRoughnessTexture = 0;
   scene.materials = {plain, textured};
-  EXPECT_EQ(materialMetallicRoughness(scene, 0, {0.5f, 0.5f}), glm::vec2(0.8f, 0.6f));
-  EXPECT_EQ(materialMetallicRoughness(scene, 1, {0.5f, 0.5f}),
-            glm::vec2(0.8f * 0.25f, 0.6f * 0.5f));
+  EXPECT_EQ(metallicRoughnessTexel(scene, 0, {0.5f, 0.5f}), glm::vec2(1.0f));
+  EXPECT_EQ(metallicRoughnessTexel(scene, 1, {0.5f, 0.5f}), glm::vec2(0.25f, 0.5f));
 }
 
 }  // namespace

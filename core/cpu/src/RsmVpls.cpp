@@ -6,6 +6,7 @@
 #include "LitBounds.h"
 #include "ParallelFor.h"
 #include "tofsim/ir/HitVertex.h"
+#include "tofsim/ir/MaterialVertex.h"
 #include "tofsim/ir/RsmEdgeTexels.h"
 #include "tofsim/ir/RsmTexels.h"
 
@@ -17,7 +18,8 @@ namespace {
 // nothing when the texel sees no lit surface: a ray where the GL rasterises.
 std::optional<ir::Vpl> texelVpl(const rays::RayScene& scene, const capture::Light& light,
                                 const ir::RsmView& v, int resolution, int x, int y, double eta,
-                                int vertexModel, const std::optional<scene::Bounds>& lit) {
+                                const std::vector<physics::ScatterVertex>& materials,
+                                const std::optional<scene::Bounds>& lit) {
   const glm::vec3 direction = ir::rsmTexelDirection(v, resolution, x, y);
   // A Lambertian light's side views look half behind it: no ray there.
   if (light.type == capture::Light::Type::Lambertian && light.angularProfile(direction) <= 0.0f) {
@@ -27,7 +29,7 @@ std::optional<ir::Vpl> texelVpl(const rays::RayScene& scene, const capture::Ligh
   const auto hit = scene.intersect(light.position_world, direction);
   if (!hit) return std::nullopt;
   return ir::rsmTexelVpl(light, v, resolution, x, y,
-                         {hit->position_world, hit->normal_world, ir::hitVertex(*hit, vertexModel)},
+                         {hit->position_world, hit->normal_world, ir::hitVertex(*hit, materials)},
                          eta);
 }
 
@@ -37,8 +39,10 @@ std::vector<ir::Vpl> traceRsmVpls(const rays::RayScene& scene, const capture::Li
                                   int resolution, int edgeSamples, double indexOfRefraction,
                                   int vertexModel, int threads,
                                   const std::optional<scene::Bounds>& lit) {
+  const std::vector<physics::ScatterVertex> materials =
+      ir::materialVertices(scene.scene(), vertexModel);
   const auto trace = [&](const ir::RsmView& view, int side, int x, int y) {
-    return texelVpl(scene, light, view, side, x, y, indexOfRefraction, vertexModel, lit);
+    return texelVpl(scene, light, view, side, x, y, indexOfRefraction, materials, lit);
   };
   std::vector<ir::Vpl> vpls;
   for (const ir::RsmView& view : ir::rsmViews(light)) {

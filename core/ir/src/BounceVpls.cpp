@@ -6,6 +6,7 @@
 #include <thread>
 
 #include "tofsim/ir/HitVertex.h"
+#include "tofsim/ir/MaterialVertex.h"
 #include "tofsim/physics/ScatterSampling.h"
 #include "tofsim/rays/RayScene.h"
 #include "tofsim/rays/Sampling.h"
@@ -34,7 +35,8 @@ double powerOf(const Vpl& v) { return static_cast<double>(v.flux.r) + v.flux.g +
 std::optional<Vpl> shootChild(const rays::RayScene& scene, const Vpl& parent,
                               const glm::vec3& share, int32_t bounce, uint64_t seed,
                               std::size_t index, float eta, const BounceTracing& tracing,
-                              const BounceMaterials& materials) {
+                              const BounceMaterials& materials,
+                              const std::vector<physics::ScatterVertex>& vertices) {
   Pcg32 rng = Pcg32::forUnit(seed, unitOf(kChildUnit, bounce, index));
   const glm::vec3 p(parent.positionPath);
   const glm::vec3 n(parent.normal);
@@ -48,7 +50,7 @@ std::optional<Vpl> shootChild(const rays::RayScene& scene, const Vpl& parent,
   // The child receives the parent's share times the continuation's weight
   // and carries the hit's vertex (and, where its flux does not hold its
   // scatter, the direction its light came from, -w).
-  const physics::ScatterVertex vertex = hitVertex(*hit, materials.vertexModel);
+  const physics::ScatterVertex vertex = hitVertex(*hit, vertices);
   const glm::vec3 flux = physics::bounceVplFlux(vertex, share, continuation.weight);
   std::optional<Vpl> child;
   if (flux.r + flux.g + flux.b > 0.0f) {
@@ -58,9 +60,9 @@ std::optional<Vpl> shootChild(const rays::RayScene& scene, const Vpl& parent,
     if (!physics::vplFluxHoldsScatter(vertex)) child->incoming = glm::vec4(-w, 0.0f);
   }
   if (child && tracing.russian_roulette) {
-    // Survival q = the largest albedo channel: a survivor's flux / q stays
+    // Survival q = the largest albedo (base colour) channel: a survivor's flux / q stays
     // within the share in every channel, and E[flux] is unchanged.
-    const float q = std::min(1.0f, std::max({hit->albedo.r, hit->albedo.g, hit->albedo.b}));
+    const float q = std::min(1.0f, std::max({vertex.color.r, vertex.color.g, vertex.color.b}));
     if (!(rng.nextFloat() < q)) return std::nullopt;
     child->flux /= q;
   }
@@ -102,12 +104,14 @@ std::vector<Vpl> traceBounce(const rays::RayScene& scene, const std::vector<Vpl>
   std::vector<std::optional<Vpl>> slots(count);
   const std::size_t tasks = (count + kRaysPerTask - 1) / kRaysPerTask;
   const int threads = resolveThreads(tracing.threads);
+  const std::vector<physics::ScatterVertex> vertices =
+      materialVertices(scene.scene(), materials.vertexModel);
   parallelFor(tasks, threads, [&](std::size_t task) {
     const std::size_t end = std::min(count, (task + 1) * kRaysPerTask);
     for (std::size_t j = task * kRaysPerTask; j < end; ++j) {
       const Vpl& from = parents[parentOf[j]];
       const glm::vec3 share = glm::vec3(from.flux) * static_cast<float>(step / powerOf(from));
-      slots[j] = shootChild(scene, from, share, bounce, seed, j, eta, tracing, materials);
+      slots[j] = shootChild(scene, from, share, bounce, seed, j, eta, tracing, materials, vertices);
     }
   });
   children.reserve(count);

@@ -4,6 +4,7 @@
 
 #include "tofsim/capture/ThinLens.h"
 #include "tofsim/ir/HitVertex.h"
+#include "tofsim/ir/MaterialVertex.h"
 #include "tofsim/rays/RayScene.h"
 #include "tofsim/util/Error.h"
 #include "tofsim/util/ParallelFor.h"
@@ -46,6 +47,8 @@ void traceInto(SurfaceImage& image, const rays::RayScene& scene, const capture::
   const int32_t k = image.apertureSamples;
   std::optional<capture::ThinLens> lens;
   if (k > 1) lens.emplace(*capture::cameraOf(imager));
+  const std::vector<physics::ScatterVertex> materials =
+      materialVertices(scene.scene(), vertexModel);
   parallelFor(static_cast<std::size_t>(image.height), threads, [&](std::size_t row) {
     const auto y = static_cast<int32_t>(row);
     for (int32_t x = 0; x < image.width; ++x) {
@@ -67,7 +70,7 @@ void traceInto(SurfaceImage& image, const rays::RayScene& scene, const capture::
         if (!hit) continue;
         image.position[i] = glm::vec4(hit->position_world, 1.0f);
         image.normal[i] = glm::vec4(hit->normal_world, 0.0f);
-        image.vertex[i] = hitVertex(*hit, vertexModel);
+        image.vertex[i] = hitVertex(*hit, materials);
         image.geometric[i] = hit->geometric_world;
       }
     }

@@ -120,10 +120,9 @@ std::optional<SurfaceHit> RayScene::intersect(const glm::vec3& origin, const glm
   if (mesh.uvs.size() == mesh.positions_world.size()) {
     uv = w * mesh.uvs[tri[0]] + u * mesh.uvs[tri[1]] + v * mesh.uvs[tri[2]];
   }
-  hit.albedo = scene::materialAlbedo(scene_, mesh.material, uv);
-  const glm::vec2 metallicRoughness = scene::materialMetallicRoughness(scene_, mesh.material, uv);
-  hit.metallic = metallicRoughness.x;
-  hit.roughness = metallicRoughness.y;
+  hit.material = mesh.material;
+  hit.baseColorTexel = scene::baseColorTexel(scene_, mesh.material, uv);
+  hit.metallicRoughnessTexel = scene::metallicRoughnessTexel(scene_, mesh.material, uv);
   return hit;
 }
 

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "tofsim/ir/HitVertex.h"
+#include "tofsim/ir/MaterialVertex.h"
 #include "tofsim/physics/GltfBrdf.h"
 #include "tofsim/physics/GltfSampling.h"
 #include "tofsim/rays/Sampling.h"
@@ -41,6 +43,7 @@ PathIntegrator::PathIntegrator(const RayScene& scene, const capture::RenderJob& 
       samplesPerPixel_(samplesPerPixel),
       pixelFilter_(effectiveFilter(job.imager, pixelFilter)),
       gltf_(job.settings.materials == capture::MaterialModel::Gltf),
+      materials_(ir::materialVertices(scene.scene(), physics::VERTEX_GLTF)),
       sampling_(sampling) {}
 
 PathIntegrator::Radiance PathIntegrator::lightReflectedAt(const SurfaceHit& hit,
@@ -58,14 +61,16 @@ PathIntegrator::Radiance PathIntegrator::lightReflectedAt(const SurfaceHit& hit,
   const float profile = light.angularProfile(-w);
   if (profile <= 0.0f) return out;
   if (scene_.occluded(scene_.offsetOrigin(hit, w), light.position_world)) return out;
+  const physics::ScatterVertex v = ir::hitVertex(hit, materials_);
+  const glm::vec3 albedo(v.color);
   if (gltf_) {
     const glm::vec3 f =
-        physics::gltfBrdf(hit.normal_world, w, toViewer, hit.albedo, hit.metallic, hit.roughness);
+        physics::gltfBrdf(hit.normal_world, w, toViewer, albedo, v.color.w, v.roughness);
     const double scale = static_cast<double>(profile) * cosX / (static_cast<double>(d) * d);
     out.value = glm::dvec3(f) * glm::dvec3(light.intensity_W_per_sr) * scale;
   } else {
     const double scale = static_cast<double>(profile) * cosX / (static_cast<double>(d) * d) / kPi;
-    out.value = glm::dvec3(hit.albedo) * glm::dvec3(light.intensity_W_per_sr) * scale;
+    out.value = glm::dvec3(albedo) * glm::dvec3(light.intensity_W_per_sr) * scale;
   }
   out.path_m = d;
   out.valid = true;
@@ -95,6 +100,8 @@ PathIntegrator::Continuation PathIntegrator::sampleContinuation(const SurfaceHit
                                                                 Pcg32& rng) const {
   const float u1 = rng.nextFloat();
   const float u2 = rng.nextFloat();
+  const physics::ScatterVertex v = ir::hitVertex(hit, materials_);
+  const glm::vec3 albedo(v.color);
   Continuation out;
   if (gltf_ && sampling_ == ContinuationSampling::BrdfMixture) {
     // One-sample MIS over the cosine and GGX visible-normal lobes (balance
@@ -103,7 +110,7 @@ PathIntegrator::Continuation PathIntegrator::sampleContinuation(const SurfaceHit
     // direct light; the mixture is what combines strategies here.
     const float uLobe = rng.nextFloat();
     const physics::GltfBounce b = physics::sampleGltfBounce(
-        hit.normal_world, toViewer, hit.albedo, hit.metallic, hit.roughness, uLobe, u1, u2);
+        hit.normal_world, toViewer, albedo, v.color.w, v.roughness, uLobe, u1, u2);
     out.direction = b.direction;
     out.weight = glm::dvec3(b.weight);
     out.ends = out.weight == glm::dvec3(0.0);
@@ -111,11 +118,11 @@ PathIntegrator::Continuation PathIntegrator::sampleContinuation(const SurfaceHit
   }
   out.direction = cosineSampleHemisphere(hit.normal_world, u1, u2);
   if (!gltf_) {
-    out.weight = glm::dvec3(hit.albedo);
+    out.weight = glm::dvec3(albedo);
   } else {
     // pdf = cos / pi: f cos / pdf = pi f, unbiased for any BRDF (noisy for glossy ones).
     out.weight = kPi * glm::dvec3(physics::gltfBrdf(hit.normal_world, out.direction, toViewer,
-                                                    hit.albedo, hit.metallic, hit.roughness));
+                                                    albedo, v.color.w, v.roughness));
   }
   return out;
 }

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "tofsim/capture/RenderJob.h"
+#include "tofsim/physics/ScatterVertex.h"
 #include "tofsim/rays/RayScene.h"
 #include "tofsim/reference/ReferenceRenderer.h"
 #include "tofsim/util/Random.h"
@@ -94,6 +95,9 @@ class PathIntegrator {
   int32_t samplesPerPixel_;
   PixelFilter pixelFilter_;
   bool gltf_;  ///< render.materials: gltf
+  /// The scene's material vertices (ir::materialVertices; the glTF model's
+  /// fields, read as the Lambertian albedo too).
+  std::vector<physics::ScatterVertex> materials_;
   ContinuationSampling sampling_;
 };
 

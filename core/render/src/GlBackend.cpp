@@ -14,6 +14,7 @@
 #include "tofsim/gl/Check.h"
 #include "tofsim/gl/Compute.h"
 #include "tofsim/gl/Context.h"
+#include "tofsim/ir/MaterialVertex.h"
 #include "tofsim/ir/SurfaceImage.h"
 #include "tofsim/physics/FootprintKernel.h"
 #include "tofsim/physics/TemporalResponse.h"
@@ -139,12 +140,26 @@ struct GlBackend::Passes {
   }
   bool gltf() const { return job.settings.materials == capture::MaterialModel::Gltf; }
 
+  // Appends a given image's vertices to the table (SurfaceMaps::load); a
+  // hit sample of another model than the render's (a medium point) keeps
+  // the gathers from folding the model (gpu::gatherDefines).
+  std::size_t appendVertices(const ir::SurfaceImage& samples) {
+    const std::size_t first = vertices.size();
+    vertices.insert(vertices.end(), samples.vertex.begin(), samples.vertex.end());
+    const int model = ir::vertexModelOf(job.settings.materials);
+    for (std::size_t i = 0; i < samples.vertex.size(); ++i) {
+      if (samples.position[i].w != 0.0f && samples.vertex[i].model != model) foldModel = false;
+    }
+    return first;
+  }
+
   // The gathers' G-buffer: the samples', and with adaptive samples the
   // centres' and the mask that picks between them (surface_samples.glsl).
   void bindSurfaces() const {
     gbuffer.position.bindUnit(gpu::kGPosition);
     gbuffer.normal.bindUnit(gpu::kGNormal);
     gbuffer.albedo.bindUnit(gpu::kGAlbedo);
+    vertexTable.bindBase(GL_SHADER_STORAGE_BUFFER, gpu::kScatterVertices);
     if (gltf()) gbuffer.metallicRoughness.bindUnit(gpu::kGMetallicRoughness);
     if (pixelRaySteps.size() > 0) {
       pixelRaySteps.bindBase(GL_SHADER_STORAGE_BUFFER, gpu::kPixelRaySteps);
@@ -162,6 +177,12 @@ struct GlBackend::Passes {
   const GpuScene& gpuScene;  ///< the backend's (SceneObjects)
   int32_t samplesPerSide;    ///< render.pixel_samples
   SurfaceMaps gbuffer;       ///< the samples': (width N) x (height N), surface_samples.glsl
+  /// The vertices the G-buffers' texels index: the scene's materials'
+  /// (ir::materialVertices), then given samples' (appendVertices); and
+  /// whether they all have the render's model (the gathers' SCATTER_MODEL).
+  std::vector<physics::ScatterVertex> vertices;
+  gl::Buffer vertexTable;
+  bool foldModel = true;
   /// render.adaptive_pixel_samples (N > 1) only: the W x H pixel-centre
   /// G-buffer, the one sample of a masked-out pixel, and the mask, one uint
   /// per pixel (an SSBO indexed by the pixel index the gathers already hold;
@@ -233,8 +254,13 @@ ir::CentreSurfaces GlBackend::prepareSurfaces(const RenderJob& job) {
   }
   passes_ = std::make_unique<Passes>(job, sceneObjects_->gpuScene);
   Passes& p = *passes_;
+  p.vertices = ir::materialVertices(*job.scene, ir::vertexModelOf(job.settings.materials));
   ir::CentreSurfaces surfaces =
       pinhole(job.imager) != nullptr ? rasterizeSurfaces(p) : loadGivenSurfaces(p);
+  // Never empty: a texel that saw nothing names entry 0.
+  if (p.vertices.empty()) p.vertices.push_back(physics::ScatterVertex{});
+  p.vertexTable = gl::Buffer(p.vertices.size() * sizeof(physics::ScatterVertex),
+                             p.vertices.data(), 0);
   if (const Camera* camera = cameraOf(job.imager);
       camera && camera->lens && job.settings.pixel_footprint) {
     p.pixelRaySteps = pixelRayStepsBuffer(*camera);
@@ -246,8 +272,8 @@ ir::CentreSurfaces GlBackend::prepareSurfaces(const RenderJob& job) {
   }
   p.shadowMap.render(p.gpuScene);
 
-  p.directGather =
-      gpu::makeProgram({{GL_COMPUTE_SHADER, "direct_gather.comp"}}, gpu::gatherDefines(job));
+  p.directGather = gpu::makeProgram({{GL_COMPUTE_SHADER, "direct_gather.comp"}},
+                                    gpu::gatherDefines(job, p.foldModel));
   setLightUniforms(p.directGather, job.light);
   p.shadowMap.bind(p.directGather);
   configureGather(p.directGather, job);
@@ -289,12 +315,12 @@ ir::CentreSurfaces GlBackend::loadGivenSurfaces(Passes& p) {
                    "an imager that is not a pinhole needs setSurfaces before prepareSurfaces");
   const std::unique_ptr<ir::SurfaceImage> samples = std::move(givenSamples_);
   const std::unique_ptr<ir::SurfaceImage> centres = std::move(givenCentres_);
-  p.gbuffer.load(*samples, p.samplesPerSide);
+  p.gbuffer.load(*samples, p.samplesPerSide, p.appendVertices(*samples));
   if (p.samplesPerSide == 1) return ir::centresOf(*samples);
   TOFSIM_CHECK_MSG(centres != nullptr, "setSurfaces needs the pixel centres' samples with N > 1");
   if (gpu::adaptiveSamples(p.job.settings)) {
     p.centres = std::make_unique<SurfaceMaps>(samples->width, samples->height, p.gltf());
-    p.centres->load(*centres, 1);
+    p.centres->load(*centres, 1, p.appendVertices(*centres));
   }
   return ir::centresOf(*centres);
 }
@@ -323,7 +349,8 @@ void GlBackend::setVpls(const std::vector<ir::Vpl>& vpls) {
   Passes& p = passes();
   p.indirectLight.reset();
   if (vpls.empty()) return;
-  p.indirectLight = std::make_unique<IndirectLight>(sceneObjects_->soup(), vpls, p.job);
+  p.indirectLight =
+      std::make_unique<IndirectLight>(sceneObjects_->soup(), vpls, p.job, p.foldModel);
   configureIndirectGather(p.indirectLight->gatherProgram(), p.job);
 }
 
@@ -337,7 +364,8 @@ std::size_t GlBackend::fixedBytes() const {
   const std::size_t floatsPerSample = 4 * 4 + (p.gltf() ? 2 : 0);
   std::size_t bytes = p.gpuScene.bytes() +
                       p.pixelCount() * samples * floatsPerSample * sizeof(float) +
-                      p.shadowMap.bytes() + p.sampledPixels.size() + p.pixelRaySteps.size();
+                      p.shadowMap.bytes() + p.sampledPixels.size() + p.pixelRaySteps.size() +
+                      p.vertexTable.size();
   if (p.indirectLight) bytes += p.indirectLight->fixedBytes();
   return bytes;
 }

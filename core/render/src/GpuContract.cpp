@@ -25,6 +25,7 @@ std::vector<std::pair<std::string, std::string>> shaderDefines() {
       {"TOFSIM_SSBO_PIXEL_RAY_STEPS", n(kPixelRaySteps)},
       {"TOFSIM_SSBO_RESPONSE_STATE", n(kResponseState)},
       {"TOFSIM_SSBO_RESPONSE_TAPS", n(kResponseTaps)},
+      {"TOFSIM_SSBO_SCATTER_VERTICES", n(kScatterVertices)},
       {"TOFSIM_UNIT_G_POSITION", n(kGPosition)},
       {"TOFSIM_UNIT_G_NORMAL", n(kGNormal)},
       {"TOFSIM_UNIT_G_ALBEDO", n(kGAlbedo)},
@@ -46,7 +47,8 @@ std::vector<std::pair<std::string, std::string>> shaderDefines() {
   };
 }
 
-std::vector<std::pair<std::string, std::string>> gatherDefines(const capture::RenderJob& job) {
+std::vector<std::pair<std::string, std::string>> gatherDefines(const capture::RenderJob& job,
+                                                               bool foldModel) {
   const capture::RenderSettings& s = job.settings;
   std::vector<std::pair<std::string, std::string>> defines = {
       {"PIXEL_SAMPLES", std::to_string(s.pixel_samples)}};
@@ -55,7 +57,9 @@ std::vector<std::pair<std::string, std::string>> gatherDefines(const capture::Re
   // The G-buffer's and the VPL records' layout (their glTF parameters), and
   // the one model of every vertex (scatter_vertex.glsl folds on it).
   if (s.materials == capture::MaterialModel::Gltf) defines.emplace_back("GLTF_MATERIALS", "1");
-  defines.emplace_back("SCATTER_MODEL", std::to_string(ir::vertexModelOf(s.materials)));
+  if (foldModel) {
+    defines.emplace_back("SCATTER_MODEL", std::to_string(ir::vertexModelOf(s.materials)));
+  }
   // Only with sub-samples to skip: every other render compiles the gathers
   // of before, which read no mask.
   if (adaptiveSamples(s)) defines.emplace_back("ADAPTIVE_SAMPLES", "1");

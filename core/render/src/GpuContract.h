@@ -44,22 +44,23 @@ enum StorageBinding : uint32_t {
   kPixelRaySteps,  ///< two vec4 per pixel: a lens camera's ray steps along x, y (PIXEL_RAY_STEPS)
   kResponseState,  ///< 16 doubles per pixel: response_integrate.comp's sums between chunks
   kResponseTaps,   ///< the delayed response classes' filters (PixelFootprint)
+  kScatterVertices,  ///< the G-buffers' vertices by index: the materials', then given samples'
 };
 
 /// Texture units (TOFSIM_UNIT_...).
 enum TextureUnit : uint32_t {
   kGPosition,                 ///< camera G-buffer: world position
   kGNormal,                   ///< camera G-buffer: normal
-  kGAlbedo,                   ///< camera G-buffer: albedo
+  kGAlbedo,                   ///< camera G-buffer: base-colour texel, vertex index
   kShadowMap,                 ///< the light's distance cube (light.glsl)
   kAlbedoTexture,             ///< a material's base-colour texture (gbuffer.frag)
-  kGMetallicRoughness,        ///< camera G-buffer: metallic, roughness (render.materials: gltf)
+  kGMetallicRoughness,        ///< camera G-buffer: metallic-roughness texel (render.materials: gltf)
   kMetallicRoughnessTexture,  ///< a material's metallic-roughness texture (gbuffer.frag)
   // The pixel-centre G-buffer of the one-sample pixels (ADAPTIVE_SAMPLES).
   kCentrePosition,           ///< world position
   kCentreNormal,             ///< normal
-  kCentreAlbedo,             ///< albedo
-  kCentreMetallicRoughness,  ///< metallic, roughness (render.materials: gltf)
+  kCentreAlbedo,             ///< base-colour texel, vertex index
+  kCentreMetallicRoughness,  ///< metallic-roughness texel (render.materials: gltf)
 };
 
 /// Vertex attribute locations of gbuffer.vert (TOFSIM_ATTRIB_...).
@@ -80,7 +81,10 @@ std::vector<std::pair<std::string, std::string>> shaderDefines();
 /// defines, so that render.pixel_footprint: false compiles the point-sampling
 /// shader of before, render.materials: lambertian the Lambertian one, and a
 /// render without adaptive samples the shader that reads no per-pixel mask.
-std::vector<std::pair<std::string, std::string>> gatherDefines(const capture::RenderJob& job);
+/// SCATTER_MODEL (the model every vertex has, render.materials') unless
+/// !foldModel: vertices of other models (given medium samples) are read.
+std::vector<std::pair<std::string, std::string>> gatherDefines(const capture::RenderJob& job,
+                                                               bool foldModel = true);
 
 /// render.adaptive_pixel_samples in effect: with pixel_samples > 1 only (one
 /// sample per pixel has nothing to skip). The gathers' ADAPTIVE_SAMPLES.

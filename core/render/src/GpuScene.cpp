@@ -67,14 +67,13 @@ void GpuScene::draw(const gl::Program& program, Materials materials) const {
 
 void GpuScene::setMaterial(const gl::Program& program, int32_t index, bool gltf) const {
   const scene::Material& material = scene_.materials.at(static_cast<std::size_t>(index));
-  program.set("uAlbedoFactor", material.albedo);
+  program.set("uMaterial", index);
   const bool textured = material.albedoTexture >= 0;
   program.set("uHasAlbedoTexture", textured ? 1 : 0);
   if (textured) {
     textures_.at(static_cast<std::size_t>(material.albedoTexture)).bindUnit(gpu::kAlbedoTexture);
   }
   if (!gltf) return;
-  program.set("uMetallicRoughnessFactor", glm::vec2(material.metallic, material.roughness));
   const bool mrTextured = material.metallicRoughnessTexture >= 0;
   program.set("uHasMetallicRoughnessTexture", mrTextured ? 1 : 0);
   if (mrTextured) {

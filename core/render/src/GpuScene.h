@@ -15,13 +15,14 @@ namespace tofsim::render {
 class GpuScene {
  public:
   explicit GpuScene(const scene::Scene& scene);
-  /// Whether a draw sets the material uniforms (uAlbedoFactor,
+  /// Whether a draw sets the material uniforms (uMaterial,
   /// uHasAlbedoTexture) and texture per mesh: only programs that declare them;
   /// SetGltf also the metallic-roughness ones (gbuffer.frag's GLTF_MATERIALS).
   enum class Materials { Set, SetGltf, Skip };
   /// Draws every mesh.
   void draw(const gl::Program& program, Materials materials) const;
   std::size_t bytes() const { return bytes_; }
+  const scene::Scene& scene() const { return scene_; }
 
  private:
   void setMaterial(const gl::Program& program, int32_t index, bool gltf) const;

@@ -24,9 +24,9 @@ using scene::TriangleSoup;
 class IndirectLight {
  public:
   /// The gather's variant (pixel samples, footprints, the imager's kind) and
-  /// the ISM seed come from the job.
+  /// the ISM seed come from the job; foldModel: gpu::gatherDefines'.
   IndirectLight(const TriangleSoup& soup, const std::vector<ir::Vpl>& vpls,
-                const capture::RenderJob& job);
+                const capture::RenderJob& job, bool foldModel = true);
 
   std::size_t vplCount() const { return vplCount_; }
   /// GPU bytes that do not depend on the batch size (geometry, VPLs).

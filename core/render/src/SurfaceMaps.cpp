@@ -60,12 +60,19 @@ void SurfaceMaps::render(const GpuScene& scene, const glm::mat4& viewProjection,
   TOFSIM_GL_CHECK("SurfaceMaps::render");
 }
 
-void SurfaceMaps::load(const ir::SurfaceImage& samples, int32_t samplesPerSide) {
+void SurfaceMaps::load(const ir::SurfaceImage& samples, int32_t samplesPerSide,
+                       std::size_t firstVertex) {
   const int32_t n = samplesPerSide;
   TOFSIM_CHECK(position.width() == samples.width * n && position.height() == samples.height * n);
   const auto texels = static_cast<std::size_t>(position.width()) * position.height();
+  // The index travels as a float: exact below 2^24.
+  if (firstVertex + samples.vertex.size() > (std::size_t{1} << 24)) {
+    throw InputError("the GL backend's G-buffer indexes at most 2^24 given samples (" +
+                     std::to_string(samples.vertex.size()) + " given); use render.backend: cpu");
+  }
   std::vector<glm::vec4> positions(texels), normals(texels), albedos(texels);
-  std::vector<glm::vec2> metallicRoughnesses(withMetallicRoughness_ ? texels : 0);
+  std::vector<glm::vec2> metallicRoughnesses(withMetallicRoughness_ ? texels : 0,
+                                             glm::vec2(1.0f));
   for (int32_t y = 0; y < samples.height; ++y) {
     for (int32_t x = 0; x < samples.width; ++x) {
       const auto pixel = static_cast<std::size_t>(y) * samples.width + x;
@@ -76,11 +83,8 @@ void SurfaceMaps::load(const ir::SurfaceImage& samples, int32_t samplesPerSide) 
                         static_cast<std::size_t>(x * n + s % n);
         positions[to] = samples.position[from];
         normals[to] = samples.normal[from];
-        // The G-buffer's layout of the vertex (gbuffer.frag): albedo with
-        // a = 1, and (metallic, roughness).
-        const physics::ScatterVertex& v = samples.vertex[from];
-        albedos[to] = glm::vec4(glm::vec3(v.color), 1.0f);
-        if (withMetallicRoughness_) metallicRoughnesses[to] = glm::vec2(v.color.w, v.roughness);
+        // The sample's whole vertex is its table entry: texels of 1.
+        albedos[to] = glm::vec4(glm::vec3(1.0f), static_cast<float>(firstVertex + from));
       }
     }
   }

@@ -1,8 +1,11 @@
 #pragma once
 // Rasterized surface attributes seen from one viewpoint: world position,
-// facing normal and albedo per texel, and (metallic, roughness) where the
-// glTF BRDF needs it. The camera's G-buffer and the light's reflective shadow
-// map are both SurfaceMaps.
+// facing normal, and the texel's scattering vertex as an index into a vertex
+// table (the scene's materials', ir::materialVertices, then given samples')
+// with what the material's textures give there: the base-colour texel and,
+// where the glTF BRDF needs it, the metallic-roughness texel
+// (physics::texturedVertex). The camera's G-buffer and the light's reflective
+// shadow map are both SurfaceMaps.
 
 #include <glm/glm.hpp>
 
@@ -23,9 +26,10 @@ namespace tofsim::render {
 struct SurfaceMaps {
   gl::Texture position;  ///< RGBA32F: xyz world, w = 1 on a surface
   gl::Texture normal;    ///< RGBA32F
-  gl::Texture albedo;    ///< RGBA32F
+  gl::Texture albedo;    ///< RGBA32F: rgb base-colour texel (1: none), a vertex index
   gl::Texture depth;     ///< DEPTH32F
-  /// RG32F: metallic, roughness; only with withMetallicRoughness (else id 0).
+  /// RG32F: metallic-roughness texel (1: none); only with
+  /// withMetallicRoughness (else id 0).
   gl::Texture metallicRoughness;
 
   /// withMetallicRoughness: the camera G-buffer and the RSM of
@@ -37,8 +41,9 @@ struct SurfaceMaps {
   /// Takes traced samples instead (an imager a rasterizer cannot draw):
   /// every pixel's samplesPerSide^2 samples, laid out as the gathers read a
   /// rasterized G-buffer (surface_samples.glsl: sample j N + i of pixel
-  /// (x, y) at texel (x N + i, y N + j)).
-  void load(const ir::SurfaceImage& samples, int32_t samplesPerSide);
+  /// (x, y) at texel (x N + i, y N + j)). Sample k's vertex is entry
+  /// firstVertex + k of the vertex table (samples.vertex appended to it).
+  void load(const ir::SurfaceImage& samples, int32_t samplesPerSide, std::size_t firstVertex);
 
  private:
   gl::Framebuffer framebuffer_;
@@ -47,7 +52,7 @@ struct SurfaceMaps {
 };
 
 /// Whether maps of surfaces whose vertices have `vertexModel`
-/// (physics::VERTEX_*) carry (metallic, roughness): the glTF BRDF's.
+/// (physics::VERTEX_*) carry the metallic-roughness texel: the glTF BRDF's.
 inline bool mapsMetallicRoughness(int vertexModel) { return vertexModel == physics::VERTEX_GLTF; }
 
 /// Near and far planes that enclose the scene's bounds seen from `eye`.

@@ -6,6 +6,7 @@
 
 #include "GpuScene.h"
 #include "SurfaceMaps.h"
+#include "tofsim/ir/MaterialVertex.h"
 #include "tofsim/ir/RsmEdgeTexels.h"
 #include "tofsim/ir/RsmTexels.h"
 #include "tofsim/util/Interrupt.h"
@@ -34,20 +35,23 @@ class RsmReadback {
     }
   }
 
-  /// Texel (x, y)'s VPL (row 0 at the bottom), or nothing.
+  /// Texel (x, y)'s VPL (row 0 at the bottom), or nothing; `materials`: the
+  /// vertex table the texels index (ir::materialVertices).
   std::optional<Vpl> vpl(const capture::Light& light, const ir::RsmView& view, int x, int y,
-                         double indexOfRefraction, int vertexModel) const {
+                         double indexOfRefraction,
+                         const std::vector<physics::ScatterVertex>& materials) const {
     const std::size_t i = (static_cast<std::size_t>(y) * side_ + x) * 4;
     if (position_[i + 3] == 0.0f) return std::nullopt;
-    // Without the (metallic, roughness) map the vertex's are glTF's defaults
-    // of a Lambertian render, never read.
+    // Without the metallic-roughness map (a Lambertian render) its texel is 1.
     const bool mr = !metallicRoughness_.empty();
+    const auto material = static_cast<std::size_t>(albedo_[i + 3]);
     const ir::RsmTexelSurface surface{
         glm::vec3(position_[i], position_[i + 1], position_[i + 2]),
         glm::vec3(normal_[i], normal_[i + 1], normal_[i + 2]),
-        physics::scatterVertex(vertexModel, glm::vec3(albedo_[i], albedo_[i + 1], albedo_[i + 2]),
-                               mr ? metallicRoughness_[i / 2] : 0.0f,
-                               mr ? metallicRoughness_[i / 2 + 1] : 1.0f)};
+        physics::texturedVertex(
+            materials.at(material), glm::vec3(albedo_[i], albedo_[i + 1], albedo_[i + 2]),
+            mr ? glm::vec2(metallicRoughness_[i / 2], metallicRoughness_[i / 2 + 1])
+               : glm::vec2(1.0f))};
     return ir::rsmTexelVpl(light, view, side_, x, y, surface, indexOfRefraction);
   }
 
@@ -62,6 +66,8 @@ std::vector<Vpl> generateVpls(const GpuScene& scene, const capture::Light& light
                               int edgeSamples, double indexOfRefraction, const glm::vec3& lo,
                               const glm::vec3& hi, int vertexModel) {
   const bool gltf = mapsMetallicRoughness(vertexModel);
+  const std::vector<physics::ScatterVertex> materials =
+      ir::materialVertices(scene.scene(), vertexModel);
   std::vector<Vpl> vpls;
   const glm::vec2 range = depthRange(lo, hi, light.position_world);
   for (const ir::RsmView& v : ir::rsmViews(light)) {
@@ -72,7 +78,7 @@ std::vector<Vpl> generateVpls(const GpuScene& scene, const capture::Light& light
     ir::TexelVpls texels(resolution);
     for (int y = 0; y < resolution; ++y) {
       for (int x = 0; x < resolution; ++x) {
-        if (const auto vpl = rsm.vpl(light, v, x, y, indexOfRefraction, vertexModel)) {
+        if (const auto vpl = rsm.vpl(light, v, x, y, indexOfRefraction, materials)) {
           texels.add(static_cast<std::size_t>(y) * resolution + x, *vpl);
         }
       }
@@ -89,7 +95,7 @@ std::vector<Vpl> generateVpls(const GpuScene& scene, const capture::Light& light
         for (int j = 0; j < n; ++j) {
           for (int i = 0; i < n; ++i) {
             subs.push_back(
-                fine.vpl(light, v, x * n + i, y * n + j, indexOfRefraction, vertexModel));
+                fine.vpl(light, v, x * n + i, y * n + j, indexOfRefraction, materials));
           }
         }
       }

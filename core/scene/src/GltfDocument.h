@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <glm/glm.hpp>
 #include <glm/gtc/quaternion.hpp>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -118,6 +119,10 @@ struct MaterialDesc {
   /// The parts of the material no renderer reads (for tofsim info), in order:
   /// emission, normal and occlusion textures, alpha, then every extension.
   std::vector<std::string> ignored;
+  /// The material's `extras`, its scalars by their path ("a.b" for member b
+  /// of object a; numbers as "%.17g" text, booleans as true/false): the
+  /// per-material parameters the scene reads by name (convertMaterials).
+  std::map<std::string, std::string> extras;
 };
 
 /// Decoded pixels as tinygltf delivers them (stb_image): 8 or 16 bits.

@@ -34,20 +34,18 @@ glm::vec3 sampleBilinear(const Texture& texture, const glm::vec2& uv) {
   return glm::mix(top, bottom, ft);
 }
 
-glm::vec3 materialAlbedo(const Scene& scene, int32_t material, const glm::vec2& uv) {
+glm::vec3 baseColorTexel(const Scene& scene, int32_t material, const glm::vec2& uv) {
   const Material& m = scene.materials.at(static_cast<std::size_t>(material));
-  if (m.albedoTexture < 0) return m.albedo;
-  return m.albedo *
-         sampleBilinear(scene.textures.at(static_cast<std::size_t>(m.albedoTexture)), uv);
+  if (m.albedoTexture < 0) return glm::vec3(1.0f);
+  return sampleBilinear(scene.textures.at(static_cast<std::size_t>(m.albedoTexture)), uv);
 }
 
-glm::vec2 materialMetallicRoughness(const Scene& scene, int32_t material, const glm::vec2& uv) {
+glm::vec2 metallicRoughnessTexel(const Scene& scene, int32_t material, const glm::vec2& uv) {
   const Material& m = scene.materials.at(static_cast<std::size_t>(material));
-  const glm::vec2 factors(m.metallic, m.roughness);
-  if (m.metallicRoughnessTexture < 0) return factors;
+  if (m.metallicRoughnessTexture < 0) return glm::vec2(1.0f);
   const glm::vec3 t =
       sampleBilinear(scene.textures.at(static_cast<std::size_t>(m.metallicRoughnessTexture)), uv);
-  return factors * glm::vec2(t.b, t.g);
+  return glm::vec2(t.b, t.g);
 }
 
 }  // namespace tofsim::scene

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cstdio>
 #include <glm/gtc/quaternion.hpp>
 #include <glm/gtc/type_ptr.hpp>
 #include <utility>
@@ -96,6 +97,25 @@ Primitive convert(const tinygltf::Primitive& p) {
 // surfaces are opaque and two-sided, shading normals are the vertex normals,
 // and the BRDF's dielectric F0 is the pinned 0.04 (shaders/gltf_brdf.glsl), so
 // KHR_materials_ior and KHR_materials_specular do not change it.
+// The scalars of `value` (an extras object) into `out` by their path below
+// `prefix`; arrays and nulls are left out (no per-material parameter is one).
+void flattenExtras(const tinygltf::Value& value, const std::string& prefix,
+                   std::map<std::string, std::string>& out) {
+  if (value.IsObject()) {
+    for (const std::string& key : value.Keys()) {
+      flattenExtras(value.Get(key), prefix.empty() ? key : prefix + "." + key, out);
+    }
+  } else if (value.IsNumber()) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.17g", value.GetNumberAsDouble());
+    out[prefix] = text;
+  } else if (value.IsString()) {
+    out[prefix] = value.Get<std::string>();
+  } else if (value.IsBool()) {
+    out[prefix] = value.Get<bool>() ? "true" : "false";
+  }
+}
+
 std::vector<std::string> ignoredParts(const tinygltf::Material& m, bool emissive) {
   std::vector<std::string> out;
   if (emissive) out.push_back("emission");
@@ -144,6 +164,7 @@ MaterialDesc convert(const tinygltf::Model& model, const tinygltf::Material& m) 
                                                   [](double v) { return v != 0.0; });
   out.transmissive = m.extensions.count("KHR_materials_transmission") > 0;
   out.ignored = ignoredParts(m, out.emissive);
+  if (m.extras.IsObject()) flattenExtras(m.extras, "", out.extras);
   return out;
 }
 

@@ -1,18 +1,24 @@
 #pragma once
-// The one place a traced hit's material becomes a scattering vertex: the
-// CPU's surface samples (traceSurfaces), its RSM VPLs (cpu::traceRsmVpls) and
-// the later bounces' VPLs (traceBounce) all take it from here, so a material
-// parameter added to the vertex is read from the hit once.
+// The one place a traced hit becomes a scattering vertex: the CPU's surface
+// samples (traceSurfaces), its RSM VPLs (cpu::traceRsmVpls), the later
+// bounces' VPLs (traceBounce) and the reference take it from here: the hit's
+// material's entry of the table (materialVertices) with what its textures
+// give at the hit (physics::texturedVertex), as GL's gathers take a G-buffer
+// texel's.
+
+#include <vector>
 
 #include "tofsim/physics/ScatterVertex.h"
 #include "tofsim/rays/RayScene.h"
 
 namespace tofsim::ir {
 
-/// The vertex of `hit` under material model `model` (physics::VERTEX_*:
-/// vertexModelOf render.materials).
-inline physics::ScatterVertex hitVertex(const rays::SurfaceHit& hit, int model) {
-  return physics::scatterVertex(model, hit.albedo, hit.metallic, hit.roughness);
+/// The vertex of `hit`, whose material's vertex is materials[hit.material]
+/// (materialVertices of the traced scene).
+inline physics::ScatterVertex hitVertex(const rays::SurfaceHit& hit,
+                                        const std::vector<physics::ScatterVertex>& materials) {
+  return physics::texturedVertex(materials.at(static_cast<std::size_t>(hit.material)),
+                                 hit.baseColorTexel, hit.metallicRoughnessTexel);
 }
 
 }  // namespace tofsim::ir

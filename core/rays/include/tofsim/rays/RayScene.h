@@ -1,7 +1,7 @@
 #pragma once
 // The scene's triangles in an Embree BVH, and what the path tracer needs to
 // know about a hit: position, normals facing the incoming ray (surfaces are
-// two-sided, as in the GL renderer), albedo and metallic-roughness.
+// two-sided, as in the GL renderer), its material and what its textures give.
 
 #include <embree3/rtcore.h>
 
@@ -18,9 +18,12 @@ struct SurfaceHit {
   glm::vec3 position_world{0.0f};
   glm::vec3 normal_world{0.0f};     ///< interpolated shading normal, facing the ray origin
   glm::vec3 geometric_world{0.0f};  ///< triangle normal, facing the ray origin
-  glm::vec3 albedo{0.0f};
-  float metallic = 0.0f;   ///< with textures (scene::materialMetallicRoughness)
-  float roughness = 1.0f;  ///< perceptual, alpha = roughness^2
+  /// The mesh's material (index into Scene::materials) and what its textures
+  /// give at the hit (scene::baseColorTexel, scene::metallicRoughnessTexel;
+  /// 1 where it has none): ir::hitVertex makes the vertex of them.
+  int32_t material = 0;
+  glm::vec3 baseColorTexel{1.0f};
+  glm::vec2 metallicRoughnessTexel{1.0f};
   /// The point on its triangle, for finding it again when the scene moves:
   /// Scene::meshes[mesh]'s triangle `triangle`, at w p0 + u p1 + v p2 with
   /// (u, v) = barycentric, w = 1 - u - v.
@@ -53,6 +56,8 @@ class RayScene {
   /// A ray origin moved off the surface along the geometric normal, on the side
   /// `towards` points to, far enough to avoid hitting the surface itself.
   glm::vec3 offsetOrigin(const SurfaceHit& hit, const glm::vec3& towards) const;
+
+  const scene::Scene& scene() const { return scene_; }
 
   /// A length proportional to the scene's size, for self-intersection epsilons.
   float epsilon_m() const { return epsilon_m_; }

@@ -1,5 +1,5 @@
 #pragma once
-// Albedo and metallic-roughness lookup shared by renderers that shade on the CPU. Matches the GL
+// Base-colour and metallic-roughness texture lookup shared by renderers that shade on the CPU. Matches the GL
 // renderer's sampler state (GL_LINEAR, GL_REPEAT, texel centres at
 // (i + 0.5) / size) so a CPU renderer sees the same values the G-buffer does.
 
@@ -13,11 +13,12 @@ namespace tofsim::scene {
 /// the texture must be non-empty.
 glm::vec3 sampleBilinear(const Texture& texture, const glm::vec2& uv);
 
-/// albedo factor x texture(uv) when the material has a texture, else the factor.
-glm::vec3 materialAlbedo(const Scene& scene, int32_t material, const glm::vec2& uv);
+/// What the material's base-colour texture gives at uv (rgb), 1 where it
+/// has none: its albedo factor's multiplier (physics::texturedVertex).
+glm::vec3 baseColorTexel(const Scene& scene, int32_t material, const glm::vec2& uv);
 
-/// (metallic, roughness): the factors x the metallic-roughness texture's
-/// (B, G) at uv when the material has one, else the factors.
-glm::vec2 materialMetallicRoughness(const Scene& scene, int32_t material, const glm::vec2& uv);
+/// What the material's metallic-roughness texture gives at uv: its (B, G),
+/// 1 where it has none; the (metallic, roughness) factors' multipliers.
+glm::vec2 metallicRoughnessTexel(const Scene& scene, int32_t material, const glm::vec2& uv);
 
 }  // namespace tofsim::scene

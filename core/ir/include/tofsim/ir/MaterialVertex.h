@@ -1,0 +1,24 @@
+#pragma once
+// The one place a scene material becomes a scattering vertex, and the scene's
+// table of them (index = material index) that both backends read: the CPU's
+// hit path (hitVertex) and GL's gathers, whose G-buffer holds the material's
+// index (surface_samples.glsl). A per-material parameter of the transport
+// (a scatter or a temporal response, issue 41) is read from the material here
+// and nowhere else; what the material's textures give is a per-point step
+// (physics::texturedVertex).
+
+#include <vector>
+
+#include "tofsim/physics/ScatterVertex.h"
+#include "tofsim/scene/Scene.h"
+
+namespace tofsim::ir {
+
+/// The vertex of material `m` under model `model` (physics::VERTEX_*:
+/// vertexModelOf render.materials), before its textures.
+physics::ScatterVertex materialVertex(const scene::Material& m, int model);
+
+/// materialVertex of each of the scene's materials, in Scene::materials order.
+std::vector<physics::ScatterVertex> materialVertices(const scene::Scene& scene, int model);
+
+}  // namespace tofsim::ir
