@@ -205,6 +205,13 @@ struct SpadParams {
   /// A return (first / strongest / last, SpadEstimators.h): the matched-filter
   /// response this many background noise sigmas above the background.
   double return_threshold_sigma = 5.0;
+  /// FLIM outputs (SpadFlimImages.h): per pixel a lifetime by a maximum-
+  /// likelihood mono-exponential fit with the instrument's kernel and the
+  /// phasor at the laser's repetition frequency (the TDC's range is the
+  /// laser period), with a phasor plot. Off: none (and no cost).
+  bool flim = false;
+  /// Pixels whose histogram (pile-up corrected) holds fewer counts get NaN.
+  double flim_min_counts = 100.0;
   std::vector<std::array<int32_t, 2>> plot_pixels;  ///< (x, y) pixels to plot; empty = centre
   std::string colormap = "turbo";
 };
