@@ -69,9 +69,12 @@ FlimFitter::FlimFitter(const BinKernel& kernel, const TimeAxis& axis)
     const double w = kernel_.weights[j];
     sum += w;
     kernelMean_ += w * (kernel_.first + static_cast<double>(j));
-    if (w > best) best = w, kernelPeak_ = kernel_.first + static_cast<int32_t>(j);
+    best = std::max(best, w);
   }
   kernelMean_ /= sum;
+  std::size_t rise = 0;
+  while (kernel_.weights[rise] < 0.5 * best) ++rise;
+  kernelHalfRise_ = kernel_.first + static_cast<int32_t>(rise);
 }
 
 void FlimFitter::decay(double tau, double onset, std::vector<double>& z) const {
@@ -106,15 +109,15 @@ double FlimFitter::logLikelihood(const std::vector<double>& h, const Point& p, S
   decay(std::exp(p.v[2]), p.v[3], s.z);
   const double A = std::exp(p.v[0]), B = std::exp(p.v[1]);
   double L = 0.0;
-  for (std::size_t n = 0; n < h.size(); ++n) {
+  for (std::size_t n = 0; n < s.end; ++n) {
     const double mu = A * s.z[n] + B;
     L += (h[n] > 0.0 ? h[n] * std::log(mu) : 0.0) - mu;
   }
   return std::isfinite(L) ? L : -std::numeric_limits<double>::infinity();
 }
 
-// A start the scoring converges from: B the lowest window's mean, s where
-// the peak minus the kernel's peak shift, tau from the centroid (e's mean is
+// A start the scoring converges from: B half the lowest window's mean, s at
+// the rising edge, tau from the centroid (e's mean is
 // s + tau, the kernel adds its mean), A the counts above B.
 FlimFitter::Point FlimFitter::start(const std::vector<double>& h, Scratch& s) const {
   const auto K = static_cast<int32_t>(h.size());
@@ -127,8 +130,13 @@ FlimFitter::Point FlimFitter::start(const std::vector<double>& h, Scratch& s) co
   }
   if (!std::isfinite(lowest)) lowest = 0.0;
   const double B0 = 0.5 * lowest;
-  const auto peak = static_cast<int32_t>(std::max_element(h.begin(), h.end()) - h.begin());
-  const double s0 = peak - kernelPeak_;
+  // The onset from the rising edge: the first bin at half the peak above B0
+  // (a late start would leave counts before it that no gradient sees: the
+  // model is flat in s there), less the kernel's own rise to its half.
+  const double peak = *std::max_element(h.begin(), h.end());
+  int32_t rise = 0;
+  while (rise + 1 < K && h[static_cast<std::size_t>(rise)] - B0 < 0.5 * (peak - B0)) ++rise;
+  const double s0 = rise - kernelHalfRise_;
   double above = 0.0, moment = 0.0;
   for (int32_t n = 0; n < K; ++n) {
     const double v = std::max(0.0, h[static_cast<std::size_t>(n)] - B0);
@@ -146,9 +154,10 @@ FlimFitter::Point FlimFitter::start(const std::vector<double>& h, Scratch& s) co
   return p;
 }
 
-FlimFit FlimFitter::fit(const std::vector<double>& h, Scratch& s) const {
+FlimFit FlimFitter::fit(const std::vector<double>& h, Scratch& s, int32_t endBin) const {
   const int32_t K = axis_.bins;
   TOFSIM_CHECK(static_cast<int32_t>(h.size()) == K);
+  s.end = static_cast<std::size_t>(std::clamp(endBin, 1, K));
   FlimFit out;
   double total = 0.0;
   for (double v : h) total += v;
@@ -175,7 +184,7 @@ FlimFit FlimFitter::fit(const std::vector<double>& h, Scratch& s) const {
     const auto L = static_cast<int64_t>(kernel_.weights.size());
     for (auto& row : I) row.fill(0.0);
     g.fill(0.0);
-    for (int32_t n = 0; n < K; ++n) {
+    for (int32_t n = 0; n < static_cast<int32_t>(s.end); ++n) {
       const auto i = static_cast<std::size_t>(n);
       const int64_t j = n - base;
       const double kj = j >= 0 && j < L ? kernel_.weights[static_cast<std::size_t>(j)] : 0.0;

@@ -42,16 +42,20 @@ class FlimFitter {
 
   struct Scratch {
     std::vector<double> z, zUp, zDown, mu;
+    std::size_t end = 0;  ///< bins fitted
   };
   /// The fit to `h` (axis.bins counts >= 0); not converged (NaN) for an
   /// empty histogram or one the model cannot follow.
-  FlimFit fit(const std::vector<double>& h, Scratch& scratch) const;
+  /// Only bins before `endBin` enter the likelihood (the start still reads all).
+  FlimFit fit(const std::vector<double>& h, Scratch& scratch,
+              int32_t endBin = std::numeric_limits<int32_t>::max()) const;
 
   /// Expected counts per bin, mu_n above (for tests and the bench).
   void expected(double amplitude, double background, double lifetime_s, double onset_s,
                 std::vector<double>& mu) const;
 
   const TimeAxis& axis() const { return axis_; }
+  const BinKernel& kernel() const { return kernel_; }
 
  private:
   struct Point;  // a parameter vector and its likelihood
@@ -63,7 +67,7 @@ class FlimFitter {
   BinKernel kernel_;
   TimeAxis axis_;
   double kernelMean_ = 0.0;    ///< mean shift, bins
-  int32_t kernelPeak_ = 0;     ///< shift of the largest weight, bins
+  int32_t kernelHalfRise_ = 0;  ///< shift of the first weight at half the largest, bins
 };
 
 }  // namespace tofsim::sensors::detail

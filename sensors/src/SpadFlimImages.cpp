@@ -1,5 +1,7 @@
 #include "SpadFlimImages.h"
 
+#include <algorithm>
+#include <cmath>
 #include <limits>
 #include <string>
 #include <utility>
@@ -7,6 +9,31 @@
 #include "SpadImages.h"
 
 namespace tofsim::sensors::detail {
+
+Phasor flimPhasorOf(const FlimFitter& fitter, const FlimPhasor& phasor, const std::vector<double>& h,
+                    const FlimFit& fit, FlimFitter::Scratch& scratch) {
+  const TimeAxis& axis = fitter.axis();
+  const BinKernel& k = fitter.kernel();
+  const double onset = (fit.onset_s - axis.start_s) / axis.bin_width_s;
+  const double tau = fit.lifetime_s / axis.bin_width_s;
+  // The kernel's rise, from its first weight to its peak, taken as its
+  // spread after the peak too (a long diffusion tail would reach too far).
+  const auto peak = std::max_element(k.weights.begin(), k.weights.end()) - k.weights.begin();
+  const double spread = static_cast<double>(peak) + 1.0;
+  const double end = std::min(onset + 0.5 * tau + spread, static_cast<double>(axis.bins));
+  const FlimFit edge = fitter.fit(h, scratch, static_cast<int32_t>(std::ceil(end)));
+  const double onset_s = edge.converged ? edge.onset_s : fit.onset_s;
+  // The bins before the edge: before the onset less the kernel's lead.
+  const double before = (onset_s - axis.start_s) / axis.bin_width_s + std::min(0, k.first) - 1.0;
+  double background = fit.background;
+  if (before >= 4.0) {
+    const auto n = static_cast<std::size_t>(before);
+    background = 0.0;
+    for (std::size_t i = 0; i < n; ++i) background += h[i];
+    background /= static_cast<double>(n);
+  }
+  return phasor.of(h, background, onset_s);
+}
 
 SpadFlimImages::SpadFlimImages(const SpadParams& p, const TimeAxis& axis, const BinKernel& kernel,
                                int32_t height, int32_t width)
@@ -38,7 +65,7 @@ void SpadFlimImages::pixel(std::size_t px, const std::vector<double>& h,
   status_[px] = kFitted;
   lifetime_[px] = static_cast<float>(fit.lifetime_s);
   sigma_[px] = static_cast<float>(fit.lifetime_sigma_s);
-  const Phasor ph = phasor_.of(h, fit.background, fit.onset_s);
+  const Phasor ph = flimPhasorOf(fitter_, phasor_, h, fit, s);
   g_[px] = static_cast<float>(ph.g);
   s_[px] = static_cast<float>(ph.s);
 }

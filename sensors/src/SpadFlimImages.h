@@ -17,6 +17,15 @@
 
 namespace tofsim::sensors::detail {
 
+/// The pixel's phasor as the outputs give it: its time zero the onset of a
+/// second fit to the rising edge alone (bins up to the first fit's onset +
+/// tau / 2 + the kernel's spread), where a mixture of lifetimes looks like
+/// one exponential, so that a mixture's onset is not pulled by its tail;
+/// its background the mean of the bins before the edge (at least 4 of them,
+/// else the fit's), which a mono-exponential fit to a mixture would bias.
+Phasor flimPhasorOf(const FlimFitter& fitter, const FlimPhasor& phasor, const std::vector<double>& h,
+                    const FlimFit& fit, FlimFitter::Scratch& scratch);
+
 class SpadFlimImages {
  public:
   SpadFlimImages(const SpadParams& p, const TimeAxis& axis, const BinKernel& kernel,
