@@ -154,6 +154,47 @@ FlimFitter::Point FlimFitter::start(const std::vector<double>& h, Scratch& s) co
   return p;
 }
 
+struct FlimFitter::Information {
+  Mat I{};  ///< Fisher information of (ln A, ln B, ln tau, s)
+  Vec g{};  ///< the score, d(log-likelihood)
+  std::array<bool, kParams> active{};
+};
+
+// I = sum_n J J^T / mu_n and g = sum_n J (h_n / mu_n - 1), J = d mu_n /
+// d(ln A, ln B, ln tau, s): d/ds in closed form ((z - k) / tau: a shift of
+// the decay moves its start's unit impulse), d/d ln tau by a central
+// difference.
+void FlimFitter::information(const std::vector<double>& h, const Point& q, Scratch& s,
+                             Information& out) const {
+  const double A = std::exp(q.v[0]), B = std::exp(q.v[1]), tau = std::exp(q.v[2]);
+  decay(tau * std::exp(kStepTau), q.v[3], s.zUp);
+  decay(tau * std::exp(-kStepTau), q.v[3], s.zDown);
+  decay(tau, q.v[3], s.z);
+  const int64_t base = static_cast<int64_t>(std::floor(q.v[3])) + kernel_.first;
+  const auto L = static_cast<int64_t>(kernel_.weights.size());
+  for (auto& row : out.I) row.fill(0.0);
+  out.g.fill(0.0);
+  for (std::size_t i = 0; i < s.end; ++i) {
+    const int64_t j = static_cast<int64_t>(i) - base;
+    const double kj = j >= 0 && j < L ? kernel_.weights[static_cast<std::size_t>(j)] : 0.0;
+    const Vec J = {A * s.z[i], B, A * (s.zUp[i] - s.zDown[i]) / (2.0 * kStepTau),
+                   A * (s.z[i] - kj) / tau};
+    const double mu = A * s.z[i] + B;
+    const double r = h[i] / mu - 1.0;
+    for (int a = 0; a < kParams; ++a) {
+      out.g[a] += J[a] * r;
+      for (int b = 0; b <= a; ++b) out.I[a][b] += J[a] * J[b] / mu;
+    }
+  }
+  double largest = 0.0;
+  for (int a = 0; a < kParams; ++a) {
+    for (int b = 0; b < a; ++b) out.I[b][a] = out.I[a][b];
+    largest = std::max(largest, out.I[a][a]);
+  }
+  // A background at its floor carries no information: held there.
+  for (int a = 0; a < kParams; ++a) out.active[a] = out.I[a][a] > 1e-14 * largest;
+}
+
 FlimFit FlimFitter::fit(const std::vector<double>& h, Scratch& s, int32_t endBin) const {
   const int32_t K = axis_.bins;
   TOFSIM_CHECK(static_cast<int32_t>(h.size()) == K);
@@ -171,51 +212,18 @@ FlimFit FlimFitter::fit(const std::vector<double>& h, Scratch& s, int32_t endBin
   for (int i = 0; i < kParams; ++i) p.v[i] = std::clamp(p.v[i], lo[i], hi[i]);
   p.L = logLikelihood(h, p, s);
 
-  // Fisher information I and score g of (ln A, ln B, ln tau, s) at p.
-  Mat I{};
-  Vec g{};
-  std::array<bool, kParams> active{};
-  const auto information = [&](const Point& q) {
-    const double A = std::exp(q.v[0]), B = std::exp(q.v[1]), tau = std::exp(q.v[2]);
-    decay(tau * std::exp(kStepTau), q.v[3], s.zUp);
-    decay(tau * std::exp(-kStepTau), q.v[3], s.zDown);
-    decay(tau, q.v[3], s.z);
-    const int64_t base = static_cast<int64_t>(std::floor(q.v[3])) + kernel_.first;
-    const auto L = static_cast<int64_t>(kernel_.weights.size());
-    for (auto& row : I) row.fill(0.0);
-    g.fill(0.0);
-    for (int32_t n = 0; n < static_cast<int32_t>(s.end); ++n) {
-      const auto i = static_cast<std::size_t>(n);
-      const int64_t j = n - base;
-      const double kj = j >= 0 && j < L ? kernel_.weights[static_cast<std::size_t>(j)] : 0.0;
-      const Vec J = {A * s.z[i], B, A * (s.zUp[i] - s.zDown[i]) / (2.0 * kStepTau),
-                     A * (s.z[i] - kj) / tau};
-      const double mu = A * s.z[i] + B;
-      const double r = h[i] / mu - 1.0;
-      for (int a = 0; a < kParams; ++a) {
-        g[a] += J[a] * r;
-        for (int b = 0; b <= a; ++b) I[a][b] += J[a] * J[b] / mu;
-      }
-    }
-    double largest = 0.0;
-    for (int a = 0; a < kParams; ++a) {
-      for (int b = 0; b < a; ++b) I[b][a] = I[a][b];
-      largest = std::max(largest, I[a][a]);
-    }
-    // A background at its floor carries no information: held there.
-    for (int a = 0; a < kParams; ++a) active[a] = I[a][a] > 1e-14 * largest;
-  };
-
+  Information info;
   double lambda = 1e-3;
   for (out.iterations = 0; out.iterations < kMaxIterations; ++out.iterations) {
-    information(p);
+    information(h, p, s, info);
+    const Mat& I = info.I;
     bool accepted = false;
     double gain = 0.0;
     for (int tries = 0; tries < 40 && !accepted; ++tries) {
       Mat M = I;
       for (int a = 0; a < kParams; ++a) M[a][a] *= 1.0 + lambda;
       Vec step{};
-      if (solve(M, g, active, step)) {
+      if (solve(M, info.g, info.active, step)) {
         Point q = p;
         for (int a = 0; a < kParams; ++a) {
           q.v[a] = std::clamp(p.v[a] + std::clamp(step[a], -maxStep[a], maxStep[a]), lo[a], hi[a]);
@@ -241,7 +249,7 @@ FlimFit FlimFitter::fit(const std::vector<double>& h, Scratch& s, int32_t endBin
     out.converged = false;
   }
   if (!out.converged) return out;
-  information(p);
+  information(h, p, s, info);
   const double tau = std::exp(p.v[2]);
   const double w = axis_.bin_width_s;
   out.lifetime_s = tau * w;
@@ -250,7 +258,7 @@ FlimFit FlimFitter::fit(const std::vector<double>& h, Scratch& s, int32_t endBin
   out.background = std::exp(p.v[1]) > std::exp(kMinLnB + 1.0) ? std::exp(p.v[1]) : 0.0;
   // Cramer-Rao: var(ln tau) = (I^-1)_(ln tau, ln tau).
   Vec unitTau{0.0, 0.0, 1.0, 0.0}, column{};
-  if (active[2] && solve(I, unitTau, active, column) && column[2] > 0.0) {
+  if (info.active[2] && solve(info.I, unitTau, info.active, column) && column[2] > 0.0) {
     out.lifetime_sigma_s = out.lifetime_s * std::sqrt(column[2]);
   }
   return out;

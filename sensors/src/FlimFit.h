@@ -58,10 +58,13 @@ class FlimFitter {
   const BinKernel& kernel() const { return kernel_; }
 
  private:
-  struct Point;  // a parameter vector and its likelihood
+  struct Point;        // a parameter vector and its likelihood
+  struct Information;  // the Fisher information and score at a point
   /// z = k * e(tau, s), tau and s in bins.
   void decay(double tauBins, double onsetBins, std::vector<double>& z) const;
   double logLikelihood(const std::vector<double>& h, const Point& p, Scratch& s) const;
+  void information(const std::vector<double>& h, const Point& q, Scratch& s,
+                   Information& out) const;
   Point start(const std::vector<double>& h, Scratch& s) const;
 
   BinKernel kernel_;
