@@ -10,6 +10,7 @@
 
 #include <cmath>
 #include <fstream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -124,6 +125,12 @@ TEST_F(ResponseTableConfigTest, BadTablesAreLocatedErrors) {
             std::string::npos);
   EXPECT_NE(errorOf("{file: neg.csv, delay_unit: fs}").find("must be s, ms, us, ns or ps"),
             std::string::npos);
+  // A table too wide for the stage loads, and the stage refuses it (the
+  // material table reports that at its key), before casting its reach.
+  write("wide.csv", "0,1\n1e300,1\n");
+  EXPECT_THROW(physics::responseTaps(parse("{file: wide.csv}"), kBin_s), std::invalid_argument);
+  write("second.csv", "0,1\n1,1\n");
+  EXPECT_THROW(physics::responseTaps(parse("{file: second.csv}"), kBin_s), std::invalid_argument);
   // A link is refused, not read through.
   write("real.csv", "0,1\n1e-9,1\n");
   std::filesystem::create_symlink(dir_ / "real.csv", dir_ / "link.csv");
