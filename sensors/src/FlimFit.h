@@ -12,7 +12,8 @@
 // decay is geometric past its first bin), O(bins + kernel) per evaluation.
 // The lifetime's uncertainty is the Cramer-Rao bound from the Fisher
 // information at the optimum. Plain functions of the histogram: no random
-// numbers, the same doubles on any thread. Model: sensors/README.md, "FLIM".
+// numbers, the same doubles on any thread. Model: sensors/README.md, "FLIM:
+// lifetime and phasor".
 
 #include <cstdint>
 #include <limits>

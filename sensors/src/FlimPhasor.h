@@ -9,7 +9,7 @@
 // path): a mono-exponential of lifetime tau lands on the universal
 // semicircle g = 1 / (1 + (w tau)^2), s = w tau / (1 + (w tau)^2), w = 2 pi f;
 // a mixture inside it, on the chord between its lifetimes' points at their
-// photon fractions. Model: sensors/README.md, "FLIM".
+// photon fractions. Model: sensors/README.md, "FLIM: lifetime and phasor".
 
 #include <complex>
 #include <cstdint>

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <string>
 #include <utility>
@@ -106,11 +107,13 @@ void SpadFlimImages::finish(std::vector<SensorOutput>& outputs) {
   picture.unit = "ns";
   picture.colormap = colormap_;
   outputs.push_back(std::move(picture));
-  SensorOutput phasorPicture =
-      spadImage("spad_phasor_plot", kPhasorPlotHeight, kPhasorPlotWidth, std::move(plot), "pixels",
-                "FLIM phasor plot at " + std::to_string(f * 1e-6).substr(0, 6) +
-                    " MHz: pixels per (g, s) cell, g 0..1 left to right, s 0..0.6 bottom to top, "
-                    "universal semicircle in the top colour");
+  char title[160];
+  std::snprintf(title, sizeof title,
+                "FLIM phasor plot at %.4g MHz: pixels per (g, s) cell, g 0..1 left to right, "
+                "s 0..0.6 bottom to top, universal semicircle in the top colour",
+                f * 1e-6);
+  SensorOutput phasorPicture = spadImage("spad_phasor_plot", kPhasorPlotHeight, kPhasorPlotWidth,
+                                         std::move(plot), "pixels", title);
   phasorPicture.kind = SensorOutput::Kind::ColorMappedImage;
   phasorPicture.colormap = "viridis";
   phasorPicture.attributes = phasorAttributes;

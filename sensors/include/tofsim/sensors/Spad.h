@@ -270,7 +270,10 @@ bool deadTimeReachesNextCycle(const std::vector<double>& counts, int32_t deadBin
 /// (spadHasPixelMaps), "spad_pde_map" and "spad_dcr_map" Images (H, W), with
 /// the attributes hot_pixels and dead_pixels; with gate_skew_sigma_s,
 /// "spad_gate_skew_map" Image (H, W) in s; with gated_frames,
-/// "spad_gated_counts" and "spad_gated_flux" Arrays (H, W, gate_positions).
+/// "spad_gated_counts" and "spad_gated_flux" Arrays (H, W, gate_positions);
+/// with flim, "spad_lifetime" and "spad_lifetime_sigma" (s), "spad_phasor_g"
+/// and "spad_phasor_s" Images (H, W), NaN below flim_min_counts, and the
+/// pictures "spad_lifetime" (ns) and "spad_phasor_plot" (SpadFlimImages.h).
 std::vector<SensorOutput> runSpad(const TransientVolume& volume, const SpadParams& params,
                                   uint64_t seed);
 
