@@ -108,6 +108,14 @@ ap = [(1e-9 * (k + 0.5), 2.0 ** -k) for k in range(6)]
 out("fuzz_spad_tables", "afterpulse_csv", b"\3" + ("delay_s,density\n" + "".join("%g,%g\n" % r for r in ap)).encode())
 out("fuzz_spad_tables", "afterpulse_npy", b"\4" + npy((6, 2), [v for r in ap for v in r]))
 
+# measured scattering-delay kernels (fuzz/ResponseTableInput.h: first byte
+# even a .csv, odd an (n, 2) .npy; (byte / 2) mod 5 the delay unit s, ms, us,
+# ns, ps): an exponential of 2.5 ns sampled every 0.25 ns
+decay = [(0.25 * k, 2.718281828 ** (-0.25 * k / 2.5)) for k in range(40)]
+out("fuzz_response_table", "exponential_csv_s",
+    b"\0" + ("# delay_s,weight\n" + "".join("%g,%g\n" % (t * 1e-9, w) for t, w in decay)).encode())
+out("fuzz_response_table", "exponential_npy_ns", b"\7" + npy((40, 2), [v for r in decay for v in r]))
+
 # camera files (fuzz/CameraFilesInput.h: first byte 0 OpenCV calibration YAML,
 # 1 correlation waveform .csv, 2 the same as .npy, 3 vignetting map .npy,
 # 4 PSF kernel .npy, 5 delay map .npy, 6 companding .csv, 7 noise table .csv)

@@ -41,6 +41,7 @@ SpadImages::SpadImages(const SpadParams& p, const TimeAxis& axis, const BinKerne
   returns_.assign(HW, 0.0f);
   for (auto& d : returnDepth_) d.assign(HW, nan);
   for (auto& v : returnIntensity_) v.assign(HW, 0.0f);
+  if (p.flim) flim_.emplace(p, axis, kernel, height, width);
 }
 
 void SpadImages::pixel(std::size_t px, const std::vector<double>& h, Scratch& s) const {
@@ -72,6 +73,7 @@ void SpadImages::pixel(std::size_t px, const std::vector<double>& h, Scratch& s)
     returnDepth_[r][px] = static_cast<float>(returns[r]->depth_m);
     returnIntensity_[r][px] = static_cast<float>(returns[r]->intensity);
   }
+  if (flim_) flim_->pixel(px, s.lossless, s.flim);
 }
 
 SensorOutput SpadImages::depthImage(const std::string& name, std::vector<float> data,
@@ -118,6 +120,7 @@ void SpadImages::finish(std::vector<SensorOutput>& outputs) {
   }
   outputs.push_back(spadImage("spad_returns", H, W, std::move(returns_), "-",
                               "SPAD returns above return_threshold per pixel"));
+  if (flim_) flim_->finish(outputs);
 }
 
 void appendSpadMapImages(const SpadParams& p, const SpadPixelMaps& maps, int32_t H, int32_t W,

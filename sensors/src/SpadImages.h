@@ -7,10 +7,12 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "SpadEstimators.h"
+#include "SpadFlimImages.h"
 #include "tofsim/sensors/SensorOutput.h"
 #include "tofsim/sensors/Spad.h"
 #include "tofsim/sensors/SpadPixelMaps.h"
@@ -34,13 +36,15 @@ class SpadImages {
   struct Scratch {
     std::vector<double> lossless;
     SpadEstimator::Scratch estimates;
+    FlimFitter::Scratch flim;
   };
   /// Pixel px's values from its histogram `h` (any thread, each pixel once).
   void pixel(std::size_t px, const std::vector<double>& h, Scratch& s) const;
 
   /// Appends the depth Images (with point clouds), spad_intensity and
   /// spad_confidence, ColorMappedImages of those five, the three returns'
-  /// depths and intensities and spad_returns (runSpad's order).
+  /// depths and intensities and spad_returns (runSpad's order); then, with
+  /// SpadParams::flim, the FLIM outputs (SpadFlimImages.h).
   void finish(std::vector<SensorOutput>& outputs);
 
  private:
@@ -55,6 +59,7 @@ class SpadImages {
   const std::string colormap_;
   const TimeAxis axis_;
   const SpadEstimator estimator_;
+  std::optional<SpadFlimImages> flim_;  ///< with SpadParams::flim
   // Written by pixel() from several threads, each pixel by one only.
   mutable std::vector<float> depthPeak_, depthCoates_, intensity_, depthMatched_, confidence_,
       returns_;

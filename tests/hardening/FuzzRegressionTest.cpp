@@ -17,6 +17,7 @@
 #include "fuzz/IrfInput.h"
 #include "fuzz/SceneInvariants.h"
 #include "fuzz/SequenceInput.h"
+#include "fuzz/ResponseTableInput.h"
 #include "fuzz/SpadTablesInput.h"
 #include "support/TempDir.h"
 #include "tofsim/config/RunConfig.h"
@@ -89,6 +90,16 @@ TEST_F(FuzzRegressionTest, IrfFiles) {
     const auto* data = reinterpret_cast<const uint8_t*>(bytes.data());
     const fs::path config = fuzz::writeIrfInput(dir_, data, bytes.size());
     if (!config.empty()) config::loadRunConfig(config, {});
+  });
+  EXPECT_GT(inputs, 0);
+}
+
+// As in fuzz/fuzz_response_table.cpp: a material's measured scattering
+// delay, CSV or .npy, then the stage's taps.
+TEST_F(FuzzRegressionTest, ResponseTableFiles) {
+  const int inputs = forEachInput("response_table", [&](const std::string& bytes, const fs::path&) {
+    const auto* data = reinterpret_cast<const uint8_t*>(bytes.data());
+    fuzz::loadResponseTable(fuzz::writeResponseTableInput(dir_, data, bytes.size()));
   });
   EXPECT_GT(inputs, 0);
 }

@@ -12,11 +12,10 @@ void failAt(const ConfigNode& n, const std::string& key, const std::filesystem::
   n.failKey(key, path.string() + ":" + std::to_string(line) + ": " + message);
 }
 
-std::vector<CsvRow> readCsvRows(const ConfigNode& n, const std::string& key,
-                                const std::filesystem::path& path, std::size_t columns,
-                                const std::string& description) {
-  std::ifstream in(path);
-  if (!in) n.failKey(key, "cannot read " + path.string());
+namespace {
+std::vector<CsvRow> readRows(const ConfigNode& n, const std::string& key,
+                             const std::filesystem::path& path, std::istream& in,
+                             std::size_t columns, const std::string& description) {
   std::vector<CsvRow> rows;
   std::string line;
   int lineNo = 0;
@@ -53,6 +52,22 @@ std::vector<CsvRow> readCsvRows(const ConfigNode& n, const std::string& key,
     rows.push_back(std::move(row));
   }
   return rows;
+}
+}  // namespace
+
+std::vector<CsvRow> readCsvRows(const ConfigNode& n, const std::string& key,
+                                const std::filesystem::path& path, std::size_t columns,
+                                const std::string& description) {
+  std::ifstream in(path);
+  if (!in) n.failKey(key, "cannot read " + path.string());
+  return readRows(n, key, path, in, columns, description);
+}
+
+std::vector<CsvRow> readCsvText(const ConfigNode& n, const std::string& key,
+                                const std::filesystem::path& path, const std::string& text,
+                                std::size_t columns, const std::string& description) {
+  std::istringstream in(text);
+  return readRows(n, key, path, in, columns, description);
 }
 
 }  // namespace tofsim::config

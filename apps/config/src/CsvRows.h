@@ -26,6 +26,12 @@ std::vector<CsvRow> readCsvRows(const ConfigNode& n, const std::string& key,
                                 const std::filesystem::path& path, std::size_t columns,
                                 const std::string& description);
 
+/// The same rows from the file's text, read by the caller (a file opened
+/// without following links, io/FileBytes.h); `path` names it in errors.
+std::vector<CsvRow> readCsvText(const ConfigNode& n, const std::string& key,
+                                const std::filesystem::path& path, const std::string& text,
+                                std::size_t columns, const std::string& description);
+
 /// The located error for line `line` of `path` (read at key `key`).
 [[noreturn]] void failAt(const ConfigNode& n, const std::string& key,
                          const std::filesystem::path& path, int line, const std::string& message);

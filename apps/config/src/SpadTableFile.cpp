@@ -9,6 +9,7 @@
 
 #include "ConfigPath.h"
 #include "CsvRows.h"
+#include "DelayTableFile.h"
 #include "ShortestNumber.h"
 #include "TableText.h"
 #include "tofsim/io/Npy.h"
@@ -36,74 +37,14 @@ std::vector<double> readColumnCsv(const ConfigNode& n, const char* key,
   return values;
 }
 
-// Rows (delay, density) of a two-column CSV, each with its line for errors.
-struct Rows {
-  std::vector<double> delays, values;
-  std::vector<std::string> where;  ///< "file:line" (CSV) or "file row k" (.npy)
-};
-
-Rows readTwoColumnCsv(const ConfigNode& n, const char* key, const std::filesystem::path& path) {
-  Rows rows;
-  for (const CsvRow& row : readCsvRows(n, key, path, 2, "delay in s, density")) {
-    rows.delays.push_back(row.cells[0]);
-    rows.values.push_back(row.cells[1]);
-    rows.where.push_back(path.string() + ":" + std::to_string(row.line));
-  }
-  return rows;
-}
 }  // namespace
 
 sensors::SpadAfterpulseTable parseAfterpulseDelayTable(const ConfigNode& n) {
-  const char* key = "afterpulse_delay_table";
-  const std::filesystem::path path = existingDataFile(n, key);
-  const std::string file = path.string();
-  const std::string ext = lowerExtension(path);
-  Rows rows;
-  if (ext == ".npy") {
-    const io::NpyArray a =
-        readNpyAt(n, key, path, "an afterpulse delay table .npy is a float32 (n, 2) array");
-    if (a.shape.size() != 2 || a.shape[1] != 2) {
-      std::string shape;
-      for (std::size_t d : a.shape) shape += (shape.empty() ? "" : ", ") + std::to_string(d);
-      n.failKey(key, file + ": expected shape (n, 2) (delay in s, density), got (" + shape + ")");
-    }
-    for (std::size_t k = 0; k < a.shape[0]; ++k) {
-      rows.delays.push_back(a.data[2 * k]);
-      rows.values.push_back(a.data[2 * k + 1]);
-      rows.where.push_back(file + " row " + std::to_string(k));
-    }
-  } else if (ext == ".csv") {
-    rows = readTwoColumnCsv(n, key, path);
-  } else {
-    n.failKey(key,
-              "a .npy (n, 2) or two-column .csv file (got '" + path.filename().string() + "')");
-  }
-  if (rows.delays.size() < 2) {
-    n.failKey(key, file + ": needs at least 2 rows (delay, density), got " +
-                       std::to_string(rows.delays.size()));
-  }
-  double area = 0.0;
-  for (std::size_t k = 0; k < rows.delays.size(); ++k) {
-    const double t = rows.delays[k], v = rows.values[k];
-    const std::string& at = rows.where[k];
-    if (!std::isfinite(t) || t < 0.0) {
-      n.failKey(key, at + ": delay " + shortest(t) + " s is " +
-                         (std::isfinite(t) ? "negative" : "not finite") +
-                         " (delays count from the end of the dead time)");
-    }
-    if (k > 0 && !(t > rows.delays[k - 1])) {
-      n.failKey(key, at + ": delays must increase (" + shortest(t) + " s after " +
-                         shortest(rows.delays[k - 1]) + " s)");
-    }
-    if (!std::isfinite(v) || v < 0.0) {
-      n.failKey(key, at + ": density " + shortest(v) + " is " +
-                         (std::isfinite(v) ? "negative" : "not finite") +
-                         " (a delay density is >= 0)");
-    }
-    area += v;
-  }
-  if (!(area > 0.0)) n.failKey(key, file + ": the density has no area (every value is 0)");
-  return sensors::afterpulseTable(file, rows.delays, rows.values);
+  const DelayTableWords words{"an afterpulse delay table", "density",
+                              "delays count from the end of the dead time",
+                              "a delay density is >= 0"};
+  DelayRows rows = readDelayTable(n, "afterpulse_delay_table", words);
+  return sensors::afterpulseTable(rows.file, std::move(rows.delays), rows.values);
 }
 
 sensors::SpadDnl parseDnl(const ConfigNode& n) {

@@ -205,6 +205,13 @@ struct SpadParams {
   /// A return (first / strongest / last, SpadEstimators.h): the matched-filter
   /// response this many background noise sigmas above the background.
   double return_threshold_sigma = 5.0;
+  /// FLIM outputs (SpadFlimImages.h): per pixel a lifetime by a maximum-
+  /// likelihood mono-exponential fit with the instrument's kernel and the
+  /// phasor at the laser's repetition frequency (the TDC's range is the
+  /// laser period), with a phasor plot. Off: none (and no cost).
+  bool flim = false;
+  /// Pixels whose histogram (pile-up corrected) holds fewer counts get NaN.
+  double flim_min_counts = 100.0;
   std::vector<std::array<int32_t, 2>> plot_pixels;  ///< (x, y) pixels to plot; empty = centre
   std::string colormap = "turbo";
 };
@@ -263,7 +270,10 @@ bool deadTimeReachesNextCycle(const std::vector<double>& counts, int32_t deadBin
 /// (spadHasPixelMaps), "spad_pde_map" and "spad_dcr_map" Images (H, W), with
 /// the attributes hot_pixels and dead_pixels; with gate_skew_sigma_s,
 /// "spad_gate_skew_map" Image (H, W) in s; with gated_frames,
-/// "spad_gated_counts" and "spad_gated_flux" Arrays (H, W, gate_positions).
+/// "spad_gated_counts" and "spad_gated_flux" Arrays (H, W, gate_positions);
+/// with flim, "spad_lifetime" and "spad_lifetime_sigma" (s), "spad_phasor_g"
+/// and "spad_phasor_s" Images (H, W), NaN below flim_min_counts, and the
+/// pictures "spad_lifetime" (ns) and "spad_phasor_plot" (SpadFlimImages.h).
 std::vector<SensorOutput> runSpad(const TransientVolume& volume, const SpadParams& params,
                                   uint64_t seed);
 

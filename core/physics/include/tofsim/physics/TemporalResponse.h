@@ -90,6 +90,16 @@ inline void requireTaps(std::size_t count) {
   }
 }
 
+// Before a kernel's last bin is cast to an integer (a huge one would
+// overflow the cast): its reach from zero delay, in bins.
+inline void requireReach(double bins) {
+  if (!(bins < static_cast<double>(kMaxResponseTaps))) {
+    throw std::invalid_argument("a response kernel reaches " + std::to_string(bins) +
+                                " bins past zero delay, over the " +
+                                std::to_string(kMaxResponseTaps) + " the stage allows");
+  }
+}
+
 // Exponential of lifetime tau (bins): bin-integral coefficients of the
 // exponential convolved with a bin's box. Tap 0 = int_0^1 (1 - u) k(u) du
 // = 1 - tau (1 - a); tap m >= 1 = tau (1 - a)^2 a^(m - 1), a = exp(-1/tau):
@@ -178,6 +188,7 @@ inline ResponseTaps responseTaps(const ResponseKernel& kernel, double binWidth_s
       if (!(kernel.mean_s >= 0.0 && kernel.sigma_s > 0.0) || !std::isfinite(kernel.mean_s + kernel.sigma_s)) {
         throw std::invalid_argument("a Gaussian response needs a mean >= 0 and a sigma > 0");
       }
+      detail::requireReach((kernel.mean_s + 8.0 * kernel.sigma_s) / binWidth_s);
       return detail::gaussianTaps(kernel.mean_s / binWidth_s, kernel.sigma_s / binWidth_s,
                                   kernel.fraction);
     case ResponseModel::Table: {
@@ -192,6 +203,7 @@ inline ResponseTaps responseTaps(const ResponseKernel& kernel, double binWidth_s
         throw std::invalid_argument(
             "a response table needs >= 2 ascending delays >= 0 with weights >= 0");
       }
+      detail::requireReach(t.back() / binWidth_s);
       std::vector<double> u(t.size());
       for (std::size_t i = 0; i < t.size(); ++i) u[i] = t[i] / binWidth_s;
       return detail::tableTaps(u, kernel.tableWeight, kernel.fraction);

@@ -1,0 +1,69 @@
+#include "FlimPhasor.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "tofsim/util/Error.h"
+
+namespace tofsim::sensors::detail {
+
+Phasor monoExponentialPhasor(double lifetime_s, double frequency_Hz) {
+  const double wt = 2.0 * M_PI * frequency_Hz * lifetime_s;
+  const double d = 1.0 + wt * wt;
+  return {1.0 / d, wt / d};
+}
+
+FlimPhasor::FlimPhasor(const BinKernel& kernel, const TimeAxis& axis)
+    : axis_(axis), frequency_Hz_(1.0 / (axis.bins * axis.bin_width_s)) {
+  TOFSIM_CHECK(axis.bins > 0 && axis.bin_width_s > 0.0);
+  const double step = 2.0 * M_PI / axis.bins;  // w x bin_width
+  for (int32_t n = 0; n < axis.bins; ++n) {
+    cos_.push_back(std::cos(step * (n + 0.5)));
+    sin_.push_back(std::sin(step * (n + 0.5)));
+  }
+  for (std::size_t j = 0; j < kernel.weights.size(); ++j) {
+    kernel_ += kernel.weights[j] * std::polar(1.0, step * (kernel.first + static_cast<double>(j)));
+  }
+}
+
+Phasor FlimPhasor::of(const std::vector<double>& h, double background, double onset_s) const {
+  TOFSIM_CHECK(h.size() == cos_.size());
+  double total = 0.0, re = 0.0, im = 0.0;
+  for (std::size_t n = 0; n < h.size(); ++n) {
+    total += h[n];
+    re += h[n] * cos_[n];
+    im += h[n] * sin_[n];
+  }
+  const double signal = total - background * static_cast<double>(h.size());
+  if (!(signal > 0.0) || !std::isfinite(onset_s)) return {};
+  const double turn = -2.0 * M_PI * frequency_Hz_ * (onset_s - axis_.start_s);
+  const std::complex<double> p = std::complex<double>(re, im) / signal / kernel_ *
+                                 std::polar(1.0, turn);
+  return {p.real(), p.imag()};
+}
+
+std::vector<float> phasorPlot(const std::vector<float>& g, const std::vector<float>& s) {
+  const int32_t W = kPhasorPlotWidth, H = kPhasorPlotHeight;
+  std::vector<float> cells(static_cast<std::size_t>(W) * H, 0.0f);
+  const auto cell = [&](double gv, double sv) -> float* {
+    // Outside the plot (or NaN): no cell (and no cast of a huge double).
+    if (!(gv >= 0.0 && gv < W * kPhasorCell && sv >= 0.0 && sv < H * kPhasorCell)) return nullptr;
+    const auto x = static_cast<int64_t>(std::floor(gv / kPhasorCell));
+    const auto y = static_cast<int64_t>(H - 1 - std::floor(sv / kPhasorCell));  // row 0 = top
+    if (!(x >= 0 && x < W && y >= 0 && y < H)) return nullptr;
+    return &cells[static_cast<std::size_t>(y) * W + static_cast<std::size_t>(x)];
+  };
+  for (std::size_t i = 0; i < g.size(); ++i) {
+    if (float* c = cell(g[i], s[i])) *c += 1.0f;
+  }
+  const float top = std::max(1.0f, *std::max_element(cells.begin(), cells.end()));
+  // The semicircle (g - 1/2)^2 + s^2 = 1/4, s >= 0, a point per half cell.
+  const int32_t points = 4 * W;
+  for (int32_t k = 0; k <= points; ++k) {
+    const double angle = M_PI * k / points;
+    if (float* c = cell(0.5 + 0.5 * std::cos(angle), 0.5 * std::sin(angle))) *c = top;
+  }
+  return cells;
+}
+
+}  // namespace tofsim::sensors::detail
