@@ -209,6 +209,85 @@ void setUpFrame(FrameCapture& f, std::size_t k, const scene::AnimatedScene& anim
   f.options.batchManifest.reset();
 }
 
+// The frames of the new set: their entries of sequence.json, each one's
+// finished folder (kept from an earlier run of the same inputs, or the one
+// it is rendered into) and which are to be rendered.
+struct FramePlan {
+  json frames = json::array();
+  std::vector<fs::path> done;
+  std::vector<std::size_t> fresh;
+};
+
+FramePlan planFrames(const config::RunConfig& config, const fs::path& root,
+                     const fs::path& partial, const json& key, const Progress& progress) {
+  const std::vector<double>& times = config.sequence->times_s;
+  FramePlan plan;
+  for (std::size_t k = 0; k < times.size(); ++k) {
+    const double t = times[k];
+    const uint64_t seed = sequenceFrameSeed(config.render.seed, k);
+    const std::string name = frameFolder(k);
+    plan.frames.push_back({{"index", k}, {"time_s", t}, {"seed", seed}, {"folder", name}});
+    // Finished by an interrupted run, or in the earlier complete set.
+    std::optional<fs::path> kept;
+    for (const fs::path& f : {partial / name, root / name}) {
+      if (!kept && frameDone(f, k, t, seed, key)) kept = f;
+    }
+    plan.done.push_back(kept.value_or(partial / name));
+    if (kept) {
+      progress.message("frame " + std::to_string(k) + " (t = " + std::to_string(t) +
+                       " s): kept from an earlier run of the same inputs");
+    } else {
+      plan.fresh.push_back(k);
+    }
+  }
+  return plan;
+}
+
+// The frames to render, each a capture of the loop, one after another (the
+// scene moves in place; the frame in flight is `current`), through the
+// renderer prepared once: its device, the scene's buffers and BVH,
+// re-prepared in place per frame, and the scene, whose moving meshes and
+// cameras alone are re-baked at each time. `summary`: the last frame's render.
+void renderFrames(const config::RunConfig& config, const FramePlan& plan,
+                  const scene::AnimatedScene& animated, PreparedRenderer& prepared,
+                  const json& key, const RunOptions& options, Progress& progress,
+                  RunSummary& summary) {
+  const std::vector<double>& times = config.sequence->times_s;
+  const RendererChoice& renderer = prepared.renderer(config);
+  progress.message("device: " + renderer.renderer->description() + " (backend " + renderer.backend +
+                   ")");
+  scene::Scene scene = animated.restScene();
+  std::optional<FrameCapture> current;
+  CaptureLoopOptions loop;
+  loop.withinCapture = [&](std::size_t d, std::size_t total, const std::string& what) {
+    progress.update(d, total, what);
+  };
+  renderCaptures(
+      prepared, config, plan.fresh.size(),
+      [&](std::size_t i) {
+        const std::size_t k = plan.fresh[i];
+        progress.message("frame " + std::to_string(k + 1) + "/" + std::to_string(times.size()) +
+                         " at t = " + std::to_string(times[k]) + " s");
+        current.reset();
+        current.emplace(FrameCapture{config, options, {}, {}});
+        current->config.render.seed = sequenceFrameSeed(config.render.seed, k);
+        setUpFrame(*current, k, animated, scene, prepared, renderer, key, plan.done[k]);
+        return current->frame.jobAt(0.0);
+      },
+      [&](std::size_t, const capture::RenderJob& job) {
+        FrameCapture& f = *current;
+        return outputSink(f.config, job, f.options, progress, f.summary, &f.frame);
+      },
+      loop);
+  if (current) {
+    summary.backend = current->summary.backend;
+    summary.device = current->summary.device;
+    summary.result = std::move(current->summary.result);
+  }
+  progress.message(std::to_string(plan.fresh.size()) + " frame(s) rendered, " +
+                   std::to_string(times.size() - plan.fresh.size()) + " kept");
+}
+
 // The sequence's own files beside its frames (linked into `staging`): every
 // frame's files listed, depth_sequence.npy, sequence.mp4, sequence.json, the
 // effective config and, for a batch's run, the manifest.
@@ -281,70 +360,12 @@ RunSummary runSequenceRender(const config::RunConfig& config, PreparedRenderer& 
       options.batchManifest ? options.batchManifest->inputs : runContentKey(config);
   const json key = keyJson(runKey);
 
-  // Prepared once: the renderer (its device, the scene's buffers and BVH,
-  // re-prepared in place per frame) and the scene, whose moving meshes and
-  // cameras alone are re-baked at each time.
-  const RendererChoice& renderer = prepared.renderer(config);
-  progress.message("device: " + renderer.renderer->description() + " (backend " + renderer.backend +
-                   ")");
-  scene::Scene scene = animated.restScene();
-  json frames = json::array();
-  std::vector<fs::path> done;      // frame k's finished folder
-  std::vector<std::size_t> fresh;  // the frames to render
-  for (std::size_t k = 0; k < seq.times_s.size(); ++k) {
-    const double t = seq.times_s[k];
-    const uint64_t seed = sequenceFrameSeed(config.render.seed, k);
-    const std::string name = frameFolder(k);
-    frames.push_back({{"index", k}, {"time_s", t}, {"seed", seed}, {"folder", name}});
-    // Finished by an interrupted run, or in the earlier complete set.
-    std::optional<fs::path> kept;
-    for (const fs::path& f : {partial / name, root / name}) {
-      if (!kept && frameDone(f, k, t, seed, key)) kept = f;
-    }
-    done.push_back(kept.value_or(partial / name));
-    if (kept) {
-      progress.message("frame " + std::to_string(k) + " (t = " + std::to_string(t) +
-                       " s): kept from an earlier run of the same inputs");
-    } else {
-      fresh.push_back(k);
-    }
-  }
-  // Each frame to render is a capture of the loop, one after another (the
-  // scene moves in place): the frame in flight is `current`.
-  std::optional<FrameCapture> current;
-  CaptureLoopOptions loop;
-  loop.withinCapture = [&](std::size_t d, std::size_t total, const std::string& what) {
-    progress.update(d, total, what);
-  };
-  renderCaptures(
-      prepared, config, fresh.size(),
-      [&](std::size_t i) {
-        const std::size_t k = fresh[i];
-        progress.message("frame " + std::to_string(k + 1) + "/" +
-                         std::to_string(seq.times_s.size()) +
-                         " at t = " + std::to_string(seq.times_s[k]) + " s");
-        current.reset();
-        current.emplace(FrameCapture{config, options, {}, {}});
-        current->config.render.seed = sequenceFrameSeed(config.render.seed, k);
-        setUpFrame(*current, k, animated, scene, prepared, renderer, key, done[k]);
-        return current->frame.jobAt(0.0);
-      },
-      [&](std::size_t, const capture::RenderJob& job) {
-        FrameCapture& f = *current;
-        return outputSink(f.config, job, f.options, progress, f.summary, &f.frame);
-      },
-      loop);
-  if (current) {  // the last frame rendered
-    summary.backend = current->summary.backend;
-    summary.device = current->summary.device;
-    summary.result = std::move(current->summary.result);
-  }
-  progress.message(std::to_string(fresh.size()) + " frame(s) rendered, " +
-                   std::to_string(seq.times_s.size() - fresh.size()) + " kept");
+  const FramePlan plan = planFrames(config, root, partial, key, progress);
+  renderFrames(config, plan, animated, prepared, key, options, progress, summary);
 
   // The new set: the frames, then the sequence's own files.
-  linkFrames(done, folder.staging());
-  writeSequenceFiles(config, animated, frames, key, folder.staging(), options, progress, summary);
+  linkFrames(plan.done, folder.staging());
+  writeSequenceFiles(config, animated, plan.frames, key, folder.staging(), options, progress, summary);
   // A signal during the last steps still means "stop" (as for one render).
   throwIfInterrupted();
   commitOutput(folder, progress);  // the earlier set, the partial folder with it, goes
