@@ -136,6 +136,10 @@ class OutputSink : public CaptureSink {
     summary_.device = rendered.device;
     summary_.result = std::move(rendered.result);
     writeOutputs(rendered.steady);
+    // The streams' scratch files (the bin-major spill) go before the
+    // staging folder becomes the set.
+    chain_.reset();
+    streams_.reset();
     // A signal that came during the last step still means "stop": the
     // earlier results stay rather than being replaced by a run the user
     // abandoned.
