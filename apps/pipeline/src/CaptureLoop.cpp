@@ -86,10 +86,9 @@ class Taken {
 
 }  // namespace
 
-CaptureLoopStats renderCaptures(PreparedRenderer& prepared,
-                                const config::RunConfig& rendererConfig, std::size_t count,
-                                const CaptureJobOf& jobOf, const CaptureSinkOf& sinkOf,
-                                const CaptureLoopOptions& options) {
+CaptureLoopStats renderCaptures(PreparedRenderer& prepared, const config::RunConfig& rendererConfig,
+                                std::size_t count, const CaptureJobOf& jobOf,
+                                const CaptureSinkOf& sinkOf, const CaptureLoopOptions& options) {
   RendererPool pool(prepared, rendererConfig);
   CaptureLoopStats stats;
   stats.backend = pool.first().backend;
@@ -103,7 +102,8 @@ CaptureLoopStats renderCaptures(PreparedRenderer& prepared,
     const capture::RenderJob job = jobOf(i);
     const std::unique_ptr<CaptureSink> sink = sinkOf(i, job);
     const Taken renderer(pool);
-    const capture::RenderResult result = (*renderer).renderer->render(job, sink->segments(), within);
+    const capture::RenderResult result =
+        (*renderer).renderer->render(job, sink->segments(), within);
     throwIfInterrupted();  // a signal during the last segment still means "stop"
     sink->finish(result, *renderer);
     const std::lock_guard<std::mutex> lock(doneMutex);

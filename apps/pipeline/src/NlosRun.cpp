@@ -134,11 +134,11 @@ RunSummary runNlosRender(const config::RunConfig& config, PreparedRenderer& prep
   StagedFolder folder(summary.outputDirectory, keptAcrossRenders);
   noteLinkedOutput(folder, progress);
   checkOutputsFit(nlosOutputs(config), config, folder.staging());
-  const NlosVolume volume = renderNlosScan(
-      config, scene, scan, prepared,
-      [&](std::size_t done, std::size_t total, const std::string& what) {
-        progress.update(done, total, what);
-      });
+  const NlosVolume volume =
+      renderNlosScan(config, scene, scan, prepared,
+                     [&](std::size_t done, std::size_t total, const std::string& what) {
+                       progress.update(done, total, what);
+                     });
   summary.backend = volume.backend;
   summary.device = volume.device;
   summary.result.seconds = volume.seconds;

@@ -106,7 +106,11 @@ class OutputSink : public CaptureSink {
   OutputSink(const config::RunConfig& config, const capture::RenderJob& job,
              const RunOptions& options, Progress& progress, RunSummary& summary,
              const SequenceFrame* frame)
-      : config_(config), job_(job), options_(options), progress_(progress), summary_(summary),
+      : config_(config),
+        job_(job),
+        options_(options),
+        progress_(progress),
+        summary_(summary),
         frame_(frame) {
     summary.outputDirectory =
         options.outputDirectory.empty() ? config.output.directory : options.outputDirectory;

@@ -218,8 +218,8 @@ struct FramePlan {
   std::vector<std::size_t> fresh;
 };
 
-FramePlan planFrames(const config::RunConfig& config, const fs::path& root,
-                     const fs::path& partial, const json& key, const Progress& progress) {
+FramePlan planFrames(const config::RunConfig& config, const fs::path& root, const fs::path& partial,
+                     const json& key, const Progress& progress) {
   const std::vector<double>& times = config.sequence->times_s;
   FramePlan plan;
   for (std::size_t k = 0; k < times.size(); ++k) {
@@ -249,9 +249,8 @@ FramePlan planFrames(const config::RunConfig& config, const fs::path& root,
 // re-prepared in place per frame, and the scene, whose moving meshes and
 // cameras alone are re-baked at each time. `summary`: the last frame's render.
 void renderFrames(const config::RunConfig& config, const FramePlan& plan,
-                  const scene::AnimatedScene& animated, PreparedRenderer& prepared,
-                  const json& key, const RunOptions& options, Progress& progress,
-                  RunSummary& summary) {
+                  const scene::AnimatedScene& animated, PreparedRenderer& prepared, const json& key,
+                  const RunOptions& options, Progress& progress, RunSummary& summary) {
   const std::vector<double>& times = config.sequence->times_s;
   const RendererChoice& renderer = prepared.renderer(config);
   progress.message("device: " + renderer.renderer->description() + " (backend " + renderer.backend +
@@ -365,7 +364,8 @@ RunSummary runSequenceRender(const config::RunConfig& config, PreparedRenderer& 
 
   // The new set: the frames, then the sequence's own files.
   linkFrames(plan.done, folder.staging());
-  writeSequenceFiles(config, animated, plan.frames, key, folder.staging(), options, progress, summary);
+  writeSequenceFiles(config, animated, plan.frames, key, folder.staging(), options, progress,
+                     summary);
   // A signal during the last steps still means "stop" (as for one render).
   throwIfInterrupted();
   commitOutput(folder, progress);  // the earlier set, the partial folder with it, goes

@@ -73,9 +73,9 @@ struct CaptureLoopStats {
 /// Renders captures 0 .. count-1 (see the top) with prepared.renderer(
 /// rendererConfig): the renderer rendererConfig's render.* asks for, made
 /// there or kept from earlier renders.
-CaptureLoopStats renderCaptures(PreparedRenderer& prepared,
-                                const config::RunConfig& rendererConfig, std::size_t count,
-                                const CaptureJobOf& jobOf, const CaptureSinkOf& sinkOf,
+CaptureLoopStats renderCaptures(PreparedRenderer& prepared, const config::RunConfig& rendererConfig,
+                                std::size_t count, const CaptureJobOf& jobOf,
+                                const CaptureSinkOf& sinkOf,
                                 const CaptureLoopOptions& options = {});
 
 }  // namespace tofsim::pipeline
