@@ -3,13 +3,14 @@
 # a sample, and the samples' medians. The caller sets `out` (its folder).
 #
 # timed_render RUN NAME DIR ARGS...: runs `tofsim render ARGS... -q -o DIR`
+# (the binary $TOFSIM, ./build/apps/cli/tofsim unless set)
 # under /usr/bin/time, prints "| RUN | NAME | render s | wall s | CPU s | max
 # RSS MB |" (render s: transient.json's stats.seconds, nan without it),
 # appends "NAME render wall cpu" to $out/samples.txt and removes DIR.
 timed_render() {
   local run=$1 name=$2 dir=$3
   shift 3
-  /usr/bin/time -f "%e %U %S %M" -o "$dir.time" ./build/apps/cli/tofsim render "$@" -q -o "$dir"
+  /usr/bin/time -f "%e %U %S %M" -o "$dir.time" "${TOFSIM:-./build/apps/cli/tofsim}" render "$@" -q -o "$dir"
   local seconds=nan wall user sys rss cpu
   if [ -f "$dir/transient.json" ]; then
     seconds=$(sed -n 's/.*"seconds": *\([0-9.eE+-]*\).*/\1/p' "$dir/transient.json" | head -1)

@@ -11,6 +11,7 @@
 #include <cmath>
 #include <csignal>
 #include <filesystem>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -22,6 +23,7 @@
 #include "tofsim/io/Exr.h"
 #include "tofsim/io/Hdf5Capture.h"
 #include "tofsim/io/Npy.h"
+#include "tofsim/pipeline/CaptureLoop.h"
 #include "tofsim/pipeline/FiniteSegments.h"
 #include "tofsim/pipeline/OutputProducts.h"
 #include "tofsim/pipeline/PreparedRenderer.h"
@@ -85,7 +87,8 @@ struct Rendered {
   std::vector<std::string> files;
 };
 
-// The CLI's way through a render (pipeline::renderCapture: the same renderer,
+// The CLI's way through a render (the capture loop, pipeline::CaptureLoop.h,
+// with one capture through pipeline::CaptureChain: the same renderer,
 // non-finite values written as 0 and counted, the time axis checked before
 // and after under render.strict) into memory instead of files, through
 // `prepared` (prepared for `config` already); `nameDevice`: say which device
@@ -93,31 +96,42 @@ struct Rendered {
 Rendered renderInMemory(const config::RunConfig& config, pipeline::PreparedRenderer& prepared,
                         bool nameDevice, bool quiet) {
   pipeline::Progress progress("render", quiet);
-  const capture::RenderJob job = pipeline::prepareCapture(config, prepared.scene());
-  // IR's light by bounce: with N > 1 bounces the segments carry bounce1 ..
-  // bounceN (N more volumes in memory); with one, bounce 1 is the indirect light.
-  const bool ir = config.renderer == config::RendererKind::InstantRadiosity;
-  const int32_t bounces = ir && job.settings.indirect.enabled ? job.settings.indirect.bounces : 0;
-  capture::VolumeCollector collector(capture::imageWidth(job.imager),
-                                     capture::imageHeight(job.imager), job.settings.time,
-                                     capture::kChannels, bounces > 1 ? bounces : 0);
-  pipeline::CaptureConsumers consumers{{&collector}, {}};
-  for (int32_t k = 1; bounces > 1 && k <= bounces; ++k) consumers.bounces.push_back(k);
-  pipeline::RenderedCapture rendered =
-      pipeline::renderCapture(config, job, prepared.renderer(config), consumers, progress);
+  std::optional<capture::VolumeCollector> collector;
+  pipeline::CaptureConsumers consumers;
+  std::optional<pipeline::RenderedCapture> rendered;
+  int32_t bounces = 0;
+  pipeline::CaptureLoopOptions loop;
+  loop.withinCapture = [&](std::size_t done, std::size_t total, const std::string& what) {
+    progress.update(done, total, what);
+  };
+  pipeline::renderCaptures(
+      prepared, config, 1,
+      [&](std::size_t) { return pipeline::prepareCapture(config, prepared.scene()); },
+      [&](std::size_t, const capture::RenderJob& job) {
+        // IR's light by bounce: with N > 1 bounces the segments carry bounce1 ..
+        // bounceN (N more volumes in memory); with one, bounce 1 is the indirect light.
+        const bool ir = config.renderer == config::RendererKind::InstantRadiosity;
+        bounces = ir && job.settings.indirect.enabled ? job.settings.indirect.bounces : 0;
+        collector.emplace(capture::imageWidth(job.imager), capture::imageHeight(job.imager),
+                          job.settings.time, capture::kChannels, bounces > 1 ? bounces : 0);
+        consumers = {{&*collector}, {}};
+        for (int32_t k = 1; bounces > 1 && k <= bounces; ++k) consumers.bounces.push_back(k);
+        return std::make_unique<pipeline::ConsumersSink>(config, job, consumers, rendered);
+      },
+      loop);
   if (nameDevice) {
-    progress.message("device: " + rendered.device + " (backend " + rendered.backend + ")");
+    progress.message("device: " + rendered->device + " (backend " + rendered->backend + ")");
   }
   Rendered r;
-  r.device = rendered.device;
-  r.result = std::move(rendered.result);
-  r.transient = collector.total();
+  r.device = rendered->device;
+  r.result = std::move(rendered->result);
+  r.transient = collector->total();
   // As transient.npy: a float sum that overflowed is 0 (counted already).
   pipeline::zeroNonFinite(r.transient->data(), r.transient->values().size());
-  r.steady = std::move(rendered.steady);
-  r.direct = std::move(collector.direct);
-  r.indirect = std::move(collector.indirect);
-  r.bounces = std::move(collector.bounces);
+  r.steady = std::move(rendered->steady);
+  r.direct = std::move(collector->direct);
+  r.indirect = std::move(collector->indirect);
+  r.bounces = std::move(collector->bounces);
   r.indirectIsBounce1 = bounces == 1;
   return r;
 }

@@ -15,9 +15,9 @@
 #include "tofsim/pipeline/NlosRender.h"
 #include "tofsim/pipeline/NlosScan.h"
 #include "tofsim/pipeline/OutputEstimate.h"
+#include "tofsim/pipeline/PreparedRenderer.h"
 #include "tofsim/pipeline/Progress.h"
 #include "tofsim/pipeline/Version.h"
-#include "tofsim/scene/GltfLoader.h"
 #include "tofsim/util/AtomicFile.h"
 #include "tofsim/util/Error.h"
 #include "tofsim/util/Interrupt.h"
@@ -121,10 +121,12 @@ void writeOutputs(const config::RunConfig& config, const NlosScanGeometry& scan,
 
 }  // namespace
 
-RunSummary runNlosRender(const config::RunConfig& config, const RunOptions& options) {
+RunSummary runNlosRender(const config::RunConfig& config, PreparedRenderer& prepared,
+                         const RunOptions& options) {
   Progress progress("render", options.quiet);
   checkNlosMemory(config);  // from the config alone: before the scene loads
-  const scene::Scene scene = scene::loadGltf(config.scene_file);
+  prepared.prepare(config);
+  const scene::Scene& scene = prepared.scene();
   const NlosScanGeometry scan = planNlosScan(config, scene);
   RunSummary summary;
   summary.outputDirectory =
@@ -132,12 +134,11 @@ RunSummary runNlosRender(const config::RunConfig& config, const RunOptions& opti
   StagedFolder folder(summary.outputDirectory, keptAcrossRenders);
   noteLinkedOutput(folder, progress);
   checkOutputsFit(nlosOutputs(config), config, folder.staging());
-  const NlosVolume volume = renderNlosScan(
-      config, scene, scan,
-      [&](std::size_t done, std::size_t total, const std::string& what) {
-        progress.update(done, total, what);
-      },
-      options.eglPlatform);
+  const NlosVolume volume =
+      renderNlosScan(config, scene, scan, prepared,
+                     [&](std::size_t done, std::size_t total, const std::string& what) {
+                       progress.update(done, total, what);
+                     });
   summary.backend = volume.backend;
   summary.device = volume.device;
   summary.result.seconds = volume.seconds;

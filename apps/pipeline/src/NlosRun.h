@@ -8,6 +8,9 @@
 
 namespace tofsim::pipeline {
 
-RunSummary runNlosRender(const config::RunConfig& config, const RunOptions& options);
+/// The scene loaded and the renderer made by `prepared` (kept for its next
+/// render: a batch's worker).
+RunSummary runNlosRender(const config::RunConfig& config, PreparedRenderer& prepared,
+                         const RunOptions& options);
 
 }  // namespace tofsim::pipeline

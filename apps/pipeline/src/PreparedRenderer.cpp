@@ -102,6 +102,10 @@ const RendererChoice& PreparedRenderer::renderer(const config::RunConfig& config
   return renderer_;
 }
 
+RendererChoice PreparedRenderer::makeAnother(const config::RunConfig& config) const {
+  return makeRenderer(specFor(config), eglPlatform_);
+}
+
 std::size_t PreparedRenderer::scenePreparations() const {
   return earlierPreparations_ + preparationsOf(renderer_);
 }

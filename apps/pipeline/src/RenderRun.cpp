@@ -16,6 +16,7 @@
 #include "SequenceRun.h"
 #include "StagedOutput.h"
 #include "tofsim/imaging/Video.h"
+#include "tofsim/pipeline/CaptureLoop.h"
 #include "tofsim/pipeline/OutputEstimate.h"
 #include "tofsim/pipeline/OutputProducts.h"
 #include "tofsim/pipeline/PlotRanges.h"
@@ -45,14 +46,8 @@ void reportLoad(const scene::LoadReport& report, const Progress& progress, bool 
 }
 
 namespace {
-// `prepared` gives the renderer of a run; a sequence's frame brings its own.
-void writeOutputs(const config::RunConfig& config, const capture::RenderJob& job,
-                  const RunOptions& options, const std::filesystem::path& dir, Progress& progress,
-                  RunSummary& summary, PreparedRenderer* prepared, const SequenceFrame* frame);
 RunSummary renderScene(const config::RunConfig& config, const scene::Scene& scene,
-                       const RunOptions& options, Progress& progress, PreparedRenderer* prepared,
-                       const SequenceFrame* frame = nullptr);
-
+                       const RunOptions& options, Progress& progress, PreparedRenderer& prepared);
 }  // namespace
 
 RunSummary runRender(const config::RunConfig& config, const RunOptions& options) {
@@ -62,18 +57,12 @@ RunSummary runRender(const config::RunConfig& config, const RunOptions& options)
 
 RunSummary runRender(const config::RunConfig& config, PreparedRenderer& prepared,
                      const RunOptions& options) {
-  if (config.nlos) return runNlosRender(config, options);
-  if (config.sequence) return runSequenceRender(config, options);
+  if (config.nlos) return runNlosRender(config, prepared, options);
+  if (config.sequence) return runSequenceRender(config, prepared, options);
   Progress progress("render", options.quiet);  // its time includes the scene's loading
   prepared.prepare(config);
   reportLoad(prepared.loadReport(), progress, false);
-  return renderScene(config, prepared.scene(), options, progress, &prepared);
-}
-
-RunSummary renderSequenceFrame(const config::RunConfig& config, const scene::Scene& scene,
-                               const RunOptions& options, Progress& progress,
-                               const SequenceFrame& frame) {
-  return renderScene(config, scene, options, progress, nullptr, &frame);
+  return renderScene(config, prepared.scene(), options, progress, prepared);
 }
 
 RunSummary runRender(const config::RunConfig& config, const scene::Scene& scene,
@@ -81,7 +70,7 @@ RunSummary runRender(const config::RunConfig& config, const scene::Scene& scene,
   TOFSIM_CHECK(!config.nlos);
   Progress progress("render", options.quiet);
   PreparedRenderer prepared(options.eglPlatform);
-  return renderScene(config, scene, options, progress, &prepared);
+  return renderScene(config, scene, options, progress, prepared);
 }
 
 std::string renderSummaryText(const config::RunConfig& config, const RunSummary& summary) {
@@ -105,65 +94,96 @@ std::string renderSummaryText(const config::RunConfig& config, const RunSummary&
 }
 
 namespace {
-RunSummary renderScene(const config::RunConfig& config, const scene::Scene& scene,
-                       const RunOptions& options, Progress& progress, PreparedRenderer* prepared,
-                       const SequenceFrame* frame) {
-  const capture::RenderJob job =
-      frame ? frame->jobAt(0.0) : prepareCapture(config, scene);  // fails under --strict
 
-  RunSummary summary;
-  summary.outputDirectory =
-      options.outputDirectory.empty() ? config.output.directory : options.outputDirectory;
-  // Checked and locked before any rendering, so that a bad -o or a second
-  // writer fails in a second. Everything is written into a staging folder
-  // that replaces the earlier results only when complete: an error, Ctrl-C or
-  // kill -9 before that leaves the earlier set untouched.
-  StagedFolder folder(summary.outputDirectory, keptAcrossRenders);
-  noteLinkedOutput(folder, progress);
-  checkOutputsFit(estimateOutputs(config), config, folder.staging());
-  writeOutputs(config, job, options, folder.staging(), progress, summary, prepared, frame);
-  // A signal that came during the last step still means "stop": the earlier
-  // results stay rather than being replaced by a run the user abandoned.
-  throwIfInterrupted();
-  commitOutput(folder, progress);
-  return summary;
-}
-
-// Writes every output into `dir`, the staging folder: streamed while the
-// render runs (OutputStreams), written from what it gave after it
-// (writeProduct), the sensors' files, then the record.
-void writeOutputs(const config::RunConfig& config, const capture::RenderJob& job,
-                  const RunOptions& options, const std::filesystem::path& dir, Progress& progress,
-                  RunSummary& summary, PreparedRenderer* prepared, const SequenceFrame* frame) {
-  const std::vector<OutputProduct> products = renderProducts(config);
-  // Its encoder loaded before the render, not found missing after it.
-  if (config.output.video || (config.sequence && config.sequence->video)) {
-    imaging::requireVideoEncoder();
+// A render's outputs as a capture's sink (CaptureLoop.h). Before the render:
+// the output folder checked and locked (a bad -o or a second writer fails
+// in a second), the streams opened, and a frame's sensor passes rendered.
+// Everything is written into a staging folder that replaces the earlier
+// results only when complete: an error, Ctrl-C or kill -9 before that (an
+// unfinished sink) leaves the earlier set untouched.
+class OutputSink : public CaptureSink {
+ public:
+  OutputSink(const config::RunConfig& config, const capture::RenderJob& job,
+             const RunOptions& options, Progress& progress, RunSummary& summary,
+             const SequenceFrame* frame)
+      : config_(config),
+        job_(job),
+        options_(options),
+        progress_(progress),
+        summary_(summary),
+        frame_(frame) {
+    summary.outputDirectory =
+        options.outputDirectory.empty() ? config.output.directory : options.outputDirectory;
+    folder_.emplace(summary.outputDirectory, keptAcrossRenders);
+    noteLinkedOutput(*folder_, progress);
+    checkOutputsFit(estimateOutputs(config), config, folder_->staging());
+    products_ = renderProducts(config);
+    // Its encoder loaded before the render, not found missing after it.
+    if (config.output.video || (config.sequence && config.sequence->video)) {
+      imaging::requireVideoEncoder();
+    }
+    streams_.emplace(config, job, folder_->staging(), products_, options.psfOnTransient, progress);
+    SensorStreams* sensors = streams_->sensors();
+    if (frame && sensors) {
+      renderSensorPasses(config, *frame, *sensors, streams_->consumers(), streams_->bounces(),
+                         progress);
+    }
+    chain_.emplace(config, job, streams_->consumers());
   }
-  OutputStreams streams(config, job, dir, products, options.psfOnTransient, progress);
+  capture::SegmentSink& segments() override { return chain_->first(); }
+  void finish(const capture::RenderResult& result, const RendererChoice& renderer) override {
+    RenderedCapture rendered = chain_->finish(result, renderer);
+    if (!frame_) {
+      progress_.message("device: " + rendered.device + " (backend " + rendered.backend + ")");
+    }
+    summary_.backend = rendered.backend;
+    summary_.device = rendered.device;
+    summary_.result = std::move(rendered.result);
+    writeOutputs(rendered.steady);
+    // The streams' scratch files (the bin-major spill) go before the
+    // staging folder becomes the set.
+    chain_.reset();
+    streams_.reset();
+    // A signal that came during the last step still means "stop": the
+    // earlier results stay rather than being replaced by a run the user
+    // abandoned.
+    throwIfInterrupted();
+    commitOutput(*folder_, progress_);
+  }
+
+ private:
+  void writeOutputs(const Image& steady);
+
+  const config::RunConfig& config_;
+  const capture::RenderJob& job_;
+  const RunOptions& options_;
+  Progress& progress_;
+  RunSummary& summary_;
+  const SequenceFrame* frame_;
+  std::optional<StagedFolder> folder_;
+  std::vector<OutputProduct> products_;
+  std::optional<OutputStreams> streams_;
+  std::optional<CaptureChain> chain_;
+};
+
+// After the render, into the staging folder: the products written from what
+// it gave (writeProduct), the sensors' files, then the record.
+void OutputSink::writeOutputs(const Image& steady) {
+  const std::filesystem::path& dir = folder_->staging();
+  OutputStreams& streams = *streams_;
   SensorStreams* sensors = streams.sensors();
-  if (frame && sensors) {
-    renderSensorPasses(config, *frame, *sensors, streams.consumers(), streams.bounces(), progress);
-  }
-  RenderedCapture rendered =
-      renderCapture(config, job, frame ? *frame->renderer : prepared->renderer(config),
-                    streams.consumers(), progress);
-  if (!frame) progress.message("device: " + rendered.device + " (backend " + rendered.backend + ")");
-  summary.backend = rendered.backend;
-  summary.device = rendered.device;
-  summary.result = std::move(rendered.result);
   streams.renderDone();
-  PlotRanges ranges(config.output.plot_ranges);
-  for (const OutputProduct& p : products) {
-    writeProduct(p, config, job, dir, rendered.steady, summary, streams, ranges, progress);
-    summary.files.insert(summary.files.end(), p.files.begin(), p.files.end());
+  PlotRanges ranges(config_.output.plot_ranges);
+  for (const OutputProduct& p : products_) {
+    writeProduct(p, config_, job_, dir, steady, summary_, streams, ranges, progress_);
+    summary_.files.insert(summary_.files.end(), p.files.begin(), p.files.end());
   }
   CaptureFile* capture = streams.capture();
   if (sensors) {
-    const Image* depth = config.output.depth ? &summary.result.depth_m : nullptr;
-    const std::vector<std::string> sensorFiles = sensors->finish(depth, progress);
+    const Image* depth = config_.output.depth ? &summary_.result.depth_m : nullptr;
+    const std::vector<std::string> sensorFiles = sensors->finish(depth, progress_);
     if (capture) capture->addSensorFiles(dir, sensorFiles);
-    summary.files.insert(summary.files.end(), sensorFiles.begin(), sensorFiles.end());
+    summary_.files.insert(summary_.files.end(), sensorFiles.begin(), sensorFiles.end());
   }
   if (capture) capture->commit();
   std::vector<std::string> untaken = ranges.untaken("");
@@ -171,12 +191,38 @@ void writeOutputs(const config::RunConfig& config, const capture::RenderJob& job
     std::erase_if(untaken, [](const std::string& k) { return k.rfind("sensors/", 0) == 0; });
   }
   warnUntakenPlotRanges(untaken);
-  if (frame) {
-    frame->record(dir, summary.files, summary.result);
+  if (frame_) {
+    frame_->record(dir, summary_.files, summary_.result);
   } else {
-    writeRecord(config, job, options, dir, summary.files);
+    writeRecord(config_, job_, options_, dir, summary_.files);
   }
 }
+
+// One capture through the loop: the job (fails under --strict before the
+// output folder is touched), then its outputs.
+RunSummary renderScene(const config::RunConfig& config, const scene::Scene& scene,
+                       const RunOptions& options, Progress& progress, PreparedRenderer& prepared) {
+  RunSummary summary;
+  CaptureLoopOptions loop;
+  loop.withinCapture = [&](std::size_t done, std::size_t total, const std::string& what) {
+    progress.update(done, total, what);
+  };
+  renderCaptures(
+      prepared, config, 1, [&](std::size_t) { return prepareCapture(config, scene); },
+      [&](std::size_t, const capture::RenderJob& job) {
+        return outputSink(config, job, options, progress, summary, nullptr);
+      },
+      loop);
+  return summary;
+}
+
 }  // namespace
+
+std::unique_ptr<CaptureSink> outputSink(const config::RunConfig& config,
+                                        const capture::RenderJob& job, const RunOptions& options,
+                                        Progress& progress, RunSummary& summary,
+                                        const SequenceFrame* frame) {
+  return std::make_unique<OutputSink>(config, job, options, progress, summary, frame);
+}
 
 }  // namespace tofsim::pipeline

@@ -39,11 +39,7 @@ reference::ReferenceSettings makeReferenceSettings(const config::ReferenceConfig
 
 bool RendererSpec::operator==(const RendererSpec& o) const {
   if (kind != o.kind) return false;
-  if (kind == config::RendererKind::Reference) {
-    const config::ReferenceConfig &a = reference, &b = o.reference;
-    return a.bounces == b.bounces && a.samples_per_pixel == b.samples_per_pixel &&
-           a.threads == b.threads && a.pixel_filter == b.pixel_filter && a.sampling == b.sampling;
-  }
+  if (kind == config::RendererKind::Reference) return reference == o.reference;
   return backend == o.backend && cpuThreads == o.cpuThreads;
 }
 

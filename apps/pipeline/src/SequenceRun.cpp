@@ -18,8 +18,10 @@
 #include "StagedOutput.h"
 #include "Warning.h"
 #include "tofsim/io/Npy.h"
+#include "tofsim/pipeline/CaptureLoop.h"
 #include "tofsim/pipeline/Manifest.h"
 #include "tofsim/pipeline/OutputFileNames.h"
+#include "tofsim/pipeline/PreparedRenderer.h"
 #include "tofsim/pipeline/RenderCapture.h"
 #include "tofsim/pipeline/RunContentKey.h"
 #include "tofsim/scene/AnimatedScene.h"
@@ -162,47 +164,127 @@ void writeDepthSequence(const fs::path& root, std::size_t frames) {
   io::writeNpy(root / "depth_sequence.npy", shape, all.data());  // whole or not at all
 }
 
-// Frame k at its time: rendered into `fresh` (staged, committed whole) by
-// the sequence's renderer, the scene moved in place to each time a sensor
-// samples within the frame; its record frame.json written last.
-void renderFrame(const config::RunConfig& frameConfig, std::size_t k,
-                 const scene::AnimatedScene& animated, scene::Scene& scene,
-                 const RendererChoice& renderer, const json& key, const fs::path& fresh,
-                 const RunOptions& options, Progress& progress, RunSummary& summary) {
-  const std::vector<double>& times = frameConfig.sequence->times_s;
-  const double t = times[k];
+// Frame k as a capture of the loop: its config (its seed), its folder, and
+// how the scene moves to its time. Rendered into `fresh` (staged, committed
+// whole) by the sequence's renderer, the scene moved in place to each time
+// a sensor samples within the frame; its record frame.json written last.
+struct FrameCapture {
+  config::RunConfig config;
+  RunOptions options;
   SequenceFrame frame;
-  frame.renderer = &renderer;
-  frame.jobAt = [&](double offset_s) {
+  RunSummary summary;
+  Clock::time_point started = Clock::now();
+};
+
+void setUpFrame(FrameCapture& f, std::size_t k, const scene::AnimatedScene& animated,
+                scene::Scene& scene, PreparedRenderer& prepared, const RendererChoice& renderer,
+                const json& key, const fs::path& fresh) {
+  const std::vector<double>& times = f.config.sequence->times_s;
+  const double t = times[k];
+  f.frame.prepared = &prepared;
+  f.frame.jobAt = [&f, &animated, &scene, &renderer, t](double offset_s) {
     animated.updateScene(scene, t + offset_s);
     renderer.renderer->sceneChanged();
-    return prepareCapture(frameConfig, scene);
+    return prepareCapture(f.config, scene);
   };
-  const bool withMotion = frameConfig.output.depth && k + 1 < times.size();
-  const Clock::time_point started = Clock::now();
-  frame.record = [&](const fs::path& dir, std::vector<std::string>& written,
-                     const capture::RenderResult& result) {
-    json doc = {{"index", k}, {"time_s", t}, {"seed", frameConfig.render.seed}, {"run_key", key}};
+  const bool withMotion = f.config.output.depth && k + 1 < times.size();
+  f.frame.record = [&f, &animated, &scene, &times, key, k, t, withMotion](
+                       const fs::path& dir, std::vector<std::string>& written,
+                       const capture::RenderResult& result) {
+    json doc = {{"index", k}, {"time_s", t}, {"seed", f.config.render.seed}, {"run_key", key}};
     if (withMotion) {
       const double next = times[k + 1];
-      writeMotionFields(dir, motionFields(frameConfig, animated, scene, t, next), written);
+      writeMotionFields(dir, motionFields(f.config, animated, scene, t, next), written);
       doc["motion_to_time_s"] = next;  // scene_flow.npy, optical_flow.npy: to frame k + 1
     }
     // The frame's cost: every render of it (the sensors' sample times
     // too), its sensors and files; and its render at t_k's own stats.
-    doc["seconds"] = std::chrono::duration<double>(Clock::now() - started).count();
+    doc["seconds"] = std::chrono::duration<double>(Clock::now() - f.started).count();
     doc["render_stats"] = renderStatsJson(result);
     doc["files"] = written;
     writeFileAtomically(dir / kFrameRecord, doc.dump(2) + "\n");
     written.push_back(kFrameRecord);
   };
-  RunOptions frameOptions = options;
-  frameOptions.outputDirectory = fresh;
-  frameOptions.batchManifest.reset();
-  RunSummary one = renderSequenceFrame(frameConfig, scene, frameOptions, progress, frame);
-  summary.backend = one.backend;
-  summary.device = one.device;
-  summary.result = std::move(one.result);
+  f.options.outputDirectory = fresh;
+  f.options.batchManifest.reset();
+}
+
+// The frames of the new set: their entries of sequence.json, each one's
+// finished folder (kept from an earlier run of the same inputs, or the one
+// it is rendered into) and which are to be rendered.
+struct FramePlan {
+  json frames = json::array();
+  std::vector<fs::path> done;
+  std::vector<std::size_t> fresh;
+};
+
+FramePlan planFrames(const config::RunConfig& config, const fs::path& root, const fs::path& partial,
+                     const json& key, const Progress& progress) {
+  const std::vector<double>& times = config.sequence->times_s;
+  FramePlan plan;
+  for (std::size_t k = 0; k < times.size(); ++k) {
+    const double t = times[k];
+    const uint64_t seed = sequenceFrameSeed(config.render.seed, k);
+    const std::string name = frameFolder(k);
+    plan.frames.push_back({{"index", k}, {"time_s", t}, {"seed", seed}, {"folder", name}});
+    // Finished by an interrupted run, or in the earlier complete set.
+    std::optional<fs::path> kept;
+    for (const fs::path& f : {partial / name, root / name}) {
+      if (!kept && frameDone(f, k, t, seed, key)) kept = f;
+    }
+    plan.done.push_back(kept.value_or(partial / name));
+    if (kept) {
+      progress.message("frame " + std::to_string(k) + " (t = " + std::to_string(t) +
+                       " s): kept from an earlier run of the same inputs");
+    } else {
+      plan.fresh.push_back(k);
+    }
+  }
+  return plan;
+}
+
+// The frames to render, each a capture of the loop, one after another (the
+// scene moves in place; the frame in flight is `current`), through the
+// renderer prepared once: its device, the scene's buffers and BVH,
+// re-prepared in place per frame, and the scene, whose moving meshes and
+// cameras alone are re-baked at each time. `summary`: the last frame's render.
+void renderFrames(const config::RunConfig& config, const FramePlan& plan,
+                  const scene::AnimatedScene& animated, PreparedRenderer& prepared, const json& key,
+                  const RunOptions& options, Progress& progress, RunSummary& summary) {
+  const std::vector<double>& times = config.sequence->times_s;
+  const RendererChoice& renderer = prepared.renderer(config);
+  progress.message("device: " + renderer.renderer->description() + " (backend " + renderer.backend +
+                   ")");
+  scene::Scene scene = animated.restScene();
+  std::optional<FrameCapture> current;
+  CaptureLoopOptions loop;
+  loop.withinCapture = [&](std::size_t d, std::size_t total, const std::string& what) {
+    progress.update(d, total, what);
+  };
+  renderCaptures(
+      prepared, config, plan.fresh.size(),
+      [&](std::size_t i) {
+        const std::size_t k = plan.fresh[i];
+        progress.message("frame " + std::to_string(k + 1) + "/" + std::to_string(times.size()) +
+                         " at t = " + std::to_string(times[k]) + " s");
+        current.reset();
+        current.emplace(FrameCapture{config, options, {}, {}});
+        current->config.render.seed = sequenceFrameSeed(config.render.seed, k);
+        setUpFrame(*current, k, animated, scene, prepared, renderer, key, plan.done[k]);
+        return current->frame.jobAt(0.0);
+      },
+      [&](std::size_t, const capture::RenderJob& job) {
+        FrameCapture& f = *current;
+        return outputSink(f.config, job, f.options, progress, f.summary, &f.frame);
+      },
+      loop);
+  if (current) {
+    summary.backend = current->summary.backend;
+    summary.device = current->summary.device;
+    summary.result = std::move(current->summary.result);
+  }
+  progress.message(std::to_string(plan.fresh.size()) + " frame(s) rendered, " +
+                   std::to_string(times.size() - plan.fresh.size()) + " kept");
 }
 
 // The sequence's own files beside its frames (linked into `staging`): every
@@ -251,7 +333,8 @@ void writeSequenceFiles(const config::RunConfig& config, const scene::AnimatedSc
 
 }  // namespace
 
-RunSummary runSequenceRender(const config::RunConfig& config, const RunOptions& options) {
+RunSummary runSequenceRender(const config::RunConfig& config, PreparedRenderer& prepared,
+                             const RunOptions& options) {
   const config::SequenceConfig& seq = *config.sequence;
   const RepeatedWarningsOnce once;  // each frame would repeat the same warnings
   Progress progress("sequence", options.quiet);
@@ -276,47 +359,13 @@ RunSummary runSequenceRender(const config::RunConfig& config, const RunOptions& 
       options.batchManifest ? options.batchManifest->inputs : runContentKey(config);
   const json key = keyJson(runKey);
 
-  // Prepared once: the renderer (its device, the scene's buffers and BVH,
-  // re-prepared in place per frame) and the scene, whose moving meshes and
-  // cameras alone are re-baked at each time.
-  const RendererChoice renderer = makeRenderer(config, options.eglPlatform);
-  progress.message("device: " + renderer.renderer->description() + " (backend " + renderer.backend +
-                   ")");
-  scene::Scene scene = animated.restScene();
-  json frames = json::array();
-  std::vector<fs::path> done;  // frame k's finished folder
-  std::size_t rendered = 0;
-  for (std::size_t k = 0; k < seq.times_s.size(); ++k) {
-    throwIfInterrupted();
-    const double t = seq.times_s[k];
-    config::RunConfig frameConfig = config;
-    frameConfig.render.seed = sequenceFrameSeed(config.render.seed, k);
-    const std::string name = frameFolder(k);
-    frames.push_back(
-        {{"index", k}, {"time_s", t}, {"seed", frameConfig.render.seed}, {"folder", name}});
-    // Finished by an interrupted run, or in the earlier complete set.
-    const fs::path fresh = partial / name;
-    std::optional<fs::path> kept;
-    for (const fs::path& f : {fresh, root / name}) {
-      if (!kept && frameDone(f, k, t, frameConfig.render.seed, key)) kept = f;
-    }
-    done.push_back(kept.value_or(fresh));
-    if (kept) {
-      progress.message("frame " + std::to_string(k) + " (t = " + std::to_string(t) +
-                       " s): kept from an earlier run of the same inputs");
-      continue;
-    }
-    progress.message("frame " + std::to_string(k + 1) + "/" + std::to_string(seq.times_s.size()) +
-                     " at t = " + std::to_string(t) + " s");
-    renderFrame(frameConfig, k, animated, scene, renderer, key, fresh, options, progress, summary);
-    ++rendered;
-  }
-  progress.message(std::to_string(rendered) + " frame(s) rendered, " +
-                   std::to_string(seq.times_s.size() - rendered) + " kept");
+  const FramePlan plan = planFrames(config, root, partial, key, progress);
+  renderFrames(config, plan, animated, prepared, key, options, progress, summary);
 
   // The new set: the frames, then the sequence's own files.
-  linkFrames(done, folder.staging());
-  writeSequenceFiles(config, animated, frames, key, folder.staging(), options, progress, summary);
+  linkFrames(plan.done, folder.staging());
+  writeSequenceFiles(config, animated, plan.frames, key, folder.staging(), options, progress,
+                     summary);
   // A signal during the last steps still means "stop" (as for one render).
   throwIfInterrupted();
   commitOutput(folder, progress);  // the earlier set, the partial folder with it, goes

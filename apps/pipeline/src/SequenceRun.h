@@ -1,7 +1,8 @@
 #pragma once
 // `tofsim render` of a config with a `sequence:` section: the scene's glTF
 // animations played, one frame per frame time, the scene and the renderer
-// prepared once. The sequence is one result, staged and swapped in whole
+// prepared once, each frame a capture of the capture loop (CaptureLoop.h).
+// The sequence is one result, staged and swapped in whole
 // (StagedFolder on OUTDIR): each frame is rendered as a render's outputs
 // into OUTDIR/.tofsim-sequence-partial/frame_NNNNN/ (committed there when
 // complete), and when all are done they are hard-linked into the staged set
@@ -16,7 +17,10 @@
 
 namespace tofsim::pipeline {
 
-RunSummary runSequenceRender(const config::RunConfig& config, const RunOptions& options);
+/// Its renderer from `prepared` (kept for its next render: a batch's worker);
+/// the animated scene is the sequence's own.
+RunSummary runSequenceRender(const config::RunConfig& config, PreparedRenderer& prepared,
+                             const RunOptions& options);
 
 /// Frame k's seed: render.seed for frame 0 (a one-frame sequence of a still
 /// scene is the static render's bytes), a distinct stream for the others.

@@ -86,6 +86,8 @@ struct ReferenceConfig {
   int32_t threads = 0;             ///< 0: all hardware threads
   ReferencePixelFilter pixel_filter = ReferencePixelFilter::Box;
   ReferenceSampling sampling = ReferenceSampling::Brdf;
+
+  bool operator==(const ReferenceConfig&) const = default;
 };
 
 /// Tone map of the transient video and frame PNGs (tofsim/imaging/Video.h).

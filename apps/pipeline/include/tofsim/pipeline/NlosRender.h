@@ -18,6 +18,8 @@
 
 namespace tofsim::pipeline {
 
+class PreparedRenderer;
+
 struct NlosVolume {
   TimeAxis axis;
   std::vector<std::size_t> shape;  ///< {T, sx, sy} or {T, lx, ly, sx, sy}
@@ -36,14 +38,19 @@ struct NlosVolume {
 /// count or the order the captures run in. (IR's captures all use render.seed.)
 uint64_t nlosCaptureSeed(uint64_t seed, std::size_t capture);
 
-/// Renders with IR over render.backend (the CPU one with render.cpu_threads,
-/// or GL on an EGL context of `eglPlatform`), or the reference path tracer
-/// (render.renderer: reference, render.reference.*, its threads from
-/// render.reference.threads). On the CPU, confocal scans (one point per
-/// capture) run their captures in parallel, one single-threaded renderer per
-/// worker; the others (and every GL scan, on its one context) one capture
-/// after another. The bytes are the same either way (neither renderer's
-/// depend on its thread count).
+/// Renders the scan's captures through the capture loop (CaptureLoop.h) with
+/// `prepared`'s renderer: IR over render.backend (the CPU one with
+/// render.cpu_threads, or GL), or the reference path tracer (render.renderer:
+/// reference, render.reference.*, its threads from render.reference.threads).
+/// On the CPU, scans of few points per capture (confocal) run their captures
+/// in parallel, one single-threaded renderer per worker; the others (and
+/// every GL scan, on its one context) one capture after another. The bytes
+/// are the same either way (neither renderer's depend on its thread count).
+NlosVolume renderNlosScan(const config::RunConfig& config, const scene::Scene& scene,
+                          const NlosScanGeometry& scan, PreparedRenderer& prepared,
+                          const capture::ProgressCallback& progress = {});
+/// The same with a renderer made for this scan (on an EGL context of
+/// `eglPlatform` for GL).
 NlosVolume renderNlosScan(const config::RunConfig& config, const scene::Scene& scene,
                           const NlosScanGeometry& scan,
                           const capture::ProgressCallback& progress = {},

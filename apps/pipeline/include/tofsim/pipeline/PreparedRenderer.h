@@ -57,6 +57,11 @@ class PreparedRenderer {
   /// use: a bad output folder or a plan that does not fit fails before a
   /// device is opened.
   const RendererChoice& renderer(const config::RunConfig& config);
+  /// A fresh renderer like renderer(config)'s, not kept here: a capture
+  /// loop's further workers (CaptureLoop.h).
+  RendererChoice makeAnother(const config::RunConfig& config) const;
+  /// The spec of renderer(config)'s renderer (render.backend: auto decided once).
+  RendererSpec specFor(const config::RunConfig& config) const;
 
   /// Counts for logs and tests: scenes loaded, renderers made, and the
   /// scene preparations of the IR renderers made so far (0 for the reference).
@@ -72,7 +77,6 @@ class PreparedRenderer {
     bool operator==(const SceneKey&) const = default;
   };
   static SceneKey sceneKey(const std::filesystem::path& file);
-  RendererSpec specFor(const config::RunConfig& config) const;
 
   gl::EglPlatform eglPlatform_;
   /// render.backend: auto, decided once (it asks EGL for a hardware GPU).

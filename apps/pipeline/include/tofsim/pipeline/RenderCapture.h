@@ -9,6 +9,8 @@
 // (AxisReport.h: a warning, or under render.strict an error).
 
 #include <cstdint>
+#include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -16,6 +18,7 @@
 #include "tofsim/capture/SegmentSink.h"
 #include "tofsim/config/RunConfig.h"
 #include "tofsim/gl/Context.h"
+#include "tofsim/pipeline/CaptureLoop.h"
 #include "tofsim/pipeline/Progress.h"
 #include "tofsim/pipeline/RendererFactory.h"
 #include "tofsim/scene/Scene.h"
@@ -52,20 +55,57 @@ struct RenderedCapture {
   Image steady;         ///< the total summed over time (through the lens's PSF)
 };
 
-/// Renders `job` with the configured renderer into `consumers` (progress on
-/// `progress`, which also names the device), warns of values written as 0
-/// (even when quiet: the outputs differ from what the renderer produced),
-/// then checks the light lost off the time axis (throws InputError under
-/// render.strict; the consumers have then had every segment, and the caller
-/// commits nothing).
+/// renderCapture's way from the renderer to the consumers, for a caller that
+/// runs the render itself (a capture loop's sink, CaptureLoop.h): made
+/// before the render (a PSF that does not fit fails here), first() handed to
+/// the renderer, finish() after a complete render.
+class CaptureChain {
+ public:
+  CaptureChain(const config::RunConfig& config, const capture::RenderJob& job,
+               const CaptureConsumers& consumers);
+  ~CaptureChain();
+  CaptureChain(const CaptureChain&) = delete;
+  CaptureChain& operator=(const CaptureChain&) = delete;
+  /// Where the renderer writes the segments.
+  capture::SegmentSink& first();
+  /// After the render that gave `result` (by `renderer`): renderCapture's
+  /// warnings, steady image and axis check (throws under render.strict).
+  RenderedCapture finish(capture::RenderResult result, const RendererChoice& renderer);
+
+ private:
+  struct Links;
+  const config::RunConfig& config_;
+  const capture::RenderJob& job_;
+  bool psfOnRaws_;
+  std::unique_ptr<Links> links_;
+};
+
+/// A capture loop's sink (CaptureLoop.h) through a CaptureChain to
+/// `consumers`: what the chain's finish() gives goes to `rendered`.
+class ConsumersSink : public CaptureSink {
+ public:
+  ConsumersSink(const config::RunConfig& config, const capture::RenderJob& job,
+                const CaptureConsumers& consumers, std::optional<RenderedCapture>& rendered)
+      : chain_(config, job, consumers), rendered_(rendered) {}
+  capture::SegmentSink& segments() override { return chain_.first(); }
+  void finish(const capture::RenderResult& result, const RendererChoice& renderer) override {
+    rendered_ = chain_.finish(result, renderer);
+  }
+
+ private:
+  CaptureChain chain_;
+  std::optional<RenderedCapture>& rendered_;
+};
+
+/// Renders `job` with a renderer made for it (render.renderer, render.backend
+/// on an EGL context of `eglPlatform`) into `consumers`, one capture through
+/// the capture loop: progress on `progress`, which also names the device;
+/// warns of values written as 0 (even when quiet: the outputs differ from
+/// what the renderer produced), then checks the light lost off the time axis
+/// (throws InputError under render.strict; the consumers have then had every
+/// segment, and the caller commits nothing).
 RenderedCapture renderCapture(const config::RunConfig& config, const capture::RenderJob& job,
                               gl::EglPlatform eglPlatform, const CaptureConsumers& consumers,
-                              Progress& progress);
-/// The same with a renderer made earlier (makeRenderer), kept across the
-/// renders of a sequence so that its device and scene are set up once (the
-/// caller names the device: not once per render).
-RenderedCapture renderCapture(const config::RunConfig& config, const capture::RenderJob& job,
-                              const RendererChoice& renderer, const CaptureConsumers& consumers,
                               Progress& progress);
 
 }  // namespace tofsim::pipeline

@@ -46,9 +46,11 @@ class PreparedRenderer;
 RunSummary runRender(const config::RunConfig& config, const RunOptions& options);
 /// The same through a renderer that stays loaded (PreparedRenderer.h): its
 /// scene and renderer kept where the config allows, loaded or made again
-/// where it does not; the files are those of a render of its own. NLOS and
-/// sequence configs load their own scene and renderer (kept across their
-/// captures).
+/// where it does not; the files are those of a render of its own. NLOS
+/// configs load their scene there too; sequence configs take its renderer
+/// and play their own animated scene. Every capture (one, a scan's laser
+/// positions, a sequence's frames) goes through the capture loop
+/// (CaptureLoop.h).
 RunSummary runRender(const config::RunConfig& config, PreparedRenderer& prepared,
                      const RunOptions& options);
 /// The same over a scene already loaded (or built in code by a test) in
