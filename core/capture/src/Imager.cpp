@@ -48,6 +48,48 @@ const Camera* pinhole(const Imager& imager) {
 
 const Camera* cameraOf(const Imager& imager) { return std::get_if<Camera>(&imager); }
 
+void checkLayout(const Imager& imager) {
+  std::visit(Overloaded{[](const Camera&) {},
+                        [](const PointSetImager& p) {
+                          if (p.points_world.size() ==
+                              static_cast<std::size_t>(p.width) * p.height)
+                            return;
+                          throw InputError("the point-set imager lays out " +
+                                           std::to_string(p.width) + "x" +
+                                           std::to_string(p.height) + " pixels but holds " +
+                                           std::to_string(p.points_world.size()) + " points");
+                        }},
+             imager);
+}
+
+bool pointPixels(const Imager& imager) {
+  return std::visit(Overloaded{[](const Camera&) { return false; },
+                               [](const PointSetImager& p) {
+                                 return p.step_u_world == glm::vec3(0.0f) &&
+                                        p.step_v_world == glm::vec3(0.0f);
+                               }},
+                    imager);
+}
+
+bool raysShareOrigin(const Imager& imager) {
+  return std::visit(Overloaded{[](const Camera&) { return true; },
+                               [](const PointSetImager&) { return true; }},
+                    imager);
+}
+
+std::vector<glm::vec3> viewpoints(const Imager& imager) {
+  return std::visit(
+      Overloaded{[](const Camera& c) { return std::vector<glm::vec3>{c.position_world}; },
+                 [](const PointSetImager& p) { return std::vector<glm::vec3>{p.origin_world}; }},
+      imager);
+}
+
+const char* imagerKind(const Imager& imager) {
+  return std::visit(Overloaded{[](const Camera&) { return "camera"; },
+                               [](const PointSetImager&) { return "point_set"; }},
+                    imager);
+}
+
 PrimaryRays::PrimaryRays(const Imager& imager) : imager_(imager) {
   // A camera's frame, computed once for all its rays.
   if (const Camera* camera = cameraOf(imager)) pinholeRays_.emplace(*camera);

@@ -44,6 +44,7 @@ enum StorageBinding : uint32_t {
   kPixelRaySteps,  ///< two vec4 per pixel: a lens camera's ray steps along x, y (PIXEL_RAY_STEPS)
   kResponseState,  ///< 16 doubles per pixel: response_integrate.comp's sums between chunks
   kResponseTaps,   ///< the delayed response classes' filters (PixelFootprint)
+  kSampleCameraEnds,  ///< vec4 per given sample: its camera end, lens path (SAMPLE_CAMERA_ENDS)
 };
 
 /// Texture units (TOFSIM_UNIT_...).

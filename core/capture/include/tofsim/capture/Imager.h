@@ -58,6 +58,23 @@ bool lastLegCounts(const Imager& imager);
 const Camera* pinhole(const Imager& imager);
 /// The camera, with or without a lens; null for a point set.
 const Camera* cameraOf(const Imager& imager);
+/// Throws InputError when the imager's own data do not fill its width x
+/// height pixels (a point set's points).
+void checkLayout(const Imager& imager);
+/// Whether each pixel is a point: every primary ray of a pixel is its centre's
+/// (a point set without steps), so a pixel filter has nothing to average.
+bool pointPixels(const Imager& imager);
+/// Whether every primary ray starts at viewpoint(): false for an imager whose
+/// rays have their own origins, where each traced sample carries its camera
+/// leg's end (ir::SurfaceImage::aperture). A camera's chief rays share its
+/// position (its aperture points are sampled apart: ThinLens.h).
+bool raysShareOrigin(const Imager& imager);
+/// Every point a last leg may end at, once each: viewpoint() when the rays
+/// share it (for bounds over the imager's arrivals).
+std::vector<glm::vec3> viewpoints(const Imager& imager);
+/// What the imager is, as the outputs' metadata name it: "camera",
+/// "point_set".
+const char* imagerKind(const Imager& imager);
 
 struct PrimaryRay {
   glm::vec3 origin;
