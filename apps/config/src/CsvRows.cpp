@@ -17,6 +17,12 @@ std::vector<CsvRow> readCsvRows(const ConfigNode& n, const std::string& key,
                                 const std::string& description) {
   std::ifstream in(path);
   if (!in) n.failKey(key, "cannot read " + path.string());
+  return readCsvRows(n, key, path, in, columns, description);
+}
+
+std::vector<CsvRow> readCsvRows(const ConfigNode& n, const std::string& key,
+                                const std::filesystem::path& path, std::istream& in,
+                                std::size_t columns, const std::string& description) {
   std::vector<CsvRow> rows;
   std::string line;
   int lineNo = 0;

@@ -9,6 +9,7 @@
 
 #include <cstddef>
 #include <filesystem>
+#include <istream>
 #include <string>
 #include <vector>
 
@@ -25,6 +26,12 @@ struct CsvRow {
 std::vector<CsvRow> readCsvRows(const ConfigNode& n, const std::string& key,
                                 const std::filesystem::path& path, std::size_t columns,
                                 const std::string& description);
+
+/// The same, of text already read from `path` (a file opened without
+/// following links).
+std::vector<CsvRow> readCsvRows(const ConfigNode& n, const std::string& key,
+                                const std::filesystem::path& path, std::istream& in,
+                                std::size_t columns, const std::string& description);
 
 /// The located error for line `line` of `path` (read at key `key`).
 [[noreturn]] void failAt(const ConfigNode& n, const std::string& key,
