@@ -2,7 +2,7 @@
 # Runs one libFuzzer target for a given time:
 #   bash scripts/fuzz.sh fuzz_config 60
 # Targets: fuzz_config fuzz_batch fuzz_gltf fuzz_sequence fuzz_npy fuzz_saved_volume fuzz_irf
-# fuzz_spad_tables fuzz_response_table fuzz_camera_files fuzz_tal_capture fuzz_capture_h5 (fuzz/README.md).
+# fuzz_rays fuzz_spad_tables fuzz_response_table fuzz_camera_files fuzz_tal_capture fuzz_capture_h5 (fuzz/README.md).
 # Builds build-fuzz with clang when needed (-DTOFSIM_FUZZ=ON, Debian's clang
 # and libclang-rt: scripts/install-fuzz-deps.sh). Starts from the seeds in
 # fuzz/corpus/TARGET and grows a working corpus in build-fuzz/corpus/TARGET;

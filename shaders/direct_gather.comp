@@ -28,7 +28,7 @@ uniform float uStart_m;
 uniform float uBinWidth_m;
 uniform float uIndexOfRefraction;
 uniform int uCameraUnwarp;
-uniform vec3 uCameraPosition_world;
+#include "camera_end.glsl"
 
 #define GATHER_HISTOGRAM direct
 #include "bin_deposit.glsl"
@@ -36,8 +36,9 @@ uniform vec3 uCameraPosition_world;
 #include "footprint_deposit.glsl"
 #endif
 
-// Adds sample g of pixel `local`.
-void gatherSample(uint local, SurfaceSample g, inout float lostBefore, inout float lostAfter) {
+// Adds sample g of pixel `local`, whose camera leg ends at `end`.
+void gatherSample(uint local, SurfaceSample g, CameraEnd end, inout float lostBefore,
+                  inout float lostAfter) {
   if (g.position.w == 0.0) return;
   vec3 x = g.position.xyz;
   vec3 n = g.normal;
@@ -47,17 +48,22 @@ void gatherSample(uint local, SurfaceSample g, inout float lostBefore, inout flo
   vec3 wLight = arrival.wLight;
   if (profile <= 0.0 || !visibleFromLight(x, cosX)) return;
 
-  vec3 wCamera = normalize(uCameraPosition_world - x);
+  vec3 camera = end.position;
+  vec3 wCamera = normalize(camera - x);
   vec3 radiance = directRadiance(scatter(g.vertex, n, wLight, wCamera).f,
                                  uLightIntensity_W_per_sr, profile, cosX, dLight);
-  float dCamera = uCameraUnwarp != 0 ? 0.0 : length(x - uCameraPosition_world);
+#ifdef SAMPLE_CAMERA_ENDS
+  float dCamera = uCameraUnwarp != 0 ? 0.0 : length(x - camera) + end.lensPath_m;
+#else
+  float dCamera = uCameraUnwarp != 0 ? 0.0 : length(x - camera);
+#endif
   float path_m = directPathLength(uIndexOfRefraction, dLight, dCamera);
 #ifdef PIXEL_FOOTPRINT
   vec3 dxdu, dxdv;
-  surfaceStepsAcrossSample(x, footprintPlaneNormal(g.vertex, n, -wCamera), g.pixel, g.wholePixel,
-                           dxdu, dxdv);
+  surfaceStepsAcrossSample(x, footprintPlaneNormal(g.vertex, n, -wCamera), camera, g.pixel,
+                           g.wholePixel, dxdu, dxdv);
   vec2 steps = pathStepsAcrossPixel(
-      opticalPathGradient(x, uLightPosition_world, uCameraPosition_world, uIndexOfRefraction,
+      opticalPathGradient(x, uLightPosition_world, camera, uIndexOfRefraction,
                           uCameraUnwarp != 0),
       dxdu, dxdv);
   vec3 kernel = footprintKernel(path_m, steps, uStart_m, uBinWidth_m);
@@ -80,11 +86,12 @@ void main() {
   float lostBefore = outside[2u * local];
   float lostAfter = outside[2u * local + 1u];
 #if PIXEL_SAMPLES == 1
-  gatherSample(local, pixelSample(xy, 1, 0), lostBefore, lostAfter);
+  gatherSample(local, pixelSample(xy, 1, 0), cameraEndOf(xy, 1, 0), lostBefore, lostAfter);
 #else
   int samples = samplesOfPixel(pixel);
   for (int s = 0; s < samples; ++s) {
-    gatherSample(local, pixelSample(xy, samples, s), lostBefore, lostAfter);
+    gatherSample(local, pixelSample(xy, samples, s), cameraEndOf(xy, samples, s), lostBefore,
+                 lostAfter);
   }
 #endif
   outside[2u * local] = lostBefore;

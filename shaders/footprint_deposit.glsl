@@ -7,7 +7,7 @@
 // volumes agree to float rounding.
 //
 // The including gather defines GATHER_HISTOGRAM (the name of its float
-// volume array, bin_deposit.glsl) and declares uBins and uCameraPosition_world. A sample's
+// volume array, bin_deposit.glsl) and declares uBins. A sample's
 // footprint is its sub-pixel (uSampleStepX/Y), or with ADAPTIVE_SAMPLES, for a
 // masked-out pixel's one centre sample, the whole pixel (uPixelStepX/Y). With
 // SURFACE_STEPS (a point-set imager, capture::PixelSteps) these are the
@@ -57,10 +57,11 @@ uniform vec3 uPixelStepY;
 
 // The surface point's steps across the sample's footprint (dx/du, dx/dv),
 // from the ray differentials on its tangent plane: the sample's sub-pixel, or
-// with wholePixel (only with ADAPTIVE_SAMPLES) the whole pixel.
-void surfaceStepsAcrossSample(vec3 x, vec3 n, ivec2 pixel, bool wholePixel, out vec3 dxdu,
-                              out vec3 dxdv) {
-  vec3 toSurface = x - uCameraPosition_world;
+// with wholePixel (only with ADAPTIVE_SAMPLES) the whole pixel. The rays
+// start at `camera`, the sample's camera end (camera_end.glsl).
+void surfaceStepsAcrossSample(vec3 x, vec3 n, vec3 camera, ivec2 pixel, bool wholePixel,
+                              out vec3 dxdu, out vec3 dxdv) {
+  vec3 toSurface = x - camera;
 #ifdef PIXEL_RAY_STEPS
   // The CPU's PixelSteps: the pixel's steps times the side 1 / N of a
   // sub-pixel, or 1 for a whole-pixel sample.

@@ -40,7 +40,7 @@ uniform float uStart_m;
 uniform float uBinWidth_m;
 uniform float uIndexOfRefraction;
 uniform int uCameraUnwarp;
-uniform vec3 uCameraPosition_world;
+#include "camera_end.glsl"
 uniform uint uFirstVpl;     // first VPL of this dispatch
 uniform uint uVplCount;     // VPLs in this dispatch
 uniform uint uIsmFirstVpl;  // first VPL whose ISM is at the start of the ISM buffer
@@ -83,6 +83,7 @@ struct Sample {
   vec3 x;
   vec3 n;
   ScatterVertex vertex;  // what x scatters
+  vec3 camera;           // where its camera leg ends (camera_end.glsl)
   vec3 toCamera;         // unit, x -> camera
   float weight;          // the sample's share of the pixel (1 with one point sample)
   float cameraPath;   // eta |x - c|, or 0 when unwarped
@@ -99,17 +100,24 @@ Sample loadSample(ivec2 xy, int samples, int s) {
   o.x = g.position.xyz;
   o.n = g.normal;
   o.vertex = g.vertex;
-  o.toCamera = normalize(uCameraPosition_world - o.x);
+  CameraEnd end = cameraEndOf(xy, samples, s);
+  o.camera = end.position;
+  o.toCamera = normalize(o.camera - o.x);
 #if defined(PIXEL_FOOTPRINT) || PIXEL_SAMPLES > 1
   o.weight = g.weight;  // as the CPU's PixelSurface::weight
 #else
   o.weight = 1.0;
 #endif
+#ifdef SAMPLE_CAMERA_ENDS
   o.cameraPath = cameraPathLength(uCameraUnwarp != 0, uIndexOfRefraction,
-                                  length(o.x - uCameraPosition_world));
+                                  length(o.x - o.camera) + end.lensPath_m);
+#else
+  o.cameraPath = cameraPathLength(uCameraUnwarp != 0, uIndexOfRefraction,
+                                  length(o.x - o.camera));
+#endif
 #ifdef PIXEL_FOOTPRINT
-  surfaceStepsAcrossSample(o.x, footprintPlaneNormal(o.vertex, o.n, -o.toCamera), g.pixel,
-                           g.wholePixel, o.dxdu, o.dxdv);
+  surfaceStepsAcrossSample(o.x, footprintPlaneNormal(o.vertex, o.n, -o.toCamera), o.camera,
+                           g.pixel, g.wholePixel, o.dxdu, o.dxdv);
 #endif
   return o;
 }
@@ -136,7 +144,7 @@ void gatherVpl(uint local, Sample at, uint k, Vpl vpl, inout float lostBefore,
   float path_m = vplPathLength(vpl.positionPath.w, uIndexOfRefraction, dist, at.cameraPath);
 #ifdef PIXEL_FOOTPRINT
   vec2 pixelSteps = pathStepsAcrossPixel(
-      opticalPathGradient(at.x, vpl.positionPath.xyz, uCameraPosition_world, uIndexOfRefraction,
+      opticalPathGradient(at.x, vpl.positionPath.xyz, at.camera, uIndexOfRefraction,
                           uCameraUnwarp != 0),
       at.dxdu, at.dxdv);
 #ifdef VPL_FOOTPRINT

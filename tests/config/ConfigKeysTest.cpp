@@ -175,6 +175,10 @@ TEST_F(ConfigKeysWriterTest, EffectiveConfigWritesEveryDeclaredKey) {
     std::ofstream(dir_ / "s2.yaml") << yaml;  // and reloads to the same config
     EXPECT_EQ(effectiveConfigYaml(loadRunConfig(dir_ / "s2.yaml")), yaml);
   }
+  // A ray list in place of the camera.
+  std::ofstream(dir_ / "rays.csv") << "0,0,1,0,0,-1\n";
+  std::ofstream(dir_ / "r.yaml") << "scene: scene.gltf\nrays: {file: rays.csv}\nlight: {}\ntime: {}\n";
+  leafPaths(YAML::Load(effectiveConfigYaml(loadRunConfig(dir_ / "r.yaml"))), "", written);
   written.erase("");
   std::set<std::string> declared;
   for (const ConfigKey& k : runConfigKeys()) declared.insert(k.path);

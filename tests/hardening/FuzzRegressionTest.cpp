@@ -15,6 +15,7 @@
 #include "fuzz/CameraFilesInput.h"
 #include "fuzz/CaptureH5Reads.h"
 #include "fuzz/IrfInput.h"
+#include "fuzz/RaysInput.h"
 #include "fuzz/SceneInvariants.h"
 #include "fuzz/SequenceInput.h"
 #include "fuzz/ResponseTableInput.h"
@@ -100,6 +101,17 @@ TEST_F(FuzzRegressionTest, ResponseTableFiles) {
   const int inputs = forEachInput("response_table", [&](const std::string& bytes, const fs::path&) {
     const auto* data = reinterpret_cast<const uint8_t*>(bytes.data());
     fuzz::loadResponseTable(fuzz::writeResponseTableInput(dir_, data, bytes.size()));
+  });
+  EXPECT_GT(inputs, 0);
+}
+
+// As in fuzz/fuzz_rays.cpp: a ray list's file, CSV or .npy.
+TEST_F(FuzzRegressionTest, RayFiles) {
+  fs::create_directory_symlink(fs::path(TOFSIM_SOURCE_DIR) / "configs" / "scenes", dir_ / "scenes");
+  const int inputs = forEachInput("rays", [&](const std::string& bytes, const fs::path&) {
+    const auto* data = reinterpret_cast<const uint8_t*>(bytes.data());
+    const fs::path config = fuzz::writeRaysInput(dir_, data, bytes.size());
+    if (!config.empty()) config::loadRunConfig(config, {});
   });
   EXPECT_GT(inputs, 0);
 }

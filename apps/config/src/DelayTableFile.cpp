@@ -37,7 +37,7 @@ Located readRows(const ConfigNode& n, const char* key, const DelayTableWords& w)
     if (ext == ".npy") a = io::parseNpy(bytes, file);
   } catch (const InputError& e) {
     n.failKey(key, std::string(e.what()) + " (" + w.table +
-                       (ext == ".npy" ? " .npy is a float32 (n, 2) array)" : " file)"));
+                       (ext == ".npy" ? " .npy is a float32 or float64 (n, 2) array)" : " file)"));
   }
   if (ext == ".csv") {
     for (const CsvRow& row : readCsvText(n, key, path, bytes, 2, columns)) {

@@ -183,7 +183,15 @@ std::string effectiveConfigYaml(const RunConfig& config) {
   if (config.nlos) {
     root["nlos"] = nlosNode(*config.nlos);
   } else {
-    root["camera"] = cameraNode(config.camera);
+    if (config.rays) {
+      YAML::Node rays;
+      rays["file"] = config.rays->file;
+      rays["resolution"] = flowPair(config.rays->imager.width, config.rays->imager.height);
+      rays["last_leg_counts"] = config.rays->imager.last_leg_counts;
+      root["rays"] = rays;
+    } else {
+      root["camera"] = cameraNode(config.camera);
+    }
     root["light"] = lightNode(config.light);
   }
   if (config.sequence) root["sequence"] = sequenceNode(*config.sequence);

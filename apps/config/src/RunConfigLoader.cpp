@@ -6,6 +6,7 @@
 #include "CameraConfigParser.h"
 #include "ConfigNode.h"
 #include "NlosConfigParser.h"
+#include "RayFile.h"
 #include "RunChecks.h"
 #include "RunConfigYaml.h"
 #include "RunSections.h"
@@ -47,13 +48,26 @@ void parseScene(const ConfigNode& root, RunConfig& config) {
 // A camera and a light, or an nlos scan in their place.
 void parseView(const ConfigNode& root, RunConfig& config) {
   const auto nlos = root.optionalChild("nlos");
+  if (!nlos && root.has("rays")) {
+    if (root.has("camera")) root.failKey("camera", "a capture has one imager: `camera` or `rays`, not both");
+    RaysConfig rays;
+    rays.imager = parseRays(root.child("rays"), rays.file);
+    config.camera.camera.width = rays.imager.width;
+    config.camera.camera.height = rays.imager.height;
+    config.rays = std::move(rays);
+    parseLight(root.child("light"), config.light);
+    if (config.light.attach_to_camera) {
+      root.child("light").failKey("attach_to_camera", "rays have no camera to attach the light to");
+    }
+    return;
+  }
   if (!nlos) {
     parseCamera(root.child("camera"), config.camera);
     parseLight(root.child("light"), config.light);
     return;
   }
   config.nlos = parseNlos(*nlos);
-  for (const char* key : {"camera", "light"}) {
+  for (const char* key : {"camera", "light", "rays"}) {
     if (root.has(key)) {
       root.failKey(key,
                    "an nlos capture looks at the relay wall from nlos.sensor_origin and is "
@@ -117,6 +131,8 @@ RunConfig loadRunConfigYaml(YAML::Node yaml, const std::filesystem::path& file,
   if (const auto sequence = root.optionalChild("sequence")) {
     if (config.nlos)
       sequence->fail("a sequence of nlos captures is not supported (remove `nlos` or `sequence`)");
+    if (config.rays)
+      sequence->fail("a sequence of ray-list captures is not supported (remove `rays` or `sequence`)");
     config.sequence = parseSequence(*sequence);
   }
   if (const auto time = root.optionalChild("time")) {

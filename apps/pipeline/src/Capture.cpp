@@ -32,6 +32,11 @@ capture::RenderJob makeRenderJob(const config::RunConfig& config, const scene::S
   job.camera() = config.camera.camera;
   job.settings = config.render;
   job.settings.indirect.trace_threads = config.cpu_threads;
+  job.light = config.light.light;
+  if (config.rays) {  // the light is not attached (the loader refuses it)
+    job.imager = config.rays->imager;
+    return job;
+  }
   if (!config.camera.gltf_camera.empty()) {
     const scene::SceneCamera& c = findCamera(config, scene);
     job.camera().position_world = c.position_world;
@@ -39,7 +44,6 @@ capture::RenderJob makeRenderJob(const config::RunConfig& config, const scene::S
     job.camera().up_world = c.up_world;
     job.camera().fov_y_deg = c.fov_y_deg;
   }
-  job.light = config.light.light;
   if (config.light.attach_to_camera) {
     const capture::Camera& cam = job.camera();
     const glm::vec3 offset = config.light.offset_camera_m;

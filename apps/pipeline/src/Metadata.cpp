@@ -126,7 +126,8 @@ std::string transientMetadataJson(const config::RunConfig& config, const capture
   for (const auto& [role, file] : metadataFiles(config.output)) j["files"][role] = file;
   addVolumeLayout(j, job.imager, axis);
   j["time"] = timeJson(axis);
-  // The camera, for an imager that is one (other kinds say their own).
+  // The camera, for an imager that is one; other kinds say which they are.
+  if (!capture::cameraOf(job.imager)) j["imager"] = capture::imagerKind(job.imager);
   if (const capture::Camera* camera = capture::cameraOf(job.imager)) {
     j["camera"] = cameraJson(*camera);
     j["camera"]["vignetting"] = vignettingJson(config.camera.vignetting);

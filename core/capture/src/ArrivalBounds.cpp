@@ -68,25 +68,32 @@ ArrivalBounds arrivalBounds(const RenderJob& job, int32_t surfaceVertices) {
   const bool unwarp = job.settings.time.camera_unwarp || !lastLegCounts(job.imager);
   const double eta = job.settings.time.index_of_refraction;
   const glm::dvec3 light(job.light.position_world);
-  const glm::dvec3 camera(viewpoint(job.imager));
   ArrivalBounds bounds;
   if (job.scene->triangleCount() > 0) {
     const scene::Bounds box = job.scene->bounds();
-    const double straight = glm::length(light - camera);
     const double in = distanceToBox(light, box);
-    const double shortest = unwarp ? in : std::max(straight, in + distanceToBox(camera, box));
-    const double longest =
-        longestThroughCorners(light, camera, cornersOf(box), surfaceVertices, !unwarp);
     // A defocused camera's legs end anywhere on its aperture disk, within
     // its radius of the centre, and add the lens's path, within the radius
     // of the chief ray's (ThinLens.h): a diameter either way.
     const Camera* c = cameraOf(job.imager);
     const double aperture = c != nullptr && !unwarp ? c->aperture_m : 0.0;
-    bounds = {true, eta * std::max(0.0, shortest - aperture), eta * (longest + aperture)};
+    // The union over every point a last leg may end at.
+    for (const glm::vec3& end : viewpoints(job.imager)) {
+      const glm::dvec3 camera(end);
+      const double straight = glm::length(light - camera);
+      const double shortest = unwarp ? in : std::max(straight, in + distanceToBox(camera, box));
+      const double longest =
+          longestThroughCorners(light, camera, cornersOf(box), surfaceVertices, !unwarp);
+      const double lo = eta * std::max(0.0, shortest - aperture), hi = eta * (longest + aperture);
+      bounds = bounds.any ? ArrivalBounds{true, std::min(bounds.shortest_m, lo),
+                                          std::max(bounds.longest_m, hi)}
+                          : ArrivalBounds{true, lo, hi};
+    }
   }
   if (lightMayBeSeen(job)) {
     // Unwarped time is the time at the scene point; the source emits at 0.
-    const double seen_m = unwarp ? 0.0 : eta * glm::length(light - camera);
+    const double seen_m =
+        unwarp ? 0.0 : eta * glm::length(light - glm::dvec3(job.camera().position_world));
     bounds.shortest_m = bounds.any ? std::min(bounds.shortest_m, seen_m) : seen_m;
     bounds.longest_m = bounds.any ? std::max(bounds.longest_m, seen_m) : seen_m;
     bounds.any = true;

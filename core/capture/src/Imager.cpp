@@ -31,13 +31,19 @@ int32_t imageHeight(const Imager& imager) {
 
 glm::vec3 viewpoint(const Imager& imager) {
   return std::visit(Overloaded{[](const Camera& c) { return c.position_world; },
-                               [](const PointSetImager& p) { return p.origin_world; }},
+                               [](const PointSetImager& p) { return p.origin_world; },
+                               // One of them: each sample carries its own
+                               // (raysShareOrigin is false).
+                               [](const RayListImager& r) {
+                                 return r.rays.empty() ? glm::vec3(0.0f) : r.rays[0].origin;
+                               }},
                     imager);
 }
 
 bool lastLegCounts(const Imager& imager) {
   return std::visit(Overloaded{[](const Camera&) { return true; },
-                               [](const PointSetImager& p) { return p.last_leg_counts; }},
+                               [](const PointSetImager& p) { return p.last_leg_counts; },
+                               [](const RayListImager& r) { return r.last_leg_counts; }},
                     imager);
 }
 
@@ -47,6 +53,69 @@ const Camera* pinhole(const Imager& imager) {
 }
 
 const Camera* cameraOf(const Imager& imager) { return std::get_if<Camera>(&imager); }
+
+void checkLayout(const Imager& imager) {
+  std::visit(Overloaded{[](const Camera&) {},
+                        [](const PointSetImager& p) {
+                          if (p.points_world.size() ==
+                              static_cast<std::size_t>(p.width) * p.height)
+                            return;
+                          throw InputError("the point-set imager lays out " +
+                                           std::to_string(p.width) + "x" +
+                                           std::to_string(p.height) + " pixels but holds " +
+                                           std::to_string(p.points_world.size()) + " points");
+                        },
+                        [](const RayListImager& r) {
+                          if (r.rays.size() == static_cast<std::size_t>(r.width) * r.height)
+                            return;
+                          throw InputError("the ray list lays out " + std::to_string(r.width) +
+                                           "x" + std::to_string(r.height) +
+                                           " pixels but holds " + std::to_string(r.rays.size()) +
+                                           " rays");
+                        }},
+             imager);
+}
+
+bool pointPixels(const Imager& imager) {
+  return std::visit(Overloaded{[](const Camera&) { return false; },
+                               [](const PointSetImager& p) {
+                                 return p.step_u_world == glm::vec3(0.0f) &&
+                                        p.step_v_world == glm::vec3(0.0f);
+                               },
+                               [](const RayListImager&) { return true; }},
+                    imager);
+}
+
+bool raysShareOrigin(const Imager& imager) {
+  return std::visit(Overloaded{[](const Camera&) { return true; },
+                               [](const PointSetImager&) { return true; },
+                               [](const RayListImager&) { return false; }},
+                    imager);
+}
+
+std::vector<glm::vec3> viewpoints(const Imager& imager) {
+  return std::visit(
+      Overloaded{[](const Camera& c) { return std::vector<glm::vec3>{c.position_world}; },
+                 [](const PointSetImager& p) { return std::vector<glm::vec3>{p.origin_world}; },
+                 [](const RayListImager& r) {
+                   std::vector<glm::vec3> origins;
+                   for (const PrimaryRay& ray : r.rays) origins.push_back(ray.origin);
+                   const auto less = [](const glm::vec3& a, const glm::vec3& b) {
+                     return a.x != b.x ? a.x < b.x : a.y != b.y ? a.y < b.y : a.z < b.z;
+                   };
+                   std::sort(origins.begin(), origins.end(), less);
+                   origins.erase(std::unique(origins.begin(), origins.end()), origins.end());
+                   return origins;
+                 }},
+      imager);
+}
+
+const char* imagerKind(const Imager& imager) {
+  return std::visit(Overloaded{[](const Camera&) { return "camera"; },
+                               [](const PointSetImager&) { return "point_set"; },
+                               [](const RayListImager&) { return "ray_list"; }},
+                    imager);
+}
 
 PrimaryRays::PrimaryRays(const Imager& imager) : imager_(imager) {
   // A camera's frame, computed once for all its rays.
@@ -62,6 +131,9 @@ PrimaryRay PrimaryRays::ray(int32_t x, int32_t y) const {
                  [&](const PointSetImager& p) -> PrimaryRay {
                    const glm::vec3 target = p.points_world[static_cast<std::size_t>(y) * p.width + x];
                    return {p.origin_world, glm::normalize(target - p.origin_world)};
+                 },
+                 [&](const RayListImager& r) {
+                   return r.rays[static_cast<std::size_t>(y) * r.width + x];
                  }},
       imager_);
 }
@@ -76,6 +148,10 @@ PrimaryRay PrimaryRays::ray(int32_t x, int32_t y, glm::vec2 offset) const {
                        p.points_world[static_cast<std::size_t>(y) * p.width + x] +
                        offset.x * p.step_u_world + offset.y * p.step_v_world;
                    return {p.origin_world, glm::normalize(target - p.origin_world)};
+                 },
+                 // A point sample: every offset is the pixel's one ray.
+                 [&](const RayListImager& r) {
+                   return r.rays[static_cast<std::size_t>(y) * r.width + x];
                  }},
       imager_);
 }
@@ -95,7 +171,8 @@ PixelSteps::PixelSteps(const Imager& imager, float side, int32_t x, int32_t y) {
                           // The points' own spacing: the cell each point stands for.
                           stepX_ = p.step_u_world * side;
                           stepY_ = p.step_v_world * side;
-                        }},
+                        },
+                        [](const RayListImager&) {}},  // point samples: no steps
              imager);
 }
 

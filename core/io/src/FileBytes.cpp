@@ -52,22 +52,4 @@ std::string readFileNoFollow(const std::filesystem::path& path, std::size_t maxB
   return bytes;
 }
 
-NpyArray parseNpy(std::string_view bytes, const std::string& name) {
-  const detail::NpyHeaderInfo info = detail::decodeNpyHeader(bytes, name);
-  const std::size_t count = detail::checkedElementCount(info.shape, name);
-  const std::size_t available = bytes.size() - std::min(bytes.size(), info.dataOffset);
-  if (count > available / sizeof(float) || available != count * sizeof(float)) {
-    throw InputError(FileLoc{name}, "",
-                     std::string(count > available / sizeof(float) ? "truncated"
-                                                                   : "unexpected trailing bytes") +
-                         ": the shape needs " + std::to_string(count) + " floats, the file has " +
-                         std::to_string(available) + " bytes of data");
-  }
-  NpyArray a;
-  a.shape = info.shape;
-  a.data.resize(count);
-  if (count > 0) std::memcpy(a.data.data(), bytes.data() + info.dataOffset, count * sizeof(float));
-  return a;
-}
-
 }  // namespace tofsim::io

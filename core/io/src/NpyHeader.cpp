@@ -111,7 +111,8 @@ std::string encodeNpyHeader(const NpyShape& shape) {
   return out + dict;
 }
 
-NpyHeaderInfo decodeNpyHeader(std::string_view prefix, const std::string& file) {
+NpyHeaderInfo decodeNpyHeader(std::string_view prefix, const std::string& file,
+                              bool allowFloat64) {
   if (prefix.size() < 10 || prefix.substr(0, kMagic.size()) != kMagic) {
     fail(file, "bad magic (expected \\x93NUMPY)");
   }
@@ -136,9 +137,13 @@ NpyHeaderInfo decodeNpyHeader(std::string_view prefix, const std::string& file) 
   const std::string_view dict = prefix.substr(dictStart, headerLen);
 
   const std::string descr = parseDescr(dict, file);
-  if (descr != "<f4") fail(file, "dtype '" + descr + "' is not supported (need '<f4', float32)");
+  const bool float64 = allowFloat64 && descr == "<f8";
+  if (descr != "<f4" && !float64) {
+    fail(file, "dtype '" + descr + "' is not supported (need '<f4', float32" +
+                   (allowFloat64 ? std::string(", or '<f8', float64)") : std::string(")")));
+  }
   if (parseFortranOrder(dict, file)) fail(file, "fortran_order True is not supported (need C order)");
-  return NpyHeaderInfo{parseShape(dict, file), dictStart + headerLen};
+  return NpyHeaderInfo{parseShape(dict, file), dictStart + headerLen, float64};
 }
 
 std::size_t checkedElementCount(const NpyShape& shape, const std::string& file) {

@@ -22,13 +22,15 @@ namespace {
 
 Image depthFromPositions(const std::vector<float>& positions, const Imager& imager) {
   const int32_t width = imageWidth(imager), height = imageHeight(imager);
-  const glm::vec3 origin = viewpoint(imager);
+  // Along each pixel's centre ray, from where it starts (the viewpoint, or
+  // the ray's own origin).
+  const PrimaryRays rays(imager);
   Image depth(width, height, 1);
   for (int32_t y = 0; y < height; ++y) {
     for (int32_t x = 0; x < width; ++x) {
       const float* p = &positions[(static_cast<std::size_t>(y) * width + x) * 4];
       if (p[3] == 0.0f) continue;
-      depth.at(y, x, 0) = glm::length(glm::vec3(p[0], p[1], p[2]) - origin);
+      depth.at(y, x, 0) = glm::length(glm::vec3(p[0], p[1], p[2]) - rays.ray(x, y).origin);
     }
   }
   return depth;

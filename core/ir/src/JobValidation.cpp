@@ -23,13 +23,7 @@ void validateImageSides(const RenderJob& job, const DeviceLimits& limits) {
     throw InputError("camera.resolution " + std::to_string(width) + "x" + std::to_string(height) +
                      " exceeds the GL implementation's texture limit " + maxTexture);
   }
-  if (const auto* points = std::get_if<PointSetImager>(&job.imager);
-      points != nullptr &&
-      points->points_world.size() != static_cast<std::size_t>(width) * height) {
-    throw InputError("the point-set imager lays out " + std::to_string(width) + "x" +
-                     std::to_string(height) + " pixels but holds " +
-                     std::to_string(points->points_world.size()) + " points");
-  }
+  checkLayout(job.imager);
   if (job.settings.shadow_map_resolution > limits.maxImageSide) {
     throw InputError("render.shadow_map_resolution " +
                      std::to_string(job.settings.shadow_map_resolution) +

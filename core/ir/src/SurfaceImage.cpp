@@ -36,7 +36,10 @@ SurfaceImage emptyImage(const capture::Imager& imager, std::vector<int32_t> side
   image.vertex.assign(
       samples, physics::scatterVertex(physics::VERTEX_LAMBERTIAN, glm::vec3(0.0f), 0.0f, 0.0f));
   image.geometric.assign(samples, glm::vec3(0.0f));
-  if (apertureSamples > 1) image.aperture.assign(samples, glm::vec4(0.0f));
+  // Each sample's own camera end: a defocused camera's aperture point, or
+  // the origin of a ray that has its own.
+  if (apertureSamples > 1 || !capture::raysShareOrigin(imager))
+    image.aperture.assign(samples, glm::vec4(0.0f));
   return image;
 }
 
@@ -65,6 +68,8 @@ void traceInto(SurfaceImage& image, const rays::RayScene& scene, const capture::
               lens->through(ray, capture::aperturePoint(static_cast<int32_t>(e % k), k));
           ray = through.ray;
           image.aperture[i] = glm::vec4(ray.origin, through.lensPath_m);
+        } else if (!image.aperture.empty()) {
+          image.aperture[i] = glm::vec4(ray.origin, 0.0f);  // no lens after it
         }
         const auto hit = scene.intersect(ray.origin, ray.direction);
         if (!hit) continue;

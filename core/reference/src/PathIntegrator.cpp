@@ -22,11 +22,7 @@ constexpr int kChannels = 3;
 // Points without extent are points: a box filter over them would only jitter
 // every primary ray by zero (and spend draws doing it).
 PixelFilter effectiveFilter(const capture::Imager& imager, PixelFilter requested) {
-  const auto* points = std::get_if<capture::PointSetImager>(&imager);
-  if (points == nullptr) return requested;
-  const bool zeroSteps =
-      points->step_u_world == glm::vec3(0.0f) && points->step_v_world == glm::vec3(0.0f);
-  return zeroSteps ? PixelFilter::Point : requested;
+  return capture::pointPixels(imager) ? PixelFilter::Point : requested;
 }
 }  // namespace
 
@@ -36,7 +32,6 @@ PathIntegrator::PathIntegrator(const RayScene& scene, const capture::RenderJob& 
     : scene_(scene),
       job_(job),
       rays_(job.imager),
-      viewpoint_(capture::viewpoint(job.imager)),
       dropLastLeg_(job.settings.time.camera_unwarp || !capture::lastLegCounts(job.imager)),
       width_(capture::imageWidth(job.imager)),
       bounces_(bounces),
@@ -163,8 +158,11 @@ void PathIntegrator::traceContinuation(const SurfaceHit& hit, const glm::vec3& t
 
 void PathIntegrator::renderPixelCentre(int32_t x, int32_t y, PixelOutput& out,
                                        std::vector<double>& scratch) const {
-  const glm::vec3 eye = viewpoint_;
-  const std::optional<SurfaceHit> primary = scene_.intersect(eye, rays_.ray(x, y).direction);
+  // The last leg ends where the pixel's ray starts (an imager's rays may
+  // each have their own origin).
+  const capture::PrimaryRay ray = rays_.ray(x, y);
+  const glm::vec3 eye = ray.origin;
+  const std::optional<SurfaceHit> primary = scene_.intersect(eye, ray.direction);
   if (!primary) return;
   const SurfaceHit& hit = *primary;
   const double cameraLeg_m = glm::length(hit.position_world - eye);
@@ -216,9 +214,10 @@ void PathIntegrator::addDirect(const SurfaceHit& hit, const glm::vec3& toCamera,
 
 void PathIntegrator::renderPixelArea(int32_t x, int32_t y, PixelOutput& out,
                                      std::vector<double>& scratch) const {
-  const glm::vec3 eye = viewpoint_;
+  const capture::PrimaryRay centreRay = rays_.ray(x, y);
+  const glm::vec3 eye = centreRay.origin;  // every ray of the pixel starts there
   // The depth image stays the centre's, as the G-buffer's.
-  if (const auto centre = scene_.intersect(eye, rays_.ray(x, y).direction)) {
+  if (const auto centre = scene_.intersect(eye, centreRay.direction)) {
     out.depth_m = static_cast<float>(glm::length(centre->position_world - eye));
   }
   const std::size_t floats = static_cast<std::size_t>(job_.settings.time.bins) * kChannels;

@@ -88,7 +88,6 @@ class PathIntegrator {
   const RayScene& scene_;
   const capture::RenderJob& job_;
   capture::PrimaryRays rays_;  ///< the imager's rays, a pinhole's frame computed once
-  glm::vec3 viewpoint_;
   bool dropLastLeg_;
   int32_t width_;
   int32_t bounces_;

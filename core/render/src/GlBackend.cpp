@@ -57,6 +57,19 @@ gl::Buffer pixelRayStepsBuffer(const Camera& camera) {
   return gl::Buffer(steps.size() * sizeof(glm::vec4), steps.data());
 }
 
+// The given samples' own camera ends (xyz) and lens paths (w), in the
+// samples' order, then the pixel centres' (camera_end.glsl).
+gl::Buffer sampleCameraEndsBuffer(const ir::SurfaceImage& samples, const ir::SurfaceImage* centres) {
+  TOFSIM_CHECK_MSG(samples.aperture.size() == samples.size(),
+                   "rays with their own origins need each sample's camera end");
+  std::vector<glm::vec4> ends = samples.aperture;
+  if (centres != nullptr) {
+    TOFSIM_CHECK(centres->aperture.size() == centres->size());
+    ends.insert(ends.end(), centres->aperture.begin(), centres->aperture.end());
+  }
+  return gl::Buffer(ends.size() * sizeof(glm::vec4), ends.data());
+}
+
 // Uniforms shared by the direct and indirect gathers: image, time axis,
 // imager (its viewpoint, whether its last leg counts, its footprint steps).
 void configureGather(const gl::Program& program, const RenderJob& job) {
@@ -69,8 +82,13 @@ void configureGather(const gl::Program& program, const RenderJob& job) {
   // The CPU backend's dropLastLeg_: unwarped, or a last leg that takes no time.
   const bool dropLastLeg = job.settings.time.camera_unwarp || !lastLegCounts(job.imager);
   program.set("uCameraUnwarp", dropLastLeg ? 1 : 0);
-  program.set("uCameraPosition_world", viewpoint(job.imager));
   const RenderSettings& s = job.settings;
+  // Each sample's own camera end, or the viewpoint for all (camera_end.glsl).
+  if (raysShareOrigin(job.imager)) {
+    program.set("uCameraPosition_world", viewpoint(job.imager));
+  } else if (gpu::adaptiveSamples(s)) {
+    program.set("uImagePixels", static_cast<unsigned>(imageWidth(job.imager) * imageHeight(job.imager)));
+  }
   const int32_t n = s.pixel_samples;
   // Each sample stands for 1 / N^2 of the pixel (as the CPU backend weighs it).
   if (s.pixel_footprint || n > 1) program.set("uSampleWeight", 1.0f / static_cast<float>(n * n));
@@ -164,6 +182,9 @@ struct GlBackend::Passes {
     if (pixelRaySteps.size() > 0) {
       pixelRaySteps.bindBase(GL_SHADER_STORAGE_BUFFER, gpu::kPixelRaySteps);
     }
+    if (sampleCameraEnds.size() > 0) {
+      sampleCameraEnds.bindBase(GL_SHADER_STORAGE_BUFFER, gpu::kSampleCameraEnds);
+    }
     if (!centres) return;
     centres->position.bindUnit(gpu::kCentrePosition);
     centres->normal.bindUnit(gpu::kCentreNormal);
@@ -192,6 +213,9 @@ struct GlBackend::Passes {
   /// A lens camera with render.pixel_footprint only: each pixel's ray steps
   /// (PIXEL_RAY_STEPS in footprint_deposit.glsl), two vec4 a pixel.
   gl::Buffer pixelRaySteps;
+  /// Given samples with their own camera ends only (SAMPLE_CAMERA_ENDS in
+  /// camera_end.glsl): one vec4 per sample, then one per pixel centre.
+  gl::Buffer sampleCameraEnds;
   LightShadowMap shadowMap;
   gl::Program directGather;
   std::unique_ptr<IndirectLight> indirectLight;  ///< null without VPLs
@@ -316,9 +340,13 @@ ir::CentreSurfaces GlBackend::loadGivenSurfaces(Passes& p) {
   const std::unique_ptr<ir::SurfaceImage> samples = std::move(givenSamples_);
   const std::unique_ptr<ir::SurfaceImage> centres = std::move(givenCentres_);
   p.gbuffer.load(*samples, p.samplesPerSide, p.appendVertices(*samples));
+  const bool adaptive = gpu::adaptiveSamples(p.job.settings);
+  if (!raysShareOrigin(p.job.imager)) {
+    p.sampleCameraEnds = sampleCameraEndsBuffer(*samples, adaptive ? centres.get() : nullptr);
+  }
   if (p.samplesPerSide == 1) return ir::centresOf(*samples);
   TOFSIM_CHECK_MSG(centres != nullptr, "setSurfaces needs the pixel centres' samples with N > 1");
-  if (gpu::adaptiveSamples(p.job.settings)) {
+  if (adaptive) {
     p.centres = std::make_unique<SurfaceMaps>(samples->width, samples->height, p.gltf());
     p.centres->load(*centres, 1, p.appendVertices(*centres));
   }
@@ -365,7 +393,7 @@ std::size_t GlBackend::fixedBytes() const {
   std::size_t bytes = p.gpuScene.bytes() +
                       p.pixelCount() * samples * floatsPerSample * sizeof(float) +
                       p.shadowMap.bytes() + p.sampledPixels.size() + p.pixelRaySteps.size() +
-                      p.vertexTable.size();
+                      p.vertexTable.size() + p.sampleCameraEnds.size();
   if (p.indirectLight) bytes += p.indirectLight->fixedBytes();
   return bytes;
 }

@@ -26,6 +26,7 @@ std::vector<std::pair<std::string, std::string>> shaderDefines() {
       {"TOFSIM_SSBO_RESPONSE_STATE", n(kResponseState)},
       {"TOFSIM_SSBO_RESPONSE_TAPS", n(kResponseTaps)},
       {"TOFSIM_SSBO_SCATTER_VERTICES", n(kScatterVertices)},
+      {"TOFSIM_SSBO_SAMPLE_CAMERA_ENDS", n(kSampleCameraEnds)},
       {"TOFSIM_UNIT_G_POSITION", n(kGPosition)},
       {"TOFSIM_UNIT_G_NORMAL", n(kGNormal)},
       {"TOFSIM_UNIT_G_ALBEDO", n(kGAlbedo)},
@@ -63,6 +64,9 @@ std::vector<std::pair<std::string, std::string>> gatherDefines(const capture::Re
   // Only with sub-samples to skip: every other render compiles the gathers
   // of before, which read no mask.
   if (adaptiveSamples(s)) defines.emplace_back("ADAPTIVE_SAMPLES", "1");
+  // Rays with their own origins: each sample's camera end from a buffer
+  // (camera_end.glsl); every other imager compiles the gathers of before.
+  if (!capture::raysShareOrigin(job.imager)) defines.emplace_back("SAMPLE_CAMERA_ENDS", "1");
   const capture::Camera* camera = capture::cameraOf(job.imager);
   if (s.pixel_footprint && camera == nullptr) defines.emplace_back("SURFACE_STEPS", "1");
   if (s.pixel_footprint && camera != nullptr && camera->lens) {

@@ -45,6 +45,7 @@ enum StorageBinding : uint32_t {
   kResponseState,  ///< 16 doubles per pixel: response_integrate.comp's sums between chunks
   kResponseTaps,   ///< the delayed response classes' filters (PixelFootprint)
   kScatterVertices,  ///< the G-buffers' vertices by index: the materials', then given samples'
+  kSampleCameraEnds,  ///< vec4 per given sample: its camera end, lens path (SAMPLE_CAMERA_ENDS)
 };
 
 /// Texture units (TOFSIM_UNIT_...).

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "tofsim/capture/Camera.h"
+#include "tofsim/capture/Imager.h"
 #include "tofsim/capture/Light.h"
 #include "tofsim/capture/RenderSettings.h"
 #include "tofsim/capture/Vignetting.h"
@@ -52,6 +53,13 @@ struct CameraConfig {
   capture::Vignetting vignetting;
   /// camera.psf; none: a perfectly sharp lens.
   std::optional<PsfConfig> psf;
+};
+
+/// rays: in place of camera: a capture whose pixels are the rays of a file
+/// (RayFile.h): the user's own sensor geometry.
+struct RaysConfig {
+  std::string file;  ///< the ray file, absolute
+  capture::RayListImager imager;
 };
 
 struct LightConfig {
@@ -136,6 +144,9 @@ struct RunConfig {
   std::filesystem::path config_file;
   std::filesystem::path scene_file;  ///< resolved against the config's folder
   CameraConfig camera;
+  /// rays: in place of camera:, the capture's imager (camera.camera then
+  /// holds only its image size, for what sizes outputs and sensors).
+  std::optional<RaysConfig> rays;
   LightConfig light;
   /// A non-line-of-sight relay-wall scan instead of a camera and a light
   /// (NlosConfig.h); `light` then holds the laser spot's emitter (a

@@ -44,7 +44,26 @@ struct PointSetImager {
   glm::vec3 step_v_world{0.0f};
 };
 
-using Imager = std::variant<Camera, PointSetImager>;
+struct PrimaryRay {
+  glm::vec3 origin;
+  glm::vec3 direction;  ///< unit
+};
+
+/// Rays of the user's own sensor geometry (a fibre bundle, a scanning
+/// pattern, a custom lens), each one pixel of a width x height image
+/// (row-major; an N x 1 image for a plain list): a pixel's primary ray is its
+/// ray, and its light's last leg runs from the surface the ray hits back to
+/// the ray's own origin. A pixel is a point sample: it has no extent, so its
+/// footprint is a delta (as render.pixel_footprint: false).
+struct RayListImager {
+  int32_t width = 0;
+  int32_t height = 1;
+  std::vector<PrimaryRay> rays;  ///< width * height, row-major, unit directions
+  /// false: the last leg takes no time (as PointSetImager::last_leg_counts).
+  bool last_leg_counts = true;
+};
+
+using Imager = std::variant<Camera, PointSetImager, RayListImager>;
 
 int32_t imageWidth(const Imager& imager);
 int32_t imageHeight(const Imager& imager);
@@ -58,11 +77,23 @@ bool lastLegCounts(const Imager& imager);
 const Camera* pinhole(const Imager& imager);
 /// The camera, with or without a lens; null for a point set.
 const Camera* cameraOf(const Imager& imager);
-
-struct PrimaryRay {
-  glm::vec3 origin;
-  glm::vec3 direction;  ///< unit
-};
+/// Throws InputError when the imager's own data do not fill its width x
+/// height pixels (a point set's points).
+void checkLayout(const Imager& imager);
+/// Whether each pixel is a point: every primary ray of a pixel is its centre's
+/// (a point set without steps), so a pixel filter has nothing to average.
+bool pointPixels(const Imager& imager);
+/// Whether every primary ray starts at viewpoint(): false for an imager whose
+/// rays have their own origins, where each traced sample carries its camera
+/// leg's end (ir::SurfaceImage::aperture). A camera's chief rays share its
+/// position (its aperture points are sampled apart: ThinLens.h).
+bool raysShareOrigin(const Imager& imager);
+/// Every point a last leg may end at, once each: viewpoint() when the rays
+/// share it (for bounds over the imager's arrivals).
+std::vector<glm::vec3> viewpoints(const Imager& imager);
+/// What the imager is, as the outputs' metadata name it: "camera",
+/// "point_set", "ray_list".
+const char* imagerKind(const Imager& imager);
 
 /// Primary rays of an imager, with what they share computed once (a
 /// pinhole's frame, as capture::PixelRays, whose directions these are bit for

@@ -38,8 +38,10 @@ struct SurfaceImage {
   int32_t apertureSamples = 1;  ///< 1: the pinhole's ray (the aperture's centre)
   /// With apertureSamples > 1, each sample's aperture point (xyz world),
   /// where its camera leg ends, and the lens's path from there to the pixel
-  /// less the chief ray's (w, m: capture::ApertureRay::lensPath_m); empty
-  /// otherwise (the imager's viewpoint, no lens path).
+  /// less the chief ray's (w, m: capture::ApertureRay::lensPath_m); for an
+  /// imager whose rays have their own origins (!capture::raysShareOrigin),
+  /// each sample's ray origin (w = 0); empty otherwise (the imager's
+  /// viewpoint, no lens path).
   std::vector<glm::vec4> aperture;
   std::vector<glm::vec4> position;  ///< xyz world, w = 1 on a surface, 0 else
   std::vector<glm::vec4> normal;    ///< xyz unit shading normal facing the viewpoint (0: a medium)

@@ -1,0 +1,22 @@
+#pragma once
+// Private to the config module: a `rays:` mapping in place of `camera:` (a
+// capture whose pixels are the user's own rays: a fibre bundle, a scanning
+// pattern, a custom lens), its file read into capture::RayListImager. The
+// file is a .npy of shape (N, 6), float32 or float64, or a CSV of six
+// columns ox, oy, oz, dx, dy, dz (metres, world frame; a '#' line a
+// comment, a first row that is not numbers a header), one ray a row. It is
+// opened without following links. Directions are normalised; a zero or
+// non-finite one is a located error naming the file and its row (line).
+
+#include <string>
+
+#include "ConfigNode.h"
+#include "tofsim/capture/Imager.h"
+
+namespace tofsim::config {
+
+/// rays: {file, resolution: [width, height] (default [N, 1]), last_leg_counts}.
+/// `file` receives the ray file's absolute path.
+capture::RayListImager parseRays(const ConfigNode& rays, std::string& file);
+
+}  // namespace tofsim::config
