@@ -121,7 +121,7 @@ TEST_F(ResponseTableConfigTest, BadTablesAreLocatedErrors) {
   EXPECT_NE(errorOf("{file: neg.npy}").find("neg.npy row 1: weight -1 is negative (column 2"),
             std::string::npos);
   write("bad.npy", "not an npy");
-  EXPECT_NE(errorOf("{file: bad.npy}").find("a scattering delay table .npy is a float32 (n, 2)"),
+  EXPECT_NE(errorOf("{file: bad.npy}").find("a scattering delay table .npy is a float32 or float64 (n, 2)"),
             std::string::npos);
   EXPECT_NE(errorOf("{file: neg.csv, delay_unit: fs}").find("must be s, ms, us, ns or ps"),
             std::string::npos);
