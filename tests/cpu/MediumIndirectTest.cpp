@@ -13,6 +13,7 @@
 #include "CpuIsm.h"
 #include "GatherKernel.h"
 #include "support/AnalyticScenes.h"
+#include "support/MediumPoints.h"
 #include "tofsim/capture/Imager.h"
 #include "tofsim/capture/VolumeCollector.h"
 #include "tofsim/cpu/CpuBackend.h"
@@ -50,18 +51,8 @@ ir::Vpl pointVpl(const glm::vec3& at, const glm::vec3& normal, const glm::vec3& 
 // ignores: physics::receiverNormal).
 ir::SurfaceImage mediumSamples(const std::vector<glm::vec3>& points, const glm::vec3& albedo,
                                const glm::vec3& normal = glm::vec3(0.0f)) {
-  ir::SurfaceImage s;
-  s.width = static_cast<int32_t>(points.size());
-  s.height = 1;
-  for (std::size_t p = 0; p <= points.size(); ++p) s.firstSample.push_back(p);
-  s.side.assign(points.size(), 1);
-  for (const glm::vec3& x : points) {
-    s.position.emplace_back(x, 1.0f);
-    s.normal.emplace_back(normal, 0.0f);
-    s.vertex.push_back(physics::scatterVertex(physics::VERTEX_MEDIUM, albedo, 0.0f, 1.0f));
-    s.geometric.emplace_back(0.0f);
-  }
-  return s;
+  return test::givenSamples(points, std::vector<int>(points.size(), physics::VERTEX_MEDIUM),
+                            albedo, normal, glm::vec3(0.0f));
 }
 
 TEST(MediumIndirectTest, AVplLightsMediumPointsWithNoReceiverCosineInTheirBins) {

@@ -11,7 +11,7 @@
 #include <cmath>
 #include <memory>
 
-#include "support/AnalyticScenes.h"
+#include "support/MediumPoints.h"
 #include "tofsim/capture/Imager.h"
 #include "tofsim/capture/VolumeCollector.h"
 #include "tofsim/cpu/CpuBackend.h"
@@ -24,46 +24,8 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-// Points below, beside and above a point light, seen from `origin`; a quad
-// far below stands for the scene (nothing between the light and a point).
-struct MediumPoints {
-  scene::Scene scene;
-  capture::RenderJob job;
-  glm::vec3 albedo{0.6f, 0.5f, 0.4f};
-  glm::vec3 origin{0.0f, -2.0f, 0.0f};
-  std::vector<glm::vec3> points{{0.0f, 0.0f, 0.0f}, {1.0f, 0.0f, 1.0f}, {0.0f, 0.0f, 2.5f}};
-
-  MediumPoints() {
-    test::addQuad(scene, glm::vec3(0.0f, 0.0f, -5.0f), glm::vec3(0, 0, 1), 1.0f, glm::vec3(0.5f));
-    job.scene = &scene;
-    capture::PointSetImager imager;
-    imager.width = static_cast<int32_t>(points.size());
-    imager.points_world = points;
-    imager.origin_world = origin;
-    job.imager = imager;
-    job.light.position_world = {0.0f, 0.0f, 1.0f};
-    job.light.intensity_W_per_sr = glm::vec3(2.0f, 1.0f, 0.5f);
-    job.settings.indirect.enabled = false;
-    job.settings.pixel_footprint = false;
-    job.settings.time = TimeAxis{0.0, 0.005 / kSpeedOfLight_m_per_s, 2000};
-  }
-
-  // One sample per point: vertices of `model`, normal n (0 for a medium).
-  ir::SurfaceImage samples(int model, const glm::vec3& n) const {
-    ir::SurfaceImage s;
-    s.width = static_cast<int32_t>(points.size());
-    s.height = 1;
-    for (std::size_t p = 0; p <= points.size(); ++p) s.firstSample.push_back(p);
-    s.side.assign(points.size(), 1);
-    for (const glm::vec3& x : points) {
-      s.position.emplace_back(x, 1.0f);
-      s.normal.emplace_back(n, 0.0f);
-      s.vertex.push_back(physics::scatterVertex(model, albedo, 0.0f, 1.0f));
-      s.geometric.push_back(n);
-    }
-    return s;
-  }
-
+// The points and their samples (support/MediumPoints.h), rendered on the CPU.
+struct MediumPoints : test::MediumPoints {
   capture::VolumeCollector render(const ir::SurfaceImage& given) const {
     capture::VolumeCollector volume(static_cast<int32_t>(points.size()), 1, job.settings.time,
                                     capture::kChannels);

@@ -15,6 +15,26 @@
 
 namespace tofsim::test {
 
+// Given samples (IrBackend::setSurfaces), one per point of an N x 1 image:
+// point p's vertex of models[p] with `albedo`, shading normal n and
+// triangle normal `geometric` (0 and anything for a medium point).
+inline ir::SurfaceImage givenSamples(const std::vector<glm::vec3>& points,
+                                     const std::vector<int>& models, const glm::vec3& albedo,
+                                     const glm::vec3& n, const glm::vec3& geometric) {
+  ir::SurfaceImage s;
+  s.width = static_cast<int32_t>(points.size());
+  s.height = 1;
+  for (std::size_t p = 0; p <= points.size(); ++p) s.firstSample.push_back(p);
+  s.side.assign(points.size(), 1);
+  for (std::size_t p = 0; p < points.size(); ++p) {
+    s.position.emplace_back(points[p], 1.0f);
+    s.normal.emplace_back(n, 0.0f);
+    s.vertex.push_back(physics::scatterVertex(models[p], albedo, 0.0f, 1.0f));
+    s.geometric.push_back(geometric);
+  }
+  return s;
+}
+
 struct MediumPoints {
   scene::Scene scene;
   capture::RenderJob job;
@@ -41,18 +61,7 @@ struct MediumPoints {
   // normal n (0 for a medium).
   ir::SurfaceImage samples(int model, const glm::vec3& n, std::vector<int> models = {}) const {
     if (models.empty()) models.assign(points.size(), model);
-    ir::SurfaceImage s;
-    s.width = static_cast<int32_t>(points.size());
-    s.height = 1;
-    for (std::size_t p = 0; p <= points.size(); ++p) s.firstSample.push_back(p);
-    s.side.assign(points.size(), 1);
-    for (std::size_t p = 0; p < points.size(); ++p) {
-      s.position.emplace_back(points[p], 1.0f);
-      s.normal.emplace_back(n, 0.0f);
-      s.vertex.push_back(physics::scatterVertex(models[p], albedo, 0.0f, 1.0f));
-      s.geometric.push_back(n);
-    }
-    return s;
+    return givenSamples(points, models, albedo, n, n);
   }
 };
 
