@@ -39,21 +39,30 @@ class GivenSamplesGlBackend : public GlBackend {
   ir::SurfaceImage given_;
 };
 
-TransientVolume render(const test::MediumPoints& m, std::unique_ptr<ir::IrBackend> backend) {
+capture::VolumeCollector render(const test::MediumPoints& m,
+                                std::unique_ptr<ir::IrBackend> backend) {
   capture::VolumeCollector volume(static_cast<int32_t>(m.points.size()), 1, m.job.settings.time,
                                   capture::kChannels);
   ir::IrRenderer(std::move(backend)).render(m.job, volume);
-  return volume.total();
+  return volume;
 }
 
-TransientVolume renderCpu(const test::MediumPoints& m, const ir::SurfaceImage& given) {
+capture::VolumeCollector collectCpu(const test::MediumPoints& m, const ir::SurfaceImage& given) {
   auto cpu = std::make_unique<cpu::CpuBackend>(cpu::CpuBackendOptions{2, true});
   cpu->setSurfaces(std::make_unique<ir::SurfaceImage>(given), nullptr);
   return render(m, std::move(cpu));
 }
 
-TransientVolume renderGl(const test::MediumPoints& m, const ir::SurfaceImage& given) {
+capture::VolumeCollector collectGl(const test::MediumPoints& m, const ir::SurfaceImage& given) {
   return render(m, std::make_unique<GivenSamplesGlBackend>(given));
+}
+
+TransientVolume renderCpu(const test::MediumPoints& m, const ir::SurfaceImage& given) {
+  return collectCpu(m, given).total();
+}
+
+TransientVolume renderGl(const test::MediumPoints& m, const ir::SurfaceImage& given) {
+  return collectGl(m, given).total();
 }
 
 // Every bin of both volumes agrees to float rounding (relative 1e-5 of the
@@ -107,6 +116,32 @@ TEST(MediumPointGLTest, MediumAndSurfaceSamplesInOneImageEachKeepTheirModel) {
   double surface = 0.0;
   for (int t = 0; t < gl.bins(); ++t) surface += gl.at(0, 0, t, 0);
   EXPECT_NEAR(surface, m.albedo[0] / kPi * m.job.light.intensity_W_per_sr[0], 1e-5);
+}
+
+TEST(MediumPointGLTest, MediumPointsReceiveTheVplsLightOnGlAsOnTheCpu) {
+  // The quad below is lit and its VPLs face up at the points: GL's indirect
+  // gather takes a medium point's receiver cosine as 1 (receiverCosine), as
+  // the CPU's does. Read as a surface with a zero normal it would get nothing.
+  test::MediumPoints m;
+  m.job.settings.indirect.enabled = true;
+  m.job.settings.indirect.visibility = capture::Visibility::Exact;
+  m.job.settings.time.bins = 4000;  // the VPLs' paths reach about 16 m
+  const ir::SurfaceImage given = m.samples(physics::VERTEX_MEDIUM, glm::vec3(0.0f));
+  const TransientVolume gl = collectGl(m, given).indirect;
+  const TransientVolume cpu = collectCpu(m, given).indirect;
+  for (int32_t p = 0; p < static_cast<int32_t>(m.points.size()); ++p) {
+    double onGl = 0.0, onCpu = 0.0;
+    for (int t = 0; t < gl.bins(); ++t) {
+      for (int c = 0; c < 3; ++c) {
+        onGl += gl.at(0, p, t, c);
+        onCpu += cpu.at(0, p, t, c);
+      }
+    }
+    EXPECT_GT(onCpu, 0.0) << "point " << p;
+    // The backends make their VPLs each their own way (GL's RSM, the CPU's
+    // traced one), so their sums agree to the VPLs' sampling, not bit for bit.
+    EXPECT_NEAR(onGl, onCpu, 0.02 * onCpu) << "point " << p;
+  }
 }
 
 }  // namespace
