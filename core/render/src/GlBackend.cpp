@@ -8,6 +8,7 @@
 #include "LightShadowMap.h"
 #include "LightUniforms.h"
 #include "PixelFootprint.h"
+#include "SampleBuffers.h"
 #include "SurfaceMaps.h"
 #include "Vpls.h"
 #include "tofsim/gl/Buffer.h"
@@ -41,34 +42,6 @@ struct ViewBounds {
   }
   glm::vec3 lo, hi;
 };
-
-// A lens camera's ray steps, pixel by pixel (PIXEL_RAY_STEPS): the same
-// floats the CPU backend's PixelSteps takes.
-gl::Buffer pixelRayStepsBuffer(const Camera& camera) {
-  std::vector<glm::vec4> steps;
-  steps.reserve(static_cast<std::size_t>(camera.width) * camera.height * 2);
-  for (int32_t y = 0; y < camera.height; ++y) {
-    for (int32_t x = 0; x < camera.width; ++x) {
-      const Camera::RaySteps s = camera.rayStepsAt(x, y);
-      steps.emplace_back(s.alongX, 0.0f);
-      steps.emplace_back(s.alongY, 0.0f);
-    }
-  }
-  return gl::Buffer(steps.size() * sizeof(glm::vec4), steps.data());
-}
-
-// The given samples' own camera ends (xyz) and lens paths (w), in the
-// samples' order, then the pixel centres' (camera_end.glsl).
-gl::Buffer sampleCameraEndsBuffer(const ir::SurfaceImage& samples, const ir::SurfaceImage* centres) {
-  TOFSIM_CHECK_MSG(samples.aperture.size() == samples.size(),
-                   "rays with their own origins need each sample's camera end");
-  std::vector<glm::vec4> ends = samples.aperture;
-  if (centres != nullptr) {
-    TOFSIM_CHECK(centres->aperture.size() == centres->size());
-    ends.insert(ends.end(), centres->aperture.begin(), centres->aperture.end());
-  }
-  return gl::Buffer(ends.size() * sizeof(glm::vec4), ends.data());
-}
 
 // Uniforms shared by the direct and indirect gathers: image, time axis,
 // imager (its viewpoint, whether its last leg counts, its footprint steps).
@@ -198,9 +171,10 @@ struct GlBackend::Passes {
   const GpuScene& gpuScene;  ///< the backend's (SceneObjects)
   int32_t samplesPerSide;    ///< render.pixel_samples
   SurfaceMaps gbuffer;       ///< the samples': (width N) x (height N), surface_samples.glsl
-  /// The vertices the G-buffers' texels index: the scene's materials'
-  /// (ir::materialVertices), then given samples' (appendVertices); and
-  /// whether they all have the render's model (the gathers' SCATTER_MODEL).
+  /// The vertices the G-buffers' texels index while they are made: the
+  /// scene's materials' (ir::materialVertices), then given samples'
+  /// (appendVertices), uploaded to vertexTable by prepareSurfaces; and whether
+  /// they all have the render's model (the gathers' SCATTER_MODEL).
   std::vector<physics::ScatterVertex> vertices;
   gl::Buffer vertexTable;
   bool foldModel = true;
@@ -285,6 +259,9 @@ ir::CentreSurfaces GlBackend::prepareSurfaces(const RenderJob& job) {
   if (p.vertices.empty()) p.vertices.push_back(physics::ScatterVertex{});
   p.vertexTable = gl::Buffer(p.vertices.size() * sizeof(physics::ScatterVertex),
                              p.vertices.data(), 0);
+  // The table lives on the device from here: given samples add one entry
+  // each, so their host copy would otherwise stay for the whole render.
+  p.vertices = {};
   if (const Camera* camera = cameraOf(job.imager);
       camera && camera->lens && job.settings.pixel_footprint) {
     p.pixelRaySteps = pixelRayStepsBuffer(*camera);
