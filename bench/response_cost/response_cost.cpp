@@ -42,7 +42,7 @@ double renderSeconds(const capture::RenderJob& job, int threads,
   capture::VolumeCollector volume(capture::imageWidth(job.imager), capture::imageHeight(job.imager),
                                   job.settings.time, capture::kChannels);
   auto backend = std::make_unique<cpu::CpuBackend>(cpu::CpuBackendOptions{threads, true});
-  backend->setResponseKernels(delayed);
+  backend->setResponseClasses(physics::ResponseClassTable::build(delayed, delayed.empty() ? 0 : 1));
   const double start = cpuSeconds();
   ir::IrRenderer(std::move(backend)).render(job, volume);
   const double seconds = cpuSeconds() - start;

@@ -75,7 +75,9 @@ TEST(ResponseClassesTest, ClassesAndPixelsStayApartAndTheBuffersEndZero) {
   for (int32_t n = 0; n < kBins; ++n) {
     mass += pixel0[n * 3];
     mean += pixel0[n * 3] * (n + 0.5);
-    if (n < 36) EXPECT_EQ(pixel0[n * 3], 0.0f) << n;
+    if (n < 36) {
+      EXPECT_EQ(pixel0[n * 3], 0.0f) << n;
+    }
   }
   EXPECT_NEAR(mass, 1.0, 1e-6);
   EXPECT_NEAR(mean / mass, 50.0 + 30.0, 1e-3);

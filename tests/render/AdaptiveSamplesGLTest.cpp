@@ -42,6 +42,9 @@ class HandMaskedBackend : public ir::IrBackend {
   void setScene(const scene::Scene& scene, const rays::RayScene* rays) override {
     gl_.setScene(scene, rays);
   }
+  void setResponseClasses(const physics::ResponseClassTable& classes) override {
+    gl_.setResponseClasses(classes);
+  }
   void setSurfaces(std::unique_ptr<ir::SurfaceImage> samples,
                    std::unique_ptr<ir::SurfaceImage> centres) override {
     gl_.setSurfaces(std::move(samples), std::move(centres));

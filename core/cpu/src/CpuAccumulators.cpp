@@ -35,12 +35,9 @@ void CpuBackend::allocate(std::size_t pixelsPerSegment, std::size_t vplsPerBatch
   } else if (!accumulatorsZero_) {
     clearAccumulators(pixelsPerSegment);
   }
-  if (!responseKernels_.empty() || !responses_->empty()) {
-    std::vector<physics::ResponseTaps> taps;
-    for (const physics::ResponseKernel& k : responseKernels_) {
-      taps.push_back(physics::responseTaps(k, job_.settings.time.bin_width_s));
-    }
-    responses_->configure(std::move(taps), pixelsPerSegment, job_.settings.time.bins);
+  if (responseClasses_.delayed() || !responses_->empty()) {
+    responses_->configure(physics::singleStages(responseClasses_, job_.settings.time.bin_width_s),
+                          pixelsPerSegment, job_.settings.time.bins);
   }
   accumulatorsZero_ = true;
   outside_.assign(pixelsPerSegment, physics::OffAxisSums{});
@@ -56,8 +53,8 @@ double* CpuBackend::footprintOf(std::size_t i, const glm::vec3& kernel) {
   return footprint_.data() + i * static_cast<std::size_t>(bins) * kChannels;
 }
 
-void CpuBackend::setResponseKernels(const std::vector<physics::ResponseKernel>& delayed) {
-  responseKernels_ = delayed;
+void CpuBackend::setResponseClasses(const physics::ResponseClassTable& classes) {
+  responseClasses_ = classes;
 }
 
 void CpuBackend::integratePixel(std::size_t i, float* histogram) {

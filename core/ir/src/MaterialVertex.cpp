@@ -1,15 +1,39 @@
 #include "tofsim/ir/MaterialVertex.h"
 
+#include <algorithm>
+
 namespace tofsim::ir {
 
-physics::ScatterVertex materialVertex(const scene::Material& m, int model) {
-  return physics::scatterVertex(model, m.albedo, m.metallic, m.roughness);
+MaterialResponses materialResponses(const scene::Scene& scene) {
+  MaterialResponses r;
+  r.baseOfMaterial.reserve(scene.materials.size());
+  for (const scene::Material& m : scene.materials) {
+    if (!m.scatteringDelay) {
+      r.baseOfMaterial.push_back(0);
+      continue;
+    }
+    // Materials with equal delays share a base kernel (fewer classes).
+    const auto found = std::find(r.kernels.begin(), r.kernels.end(), *m.scatteringDelay);
+    if (found == r.kernels.end()) r.kernels.push_back(*m.scatteringDelay);
+    const auto index = std::find(r.kernels.begin(), r.kernels.end(), *m.scatteringDelay);
+    r.baseOfMaterial.push_back(static_cast<int32_t>(index - r.kernels.begin()) + 1);
+  }
+  return r;
+}
+
+physics::ScatterVertex materialVertex(const scene::Material& m, int model, int32_t response) {
+  physics::ScatterVertex v = physics::scatterVertex(model, m.albedo, m.metallic, m.roughness);
+  v.response = response;
+  return v;
 }
 
 std::vector<physics::ScatterVertex> materialVertices(const scene::Scene& scene, int model) {
+  const MaterialResponses responses = materialResponses(scene);
   std::vector<physics::ScatterVertex> vertices;
   vertices.reserve(scene.materials.size());
-  for (const scene::Material& m : scene.materials) vertices.push_back(materialVertex(m, model));
+  for (std::size_t i = 0; i < scene.materials.size(); ++i) {
+    vertices.push_back(materialVertex(scene.materials[i], model, responses.baseOfMaterial[i]));
+  }
   return vertices;
 }
 

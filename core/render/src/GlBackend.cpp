@@ -391,18 +391,16 @@ void GlBackend::allocate(std::size_t pixelsPerSegment, std::size_t vplsPerBatch)
   p.outside.resize(pixelsPerSegment * 2);
   // The plan counted the difference buffer (capture::PixelBuffers::footprintBuffers).
   p.footprint.reset();
-  if (p.job.settings.pixel_footprint || !responseKernels_.empty()) {
-    std::vector<physics::ResponseTaps> delayed;
-    for (const physics::ResponseKernel& k : responseKernels_) {
-      delayed.push_back(physics::responseTaps(k, p.job.settings.time.bin_width_s));
-    }
+  if (p.job.settings.pixel_footprint || responseClasses_.delayed()) {
+    const std::vector<physics::ResponseTaps> delayed =
+        physics::singleStages(responseClasses_, p.job.settings.time.bin_width_s);
     p.footprint =
         std::make_unique<PixelFootprint>(pixelsPerSegment, p.job.settings.time.bins, delayed);
   }
 }
 
-void GlBackend::setResponseKernels(const std::vector<physics::ResponseKernel>& delayed) {
-  responseKernels_ = delayed;
+void GlBackend::setResponseClasses(const physics::ResponseClassTable& classes) {
+  responseClasses_ = classes;
 }
 
 void GlBackend::buildVisibility(std::size_t firstVpl, std::size_t count) {

@@ -88,10 +88,9 @@ class CpuBackend : public ir::IrBackend {
 
   int threads() const { return threads_; }
 
-  /// The delayed response classes' kernels (core/physics/temporal_response.md):
-  /// class c >= 1 is delayed[c - 1], class 0 the instant light. Taken at the
-  /// next allocate; empty (the default) keeps only the instant class.
-  void setResponseKernels(const std::vector<physics::ResponseKernel>& delayed);
+  /// The response classes (core/physics/temporal_response.md), taken at the
+  /// next allocate; the default table keeps only the instant class.
+  void setResponseClasses(const physics::ResponseClassTable& classes) override;
 
  private:
   /// prepareSurfaces with setSurfaces' samples.
@@ -198,7 +197,7 @@ class CpuBackend : public ir::IrBackend {
   std::vector<FootprintBins> footprintBins_;
   /// The delayed classes' kernels and buffers (empty: none), integrated into
   /// a pixel's histogram by integratePixel.
-  std::vector<physics::ResponseKernel> responseKernels_;
+  physics::ResponseClassTable responseClasses_;  ///< setResponseClasses'
   std::unique_ptr<ResponseClasses> responses_;
   std::size_t firstPixel_ = 0, pixelCount_ = 0, pixelsPerSegment_ = 0;
   float sceneScale_m_ = 1.0f;

@@ -41,6 +41,7 @@
 
 #include "tofsim/capture/IrCapabilities.h"
 #include "tofsim/capture/RenderJob.h"
+#include "tofsim/physics/ResponseClassTable.h"
 #include "tofsim/physics/ScatterVertex.h"
 #include "tofsim/volume/TimeAxis.h"
 
@@ -127,6 +128,12 @@ class IrBackend {
   /// null otherwise. Both must outlive the renders that use them; a new call
   /// replaces them.
   virtual void setScene(const scene::Scene& scene, const rays::RayScene* rays) = 0;
+  /// The response classes of the following renders (issue 41; the driver
+  /// builds them from the scene's materials, ir::materialResponses): class c
+  /// >= 1 gets its own buffer per pixel, filtered by the cascade of its
+  /// members' kernels at the integrate step. None (the default table): every
+  /// light instant, nothing allocated.
+  virtual void setResponseClasses(const physics::ResponseClassTable& classes) = 0;
   /// One capture of the scene set last: camera G-buffer of every pixel
   /// (every sub-pixel sample), light shadow map. Returns the pixel centres'
   /// G-buffer: the driver derives the depth image, the DirectLightView and

@@ -7,18 +7,31 @@
 // and nowhere else; what the material's textures give is a per-point step
 // (physics::texturedVertex).
 
+#include <cstdint>
 #include <vector>
 
+#include "tofsim/physics/ResponseClassTable.h"
 #include "tofsim/physics/ScatterVertex.h"
 #include "tofsim/scene/Scene.h"
 
 namespace tofsim::ir {
 
-/// The vertex of material `m` under model `model` (physics::VERTEX_*:
-/// vertexModelOf render.materials), before its textures.
-physics::ScatterVertex materialVertex(const scene::Material& m, int model);
+/// The scene's temporal responses: its distinct scattering delays (base
+/// kernels 1..kernels.size(), physics::ResponseClassTable) in order of first
+/// use by Scene::materials, and each material's base id (0: instant).
+struct MaterialResponses {
+  std::vector<physics::ResponseKernel> kernels;
+  std::vector<int32_t> baseOfMaterial;
+};
+MaterialResponses materialResponses(const scene::Scene& scene);
 
-/// materialVertex of each of the scene's materials, in Scene::materials order.
+/// The vertex of material `m` under model `model` (physics::VERTEX_*:
+/// vertexModelOf render.materials), before its textures, with base kernel
+/// `response` (materialResponses).
+physics::ScatterVertex materialVertex(const scene::Material& m, int model, int32_t response = 0);
+
+/// materialVertex of each of the scene's materials, in Scene::materials order,
+/// with their base kernels of materialResponses.
 std::vector<physics::ScatterVertex> materialVertices(const scene::Scene& scene, int model);
 
 }  // namespace tofsim::ir

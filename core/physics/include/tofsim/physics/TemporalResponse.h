@@ -42,6 +42,12 @@ struct ResponseKernel {
   double sigma_s = 0.0;      ///< Gaussian: > 0
   std::vector<double> tableDelay_s;  ///< Table: >= 2 points, ascending, the first >= 0
   std::vector<double> tableWeight;   ///< Table: >= 0 at each point, a positive area
+  /// Re-emission (fluorescence's Stokes shift): the delayed share's light
+  /// absorbed in channel j comes back as column j (out = reemission * in),
+  /// each column summing to at most 1. Identity: no change of channel.
+  glm::dmat3 reemission{1.0};
+
+  bool operator==(const ResponseKernel&) const = default;
 };
 
 /// Most FIR taps a class may have (its cost is taps x bins per pixel): a

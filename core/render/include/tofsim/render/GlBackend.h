@@ -51,10 +51,9 @@ class GlBackend : public ir::IrBackend {
   void takeIndirect(float* indirect) override;
   void readSegment(float* direct, float* indirect, AxisLoss& offAxis) override;
 
-  /// The delayed response classes' kernels (core/physics/temporal_response.md):
-  /// class c >= 1 is delayed[c - 1], class 0 the instant light. Taken at the
-  /// next allocate; empty (the default) keeps only the instant class.
-  void setResponseKernels(const std::vector<physics::ResponseKernel>& delayed);
+  /// The response classes (core/physics/temporal_response.md), taken at the
+  /// next allocate; the default table keeps only the instant class.
+  void setResponseClasses(const physics::ResponseClassTable& classes) override;
 
  private:
   struct SceneObjects;  // the scene's GL objects, kept across renders (GlBackend.cpp)
@@ -71,7 +70,7 @@ class GlBackend : public ir::IrBackend {
   std::unique_ptr<SceneObjects> sceneObjects_;
   std::unique_ptr<Passes> passes_;
   std::unique_ptr<ir::SurfaceImage> givenSamples_, givenCentres_;  ///< setSurfaces', until used
-  std::vector<physics::ResponseKernel> responseKernels_;  ///< setResponseKernels'
+  physics::ResponseClassTable responseClasses_;  ///< setResponseClasses'
 };
 
 }  // namespace tofsim::render

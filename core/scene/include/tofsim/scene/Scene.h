@@ -5,8 +5,11 @@
 
 #include <cstdint>
 #include <glm/glm.hpp>
+#include <optional>
 #include <string>
 #include <vector>
+
+#include "tofsim/physics/TemporalResponse.h"
 
 namespace tofsim::scene {
 
@@ -32,6 +35,9 @@ struct Material {
   float metallic = 0.0f;                  ///< in [0, 1]
   float roughness = 1.0f;                 ///< perceptual roughness in [0, 1]; alpha = roughness^2
   int32_t metallicRoughnessTexture = -1;  ///< index into Scene::textures (B metal, G rough), or -1
+  /// Its temporal response (issue 41's `scattering_delay`: the config's
+  /// `materials:` entry, else the glTF material's extras); none: instant.
+  std::optional<physics::ResponseKernel> scatteringDelay;
 };
 
 /// One triangle list with one material, in world space.

@@ -1,0 +1,63 @@
+// The response classes of a render (ResponseClassTable.h): every multiset of
+// base kernels up to the depth, once, and composition as multiset union.
+#include <gtest/gtest.h>
+
+#include <set>
+
+#include "tofsim/physics/ResponseClassTable.h"
+
+namespace tofsim::physics {
+namespace {
+
+std::vector<ResponseKernel> kernels(int count) {
+  std::vector<ResponseKernel> k(static_cast<std::size_t>(count));
+  for (int i = 0; i < count; ++i) k[static_cast<std::size_t>(i)].lifetime_s = 1e-9 * (i + 1);
+  return k;
+}
+
+TEST(ResponseClassTableTest, HoldsEveryMultisetUpToTheDepthOnce) {
+  // Two kernels, paths of up to 3 delayed vertices: C(2 + 3, 3) = 10 classes.
+  const ResponseClassTable t = ResponseClassTable::build(kernels(2), 3);
+  ASSERT_EQ(t.classCount(), 10u);
+  std::set<std::vector<uint32_t>> seen(t.members.begin(), t.members.end());
+  EXPECT_EQ(seen.size(), 10u);
+  EXPECT_TRUE(t.members[0].empty());
+  for (const auto& m : t.members) EXPECT_TRUE(std::is_sorted(m.begin(), m.end()));
+}
+
+TEST(ResponseClassTableTest, ComposesAsMultisetUnion) {
+  const ResponseClassTable t = ResponseClassTable::build(kernels(2), 3);
+  for (uint32_t c = 0; c < t.classCount(); ++c) {
+    EXPECT_EQ(t.then(c, 0), c);  // an instant vertex keeps the class
+    for (uint32_t k = 1; k <= 2; ++k) {
+      const uint32_t next = t.then(c, k);
+      if (t.members[c].size() == 3) {
+        EXPECT_EQ(next, ResponseClassTable::kNoClass);
+        continue;
+      }
+      std::vector<uint32_t> expected = t.members[c];
+      expected.push_back(k);
+      std::sort(expected.begin(), expected.end());
+      ASSERT_NE(next, ResponseClassTable::kNoClass);
+      EXPECT_EQ(t.members[next], expected);
+    }
+  }
+  // Order along the path does not matter: {1} then 2 is {2} then 1.
+  EXPECT_EQ(t.then(t.single(1), 2), t.then(t.single(2), 1));
+}
+
+TEST(ResponseClassTableTest, NoKernelsMeansOnlyTheInstantClass) {
+  const ResponseClassTable t = ResponseClassTable::build({}, 4);
+  EXPECT_EQ(t.classCount(), 1u);
+  EXPECT_FALSE(t.delayed());
+  EXPECT_EQ(t.then(0, 0), 0u);
+}
+
+TEST(ResponseClassTableTest, RefusesTooManyClasses) {
+  // 6 kernels at depth 3: C(9, 3) = 84 > 64.
+  EXPECT_THROW(ResponseClassTable::build(kernels(6), 3), std::invalid_argument);
+  EXPECT_NO_THROW(ResponseClassTable::build(kernels(6), 2));  // C(8, 2) = 28
+}
+
+}  // namespace
+}  // namespace tofsim::physics
