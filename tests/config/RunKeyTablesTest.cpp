@@ -1,5 +1,5 @@
 // The run keys declared in tables (apps/config/src RunFields.h, TimeFields.h,
-// LightFields.h, OutputFields.h): the documented default of each, written
+// LightFields.h, OutputFields.h, CameraFields.h): the documented default of each, written
 // into a config, gives the effective config of leaving it out (the doc rows,
 // the loader and the writer read one declaration), and a value out of a
 // table's range is a located error naming the key.
@@ -97,6 +97,33 @@ TEST_F(RunKeyTablesTest, OutOfRangeValuesAreLocatedErrors) {
     EXPECT_NE(what.find(c.key), std::string::npos) << what;
     EXPECT_NE(what.find(c.message), std::string::npos) << what;
   }
+}
+
+// camera's table (CameraFields.h): the documented default of each camera key
+// that stands alone gives the effective config of leaving it out
+// (focus_distance and aperture_samples need an aperture; lens and psf are
+// sections of their own).
+TEST_F(RunKeyTablesTest, CameraDocumentedDefaultsReadBackAsTheDefaults) {
+  const auto withCamera = [&](const std::string& line) {
+    std::ofstream(dir_ / "scene.gltf") << "{}";
+    std::ofstream(dir_ / "c.yaml") << "scene: scene.gltf\ncamera:\n  " << (line.empty() ? "{}" : line)
+                                   << "\nlight: {}\ntime: {}\n";
+    return effectiveConfigYaml(loadRunConfig(dir_ / "c.yaml"));
+  };
+  const std::string defaults = withCamera("");
+  int checked = 0;
+  for (const ConfigKey& key : runConfigKeys()) {
+    const std::string path = key.path, type = key.type;
+    if (path.rfind("camera.", 0) != 0 || type == "mapping") continue;
+    const std::string name = path.substr(7);
+    if (name.find('.') != std::string::npos) continue;
+    if (name == "focus_distance" || name == "aperture_samples") continue;
+    SCOPED_TRACE(path + ": " + key.defaultValue);
+    EXPECT_EQ(withCamera(name + ": " + key.defaultValue), defaults)
+        << "the documented default of `" << path << "` is not the one the loader takes";
+    ++checked;
+  }
+  EXPECT_EQ(checked, 8);
 }
 
 }  // namespace

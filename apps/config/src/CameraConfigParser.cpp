@@ -5,11 +5,12 @@
 #include <string>
 #include <vector>
 
+#include "CameraFields.h"
+#include "FieldParse.h"
 #include "LensConfig.h"
 #include "PsfConfig.h"
 #include "ShortestNumber.h"
 #include "SpadTableFile.h"
-#include "Vec3Key.h"
 
 namespace tofsim::config {
 
@@ -63,16 +64,14 @@ capture::Vignetting parseVignetting(const ConfigNode& node, const capture::Camer
   return v;
 }
 
-// camera.aperture, focus_distance, aperture_samples: thin-lens defocus
-// (capture/ThinLens.h). The last two mean nothing without an aperture, so
-// giving them alone is an error rather than silently ignored.
-void parseAperture(const ConfigNode& node, capture::Camera& c) {
-  const double aperture = node.getLength_m("aperture", 0.0);
-  if (!(aperture >= 0.0 && std::isfinite(aperture))) {
-    node.failKey("aperture",
-                 "must be a diameter >= 0 m (0: a pinhole; got " + std::to_string(aperture) + ")");
+// camera.aperture, focus_distance, aperture_samples (read by the table):
+// thin-lens defocus (capture/ThinLens.h). The last two mean nothing without
+// an aperture, so giving them alone is an error rather than silently ignored.
+void checkAperture(const ConfigNode& node, const capture::Camera& c) {
+  if (!(c.aperture_m >= 0.0f && std::isfinite(c.aperture_m))) {
+    node.failKey("aperture", "must be a diameter >= 0 m (0: a pinhole; got " +
+                                 std::to_string(c.aperture_m) + ")");
   }
-  c.aperture_m = static_cast<float>(aperture);
   if (!c.defocused()) {
     for (const char* key : {"focus_distance", "aperture_samples"}) {
       if (node.has(key)) {
@@ -84,40 +83,22 @@ void parseAperture(const ConfigNode& node, capture::Camera& c) {
   if (!node.has("focus_distance")) {
     node.failKey("aperture", "an aperture needs camera.focus_distance, the depth in focus (m)");
   }
-  const double focus = node.getLength_m("focus_distance", 0.0);
-  if (!(focus > 0.0 && std::isfinite(focus))) {
-    node.failKey("focus_distance",
-                 "must be > 0 m with an aperture (got " + std::to_string(focus) + ")");
+  if (!(c.focus_distance_m > 0.0f && std::isfinite(c.focus_distance_m))) {
+    node.failKey("focus_distance", "must be > 0 m with an aperture (got " +
+                                       std::to_string(c.focus_distance_m) + ")");
   }
-  c.focus_distance_m = static_cast<float>(focus);
-  const long long samples = node.getInt("aperture_samples", c.aperture_samples);
-  if (samples < 2 || samples > 4096) {
+  if (c.aperture_samples < 2 || c.aperture_samples > 4096) {
     node.failKey("aperture_samples", "must be in [2, 4096] with an aperture (got " +
-                                         std::to_string(samples) +
+                                         std::to_string(c.aperture_samples) +
                                          "; one point is a pinhole moved off the axis)");
   }
-  c.aperture_samples = static_cast<int32_t>(samples);
 }
 
-}  // namespace
-
-void parseCamera(const ConfigNode& node, CameraConfig& out) {
-  out.gltf_camera = node.getString("gltf_camera", "");
+// camera.resolution: two integers, by default the calibration's image size;
+// a lens's intrinsics are checked against the image it is for.
+void parseResolution(const ConfigNode& node, const std::optional<ParsedLens>& lens,
+                     CameraConfig& out) {
   capture::Camera& c = out.camera;
-  c.position_world = vec3Of(node, "position", c.position_world);
-  c.look_at_world = vec3Of(node, "look_at", c.look_at_world);
-  c.up_world = vec3Of(node, "up", c.up_world);
-  std::optional<ParsedLens> lens;
-  if (node.has("lens")) {
-    if (node.has("fov_y")) {
-      node.failKey("fov_y", "a lens's camera matrix sets the field of view: give fov_y or lens");
-    }
-    lens = parseLens(node);
-  }
-  c.fov_y_deg = static_cast<float>(node.getAngle_deg("fov_y", c.fov_y_deg));
-  if (!(c.fov_y_deg > 0.0f && c.fov_y_deg < 180.0f)) {
-    node.failKey("fov_y", "must be in (0, 180) degrees");
-  }
   std::vector<double> defaultResolution = {64.0, 64.0};
   if (lens && lens->image_size)
     defaultResolution = {double(lens->image_size->x), double(lens->image_size->y)};
@@ -129,27 +110,49 @@ void parseCamera(const ConfigNode& node, CameraConfig& out) {
   }
   c.width = static_cast<int32_t>(res[0]);
   c.height = static_cast<int32_t>(res[1]);
-  if (lens) {
-    // A calibration holds for the image it was made at: another resolution
-    // would need the camera matrix scaled, which is the user's to state.
-    if (lens->image_size && *lens->image_size != glm::ivec2(c.width, c.height)) {
-      node.failKey("resolution", "differs from the calibration's image size " +
-                                     std::to_string(lens->image_size->x) + " x " +
-                                     std::to_string(lens->image_size->y) + " (" +
-                                     lens->calibration_file + ")");
-    }
-    checkIntrinsics(*lens, c.width, c.height);
-    try {
-      capture::checkLensInvertible(lens->lens, c.width, c.height);
-    } catch (const InputError& e) {
-      node.failKey("lens", e.what());
-    }
-    c.lens = lens->lens;
-    out.lens_calibration = lens->calibration_file;
+  if (!lens) return;
+  // A calibration holds for the image it was made at: another resolution
+  // would need the camera matrix scaled, which is the user's to state.
+  if (lens->image_size && *lens->image_size != glm::ivec2(c.width, c.height)) {
+    node.failKey("resolution", "differs from the calibration's image size " +
+                                   std::to_string(lens->image_size->x) + " x " +
+                                   std::to_string(lens->image_size->y) + " (" +
+                                   lens->calibration_file + ")");
   }
-  out.vignetting = parseVignetting(node, c);
-  if (node.has("psf")) out.psf = parsePsf(node, c.width, c.height);
-  parseAperture(node, c);
+  checkIntrinsics(*lens, c.width, c.height);
+  try {
+    capture::checkLensInvertible(lens->lens, c.width, c.height);
+  } catch (const InputError& e) {
+    node.failKey("lens", e.what());
+  }
+  c.lens = lens->lens;
+  out.lens_calibration = lens->calibration_file;
+}
+
+}  // namespace
+
+void parseCamera(const ConfigNode& node, CameraConfig& out) {
+  capture::Camera& c = out.camera;
+  std::optional<ParsedLens> lens;
+  parseFields(node, kCameraFields, out, [&](const std::string& key) {
+    if (key == "lens" && node.has("lens")) {
+      if (node.has("fov_y")) {
+        node.failKey("fov_y", "a lens's camera matrix sets the field of view: give fov_y or lens");
+      }
+      lens = parseLens(node);
+    } else if (key == "resolution") {
+      // fov_y, read between the lens and here, is checked before the image.
+      if (!(c.fov_y_deg > 0.0f && c.fov_y_deg < 180.0f)) {
+        node.failKey("fov_y", "must be in (0, 180) degrees");
+      }
+      parseResolution(node, lens, out);
+    } else if (key == "vignetting") {
+      out.vignetting = parseVignetting(node, c);
+    } else if (key == "psf" && node.has("psf")) {
+      out.psf = parsePsf(node, c.width, c.height);
+    }
+  });
+  checkAperture(node, c);
   if (out.gltf_camera.empty()) {
     const glm::vec3 forward = c.look_at_world - c.position_world;
     if (glm::length(forward) <= 0.0f) node.failKey("look_at", "must differ from position");

@@ -1,17 +1,19 @@
 // The declared config keys (ConfigKeys.h). The README tables are checked
 // against these rows by tests/config/ConfigKeysTest.cpp: change both together.
 // The rows of a section with a parameter table come from it (RunFields.h,
-// TimeFields.h, LightFields.h, OutputFields.h, NlosFields.h,
-// SequenceFields.h; sensors: sensors/SensorFields.h); the literal rows below
-// are the top level's and `camera`'s.
+// CameraFields.h, RaysFields.h, TimeFields.h, LightFields.h, OutputFields.h,
+// NlosFields.h, SequenceFields.h; sensors: sensors/SensorFields.h); the
+// literal rows below are the top level's.
 #include "tofsim/config/ConfigKeys.h"
 
 #include <iterator>
 
+#include "CameraFields.h"
 #include "FieldDoc.h"
 #include "LightFields.h"
 #include "NlosFields.h"
 #include "OutputFields.h"
+#include "RaysFields.h"
 #include "RunFields.h"
 #include "SequenceFields.h"
 #include "TimeFields.h"
@@ -30,12 +32,6 @@ const ConfigKey kRunConfigKeys[] = {
      "see below; not with `nlos`"},
     {"rays", "mapping", "", "none", "-",
      "a capture whose pixels are the rays of a file (a fibre bundle, a scanning pattern, a custom lens) instead of `camera`, see below; not with `camera`, `nlos` or `sequence`"},
-    {"rays.file", "path", "", "required", "-",
-     "the rays, one a row: a .npy (N, 6) float32 or float64, or a CSV of six columns ox, oy, oz, dx, dy, dz (m, world frame; a header row and `#` lines allowed), relative to the config; directions are normalised (a zero one is an error); read without following links"},
-    {"rays.resolution", "[int, int]", "", "[N, 1]", "pixel",
-     "width, height of the image the rays fill row by row; their product is N"},
-    {"rays.last_leg_counts", "bool", "", "true", "-",
-     "false: the leg from a ray's hit back to its origin takes no time (the arrival is timed at the hit)"},
     {"nlos", "mapping", "", "none", "-",
      "a non-line-of-sight relay-wall scan instead of `camera` and `light`, see below"},
     {"sequence", "mapping", "", "none", "-",
@@ -48,46 +44,6 @@ const ConfigKey kRunConfigKeys[] = {
      "see below"},
     {"sensors", "list", "", "none", "-",
      "sensor models run on the volume, see below"},
-    {"camera.gltf_camera", "string", "", "\"\"", "-",
-     "name or index of a glTF camera; its position, orientation and fov replace the keys below (resolution still applies)"},
-    {"camera.position", "vec3", "", "[0, 0, 0]", "m",
-     "pinhole position"},
-    {"camera.look_at", "vec3", "", "[0, 0, -1]", "m",
-     "point on the optical axis; must differ from `position`"},
-    {"camera.up", "vec3", "", "[0, 1, 0]", "-",
-     "up direction; not parallel to the view direction"},
-    {"camera.fov_y", "angle", "in (0, 180)", "40", "deg",
-     "full vertical field of view"},
-    {"camera.resolution", "[int, int]", "", "[64, 64]", "pixel",
-     "width, height, each in [1, 16384]; with a lens calibration file, its image size"},
-    {"camera.vignetting", "string", "", "none", "-",
-     "`none`; `cos4`, a thin lens's fall-off: each pixel's light times cos^4 of its ray's angle to the optical axis; or a .npy (H, W) float32 map of gains in [0, 1000], not all 0 (a flat field, relative to the config). Every output and sensor sees it"},
-    {"camera.lens", "mapping", "", "none", "-",
-     "a calibrated lens (OpenCV's model) in place of `fov_y`, see below"},
-    {"camera.aperture", "length", ">= 0", "0", "m",
-     "thin-lens defocus: the aperture's diameter (`0`: a pinhole, sharp at every depth). Each pixel sample traces `aperture_samples` rays from points of the aperture disk through its point on the plane in focus, so a surface at depth z blurs over the circle of confusion aperture abs(z - focus_distance) / (z focus_distance) (at unit distance; over the pixel's angle: pixels), and its camera leg is timed through its aperture point and the lens (an in-focus surface's light arrives as through the pinhole). `render.renderer: ir` with `render.backend: cpu` only (`auto` picks it); cost: `bench/defocus`"},
-    {"camera.focus_distance", "length", "> 0", "1", "m",
-     "with `aperture`: the depth (along the optical axis) of the plane in focus; required then, an error without an aperture"},
-    {"camera.aperture_samples", "int", "in [2, 4096]", "16", "-",
-     "with `aperture`: the aperture points each pixel sample traces (Vogel's sunflower spiral: equal areas, the same for every pixel, so the bytes do not depend on threads or budgets); the render costs about this many times the pinhole's first-surface and gather work"},
-    {"camera.lens.camera_matrix", "[9 numbers]", "", "required", "pixel",
-     "OpenCV's camera matrix row by row, [fx, 0, cx, 0, fy, cy, 0, 0, 1], pixel centres at integers (a list, nested rows or a cv::FileStorage matrix)"},
-    {"camera.lens.distortion", "list", "of 4, 5, 8, 12 or 14", "[0, 0, 0, 0]", "-",
-     "OpenCV's distortion coefficients in its order: k1 k2 p1 p2 [k3 [k4 k5 k6 [s1 s2 s3 s4 [tau_x tau_y]]]]"},
-    {"camera.lens.calibration", "path", "", "none", "-",
-     "an OpenCV calibration YAML (cv::FileStorage's: camera_matrix, distortion_coefficients, image_width, image_height) in place of the two keys above; relative to the config"},
-    {"camera.psf", "mapping", "", "none", "-",
-     "the lens's point spread function (stray light) on every time bin, or equivalently on the CW-ToF raws, see below"},
-    {"camera.psf.core_sigma", "number", ">= 0", "0", "pixel",
-     "the core's Gaussian sigma, integrated over each pixel; 0: a delta (the pixel keeps its light)"},
-    {"camera.psf.halo_weight", "number", "in [0, 1)", "0", "-",
-     "s: the halo's share of the light, K = (1 - s) core + s halo"},
-    {"camera.psf.halo_profile", "string", "", "gaussian", "-",
-     "`gaussian` (sigma `halo_radius`) or `exponential` (exp(-r / `halo_radius`), the long tail measured stray light has)"},
-    {"camera.psf.halo_radius", "number", "> 0", "0", "pixel",
-     "the halo's sigma or decay length; required with `halo_weight` > 0"},
-    {"camera.psf.file", "path", "", "none", "-",
-     "a measured kernel in place of the four keys above: a 2-D float32 .npy (H, W), odd sizes, centre at (H/2, W/2), values finite and >= 0, normalised on load; relative to the config"},
 };
 // The keys of a sensor entry itself, and the one-of-two channel keys; every
 // other sensor key's row comes from its parameter table (SensorFields.h).
@@ -108,6 +64,10 @@ std::span<const ConfigKey> runConfigKeys() {
   static const DocRows rows = [] {
     DocRows r;
     r.keys.assign(std::begin(kRunConfigKeys), std::end(kRunConfigKeys));
+    addDocRows<CameraConfig>(r, "camera", kCameraFields);
+    addDocRows<capture::Lens>(r, "camera.lens", kLensFields);
+    addDocRows<PsfConfig>(r, "camera.psf", kPsfFields);
+    addDocRows<RaysConfig>(r, "rays", kRaysFields);
     addDocRows<LightConfig>(r, "light", kLightFields);
     addDocRows(r, "time", kTimeFields, RunConfig{}.render.time);
     addDocRows<RunConfig>(r, "render", kRenderFields);

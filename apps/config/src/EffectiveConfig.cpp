@@ -3,11 +3,13 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include "CameraFields.h"
 #include "FieldEmit.h"
 #include "LensConfig.h"
 #include "LightFields.h"
 #include "NlosFields.h"
 #include "OutputFields.h"
+#include "RaysFields.h"
 #include "RunFields.h"
 #include "SequenceFields.h"
 #include "ShortestNumber.h"
@@ -26,75 +28,88 @@ YAML::Node vec(const glm::vec3& v) {
   return n;
 }
 
-YAML::Node cameraNode(const CameraConfig& c) {
-  YAML::Node n;
-  if (!c.gltf_camera.empty()) n["gltf_camera"] = c.gltf_camera;
-  n["position"] = vec(c.camera.position_world);
-  n["look_at"] = vec(c.camera.look_at_world);
-  n["up"] = vec(c.camera.up_world);
-  if (const auto& lens = c.camera.lens) {
-    YAML::Node l;
-    if (!c.lens_calibration.empty()) {
-      l["calibration"] = c.lens_calibration;
-    } else {
-      YAML::Node m(YAML::NodeType::Sequence);
-      for (const double v : {lens->fx, 0.0, lens->cx, 0.0, lens->fy, lens->cy, 0.0, 0.0, 1.0}) {
-        m.push_back(shortest(v));
-      }
-      m.SetStyle(YAML::EmitterStyle::Flow);
-      l["camera_matrix"] = m;
-      YAML::Node d(YAML::NodeType::Sequence);
-      for (std::size_t i = 0; i < distortionCount(*lens); ++i)
-        d.push_back(shortest(lens->distortion[i]));
-      d.SetStyle(YAML::EmitterStyle::Flow);
-      l["distortion"] = d;
-    }
-    n["lens"] = l;
-  } else {
-    n["fov_y"] = shortest(c.camera.fov_y_deg) + " deg";
-  }
-  YAML::Node res(YAML::NodeType::Sequence);
-  res.push_back(c.camera.width);
-  res.push_back(c.camera.height);
-  res.SetStyle(YAML::EmitterStyle::Flow);
-  n["resolution"] = res;
-  switch (c.vignetting.kind) {
-    case capture::Vignetting::Kind::None:
-      n["vignetting"] = "none";
-      break;
-    case capture::Vignetting::Kind::Cos4:
-      n["vignetting"] = "cos4";
-      break;
-    case capture::Vignetting::Kind::Map:
-      n["vignetting"] = c.vignetting.file;
-      break;
-  }
-  if (const auto& psf = c.psf) {
-    YAML::Node p;
-    if (!psf->file.empty()) {
-      p["file"] = psf->file;
-    } else {
-      p["core_sigma"] = shortest(psf->params.core_sigma_px);
-      p["halo_weight"] = shortest(psf->params.halo_weight);
-      p["halo_profile"] = optics::haloProfileName(psf->params.halo_profile);
-      p["halo_radius"] = shortest(psf->params.halo_radius_px);
-    }
-    n["psf"] = p;
-  }
-  // Only with an aperture: a pinhole's effective config keeps its bytes.
-  if (c.camera.defocused()) {
-    n["aperture"] = shortest(c.camera.aperture_m);
-    n["focus_distance"] = shortest(c.camera.focus_distance_m);
-    n["aperture_samples"] = c.camera.aperture_samples;
-  }
-  return n;
-}
-
 YAML::Node flowPair(double a, double b) {
   YAML::Node n(YAML::NodeType::Sequence);
   n.push_back(shortest(a));
   n.push_back(shortest(b));
   n.SetStyle(YAML::EmitterStyle::Flow);
+  return n;
+}
+
+YAML::Node lensNode(const CameraConfig& c) {
+  const capture::Lens& lens = *c.camera.lens;
+  YAML::Node l;
+  if (!c.lens_calibration.empty()) {
+    l["calibration"] = c.lens_calibration;
+    return l;
+  }
+  YAML::Node m(YAML::NodeType::Sequence);
+  for (const double v : {lens.fx, 0.0, lens.cx, 0.0, lens.fy, lens.cy, 0.0, 0.0, 1.0}) {
+    m.push_back(shortest(v));
+  }
+  m.SetStyle(YAML::EmitterStyle::Flow);
+  l["camera_matrix"] = m;
+  YAML::Node d(YAML::NodeType::Sequence);
+  for (std::size_t i = 0; i < distortionCount(lens); ++i) d.push_back(shortest(lens.distortion[i]));
+  d.SetStyle(YAML::EmitterStyle::Flow);
+  l["distortion"] = d;
+  return l;
+}
+
+YAML::Node psfNode(const PsfConfig& psf) {
+  YAML::Node p;
+  if (!psf.file.empty()) {
+    p["file"] = psf.file;
+  } else {
+    emitFields(p, kPsfFields, psf);
+  }
+  return p;
+}
+
+const char* vignettingText(const capture::Vignetting& v) {
+  switch (v.kind) {
+    case capture::Vignetting::Kind::Cos4:
+      return "cos4";
+    case capture::Vignetting::Kind::Map:
+      return v.file.c_str();
+    case capture::Vignetting::Kind::None:
+      break;
+  }
+  return "none";
+}
+
+YAML::Node cameraNode(const CameraConfig& c) {
+  YAML::Node n;
+  emitFields(n, kCameraFields, c, [&](const std::string& key) {
+    if (key == "lens" && c.camera.lens) {
+      n[key] = lensNode(c);
+    } else if (key == "resolution") {
+      YAML::Node res(YAML::NodeType::Sequence);
+      res.push_back(c.camera.width);
+      res.push_back(c.camera.height);
+      res.SetStyle(YAML::EmitterStyle::Flow);
+      n[key] = res;
+    } else if (key == "vignetting") {
+      n[key] = vignettingText(c.vignetting);
+    } else if (key == "psf" && c.psf) {
+      n[key] = psfNode(*c.psf);
+    }
+  });
+  // A lens's camera matrix sets the field of view; the aperture's keys only
+  // with an aperture, so that a pinhole's effective config keeps its bytes.
+  if (c.camera.lens) n.remove("fov_y");
+  if (!c.camera.defocused()) {
+    for (const char* key : {"aperture", "focus_distance", "aperture_samples"}) n.remove(key);
+  }
+  return n;
+}
+
+YAML::Node raysNode(const RaysConfig& r) {
+  YAML::Node n;
+  emitFields(n, kRaysFields, r, [&](const std::string& key) {
+    if (key == "file") n[key] = r.file;
+    if (key == "resolution") n[key] = flowPair(r.imager.width, r.imager.height);
+  });
   return n;
 }
 
@@ -184,11 +199,7 @@ std::string effectiveConfigYaml(const RunConfig& config) {
     root["nlos"] = nlosNode(*config.nlos);
   } else {
     if (config.rays) {
-      YAML::Node rays;
-      rays["file"] = config.rays->file;
-      rays["resolution"] = flowPair(config.rays->imager.width, config.rays->imager.height);
-      rays["last_leg_counts"] = config.rays->imager.last_leg_counts;
-      root["rays"] = rays;
+      root["rays"] = raysNode(*config.rays);
     } else {
       root["camera"] = cameraNode(config.camera);
     }

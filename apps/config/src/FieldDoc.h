@@ -43,7 +43,11 @@ struct KindDoc {
 
 template <typename K>
 KindDoc kindDoc(const K& kind) {
-  if constexpr (std::is_same_v<K, sensors::Number>) {
+  if constexpr (kIsChecked<K>) {
+    KindDoc doc = kindDoc(kind.kind);
+    doc.range = kind.rangeDoc;
+    return doc;
+  } else if constexpr (std::is_same_v<K, sensors::Number>) {
     return {"number", rangeText(kind.range), "-"};
   } else if constexpr (std::is_same_v<K, sensors::Duration>) {
     return {"duration", rangeText(kind.range), "s"};
@@ -77,7 +81,9 @@ KindDoc kindDoc(const K& kind) {
 /// The default as written in a config: "0", "0.3", "10 ps", "true", "turbo".
 template <typename T, typename K>
 std::string defaultText(const K& kind, const T& value) {
-  if constexpr (std::is_same_v<K, sensors::Flag>) {
+  if constexpr (kIsChecked<K>) {
+    return defaultText(kind.kind, value);
+  } else if constexpr (std::is_same_v<K, sensors::Flag>) {
     return value ? "true" : "false";
   } else if constexpr (std::is_same_v<K, sensors::Text>) {
     return value;

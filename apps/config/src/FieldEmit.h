@@ -19,9 +19,13 @@ namespace detail {
 template <typename T, typename K>
 void emitValue(YAML::Node& n, const char* key, const K& kind, const sensors::Info& info,
                const T& value) {
-  if constexpr (std::is_same_v<K, sensors::OptionalDuration>) {
+  if constexpr (kIsChecked<K>) {
+    emitValue(n, key, kind.kind, info, value);
+  } else if constexpr (std::is_same_v<K, sensors::OptionalDuration>) {
     if (value) n[key] = durationText(*value);
   } else if constexpr (std::is_same_v<K, sensors::Text>) {
+    // Empty text that means "not given" (info.unset) is not an explicit value.
+    if (info.unset && value.empty()) return;
     n[key] = std::string(value);  // a std::filesystem::path too
   } else if constexpr (std::is_same_v<K, Picoseconds>) {
     n[key] = withUnit(value, 1e-12, "ps", "s");

@@ -34,6 +34,22 @@ struct Picoseconds {
   sensors::Range range;
 };
 
+/// A value whose accepted range the section checks itself over the parsed
+/// struct, with its own message (the range depends on another key, or the
+/// message says why): read and written as `kind`, which states no range of
+/// its own, and documented with `rangeDoc`.
+template <typename K>
+struct Checked {
+  K kind;
+  const char* rangeDoc;
+};
+template <typename K>
+Checked(K, const char*) -> Checked<K>;
+template <typename K>
+inline constexpr bool kIsChecked = false;
+template <typename K>
+inline constexpr bool kIsChecked<Checked<K>> = true;
+
 /// One config key of struct S held in member `member` of its member `outer`.
 template <typename S, typename M, typename T, typename K>
 struct In {

@@ -36,7 +36,9 @@ std::string alternatives(const sensors::Choice<E>& choice) {
 
 template <typename T, typename K>
 void parseValue(const ConfigNode& n, const char* key, const K& kind, T& value) {
-  if constexpr (std::is_same_v<K, sensors::Number>) {
+  if constexpr (kIsChecked<K>) {
+    parseValue(n, key, kind.kind, value);  // the section checks the range
+  } else if constexpr (std::is_same_v<K, sensors::Number>) {
     value = n.getDouble(key, value);
     checkRange(n, key, kind.range, value);
   } else if constexpr (std::is_same_v<K, sensors::Duration>) {

@@ -3,19 +3,22 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <type_traits>
 
+#include "CameraFields.h"
+#include "FieldParse.h"
 #include "SpadTableFile.h"
 
 namespace tofsim::config {
 
 namespace {
 
-const char* const kParametricKeys[] = {"core_sigma", "halo_weight", "halo_profile", "halo_radius"};
-
 PsfConfig fromFile(const ConfigNode& psf) {
-  for (const char* key : kParametricKeys) {
-    if (psf.has(key)) psf.failKey(key, "give a kernel file or the parametric kernel, not both");
-  }
+  sensors::forEachField(kPsfFields, [&](const auto& entry) {
+    if (kHasValue<std::decay_t<decltype(entry)>> && psf.has(entry.name)) {
+      psf.failKey(entry.name, "give a kernel file or the parametric kernel, not both");
+    }
+  });
   PsfConfig out;
   // Finite and >= 0, or an error naming the value's (y, x).
   const PixelMap map = readPixelMap(psf, "file", "PSF kernel", "kernel value");
@@ -47,22 +50,14 @@ PsfConfig parsePsf(const ConfigNode& camera, int32_t width, int32_t height) {
   }
   PsfConfig out;
   out.at = camera.locationOf("psf");
-  optics::PsfParams& p = out.params;
-  p.core_sigma_px = psf.getDouble("core_sigma", 0.0);
+  parseFields(psf, kPsfFields, out);
+  const optics::PsfParams& p = out.params;
   if (!(std::isfinite(p.core_sigma_px) && p.core_sigma_px >= 0.0)) {
     psf.failKey("core_sigma", "must be a finite number >= 0 pixels");
   }
-  p.halo_weight = psf.getDouble("halo_weight", 0.0);
   if (!(p.halo_weight >= 0.0 && p.halo_weight < 1.0)) {
     psf.failKey("halo_weight", "must be in [0, 1): the halo's share of the light");
   }
-  const std::string profile = psf.getString("halo_profile", "gaussian");
-  if (profile == "exponential") {
-    p.halo_profile = optics::HaloProfile::Exponential;
-  } else if (profile != "gaussian") {
-    psf.failKey("halo_profile", "must be gaussian or exponential (got '" + profile + "')");
-  }
-  p.halo_radius_px = psf.getDouble("halo_radius", 0.0);
   if (!(std::isfinite(p.halo_radius_px) && p.halo_radius_px >= 0.0)) {
     psf.failKey("halo_radius", "must be a finite number > 0 pixels");
   }

@@ -6,6 +6,8 @@
 
 #include "ConfigPath.h"
 #include "CsvRows.h"
+#include "FieldParse.h"
+#include "RaysFields.h"
 #include "TableText.h"
 #include "tofsim/io/FileBytes.h"
 
@@ -90,9 +92,8 @@ std::vector<capture::PrimaryRay> unitRays(const ConfigNode& n, const std::filesy
   return rays;
 }
 
-}  // namespace
-
-capture::RayListImager parseRays(const ConfigNode& node, std::string& file) {
+// rays.file: the rays with unit directions; `file` receives its absolute path.
+std::vector<capture::PrimaryRay> readRays(const ConfigNode& node, std::string& file) {
   const std::filesystem::path path = existingDataFile(node, "file", "ray file");
   file = path.string();
   const std::string bytes = readRayFile(node, path);
@@ -107,19 +108,31 @@ capture::RayListImager parseRays(const ConfigNode& node, std::string& file) {
     node.failKey("file", path.string() + ": holds " + std::to_string(raw.size()) +
                              " rays, more than " + std::to_string(kMaxRays));
   }
-  capture::RayListImager imager;
-  imager.rays = unitRays(node, path, raw);
-  const auto count = static_cast<double>(raw.size());
-  const std::vector<double> res = node.getDoubles("resolution", 2, {count, 1.0});
-  const bool whole = res[0] == std::floor(res[0]) && res[1] == std::floor(res[1]);
-  if (!whole || res[0] < 1 || res[1] < 1 || res[0] * res[1] != count) {
-    node.failKey("resolution", "must be two integers (width, height) whose product is the file's " +
-                                   std::to_string(raw.size()) + " rays");
-  }
-  imager.width = static_cast<int32_t>(res[0]);
-  imager.height = static_cast<int32_t>(res[1]);
-  imager.last_leg_counts = node.getBool("last_leg_counts", true);
-  return imager;
+  return unitRays(node, path, raw);
+}
+
+}  // namespace
+
+RaysConfig parseRays(const ConfigNode& node) {
+  RaysConfig out;
+  capture::RayListImager& imager = out.imager;
+  parseFields(node, kRaysFields, out, [&](const std::string& key) {
+    if (key == "file") {
+      imager.rays = readRays(node, out.file);
+    } else if (key == "resolution") {
+      const auto count = static_cast<double>(imager.rays.size());
+      const std::vector<double> res = node.getDoubles("resolution", 2, {count, 1.0});
+      const bool whole = res[0] == std::floor(res[0]) && res[1] == std::floor(res[1]);
+      if (!whole || res[0] < 1 || res[1] < 1 || res[0] * res[1] != count) {
+        node.failKey("resolution",
+                     "must be two integers (width, height) whose product is the file's " +
+                         std::to_string(imager.rays.size()) + " rays");
+      }
+      imager.width = static_cast<int32_t>(res[0]);
+      imager.height = static_cast<int32_t>(res[1]);
+    }
+  });
+  return out;
 }
 
 }  // namespace tofsim::config

@@ -11,12 +11,12 @@
 #include <string>
 
 #include "ConfigNode.h"
-#include "tofsim/capture/Imager.h"
+#include "tofsim/config/RunConfig.h"
 
 namespace tofsim::config {
 
-/// rays: {file, resolution: [width, height] (default [N, 1]), last_leg_counts}.
-/// `file` receives the ray file's absolute path.
-capture::RayListImager parseRays(const ConfigNode& rays, std::string& file);
+/// rays: {file, resolution: [width, height] (default [N, 1]), last_leg_counts}
+/// (RaysFields.h); RaysConfig::file is the ray file's absolute path.
+RaysConfig parseRays(const ConfigNode& rays);
 
 }  // namespace tofsim::config

@@ -50,11 +50,9 @@ void parseView(const ConfigNode& root, RunConfig& config) {
   const auto nlos = root.optionalChild("nlos");
   if (!nlos && root.has("rays")) {
     if (root.has("camera")) root.failKey("camera", "a capture has one imager: `camera` or `rays`, not both");
-    RaysConfig rays;
-    rays.imager = parseRays(root.child("rays"), rays.file);
-    config.camera.camera.width = rays.imager.width;
-    config.camera.camera.height = rays.imager.height;
-    config.rays = std::move(rays);
+    config.rays = parseRays(root.child("rays"));
+    config.camera.camera.width = config.rays->imager.width;
+    config.camera.camera.height = config.rays->imager.height;
     parseLight(root.child("light"), config.light);
     if (config.light.attach_to_camera) {
       root.child("light").failKey("attach_to_camera", "rays have no camera to attach the light to");

@@ -4,9 +4,8 @@
 // the kinds only a run has), visited by the same parse, emit and doc
 // functions (Field*.h): each key's name, kind, range, unit and doc are
 // written here once; its default is the struct's initialiser. This file:
-// `render`, `render.indirect` and `render.reference`; TimeFields.h,
-// LightFields.h and OutputFields.h the others. `camera`'s keys are still
-// hand-written (CameraConfigParser.cpp, EffectiveConfig.cpp, ConfigKeys.cpp).
+// `render`, `render.indirect` and `render.reference`; CameraFields.h,
+// RaysFields.h, TimeFields.h, LightFields.h and OutputFields.h the others.
 
 #include <array>
 #include <tuple>
