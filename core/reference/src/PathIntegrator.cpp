@@ -39,7 +39,8 @@ PathIntegrator::PathIntegrator(const RayScene& scene, const capture::RenderJob& 
       pixelFilter_(effectiveFilter(job.imager, pixelFilter)),
       gltf_(job.settings.materials == capture::MaterialModel::Gltf),
       materials_(ir::materialVertices(scene.scene(), physics::VERTEX_GLTF)),
-      sampling_(sampling) {}
+      sampling_(sampling),
+      delays_(ir::materialResponses(scene.scene()).kernels) {}
 
 PathIntegrator::Radiance PathIntegrator::lightReflectedAt(const SurfaceHit& hit,
                                                           const glm::vec3& toViewer) const {
@@ -76,9 +77,26 @@ double PathIntegrator::lastLeg_m(double surfaceToViewpoint_m) const {
   return dropLastLeg_ ? 0.0 : surfaceToViewpoint_m;
 }
 
-int32_t PathIntegrator::binOfPath(double path_m) const {
+int32_t PathIntegrator::binOfPath(double path_m, double delay_s) const {
   const double optical_m = job_.settings.time.index_of_refraction * path_m;
-  return job_.settings.time.binOf(optical_m / kSpeedOfLight_m_per_s);
+  // + 0.0 for an undelayed path: the same arrival time, bit for bit.
+  return job_.settings.time.binOf(optical_m / kSpeedOfLight_m_per_s + delay_s);
+}
+
+void PathIntegrator::deposit(const glm::dvec3& value, double path_m, double delay_s,
+                             double* histogram, AxisLoss& outside) const {
+  const int32_t b = binOfPath(path_m, delay_s);
+  if (b < 0) {
+    outside.add(b, value.r + value.g + value.b);
+    return;
+  }
+  double* bin = histogram + static_cast<std::size_t>(b) * kChannels;
+  for (int c = 0; c < kChannels; ++c) bin[c] += value[c];
+}
+
+Pcg32 PathIntegrator::delayStream(uint64_t pixel) const {
+  constexpr uint64_t kDelayStreams = 0x6A09E667F3BCC909ull;  // any constant: not the paths' seeds
+  return Pcg32::forUnit(job_.settings.seed ^ kDelayStreams, pixel);
 }
 
 void PathIntegrator::renderPixel(int32_t x, int32_t y, PixelOutput& out,
@@ -123,13 +141,14 @@ PathIntegrator::Continuation PathIntegrator::sampleContinuation(const SurfaceHit
 }
 
 void PathIntegrator::traceContinuation(const SurfaceHit& hit, const glm::vec3& toCamera,
-                                       double toCamera_m, Pcg32& rng, double* histogram,
-                                       AxisLoss& outside) const {
+                                       double toCamera_m, PathState state, Pcg32& rng,
+                                       Pcg32& delays, double* histogram, AxisLoss& outside) const {
   // At each vertex the throughput gains f cos / pdf of the sampled direction
-  // (albedo for a cosine-sampled Lambertian surface).
+  // (albedo for a cosine-sampled Lambertian surface), and a vertex that
+  // delays draws its delay (and re-emission) once, for the light it lights
+  // directly and for the path's later vertices alike.
   SurfaceHit current = hit;
   glm::vec3 toViewer = toCamera;
-  glm::dvec3 throughput(1.0);
   double fromCamera_m = toCamera_m;
   for (int32_t depth = 2; depth <= bounces_; ++depth) {
     const Continuation step = sampleContinuation(current, toViewer, rng);
@@ -138,19 +157,14 @@ void PathIntegrator::traceContinuation(const SurfaceHit& hit, const glm::vec3& t
     if (step.ends) break;  // mixture sample below the shading normal (or the float limit)
     const std::optional<SurfaceHit> next = scene_.intersect(scene_.offsetOrigin(current, wi), wi);
     if (!next) break;
-    throughput *= step.weight;
+    state.weight.scale(step.weight);
+    delays_.atVertex(responseAt(*next), delays, state);
     toViewer = -wi;
     fromCamera_m += glm::length(next->position_world - current.position_world);
     const Radiance reflected = lightReflectedAt(*next, toViewer);
     if (reflected.valid) {
-      const glm::dvec3 value = throughput * reflected.value;
-      const int32_t b = binOfPath(reflected.path_m + fromCamera_m);
-      if (b < 0) {
-        outside.add(b, value.r + value.g + value.b);
-      } else {
-        double* bin = histogram + static_cast<std::size_t>(b) * kChannels;
-        for (int c = 0; c < kChannels; ++c) bin[c] += value[c];
-      }
+      deposit(state.weight.apply(reflected.value), reflected.path_m + fromCamera_m, state.delay_s,
+              histogram, outside);
     }
     current = *next;
   }
@@ -171,9 +185,13 @@ void PathIntegrator::renderPixelCentre(int32_t x, int32_t y, PixelOutput& out,
   // first surface: drop the surface -> viewpoint leg.
   const double toCamera_m = lastLeg_m(cameraLeg_m);
   const std::size_t floats = static_cast<std::size_t>(job_.settings.time.bins) * kChannels;
+  const glm::vec3 toCamera = glm::normalize(eye - hit.position_world);
+  if (delays_.delays(responseAt(hit))) {
+    renderDelayedCentre(hit, toCamera, toCamera_m, pixelIndex(x, y), out, scratch);
+    return;
+  }
 
   // Bounce 1: exact, no sampling.
-  const glm::vec3 toCamera = glm::normalize(eye - hit.position_world);
   const Radiance direct = lightReflectedAt(hit, toCamera);
   if (direct.valid) {
     const int32_t b = binOfPath(direct.path_m + toCamera_m);
@@ -190,8 +208,9 @@ void PathIntegrator::renderPixelCentre(int32_t x, int32_t y, PixelOutput& out,
   scratch.assign(floats, 0.0);
   AxisLoss outside;
   Pcg32 rng = Pcg32::forUnit(job_.settings.seed, pixelIndex(x, y));
+  Pcg32 delays = delayStream(pixelIndex(x, y));
   for (int32_t s = 0; s < samplesPerPixel_; ++s) {
-    traceContinuation(hit, toCamera, toCamera_m, rng, scratch.data(), outside);
+    traceContinuation(hit, toCamera, toCamera_m, {}, rng, delays, scratch.data(), outside);
   }
   const double norm = 1.0 / samplesPerPixel_;
   for (std::size_t i = 0; i < floats; ++i) out.indirect[i] = static_cast<float>(scratch[i] * norm);
@@ -199,17 +218,45 @@ void PathIntegrator::renderPixelCentre(int32_t x, int32_t y, PixelOutput& out,
   out.offAxis.after += outside.after * norm;
 }
 
+void PathIntegrator::renderDelayedCentre(const SurfaceHit& hit, const glm::vec3& toCamera,
+                                         double toCamera_m, uint64_t pixel, PixelOutput& out,
+                                         std::vector<double>& scratch) const {
+  const std::size_t floats = static_cast<std::size_t>(job_.settings.time.bins) * kChannels;
+  scratch.assign(2 * floats, 0.0);
+  double* direct = scratch.data();
+  double* indirect = direct + floats;
+  AxisLoss outside;
+  Pcg32 rng = Pcg32::forUnit(job_.settings.seed, pixel);
+  Pcg32 delays = delayStream(pixel);
+  const int32_t response = responseAt(hit);
+  const Radiance light = lightReflectedAt(hit, toCamera);  // the same for every path
+  for (int32_t s = 0; s < samplesPerPixel_; ++s) {
+    PathState state;
+    delays_.atVertex(response, delays, state);
+    if (light.valid) {
+      deposit(state.weight.apply(light.value), light.path_m + toCamera_m, state.delay_s, direct,
+              outside);
+    }
+    if (bounces_ >= 2) {
+      traceContinuation(hit, toCamera, toCamera_m, state, rng, delays, indirect, outside);
+    }
+  }
+  const double norm = 1.0 / samplesPerPixel_;
+  for (std::size_t i = 0; i < floats; ++i) {
+    out.direct[i] = static_cast<float>(direct[i] * norm);
+    out.indirect[i] = static_cast<float>(indirect[i] * norm);
+  }
+  out.offAxis.before += outside.before * norm;
+  out.offAxis.after += outside.after * norm;
+}
+
 void PathIntegrator::addDirect(const SurfaceHit& hit, const glm::vec3& toCamera, double toCamera_m,
-                               double* histogram, AxisLoss& outside) const {
+                               const PathState& state, double* histogram,
+                               AxisLoss& outside) const {
   const Radiance direct = lightReflectedAt(hit, toCamera);
   if (!direct.valid) return;
-  const int32_t b = binOfPath(direct.path_m + toCamera_m);
-  if (b < 0) {
-    outside.add(b, direct.value.r + direct.value.g + direct.value.b);
-    return;
-  }
-  double* bin = histogram + static_cast<std::size_t>(b) * kChannels;
-  for (int c = 0; c < kChannels; ++c) bin[c] += direct.value[c];
+  deposit(state.weight.apply(direct.value), direct.path_m + toCamera_m, state.delay_s, histogram,
+          outside);
 }
 
 void PathIntegrator::renderPixelArea(int32_t x, int32_t y, PixelOutput& out,
@@ -226,14 +273,19 @@ void PathIntegrator::renderPixelArea(int32_t x, int32_t y, PixelOutput& out,
   double* indirect = direct + floats;
   AxisLoss outside;
   Pcg32 rng = Pcg32::forUnit(job_.settings.seed, pixelIndex(x, y));
+  Pcg32 delays = delayStream(pixelIndex(x, y));
   for (int32_t s = 0; s < samplesPerPixel_; ++s) {
     const glm::vec2 offset = stratifiedPixelOffset(s, samplesPerPixel_, rng);
     const std::optional<SurfaceHit> hit = scene_.intersect(eye, rays_.ray(x, y, offset).direction);
     if (!hit) continue;  // a silhouette pixel: this part of it sees nothing
     const double toCamera_m = lastLeg_m(glm::length(hit->position_world - eye));
     const glm::vec3 toCamera = glm::normalize(eye - hit->position_world);
-    addDirect(*hit, toCamera, toCamera_m, direct, outside);
-    if (bounces_ >= 2) traceContinuation(*hit, toCamera, toCamera_m, rng, indirect, outside);
+    PathState state;
+    delays_.atVertex(responseAt(*hit), delays, state);
+    addDirect(*hit, toCamera, toCamera_m, state, direct, outside);
+    if (bounces_ >= 2) {
+      traceContinuation(*hit, toCamera, toCamera_m, state, rng, delays, indirect, outside);
+    }
   }
   const double norm = 1.0 / samplesPerPixel_;
   for (std::size_t i = 0; i < floats; ++i) {

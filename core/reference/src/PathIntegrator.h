@@ -11,6 +11,7 @@
 #include "tofsim/rays/RayScene.h"
 #include "tofsim/reference/ReferenceRenderer.h"
 #include "tofsim/util/Random.h"
+#include "VertexDelay.h"
 
 namespace tofsim::reference {
 
@@ -65,17 +66,37 @@ class PathIntegrator {
                          std::vector<double>& scratch) const;
   /// Box filter: every path starts at its own stratified sub-pixel point.
   void renderPixelArea(int32_t x, int32_t y, PixelOutput& out, std::vector<double>& scratch) const;
+  /// Point filter at a primary hit whose material delays: the direct term
+  /// too is averaged over the pixel's paths, each of which draws the hit's
+  /// delay once for its direct light and its continuation.
+  void renderDelayedCentre(const SurfaceHit& hit, const glm::vec3& toCamera, double toCamera_m,
+                           uint64_t pixel, PixelOutput& out, std::vector<double>& scratch) const;
   /// Adds the direct light reflected at `hit` towards the camera (unit
-  /// toCamera, weight 1) to `histogram` (T x 3).
+  /// toCamera), seen through the path's state (its weight and delays, the
+  /// hit's own included), to `histogram` (T x 3).
   void addDirect(const SurfaceHit& hit, const glm::vec3& toCamera, double toCamera_m,
-                 double* histogram, AxisLoss& outside) const;
+                 const PathState& state, double* histogram, AxisLoss& outside) const;
   /// One path's bounces 2..n from the primary hit, seen from the unit
-  /// direction toCamera, added to `histogram`.
+  /// direction toCamera, added to `histogram`. `state` holds the primary
+  /// hit's delay; `delays` draws the later vertices'.
   void traceContinuation(const SurfaceHit& hit, const glm::vec3& toCamera, double toCamera_m,
-                         Pcg32& rng, double* histogram, AxisLoss& outside) const;
+                         PathState state, Pcg32& rng, Pcg32& delays, double* histogram,
+                         AxisLoss& outside) const;
+  /// Adds `value` at the arrival time of a geometric path length (metres,
+  /// before the index of refraction) plus `delay_s`, or books it off the axis.
+  void deposit(const glm::dvec3& value, double path_m, double delay_s, double* histogram,
+               AxisLoss& outside) const;
   /// Time bin of a geometric path length (metres, before the index of
-  /// refraction), -1 when it falls off the axis. Same rule as TimeAxis::binOf.
-  int32_t binOfPath(double path_m) const;
+  /// refraction) plus the path's scattering delays (seconds), -1 when it
+  /// falls off the axis. Same rule as TimeAxis::binOf.
+  int32_t binOfPath(double path_m, double delay_s = 0.0) const;
+  /// The base kernel of the material at `hit` (0: instant).
+  int32_t responseAt(const SurfaceHit& hit) const {
+    return materials_.at(static_cast<std::size_t>(hit.material)).response;
+  }
+  /// The generator of pixel `pixel`'s delays: a stream of its own, so that
+  /// the directions a path draws do not depend on its delays.
+  Pcg32 delayStream(uint64_t pixel) const;
 
   /// Length of the last leg (surface -> viewpoint, metres) that counts in
   /// the time: 0 with camera_unwarp or a point set that drops it.
@@ -98,6 +119,8 @@ class PathIntegrator {
   /// fields, read as the Lambertian albedo too).
   std::vector<physics::ScatterVertex> materials_;
   ContinuationSampling sampling_;
+  /// The scene's delay kernels (ir::materialResponses), by base id.
+  VertexDelays delays_;
 };
 
 }  // namespace tofsim::reference

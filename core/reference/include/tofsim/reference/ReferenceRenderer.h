@@ -14,6 +14,11 @@
 //    (with render.materials: gltf, drawn from the cosine + GGX VNDF mixture)
 //    (no Russian roulette), next-event estimation towards the light at every
 //    vertex, each contribution binned at its full optical path. Segment::indirect.
+//  - a material's scattering delay (scene::Material::scatteringDelay): at each
+//    vertex of such a material the light is delayed with probability
+//    `fraction` by a delay drawn from the kernel and re-emitted through its
+//    matrix (a delay per vertex, Jarabo et al. 2014), from a random stream of
+//    its own; energy is kept path by path.
 // Deterministic: every pixel draws from its own generator seeded with
 // (RenderSettings::seed, pixel index), so the bytes depend neither on the
 // thread count nor on scheduling.
