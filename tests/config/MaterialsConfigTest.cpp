@@ -27,7 +27,8 @@ class MaterialsConfigTest : public test::TempDirTest {
   RunConfig load(const std::string& materials, const std::string& extra = "") {
     std::ofstream(dir_ / "scene.gltf") << "{}";
     std::ofstream(dir_ / "c.yaml") << "scene: scene.gltf\ncamera: {}\nlight: {}\ntime: {}\n"
-                                   << extra << "materials:\n" << materials;
+                                   << extra << "materials:\n"
+                                   << materials;
     return loadRunConfig(dir_ / "c.yaml");
   }
   std::string errorOf(const std::string& materials, const std::string& extra = "") {
@@ -129,19 +130,20 @@ TEST_F(MaterialsConfigTest, BadEntriesAreLocatedErrors) {
            Case{"{model: exponential, lifetime: 2 fortnights}", "wax.scattering_delay.lifetime",
                 "unknown time unit"},
            Case{"{model: table, file: bad.csv}", "wax.scattering_delay.file", "at least 2 rows"},
-           Case{"{model: gaussian, mean: 1 us, sigma: 1 us}", "wax.scattering_delay",
-                "8192"},
+           Case{"{model: gaussian, mean: 1 us, sigma: 1 us}", "wax.scattering_delay", "8192"},
            Case{"fast", "wax.scattering_delay", "or none (got 'fast')"},
        }) {
     SCOPED_TRACE(c.entry);
-    const std::string what = errorOf(std::string("  wax:\n    scattering_delay: ") + c.entry + "\n");
+    const std::string what =
+        errorOf(std::string("  wax:\n    scattering_delay: ") + c.entry + "\n");
     ASSERT_FALSE(what.empty()) << "accepted";
     EXPECT_NE(what.find("c.yaml:7:"), std::string::npos) << what;
     EXPECT_NE(what.find(std::string("materials.") + c.key), std::string::npos) << what;
     EXPECT_NE(what.find(c.message), std::string::npos) << what;
   }
-  const std::string what = errorOf("  wax:\n    scattering_delay: {model: exponential, "
-                                   "lifetime: 1 ns, lifetme: 2 ns}\n");
+  const std::string what = errorOf(
+      "  wax:\n    scattering_delay: {model: exponential, "
+      "lifetime: 1 ns, lifetme: 2 ns}\n");
   EXPECT_NE(what.find("materials.wax.scattering_delay.lifetme: unknown key"), std::string::npos)
       << what;
 }
@@ -176,9 +178,9 @@ TEST_F(MaterialsConfigTest, TheConfigEntryReplacesTheExtrasWhole) {
       {{"scattering_delay.model", "exponential"}, {"scattering_delay.lifetime", "1 ns"}}};
   // wax: the config's Gaussian, its fraction 1 (not the extras' 0.6);
   // lamp: none, whatever its extras say.
-  const RunConfig c =
-      load("  wax:\n    scattering_delay: {model: gaussian, mean: 40 ps, sigma: 15 ps}\n"
-           "  lamp:\n    scattering_delay: none\n");
+  const RunConfig c = load(
+      "  wax:\n    scattering_delay: {model: gaussian, mean: 40 ps, sigma: 15 ps}\n"
+      "  lamp:\n    scattering_delay: none\n");
   applyMaterialDelays(c, scene, extras);
   EXPECT_FALSE(scene.materials[0].scatteringDelay.has_value());
   ASSERT_TRUE(scene.materials[1].scatteringDelay.has_value());

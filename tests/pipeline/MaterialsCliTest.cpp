@@ -42,21 +42,23 @@ class MaterialsCliTest : public test::TempDirTest {
 };
 
 const char* kNoIndirect = "render: {backend: cpu, indirect: {enabled: false}}\n";
-const char* kDyeLong = "materials:\n  dye_long:\n    scattering_delay: {model: exponential, "
-                       "lifetime: 3.5 ns}\n";
+const char* kDyeLong =
+    "materials:\n  dye_long:\n    scattering_delay: {model: exponential, "
+    "lifetime: 3.5 ns}\n";
 
 // The bins of "time.bins: N would hold it all", 0 when there is no such advice.
 int suggestedBins(const std::string& output) {
   std::smatch m;
-  if (!std::regex_search(output, m, std::regex("time\\.bins: ([0-9]+) would hold it all"))) return 0;
+  if (!std::regex_search(output, m, std::regex("time\\.bins: ([0-9]+) would hold it all")))
+    return 0;
   return std::stoi(m[1]);
 }
 
 TEST_F(MaterialsCliTest, ValidatesSuggestedAxisHoldsTheLifetimesTail) {
   // The slide's extras give dye_long its 3.5 ns; `none` drops it: the axis
   // holds every path (no advice).
-  const test::CommandResult plain = validate(std::string(kNoIndirect) +
-                                             "materials:\n  dye_long: {scattering_delay: none}\n");
+  const test::CommandResult plain =
+      validate(std::string(kNoIndirect) + "materials:\n  dye_long: {scattering_delay: none}\n");
   ASSERT_EQ(plain.exitCode, 0) << plain.output;
   EXPECT_EQ(suggestedBins(plain.output), 0) << plain.output;
   // With it, one delayed vertex: the tail to 0.1 % is 3.5 ns ln(1000) =
@@ -71,8 +73,7 @@ TEST_F(MaterialsCliTest, ValidatesSuggestedAxisHoldsTheLifetimesTail) {
   const test::CommandResult bounce =
       validate("render: {backend: cpu, indirect: {bounces: 1}}\n" + std::string(kDyeLong));
   ASSERT_EQ(bounce.exitCode, 0) << bounce.output;
-  EXPECT_GE(suggestedBins(bounce.output) * 50e-12, 2 * 3.5e-9 * std::log(2000.0))
-      << bounce.output;
+  EXPECT_GE(suggestedBins(bounce.output) * 50e-12, 2 * 3.5e-9 * std::log(2000.0)) << bounce.output;
 }
 
 TEST_F(MaterialsCliTest, BadDelaysExitOneAndWriteNothing) {

@@ -1,8 +1,9 @@
 #include "tofsim/config/MaterialDelays.h"
 
+#include <yaml-cpp/yaml.h>
+
 #include <map>
 #include <string>
-#include <yaml-cpp/yaml.h>
 
 #include "ConfigNode.h"
 #include "MaterialSection.h"
@@ -29,7 +30,8 @@ YAML::Node toYaml(const Tree& t) {
   }
   YAML::Node n(list ? YAML::NodeType::Sequence : YAML::NodeType::Map);
   if (list) {
-    for (std::size_t i = 0; i < t.children.size(); ++i) n.push_back(toYaml(t.children.at(std::to_string(i))));
+    for (std::size_t i = 0; i < t.children.size(); ++i)
+      n.push_back(toYaml(t.children.at(std::to_string(i))));
   } else {
     for (const auto& [key, child] : t.children) n[key] = toYaml(child);
   }
@@ -76,16 +78,16 @@ std::string materialNames(const scene::Scene& scene) {
 }  // namespace
 
 std::vector<std::optional<physics::ResponseKernel>> materialDelays(const RunConfig& config,
-                                                                  const scene::Scene& scene,
-                                                                  const MaterialExtras& extras) {
+                                                                   const scene::Scene& scene,
+                                                                   const MaterialExtras& extras) {
   for (const MaterialConfig& entry : config.materials) {
     bool found = false;
     for (const scene::Material& m : scene.materials) found = found || m.name == entry.name;
     if (!found) {
       throw InputError(entry.at, "materials." + entry.name,
                        "the scene " + config.scene_file.filename().string() +
-                           " has no material of this name (its materials: " +
-                           materialNames(scene) + ")");
+                           " has no material of this name (its materials: " + materialNames(scene) +
+                           ")");
     }
   }
   std::vector<std::optional<physics::ResponseKernel>> delays;

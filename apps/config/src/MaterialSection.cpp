@@ -43,8 +43,8 @@ void refuseOtherModelsKeys(const ConfigNode& n, const std::string& model) {
     if (model == m.model) continue;
     for (const char* key : m.keys) {
       if (key && n.has(key)) {
-        n.failKey(key, std::string("is a key of model: ") + m.model + " (this is model: " + model +
-                           ")");
+        n.failKey(key,
+                  std::string("is a key of model: ") + m.model + " (this is model: " + model + ")");
       }
     }
   }
@@ -75,8 +75,7 @@ glm::dmat3 parseReemission(const ConfigNode& n) {
       char text[32];
       std::snprintf(text, sizeof text, "%.6g", sum);
       n.fail(std::string("column ") + kChannel[j] + " (light absorbed in " + kChannel[j] +
-             ") sums to " + text +
-             ": re-emission cannot add light (each column at most 1)");
+             ") sums to " + text + ": re-emission cannot add light (each column at most 1)");
     }
   }
   return m;
@@ -120,7 +119,8 @@ ScatteringDelayConfig parseScatteringDelay(const ConfigNode& parent, const TimeA
   if (!(k.fraction >= 0.0 && k.fraction <= 1.0)) {
     n.failKey("fraction", "must be in [0, 1] (got " + shortest(k.fraction) + ")");
   }
-  if (const auto reemission = n.optionalChild("reemission")) k.reemission = parseReemission(*reemission);
+  if (const auto reemission = n.optionalChild("reemission"))
+    k.reemission = parseReemission(*reemission);
   // The filter on this axis: a Gaussian's 16 sigma or a table's extent must
   // fit the stage's kMaxResponseTaps bins.
   try {
@@ -134,7 +134,8 @@ ScatteringDelayConfig parseScatteringDelay(const ConfigNode& parent, const TimeA
 }
 
 void parseMaterials(const ConfigNode& node, RunConfig& config) {
-  if (!node.isMap()) node.fail("expected a mapping of glTF material name -> {scattering_delay: ...}");
+  if (!node.isMap())
+    node.fail("expected a mapping of glTF material name -> {scattering_delay: ...}");
   config.materials_at = node.location();
   for (const std::string& name : node.keys()) {
     if (!node.has(name)) node.failKey(name, "expected {scattering_delay: ...} (got nothing)");

@@ -24,14 +24,13 @@ using MaterialExtras = std::vector<std::map<std::string, std::string>>;
 
 /// The scatteringDelay of each material of `scene` (read from
 /// config.scene_file; `extras`: its LoadReport::materialExtras, a material
-/// past its end has none), in Scene::materials order. Throws InputError for a `materials:` name the scene
-/// does not have (located at the entry, listing the scene's material names)
-/// and for bad extras (located by the glTF file and the material's index and
-/// name). The classes the delays make are checked where the renderer's rule
-/// is known (pipeline/ConfiguredScene.h).
+/// past its end has none), in Scene::materials order. Throws InputError for a `materials:` name the
+/// scene does not have (located at the entry, listing the scene's material names) and for bad
+/// extras (located by the glTF file and the material's index and name). The classes the delays make
+/// are checked where the renderer's rule is known (pipeline/ConfiguredScene.h).
 std::vector<std::optional<physics::ResponseKernel>> materialDelays(const RunConfig& config,
-                                                                  const scene::Scene& scene,
-                                                                  const MaterialExtras& extras);
+                                                                   const scene::Scene& scene,
+                                                                   const MaterialExtras& extras);
 
 /// Sets them: scene.materials[i].scatteringDelay = materialDelays(...)[i].
 void applyMaterialDelays(const RunConfig& config, scene::Scene& scene,
