@@ -10,6 +10,7 @@
 
 #include "Arrays.h"
 #include "tofsim/io/Npy.h"
+#include "tofsim/pipeline/ConfiguredScene.h"
 #include "tofsim/pipeline/NlosRender.h"
 #include "tofsim/pipeline/NlosScan.h"
 #include "tofsim/pipeline/Progress.h"
@@ -41,7 +42,7 @@ py::dict renderNlos(const config::RunConfig& config, const std::optional<std::st
   std::vector<std::string> files;
   {
     py::gil_scoped_release released;
-    const scene::Scene scene = scene::loadGltf(config.scene_file);
+    const scene::Scene scene = pipeline::loadConfiguredScene(config);
     scan = pipeline::planNlosScan(config, scene);
     if (outputDir) {
       pipeline::RunOptions options;

@@ -179,6 +179,22 @@ TEST_F(ConfigKeysWriterTest, EffectiveConfigWritesEveryDeclaredKey) {
   std::ofstream(dir_ / "rays.csv") << "0,0,1,0,0,-1\n";
   std::ofstream(dir_ / "r.yaml") << "scene: scene.gltf\nrays: {file: rays.csv}\nlight: {}\ntime: {}\n";
   leafPaths(YAML::Load(effectiveConfigYaml(loadRunConfig(dir_ / "r.yaml"))), "", written);
+  // Materials, one of each model (their keys exclude each other), the
+  // material's name written as the docs write it.
+  std::ofstream(dir_ / "kernel.csv") << "0,1\n1e-10,0\n";
+  for (const char* delay : {"{model: exponential, lifetime: 1 ns}",
+                            "{model: gaussian, mean: 1 ns, sigma: 10 ps}",
+                            "{model: table, file: kernel.csv}"}) {
+    std::ofstream(dir_ / "m.yaml") << "scene: scene.gltf\ncamera: {}\nlight: {}\ntime: {}\n"
+                                      "materials: {wax: {scattering_delay: "
+                                   << delay << "}}\n";
+    std::set<std::string> paths;
+    leafPaths(YAML::Load(effectiveConfigYaml(loadRunConfig(dir_ / "m.yaml"))), "", paths);
+    for (std::string p : paths) {
+      if (p.rfind("materials.wax", 0) == 0) p = "materials.<name>" + p.substr(13);
+      written.insert(p);
+    }
+  }
   written.erase("");
   std::set<std::string> declared;
   for (const ConfigKey& k : runConfigKeys()) declared.insert(k.path);

@@ -62,6 +62,31 @@ TEST_F(PreparedRendererTest, WhatReloadsIsDecidedByChangeFor) {
   EXPECT_NE(prepared.changeFor(base).what.find("contents"), std::string::npos);
 }
 
+// The materials' delays (issue 41) changing while the file stays: the scene
+// is copied with the new delays (a new object, which an IR renderer prepares
+// again), not loaded again; the same delays keep it.
+TEST_F(PreparedRendererTest, NewMaterialDelaysCopyTheSceneWithoutAReload) {
+  PreparedRenderer prepared;
+  const config::RunConfig base = with({});
+  prepared.prepare(base);
+  const scene::Scene* before = &prepared.scene();
+  ASSERT_EQ(before->materials.back().name, "default");  // the plane has no material of its own
+  EXPECT_FALSE(before->materials.back().scatteringDelay.has_value());
+  const config::RunConfig delayed =
+      with({{"materials.default.scattering_delay", "{model: exponential, lifetime: 1 ns}"}});
+  const SetupChange change = prepared.changeFor(delayed);
+  EXPECT_TRUE(change.scene);
+  EXPECT_FALSE(change.renderer);
+  EXPECT_EQ(change.what, "the materials' scattering delays (materials:)");
+  prepared.prepare(delayed);
+  EXPECT_EQ(prepared.sceneLoads(), 1u);
+  EXPECT_NE(&prepared.scene(), before);
+  ASSERT_TRUE(prepared.scene().materials.back().scatteringDelay.has_value());
+  EXPECT_DOUBLE_EQ(prepared.scene().materials.back().scatteringDelay->lifetime_s, 1e-9);
+  EXPECT_FALSE(prepared.changeFor(delayed).any());
+  EXPECT_TRUE(prepared.changeFor(base).scene);  // back to none
+}
+
 TEST_F(PreparedRendererTest, ReferenceSettingsMakeTheReferenceAgain) {
   PreparedRenderer prepared;
   const config::RunConfig reference = with({{"render.renderer", "reference"}});

@@ -1,7 +1,7 @@
 // A glTF material's `extras` reach the document as scalars by path
 // (MaterialDesc::extras): the per-material parameters the scene reads by name
-// (issue 41: a material's scattering delay from its extras). Arrays, nulls
-// and other materials' extras stay out.
+// (issue 41: a material's scattering delay from its extras), an array's
+// elements by index. Nulls and other materials' extras stay out.
 #include <gtest/gtest.h>
 
 #include <map>
@@ -32,6 +32,8 @@ TEST_F(GltfExtrasTest, MaterialExtrasAreScalarsByPath) {
   const std::map<std::string, std::string> expected = {
       {"albedo_scale", "0.5"},
       {"label", "x"},
+      {"list.0", "1"},
+      {"list.1", "2"},
       {"ok", "true"},
       {"scattering_delay.fraction", "0.59999999999999998"},
       {"scattering_delay.lifetime", "2.5000000000000001e-09"},

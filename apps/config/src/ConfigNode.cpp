@@ -92,8 +92,8 @@ void applyOverride(YAML::Node& root, const std::string& keyPath, const std::stri
   setAt(root, parts, 0, parseOverrideValue(keyPath, valueYaml), keyPath);
 }
 
-ConfigNode::ConfigNode(YAML::Node node, std::string file)
-    : node_(std::move(node)), shared_(std::make_shared<Shared>()) {
+ConfigNode::ConfigNode(YAML::Node node, std::string file, std::string rootPath)
+    : node_(std::move(node)), path_(std::move(rootPath)), shared_(std::make_shared<Shared>()) {
   shared_->file = std::move(file);
   if (!node_.IsMap()) fail("the document must be a mapping of keys to values");
 }

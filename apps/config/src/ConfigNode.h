@@ -18,8 +18,10 @@ namespace tofsim::config {
 
 class ConfigNode {
  public:
-  /// The root of a document. `file` is used in every error message.
-  ConfigNode(YAML::Node node, std::string file);
+  /// The root of a document. `file` is used in every error message;
+  /// `rootPath` prefixes every key path (a document inside another file: a
+  /// glTF material's extras, "materials[1] 'wax'.extras").
+  ConfigNode(YAML::Node node, std::string file, std::string rootPath = "");
 
   /// Records that the value at `keyPath` came from a command-line override, so
   /// errors under it name `source` (e.g. "--set camera.fov_y=abc") instead of

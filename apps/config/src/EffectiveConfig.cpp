@@ -7,6 +7,7 @@
 #include "FieldEmit.h"
 #include "LensConfig.h"
 #include "LightFields.h"
+#include "MaterialSection.h"
 #include "NlosFields.h"
 #include "OutputFields.h"
 #include "RaysFields.h"
@@ -217,6 +218,8 @@ std::string effectiveConfigYaml(const RunConfig& config) {
     output = kept;
   }
   root["output"] = output;
+  // Only when set: a config without materials keeps its effective bytes.
+  if (!config.materials.empty()) root["materials"] = materialsNode(config.materials);
   root["sensors"] = sensorsToYaml(config.sensors);
   YAML::Emitter out;
   out << root;

@@ -5,6 +5,7 @@
 
 #include "CameraConfigParser.h"
 #include "ConfigNode.h"
+#include "MaterialSection.h"
 #include "NlosConfigParser.h"
 #include "RayFile.h"
 #include "RunChecks.h"
@@ -139,6 +140,8 @@ RunConfig loadRunConfigYaml(YAML::Node yaml, const std::filesystem::path& file,
     root.failKey("time", "required key is missing (start, bin_width, bins)");
   }
   if (const auto render = root.optionalChild("render")) parseRender(*render, config);
+  config.materials_at = FileLoc{file.string()};
+  if (const auto materials = root.optionalChild("materials")) parseMaterials(*materials, config);
   checkVplCount(root, config);
   checkBackendCapabilities(root, config);
   if (const auto output = root.optionalChild("output")) parseOutput(*output, config, config.output);

@@ -1,11 +1,14 @@
 #include "tofsim/pipeline/AxisReport.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <vector>
 
 #include "Warning.h"
+#include "tofsim/physics/ResponseReach.h"
 #include "tofsim/pipeline/Capture.h"
+#include "tofsim/pipeline/ConfiguredScene.h"
 #include "tofsim/scene/AnimatedScene.h"
 #include "tofsim/scene/GltfLoader.h"
 #include "tofsim/sensors/WindowLoss.h"
@@ -52,6 +55,26 @@ std::string suggestAxis(const TimeAxis& axis, const capture::ArrivalBounds& boun
   return text;
 }
 
+// The arrival bounds of `job`, the materials' delays included: each of a
+// path's n delayed vertices (surfaceVertices) may add up to its kernel's
+// reach at kWindowLossWarning / n, so that all n together leave at most
+// kWindowLossWarning of the light beyond the sum (the union bound): n times
+// the largest reach, the worst case of a path whose every vertex has the
+// longest delay.
+capture::ArrivalBounds boundsWithDelays(const config::RunConfig& config,
+                                        const capture::RenderJob& job) {
+  const int32_t n = surfaceVertices(config);
+  capture::ArrivalBounds b = capture::arrivalBounds(job, n);
+  double reach = 0.0;
+  for (const scene::Material& m : job.scene->materials) {
+    if (m.scatteringDelay) {
+      reach = std::max(reach, physics::responseReach_s(*m.scatteringDelay, kWindowLossWarning / n));
+    }
+  }
+  b.delay_s = n * reach;
+  return b;
+}
+
 void warnOrThrow(const config::RunConfig& config, const std::string& key, const std::string& text) {
   if (config.strict) {
     throw InputError(FileLoc{config.config_file.string()}, key,
@@ -69,12 +92,14 @@ int32_t surfaceVertices(const config::RunConfig& config) {
 }
 
 AxisPrediction predictAxisCut(const config::RunConfig& config, const capture::RenderJob& job) {
-  const capture::ArrivalBounds b = capture::arrivalBounds(job, surfaceVertices(config));
+  const capture::ArrivalBounds b = boundsWithDelays(config, job);
   const TimeAxis& axis = job.settings.time;
   AxisPrediction p;
   if (!b.any) return p;
   const std::string bounds = "the scene's light arrives within " + ns(b.shortest_s()) + " .. " +
-                             ns(b.longest_s()) + " (bounds from its box, may be loose)";
+                             ns(b.longest_s()) + " (bounds from its box" +
+                             (b.delay_s > 0.0 ? " and its materials' delays, " + ns(b.delay_s) : "") +
+                             ", may be loose)";
   if (axis.end_s() <= b.shortest_s() || axis.start_s >= b.longest_s()) {
     const bool late = axis.end_s() <= b.shortest_s();
     p.verdict = AxisPrediction::Verdict::Cuts;
@@ -105,9 +130,11 @@ void validateTimeAxis(const config::RunConfig& config) {
   // A sequence's scene is read with its animations, as its render reads it
   // first, so that their errors (a keyframe past the scene bound, a zero
   // quaternion) come from `validate` too.
-  const scene::Scene scene = config.sequence
-                                 ? scene::AnimatedScene::load(config.scene_file).restScene()
-                                 : scene::loadGltf(config.scene_file);
+  scene::LoadReport report;
+  scene::Scene scene = config.sequence
+                           ? scene::AnimatedScene::load(config.scene_file, &report).restScene()
+                           : scene::loadGltf(config.scene_file, &report);
+  configureScene(config, scene, report);
   checkAxisBeforeRender(config, makeRenderJob(config, scene), true);
 }
 
@@ -130,7 +157,7 @@ void checkAxisAfterRender(const config::RunConfig& config, const capture::Render
     if (before)
       sides.push_back(percent(f.before) + " of the light arrives before the first bin (" +
                       ns(axis.start_s) + ")");
-    const capture::ArrivalBounds b = capture::arrivalBounds(job, surfaceVertices(config));
+    const capture::ArrivalBounds b = boundsWithDelays(config, job);
     warnOrThrow(config, "time",
                 sides[0] + (sides.size() > 1 ? " and " + sides[1] : "") +
                     suggestAxis(axis, b, before, after, !(result.onAxisEnergy > 0.0)));

@@ -2,7 +2,9 @@
 
 #include <system_error>
 
+#include "tofsim/config/MaterialDelays.h"
 #include "tofsim/ir/IrRenderer.h"
+#include "tofsim/pipeline/ConfiguredScene.h"
 #include "tofsim/util/Error.h"
 
 namespace tofsim::pipeline {
@@ -30,6 +32,13 @@ PreparedRenderer::SceneKey PreparedRenderer::sceneKey(const fs::path& file) {
   return key;
 }
 
+std::vector<std::optional<physics::ResponseKernel>> PreparedRenderer::delaysOf(
+    const scene::Scene& scene) {
+  std::vector<std::optional<physics::ResponseKernel>> delays;
+  for (const scene::Material& m : scene.materials) delays.push_back(m.scatteringDelay);
+  return delays;
+}
+
 RendererSpec PreparedRenderer::specFor(const config::RunConfig& config) const {
   if (config.renderer == config::RendererKind::InstantRadiosity &&
       config.backend == config::IrBackendKind::Auto && !autoBackend_) {
@@ -45,6 +54,9 @@ SetupChange PreparedRenderer::changeFor(const config::RunConfig& config) const {
     change.what = sceneKey_ && sceneKey_->file == sceneKey(config.scene_file).file
                       ? "the scene file's contents (" + config.scene_file.string() + ")"
                       : "the scene (" + config.scene_file.string() + ")";
+  } else if (config::materialDelays(config, *scene_, report_.materialExtras) != delaysOf(*scene_)) {
+    change.scene = true;
+    change.what = "the materials' scattering delays (materials:)";
   }
   if (spec_) {
     const RendererSpec spec = specFor(config);
@@ -68,9 +80,16 @@ SetupChange PreparedRenderer::prepare(const config::RunConfig& config) {
     renderer_ = {};
     spec_.reset();
   }
-  if (change.scene) {
+  const bool sameFile = sceneKey_ && sceneKey(config.scene_file) == *sceneKey_;
+  if (change.scene && sameFile) {
+    // Only the delays changed: a copy with the new ones, not a reload.
+    auto scene = std::make_unique<scene::Scene>(*scene_);
+    config::applyMaterialDelays(config, *scene, report_.materialExtras);
+    scene_ = std::move(scene);
+    if (renderer_.renderer) renderer_.renderer->sceneChanged();
+  } else if (change.scene) {
     scene::LoadReport report;
-    auto scene = std::make_unique<scene::Scene>(scene::loadGltf(config.scene_file, &report));
+    auto scene = std::make_unique<scene::Scene>(loadConfiguredScene(config, &report));
     // A new object: a renderer kept across prepares it again at its next
     // render (IrRenderer compares the scene it holds by address).
     scene_ = std::move(scene);
@@ -79,6 +98,8 @@ SetupChange PreparedRenderer::prepare(const config::RunConfig& config) {
     ++sceneLoads_;
     if (renderer_.renderer) renderer_.renderer->sceneChanged();
   }
+  // render.indirect.bounces may change with the scene kept.
+  checkResponseClasses(config, *scene_);
   return change;
 }
 

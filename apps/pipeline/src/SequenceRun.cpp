@@ -21,6 +21,7 @@
 #include "tofsim/pipeline/CaptureLoop.h"
 #include "tofsim/pipeline/Manifest.h"
 #include "tofsim/pipeline/OutputFileNames.h"
+#include "tofsim/pipeline/ConfiguredScene.h"
 #include "tofsim/pipeline/PreparedRenderer.h"
 #include "tofsim/pipeline/RenderCapture.h"
 #include "tofsim/pipeline/RunContentKey.h"
@@ -249,13 +250,15 @@ FramePlan planFrames(const config::RunConfig& config, const fs::path& root, cons
 // re-prepared in place per frame, and the scene, whose moving meshes and
 // cameras alone are re-baked at each time. `summary`: the last frame's render.
 void renderFrames(const config::RunConfig& config, const FramePlan& plan,
-                  const scene::AnimatedScene& animated, PreparedRenderer& prepared, const json& key,
-                  const RunOptions& options, Progress& progress, RunSummary& summary) {
+                  const scene::AnimatedScene& animated, const scene::LoadReport& report,
+                  PreparedRenderer& prepared, const json& key, const RunOptions& options,
+                  Progress& progress, RunSummary& summary) {
   const std::vector<double>& times = config.sequence->times_s;
   const RendererChoice& renderer = prepared.renderer(config);
   progress.message("device: " + renderer.renderer->description() + " (backend " + renderer.backend +
                    ")");
   scene::Scene scene = animated.restScene();
+  configureScene(config, scene, report);  // checked before anything was written (runSequenceRender)
   std::optional<FrameCapture> current;
   CaptureLoopOptions loop;
   loop.withinCapture = [&](std::size_t d, std::size_t total, const std::string& what) {
@@ -342,6 +345,14 @@ RunSummary runSequenceRender(const config::RunConfig& config, PreparedRenderer& 
   const scene::AnimatedScene animated = scene::AnimatedScene::load(config.scene_file, &report);
   reportLoad(report, progress, true);
   checkFrameTimes(seq, animated, config.scene_file);
+  {
+    // The materials' delays on a copy of the materials alone, so that their
+    // errors come before anything is written (renderFrames applies them to
+    // its scene).
+    scene::Scene materials;
+    materials.materials = animated.restScene().materials;
+    configureScene(config, materials, report);
+  }
 
   RunSummary summary;
   summary.outputDirectory =
@@ -360,7 +371,7 @@ RunSummary runSequenceRender(const config::RunConfig& config, PreparedRenderer& 
   const json key = keyJson(runKey);
 
   const FramePlan plan = planFrames(config, root, partial, key, progress);
-  renderFrames(config, plan, animated, prepared, key, options, progress, summary);
+  renderFrames(config, plan, animated, report, prepared, key, options, progress, summary);
 
   // The new set: the frames, then the sequence's own files.
   linkFrames(plan.done, folder.staging());

@@ -61,7 +61,7 @@ bool lightMayBeSeen(const RenderJob& job) {
 }  // namespace
 
 double ArrivalBounds::shortest_s() const { return shortest_m / kSpeedOfLight_m_per_s; }
-double ArrivalBounds::longest_s() const { return longest_m / kSpeedOfLight_m_per_s; }
+double ArrivalBounds::longest_s() const { return longest_m / kSpeedOfLight_m_per_s + delay_s; }
 
 ArrivalBounds arrivalBounds(const RenderJob& job, int32_t surfaceVertices) {
   TOFSIM_CHECK(job.scene != nullptr && surfaceVertices >= 1);

@@ -120,8 +120,10 @@ struct MaterialDesc {
   /// emission, normal and occlusion textures, alpha, then every extension.
   std::vector<std::string> ignored;
   /// The material's `extras`, its scalars by their path ("a.b" for member b
-  /// of object a; numbers as "%.17g" text, booleans as true/false): the
-  /// per-material parameters the scene reads by name (convertMaterials).
+  /// of object a, "a.0" for element 0 of array a; numbers as "%.17g" text,
+  /// booleans as true/false): passed on in LoadReport::materialExtras, where
+  /// the config layer reads the per-material parameters by name
+  /// (scattering_delay).
   std::map<std::string, std::string> extras;
 };
 

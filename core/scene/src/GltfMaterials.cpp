@@ -97,6 +97,7 @@ void convertMaterials(const GltfDocument& doc, Scene& scene, LoadReport& report)
     report.emissiveMaterials += m.emissive;
     report.transmissiveMaterials += m.transmissive;
     report.ignoredMaterialParts.push_back(m.ignored);
+    report.materialExtras.push_back(m.extras);
     scene.materials.push_back(std::move(out));
   }
 }

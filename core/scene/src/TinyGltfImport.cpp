@@ -98,12 +98,18 @@ Primitive convert(const tinygltf::Primitive& p) {
 // and the BRDF's dielectric F0 is the pinned 0.04 (shaders/gltf_brdf.glsl), so
 // KHR_materials_ior and KHR_materials_specular do not change it.
 // The scalars of `value` (an extras object) into `out` by their path below
-// `prefix`; arrays and nulls are left out (no per-material parameter is one).
+// `prefix`, an array's elements by their index ("reemission.0.2": a matrix's
+// row 0, column 2); nulls are left out.
 void flattenExtras(const tinygltf::Value& value, const std::string& prefix,
                    std::map<std::string, std::string>& out) {
   if (value.IsObject()) {
     for (const std::string& key : value.Keys()) {
       flattenExtras(value.Get(key), prefix.empty() ? key : prefix + "." + key, out);
+    }
+  } else if (value.IsArray()) {
+    for (std::size_t i = 0; i < value.ArrayLen(); ++i) {
+      const std::string index = std::to_string(i);
+      flattenExtras(value.Get(static_cast<int>(i)), prefix.empty() ? index : prefix + "." + index, out);
     }
   } else if (value.IsNumber()) {
     char text[32];

@@ -21,6 +21,7 @@
 #include "tofsim/config/NlosConfig.h"
 #include "tofsim/config/SequenceConfig.h"
 #include "tofsim/optics/PsfKernel.h"
+#include "tofsim/physics/TemporalResponse.h"
 #include "tofsim/sensors/SensorSpec.h"
 
 namespace tofsim::config {
@@ -140,6 +141,25 @@ inline constexpr int32_t kMaxTimeBins = 1 << 20;
 /// itself has none: 0 bins of 0 s).
 inline constexpr TimeAxis kDefaultTimeAxis{.start_s = 0.0, .bin_width_s = 10e-12, .bins = 512};
 
+/// materials.<name>.scattering_delay (MaterialDelays.h): a glTF material's
+/// temporal response, which replaces its glTF extras' whole.
+struct ScatteringDelayConfig {
+  /// The kernel; none: `scattering_delay: none`, instant whatever the
+  /// extras say.
+  std::optional<physics::ResponseKernel> kernel;
+  std::string table_file;        ///< model: table: the kernel's file (absolute)
+  std::string delay_unit = "s";  ///< model: table: its delays' unit
+};
+
+/// One `materials:` entry, keyed by the glTF material's name.
+struct MaterialConfig {
+  std::string name;
+  ScatteringDelayConfig scattering_delay;
+  /// Where the entry is, for the errors found once the scene is read (a
+  /// name the scene does not have).
+  FileLoc at;
+};
+
 struct RunConfig {
   std::filesystem::path config_file;
   std::filesystem::path scene_file;  ///< resolved against the config's folder
@@ -168,6 +188,12 @@ struct RunConfig {
   /// volume, and by `tofsim sense` on a saved one, with seed render.seed.
   /// Names are unique and usable as folder names.
   std::vector<sensors::SensorSpec> sensors;
+  /// The `materials:` entries, in file order (names unique); applied to the
+  /// scene by config::loadConfiguredScene (MaterialDelays.h).
+  std::vector<MaterialConfig> materials;
+  /// Where `materials:` is (the config file when absent): errors about the
+  /// materials' delays found once the scene is read are located there.
+  FileLoc materials_at;
 };
 
 /// One `--set key.path=value` override, applied before validation.

@@ -7,7 +7,9 @@
 //   - kept: the camera, the light, the time axis, the render settings, the
 //     sensors and the outputs (each render's job is made from its config);
 //   - the scene loaded again: another scene file, or the same file changed
-//     on disk (its size or modification time);
+//     on disk (its size or modification time); the scene copied with its
+//     materials' new scattering delays when only `materials:` (or an axis
+//     that changes how the extras read) changes them;
 //   - the renderer made again: another render.renderer, render.backend (as
 //     resolved, auto included), render.threads or render.reference.*.
 // IR renderers prepare the scene (buffers, BVH) on their first render of it
@@ -18,6 +20,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "tofsim/config/RunConfig.h"
 #include "tofsim/gl/Context.h"
@@ -77,6 +80,7 @@ class PreparedRenderer {
     bool operator==(const SceneKey&) const = default;
   };
   static SceneKey sceneKey(const std::filesystem::path& file);
+  static std::vector<std::optional<physics::ResponseKernel>> delaysOf(const scene::Scene& scene);
 
   gl::EglPlatform eglPlatform_;
   /// render.backend: auto, decided once (it asks EGL for a hardware GPU).

@@ -17,6 +17,10 @@ struct ArrivalBounds {
   bool any = false;         ///< false: no surface and no visible light, nothing can arrive
   double shortest_m = 0.0;  ///< optical path (index of refraction x length), metres
   double longest_m = 0.0;   ///< optical path, metres
+  /// The materials' scattering delays past the longest path (issue 41; set
+  /// by the caller that knows the loss it tolerates: apps/pipeline
+  /// AxisReport), seconds; longest_s includes it.
+  double delay_s = 0.0;
 
   double shortest_s() const;
   double longest_s() const;

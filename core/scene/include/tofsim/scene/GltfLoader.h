@@ -29,6 +29,7 @@
 
 #include <cstddef>
 #include <filesystem>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -52,6 +53,12 @@ struct LoadReport {
   /// material, added after them, has none): the parts no renderer reads, e.g.
   /// "emission", "normalTexture", "KHR_materials_ior (dielectric F0 stays 0.04)".
   std::vector<std::vector<std::string>> ignoredMaterialParts;
+  /// Per material of the file (Scene::materials order, the default material
+  /// none): its glTF `extras`, the scalars by path ("a.b" for member b of
+  /// object a, "a.0" for element 0 of array a; numbers as "%.17g" text), for
+  /// the config layer to read its per-material parameters from
+  /// (config::materialDelays: scattering_delay).
+  std::vector<std::map<std::string, std::string>> materialExtras;
   std::vector<std::string> warnings;  ///< tinygltf's warnings and the loader's own
 };
 
