@@ -215,6 +215,7 @@ TEST(ScatteringDelayTest, ATableOfAnExponentialRendersAsTheExponential) {
   DelayedPlane plane;
   const int bins = plane.job.settings.time.bins;
   const double tau = 50.0, f = 0.6, bin_s = plane.binWidth_s();
+  const Rendered instant = render(plane.job);
   plane.scene.materials[0].scatteringDelay = exponential(tau * bin_s, f);
   const Rendered reference = render(plane.job);
   // Quarter-bin points out to 15 lifetimes: piecewise linear, the
@@ -239,7 +240,15 @@ TEST(ScatteringDelayTest, ATableOfAnExponentialRendersAsTheExponential) {
     worst = std::max(worst, std::abs(double(b[i]) - a[i]) / (double(a[i]) + 1e-4 * peak));
   }
   EXPECT_LT(worst, 1e-3);
-  (void)bins;
+  // and that is the exponential's: the prompt share and tap 0 in the arrival bin.
+  for (std::size_t p = 0; p < 48; ++p) {
+    const Arrival at = arrivalOf(instant.volumes.at("direct"), p, bins);
+    ASSERT_GE(at.bin, 0);
+    const double e = at.energy[0] + at.energy[1] + at.energy[2];
+    const float* y = &b[(p * bins + at.bin) * kChannels];
+    EXPECT_NEAR(double(y[0]) + y[1] + y[2], (1.0 - f + f * boxedExponential(tau, 0)) * e, 1e-4 * e)
+        << "pixel " << p;
+  }
 }
 
 // A corner (floor y = 0, wall z = 0) seen from above the floor: every pixel
@@ -336,10 +345,17 @@ INSTANTIATE_TEST_SUITE_P(PointSamplesAndFootprint, DelayedWallTest, ::testing::B
 
 TEST(ScatteringDelayTest, BounceVolumesOfADelayedWallStillAddUpToTheIndirectOne) {
   FloorView view;
+  const int bins = view.job.settings.time.bins;
+  const double tau = 20.0, f = 0.7;
+  const Rendered instant = render(view.job);  // one bounce
   view.job.settings.indirect.bounces = 2;
   view.job.settings.indirect.vpls_per_bounce = 500;
-  view.scene.materials[1].scatteringDelay = exponential(20.0 * view.job.settings.time.bin_width_s, 0.7);
+  view.scene.materials[1].scatteringDelay =
+      exponential(tau * view.job.settings.time.bin_width_s, f);
   const Rendered r = render(view.job);
+  // Bounce 1 is the wall VPLs' light, delayed by the wall's kernel.
+  expectConvolved(r.volumes.at("bounce1"), convolved(instant.volumes.at("indirect"), bins, tau, f, 1),
+                  bins);
   const std::vector<float>& b1 = r.volumes.at("bounce1");
   const std::vector<float>& b2 = r.volumes.at("bounce2");
   std::vector<float> sum(b1.size());
