@@ -365,7 +365,8 @@ void CpuBackend::gatherPixelBlock(const IndirectConstants& c, std::size_t first,
   }
 }
 
-void CpuBackend::depositDelayedLanes(const IndirectConstants& c, std::size_t first, std::size_t n,
+// Out of line: the instant renders' gather keeps the code it had.
+[[gnu::noinline]] void CpuBackend::depositDelayedLanes(const IndirectConstants& c, std::size_t first, std::size_t n,
                                      std::size_t i, std::size_t perPixel,
                                      const PixelSurface* surfaces, const unsigned char* lit,
                                      VplTerms* terms) {
