@@ -17,13 +17,20 @@
 #include <map>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "support/TestJobs.h"
 #include "tofsim/capture/SegmentSink.h"
 #include "tofsim/cpu/CpuBackend.h"
 #include "tofsim/ir/IrRenderer.h"
+#include "RsmVpls.h"
+#include "tofsim/ir/BounceVpls.h"
+#include "tofsim/ir/MaterialVertex.h"
+#include "tofsim/physics/ResponseClassTable.h"
 #include "tofsim/physics/TemporalResponse.h"
+#include "tofsim/rays/RayScene.h"
+#include "tofsim/util/Error.h"
 
 namespace tofsim::cpu {
 namespace {
@@ -364,6 +371,56 @@ TEST(ScatteringDelayTest, BounceVolumesOfADelayedWallStillAddUpToTheIndirectOne)
   double second = 0.0;
   for (const float v : b2) second += v;
   EXPECT_GT(second, 0.0);
+}
+
+// Every VPL's class (flux.w): a first-bounce VPL's is its surface's kernel, a
+// later one's its parent's then its own surface's. With the wall alone
+// delayed (base kernel 1; neither plane lights itself, so a child's parent
+// is on the other plane): bounce 1 on the wall {1}, on the floor {}; bounce
+// 2 all {1} (floor children of wall parents, wall children of floor
+// parents); bounce 3 on the floor {1}, on the wall {1, 1}.
+TEST(ScatteringDelayTest, EachVplsClassIsItsParentsThenItsSurfaces) {
+  FloorView view;
+  view.scene.materials[1].scatteringDelay = exponential(1e-10, 0.5);
+  const physics::ResponseClassTable table =
+      physics::ResponseClassTable::build(ir::materialResponses(view.scene).kernels, 3);
+  ASSERT_EQ(table.classCount(), 4u);  // {}, {1}, {1, 1}, {1, 1, 1}
+  const rays::RayScene rays(view.scene, 1);
+  std::vector<ir::Vpl> first =
+      traceRsmVpls(rays, view.job.light, 16, 1, 1.0, physics::VERTEX_LAMBERTIAN, 1, std::nullopt,
+                   &table);
+  view.job.settings.indirect.bounces = 3;
+  view.job.settings.indirect.vpls_per_bounce = 400;
+  const ir::BouncedVpls b = ir::withLaterBounces(view.job, rays, first, &table);
+  const float expected[3][2] = {{0.0f, 1.0f}, {1.0f, 1.0f}, {1.0f, 2.0f}};  // [bounce][on wall]
+  for (int32_t k = 1; k <= 3; ++k) {
+    std::size_t onWall = 0;
+    for (std::size_t i = b.firstOfBounce[k - 1]; i < b.firstOfBounce[k]; ++i) {
+      const bool wall = b.vpls[i].normal.z > 0.5f;
+      onWall += wall;
+      EXPECT_EQ(b.vpls[i].flux.w, expected[k - 1][wall]) << "bounce " << k << ", VPL " << i;
+    }
+    EXPECT_GT(onWall, 0u) << "bounce " << k;
+    EXPECT_LT(onWall, b.countOf(k)) << "bounce " << k;
+  }
+}
+
+// Over 64 classes the render stops with an InputError that names the setting.
+TEST(ScatteringDelayTest, TooManyResponseClassesAreAnInputError) {
+  DelayedPlane plane;
+  plane.job.settings.indirect.enabled = true;
+  for (int i = 0; i < 10; ++i) {
+    scene::Material m = plane.scene.materials[0];
+    m.name = "delayed" + std::to_string(i);
+    m.scatteringDelay = exponential((i + 1) * 1e-10, 0.5);
+    plane.scene.materials.push_back(m);
+  }
+  try {
+    render(plane.job);  // 1 + 10 + 55 classes on paths of two delayed vertices
+    ADD_FAILURE() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("render.indirect.bounces"), std::string::npos) << e.what();
+  }
 }
 
 }  // namespace
