@@ -423,5 +423,28 @@ TEST(ScatteringDelayTest, TooManyResponseClassesAreAnInputError) {
   }
 }
 
+// Two delayed vertices on a path: the floor and the wall share one kernel and
+// the camera sees the wall, whose indirect light all comes from the floor's
+// VPLs (class {k, k}): the undelayed render's convolved with the kernel
+// twice; its direct light (class {k}) once. Needs the cascade stage of
+// issue 41 (stage41): with the interim one-stage-per-class path
+// (physics::singleStages) a class of two members is filtered once.
+TEST(ScatteringDelayTest, TwoDelayedVerticesOnAPathConvolveTheKernelWithItself) {
+  FloorView view;
+  view.job.camera().position_world = {0.0f, 1.2f, 2.0f};
+  view.job.camera().look_at_world = {0.0f, 1.2f, 0.0f};
+  const int bins = view.job.settings.time.bins;
+  const double tau = 20.0, f = 0.7;
+  const Rendered instant = render(view.job);
+  const physics::ResponseKernel k = exponential(tau * view.job.settings.time.bin_width_s, f);
+  view.scene.materials[0].scatteringDelay = k;
+  view.scene.materials[1].scatteringDelay = k;
+  const Rendered delayed = render(view.job);
+  expectConvolved(delayed.volumes.at("direct"),
+                  convolved(instant.volumes.at("direct"), bins, tau, f, 1), bins);
+  expectConvolved(delayed.volumes.at("indirect"),
+                  convolved(instant.volumes.at("indirect"), bins, tau, f, 2), bins);
+}
+
 }  // namespace
 }  // namespace tofsim::cpu
