@@ -135,7 +135,7 @@ std::vector<ir::Vpl> CpuBackend::generateVpls(const capture::RenderJob& job) {
   return traceRsmVpls(*scene_, job.light, s.rsm_resolution, s.rsm_edge_samples,
                       job.settings.time.index_of_refraction,
                       ir::vertexModelOf(job.settings.materials), threads_,
-                      litBounds_->of(job.light));
+                      litBounds_->of(job.light), &responseClasses_);
 }
 
 void CpuBackend::setVpls(const std::vector<ir::Vpl>& vpls) {
@@ -221,7 +221,8 @@ void CpuBackend::mergeSegmentSamples(std::size_t count) {
     bool constant = true;
     for (std::size_t i = first; i < first + samples; ++i) {
       const physics::ScatterVertex& vertex = segmentSurfaces_[i].vertex;
-      constant = constant && physics::scatterIsConstant(vertex) && physics::vertexOnSurface(vertex);
+      constant = constant && physics::scatterIsConstant(vertex) && physics::vertexOnSurface(vertex) &&
+                 vertex.response == segmentSurfaces_[first].vertex.response;
     }
     if (constant) {
       mergePixelSamples(&segmentSurfaces_[first], &segmentLit_[first], n, mergedSurfaces_);
@@ -274,6 +275,7 @@ struct CpuBackend::IndirectConstants {
   GatherConstants kernel;  ///< vplTerms'
   bool exact = false;      ///< render.indirect.visibility: exact, an occlusion ray each
   float eps = 0.0f;        ///< the exact visibility rays' end offsets, m
+  bool delayed = false;    ///< the render has delayed response classes
 };
 
 CpuBackend::IndirectConstants CpuBackend::indirectConstants() const {
@@ -291,6 +293,7 @@ CpuBackend::IndirectConstants CpuBackend::indirectConstants() const {
   c.bins = s.time.bins;
   ic.exact = indirectVisibility_ && s.indirect.visibility == capture::Visibility::Exact;
   ic.eps = 1e-4f * sceneScale_m_;  // as indirect_gather.comp's exact visibility
+  ic.delayed = !responses_->empty();
   return ic;
 }
 
@@ -336,6 +339,7 @@ void CpuBackend::gatherPixelBlock(const IndirectConstants& c, std::size_t first,
       ism->cullHidden(first, n, sceneScale_m_, surfaces[s].n, surfaces[s].cosineOffset, terms[s]);
     }
   }
+  if (c.delayed) depositDelayedLanes(c, first, n, i, perPixel, surfaces, lit, terms);
   std::size_t visible = 0;  // contributions in `pairs`
   if (footprint && !exact) {
     // ISMs or no visibility: the verdicts are in the bins already, so the
@@ -358,6 +362,44 @@ void CpuBackend::gatherPixelBlock(const IndirectConstants& c, std::size_t first,
     const std::size_t stride = static_cast<std::size_t>(bins) * kChannels;
     depositFootprints(terms, pairs, visible, bins, histogram, footprint_.data() + i * stride, lost,
                       footprintBins_[i].first, footprintBins_[i].last);
+  }
+}
+
+// Out of line: the instant renders' gather keeps the code it had.
+[[gnu::noinline]] void CpuBackend::depositDelayedLanes(const IndirectConstants& c, std::size_t first, std::size_t n,
+                                     std::size_t i, std::size_t perPixel,
+                                     const PixelSurface* surfaces, const unsigned char* lit,
+                                     VplTerms* terms) {
+  const VplArrays& v = *vpls_;
+  const physics::ResponseClassTable& table = responseClasses_;
+  physics::OffAxisSums& lost = outside_[i];
+  // VPL by VPL and, for each, sample by sample: the order of the instant
+  // light's deposits, so each class's sums are in a fixed order too.
+  for (std::size_t k = 0; k < n; ++k) {
+    const std::size_t vpl = first + k;
+    const uint32_t from = v.responseClass.empty() ? 0u : v.responseClass[vpl];
+    for (std::size_t s = 0; s < perPixel; ++s) {
+      if (lit && !lit[s]) continue;
+      VplTerms& t = terms[s];
+      if (t.bin[k] == kNoLight) continue;
+      const PixelSurface& surface = surfaces[s];
+      const uint32_t cls = table.then(from, static_cast<uint32_t>(surface.vertex.response));
+      if (cls == 0) continue;
+      TOFSIM_CHECK(cls != physics::ResponseClassTable::kNoClass);
+      const int32_t bin = t.bin[k];
+      t.bin[k] = kNoLight;  // the instant passes skip it
+      if (c.exact) {
+        const glm::vec3 from3 = glm::vec3(v.px[vpl], v.py[vpl], v.pz[vpl]) +
+                                glm::vec3(v.nx[vpl], v.ny[vpl], v.nz[vpl]) * c.eps;
+        if (scene_->occluded(from3, surface.x + surface.n * c.eps)) continue;
+      }
+      // Without the footprint a spike in the instant light's bin (the point
+      // sample's sub-bin position is not kept, core/physics/temporal_response.md).
+      const glm::vec3 kernel = c.kernel.footprint
+                                   ? glm::vec3(t.centre[k], t.wide[k], t.narrow[k])
+                                   : glm::vec3(static_cast<float>(bin) + 0.5f, 0.0f, 0.0f);
+      responses_->deposit(i, cls, kernel, glm::vec3(t.r[k], t.g[k], t.b[k]), lost);
+    }
   }
 }
 

@@ -7,6 +7,7 @@
 #include "GatherKernel.h"
 #include "GatherTiles.h"
 #include "ParallelFor.h"
+#include "ResponseClasses.h"
 #include "tofsim/capture/ThinLens.h"
 #include "tofsim/cpu/CpuBackend.h"
 #include "tofsim/ir/SurfaceImage.h"
@@ -34,6 +35,7 @@ struct CpuBackend::DirectConstants {
   float eta = 1.0f;      ///< index of refraction
   int bins = 0;
   bool footprint = false;  ///< render.pixel_footprint
+  bool delayed = false;    ///< the render has delayed response classes
 };
 
 /// One sample's direct light, before its share of the pixel.
@@ -53,6 +55,7 @@ CpuBackend::DirectConstants CpuBackend::directConstants() const {
   c.eta = static_cast<float>(s.time.index_of_refraction);
   c.bins = s.time.bins;
   c.footprint = s.pixel_footprint;
+  c.delayed = !responses_->empty();
   return c;
 }
 
@@ -98,6 +101,11 @@ void CpuBackend::gatherDirectPixel(const DirectConstants& c, std::size_t i) {
     if (!segmentLit_[sample]) continue;
     DirectLight light;
     if (!directLight(c, sample, light)) continue;
+    // The sample's own surface is the path's only delayed vertex.
+    const uint32_t cls =
+        c.delayed ? responseClasses_.single(
+                        static_cast<uint32_t>(segmentSurfaces_[sample].vertex.response))
+                  : 0u;
     if (c.footprint) {
       const PixelSurface& surface = segmentSurfaces_[sample];
       const glm::vec2 steps = physics::pathStepsAcrossPixel(
@@ -106,7 +114,9 @@ void CpuBackend::gatherDirectPixel(const DirectConstants& c, std::size_t i) {
           surface.dxdu, surface.dxdv);
       const glm::vec3 kernel = physics::footprintKernel(light.path_m, steps, c.start_m, c.width_m);
       const glm::vec3 value = light.radiance * weight;
-      if (physics::footprintIsNarrow(kernel)) {
+      if (cls != 0) {
+        responses_->deposit(i, cls, kernel, value, lost);
+      } else if (physics::footprintIsNarrow(kernel)) {
         physics::depositNarrow(histogram, c.bins, kernel, value, lost);
       } else {
         physics::depositWide(footprintOf(i, kernel), c.bins, kernel, value, lost);
@@ -116,11 +126,17 @@ void CpuBackend::gatherDirectPixel(const DirectConstants& c, std::size_t i) {
     // Point sampling (render.pixel_footprint: false): the bytes of before
     // the footprint existed when there is one sample.
     const glm::vec3 value = perPixel == 1 ? light.radiance : light.radiance * weight;
-    physics::depositInBin(histogram, c.bins, physics::binOfPath(light.path_m, c.start_m, c.width_m),
-                          1.0f, value, lost);
+    const int bin = physics::binOfPath(light.path_m, c.start_m, c.width_m);
+    if (cls != 0) {
+      // A spike in the instant light's bin (its sub-bin position not kept).
+      responses_->deposit(i, cls, glm::vec3(static_cast<float>(bin) + 0.5f, 0.0f, 0.0f), value,
+                          lost);
+      continue;
+    }
+    physics::depositInBin(histogram, c.bins, bin, 1.0f, value, lost);
   }
-  // The footprint buffer is the indirect gathers' next.
-  if (c.footprint) integratePixel(i, histogram);
+  // The footprint buffer and the delayed classes are the indirect gathers' next.
+  if (c.footprint || c.delayed) integratePixel(i, histogram);
 }
 
 }  // namespace tofsim::cpu

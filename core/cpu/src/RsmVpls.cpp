@@ -9,6 +9,7 @@
 #include "tofsim/ir/MaterialVertex.h"
 #include "tofsim/ir/RsmEdgeTexels.h"
 #include "tofsim/ir/RsmTexels.h"
+#include "tofsim/ir/VplClasses.h"
 
 namespace tofsim::cpu {
 
@@ -38,7 +39,8 @@ std::optional<ir::Vpl> texelVpl(const rays::RayScene& scene, const capture::Ligh
 std::vector<ir::Vpl> traceRsmVpls(const rays::RayScene& scene, const capture::Light& light,
                                   int resolution, int edgeSamples, double indexOfRefraction,
                                   int vertexModel, int threads,
-                                  const std::optional<scene::Bounds>& lit) {
+                                  const std::optional<scene::Bounds>& lit,
+                                  const physics::ResponseClassTable* classes) {
   const std::vector<physics::ScatterVertex> materials =
       ir::materialVertices(scene.scene(), vertexModel);
   const auto trace = [&](const ir::RsmView& view, int side, int x, int y) {
@@ -83,6 +85,8 @@ std::vector<ir::Vpl> traceRsmVpls(const rays::RayScene& scene, const capture::Li
         std::move(texels), resolution, ir::rsmEdgeSamples(edgeSamples, resolution), subTexels);
     vpls.insert(vpls.end(), ofView.begin(), ofView.end());
   }
+  // After the edge texels' merges, which sum their members' fluxes.
+  if (classes != nullptr) ir::setFirstBounceClasses(vpls, *classes);
   return vpls;
 }
 

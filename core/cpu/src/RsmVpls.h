@@ -10,13 +10,15 @@
 // are not clipped. `vertexModel`: the surfaces' (ir::rsmTexelVpl). `lit`: texels whose
 // ray misses this box trace no ray (LitBounds.h). `edgeSamples`
 // (render.indirect.rsm_edge_samples): the texels at edges from their
-// sub-texels' rays (ir::rsmViewVpls).
+// sub-texels' rays (ir::rsmViewVpls). `classes`: each VPL's response class
+// (ir::setFirstBounceClasses; null: none).
 
 #include <optional>
 #include <vector>
 
 #include "tofsim/capture/Light.h"
 #include "tofsim/ir/IrBackend.h"
+#include "tofsim/physics/ResponseClassTable.h"
 #include "tofsim/rays/RayScene.h"
 
 namespace tofsim::cpu {
@@ -24,6 +26,7 @@ namespace tofsim::cpu {
 std::vector<ir::Vpl> traceRsmVpls(const rays::RayScene& scene, const capture::Light& light,
                                   int rsmResolution, int edgeSamples, double indexOfRefraction,
                                   int vertexModel, int threads,
-                                  const std::optional<scene::Bounds>& lit = std::nullopt);
+                                  const std::optional<scene::Bounds>& lit = std::nullopt,
+                                  const physics::ResponseClassTable* classes = nullptr);
 
 }  // namespace tofsim::cpu

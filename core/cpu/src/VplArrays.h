@@ -7,6 +7,7 @@
 // all of them are for Lambertian VPLs), which `scattering` says.
 
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 
 #include "tofsim/ir/IrBackend.h"
@@ -25,6 +26,9 @@ struct VplArrays {
   /// Only where `scattering` (empty otherwise): ir::Vpl::incoming and ::vertex.
   std::vector<float> ix, iy, iz;
   std::vector<physics::ScatterVertex> vertex;
+  /// Each VPL's response class (ir::Vpl::flux.w, ir/VplClasses.h); empty
+  /// where every VPL's is 0 (instant).
+  std::vector<uint32_t> responseClass;
   std::size_t count = 0;
   bool scattering = false;  ///< some VPL's scatter is not in its flux: vplScatter it
 
@@ -43,6 +47,10 @@ struct VplArrays {
       vx[k] = v.patchV.x, vy[k] = v.patchV.y, vz[k] = v.patchV.z, vw[k] = v.patchV.w;
       nearLimit[k] = physics::vplNearFieldLimit(glm::vec3(v.patchU), glm::vec3(v.patchV));
       scattering = scattering || !physics::vplFluxHoldsScatter(v.vertex);
+      if (v.flux.w != 0.0f && responseClass.empty()) responseClass.assign(count, 0u);
+    }
+    for (std::size_t k = 0; k < count && !responseClass.empty(); ++k) {
+      responseClass[k] = static_cast<uint32_t>(vpls[k].flux.w);
     }
     if (!scattering) return;
     for (std::vector<float>* a : {&ix, &iy, &iz}) a->resize(count);
@@ -62,7 +70,7 @@ struct VplArrays {
   }
 
   std::size_t bytes() const {
-    return count * (19 * sizeof(float) +
+    return count * (19 * sizeof(float) + (responseClass.empty() ? 0 : sizeof(uint32_t)) +
                     (scattering ? 3 * sizeof(float) + sizeof(physics::ScatterVertex) : 0));
   }
 };

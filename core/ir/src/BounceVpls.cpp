@@ -7,6 +7,7 @@
 
 #include "tofsim/ir/HitVertex.h"
 #include "tofsim/ir/MaterialVertex.h"
+#include "tofsim/ir/VplClasses.h"
 #include "tofsim/physics/ScatterSampling.h"
 #include "tofsim/rays/RayScene.h"
 #include "tofsim/rays/Sampling.h"
@@ -65,6 +66,9 @@ std::optional<Vpl> shootChild(const rays::RayScene& scene, const Vpl& parent,
     const float q = std::min(1.0f, std::max({vertex.color.r, vertex.color.g, vertex.color.b}));
     if (!(rng.nextFloat() < q)) return std::nullopt;
     child->flux /= q;
+  }
+  if (child && materials.classes != nullptr) {
+    child->flux.w = vplClassAfter(*materials.classes, vplClassOf(parent), vertex);
   }
   return child;
 }
@@ -126,7 +130,8 @@ namespace {
 // withLaterBounces with the scene given, or built here from job.scene (null)
 // only when a later bounce is traced.
 BouncedVpls traceLaterBounces(const capture::RenderJob& job, const rays::RayScene* given,
-                              std::vector<Vpl> firstBounce) {
+                              std::vector<Vpl> firstBounce,
+                              const physics::ResponseClassTable* classes) {
   const capture::IndirectSettings& s = job.settings.indirect;
   TOFSIM_CHECK(s.bounces >= 1);
   BouncedVpls out;
@@ -143,7 +148,8 @@ BouncedVpls traceLaterBounces(const capture::RenderJob& job, const rays::RayScen
   const rays::RayScene& scene = given != nullptr ? *given : *built;
   const BounceTracing tracing{s.russian_roulette, s.trace_threads};
   const BounceMaterials materials{vertexModelOf(job.settings.materials),
-                                  static_cast<float>(s.vpl_brdf_clamp_per_sr)};
+                                  static_cast<float>(s.vpl_brdf_clamp_per_sr),
+                                  classes != nullptr && classes->delayed() ? classes : nullptr};
   std::vector<Vpl> parents(out.vpls);
   for (int32_t bounce = 2; bounce <= s.bounces; ++bounce) {
     // Russian roulette ends paths: bounce 3 on traces one ray per VPL kept.
@@ -159,12 +165,14 @@ BouncedVpls traceLaterBounces(const capture::RenderJob& job, const rays::RayScen
 }  // namespace
 
 BouncedVpls withLaterBounces(const capture::RenderJob& job, const rays::RayScene& scene,
-                             std::vector<Vpl> firstBounce) {
-  return traceLaterBounces(job, &scene, std::move(firstBounce));
+                             std::vector<Vpl> firstBounce,
+                             const physics::ResponseClassTable* classes) {
+  return traceLaterBounces(job, &scene, std::move(firstBounce), classes);
 }
 
-BouncedVpls withLaterBounces(const capture::RenderJob& job, std::vector<Vpl> firstBounce) {
-  return traceLaterBounces(job, nullptr, std::move(firstBounce));
+BouncedVpls withLaterBounces(const capture::RenderJob& job, std::vector<Vpl> firstBounce,
+                             const physics::ResponseClassTable* classes) {
+  return traceLaterBounces(job, nullptr, std::move(firstBounce), classes);
 }
 
 }  // namespace tofsim::ir

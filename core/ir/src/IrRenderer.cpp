@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <chrono>
+#include <stdexcept>
+#include <string>
 
 #include "JobValidation.h"
 #include "MemoryPlan.h"
@@ -9,6 +11,7 @@
 #include "tofsim/capture/SegmentStream.h"
 #include "tofsim/ir/BounceVpls.h"
 #include "tofsim/ir/LitPixels.h"
+#include "tofsim/ir/MaterialVertex.h"
 #include "tofsim/ir/SampledPixels.h"
 #include "tofsim/ir/SurfaceImage.h"
 #include "tofsim/rays/RayScene.h"
@@ -62,6 +65,21 @@ std::vector<GatherStep> planGathers(const BouncedVpls& bounced, std::size_t vpls
     }
   }
   return steps;
+}
+
+// The response classes of a render of `job` (core/physics/temporal_response.md):
+// the scene's distinct scattering delays, on paths of up to one delayed vertex
+// per VPL bounce plus the pixel's own surface. A scene without delays gets the
+// table of the instant class alone (nothing allocated, the bytes of before).
+physics::ResponseClassTable responseClassesOf(const RenderJob& job) {
+  const capture::IndirectSettings& s = job.settings.indirect;
+  const int depth = s.enabled ? s.bounces + 1 : 1;
+  try {
+    return physics::ResponseClassTable::build(materialResponses(*job.scene).kernels, depth);
+  } catch (const std::invalid_argument& e) {
+    throw InputError(std::string(e.what()) +
+                     ": lower render.indirect.bounces or give fewer materials a scattering_delay");
+  }
 }
 
 // Adds the wall seconds since the last lap (or construction) to a pass's sum.
@@ -217,6 +235,9 @@ RenderResult IrRenderer::render(const RenderJob& job, SegmentSink& sink,
 
   PassClock clock;
   if (job.scene != scene_) prepareScene(*job.scene);
+  // Before the VPLs: each VPL's class (Vpl::flux.w) is made with them.
+  const physics::ResponseClassTable classes = responseClassesOf(job);
+  backend.setResponseClasses(classes);
   if (pinhole(job.imager) == nullptr && !backend.tracesRays()) {
     // What a rasterizer cannot draw, the driver traces (the same rays the
     // CPU backend traces for itself) and the backend gathers from.
@@ -248,8 +269,8 @@ RenderResult IrRenderer::render(const RenderJob& job, SegmentSink& sink,
   // both backends gather the same VPLs of every bounce; bounced.firstOfBounce
   // keeps which VPLs are of which bounce (for bounce-resolved output).
   const BouncedVpls bounced = job.settings.indirect.bounces > 1
-                                  ? withLaterBounces(job, rays(), backend.generateVpls(job))
-                                  : withLaterBounces(job, backend.generateVpls(job));
+                                  ? withLaterBounces(job, rays(), backend.generateVpls(job), &classes)
+                                  : withLaterBounces(job, backend.generateVpls(job), &classes);
   const std::vector<Vpl>& vpls = bounced.vpls;
   backend.setVpls(vpls);
   clock.lap(result.passSeconds.vpls);

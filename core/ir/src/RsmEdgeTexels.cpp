@@ -59,10 +59,10 @@ std::vector<Vpl> mergeSubTexelVpls(const std::vector<std::optional<Vpl>>& subTex
   }
   std::vector<Vpl> vpls;
   for (const FlatSurfaceGroup& g : flatSurfaceGroups(cells, n)) {
-    glm::vec4 flux(0.0f);
-    for (int s : g.cells) flux += subTexels[s]->flux;
+    glm::vec3 flux(0.0f);
+    for (int s : g.cells) flux += glm::vec3(subTexels[s]->flux);
     Vpl vpl = *subTexels[g.nearest];
-    vpl.flux = flux;
+    vpl.flux = glm::vec4(flux, vpl.flux.w);  // w: the nearest's response class (VplClasses.h)
     vpl.patchU *= g.stretch.x;  // the patch of the group's sub-texels
     vpl.patchV *= g.stretch.y;
     vpls.push_back(vpl);

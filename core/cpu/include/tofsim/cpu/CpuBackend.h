@@ -123,6 +123,14 @@ class CpuBackend : public ir::IrBackend {
                     std::size_t perPixel, const PixelSurface* surfaces, const unsigned char* lit,
                     const VplTerms* terms, BlockPair* pairs, float* histogram,
                     physics::OffAxisSums& lost, std::size_t& visible) const;
+  /// With delayed response classes, before gatherPixelBlock's deposits: each
+  /// contribution of a delayed class (the VPL's class then the sample's base
+  /// kernel) that is visible goes into its class's buffer, whole, and leaves
+  /// `terms` (its bin set to kNoLight), so the instant light that is left
+  /// goes its way of before, in the same order.
+  void depositDelayedLanes(const IndirectConstants& c, std::size_t first, std::size_t n,
+                           std::size_t i, std::size_t perPixel, const PixelSurface* surfaces,
+                           const unsigned char* lit, VplTerms* terms);
   /// Adds pixel i's footprint buffer, if written, and its delayed classes'
   /// light to `histogram` and clears them.
   void integratePixel(std::size_t i, float* histogram);

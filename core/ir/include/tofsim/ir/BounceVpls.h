@@ -12,6 +12,7 @@
 
 #include "tofsim/capture/RenderJob.h"
 #include "tofsim/ir/IrBackend.h"
+#include "tofsim/physics/ResponseClassTable.h"
 
 namespace tofsim::rays {
 class RayScene;
@@ -44,6 +45,9 @@ struct BounceTracing {
 struct BounceMaterials {
   int vertexModel = physics::VERTEX_LAMBERTIAN;  ///< of the children's vertices (Vpl::vertex)
   float brdfClamp = 0.0f;                        ///< 1/sr, <= 0: none
+  /// Each child's response class (Vpl::flux.w, VplClasses.h) from its
+  /// parent's and its hit's; null: none (flux.w 0).
+  const physics::ResponseClassTable* classes = nullptr;
 };
 
 /// The VPLs of one bounce after `parents` (those of bounce `bounce` - 1):
@@ -76,11 +80,14 @@ std::vector<Vpl> traceBounce(const rays::RayScene& scene, const std::vector<Vpl>
 /// 2..job.settings.indirect.bounces, traced through `scene` (the driver's
 /// RayScene of job.scene), on indirect.trace_threads threads. Bounce 2 traces vpls_per_bounce rays
 /// (0: as many as bounce 1 has VPLs), and so does every later bounce, or with russian_roulette as
-/// many as the bounce before kept.
+/// many as the bounce before kept. `classes`: the later bounces' response
+/// classes from the first bounce's (flux.w; null: none).
 BouncedVpls withLaterBounces(const capture::RenderJob& job, const rays::RayScene& scene,
-                             std::vector<Vpl> firstBounce);
+                             std::vector<Vpl> firstBounce,
+                             const physics::ResponseClassTable* classes = nullptr);
 /// The same through a RayScene of job.scene built here (only when there is a
 /// later bounce and light to continue): for callers without a driver.
-BouncedVpls withLaterBounces(const capture::RenderJob& job, std::vector<Vpl> firstBounce);
+BouncedVpls withLaterBounces(const capture::RenderJob& job, std::vector<Vpl> firstBounce,
+                             const physics::ResponseClassTable* classes = nullptr);
 
 }  // namespace tofsim::ir
