@@ -158,6 +158,9 @@ struct GlBackend::Passes {
     if (sampleCameraEnds.size() > 0) {
       sampleCameraEnds.bindBase(GL_SHADER_STORAGE_BUFFER, gpu::kSampleCameraEnds);
     }
+    if (responseCompose.size() > 0) {
+      responseCompose.bindBase(GL_SHADER_STORAGE_BUFFER, gpu::kResponseCompose);
+    }
     if (!centres) return;
     centres->position.bindUnit(gpu::kCentrePosition);
     centres->normal.bindUnit(gpu::kCentreNormal);
@@ -190,6 +193,8 @@ struct GlBackend::Passes {
   /// Given samples with their own camera ends only (SAMPLE_CAMERA_ENDS in
   /// camera_end.glsl): one vec4 per sample, then one per pixel centre.
   gl::Buffer sampleCameraEnds;
+  /// Delayed response classes only: the table's compose (response_classes.glsl).
+  gl::Buffer responseCompose;
   LightShadowMap shadowMap;
   gl::Program directGather;
   std::unique_ptr<IndirectLight> indirectLight;  ///< null without VPLs
@@ -273,8 +278,14 @@ ir::CentreSurfaces GlBackend::prepareSurfaces(const RenderJob& job) {
   }
   p.shadowMap.render(p.gpuScene);
 
-  p.directGather = gpu::makeProgram({{GL_COMPUTE_SHADER, "direct_gather.comp"}},
-                                    gpu::gatherDefines(job, p.foldModel));
+  std::vector<std::pair<std::string, std::string>> defines = gpu::gatherDefines(job, p.foldModel);
+  const auto responseDefines = gpu::responseClassDefines(responseClasses_);
+  defines.insert(defines.end(), responseDefines.begin(), responseDefines.end());
+  if (responseClasses_.delayed()) {
+    const std::vector<uint32_t>& compose = responseClasses_.compose;
+    p.responseCompose = gl::Buffer(compose.size() * sizeof(uint32_t), compose.data(), 0);
+  }
+  p.directGather = gpu::makeProgram({{GL_COMPUTE_SHADER, "direct_gather.comp"}}, defines);
   setLightUniforms(p.directGather, job.light);
   p.shadowMap.bind(p.directGather);
   configureGather(p.directGather, job);
@@ -345,17 +356,21 @@ std::vector<ir::Vpl> GlBackend::generateVpls(const RenderJob& job) {
   const IndirectSettings& s = job.settings.indirect;
   if (!s.enabled) return {};
   const Passes& p = passes();
-  return render::generateVpls(p.gpuScene, job.light, s.rsm_resolution, s.rsm_edge_samples,
-                              job.settings.time.index_of_refraction, p.bounds.lo, p.bounds.hi,
-                              ir::vertexModelOf(job.settings.materials));
+  std::vector<ir::Vpl> vpls = render::generateVpls(
+      p.gpuScene, job.light, s.rsm_resolution, s.rsm_edge_samples,
+      job.settings.time.index_of_refraction, p.bounds.lo, p.bounds.hi,
+      ir::vertexModelOf(job.settings.materials));
+  setRsmVplClasses(vpls, responseClasses_);
+  return vpls;
 }
 
 void GlBackend::setVpls(const std::vector<ir::Vpl>& vpls) {
   Passes& p = passes();
   p.indirectLight.reset();
   if (vpls.empty()) return;
-  p.indirectLight =
-      std::make_unique<IndirectLight>(sceneObjects_->soup(), vpls, p.job, p.foldModel);
+  p.indirectLight = std::make_unique<IndirectLight>(
+      sceneObjects_->soup(), vpls, p.job, p.foldModel,
+      gpu::responseClassDefines(responseClasses_));
   configureIndirectGather(p.indirectLight->gatherProgram(), p.job);
 }
 
@@ -370,7 +385,8 @@ std::size_t GlBackend::fixedBytes() const {
   std::size_t bytes = p.gpuScene.bytes() +
                       p.pixelCount() * samples * floatsPerSample * sizeof(float) +
                       p.shadowMap.bytes() + p.sampledPixels.size() + p.pixelRaySteps.size() +
-                      p.vertexTable.size() + p.sampleCameraEnds.size();
+                      p.vertexTable.size() + p.sampleCameraEnds.size() +
+                      p.responseCompose.size();
   if (p.indirectLight) bytes += p.indirectLight->fixedBytes();
   return bytes;
 }
@@ -397,9 +413,19 @@ void GlBackend::allocate(std::size_t pixelsPerSegment, std::size_t vplsPerBatch)
     p.footprint =
         std::make_unique<PixelFootprint>(pixelsPerSegment, p.job.settings.time.bins, delayed);
   }
+  // The gathers' depositDelayed: class c's pixels are region c of the buffer.
+  if (responseClasses_.delayed()) {
+    const auto regionPixels = static_cast<unsigned>(p.footprint->regionPixels());
+    p.directGather.set("uResponseRegionPixels", regionPixels);
+    if (p.indirectLight) p.indirectLight->gatherProgram().set("uResponseRegionPixels", regionPixels);
+  }
 }
 
 void GlBackend::setResponseClasses(const physics::ResponseClassTable& classes) {
+  // Read from prepareSurfaces on (the gathers' programs, the VPLs' classes,
+  // allocate's stage): a render prepared before it is dropped, so that one
+  // prepared with another table cannot run.
+  passes_.reset();
   responseClasses_ = classes;
 }
 

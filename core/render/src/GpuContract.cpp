@@ -27,6 +27,7 @@ std::vector<std::pair<std::string, std::string>> shaderDefines() {
       {"TOFSIM_SSBO_RESPONSE_TAPS", n(kResponseTaps)},
       {"TOFSIM_SSBO_SCATTER_VERTICES", n(kScatterVertices)},
       {"TOFSIM_SSBO_SAMPLE_CAMERA_ENDS", n(kSampleCameraEnds)},
+      {"TOFSIM_SSBO_RESPONSE_COMPOSE", n(kResponseCompose)},
       {"TOFSIM_UNIT_G_POSITION", n(kGPosition)},
       {"TOFSIM_UNIT_G_NORMAL", n(kGNormal)},
       {"TOFSIM_UNIT_G_ALBEDO", n(kGAlbedo)},
@@ -73,6 +74,12 @@ std::vector<std::pair<std::string, std::string>> gatherDefines(const capture::Re
     defines.emplace_back("PIXEL_RAY_STEPS", "1");
   }
   return defines;
+}
+
+std::vector<std::pair<std::string, std::string>> responseClassDefines(
+    const physics::ResponseClassTable& table) {
+  if (!table.delayed()) return {};
+  return {{"RESPONSE_CLASSES", "1"}, {"RESPONSE_KERNEL_COUNT", std::to_string(table.kernels.size())}};
 }
 
 gl::Program makeProgram(const std::vector<gl::ShaderStage>& stages,
