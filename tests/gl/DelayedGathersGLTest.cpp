@@ -149,12 +149,25 @@ TEST(DelayedGathersGLTest, PlaneAtPixelCentresIsTheExponentialsBinIntegrals) {
 // every pixel's indirect light is the undelayed render's convolved with the
 // kernel (the wall's VPLs are delayed at the floor, the floor's light at the
 // wall), the floor's direct light is unchanged and the wall's convolved, with
-// point pixels and with footprints.
+// point pixels and with footprints, Lambertian and glTF (glossy VPLs, whose
+// records the gather reads whole).
 TEST(DelayedGathersGLTest, CornerWithADelayedWallIsTheUndelayedRenderConvolved) {
-  for (const bool footprint : {false, true}) {
-    SCOPED_TRACE(footprint ? "footprints" : "point pixels");
+  const struct {
+    bool footprint, gltf;
+    const char* name;
+  } variants[] = {{false, false, "point pixels"},
+                  {true, false, "footprints"},
+                  {true, true, "footprints, glTF materials"}};
+  for (const auto& [footprint, gltf, name] : variants) {
+    SCOPED_TRACE(name);
     test::CornerJob s(16);
     s.job.settings.pixel_footprint = footprint;
+    if (gltf) {
+      s.scene.materials.at(0).metallic = 0.8f;
+      s.scene.materials.at(0).roughness = 0.35f;
+      s.scene.materials.at(1).roughness = 0.5f;
+      s.job.settings.materials = capture::MaterialModel::Gltf;
+    }
     s.job.settings.indirect.rsm_resolution = 12;
     s.job.settings.indirect.visibility = capture::Visibility::Exact;
     const double tau = 5.0;
@@ -163,7 +176,8 @@ TEST(DelayedGathersGLTest, CornerWithADelayedWallIsTheUndelayedRenderConvolved) 
     const capture::VolumeCollector delayed = renderOnGl(s.job);
 
     const rays::RayScene rays(s.scene, 1);
-    const ir::SurfaceImage surfaces = ir::traceSurfaces(rays, s.job.imager, 2);
+    const ir::SurfaceImage surfaces =
+        ir::traceSurfaces(rays, s.job.imager, 2, 1, 1, ir::vertexModelOf(s.job.settings.materials));
     const int32_t bins = s.job.settings.time.bins;
     std::size_t wall = 0, floor = 0;
     double worst = 0.0;
