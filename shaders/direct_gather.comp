@@ -10,8 +10,11 @@
 // spread instead over that path's distribution across the sample's footprint
 // (its sub-pixel, or the whole pixel for a centre sample;
 // footprint_deposit.glsl). Each bin has this thread as its only writer, so the
-// result does not depend on scheduling. The sample loop runs at most 16^2
-// times, far below llvmpipe's 65535 loop trips per invocation.
+// result does not depend on scheduling. With RESPONSE_CLASSES (a render with
+// scattering delays) the light of a delayed surface goes to its class's
+// buffer instead (response_classes.glsl), point samples as spikes. The
+// sample loop runs at most 16^2 times, far below llvmpipe's 65535 loop trips
+// per invocation.
 layout(local_size_x = TOFSIM_WORK_GROUP_SIZE) in;
 
 #include "surface_samples.glsl"

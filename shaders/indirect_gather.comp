@@ -10,7 +10,9 @@
 // only writer of its pixel's bins, and adding in a fixed order (VPL, then
 // sample: an order that does not depend on where the batches and dispatches
 // split the VPLs), makes the sum reproducible bit for bit whatever the batch
-// and segment sizes.
+// and segment sizes. With RESPONSE_CLASSES (a render with scattering delays)
+// a contribution of a delayed class (the VPL's, then the sample's vertex)
+// goes to its class's buffer instead (response_classes.glsl).
 // Both ends of a contribution scatter (scatter_vertex.glsl): the VPL toward x
 // (vplScatterToward: 1 where its flux holds it), and x toward the camera for
 // the direction to the VPL (scatter()).
