@@ -1,10 +1,10 @@
 // The response classes as the gathers see them (core/physics/temporal_response.md,
 // physics::ResponseClassTable): a program compiled with RESPONSE_CLASSES (a
-// render whose table has delayed classes; GpuContract.cpp's
-// responseClassDefines) reads the table's `compose` from a buffer and sends a
-// contribution of class c >= 1 to its class's difference buffer
-// (footprint_deposit.glsl's depositDelayed); class 0 takes the deposit of a
-// render without delays. RESPONSE_KERNEL_COUNT is the table's base kernels K.
+// render whose table has delayed classes: GatherResponseClasses.h) reads the
+// table's `compose` from a buffer and sends a contribution of class c >= 1
+// to its class's difference buffer (footprint_deposit.glsl's
+// depositDelayed); class 0 takes the deposit of a render without delays.
+// RESPONSE_KERNEL_COUNT is the table's base kernels K.
 #ifndef TOFSIM_RESPONSE_CLASSES_GLSL
 #define TOFSIM_RESPONSE_CLASSES_GLSL
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "GatherResponseClasses.h"
 #include "GpuContract.h"
 #include "GpuScene.h"
 #include "IndirectLight.h"
@@ -158,9 +159,7 @@ struct GlBackend::Passes {
     if (sampleCameraEnds.size() > 0) {
       sampleCameraEnds.bindBase(GL_SHADER_STORAGE_BUFFER, gpu::kSampleCameraEnds);
     }
-    if (responseCompose.size() > 0) {
-      responseCompose.bindBase(GL_SHADER_STORAGE_BUFFER, gpu::kResponseCompose);
-    }
+    responseClasses.bind();
     if (!centres) return;
     centres->position.bindUnit(gpu::kCentrePosition);
     centres->normal.bindUnit(gpu::kCentreNormal);
@@ -193,8 +192,7 @@ struct GlBackend::Passes {
   /// Given samples with their own camera ends only (SAMPLE_CAMERA_ENDS in
   /// camera_end.glsl): one vec4 per sample, then one per pixel centre.
   gl::Buffer sampleCameraEnds;
-  /// Delayed response classes only: the table's compose (response_classes.glsl).
-  gl::Buffer responseCompose;
+  GatherResponseClasses responseClasses;  ///< the gathers' (none without delays)
   LightShadowMap shadowMap;
   gl::Program directGather;
   std::unique_ptr<IndirectLight> indirectLight;  ///< null without VPLs
@@ -278,13 +276,10 @@ ir::CentreSurfaces GlBackend::prepareSurfaces(const RenderJob& job) {
   }
   p.shadowMap.render(p.gpuScene);
 
+  p.responseClasses = GatherResponseClasses(responseClasses_);
   std::vector<std::pair<std::string, std::string>> defines = gpu::gatherDefines(job, p.foldModel);
-  const auto responseDefines = gpu::responseClassDefines(responseClasses_);
-  defines.insert(defines.end(), responseDefines.begin(), responseDefines.end());
-  if (responseClasses_.delayed()) {
-    const std::vector<uint32_t>& compose = responseClasses_.compose;
-    p.responseCompose = gl::Buffer(compose.size() * sizeof(uint32_t), compose.data(), 0);
-  }
+  defines.insert(defines.end(), p.responseClasses.defines().begin(),
+                 p.responseClasses.defines().end());
   p.directGather = gpu::makeProgram({{GL_COMPUTE_SHADER, "direct_gather.comp"}}, defines);
   setLightUniforms(p.directGather, job.light);
   p.shadowMap.bind(p.directGather);
@@ -369,8 +364,7 @@ void GlBackend::setVpls(const std::vector<ir::Vpl>& vpls) {
   p.indirectLight.reset();
   if (vpls.empty()) return;
   p.indirectLight = std::make_unique<IndirectLight>(
-      sceneObjects_->soup(), vpls, p.job, p.foldModel,
-      gpu::responseClassDefines(responseClasses_));
+      sceneObjects_->soup(), vpls, p.job, p.foldModel, p.responseClasses.defines());
   configureIndirectGather(p.indirectLight->gatherProgram(), p.job);
 }
 
@@ -386,7 +380,7 @@ std::size_t GlBackend::fixedBytes() const {
                       p.pixelCount() * samples * floatsPerSample * sizeof(float) +
                       p.shadowMap.bytes() + p.sampledPixels.size() + p.pixelRaySteps.size() +
                       p.vertexTable.size() + p.sampleCameraEnds.size() +
-                      p.responseCompose.size();
+                      p.responseClasses.bytes();
   if (p.indirectLight) bytes += p.indirectLight->fixedBytes();
   return bytes;
 }
@@ -414,10 +408,12 @@ void GlBackend::allocate(std::size_t pixelsPerSegment, std::size_t vplsPerBatch)
         std::make_unique<PixelFootprint>(pixelsPerSegment, p.job.settings.time.bins, delayed);
   }
   // The gathers' depositDelayed: class c's pixels are region c of the buffer.
-  if (responseClasses_.delayed()) {
-    const auto regionPixels = static_cast<unsigned>(p.footprint->regionPixels());
-    p.directGather.set("uResponseRegionPixels", regionPixels);
-    if (p.indirectLight) p.indirectLight->gatherProgram().set("uResponseRegionPixels", regionPixels);
+  if (p.responseClasses.delayed()) {
+    p.responseClasses.setRegionPixels(p.directGather, p.footprint->regionPixels());
+    if (p.indirectLight) {
+      p.responseClasses.setRegionPixels(p.indirectLight->gatherProgram(),
+                                        p.footprint->regionPixels());
+    }
   }
 }
 

@@ -76,12 +76,6 @@ std::vector<std::pair<std::string, std::string>> gatherDefines(const capture::Re
   return defines;
 }
 
-std::vector<std::pair<std::string, std::string>> responseClassDefines(
-    const physics::ResponseClassTable& table) {
-  if (!table.delayed()) return {};
-  return {{"RESPONSE_CLASSES", "1"}, {"RESPONSE_KERNEL_COUNT", std::to_string(table.kernels.size())}};
-}
-
 gl::Program makeProgram(const std::vector<gl::ShaderStage>& stages,
                         const std::vector<std::pair<std::string, std::string>>& extra) {
   std::vector<std::pair<std::string, std::string>> defines = shaderDefines();

@@ -18,7 +18,6 @@
 #include "tofsim/capture/RenderSettings.h"
 #include "tofsim/capture/SegmentSink.h"
 #include "tofsim/gl/Program.h"
-#include "tofsim/physics/ResponseClassTable.h"
 
 namespace tofsim::render::gpu {
 
@@ -47,7 +46,7 @@ enum StorageBinding : uint32_t {
   kResponseTaps,   ///< the delayed response classes' filters (PixelFootprint)
   kScatterVertices,  ///< the G-buffers' vertices by index: the materials', then given samples'
   kSampleCameraEnds,  ///< vec4 per given sample: its camera end, lens path (SAMPLE_CAMERA_ENDS)
-  kResponseCompose,   ///< the response classes' compose table, uint (RESPONSE_CLASSES)
+  kResponseCompose,   ///< the response classes' compose table, uint (GatherResponseClasses)
 };
 
 /// Texture units (TOFSIM_UNIT_...).
@@ -94,12 +93,6 @@ std::vector<std::pair<std::string, std::string>> gatherDefines(const capture::Re
 inline bool adaptiveSamples(const capture::RenderSettings& settings) {
   return settings.adaptive_pixel_samples && settings.pixel_samples > 1;
 }
-
-/// The gathers' response classes (response_classes.glsl): RESPONSE_CLASSES
-/// and RESPONSE_KERNEL_COUNT where the table has delayed classes; none
-/// otherwise, so a render without delays compiles the gathers of before.
-std::vector<std::pair<std::string, std::string>> responseClassDefines(
-    const physics::ResponseClassTable& table);
 
 /// A program from embedded shaders with the contract's defines, then `extra`.
 gl::Program makeProgram(const std::vector<gl::ShaderStage>& stages,

@@ -25,7 +25,7 @@ class IndirectLight {
  public:
   /// The gather's variant (pixel samples, footprints, the imager's kind) and
   /// the ISM seed come from the job; foldModel: gpu::gatherDefines';
-  /// `responseDefines`: the gather's response classes (gpu::responseClassDefines).
+  /// `responseDefines`: the gather's response classes (GatherResponseClasses::defines).
   IndirectLight(const TriangleSoup& soup, const std::vector<ir::Vpl>& vpls,
                 const capture::RenderJob& job, bool foldModel = true,
                 const std::vector<std::pair<std::string, std::string>>& responseDefines = {});
