@@ -10,8 +10,11 @@
 // spread instead over that path's distribution across the sample's footprint
 // (its sub-pixel, or the whole pixel for a centre sample;
 // footprint_deposit.glsl). Each bin has this thread as its only writer, so the
-// result does not depend on scheduling. The sample loop runs at most 16^2
-// times, far below llvmpipe's 65535 loop trips per invocation.
+// result does not depend on scheduling. With RESPONSE_CLASSES (a render with
+// scattering delays) the light of a delayed surface goes to its class's
+// buffer instead (response_classes.glsl), point samples as spikes. The
+// sample loop runs at most 16^2 times, far below llvmpipe's 65535 loop trips
+// per invocation.
 layout(local_size_x = TOFSIM_WORK_GROUP_SIZE) in;
 
 #include "surface_samples.glsl"
@@ -32,8 +35,11 @@ uniform int uCameraUnwarp;
 
 #define GATHER_HISTOGRAM direct
 #include "bin_deposit.glsl"
-#ifdef PIXEL_FOOTPRINT
+#if defined(PIXEL_FOOTPRINT) || defined(RESPONSE_CLASSES)
 #include "footprint_deposit.glsl"
+#endif
+#ifdef RESPONSE_CLASSES
+#include "response_classes.glsl"
 #endif
 
 // Adds sample g of pixel `local`, whose camera leg ends at `end`.
@@ -58,6 +64,11 @@ void gatherSample(uint local, SurfaceSample g, CameraEnd end, inout float lostBe
   float dCamera = uCameraUnwarp != 0 ? 0.0 : length(x - camera);
 #endif
   float path_m = directPathLength(uIndexOfRefraction, dLight, dCamera);
+#ifdef RESPONSE_CLASSES
+  // The light of a delayed surface: into its class's buffer, whatever the
+  // footprint setting (response_classes.glsl).
+  uint responseClass = responseClassSingle(g.vertex.response);
+#endif
 #ifdef PIXEL_FOOTPRINT
   vec3 dxdu, dxdv;
   surfaceStepsAcrossSample(x, footprintPlaneNormal(g.vertex, n, -wCamera), camera, g.pixel,
@@ -67,11 +78,25 @@ void gatherSample(uint local, SurfaceSample g, CameraEnd end, inout float lostBe
                           uCameraUnwarp != 0),
       dxdu, dxdv);
   vec3 kernel = footprintKernel(path_m, steps, uStart_m, uBinWidth_m);
+#ifdef RESPONSE_CLASSES
+  if (responseClass != 0u) {
+    depositDelayed(local, responseClass, kernel, radiance * g.weight, lostBefore, lostAfter);
+    return;
+  }
+#endif
   depositContribution(local, kernel, radiance * g.weight, lostBefore, lostAfter);
 #else
   // Point sampling: one sample gives the bytes of before sub-pixel samples.
 #if PIXEL_SAMPLES > 1
   radiance = radiance * g.weight;
+#endif
+#ifdef RESPONSE_CLASSES
+  if (responseClass != 0u) {
+    // A point sample's path is a spike at path_m.
+    depositDelayed(local, responseClass, footprintKernel(path_m, vec2(0.0), uStart_m, uBinWidth_m),
+                   radiance, lostBefore, lostAfter);
+    return;
+  }
 #endif
   depositInBin(local, binOfPath(path_m, uStart_m, uBinWidth_m), 1.0, radiance, lostBefore,
                lostAfter);

@@ -10,7 +10,9 @@
 // only writer of its pixel's bins, and adding in a fixed order (VPL, then
 // sample: an order that does not depend on where the batches and dispatches
 // split the VPLs), makes the sum reproducible bit for bit whatever the batch
-// and segment sizes.
+// and segment sizes. With RESPONSE_CLASSES (a render with scattering delays)
+// a contribution of a delayed class (the VPL's, then the sample's vertex)
+// goes to its class's buffer instead (response_classes.glsl).
 // Both ends of a contribution scatter (scatter_vertex.glsl): the VPL toward x
 // (vplScatterToward: 1 where its flux holds it), and x toward the camera for
 // the direction to the VPL (scatter()).
@@ -49,8 +51,11 @@ uniform float uSceneScale_m;
 
 #define GATHER_HISTOGRAM indirect
 #include "bin_deposit.glsl"
-#ifdef PIXEL_FOOTPRINT
+#if defined(PIXEL_FOOTPRINT) || defined(RESPONSE_CLASSES)
 #include "footprint_deposit.glsl"
+#endif
+#ifdef RESPONSE_CLASSES
+#include "response_classes.glsl"
 #endif
 
 // llvmpipe stops every loop of an invocation after 65535 iterations in total
@@ -142,6 +147,11 @@ void gatherVpl(uint local, Sample at, uint k, Vpl vpl, inout float lostBefore,
   vec3 fCamera = scatter(at.vertex, at.n, -d, at.toCamera).f * at.weight;
   vec3 radiance = vplRadianceAt(vpl, fCamera, d, g);
   float path_m = vplPathLength(vpl.positionPath.w, uIndexOfRefraction, dist, at.cameraPath);
+#ifdef RESPONSE_CLASSES
+  // The VPL's class (its history, in flux.w) then the sample's vertex:
+  // delayed light into its class's buffer, whatever the footprint setting.
+  uint responseClass = responseClassThen(uint(vpl.flux.w), at.vertex.response);
+#endif
 #ifdef PIXEL_FOOTPRINT
   vec2 pixelSteps = pathStepsAcrossPixel(
       opticalPathGradient(at.x, vpl.positionPath.xyz, at.camera, uIndexOfRefraction,
@@ -153,8 +163,22 @@ void gatherVpl(uint local, Sample at, uint k, Vpl vpl, inout float lostBefore,
   vec2 patchSteps = vec2(0.0);
 #endif
   vec3 kernel = footprintKernel(path_m, vec4(pixelSteps, patchSteps), uStart_m, uBinWidth_m);
+#ifdef RESPONSE_CLASSES
+  if (responseClass != 0u) {
+    depositDelayed(local, responseClass, kernel, radiance, lostBefore, lostAfter);
+    return;
+  }
+#endif
   depositContribution(local, kernel, radiance, lostBefore, lostAfter);
 #else
+#ifdef RESPONSE_CLASSES
+  if (responseClass != 0u) {
+    // A point sample's path is a spike at path_m.
+    depositDelayed(local, responseClass, footprintKernel(path_m, vec2(0.0), uStart_m, uBinWidth_m),
+                   radiance, lostBefore, lostAfter);
+    return;
+  }
+#endif
   depositInBin(local, binOfPath(path_m, uStart_m, uBinWidth_m), 1.0, radiance, lostBefore,
                lostAfter);
 #endif

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "GatherResponseClasses.h"
 #include "GpuContract.h"
 #include "GpuScene.h"
 #include "IndirectLight.h"
@@ -158,6 +159,7 @@ struct GlBackend::Passes {
     if (sampleCameraEnds.size() > 0) {
       sampleCameraEnds.bindBase(GL_SHADER_STORAGE_BUFFER, gpu::kSampleCameraEnds);
     }
+    responseClasses.bind();
     if (!centres) return;
     centres->position.bindUnit(gpu::kCentrePosition);
     centres->normal.bindUnit(gpu::kCentreNormal);
@@ -190,6 +192,7 @@ struct GlBackend::Passes {
   /// Given samples with their own camera ends only (SAMPLE_CAMERA_ENDS in
   /// camera_end.glsl): one vec4 per sample, then one per pixel centre.
   gl::Buffer sampleCameraEnds;
+  GatherResponseClasses responseClasses;  ///< the gathers' (none without delays)
   LightShadowMap shadowMap;
   gl::Program directGather;
   std::unique_ptr<IndirectLight> indirectLight;  ///< null without VPLs
@@ -273,8 +276,11 @@ ir::CentreSurfaces GlBackend::prepareSurfaces(const RenderJob& job) {
   }
   p.shadowMap.render(p.gpuScene);
 
-  p.directGather = gpu::makeProgram({{GL_COMPUTE_SHADER, "direct_gather.comp"}},
-                                    gpu::gatherDefines(job, p.foldModel));
+  p.responseClasses = GatherResponseClasses(responseClasses_);
+  std::vector<std::pair<std::string, std::string>> defines = gpu::gatherDefines(job, p.foldModel);
+  defines.insert(defines.end(), p.responseClasses.defines().begin(),
+                 p.responseClasses.defines().end());
+  p.directGather = gpu::makeProgram({{GL_COMPUTE_SHADER, "direct_gather.comp"}}, defines);
   setLightUniforms(p.directGather, job.light);
   p.shadowMap.bind(p.directGather);
   configureGather(p.directGather, job);
@@ -345,17 +351,20 @@ std::vector<ir::Vpl> GlBackend::generateVpls(const RenderJob& job) {
   const IndirectSettings& s = job.settings.indirect;
   if (!s.enabled) return {};
   const Passes& p = passes();
-  return render::generateVpls(p.gpuScene, job.light, s.rsm_resolution, s.rsm_edge_samples,
-                              job.settings.time.index_of_refraction, p.bounds.lo, p.bounds.hi,
-                              ir::vertexModelOf(job.settings.materials));
+  std::vector<ir::Vpl> vpls = render::generateVpls(
+      p.gpuScene, job.light, s.rsm_resolution, s.rsm_edge_samples,
+      job.settings.time.index_of_refraction, p.bounds.lo, p.bounds.hi,
+      ir::vertexModelOf(job.settings.materials));
+  setRsmVplClasses(vpls, responseClasses_);
+  return vpls;
 }
 
 void GlBackend::setVpls(const std::vector<ir::Vpl>& vpls) {
   Passes& p = passes();
   p.indirectLight.reset();
   if (vpls.empty()) return;
-  p.indirectLight =
-      std::make_unique<IndirectLight>(sceneObjects_->soup(), vpls, p.job, p.foldModel);
+  p.indirectLight = std::make_unique<IndirectLight>(
+      sceneObjects_->soup(), vpls, p.job, p.foldModel, p.responseClasses.defines());
   configureIndirectGather(p.indirectLight->gatherProgram(), p.job);
 }
 
@@ -370,7 +379,8 @@ std::size_t GlBackend::fixedBytes() const {
   std::size_t bytes = p.gpuScene.bytes() +
                       p.pixelCount() * samples * floatsPerSample * sizeof(float) +
                       p.shadowMap.bytes() + p.sampledPixels.size() + p.pixelRaySteps.size() +
-                      p.vertexTable.size() + p.sampleCameraEnds.size();
+                      p.vertexTable.size() + p.sampleCameraEnds.size() +
+                      p.responseClasses.bytes();
   if (p.indirectLight) bytes += p.indirectLight->fixedBytes();
   return bytes;
 }
@@ -397,9 +407,21 @@ void GlBackend::allocate(std::size_t pixelsPerSegment, std::size_t vplsPerBatch)
     p.footprint =
         std::make_unique<PixelFootprint>(pixelsPerSegment, p.job.settings.time.bins, delayed);
   }
+  // The gathers' depositDelayed: class c's pixels are region c of the buffer.
+  if (p.responseClasses.delayed()) {
+    p.responseClasses.setRegionPixels(p.directGather, p.footprint->regionPixels());
+    if (p.indirectLight) {
+      p.responseClasses.setRegionPixels(p.indirectLight->gatherProgram(),
+                                        p.footprint->regionPixels());
+    }
+  }
 }
 
 void GlBackend::setResponseClasses(const physics::ResponseClassTable& classes) {
+  // Read from prepareSurfaces on (the gathers' programs, the VPLs' classes,
+  // allocate's stage): a render prepared before it is dropped, so that one
+  // prepared with another table cannot run.
+  passes_.reset();
   responseClasses_ = classes;
 }
 

@@ -46,6 +46,7 @@ enum StorageBinding : uint32_t {
   kResponseTaps,   ///< the delayed response classes' filters (PixelFootprint)
   kScatterVertices,  ///< the G-buffers' vertices by index: the materials', then given samples'
   kSampleCameraEnds,  ///< vec4 per given sample: its camera end, lens path (SAMPLE_CAMERA_ENDS)
+  kResponseCompose,   ///< the response classes' compose table, uint (GatherResponseClasses)
 };
 
 /// Texture units (TOFSIM_UNIT_...).

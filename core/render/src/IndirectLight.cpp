@@ -20,12 +20,14 @@ namespace {
 // Measured on the Cornell box: light went missing above ~45000 of our trips.
 constexpr std::size_t kTripsPerDispatch = 20000;
 
-std::vector<std::pair<std::string, std::string>> gatherDefines(const capture::RenderJob& job,
-                                                               bool foldModel) {
+std::vector<std::pair<std::string, std::string>> gatherDefines(
+    const capture::RenderJob& job, bool foldModel,
+    const std::vector<std::pair<std::string, std::string>>& responseDefines) {
   std::vector<std::pair<std::string, std::string>> defines = gpu::gatherDefines(job, foldModel);
   if (job.settings.indirect.visibility == capture::Visibility::Exact) {
     defines.emplace_back("EXACT_VISIBILITY", "1");
   }
+  defines.insert(defines.end(), responseDefines.begin(), responseDefines.end());
   return defines;
 }
 
@@ -46,8 +48,9 @@ gl::Buffer vplBufferOf(const std::vector<ir::Vpl>& vpls, bool gltf) {
 }  // namespace
 
 IndirectLight::IndirectLight(const TriangleSoup& soup, const std::vector<ir::Vpl>& vpls,
-                             const capture::RenderJob& job, bool foldModel)
-    : IndirectLight(soup, vpls, job.settings, gatherDefines(job, foldModel)) {}
+                             const capture::RenderJob& job, bool foldModel,
+                             const std::vector<std::pair<std::string, std::string>>& responseDefines)
+    : IndirectLight(soup, vpls, job.settings, gatherDefines(job, foldModel, responseDefines)) {}
 
 IndirectLight::IndirectLight(const TriangleSoup& soup, const std::vector<ir::Vpl>& vpls,
                              const capture::RenderSettings& settings,

@@ -24,9 +24,11 @@ using scene::TriangleSoup;
 class IndirectLight {
  public:
   /// The gather's variant (pixel samples, footprints, the imager's kind) and
-  /// the ISM seed come from the job; foldModel: gpu::gatherDefines'.
+  /// the ISM seed come from the job; foldModel: gpu::gatherDefines';
+  /// `responseDefines`: the gather's response classes (GatherResponseClasses::defines).
   IndirectLight(const TriangleSoup& soup, const std::vector<ir::Vpl>& vpls,
-                const capture::RenderJob& job, bool foldModel = true);
+                const capture::RenderJob& job, bool foldModel = true,
+                const std::vector<std::pair<std::string, std::string>>& responseDefines = {});
 
   std::size_t vplCount() const { return vplCount_; }
   /// GPU bytes that do not depend on the batch size (geometry, VPLs).
