@@ -19,6 +19,7 @@
 #include "tofsim/ir/MaterialVertex.h"
 #include "tofsim/ir/SurfaceImage.h"
 #include "tofsim/physics/FootprintKernel.h"
+#include "tofsim/ir/VplClasses.h"
 #include "tofsim/physics/TemporalResponse.h"
 #include "tofsim/util/Error.h"
 
@@ -355,7 +356,7 @@ std::vector<ir::Vpl> GlBackend::generateVpls(const RenderJob& job) {
       p.gpuScene, job.light, s.rsm_resolution, s.rsm_edge_samples,
       job.settings.time.index_of_refraction, p.bounds.lo, p.bounds.hi,
       ir::vertexModelOf(job.settings.materials));
-  setRsmVplClasses(vpls, responseClasses_);
+  ir::setFirstBounceClasses(vpls, responseClasses_);
   return vpls;
 }
 

@@ -108,11 +108,4 @@ std::vector<Vpl> generateVpls(const GpuScene& scene, const capture::Light& light
   return vpls;
 }
 
-void setRsmVplClasses(std::vector<Vpl>& vpls, const physics::ResponseClassTable& table) {
-  if (!table.delayed()) return;
-  for (Vpl& vpl : vpls) {
-    vpl.flux.w = static_cast<float>(table.single(static_cast<uint32_t>(vpl.vertex.response)));
-  }
-}
-
 }  // namespace tofsim::render

@@ -13,7 +13,6 @@
 
 #include "tofsim/capture/Light.h"
 #include "tofsim/ir/IrBackend.h"
-#include "tofsim/physics/ResponseClassTable.h"
 
 namespace tofsim::render {
 
@@ -32,12 +31,5 @@ using ir::Vpl;  // matches struct Vpl in shaders/vpl.glsl (std430)
 std::vector<Vpl> generateVpls(const GpuScene& scene, const capture::Light& light, int rsmResolution,
                               int edgeSamples, double indexOfRefraction, const glm::vec3& boundsMin,
                               const glm::vec3& boundsMax, int vertexModel);
-
-/// Each RSM VPL's response class in its flux.w (issue 41): the class of its
-/// surface's base kernel lit by the light, table.single(vertex.response), as
-/// a float (an exact small integer; the gathers read it back as uint, and
-/// later bounces extend it: ir::withLaterBounces). Without delayed classes
-/// the VPLs are left as they are (class 0).
-void setRsmVplClasses(std::vector<Vpl>& vpls, const physics::ResponseClassTable& table);
 
 }  // namespace tofsim::render
