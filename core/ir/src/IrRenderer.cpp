@@ -9,8 +9,10 @@
 #include "tofsim/capture/SegmentStream.h"
 #include "tofsim/ir/BounceVpls.h"
 #include "tofsim/ir/LitPixels.h"
+#include "tofsim/ir/MaterialVertex.h"
 #include "tofsim/ir/SampledPixels.h"
 #include "tofsim/ir/SurfaceImage.h"
+#include "tofsim/physics/ResponseClassTable.h"
 #include "tofsim/rays/RayScene.h"
 #include "tofsim/util/Error.h"
 
@@ -34,6 +36,19 @@ Image depthFromPositions(const std::vector<float>& positions, const Imager& imag
     }
   }
   return depth;
+}
+
+// The scene's response classes (issue 41, core/physics/temporal_response.md):
+// its materials' distinct kernels on paths of up to bounces + 1 delayed
+// vertices (the pixel's surface and one per bounce).
+physics::ResponseClassTable responseClassesOf(const RenderJob& job) {
+  try {
+    return physics::ResponseClassTable::build(materialResponses(*job.scene).kernels,
+                                              job.settings.indirect.bounces + 1);
+  } catch (const std::invalid_argument& e) {
+    throw InputError(std::string(e.what()) +
+                     "; lower render.indirect.bounces or the delayed materials");
+  }
 }
 
 // One gatherIndirect: VPLs [first, first + count), all of bounce `bounce`
@@ -254,8 +269,12 @@ RenderResult IrRenderer::render(const RenderJob& job, SegmentSink& sink,
   backend.setVpls(vpls);
   clock.lap(result.passSeconds.vpls);
 
+  // The response classes' buffers are per pixel: the plan counts them.
+  const physics::ResponseClassTable classes = responseClassesOf(job);
+  backend.setResponseClasses(classes);
   const MemoryPlan plan =
-      planMemory(job, limits, backend.fixedBytes(), vpls.size(), backend.visibilityBytesPerVpl());
+      planMemory(job, limits, backend.fixedBytes(), vpls.size(), backend.visibilityBytesPerVpl(),
+                 physics::responseBuffers(classes));
   result.segments = plan.segments.segmentCount;
   result.vpls = vpls.size();
   result.vplBatches = plan.batchCount;
