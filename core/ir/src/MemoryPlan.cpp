@@ -60,7 +60,9 @@ MemoryPlan planMemory(const capture::RenderJob& job, const DeviceLimits& limits,
                        responseBuffers);
   // The stage's running sums between chunks (GL: 16 doubles a pixel) and,
   // per class, the first bin written (CPU).
-  if (responseBuffers > 0) pixel.otherBytes = 16 * sizeof(double) + responseBuffers * sizeof(int32_t);
+  if (responseBuffers > 0) {
+    pixel.otherBytes = 16 * sizeof(double) + responseBuffers * sizeof(int32_t);
+  }
   plan.segments =
       capture::planSegments(pixelCount, pixel, budget, limits.maxBufferBytes, limits.maxPixelsPerPass);
   plan.peakBytes = total - budget + plan.segments.bytesPerSegment;

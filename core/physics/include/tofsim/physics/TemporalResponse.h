@@ -316,7 +316,8 @@ inline double applyResponse(double* diff, double* scratch, int32_t bins, int32_t
   for (std::size_t k = 0; k < count; ++k) {
     double* out = buffers[k % 2];
     if (k == 0 && k == last) {
-      detail::responseStage<true, true>(diff, bins, first, stages[k], nullptr, histogram, sumIn, sumOut);
+      detail::responseStage<true, true>(diff, bins, first, stages[k], nullptr, histogram, sumIn,
+                                        sumOut);
     } else if (k == 0) {
       detail::responseStage<true, false>(diff, bins, first, stages[k], out, nullptr, sumIn, sumOut);
     } else if (k == last) {
@@ -326,7 +327,9 @@ inline double applyResponse(double* diff, double* scratch, int32_t bins, int32_t
       detail::responseStage<false, false>(buffers[(k + 1) % 2], bins, first, stages[k], out,
                                           nullptr, sumIn, sumOut);
     }
-    if (stages[k].reemits()) sumIn = responseExpected(stages[k].prompt, stages[k].reemission, sumIn);
+    if (stages[k].reemits()) {
+      sumIn = responseExpected(stages[k].prompt, stages[k].reemission, sumIn);
+    }
   }
   return (sumIn.x - sumOut.x) + (sumIn.y - sumOut.y) + (sumIn.z - sumOut.z);
 }
