@@ -206,7 +206,7 @@ std::vector<Contribution> mixedContributions() {
       {{-2.0f, 12.0f, 4.0f}, 3},   {{1400.0f, 0.0f, 0.0f}, 3},
       // a pixel without delayed light
       {{100.0f, 0.0f, 0.0f}, 0},   {{200.0f, 40.0f, 0.0f}, 0},
-      {{300.0f, 1.0f, 0.2f}, 0},   {{400.3f, 0.0f, 0.0f}, 0}  };
+      {{300.0f, 1.0f, 0.2f}, 0},   {{400.3f, 0.0f, 0.0f}, 0}};
 }
 
 TEST(ResponseStageGLTest, DelayedClassesGiveTheCpuVolume) {
