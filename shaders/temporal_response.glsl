@@ -15,8 +15,11 @@
 // an FIR of L taps from bin `delay` on followed by a geometric tail: an
 // exponential is L = 1 and its tail, a Gaussian or a table L taps and no tail.
 // The coefficients are the exact bin integrals of k convolved with the box of
-// one bin (TemporalResponse.h: responseTaps), computed once per class in C++
-// (GLSL has no double exp or erf) and handed to both backends.
+// one bin (TemporalResponse.h: responseTaps), computed once per kernel in C++
+// (GLSL has no double exp or erf) and handed to both backends. A class of
+// several kernels runs one such stage per member, each on the previous one's
+// output (a cascade); a kernel that re-emits passes its delayed share (fir +
+// tail) through its matrix.
 #ifndef TOFSIM_TEMPORAL_RESPONSE_GLSL
 #define TOFSIM_TEMPORAL_RESPONSE_GLSL
 
@@ -37,6 +40,29 @@ TOFSIM_PHYSICS_FN dvec3 responseFirTerm(dvec3 sum, double tap, dvec3 x) { return
 // tail's state at n.
 TOFSIM_PHYSICS_FN dvec3 responseOutput(double prompt, dvec3 x, dvec3 fir, dvec3 tail) {
   return prompt * x + fir + tail;
+}
+
+// Re-emission (fluorescence's Stokes shift): the light absorbed in channel j
+// comes back as column j of m. Written out column by column, in this order,
+// so both compilers round the same way (no matrix product of their own).
+TOFSIM_PHYSICS_FN dvec3 responseReemit(dmat3 m, dvec3 v) {
+  return m[0] * v.x + m[1] * v.y + m[2] * v.z;
+}
+
+// Bin n's output for a kernel that re-emits: its delayed share (the FIR and
+// the tail) through m, the prompt share as it came. Only for m != identity:
+// responseOutput's sum is rounded in another order.
+TOFSIM_PHYSICS_FN dvec3 responseReemittedOutput(double prompt, dvec3 x, dvec3 fir, dvec3 tail,
+                                                dmat3 m) {
+  return prompt * x + responseReemit(m, fir + tail);
+}
+
+// The light a stage that re-emits gives out on an endless axis for input
+// light e (per channel): its prompt share as it came, the delayed share (1 -
+// prompt: the taps' sum) through m. What the stage's output lacks of it on
+// the axis is past the last bin; the rest of the input was absorbed.
+TOFSIM_PHYSICS_FN dvec3 responseExpected(double prompt, dmat3 m, dvec3 e) {
+  return prompt * e + responseReemit(m, (1.0 - prompt) * e);
 }
 
 #endif  // TOFSIM_TEMPORAL_RESPONSE_GLSL

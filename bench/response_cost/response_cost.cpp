@@ -1,13 +1,14 @@
 // The temporal-response stage's cost (core/physics/temporal_response.md) on
 // the CPU backend, in one run: whole renders of the corner scene (direct and
-// indirect, side^2 pixels, 1000 bins, pixel footprint) without delayed
-// classes and with one configured (nothing deposited into it, as every render
-// today), interleaved; then the stage alone with every pixel's rendered light
-// (direct + indirect) in one delayed class, the worst case of issue 41's
-// "every material delayed": an exponential lifetime (one tap and the tail) and
-// a Gaussian delay (an FIR of tens of taps), against the instant class's
-// integration of the same pixels; and a narrow contribution's deposit into
-// either class. Process CPU seconds (steadier than wall
+// indirect, side^2 pixels, 1000 bins, pixel footprint) without delays and
+// with the wall's material delayed (the driver's classes: {wall}, {wall,
+// wall}; whatever the gathers deposit into them), interleaved; then the stage
+// alone with every pixel's rendered light (direct + indirect) in one delayed
+// class, the worst case of issue 41's "every material delayed": an
+// exponential lifetime (one tap and the tail), a Gaussian delay (an FIR of
+// tens of taps) and the cascade of both (a class of two kernels), against
+// the instant class's integration of the same pixels; and a narrow
+// contribution's deposit into either class. Process CPU seconds (steadier than wall
 // time on a shared machine); the best of `repeats`.
 // Usage: tofsim_response_cost [threads=2] [side=128] [rsm=32] [repeats=3]
 #include <algorithm>
@@ -36,13 +37,10 @@ double cpuSeconds() {
 }
 
 // One render's CPU seconds; its volumes in `light` (direct + indirect).
-double renderSeconds(const capture::RenderJob& job, int threads,
-                     const std::vector<physics::ResponseKernel>& delayed,
-                     std::vector<float>* light) {
+double renderSeconds(const capture::RenderJob& job, int threads, std::vector<float>* light) {
   capture::VolumeCollector volume(capture::imageWidth(job.imager), capture::imageHeight(job.imager),
                                   job.settings.time, capture::kChannels);
   auto backend = std::make_unique<cpu::CpuBackend>(cpu::CpuBackendOptions{threads, true});
-  backend->setResponseClasses(physics::ResponseClassTable::build(delayed, delayed.empty() ? 0 : 1));
   const double start = cpuSeconds();
   ir::IrRenderer(std::move(backend)).render(job, volume);
   const double seconds = cpuSeconds() - start;
@@ -66,18 +64,18 @@ void differencesOf(const float* x, int32_t bins, double* diff) {
 }
 
 // CPU seconds of the stage over every pixel: `light` as one class's input
-// (deposit = the buffer filled, untimed), through `taps`; or, with taps null,
-// the instant class's integration of the same buffers.
+// (deposit = the buffer filled, untimed), through the cascade `stages`; or,
+// with none, the instant class's integration of the same buffers.
 double stageSeconds(const std::vector<float>& light, std::size_t pixels, int32_t bins,
-                    const physics::ResponseTaps* taps) {
-  std::vector<double> diff(static_cast<std::size_t>(bins) * 3);
+                    const std::vector<physics::ResponseTaps>& stages) {
+  std::vector<double> diff(static_cast<std::size_t>(bins) * 3), scratch(diff.size());
   std::vector<float> histogram(static_cast<std::size_t>(bins) * 3);
   double seconds = 0.0;
   for (std::size_t p = 0; p < pixels; ++p) {
     differencesOf(&light[p * bins * 3], bins, diff.data());
     const double start = cpuSeconds();
-    if (taps != nullptr) {
-      physics::applyResponse(diff.data(), bins, 0, *taps, histogram.data());
+    if (!stages.empty()) {
+      physics::applyResponse(diff.data(), scratch.data(), bins, 0, stages, histogram.data());
     } else {
       physics::integrateFootprint(diff.data(), bins, histogram.data());
     }
@@ -133,24 +131,28 @@ int main(int argc, char** argv) {
   std::printf("corner %dx%d, rsm %d, %d bins of %.1f ps, %d threads, best of %d\n", side, side,
               rsm, bins, binWidth_s * 1e12, threads, repeats);
 
-  double none = 1e30, oneClass = 1e30;
+  double none = 1e30, wallDelayed = 1e30;
   std::vector<float> light;
+  test::CornerJob delayedWall(side);
+  delayedWall.job.settings = corner.job.settings;
+  delayedWall.scene.materials[1].scatteringDelay = exponential;
   for (int r = 0; r < repeats; ++r) {
-    none = std::min(none, renderSeconds(corner.job, threads, {}, r == 0 ? &light : nullptr));
-    oneClass = std::min(oneClass, renderSeconds(corner.job, threads, {exponential}, nullptr));
+    none = std::min(none, renderSeconds(corner.job, threads, r == 0 ? &light : nullptr));
+    wallDelayed = std::min(wallDelayed, renderSeconds(delayedWall.job, threads, nullptr));
   }
-  std::printf("\n| render (CPU s) | no delayed class | one class configured | ratio |\n"
+  std::printf("\n| render (CPU s) | no delay | the wall delayed | ratio |\n"
               "|---|---|---|---|\n| corner | %.3f | %.3f | %.3f |\n",
-              none, oneClass, oneClass / none);
+              none, wallDelayed, wallDelayed / none);
 
   const std::size_t pixels = static_cast<std::size_t>(side) * side;
   const physics::ResponseTaps expTaps = physics::responseTaps(exponential, binWidth_s);
   const physics::ResponseTaps gaussTaps = physics::responseTaps(gaussian, binWidth_s);
-  double instant = 1e30, exp = 1e30, gauss = 1e30;
+  double instant = 1e30, exp = 1e30, gauss = 1e30, both = 1e30;
   for (int r = 0; r < repeats; ++r) {
-    instant = std::min(instant, stageSeconds(light, pixels, bins, nullptr));
-    exp = std::min(exp, stageSeconds(light, pixels, bins, &expTaps));
-    gauss = std::min(gauss, stageSeconds(light, pixels, bins, &gaussTaps));
+    instant = std::min(instant, stageSeconds(light, pixels, bins, {}));
+    exp = std::min(exp, stageSeconds(light, pixels, bins, {expTaps}));
+    gauss = std::min(gauss, stageSeconds(light, pixels, bins, {gaussTaps}));
+    both = std::min(both, stageSeconds(light, pixels, bins, {expTaps, gaussTaps}));
   }
   std::printf(
       "\nEvery pixel's light in one class, the stage alone (CPU s, %zu pixels):\n\n"
@@ -158,10 +160,12 @@ int main(int argc, char** argv) {
       "|---|---|---|---|---|---|\n"
       "| instant integration | - | %.4f | %.2f | 1.00 | %.3f |\n"
       "| exponential 2.5 ns | %zu + tail | %.4f | %.2f | %.2f | %.3f |\n"
-      "| Gaussian 50 +- 20 ps | %zu | %.4f | %.2f | %.2f | %.3f |\n",
+      "| Gaussian 50 +- 20 ps | %zu | %.4f | %.2f | %.2f | %.3f |\n"
+      "| cascade: exponential, Gaussian | %zu + tail, %zu | %.4f | %.2f | %.2f | %.3f |\n",
       pixels, instant, instant / pixels * 1e6, instant / none, expTaps.taps.size(), exp,
       exp / pixels * 1e6, exp / instant, exp / none, gaussTaps.taps.size(), gauss,
-      gauss / pixels * 1e6, gauss / instant, gauss / none);
+      gauss / pixels * 1e6, gauss / instant, gauss / none, expTaps.taps.size(),
+      gaussTaps.taps.size(), both, both / pixels * 1e6, both / instant, both / none);
   const std::size_t contributions = 4000000;
   double narrow = 1e30, wide = 1e30;
   for (int r = 0; r < repeats; ++r) {

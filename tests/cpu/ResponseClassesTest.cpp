@@ -35,8 +35,8 @@ ResponseClasses twoClasses(std::size_t pixels) {
   gaussian.mean_s = 300e-12;
   gaussian.sigma_s = 50e-12;
   ResponseClasses classes;
-  classes.configure({physics::responseTaps(exponential, kBin_s),
-                     physics::responseTaps(gaussian, kBin_s)},
+  classes.configure({{physics::responseTaps(exponential, kBin_s)},
+                     {physics::responseTaps(gaussian, kBin_s)}},
                     pixels, kBins);
   return classes;
 }

@@ -35,6 +35,18 @@ TEST(SegmentPlanTest, FootprintBufferIsCountedInDoubles) {
   EXPECT_EQ(planSegments(1000, {10, 2, 1}, kHuge, 400, kHuge).pixelsPerSegment, 5u);
 }
 
+TEST(SegmentPlanTest, ResponseClassRegionsShareTheFootprintBuffersLimit) {
+  // The footprint buffer with 3 more regions (two delayed classes and a
+  // scratch): 4 x 80 bytes of doubles per pixel, and 16 bytes of state.
+  const PixelBuffers classes{10, 2, 4, 16};
+  EXPECT_EQ(classes.bytes(), 80u + 320u + 16u + 8u);
+  EXPECT_EQ(planSegments(1000, classes, 424 * 10, kHuge, kHuge).pixelsPerSegment, 10u);
+  // One storage block of 3200 bytes holds 10 pixels of all four regions.
+  EXPECT_EQ(planSegments(1000, classes, kHuge, 3200, kHuge).pixelsPerSegment, 10u);
+  // A pixel whose regions exceed the block is an input error, not an abort.
+  EXPECT_THROW(planSegments(1000, classes, kHuge, 319, kHuge), InputError);
+}
+
 TEST(SegmentPlanTest, DeviceLimitsCapTheSegment) {
   // One buffer of 400 bytes holds 10 pixels of 40 bytes.
   EXPECT_EQ(planSegments(1000, {10, 2, 0}, kHuge, 400, kHuge).pixelsPerSegment, 10u);

@@ -5,6 +5,7 @@
 
 #include "tofsim/config/MaterialDelays.h"
 #include "tofsim/ir/MaterialVertex.h"
+#include "tofsim/ir/VplClasses.h"
 #include "tofsim/physics/ResponseClassTable.h"
 #include "tofsim/util/Error.h"
 
@@ -31,7 +32,8 @@ void checkResponseClasses(const config::RunConfig& config, const scene::Scene& s
   const int32_t bounces = config.render.indirect.bounces;
   try {
     // The table the driver builds (IrRenderer), thrown away.
-    (void)physics::ResponseClassTable::build(responses.kernels, bounces + 1);
+    (void)physics::ResponseClassTable::build(responses.kernels,
+                                             ir::responseDepth(config.render.indirect));
   } catch (const std::invalid_argument& e) {
     std::string delayed;
     for (const scene::Material& m : scene.materials) {

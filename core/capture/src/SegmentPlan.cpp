@@ -27,11 +27,11 @@ SegmentPlan fixedSegments(std::size_t pixelCount, std::size_t pixelsPerSegment,
 std::size_t PixelBuffers::bytes() const {
   // Plus the light off the axis: one float before it, one after (AxisLoss).
   return floatsPerPixel * (sizeof(float) * volumes + sizeof(double) * footprintBuffers) +
-         2 * sizeof(float);
+         otherBytes + 2 * sizeof(float);
 }
 
 std::size_t PixelBuffers::largestBufferBytes() const {
-  return floatsPerPixel * (footprintBuffers > 0 ? sizeof(double) : sizeof(float));
+  return floatsPerPixel * std::max(sizeof(float), sizeof(double) * footprintBuffers);
 }
 
 SegmentPlan planSegments(std::size_t pixelCount, const PixelBuffers& pixel,
@@ -40,9 +40,17 @@ SegmentPlan planSegments(std::size_t pixelCount, const PixelBuffers& pixel,
   const std::size_t pixelBytes = pixel.bytes();
   const std::size_t largest = pixel.largestBufferBytes();
   // validateJob rejects time.bins whose histogram (or footprint buffer)
-  // exceeds the buffer limit, naming the key; reaching this is a caller's bug.
+  // exceeds the buffer limit, naming the key; the response classes' regions
+  // are known only here.
   TOFSIM_CHECK_GT(largest, 0u);
-  TOFSIM_CHECK_LE(largest, maxBufferBytes);
+  if (largest > maxBufferBytes) {
+    throw InputError("one pixel's " + std::to_string(pixel.footprintBuffers) +
+                     " difference buffers (the footprint's and the delayed materials' response "
+                     "classes, " + std::to_string(largest) +
+                     " bytes) exceed the device's largest buffer (" +
+                     std::to_string(maxBufferBytes) +
+                     " bytes); lower time.bins, render.indirect.bounces or the delayed materials");
+  }
   TOFSIM_CHECK_GT(pixelCount, 0u);
   TOFSIM_CHECK_GT(maxPixelsPerPass, 0u);
   if (pixelBytes > budgetBytes) {

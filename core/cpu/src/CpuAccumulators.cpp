@@ -36,7 +36,7 @@ void CpuBackend::allocate(std::size_t pixelsPerSegment, std::size_t vplsPerBatch
     clearAccumulators(pixelsPerSegment);
   }
   if (responseClasses_.delayed() || !responses_->empty()) {
-    responses_->configure(physics::singleStages(responseClasses_, job_.settings.time.bin_width_s),
+    responses_->configure(physics::classStages(responseClasses_, job_.settings.time.bin_width_s),
                           pixelsPerSegment, job_.settings.time.bins);
   }
   accumulatorsZero_ = true;

@@ -3,7 +3,7 @@
 // delayed class and pixel of a segment, a difference buffer (bins x 3
 // doubles, footprint_kernel.md's layout) that the class's contributions are
 // deposited into, and the stage that, at the pixel's integrate step, sums it
-// into bin integrals, filters them by the class's kernel
+// into bin integrals, filters them by the cascade of the class's kernels
 // (physics::applyResponse) and adds them to the pixel's histogram. Class 0,
 // the instant one, is not here: it is the backend's float histograms and
 // footprint buffer of before. Without delayed classes (every render today)
@@ -26,12 +26,14 @@ namespace tofsim::cpu {
 
 class ResponseClasses {
  public:
-  /// Class c >= 1 filters by delayed[c - 1]; room for `pixels` pixels of
+  /// Class c >= 1 filters by the cascade delayed[c - 1] (its members'
+  /// filters in order, physics::classStages); room for `pixels` pixels of
   /// `bins` bins each (zeroed). An empty list frees everything.
-  void configure(std::vector<physics::ResponseTaps> delayed, std::size_t pixels, int32_t bins);
-  bool empty() const { return taps_.empty(); }
+  void configure(std::vector<std::vector<physics::ResponseTaps>> delayed, std::size_t pixels,
+                 int32_t bins);
+  bool empty() const { return stages_.empty(); }
   /// Delayed classes (the ids 1 .. count()).
-  std::size_t count() const { return taps_.size(); }
+  std::size_t count() const { return stages_.size(); }
 
   /// Adds a contribution of `energy` spread by footprint `kernel` (a spike
   /// with widths 0) of delayed class `responseClass` (1 .. count()) to
@@ -51,7 +53,8 @@ class ResponseClasses {
  private:
   double* diffOf(std::size_t i, uint32_t responseClass);
 
-  std::vector<physics::ResponseTaps> taps_;
+  std::vector<std::vector<physics::ResponseTaps>> stages_;
+  bool cascades_ = false;  ///< some class has several stages (a scratch per thread)
   std::size_t pixels_ = 0;
   int32_t bins_ = 0;
   util::ZeroedBuffer<double> diff_;  ///< [class - 1][pixel][bin][channel]

@@ -14,6 +14,7 @@
 #include "tofsim/ir/MaterialVertex.h"
 #include "tofsim/ir/SampledPixels.h"
 #include "tofsim/ir/SurfaceImage.h"
+#include "tofsim/physics/ResponseClassTable.h"
 #include "tofsim/rays/RayScene.h"
 #include "tofsim/util/Error.h"
 
@@ -72,10 +73,9 @@ std::vector<GatherStep> planGathers(const BouncedVpls& bounced, std::size_t vpls
 // per VPL bounce plus the pixel's own surface. A scene without delays gets the
 // table of the instant class alone (nothing allocated, the bytes of before).
 physics::ResponseClassTable responseClassesOf(const RenderJob& job) {
-  const capture::IndirectSettings& s = job.settings.indirect;
-  const int depth = s.enabled ? s.bounces + 1 : 1;
   try {
-    return physics::ResponseClassTable::build(materialResponses(*job.scene).kernels, depth);
+    return physics::ResponseClassTable::build(materialResponses(*job.scene).kernels,
+                                              responseDepth(job.settings.indirect));
   } catch (const std::invalid_argument& e) {
     throw InputError(std::string(e.what()) +
                      ": lower render.indirect.bounces or give fewer materials a scattering_delay");
@@ -275,8 +275,10 @@ RenderResult IrRenderer::render(const RenderJob& job, SegmentSink& sink,
   backend.setVpls(vpls);
   clock.lap(result.passSeconds.vpls);
 
+  // The response classes' buffers are per pixel: the plan counts them.
   const MemoryPlan plan =
-      planMemory(job, limits, backend.fixedBytes(), vpls.size(), backend.visibilityBytesPerVpl());
+      planMemory(job, limits, backend.fixedBytes(), vpls.size(), backend.visibilityBytesPerVpl(),
+                 physics::responseBuffers(classes));
   result.segments = plan.segments.segmentCount;
   result.vpls = vpls.size();
   result.vplBatches = plan.batchCount;

@@ -28,7 +28,7 @@ std::size_t vplsPerBatch(std::size_t vplCount, std::size_t bytesPerVpl, std::siz
 
 MemoryPlan planMemory(const capture::RenderJob& job, const DeviceLimits& limits,
                       std::size_t fixedBytes, std::size_t vplCount,
-                      std::size_t visibilityBytesPerVpl) {
+                      std::size_t visibilityBytesPerVpl, std::size_t responseBuffers) {
   const std::size_t total = job.settings.memory_budget_bytes;
   if (fixedBytes >= total) {
     throw InputError("render.memory_budget (" + std::to_string(total) +
@@ -53,7 +53,16 @@ MemoryPlan planMemory(const capture::RenderJob& job, const DeviceLimits& limits,
       static_cast<std::size_t>(imageWidth(job.imager)) * imageHeight(job.imager);
   capture::PixelBuffers pixel;
   pixel.floatsPerPixel = static_cast<std::size_t>(job.settings.time.bins) * capture::kChannels;
-  pixel.footprintBuffers = job.settings.pixel_footprint ? 1 : 0;
+  // With delayed response classes the footprint buffer exists also without
+  // the pixel footprint (GL's region 0, which the classes' regions follow).
+  pixel.footprintBuffers =
+      static_cast<int>((job.settings.pixel_footprint || responseBuffers > 0 ? 1 : 0) +
+                       responseBuffers);
+  // The stage's running sums between chunks (GL: 16 doubles a pixel) and,
+  // per class, the first bin written (CPU).
+  if (responseBuffers > 0) {
+    pixel.otherBytes = 16 * sizeof(double) + responseBuffers * sizeof(int32_t);
+  }
   plan.segments =
       capture::planSegments(pixelCount, pixel, budget, limits.maxBufferBytes, limits.maxPixelsPerPass);
   plan.peakBytes = total - budget + plan.segments.bytesPerSegment;

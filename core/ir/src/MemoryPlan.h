@@ -18,10 +18,13 @@ struct MemoryPlan {
   std::size_t peakBytes = 0;     ///< fixed + one batch + one segment
 };
 
-/// Throws InputError naming render.memory_budget (or the ISM resolution) when
-/// the budget cannot hold what is fixed, one VPL's map or one pixel.
+/// `responseBuffers`: the difference buffers per pixel the delayed response
+/// classes add (physics::responseBuffers of the table the backend was given;
+/// 0 without delays). Throws InputError naming render.memory_budget (or the
+/// ISM resolution) when the budget cannot hold what is fixed, one VPL's map
+/// or one pixel.
 MemoryPlan planMemory(const capture::RenderJob& job, const DeviceLimits& limits,
                       std::size_t fixedBytes, std::size_t vplCount,
-                      std::size_t visibilityBytesPerVpl);
+                      std::size_t visibilityBytesPerVpl, std::size_t responseBuffers);
 
 }  // namespace tofsim::ir

@@ -403,8 +403,8 @@ void GlBackend::allocate(std::size_t pixelsPerSegment, std::size_t vplsPerBatch)
   // The plan counted the difference buffer (capture::PixelBuffers::footprintBuffers).
   p.footprint.reset();
   if (p.job.settings.pixel_footprint || responseClasses_.delayed()) {
-    const std::vector<physics::ResponseTaps> delayed =
-        physics::singleStages(responseClasses_, p.job.settings.time.bin_width_s);
+    const std::vector<std::vector<physics::ResponseTaps>> delayed =
+        physics::classStages(responseClasses_, p.job.settings.time.bin_width_s);
     p.footprint =
         std::make_unique<PixelFootprint>(pixelsPerSegment, p.job.settings.time.bins, delayed);
   }

@@ -7,10 +7,12 @@
 //
 // With delayed response classes (core/physics/temporal_response.md) the
 // buffer holds one more region of the same size per class (class c's at
-// region c, footprint_deposit.glsl's depositDelayed), and integrateInto runs
-// the temporal-response stage after the instant class: response_integrate.comp
-// per class, which also books the light past the axis in the buffer bound at
-// TOFSIM_SSBO_OUTSIDE_AXIS. Without classes nothing of it is allocated or run.
+// region c, footprint_deposit.glsl's depositDelayed), one more as scratch
+// where a class is a cascade of several kernels, and integrateInto runs the
+// temporal-response stage after the instant class: response_integrate.comp
+// per class and member, which also books the light past the axis in the
+// buffer bound at TOFSIM_SSBO_OUTSIDE_AXIS. Without classes nothing of it is
+// allocated or run.
 
 #include <cstddef>
 #include <cstdint>
@@ -25,9 +27,9 @@ namespace tofsim::render {
 class PixelFootprint {
  public:
   /// Room for segments of `pixelsPerSegment` pixels of `bins` bins; class c
-  /// >= 1 filtered by delayed[c - 1].
+  /// >= 1 filtered by the cascade delayed[c - 1] (physics::classStages).
   PixelFootprint(std::size_t pixelsPerSegment, int32_t bins,
-                 const std::vector<physics::ResponseTaps>& delayed = {});
+                 const std::vector<std::vector<physics::ResponseTaps>>& delayed = {});
 
   /// Zeroes the buffer and binds the first `pixels` pixels of it for the
   /// gathers (every class's region with delayed classes).
@@ -40,20 +42,24 @@ class PixelFootprint {
   std::size_t regionPixels() const { return regionPixels_; }
 
  private:
+  struct StageTaps;
   void integrateClasses(std::size_t pixels);
+  void integrateStage(const StageTaps& t, std::size_t pixels);
 
   int32_t bins_;
   std::size_t regionPixels_;
   std::size_t classes_;  ///< delayed classes
+  std::size_t regions_;  ///< of the buffer: the instant one, the classes', a scratch
   gl::Buffer diff_, written_;
   gl::Program integrate_;
   // With delayed classes only.
-  struct ClassTaps {
-    uint32_t offset = 0;  ///< into taps_: prompt, ratio, weight, taps
+  struct StageTaps {
+    uint32_t offset = 0;  ///< into taps_: prompt, ratio, weight, matrix, taps
     int32_t delay = 0;
     int32_t count = 0;
+    bool reemits = false;
   };
-  std::vector<ClassTaps> classTaps_;
+  std::vector<std::vector<StageTaps>> classTaps_;  ///< [class - 1][member]
   gl::Buffer taps_, state_;
   gl::Program response_;
 };

@@ -29,22 +29,28 @@ SegmentPlan fixedSegments(std::size_t pixelCount, std::size_t pixelsPerSegment,
 
 /// What one pixel of a segment holds: `volumes` float histograms of
 /// `floatsPerPixel` (T * C) floats (direct, indirect), `footprintBuffers`
-/// difference buffers of as many doubles (the pixel footprint's, 0 or 1), and
-/// two floats for the light off the axis (before it, after it).
+/// difference buffers of as many doubles (the pixel footprint's, each delayed
+/// response class's and a cascades' scratch: regions of one buffer on GL,
+/// core/physics/temporal_response.md), `otherBytes` more (the response
+/// stage's running sums), and two floats for the light off the axis (before
+/// it, after it).
 struct PixelBuffers {
   std::size_t floatsPerPixel = 0;
   int volumes = 2;
   int footprintBuffers = 0;
+  std::size_t otherBytes = 0;
 
   std::size_t bytes() const;
   /// The largest single buffer's bytes per pixel (a histogram, or the
-  /// footprint buffer of doubles): one pixel of it must fit `maxBufferBytes`
-  /// (validated before, by the driver).
+  /// footprint buffer's regions of doubles together): one pixel of it must
+  /// fit `maxBufferBytes` (a histogram's is validated before, by the driver).
   std::size_t largestBufferBytes() const;
 };
 
 /// Segments as large as the budget, the device's buffer limit and pass limit
-/// allow. Throws InputError when the budget cannot hold one pixel.
+/// allow. Throws InputError when the budget cannot hold one pixel, or one
+/// pixel's footprint buffer (every response class's region) exceeds the
+/// buffer limit.
 SegmentPlan planSegments(std::size_t pixelCount, const PixelBuffers& pixel, std::size_t budgetBytes,
                          std::size_t maxBufferBytes, std::size_t maxPixelsPerPass);
 

@@ -15,6 +15,13 @@
 
 namespace tofsim::ir {
 
+/// The most delayed vertices a path of a render with indirect settings `s`
+/// meets: one per VPL bounce and the pixel's own surface (the depth of its
+/// ResponseClassTable; the config's check uses the same).
+inline int responseDepth(const capture::IndirectSettings& s) {
+  return s.enabled ? s.bounces + 1 : 1;
+}
+
 /// VPL v's class (flux.w).
 inline uint32_t vplClassOf(const Vpl& v) { return static_cast<uint32_t>(v.flux.w); }
 

@@ -114,14 +114,18 @@ inline std::vector<std::vector<ResponseTaps>> classStages(const ResponseClassTab
   return stages;
 }
 
-/// INTERIM (replaced by the cascade stage within this session, issue 41):
-/// one stage per class, its first member's; right for classes of one member.
-inline std::vector<ResponseTaps> singleStages(const ResponseClassTable& table, double binWidth_s) {
-  std::vector<ResponseTaps> single;
-  for (std::vector<ResponseTaps>& s : classStages(table, binWidth_s)) {
-    single.push_back(std::move(s.front()));
-  }
-  return single;
+/// Whether some class is a cascade of several kernels (its stage then needs
+/// a scratch buffer per pixel: GL's footprint buffer holds one more region).
+inline bool hasCascades(const ResponseClassTable& table) {
+  return std::any_of(table.members.begin(), table.members.end(),
+                     [](const std::vector<uint32_t>& m) { return m.size() > 1; });
+}
+
+/// The difference buffers per pixel of a segment (bins x 3 doubles each)
+/// that the table's classes add to the instant one's: one per delayed class
+/// and a scratch for the cascades (what the memory plan counts).
+inline std::size_t responseBuffers(const ResponseClassTable& table) {
+  return table.classCount() - 1 + (hasCascades(table) ? 1 : 0);
 }
 
 }  // namespace tofsim::physics

@@ -21,6 +21,7 @@
 
 namespace tofsim::physics {
 
+using glm::dmat3;
 using glm::dvec3;
 
 #define TOFSIM_PHYSICS_FN inline
@@ -63,6 +64,12 @@ struct ResponseTaps {
   std::vector<double> taps;
   double tailRatio = 0.0;
   double tailWeight = 0.0;
+  /// The kernel's re-emission, applied to the delayed share (the FIR and the
+  /// tail): y[n] = prompt x[n] + reemission (fir + tail). Identity: none, and
+  /// the stage skips the product (the bytes of a kernel without it).
+  glm::dmat3 reemission{1.0};
+
+  bool reemits() const { return reemission != glm::dmat3(1.0); }
 };
 
 namespace detail {
@@ -175,12 +182,9 @@ inline ResponseTaps tableTaps(const std::vector<double>& u, const std::vector<do
   return r;
 }
 
-}  // namespace detail
 
-/// The filter of `kernel` on an axis of bins `binWidth_s` wide. Throws
-/// std::invalid_argument for a kernel outside its ranges (the config reports
-/// them with their location first) or one over kMaxResponseTaps bins.
-inline ResponseTaps responseTaps(const ResponseKernel& kernel, double binWidth_s) {
+// The filter of the kernel's model (responseTaps without the re-emission).
+inline ResponseTaps modelTaps(const ResponseKernel& kernel, double binWidth_s) {
   if (!(binWidth_s > 0.0) || !(kernel.fraction >= 0.0 && kernel.fraction <= 1.0)) {
     throw std::invalid_argument("a response needs a bin width > 0 and a fraction in [0, 1]");
   }
@@ -218,25 +222,52 @@ inline ResponseTaps responseTaps(const ResponseKernel& kernel, double binWidth_s
   throw std::invalid_argument("unknown response model");
 }
 
-/// The stage for one pixel and one delayed class. `diff` is the class's
-/// difference buffer (bins x 3 doubles, footprint_kernel.md's layout, zero
-/// before bin `first`): it is summed twice into the class's bin integrals x
-/// (left in `diff`, which the caller zeroes from `first` on), and y = the
-/// filter of x is added to `histogram` (bins x 3 floats). Returns the light
-/// the kernel carries past the last bin, summed over channels: sum x - sum y.
-/// The GL pass response_integrate.comp runs the same operations in the same
-/// order from bin 0 (the terms before `first` add exact zeros).
-inline double applyResponse(double* diff, int32_t bins, int32_t first, const ResponseTaps& r,
-                            float* histogram) {
+}  // namespace detail
+
+/// The filter of `kernel` on an axis of bins `binWidth_s` wide. Throws
+/// std::invalid_argument for a kernel outside its ranges (the config reports
+/// them with their location first), one over kMaxResponseTaps bins, or a
+/// re-emission matrix with an entry outside [0, 1] (the config checks that
+/// its columns sum to at most 1).
+inline ResponseTaps responseTaps(const ResponseKernel& kernel, double binWidth_s) {
+  for (int j = 0; j < 3; ++j) {
+    for (int i = 0; i < 3; ++i) {
+      if (!(kernel.reemission[j][i] >= 0.0 && kernel.reemission[j][i] <= 1.0)) {
+        throw std::invalid_argument("a re-emission matrix needs entries in [0, 1]");
+      }
+    }
+  }
+  ResponseTaps r = detail::modelTaps(kernel, binWidth_s);
+  r.reemission = kernel.reemission;
+  return r;
+}
+
+namespace detail {
+
+// One stage of a class's cascade over bins [first, bins) of one pixel, in
+// the order of response_integrate.comp. `in` (bins x 3 doubles, zero before
+// `first`) is the stage's input: with kDifference the class's difference
+// buffer, summed twice into its bin integrals x (left in `in`, read by the
+// later bins' taps), else the previous stage's output. y goes to `out`
+// (doubles) or, with kLast, is added to `histogram` (floats). sumIn adds up
+// x (first stage), sumOut y (last stage).
+template <bool kDifference, bool kLast>
+void responseStage(double* in, int32_t bins, int32_t first, const ResponseTaps& r, double* out,
+                   float* histogram, dvec3& sumIn, dvec3& sumOut) {
   const auto at = [](double* d, int32_t k) { return d + static_cast<std::size_t>(k) * 3; };
-  const auto load = [&](int32_t k) { const double* e = at(diff, k); return dvec3(e[0], e[1], e[2]); };
+  const auto load = [&](int32_t k) { const double* e = at(in, k); return dvec3(e[0], e[1], e[2]); };
   const auto taps = static_cast<int32_t>(r.taps.size());
-  dvec3 slope(0.0), value(0.0), tail(0.0), in(0.0), out(0.0);
+  const bool reemits = r.reemits();
+  dvec3 slope(0.0), value(0.0), tail(0.0);
   for (int32_t n = first; n < bins; ++n) {
-    double* e = at(diff, n);
-    slope += dvec3(e[0], e[1], e[2]);
-    value += slope;
-    e[0] = value.x, e[1] = value.y, e[2] = value.z;  // x[n], read by the later bins' taps
+    double* e = at(in, n);
+    if constexpr (kDifference) {
+      slope += dvec3(e[0], e[1], e[2]);
+      value += slope;
+      e[0] = value.x, e[1] = value.y, e[2] = value.z;  // x[n], read by the later bins' taps
+    } else {
+      value = dvec3(e[0], e[1], e[2]);
+    }
     dvec3 fir(0.0);
     for (int32_t j = 0; j < taps; ++j) {
       const int32_t m = n - r.delay - j;
@@ -246,15 +277,72 @@ inline double applyResponse(double* diff, int32_t bins, int32_t first, const Res
     const int32_t entering = n - r.delay - taps;
     tail = responseTail(r.tailRatio, r.tailWeight, tail,
                         entering >= first ? load(entering) : dvec3(0.0));
-    const dvec3 y = responseOutput(r.prompt, value, fir, tail);
-    float* h = histogram + static_cast<std::size_t>(n) * 3;
-    h[0] += static_cast<float>(y.x);
-    h[1] += static_cast<float>(y.y);
-    h[2] += static_cast<float>(y.z);
-    in += value;
-    out += y;
+    const dvec3 y = reemits ? responseReemittedOutput(r.prompt, value, fir, tail, r.reemission)
+                            : responseOutput(r.prompt, value, fir, tail);
+    if constexpr (kLast) {
+      float* h = histogram + static_cast<std::size_t>(n) * 3;
+      h[0] += static_cast<float>(y.x);
+      h[1] += static_cast<float>(y.y);
+      h[2] += static_cast<float>(y.z);
+    } else {
+      double* o = at(out, n);
+      o[0] = y.x, o[1] = y.y, o[2] = y.z;
+    }
+    if constexpr (kDifference) sumIn += value;
+    if constexpr (kLast) sumOut += y;
   }
-  return (in.x - out.x) + (in.y - out.y) + (in.z - out.z);
+}
+
+}  // namespace detail
+
+/// The stage for one pixel and one delayed class, the cascade of `stages`
+/// (its members' filters, in order). `diff` is the class's difference buffer
+/// (bins x 3 doubles, footprint_kernel.md's layout, zero before bin `first`):
+/// it is summed twice into the class's bin integrals x, stage 1 filters x,
+/// each next stage the previous one's output (double: ping-pong between
+/// `diff` and `scratch`, bins x 3 doubles, needed with two stages or more),
+/// and the last stage's output y is added to `histogram` (bins x 3 floats).
+/// `diff` is left dirty from `first` on (the caller zeroes it). Returns the
+/// light the kernels carry past the last bin, summed over channels: sum x -
+/// sum y, where a stage that re-emits first takes sum x through its matrix
+/// (responseExpected: the light it absorbs without re-emitting is not past
+/// the axis). The GL pass response_integrate.comp runs the same operations
+/// in the same order from bin 0 (the terms before `first` add exact zeros).
+inline double applyResponse(double* diff, double* scratch, int32_t bins, int32_t first,
+                            const ResponseTaps* stages, std::size_t count, float* histogram) {
+  dvec3 sumIn(0.0), sumOut(0.0);
+  const std::size_t last = count - 1;
+  double* buffers[2] = {scratch, diff};  // stage k >= 1 reads buffers[(k + 1) % 2]
+  for (std::size_t k = 0; k < count; ++k) {
+    double* out = buffers[k % 2];
+    if (k == 0 && k == last) {
+      detail::responseStage<true, true>(diff, bins, first, stages[k], nullptr, histogram, sumIn,
+                                        sumOut);
+    } else if (k == 0) {
+      detail::responseStage<true, false>(diff, bins, first, stages[k], out, nullptr, sumIn, sumOut);
+    } else if (k == last) {
+      detail::responseStage<false, true>(buffers[(k + 1) % 2], bins, first, stages[k], nullptr,
+                                         histogram, sumIn, sumOut);
+    } else {
+      detail::responseStage<false, false>(buffers[(k + 1) % 2], bins, first, stages[k], out,
+                                          nullptr, sumIn, sumOut);
+    }
+    if (stages[k].reemits()) {
+      sumIn = responseExpected(stages[k].prompt, stages[k].reemission, sumIn);
+    }
+  }
+  return (sumIn.x - sumOut.x) + (sumIn.y - sumOut.y) + (sumIn.z - sumOut.z);
+}
+
+inline double applyResponse(double* diff, double* scratch, int32_t bins, int32_t first,
+                            const std::vector<ResponseTaps>& stages, float* histogram) {
+  return applyResponse(diff, scratch, bins, first, stages.data(), stages.size(), histogram);
+}
+
+/// A class of one member (no scratch needed).
+inline double applyResponse(double* diff, int32_t bins, int32_t first, const ResponseTaps& r,
+                            float* histogram) {
+  return applyResponse(diff, nullptr, bins, first, &r, 1, histogram);
 }
 
 }  // namespace tofsim::physics
