@@ -14,6 +14,7 @@
 #include "tofsim/ir/MaterialVertex.h"
 #include "tofsim/ir/SampledPixels.h"
 #include "tofsim/ir/SurfaceImage.h"
+#include "tofsim/ir/VplClasses.h"
 #include "tofsim/physics/ResponseClassTable.h"
 #include "tofsim/rays/RayScene.h"
 #include "tofsim/util/Error.h"
