@@ -57,11 +57,14 @@ std::vector<float> phasorPlot(const std::vector<float>& g, const std::vector<flo
     if (float* c = cell(g[i], s[i])) *c += 1.0f;
   }
   const float top = std::max(1.0f, *std::max_element(cells.begin(), cells.end()));
-  // The semicircle (g - 1/2)^2 + s^2 = 1/4, s >= 0, a point per half cell.
+  // The semicircle (g - 1/2)^2 + s^2 = 1/4, s >= 0, a point per half cell, at
+  // kPhasorCircleLevel of the top count and only in empty cells: a
+  // mono-exponential's pixels lie on it, and must stay visible there.
   const int32_t points = 4 * W;
   for (int32_t k = 0; k <= points; ++k) {
     const double angle = M_PI * k / points;
-    if (float* c = cell(0.5 + 0.5 * std::cos(angle), 0.5 * std::sin(angle))) *c = top;
+    float* c = cell(0.5 + 0.5 * std::cos(angle), 0.5 * std::sin(angle));
+    if (c != nullptr && *c == 0.0f) *c = kPhasorCircleLevel * top;
   }
   return cells;
 }

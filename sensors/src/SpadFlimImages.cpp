@@ -110,7 +110,7 @@ void SpadFlimImages::finish(std::vector<SensorOutput>& outputs) {
   char title[160];
   std::snprintf(title, sizeof title,
                 "FLIM phasor plot at %.4g MHz: pixels per (g, s) cell, g 0..1 left to right, "
-                "s 0..0.6 bottom to top, universal semicircle in the top colour",
+                "s 0..0.6 bottom to top, universal semicircle at 30 %% of the top colour",
                 f * 1e-6);
   SensorOutput phasorPicture = spadImage("spad_phasor_plot", kPhasorPlotHeight, kPhasorPlotWidth,
                                          std::move(plot), "pixels", title);
