@@ -56,6 +56,24 @@ std::vector<float> phasorPlot(const std::vector<float>& g, const std::vector<flo
   for (std::size_t i = 0; i < g.size(); ++i) {
     if (float* c = cell(g[i], s[i])) *c += 1.0f;
   }
+  // Each cell drawn as a square of kPhasorMark x kPhasorMark cells (the
+  // largest count under it): a lifetime's pixels gather in a cell or two,
+  // one picture pixel each otherwise.
+  std::vector<float> marked(cells.size(), 0.0f);
+  const int32_t r = kPhasorMark / 2;
+  for (int32_t y = 0; y < H; ++y) {
+    for (int32_t x = 0; x < W; ++x) {
+      const float v = cells[static_cast<std::size_t>(y) * W + static_cast<std::size_t>(x)];
+      if (v == 0.0f) continue;
+      for (int32_t dy = std::max(0, y - r); dy <= std::min(H - 1, y + r); ++dy) {
+        for (int32_t dx = std::max(0, x - r); dx <= std::min(W - 1, x + r); ++dx) {
+          float& m = marked[static_cast<std::size_t>(dy) * W + static_cast<std::size_t>(dx)];
+          m = std::max(m, v);
+        }
+      }
+    }
+  }
+  cells = std::move(marked);
   const float top = std::max(1.0f, *std::max_element(cells.begin(), cells.end()));
   // The semicircle (g - 1/2)^2 + s^2 = 1/4, s >= 0, a point per half cell, at
   // kPhasorCircleLevel of the top count and only in empty cells: a

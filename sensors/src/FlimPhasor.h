@@ -48,11 +48,14 @@ class FlimPhasor {
 };
 
 /// The phasor plot's raster: pixels per (g, s) cell, g in [0, 1] left to
-/// right, s in [0, 0.6] bottom to top, cells kPhasorCell wide; the
+/// right, s in [0, 0.6] bottom to top, cells kPhasorCell wide, each drawn
+/// kPhasorMark cells wide (the largest count where marks overlap); the
 /// semicircle's empty cells set to kPhasorCircleLevel of the largest count
 /// (at least 1): the curve shows without hiding the pixels that lie on it.
 inline constexpr int32_t kPhasorPlotWidth = 400, kPhasorPlotHeight = 240;
 inline constexpr double kPhasorCell = 1.0 / kPhasorPlotWidth;
+/// Each cell's count is drawn as a square this many cells wide.
+inline constexpr int32_t kPhasorMark = 5;
 /// The semicircle's value in the plot, as a share of the top count.
 inline constexpr float kPhasorCircleLevel = 0.3f;
 std::vector<float> phasorPlot(const std::vector<float>& g, const std::vector<float>& s);

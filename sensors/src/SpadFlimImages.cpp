@@ -107,15 +107,19 @@ void SpadFlimImages::finish(std::vector<SensorOutput>& outputs) {
   picture.unit = "ns";
   picture.colormap = colormap_;
   outputs.push_back(std::move(picture));
-  char title[160];
+  char title[256];
   std::snprintf(title, sizeof title,
-                "FLIM phasor plot at %.4g MHz: pixels per (g, s) cell, g 0..1 left to right, "
-                "s 0..0.6 bottom to top, universal semicircle at 30 %% of the top colour",
+                "FLIM phasor plot at %.4g MHz: pixels per (g, s) cell of 0.0025 (drawn 5 wide), g 0..1 left to right, "
+                "s 0..0.6 bottom to top, universal semicircle at 30 %% of the top count",
                 f * 1e-6);
   SensorOutput phasorPicture = spadImage("spad_phasor_plot", kPhasorPlotHeight, kPhasorPlotWidth,
                                          std::move(plot), "pixels", title);
   phasorPicture.kind = SensorOutput::Kind::ColorMappedImage;
   phasorPicture.colormap = "viridis";
+  // The counts' whole range: the semicircle's many cells would set a robust
+  // range's top and saturate the pixels' cells.
+  const float top = *std::max_element(phasorPicture.data.begin(), phasorPicture.data.end());
+  phasorPicture.picture_range = std::array<double, 2>{0.0, std::max(1.0, static_cast<double>(top))};
   phasorPicture.attributes = phasorAttributes;
   phasorPicture.attributes.push_back({"g_left", 0.0});
   phasorPicture.attributes.push_back({"g_right", kPhasorPlotWidth * kPhasorCell});

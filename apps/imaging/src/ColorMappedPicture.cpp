@@ -80,7 +80,7 @@ std::string percentile(double p) {
 
 // One line under the picture: where the range came from and what it cut.
 std::string caption(const ColorScaleUsed& used) {
-  std::string text = used.automatic ? "auto range" : "fixed range (plot_ranges)";
+  std::string text = used.automatic ? "auto range" : "fixed range";
   if (used.automatic && (used.clippedLow || used.clippedHigh)) {
     text += ", clipped at percentiles " + percentile(used.loPercentile) + " / " +
             percentile(used.hiPercentile);

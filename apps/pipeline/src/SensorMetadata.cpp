@@ -110,7 +110,7 @@ json pictureJson(const SensorOutput& o, const std::map<std::string, PictureRange
     j["range"] = {{"lo", r.lo},
                   {"hi", r.hi},
                   {"unit", o.unit},
-                  {"source", r.automatic ? "automatic" : "output.plot_ranges"},
+                  {"source", r.automatic ? "automatic" : r.bySensor ? "sensor" : "output.plot_ranges"},
                   {"clipped_low", r.clippedLow},
                   {"clipped_high", r.clippedHigh}};
     if (r.automatic) {

@@ -122,12 +122,14 @@ std::vector<std::string> writeSensorOutputs(const std::filesystem::path& directo
         break;
       }
       case SensorOutput::Kind::ColorMappedImage: {
-        const imaging::ColorScaleUsed used = imaging::writeColormappedPng(
-            path, asImage(o), withUnit(o.description, o.unit),
-            colorScale(o, "sensors/" + run.spec->name + "/" + o.name, ranges));
+        imaging::ColorScale scale = colorScale(o, "sensors/" + run.spec->name + "/" + o.name, ranges);
+        const bool bySensor = !scale.range && o.picture_range;
+        if (bySensor) scale.range = o.picture_range;
+        const imaging::ColorScaleUsed used =
+            imaging::writeColormappedPng(path, asImage(o), withUnit(o.description, o.unit), scale);
         pictureRanges[o.name] = {used.lo,           used.hi,           used.automatic,
                                  used.loPercentile, used.hiPercentile, used.clippedLow,
-                                 used.clippedHigh};
+                                 used.clippedHigh,  bySensor};
         break;
       }
       case SensorOutput::Kind::HistogramPlot:

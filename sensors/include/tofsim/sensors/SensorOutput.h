@@ -3,6 +3,7 @@
 // I/O and no drawing; the application layer writes each output according to its
 // kind (see sensors/README.md, "Outputs").
 
+#include <array>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -59,6 +60,11 @@ struct SensorOutput {
 
   // ColorMappedImage and HistogramPlot only.
   std::string colormap;             ///< "viridis", "inferno", "turbo", ...
+  /// ColorMappedImage: the colours' [lo, hi] where output.plot_ranges sets
+  /// none; unset: a robust range of the data. For a picture whose values are
+  /// counts with a drawn overlay (the phasor plot's semicircle), which the
+  /// robust range would take for the data.
+  std::optional<std::array<double, 2>> picture_range;
   std::vector<std::string> labels;  ///< HistogramPlot: one legend entry per series
   double axis_start = 0.0;          ///< HistogramPlot: x of the first bin's leading edge
   double axis_step = 1.0;           ///< HistogramPlot: x step per bin

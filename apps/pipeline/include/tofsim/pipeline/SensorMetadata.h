@@ -53,6 +53,7 @@ struct PictureRange {
   bool automatic = true;  ///< from the data (percentiles below), else output.plot_ranges
   double loPercentile = 0.0, hiPercentile = 100.0;  ///< of lo and hi among the valid pixels
   bool clippedLow = false, clippedHigh = false;     ///< values lie below lo / above hi
+  bool bySensor = false;  ///< not automatic: the sensor's SensorOutput::picture_range
 };
 
 /// `ranges`: the colour ranges of the pictures drawn, by output name (none
