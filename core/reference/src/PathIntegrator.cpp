@@ -241,6 +241,12 @@ void PathIntegrator::renderDelayedCentre(const SurfaceHit& hit, const glm::vec3&
       traceContinuation(hit, toCamera, toCamera_m, state, rng, delays, indirect, outside);
     }
   }
+  storeAverages(direct, indirect, floats, outside, out);
+}
+
+void PathIntegrator::storeAverages(const double* direct, const double* indirect,
+                                   std::size_t floats, const AxisLoss& outside,
+                                   PixelOutput& out) const {
   const double norm = 1.0 / samplesPerPixel_;
   for (std::size_t i = 0; i < floats; ++i) {
     out.direct[i] = static_cast<float>(direct[i] * norm);
@@ -287,13 +293,7 @@ void PathIntegrator::renderPixelArea(int32_t x, int32_t y, PixelOutput& out,
       traceContinuation(*hit, toCamera, toCamera_m, state, rng, delays, indirect, outside);
     }
   }
-  const double norm = 1.0 / samplesPerPixel_;
-  for (std::size_t i = 0; i < floats; ++i) {
-    out.direct[i] = static_cast<float>(direct[i] * norm);
-    out.indirect[i] = static_cast<float>(indirect[i] * norm);
-  }
-  out.offAxis.before += outside.before * norm;
-  out.offAxis.after += outside.after * norm;
+  storeAverages(direct, indirect, floats, outside, out);
 }
 
 }  // namespace tofsim::reference

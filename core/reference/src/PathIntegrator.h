@@ -66,6 +66,10 @@ class PathIntegrator {
                          std::vector<double>& scratch) const;
   /// Box filter: every path starts at its own stratified sub-pixel point.
   void renderPixelArea(int32_t x, int32_t y, PixelOutput& out, std::vector<double>& scratch) const;
+  // The pixel's sums over its samples (direct, indirect: `floats` each; the
+  // light off the axis), divided by the sample count, into `out`.
+  void storeAverages(const double* direct, const double* indirect, std::size_t floats,
+                     const AxisLoss& outside, PixelOutput& out) const;
   /// Point filter at a primary hit whose material delays: the direct term
   /// too is averaged over the pixel's paths, each of which draws the hit's
   /// delay once for its direct light and its continuation.
