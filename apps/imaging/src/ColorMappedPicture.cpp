@@ -79,8 +79,8 @@ std::string percentile(double p) {
 }
 
 // One line under the picture: where the range came from and what it cut.
-std::string caption(const ColorScaleUsed& used) {
-  std::string text = used.automatic ? "auto range" : "fixed range";
+std::string caption(const ColorScaleUsed& used, const ColorScale& scale) {
+  std::string text = used.automatic ? "auto range" : "fixed range (" + scale.rangeSource + ")";
   if (used.automatic && (used.clippedLow || used.clippedHigh)) {
     text += ", clipped at percentiles " + percentile(used.loPercentile) + " / " +
             percentile(used.hiPercentile);
@@ -161,7 +161,7 @@ ColorScaleUsed writeColormappedPng(const std::filesystem::path& path, const Imag
     }
   }
   const int barX = left + w + 12;
-  const std::string note = caption(used);
+  const std::string note = caption(used, scale);
   const int width =
       std::max({barX + barW + 8 + tickW + pad, 320, left + textSize(note, 0.4).width + pad});
   const std::vector<std::string> title = detail::wrapText(label, width - 2 * pad);

@@ -124,7 +124,10 @@ std::vector<std::string> writeSensorOutputs(const std::filesystem::path& directo
       case SensorOutput::Kind::ColorMappedImage: {
         imaging::ColorScale scale = colorScale(o, "sensors/" + run.spec->name + "/" + o.name, ranges);
         const bool bySensor = !scale.range && o.picture_range;
-        if (bySensor) scale.range = o.picture_range;
+        if (bySensor) {
+          scale.range = o.picture_range;
+          scale.rangeSource = "the sensor's";
+        }
         const imaging::ColorScaleUsed used =
             imaging::writeColormappedPng(path, asImage(o), withUnit(o.description, o.unit), scale);
         pictureRanges[o.name] = {used.lo,           used.hi,           used.automatic,

@@ -40,6 +40,8 @@ struct ColorScale {
   /// of the data (its 0.5th to 99.5th percentile, narrowed to the quartiles
   /// -+ 3 IQR unless a quarter of the pixels sit at the minimum).
   std::optional<std::array<double, 2>> range;
+  /// Who fixed `range`, for the picture's caption: "fixed range (<this>)".
+  std::string rangeSource = "plot_ranges";
   /// Signed values centred on 0: the colormap becomes "coolwarm" and the
   /// automatic range symmetric about 0, so white-grey means no error.
   bool diverging = false;
