@@ -27,6 +27,20 @@
 
 namespace tofsim::cpu {
 
+namespace {
+
+// Exact visibility (render.indirect.visibility: exact): whether the ray from
+// VPL `vpl`, lifted off its surface by eps, to sample `surface` (lifted
+// likewise) is blocked; eps as indirect_gather.comp's.
+inline bool vplOccluded(const rays::RayScene& scene, const VplArrays& v, std::size_t vpl,
+                        const PixelSurface& surface, float eps) {
+  const glm::vec3 from = glm::vec3(v.px[vpl], v.py[vpl], v.pz[vpl]) +
+                         glm::vec3(v.nx[vpl], v.ny[vpl], v.nz[vpl]) * eps;
+  return scene.occluded(from, surface.x + surface.n * eps);
+}
+
+}  // namespace
+
 using ir::SurfaceImage;
 using ir::traceSampledPixels;
 using ir::traceSurfaces;
@@ -366,10 +380,11 @@ void CpuBackend::gatherPixelBlock(const IndirectConstants& c, std::size_t first,
 }
 
 // Out of line: the instant renders' gather keeps the code it had.
-[[gnu::noinline]] void CpuBackend::depositDelayedLanes(const IndirectConstants& c, std::size_t first, std::size_t n,
-                                     std::size_t i, std::size_t perPixel,
-                                     const PixelSurface* surfaces, const unsigned char* lit,
-                                     VplTerms* terms) {
+[[gnu::noinline]] void CpuBackend::depositDelayedLanes(const IndirectConstants& c,
+                                                       std::size_t first, std::size_t n,
+                                                       std::size_t i, std::size_t perPixel,
+                                                       const PixelSurface* surfaces,
+                                                       const unsigned char* lit, VplTerms* terms) {
   const VplArrays& v = *vpls_;
   const physics::ResponseClassTable& table = responseClasses_;
   physics::OffAxisSums& lost = outside_[i];
@@ -388,17 +403,13 @@ void CpuBackend::gatherPixelBlock(const IndirectConstants& c, std::size_t first,
       TOFSIM_CHECK(cls != physics::ResponseClassTable::kNoClass);
       const int32_t bin = t.bin[k];
       t.bin[k] = kNoLight;  // the instant passes skip it
-      if (c.exact) {
-        const glm::vec3 from3 = glm::vec3(v.px[vpl], v.py[vpl], v.pz[vpl]) +
-                                glm::vec3(v.nx[vpl], v.ny[vpl], v.nz[vpl]) * c.eps;
-        if (scene_->occluded(from3, surface.x + surface.n * c.eps)) continue;
+      if (c.exact && vplOccluded(*scene_, v, vpl, surface, c.eps)) continue;
+      const glm::vec3 energy(t.r[k], t.g[k], t.b[k]);
+      if (c.kernel.footprint) {
+        responses_->deposit(i, cls, glm::vec3(t.centre[k], t.wide[k], t.narrow[k]), energy, lost);
+      } else {
+        responses_->depositInBin(i, cls, bin, energy, lost);
       }
-      // Without the footprint a spike in the instant light's bin (the point
-      // sample's sub-bin position is not kept, core/physics/temporal_response.md).
-      const glm::vec3 kernel = c.kernel.footprint
-                                   ? glm::vec3(t.centre[k], t.wide[k], t.narrow[k])
-                                   : glm::vec3(static_cast<float>(bin) + 0.5f, 0.0f, 0.0f);
-      responses_->deposit(i, cls, kernel, glm::vec3(t.r[k], t.g[k], t.b[k]), lost);
     }
   }
 }
@@ -426,11 +437,7 @@ void CpuBackend::visiblePairs(const IndirectConstants& c, std::size_t first, std
       if (bin == kNoLight) continue;
       const PixelSurface& surface = surfaces[s];
       const std::size_t vpl = first + k;
-      if (exact) {
-        const glm::vec3 from = glm::vec3(v.px[vpl], v.py[vpl], v.pz[vpl]) +
-                               glm::vec3(v.nx[vpl], v.ny[vpl], v.nz[vpl]) * eps;
-        if (scene_->occluded(from, surface.x + surface.n * eps)) continue;
-      }
+      if (exact && vplOccluded(*scene_, v, vpl, surface, eps)) continue;
       if (footprint) {
         pairs[visible++] = {static_cast<uint32_t>(s), static_cast<uint32_t>(k)};
         continue;

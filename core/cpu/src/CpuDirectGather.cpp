@@ -128,9 +128,7 @@ void CpuBackend::gatherDirectPixel(const DirectConstants& c, std::size_t i) {
     const glm::vec3 value = perPixel == 1 ? light.radiance : light.radiance * weight;
     const int bin = physics::binOfPath(light.path_m, c.start_m, c.width_m);
     if (cls != 0) {
-      // A spike in the instant light's bin (its sub-bin position not kept).
-      responses_->deposit(i, cls, glm::vec3(static_cast<float>(bin) + 0.5f, 0.0f, 0.0f), value,
-                          lost);
+      responses_->depositInBin(i, cls, bin, value, lost);
       continue;
     }
     physics::depositInBin(histogram, c.bins, bin, 1.0f, value, lost);

@@ -42,6 +42,13 @@ class ResponseClasses {
   /// `lost`.
   void deposit(std::size_t i, uint32_t responseClass, const glm::vec3& kernel,
                const glm::vec3& energy, physics::OffAxisSums& lost);
+  /// deposit of a point sample (render.pixel_footprint: false) in bin `bin`:
+  /// a spike at the bin's centre (its sub-bin position is not kept, as in
+  /// the instant light's physics::depositInBin; core/physics/temporal_response.md).
+  void depositInBin(std::size_t i, uint32_t responseClass, int32_t bin, const glm::vec3& energy,
+                    physics::OffAxisSums& lost) {
+    deposit(i, responseClass, glm::vec3(static_cast<float>(bin) + 0.5f, 0.0f, 0.0f), energy, lost);
+  }
   /// The integrate step of pixel i: every delayed class's light, filtered by
   /// its kernel, added to `histogram` (bins x 3 floats) in class order; the
   /// light the kernels carry past the last bin into lost.after. Leaves the

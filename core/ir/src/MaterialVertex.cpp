@@ -14,9 +14,9 @@ MaterialResponses materialResponses(const scene::Scene& scene) {
     }
     // Materials with equal delays share a base kernel (fewer classes).
     const auto found = std::find(r.kernels.begin(), r.kernels.end(), *m.scatteringDelay);
+    const auto index = found - r.kernels.begin();
     if (found == r.kernels.end()) r.kernels.push_back(*m.scatteringDelay);
-    const auto index = std::find(r.kernels.begin(), r.kernels.end(), *m.scatteringDelay);
-    r.baseOfMaterial.push_back(static_cast<int32_t>(index - r.kernels.begin()) + 1);
+    r.baseOfMaterial.push_back(static_cast<int32_t>(index) + 1);
   }
   return r;
 }
