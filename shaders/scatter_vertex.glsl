@@ -20,11 +20,12 @@
 
 #include "transient_physics.glsl"
 #include "gltf_brdf.glsl"
+#include "medium.glsl"
 
 // Material models (ScatterVertex::model).
 const int VERTEX_LAMBERTIAN = 0;  // albedo / pi (render.materials: lambertian)
 const int VERTEX_GLTF = 1;        // the glTF metallic-roughness BRDF (gltf_brdf.glsl)
-const int VERTEX_MEDIUM = 2;      // a point of a medium: isotropic phase 1 / (4 pi), no normal
+const int VERTEX_MEDIUM = 2;      // a point of a medium: albedo x phase function, no normal
 
 // Temporal response classes (ScatterVertex::response): how long the vertex
 // holds the light it scatters. Only RESPONSE_INSTANT today (issue 41).
@@ -33,8 +34,9 @@ const int RESPONSE_INSTANT = 0;
 // 32 bytes, std430 and C++ alike (ScatterVertex.h asserts it).
 struct ScatterVertex {
   vec4 color;           // rgb: Lambertian albedo, glTF base colour, or a medium's
-                        //   single-scattering albedo; w: glTF metallic
-  float roughness;      // glTF perceptual roughness
+                        //   single-scattering albedo; w: glTF metallic, or a
+                        //   medium's phase model (PHASE_*, medium.glsl) as a float
+  float roughness;      // glTF perceptual roughness; a medium's asymmetry g
   int model;            // VERTEX_*
   int response;         // RESPONSE_*: the class of its temporal response
   float responseParam;  // the response's parameter (none for RESPONSE_INSTANT)
@@ -71,6 +73,12 @@ TOFSIM_PHYSICS_FN ScatterVertex texturedVertex(ScatterVertex v, vec3 baseColorTe
   return v;
 }
 
+// A point of a medium (VERTEX_MEDIUM) of single-scattering albedo `albedo`
+// whose phase function is model `phase` (PHASE_*) with asymmetry g.
+TOFSIM_PHYSICS_FN ScatterVertex mediumVertex(vec3 albedo, int phase, float g) {
+  return scatterVertex(VERTEX_MEDIUM, albedo, float(phase), g);
+}
+
 // The vertex's model; a compile-time constant in a program that defines
 // SCATTER_MODEL.
 TOFSIM_PHYSICS_FN int vertexModel(ScatterVertex v) {
@@ -85,7 +93,9 @@ TOFSIM_PHYSICS_FN int vertexModel(ScatterVertex v) {
 // surface, an isotropic medium): a gather may then evaluate it once per
 // vertex instead of once per contribution.
 TOFSIM_PHYSICS_FN bool scatterIsConstant(ScatterVertex v) {
-  return vertexModel(v) != VERTEX_GLTF;
+  int model = vertexModel(v);
+  if (model == VERTEX_MEDIUM) return int(v.color.w) == PHASE_ISOTROPIC;
+  return model != VERTEX_GLTF;
 }
 
 // The light that arrives at the vertex from unit direction wi (toward where
@@ -100,7 +110,10 @@ TOFSIM_PHYSICS_FN Scattered scatter(ScatterVertex v, vec3 n, vec3 wi, vec3 wo) {
   if (model == VERTEX_GLTF) {
     s.f = gltfBrdf(n, wi, wo, vec3(v.color), v.color.w, v.roughness);
   } else if (model == VERTEX_MEDIUM) {
-    s.f = vec3(v.color) / (4.0f * PI);
+    // The isotropic phase as before (the same floats), any other by its law.
+    int phase = int(v.color.w);
+    s.f = phase == PHASE_ISOTROPIC ? vec3(v.color) / (4.0f * PI)
+                                   : vec3(v.color) * phaseFunction(phase, v.roughness, dot(-wi, wo));
   } else {
     s.f = vec3(v.color) / PI;
   }

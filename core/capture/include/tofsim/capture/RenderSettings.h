@@ -5,6 +5,7 @@
 #include <cstddef>
 #include <cstdint>
 
+#include "tofsim/capture/Medium.h"
 #include "tofsim/volume/TimeAxis.h"
 
 namespace tofsim::capture {
@@ -91,6 +92,9 @@ struct RenderSettings {
   bool adaptive_pixel_samples = false;
   MaterialModel materials = MaterialModel::Lambertian;
   IndirectSettings indirect;
+  /// The homogeneous medium filling the scene (issue 42); none by default.
+  /// Its index of refraction is time.index_of_refraction.
+  Medium medium;
 };
 
 }  // namespace tofsim::capture

@@ -9,6 +9,7 @@
 
 // The two files scatter_vertex.glsl includes, with the GLM names they use.
 #include "tofsim/physics/GltfBrdf.h"
+#include "tofsim/physics/MediumPhysics.h"
 #include "tofsim/physics/TransientPhysics.h"
 
 namespace tofsim::physics {
