@@ -2,7 +2,9 @@
 // link to the shipped scenes/ folder, so `scene: scenes/cornell_box.gltf`
 // resolves as in configs/. A config with `materials:` is applied to its
 // scene too (config::applyMaterialDelays: names checked against the scene's,
-// the glTF extras read).
+// the glTF extras read). A config with `medium:` reloads from its effective
+// config to the same medium (issue 42: the content key and the batch resume
+// rest on it).
 #include <filesystem>
 
 #include "FuzzFile.h"
@@ -20,6 +22,17 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
       tofsim::scene::LoadReport report;
       tofsim::scene::Scene scene = tofsim::scene::loadGltf(config.scene_file, &report);
       tofsim::config::applyMaterialDelays(config, scene, report.materialExtras);
+    }
+    if (config.medium) {
+      const tofsim::config::RunConfig again =
+          tofsim::config::loadRunConfigText(tofsim::config::effectiveConfigYaml(config), path);
+      const tofsim::capture::Medium& a = config.render.medium;
+      const tofsim::capture::Medium& b = again.render.medium;
+      if (a.sigma_a_per_m != b.sigma_a_per_m || a.sigma_s_per_m != b.sigma_s_per_m ||
+          a.phase != b.phase || a.g != b.g ||
+          config.render.time.index_of_refraction != again.render.time.index_of_refraction) {
+        __builtin_trap();
+      }
     }
   } catch (const tofsim::InputError&) {
   }

@@ -28,6 +28,19 @@ out("fuzz_config", "minimal.yaml", "scene: scenes/cornell_box.gltf\ncamera:\n  g
     "time:\n  bins: 16\n  bin_width: \"1 m\"\nrender:\n  memory_budget: \"64 MiB\"\n"
     "  indirect:\n    visibility: exact\noutput:\n  components: [direct]\n")
 
+# config: a medium (issue 42), given by its coefficients (per channel, a
+# unit, Henyey-Greenstein, its index of refraction) and as fog by its
+# visibility, and the shipped fog lidar
+out("fuzz_config", "medium.yaml", "scene: scenes/cornell_box.gltf\ncamera: {gltf_camera: cornell_camera, "
+    "resolution: [8, 8]}\nlight: {type: point, position: [0.3, 0.5, -0.5]}\n"
+    "time: {bins: 16, bin_width: 1 m}\nmedium:\n  sigma_a: [0.3, 0.05, 0.02 /m]\n  sigma_s: 0.1\n"
+    "  phase: {model: henyey_greenstein, g: 0.6}\n  index_of_refraction: 1.33\n")
+out("fuzz_config", "medium_fog.yaml", "scene: scenes/cornell_box.gltf\ncamera: {gltf_camera: cornell_camera, "
+    "resolution: [8, 8]}\nlight: {type: point, position: [0.3, 0.5, -0.5]}\n"
+    "time: {bins: 16, bin_width: 1 m, index_of_refraction: 1}\n"
+    "medium: {visibility: 50 m, albedo: [0.9, 0.95, 1], phase: rayleigh}\n")
+out("fuzz_config", "fog_lidar.yaml", open(os.path.join(src, "configs/fog_lidar.yaml")).read())
+
 # glTF: the shipped scene, a triangle with indices, a strip with a sparse
 # POSITION accessor, and the triangle as .glb
 out("fuzz_gltf", "cornell_box.gltf", open(os.path.join(src, "configs/scenes/cornell_box.gltf")).read())
@@ -140,6 +153,12 @@ out("fuzz_camera_files", "noise_csv", b"\7" + b"mean_e,raw_e\n10,9\n10,12\n12,11
 # saved volume of NaN.
 for target, name in [("fuzz_config", "config/duplicate_key.yaml"),
                      ("fuzz_config", "config/alias_bomb.yaml"),
+                     ("fuzz_config", "config/medium_sigma_float_overflow.yaml"),
+                     ("fuzz_config", "config/medium_visibility_subnormal.yaml"),
+                     ("fuzz_config", "config/medium_g_nan.yaml"),
+                     ("fuzz_config", "config/medium_sigma_infinite.yaml"),
+                     ("fuzz_config", "config/medium_phase_list.yaml"),
+                     ("fuzz_config", "config/medium_albedo_short.yaml"),
                      ("fuzz_camera_files", "camera_files/lens_duplicate_key_yaml"),
                      ("fuzz_saved_volume", "saved_volume/all_nan")]:
     out(target, os.path.basename(name),

@@ -195,6 +195,16 @@ TEST_F(ConfigKeysWriterTest, EffectiveConfigWritesEveryDeclaredKey) {
       written.insert(p);
     }
   }
+  // A medium, by its coefficients (Henyey-Greenstein's g) and as fog by its
+  // visibility (their keys exclude each other).
+  for (const char* medium : {"{sigma_a: 0.1, sigma_s: [0.1, 0.2, 0.3], "
+                             "phase: {model: henyey_greenstein, g: 0.5}}",
+                             "{visibility: 50 m}"}) {
+    std::ofstream(dir_ / "md.yaml") << "scene: scene.gltf\ncamera: {}\nlight: {}\ntime: {}\n"
+                                       "medium: "
+                                    << medium << "\n";
+    leafPaths(YAML::Load(effectiveConfigYaml(loadRunConfig(dir_ / "md.yaml"))), "", written);
+  }
   written.erase("");
   std::set<std::string> declared;
   for (const ConfigKey& k : runConfigKeys()) declared.insert(k.path);

@@ -50,6 +50,11 @@ time:
   bins: 300
   index_of_refraction: 1.33
   camera_unwarp: true
+medium:
+  sigma_a: [0.3, 0.05, 0.02]
+  sigma_s: 0.1
+  phase: {model: henyey_greenstein, g: 0.3}
+  index_of_refraction: 1.33
 render:
   renderer: reference
   backend: cpu
@@ -167,6 +172,11 @@ TEST_F(EveryKeyRoundTripTest, EveryDeclaredKeyIsNonDefaultAndSurvivesTheRoundTri
     // Keyed by a material's name, each model's own keys:
     // MaterialsConfigTest.TheEffectiveConfigReloadsToTheSameKernels.
     if (std::string(key.path).rfind("materials", 0) == 0) continue;
+    // Fog's keys exclude sigma_a and sigma_s:
+    // MediumConfigTest.EffectiveConfigReloadsToTheSameMedium.
+    if (std::string(key.path) == "medium.visibility" || std::string(key.path) == "medium.albedo") {
+      continue;
+    }
     // Excludes fov_y: LensConfigTest.EffectiveConfigReloadsToTheSameLens.
     if (std::string(key.path).rfind("camera.lens.", 0) == 0) continue;
     // Excludes the parametric keys: PsfConfigTest.KernelFileRoundTrips.

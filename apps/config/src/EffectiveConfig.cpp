@@ -8,6 +8,7 @@
 #include "LensConfig.h"
 #include "LightFields.h"
 #include "MaterialSection.h"
+#include "MediumSection.h"
 #include "NlosFields.h"
 #include "OutputFields.h"
 #include "RaysFields.h"
@@ -210,6 +211,9 @@ std::string effectiveConfigYaml(const RunConfig& config) {
   YAML::Node time;
   emitFields(time, kTimeFields, config.render.time);
   root["time"] = time;
+  // Only when given: a config without a medium keeps its effective bytes
+  // (and its run content key).
+  if (config.medium) root["medium"] = mediumNode(config);
   root["render"] = renderNode(config);
   YAML::Node output = outputNode(config.output);
   if (config.nlos) {  // the keys an nlos capture reads (RunChecks.cpp's checkNlosRun)

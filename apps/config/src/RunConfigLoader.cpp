@@ -6,6 +6,7 @@
 #include "CameraConfigParser.h"
 #include "ConfigNode.h"
 #include "MaterialSection.h"
+#include "MediumSection.h"
 #include "NlosConfigParser.h"
 #include "RayFile.h"
 #include "RunChecks.h"
@@ -140,6 +141,7 @@ RunConfig loadRunConfigYaml(YAML::Node yaml, const std::filesystem::path& file,
     root.failKey("time", "required key is missing (start, bin_width, bins)");
   }
   if (const auto render = root.optionalChild("render")) parseRender(*render, config);
+  parseMedium(root, config);
   config.materials_at = FileLoc{file.string()};
   if (const auto materials = root.optionalChild("materials")) parseMaterials(*materials, config);
   checkVplCount(root, config);

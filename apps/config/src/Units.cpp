@@ -82,6 +82,20 @@ double parseBytes(const std::string& text) {
   return scaled(text, units, "size");
 }
 
+double parseAttenuation_per_m(const std::string& text) {
+  // A coefficient is a reciprocal length; "/m" and "1/m" alike (the forms
+  // optics texts write; turbid water and tissue are quoted per cm or mm).
+  static const std::map<std::string, double, std::less<>> units = [] {
+    std::map<std::string, double, std::less<>> u;
+    for (const auto& [name, metres] : kLengthUnits) {
+      u["/" + name] = 1.0 / metres;
+      u["1/" + name] = 1.0 / metres;
+    }
+    return u;
+  }();
+  return scaled(text, units, "attenuation");
+}
+
 double parseFrequency_Hz(const std::string& text) {
   static const std::map<std::string, double, std::less<>> units = {
       {"Hz", 1.0}, {"kHz", 1e3}, {"MHz", 1e6}, {"GHz", 1e9}};

@@ -4,6 +4,7 @@
 
 #include "RenderStatsJson.h"
 #include "TimeAxisJson.h"
+#include "tofsim/physics/MediumPhysics.h"
 #include "tofsim/pipeline/AxisReport.h"
 #include "tofsim/pipeline/OutputProducts.h"
 #include "tofsim/pipeline/Version.h"
@@ -113,6 +114,28 @@ nlohmann::json lightJson(const capture::Light& light, bool attachedToCamera) {
           {"attached_to_camera", attachedToCamera}};
 }
 
+// The medium that filled the scene: its coefficients as the renderers took
+// them, and the visibility they came from (fog).
+nlohmann::json mediumJson(const capture::Medium& m, const config::MediumConfig& form,
+                          const TimeAxis& axis) {
+  nlohmann::json j = {
+      {"model",
+       "homogeneous, filling the scene: a leg of geometric length x is attenuated by "
+       "exp(-sigma_t x); the light scattered in it is in direct (single scattering)"},
+      {"sigma_a_per_m", vec(m.sigma_a_per_m)},
+      {"sigma_s_per_m", vec(m.sigma_s_per_m)},
+      {"sigma_t_per_m", vec(m.sigmaT())},
+      {"albedo", vec(m.albedo())},
+      {"phase", config::phaseModelName(m.phase)},
+      {"index_of_refraction", axis.index_of_refraction}};
+  if (m.phase == physics::PHASE_HENYEY_GREENSTEIN) j["g"] = m.g;
+  if (form.visibility_m > 0.0) {
+    j["visibility_m"] = form.visibility_m;
+    j["visibility_doc"] = "fog: sigma_t = 3.912 / visibility (Koschmieder)";
+  }
+  return j;
+}
+
 }  // namespace
 
 std::string transientMetadataJson(const config::RunConfig& config, const capture::RenderJob& job,
@@ -135,6 +158,10 @@ std::string transientMetadataJson(const config::RunConfig& config, const capture
     if (config.camera.psf) j["camera"]["psf"] = psfJson(*config.camera.psf);
   }
   j["light"] = lightJson(job.light, config.light.attach_to_camera);
+  // Only with a medium: the files of a render in vacuum keep their bytes.
+  if (job.settings.medium.present() && config.medium) {
+    j["medium"] = mediumJson(job.settings.medium, *config.medium, axis);
+  }
   j["renderer"] = config.renderer == config::RendererKind::Reference ? "reference" : "ir";
   j["backend"] = backend;
   j["device"] = device;

@@ -160,6 +160,24 @@ struct MaterialConfig {
   FileLoc at;
 };
 
+/// `medium:` (MediumSection.cpp): the homogeneous medium that fills the
+/// scene is RunConfig::render.medium (and its index of refraction
+/// render.time.index_of_refraction); this is the form it was written in,
+/// for the effective config and the metadata.
+struct MediumConfig {
+  /// `visibility`: the meteorological visibility it was derived from (fog,
+  /// Koschmieder: sigma_t = 3.912 / V), m; 0 when sigma_a and sigma_s were
+  /// given.
+  double visibility_m = 0.0;
+  /// With `visibility`: the single-scattering albedo per channel.
+  glm::vec3 albedo{0.0f};
+  /// Where `medium:` is, for the errors found later.
+  FileLoc at;
+};
+/// A medium's phase model (capture::Medium::phase) as `medium.phase.model`
+/// writes it: "isotropic", "henyey_greenstein" or "rayleigh".
+const char* phaseModelName(int32_t phase);
+
 struct RunConfig {
   std::filesystem::path config_file;
   std::filesystem::path scene_file;  ///< resolved against the config's folder
@@ -194,6 +212,8 @@ struct RunConfig {
   /// Where `materials:` is (the config file when absent): errors about the
   /// materials' delays found once the scene is read are located there.
   FileLoc materials_at;
+  /// `medium:` as written; unset without one (render.medium then has none).
+  std::optional<MediumConfig> medium;
 };
 
 /// One `--set key.path=value` override, applied before validation.

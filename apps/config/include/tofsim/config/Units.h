@@ -1,7 +1,7 @@
 #pragma once
 // Quantities with units in config values: "10 ps", "3 ns", "0.5 m", "30 deg",
-// "512 MiB", "20 MHz". Parsers throw std::invalid_argument with a message the
-// config module wraps with the value's location.
+// "512 MiB", "20 MHz", "0.04 /m". Parsers throw std::invalid_argument with a
+// message the config module wraps with the value's location.
 
 #include <string>
 
@@ -17,6 +17,9 @@ double parseLength_m(const std::string& text);
 double parseAngle_deg(const std::string& text);
 /// Byte count: B, KB, MB, GB, KiB, MiB, GiB, TiB. A bare number is bytes.
 double parseBytes(const std::string& text);
+/// An attenuation coefficient (a medium's sigma_a, sigma_s) in 1/m: /m, 1/m,
+/// /cm, 1/cm, /mm, 1/mm, /km, 1/km, /um, 1/um. A bare number is 1/m.
+double parseAttenuation_per_m(const std::string& text);
 /// Frequency in hertz: Hz, kHz, MHz, GHz. A bare number is hertz.
 double parseFrequency_Hz(const std::string& text);
 

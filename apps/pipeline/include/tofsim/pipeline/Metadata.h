@@ -1,8 +1,9 @@
 #pragma once
 // transient.json: how to read transient.npy without guessing. Axis order,
 // units, the time axis in seconds and in metres of optical path, the camera,
-// the light, channel names, the tofsim version, the seed, and what rendered
-// it (`backend`: gl, cpu or reference; `device`: its description).
+// the light, the medium (with one), channel names, the tofsim version, the
+// seed, and what rendered it (`backend`: gl, cpu or reference; `device`: its
+// description).
 
 #include <string>
 
