@@ -120,8 +120,8 @@ nlohmann::json mediumJson(const capture::Medium& m, const config::MediumConfig& 
                           const TimeAxis& axis) {
   nlohmann::json j = {
       {"model",
-       "homogeneous, filling the scene: a leg of geometric length x is attenuated by "
-       "exp(-sigma_t x); the light scattered in it is in direct (single scattering)"},
+       "homogeneous, filling the scene: each leg of geometric length x attenuated by "
+       "exp(-sigma_t x); light scattered once in it is direct light (bounce 1)"},
       {"sigma_a_per_m", vec(m.sigma_a_per_m)},
       {"sigma_s_per_m", vec(m.sigma_s_per_m)},
       {"sigma_t_per_m", vec(m.sigmaT())},
