@@ -189,7 +189,9 @@ TEST_F(MediumConfigTest, CapturesWithoutAMediumAreRefused) {
       "time: {}\n";
   Failure f = errorOf("medium:\n  sigma_s: 0.1\n", nlos);
   EXPECT_EQ(f.line, 5) << f.what;
-  EXPECT_NE(f.what.find("nlos capture is not built yet"), std::string::npos) << f.what;
+  EXPECT_NE(f.what.find("medium.sigma_s: a medium in an nlos capture is not built yet"),
+            std::string::npos)
+      << f.what;
   const std::string rays = "scene: scene.gltf\nrays: {file: rays.csv}\nlight: {}\ntime: {}\n";
   f = errorOf("medium:\n  sigma_s: 0.1\n", rays);
   EXPECT_EQ(f.line, 6) << f.what;

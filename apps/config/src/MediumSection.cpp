@@ -130,17 +130,21 @@ void parseIndex(const ConfigNode& root, const ConfigNode& n, TimeAxis& time) {
 }
 
 // What the renderers do not build a medium into yet: a located error rather
-// than a render that silently ignores it.
-void refuseUnbuiltCaptures(const ConfigNode& root, const RunConfig& config) {
+// than a render that silently ignores it, at the key that makes the medium
+// (a --set of it names the --set).
+void refuseUnbuiltCaptures(const ConfigNode& n, const capture::Medium& m, const RunConfig& config) {
+  const char* key = n.has("visibility")                                            ? "visibility"
+                    : glm::any(glm::greaterThan(m.sigma_s_per_m, glm::vec3(0.0f))) ? "sigma_s"
+                                                                                   : "sigma_a";
   if (config.nlos) {
-    root.failKey("medium",
-                 "a medium in an nlos capture is not built yet (the relay-wall scan renders "
-                 "in vacuum): remove `medium` or `nlos`");
+    n.failKey(key,
+              "a medium in an nlos capture is not built yet (the relay-wall scan renders in "
+              "vacuum): remove `medium` or `nlos`");
   }
   if (config.rays) {
-    root.failKey("medium",
-                 "a medium with a ray-list capture (`rays`) is not built yet (its pixels' rays "
-                 "are not attenuated nor scattered along): use `camera`, or remove `medium`");
+    n.failKey(key,
+              "a medium with a ray-list capture (`rays`) is not built yet (its pixels' rays are "
+              "not attenuated nor scattered along): use `camera`, or remove `medium`");
   }
 }
 
@@ -189,7 +193,7 @@ void parseMedium(const ConfigNode& root, RunConfig& config) {
   }
   if (n->has("phase")) parsePhase(*n, m);
   parseIndex(root, *n, config.render.time);
-  if (m.present()) refuseUnbuiltCaptures(root, config);
+  if (m.present()) refuseUnbuiltCaptures(*n, m, config);
   config.render.medium = m;
   config.medium = form;
 }
