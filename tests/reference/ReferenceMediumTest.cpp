@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <vector>
 
 #include "MediumClosedForm.h"
 #include "RenderReference.h"
@@ -164,6 +165,71 @@ TEST(ReferenceMediumTest, SingleScatteringFollowsTheLidarEquationPerBin) {
     }
     for (int b = 0; b < out.indirect.bins(); ++b) EXPECT_EQ(out.indirect.at(0, 0, b, 0), 0.0f);
   }
+}
+
+TEST(ReferenceMediumTest, BistaticSingleScatteringIsTheIntegralAlongThePixelRay) {
+  // The light 0.5 m beside the camera: every medium point on a pixel's ray
+  // sends sigma_s p(theta) I T(t) T(d) / d^2 at path t + d, estimated by the
+  // free flight and the equiangular point (MIS). Expected bins and second
+  // moments by a fine quadrature along each pixel's ray.
+  LidarJob s;
+  s.job.light.position_world = s.job.camera().position_world + glm::vec3(0.5f, 0.0f, 0.0f);
+  constexpr double kL0 = 1.0, kWidth = 0.25;  // total geometric path of bin 0, bin width
+  s.job.settings.time = TimeAxis{kL0 * LidarJob::kEta / kSpeedOfLight_m_per_s,
+                                 kWidth * LidarJob::kEta / kSpeedOfLight_m_per_s, 16};
+  s.job.settings.time.index_of_refraction = LidarJob::kEta;
+  const Medium m = medium({0.1f, 0.3f, 0.05f}, {0.3f, 0.2f, 0.5f},
+                          physics::PHASE_HENYEY_GREENSTEIN, 0.5f);
+  s.job.settings.medium = m;
+  constexpr int kPaths = 2048;
+  const VolumeCollector out = test::renderReference(s.job, singleScattering(kPaths));
+  const PrimaryRays rays(s.job.imager);
+  const glm::dvec3 light(s.job.light.position_world);
+  const glm::dvec3 sigmaT(m.sigmaT()), sigmaS(m.sigma_s_per_m);
+  const glm::dvec3 intensity(s.job.light.intensity_W_per_sr);
+  double chi2 = 0.0, chi2NoMis = 0.0;
+  int dof = 0;
+  for (int y = 0; y < 4; ++y) {
+    for (int x = 0; x < 4; ++x) {
+      const PrimaryRay ray = rays.ray(x, y);
+      const glm::dvec3 o(ray.origin), dir(ray.direction);
+      // Per bin and channel: mean, E[A^2] + E[B^2], E[A], E[B]; and the
+      // mean a free flight alone would see without the equiangular share.
+      std::vector<glm::dvec3> mean(16), second(16), meanA(16), meanB(16);
+      constexpr double kStep = 2e-5;
+      for (double t = 0.5 * kStep; t < kL0 + 16 * kWidth; t += kStep) {
+        const glm::dvec3 p = o + dir * t;
+        const double d = glm::length(light - p);
+        const int b = static_cast<int>(std::floor((t + d - kL0) / kWidth));
+        if (b < 0 || b >= 16) continue;
+        const double phase = physics::phaseFunction(
+            m.phase, m.g, static_cast<float>(glm::dot((p - light) / d, -dir)));
+        const glm::dvec3 f = sigmaS * glm::exp(-sigmaT * (t + d)) * intensity * (phase / (d * d));
+        const double pa = test::mixturePdf(m, t), pb = test::equiangularPdf(o, dir, light, t);
+        const glm::dvec3 w = f / (pa + pb);
+        mean[b] += f * kStep;
+        second[b] += (pa + pb) * w * w * kStep;
+        meanA[b] += pa * w * kStep;
+        meanB[b] += pb * w * kStep;
+      }
+      for (int b = 0; b < 16; ++b) {
+        for (int c = 0; c < 3; ++c) {
+          const double m2 = second[b][c] + 2.0 * meanA[b][c] * meanB[b][c];
+          const double se = std::sqrt(std::max(0.0, m2 - mean[b][c] * mean[b][c]) / kPaths);
+          const double v = out.direct.at(y, x, b, c);
+          chi2 += (v - mean[b][c]) * (v - mean[b][c]) / (se * se);
+          // Counting only one strategy's share (no MIS) is rejected.
+          chi2NoMis += (v - meanA[b][c]) * (v - meanA[b][c]) / (se * se);
+          ++dof;
+        }
+      }
+    }
+  }
+  const double critical = dof + 5.0 * std::sqrt(2.0 * dof);
+  std::printf("bistatic: chi-square %.1f over %d pixel-bin-channels (critical %.1f), "
+              "free-flight share alone %.0f\n", chi2, dof, critical, chi2NoMis);
+  EXPECT_LT(chi2, critical);
+  EXPECT_GT(chi2NoMis, critical);
 }
 
 TEST(ReferenceMediumTest, PlaneReturnIsTheVacuumReturnTimesTwoWayTransmittance) {
