@@ -9,7 +9,8 @@
 // (deposited at round trip 2 t); if it reaches a surface at r, whose vacuum
 // return is v_c, T_c(r) / P(r) x v_c T_c(r), P(r) = mean_c T_c(r). A light
 // off the pixel's ray adds an equiangular point per path (balance heuristic
-// with the free flight: each strategy's estimate f / (p_flight + p_equiangular)).
+// with the free flight: each strategy's estimate f / (p_flight + p_equiangular),
+// the density tofsim/reference/Equiangular.h's).
 
 #include <cmath>
 
@@ -65,18 +66,6 @@ inline Moments surfaceReturn(const capture::Medium& m, int c, double vacuum, dou
   const double p = (std::exp(-st.x * r) + std::exp(-st.y * r) + std::exp(-st.z * r)) / 3.0;
   const double t2 = std::exp(-2.0 * st[c] * r);
   return {vacuum * t2, vacuum * vacuum * t2 * t2 / p};
-}
-
-/// The density of the reference's equiangular point on the ray
-/// origin + t direction, t in [0, infinity), towards a light (Kulla and
-/// Fajardo 2012; src/Equiangular.h): h / ((pi/2 - atan(-delta / h)) (h^2 + (t - delta)^2)).
-inline double equiangularPdf(const glm::dvec3& origin, const glm::dvec3& direction,
-                             const glm::dvec3& light, double t) {
-  const glm::dvec3 toLight = light - origin;
-  const double delta = glm::dot(toLight, direction);
-  const double h = glm::length(toLight - delta * direction);
-  const double range = 1.57079632679489661923 - std::atan2(-delta, h);
-  return h / (range * (h * h + (t - delta) * (t - delta)));
 }
 
 }  // namespace tofsim::test

@@ -10,12 +10,14 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <vector>
 
 #include "MediumClosedForm.h"
 #include "RenderReference.h"
 #include "support/ClosedForm.h"
 #include "tofsim/physics/MediumPhysics.h"
+#include "tofsim/reference/Equiangular.h"
 #include "tofsim/util/Error.h"
 
 namespace tofsim::reference {
@@ -193,6 +195,8 @@ TEST(ReferenceMediumTest, BistaticSingleScatteringIsTheIntegralAlongThePixelRay)
     for (int x = 0; x < 4; ++x) {
       const PrimaryRay ray = rays.ray(x, y);
       const glm::dvec3 o(ray.origin), dir(ray.direction);
+      const PhaseAngleTable angles(m.phase, m.g);
+      const Equiangular towardsLight(o, dir, std::numeric_limits<double>::infinity(), light, angles);
       // Per bin and channel: mean, E[A^2] + E[B^2], E[A], E[B]; and the
       // mean a free flight alone would see without the equiangular share.
       std::vector<glm::dvec3> mean(16), second(16), meanA(16), meanB(16);
@@ -205,7 +209,7 @@ TEST(ReferenceMediumTest, BistaticSingleScatteringIsTheIntegralAlongThePixelRay)
         const double phase = physics::phaseFunction(
             m.phase, m.g, static_cast<float>(glm::dot((p - light) / d, -dir)));
         const glm::dvec3 f = sigmaS * glm::exp(-sigmaT * (t + d)) * intensity * (phase / (d * d));
-        const double pa = test::mixturePdf(m, t), pb = test::equiangularPdf(o, dir, light, t);
+        const double pa = test::mixturePdf(m, t), pb = towardsLight.pdf(t);
         const glm::dvec3 w = f / (pa + pb);
         mean[b] += f * kStep;
         second[b] += (pa + pb) * w * w * kStep;

@@ -8,13 +8,14 @@
 // Every vertex is lit by next-event estimation with the light's transmittance
 // on the shadow leg; the light the medium scatters along a leg is estimated
 // by two strategies, the free flight's event and an equiangular point
-// (Equiangular.h), weighted by the balance heuristic; a medium event counts as a bounce (bounces_ vertices per
+// weighted by the phase function (tofsim/reference/Equiangular.h), combined
+// by the balance heuristic; a medium event counts as a bounce (bounces_ vertices per
 // path, vertex 1's light is `direct`). Times are eta x geometric length.
 
 #include <cmath>
 
-#include "Equiangular.h"
 #include "PathIntegrator.h"
+#include "tofsim/reference/Equiangular.h"
 #include "tofsim/ir/HitVertex.h"
 #include "tofsim/physics/MediumPhysics.h"
 #include "tofsim/rays/Sampling.h"
@@ -63,10 +64,11 @@ void PathIntegrator::traceMediumPath(const glm::vec3& eye, const glm::vec3& dire
     double* histogram = vertex == 1 ? direct : indirect;
     // The light the medium scatters towards the path along this leg, by two
     // strategies (balance heuristic): the free flight's event below, and an
-    // equiangular point towards the light, which bounds the 1 / d^2 of
-    // points near it. Only the free flight continues the path.
+    // equiangular point towards the light weighted by the phase function,
+    // which cancels the 1 / d^2 of points near it and the phase's peak.
+    // Only the free flight continues the path.
     Equiangular towardsLight(glm::dvec3(position), glm::dvec3(dir), toSurface_m,
-                             glm::dvec3(job_.light.position_world));
+                             glm::dvec3(job_.light.position_world), angles_);
     if (flight_.scatters() && towardsLight.usable()) {
       const double t = towardsLight.sample(rng.nextDouble());
       if (t < toSurface_m) {

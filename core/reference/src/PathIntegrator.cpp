@@ -44,7 +44,8 @@ PathIntegrator::PathIntegrator(const RayScene& scene, const capture::RenderJob& 
       inMedium_(job.settings.medium.present()),
       flight_(job.settings.medium),
       phase_(job.settings.medium.phase),
-      g_(job.settings.medium.g) {}
+      g_(job.settings.medium.g),
+      angles_(job.settings.medium.phase, job.settings.medium.g) {}
 
 PathIntegrator::Radiance PathIntegrator::lightReflectedAt(const SurfaceHit& hit,
                                                           const glm::vec3& toViewer) const {

@@ -12,6 +12,7 @@
 #include "tofsim/reference/ReferenceRenderer.h"
 #include "tofsim/util/Random.h"
 #include "FreeFlight.h"
+#include "tofsim/reference/Equiangular.h"
 #include "VertexDelay.h"
 
 namespace tofsim::reference {
@@ -153,6 +154,7 @@ class PathIntegrator {
   FreeFlight flight_;
   int32_t phase_;
   float g_;
+  PhaseAngleTable angles_;  ///< the phase's scattering angles, for the equiangular points
 };
 
 }  // namespace tofsim::reference
