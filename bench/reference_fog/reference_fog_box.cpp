@@ -66,7 +66,7 @@ int main(int argc, char** argv) {
   std::printf("fog box 32x32, 64 bins, 4 vertices per path, g %.1f, threads %d\n", g, threads);
   std::printf("%6s %9s %16s %14s %20s %16s\n", "paths", "seconds", "transient noise",
               "steady noise", "transient x sqrt(s)", "max / mean pixel");
-  for (const int paths : {16, 64, 256}) {
+  for (const int paths : {16, 64, 256, 1024}) {
     reference::ReferenceSettings settings;
     settings.bounces = 4;
     settings.samples_per_pixel = paths;
