@@ -286,6 +286,23 @@ TEST(ReferenceMediumTest, PlaneReturnIsTheVacuumReturnTimesTwoWayTransmittance) 
   std::printf("plane return: worst |z| %.2f over %d pixel channels\n", worst, checked);
 }
 
+TEST(ReferenceMediumTest, SameBytesAcrossThreadsAndSegments) {
+  test::CornerJob s(8);
+  s.job.settings.medium =
+      medium({0.05f, 0.1f, 0.02f}, {0.4f, 0.3f, 0.5f}, physics::PHASE_HENYEY_GREENSTEIN, 0.7f);
+  ReferenceSettings settings;
+  settings.bounces = 3;
+  settings.samples_per_pixel = 8;
+  settings.threads = 1;
+  const VolumeCollector one = test::renderReference(s.job, settings);
+  settings.threads = 2;
+  s.job.settings.memory_budget_bytes = 8 * 1000 * 3 * 4 * 2;  // one row per segment
+  const VolumeCollector two = test::renderReference(s.job, settings);
+  EXPECT_EQ(one.direct.values(), two.direct.values());
+  EXPECT_EQ(one.indirect.values(), two.indirect.values());
+  EXPECT_GT(test::energy(one.indirect), 0.0);
+}
+
 TEST(ReferenceMediumTest, RefusesAMediumItCannotSample) {
   test::PlaneJob s;
   s.job.camera().width = s.job.camera().height = 2;
