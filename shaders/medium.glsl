@@ -44,4 +44,42 @@ TOFSIM_PHYSICS_FN vec3 mediumTransmittance(vec3 sigmaT, float distance) {
   return exp(-sigmaT * distance);
 }
 
+// Phase sampling (the reference's medium vertices; IR's medium VPLs): the
+// cosine of a scattering angle drawn from the phase function of model
+// PHASE_* from one uniform number u in [0, 1), pdf = 2 pi phaseFunction(mu)
+// over mu in [-1, 1]. Henyey-Greenstein by its inverse CDF (isotropic below
+// |g| = 1e-3, where the closed form cancels); Rayleigh by the real root of
+// its cubic CDF mu^3 + 3 mu = 8 u - 4 (Cardano: mu = A - 1/A with
+// A = cbrt(z + sqrt(z^2 + 1)), z = 4 u - 2, taken on |z| and signed so that
+// the sum never cancels).
+TOFSIM_PHYSICS_FN float sampleHenyeyGreensteinCosine(float g, float u) {
+  if (abs(g) < 1e-3f) return 1.0f - 2.0f * u;
+  float s = (1.0f - g * g) / (1.0f - g + 2.0f * g * u);
+  return clamp((1.0f + g * g - s * s) / (2.0f * g), -1.0f, 1.0f);
+}
+
+TOFSIM_PHYSICS_FN float sampleRayleighCosine(float u) {
+  float z = 4.0f * u - 2.0f;
+  float a = pow(abs(z) + sqrt(z * z + 1.0f), 1.0f / 3.0f);
+  float mu = a - 1.0f / a;
+  return clamp(z < 0.0f ? -mu : mu, -1.0f, 1.0f);
+}
+
+TOFSIM_PHYSICS_FN float samplePhaseCosine(int model, float g, float u) {
+  if (model == PHASE_HENYEY_GREENSTEIN) return sampleHenyeyGreensteinCosine(g, u);
+  if (model == PHASE_RAYLEIGH) return sampleRayleighCosine(u);
+  return 1.0f - 2.0f * u;
+}
+
+// A direction leaving a medium point, drawn from the phase function about
+// the unit direction the light (or, traced backwards, the path) travels in,
+// `forward`: cos(angle to forward) from samplePhaseCosine(u1), azimuth
+// 2 pi u2. Its pdf is phaseFunction(model, g, dot(forward, result)), 1/sr.
+TOFSIM_PHYSICS_FN vec3 samplePhaseDirection(int model, float g, vec3 forward, float u1, float u2) {
+  float mu = samplePhaseCosine(model, g, u1);
+  float sinTheta = sqrt(max(0.0f, 1.0f - mu * mu));
+  float phi = 2.0f * PI * u2;
+  return basisAround(forward) * vec3(sinTheta * cos(phi), sinTheta * sin(phi), mu);
+}
+
 #endif  // TOFSIM_MEDIUM_GLSL

@@ -40,7 +40,12 @@ PathIntegrator::PathIntegrator(const RayScene& scene, const capture::RenderJob& 
       gltf_(job.settings.materials == capture::MaterialModel::Gltf),
       materials_(ir::materialVertices(scene.scene(), physics::VERTEX_GLTF)),
       sampling_(sampling),
-      delays_(ir::materialResponses(scene.scene()).kernels) {}
+      delays_(ir::materialResponses(scene.scene()).kernels),
+      inMedium_(job.settings.medium.present()),
+      flight_(job.settings.medium),
+      phase_(job.settings.medium.phase),
+      g_(job.settings.medium.g),
+      angles_(job.settings.medium.phase, job.settings.medium.g) {}
 
 PathIntegrator::Radiance PathIntegrator::lightReflectedAt(const SurfaceHit& hit,
                                                           const glm::vec3& toViewer) const {
@@ -101,7 +106,9 @@ Pcg32 PathIntegrator::delayStream(uint64_t pixel) const {
 
 void PathIntegrator::renderPixel(int32_t x, int32_t y, PixelOutput& out,
                                  std::vector<double>& scratch) const {
-  if (pixelFilter_ == PixelFilter::Point) {
+  if (inMedium_) {
+    renderPixelInMedium(x, y, out, scratch);
+  } else if (pixelFilter_ == PixelFilter::Point) {
     renderPixelCentre(x, y, out, scratch);
   } else {
     renderPixelArea(x, y, out, scratch);

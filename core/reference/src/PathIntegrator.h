@@ -11,6 +11,8 @@
 #include "tofsim/rays/RayScene.h"
 #include "tofsim/reference/ReferenceRenderer.h"
 #include "tofsim/util/Random.h"
+#include "FreeFlight.h"
+#include "tofsim/reference/Equiangular.h"
 #include "VertexDelay.h"
 
 namespace tofsim::reference {
@@ -102,6 +104,28 @@ class PathIntegrator {
   /// the directions a path draws do not depend on its delays.
   Pcg32 delayStream(uint64_t pixel) const;
 
+  // The medium that fills the scene (issue 42; MediumPaths.cpp). Without one
+  // (!medium.present()) none of these runs: the bytes of before.
+  /// Both filters: each of the pixel's paths starts through its own
+  /// sub-pixel point (box) or the centre (point), and every term, the direct
+  /// one included, is averaged over the paths (the first leg is sampled).
+  void renderPixelInMedium(int32_t x, int32_t y, PixelOutput& out,
+                           std::vector<double>& scratch) const;
+  /// One path from `eye` along unit `direction`: up to bounces_ vertices,
+  /// each a surface or a medium event (free-flight sampling), each lit by
+  /// next-event estimation through the medium; vertex 1's light goes to
+  /// `direct`, the later ones' to `indirect`.
+  void traceMediumPath(const glm::vec3& eye, const glm::vec3& direction, Pcg32& rng,
+                       Pcg32& delays, double* direct, double* indirect, AxisLoss& outside) const;
+  /// Adds the light that medium point p scatters towards the unit direction
+  /// toViewer straight from the light (phase function x I x profile / d^2 x
+  /// transmittance, one shadow ray) x `weight` (the point's T sigma_s over
+  /// its sampling density, MIS-weighted), seen through `state`, at the path
+  /// length path_m (viewpoint -> p, as timed) + d.
+  void addMediumLight(const glm::vec3& p, const glm::vec3& toViewer, const PathState& state,
+                      const glm::dvec3& weight, double path_m, double* histogram,
+                      AxisLoss& outside) const;
+
   /// Length of the last leg (surface -> viewpoint, metres) that counts in
   /// the time: 0 with camera_unwarp or a point set that drops it.
   double lastLeg_m(double surfaceToViewpoint_m) const;
@@ -125,6 +149,12 @@ class PathIntegrator {
   ContinuationSampling sampling_;
   /// The scene's delay kernels (ir::materialResponses), by base id.
   VertexDelays delays_;
+  /// RenderSettings::medium: present, its flights; phase model and g.
+  bool inMedium_;
+  FreeFlight flight_;
+  int32_t phase_;
+  float g_;
+  PhaseAngleTable angles_;  ///< the phase's scattering angles, for the equiangular points
 };
 
 }  // namespace tofsim::reference

@@ -2,12 +2,14 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <string>
 #include <vector>
 
 #include "PathIntegrator.h"
 #include "tofsim/capture/DirectLightView.h"
 #include "tofsim/capture/SegmentStream.h"
+#include "tofsim/physics/MediumPhysics.h"
 #include "tofsim/rays/RayScene.h"
 #include "tofsim/util/Error.h"
 #include "tofsim/util/ParallelFor.h"
@@ -17,6 +19,28 @@ namespace tofsim::reference {
 using namespace capture;  // the job description types
 
 namespace {
+
+// The medium must be one the path tracer can sample: finite, non-negative
+// coefficients, a known phase function, |g| < 1 (a Henyey-Greenstein lobe
+// with |g| = 1 is a delta: no density to sample or weigh by).
+void validateMedium(const Medium& m) {
+  for (int c = 0; c < 3; ++c) {
+    const float a = m.sigma_a_per_m[c], s = m.sigma_s_per_m[c];
+    if (!(std::isfinite(a) && std::isfinite(s) && a >= 0.0f && s >= 0.0f)) {
+      throw InputError("medium: sigma_a and sigma_s must be finite and >= 0 (channel " +
+                       std::to_string(c) + ": sigma_a " + std::to_string(a) + ", sigma_s " +
+                       std::to_string(s) + " 1/m)");
+    }
+  }
+  if (m.phase != physics::PHASE_ISOTROPIC && m.phase != physics::PHASE_HENYEY_GREENSTEIN &&
+      m.phase != physics::PHASE_RAYLEIGH) {
+    throw InputError("medium: unknown phase function " + std::to_string(m.phase) +
+                     " (the reference path tracer samples isotropic, henyey_greenstein, rayleigh)");
+  }
+  if (!(std::fabs(m.g) < 1.0f)) {
+    throw InputError("medium: g must lie in (-1, 1) (got " + std::to_string(m.g) + ")");
+  }
+}
 
 void validate(const ReferenceSettings& s, const RenderJob& job) {
   TOFSIM_CHECK(job.scene != nullptr);
@@ -37,6 +61,7 @@ void validate(const ReferenceSettings& s, const RenderJob& job) {
   if (axis.bins < 1 || !(axis.bin_width_s > 0.0)) {
     throw InputError("time axis needs bins >= 1 and bin_width > 0");
   }
+  validateMedium(job.settings.medium);  // also one that present() calls absent (negative)
   // Its paths start at the camera's position: an aperture would be ignored.
   if (const Camera* camera = cameraOf(job.imager); camera != nullptr && camera->defocused()) {
     throw InputError("camera.aperture " + std::to_string(camera->aperture_m) +

@@ -9,7 +9,11 @@
 
 namespace tofsim::physics {
 
+using glm::abs;
+using glm::cos;
 using glm::exp;
+using glm::pow;
+using glm::sin;
 
 #define TOFSIM_PHYSICS_FN inline
 #include "medium.glsl"

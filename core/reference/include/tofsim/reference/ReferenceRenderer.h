@@ -19,6 +19,12 @@
 //    `fraction` by a delay drawn from the kernel and re-emitted through its
 //    matrix (a delay per vertex, Jarabo et al. 2014), from a random stream of
 //    its own; energy is kept path by path.
+//  - in a medium (RenderSettings::medium present; src/MediumPaths.cpp):
+//    every vertex a surface or a medium event (free flights by spectral MIS
+//    over the channels' sigma_t, phase sampling), next-event estimation
+//    through the medium, the medium's light along each leg also by
+//    equiangular points (Equiangular.h); a medium event counts as a bounce.
+//    Without one the paths above run unchanged (the same bytes).
 // Deterministic: every pixel draws from its own generator seeded with
 // (RenderSettings::seed, pixel index), so the bytes depend neither on the
 // thread count nor on scheduling.

@@ -1,0 +1,136 @@
+// The reference path tracer in the homogeneous medium that fills the scene
+// (issue 42; core/reference/README.md, "In a medium"). A path's vertices are
+// surfaces or medium events: along each leg a free flight is drawn
+// (FreeFlight: spectral MIS over the channels' sigma_t); if it ends before
+// the next surface the path scatters there (throughput T sigma_s / p, a new
+// direction drawn from the phase function, whose weight phase / pdf is 1),
+// else it reaches the surface (throughput T / P) and continues as in vacuum.
+// Every vertex is lit by next-event estimation with the light's transmittance
+// on the shadow leg; the light the medium scatters along a leg is estimated
+// by two strategies, the free flight's event and an equiangular point
+// weighted by the phase function (tofsim/reference/Equiangular.h), combined
+// by the balance heuristic; a medium event counts as a bounce (bounces_ vertices per
+// path, vertex 1's light is `direct`). Times are eta x geometric length.
+
+#include <cmath>
+
+#include "PathIntegrator.h"
+#include "tofsim/reference/Equiangular.h"
+#include "tofsim/ir/HitVertex.h"
+#include "tofsim/physics/MediumPhysics.h"
+#include "tofsim/rays/Sampling.h"
+
+namespace tofsim::reference {
+
+void PathIntegrator::renderPixelInMedium(int32_t x, int32_t y, PixelOutput& out,
+                                         std::vector<double>& scratch) const {
+  const capture::PrimaryRay centre = rays_.ray(x, y);
+  const glm::vec3 eye = centre.origin;
+  if (const auto hit = scene_.intersect(eye, centre.direction)) {
+    out.depth_m = static_cast<float>(glm::length(hit->position_world - eye));
+  }
+  const std::size_t floats = static_cast<std::size_t>(job_.settings.time.bins) * 3;
+  scratch.assign(2 * floats, 0.0);
+  double* direct = scratch.data();
+  double* indirect = direct + floats;
+  AxisLoss outside;
+  Pcg32 rng = Pcg32::forUnit(job_.settings.seed, pixelIndex(x, y));
+  Pcg32 delays = delayStream(pixelIndex(x, y));
+  for (int32_t s = 0; s < samplesPerPixel_; ++s) {
+    const glm::vec3 direction =
+        pixelFilter_ == PixelFilter::Box
+            ? rays_.ray(x, y, rays::stratifiedPixelOffset(s, samplesPerPixel_, rng)).direction
+            : centre.direction;
+    traceMediumPath(eye, direction, rng, delays, direct, indirect, outside);
+  }
+  storeAverages(direct, indirect, floats, outside, out);
+}
+
+void PathIntegrator::traceMediumPath(const glm::vec3& eye, const glm::vec3& direction,
+                                     Pcg32& rng, Pcg32& delays, double* direct,
+                                     double* indirect, AxisLoss& outside) const {
+  PathState state;
+  glm::vec3 position = eye;  // the current vertex
+  glm::vec3 dir = direction;
+  std::optional<SurfaceHit> surface;  // the current vertex when it is a surface
+  double path_m = 0.0;                // viewpoint -> current vertex, as timed
+  for (int32_t vertex = 1; vertex <= bounces_; ++vertex) {
+    const glm::vec3 origin = surface ? scene_.offsetOrigin(*surface, dir) : position;
+    const std::optional<SurfaceHit> next = scene_.intersect(origin, dir);
+    // In float, as the vacuum paths measure their legs (the same bins).
+    const double toSurface_m =
+        next ? glm::length(next->position_world - position) : FreeFlight::kNone;
+    const double flight_m = flight_.sample(rng);
+    double* histogram = vertex == 1 ? direct : indirect;
+    // The light the medium scatters towards the path along this leg, by two
+    // strategies (balance heuristic): the free flight's event below, and an
+    // equiangular point towards the light weighted by the phase function,
+    // which cancels the 1 / d^2 of points near it and the phase's peak.
+    // Only the free flight continues the path.
+    Equiangular towardsLight(glm::dvec3(position), glm::dvec3(dir), toSurface_m,
+                             glm::dvec3(job_.light.position_world), angles_);
+    if (flight_.scatters() && towardsLight.usable()) {
+      const double t = towardsLight.sample(rng.nextDouble());
+      if (t < toSurface_m) {
+        const double pdf = towardsLight.pdf(t) + flight_.pdf(t);
+        const glm::vec3 p(glm::dvec3(position) + glm::dvec3(dir) * t);
+        addMediumLight(p, -dir, state, flight_.scattered(t) / pdf,
+                       path_m + (vertex == 1 ? lastLeg_m(t) : t), histogram, outside);
+      }
+    }
+    if (flight_m < toSurface_m) {
+      // A medium event: the light it scatters towards the path, then on.
+      const double pdf = flight_.pdf(flight_m);
+      const double mis = pdf / (pdf + towardsLight.pdf(flight_m));
+      position = glm::vec3(glm::dvec3(position) + glm::dvec3(dir) * flight_m);
+      path_m += vertex == 1 ? lastLeg_m(flight_m) : flight_m;
+      addMediumLight(position, -dir, state, flight_.scatterWeight(flight_m) * mis, path_m,
+                     histogram, outside);
+      state.weight.scale(flight_.scatterWeight(flight_m));
+      surface.reset();
+      const float u1 = rng.nextFloat();
+      const float u2 = rng.nextFloat();
+      dir = glm::normalize(physics::samplePhaseDirection(phase_, g_, dir, u1, u2));
+      continue;
+    }
+    if (!next) break;  // the path leaves the scene
+    state.weight.scale(flight_.passWeight(toSurface_m));
+    delays_.atVertex(responseAt(*next), delays, state);
+    path_m += vertex == 1 ? lastLeg_m(toSurface_m) : toSurface_m;
+    const glm::vec3 toViewer = -dir;
+    const Radiance reflected = lightReflectedAt(*next, toViewer);
+    if (reflected.valid) {
+      deposit(state.weight.apply(reflected.value * flight_.transmittance(reflected.path_m)),
+              reflected.path_m + path_m, state.delay_s, histogram, outside);
+    }
+    if (vertex == bounces_) break;
+    const Continuation step = sampleContinuation(*next, toViewer, rng);
+    if (glm::dot(step.direction, next->geometric_world) <= 0.0f) break;  // below the surface
+    if (step.ends) break;
+    state.weight.scale(step.weight);
+    dir = step.direction;
+    position = next->position_world;
+    surface = next;
+  }
+}
+
+void PathIntegrator::addMediumLight(const glm::vec3& p, const glm::vec3& toViewer,
+                                    const PathState& state, const glm::dvec3& weight,
+                                    double path_m, double* histogram, AxisLoss& outside) const {
+  const capture::Light& light = job_.light;
+  const glm::dvec3 toLight = glm::dvec3(light.position_world) - glm::dvec3(p);
+  const double d = glm::length(toLight);
+  if (d <= 0.0) return;
+  const glm::vec3 w(toLight / d);
+  const float profile = light.angularProfile(-w);
+  if (profile <= 0.0f) return;
+  if (scene_.occluded(p, light.position_world)) return;
+  // The light travels along -w and leaves towards the viewer.
+  const double phase = physics::phaseFunction(phase_, g_, glm::dot(-w, toViewer));
+  const glm::dvec3 value = glm::dvec3(light.intensity_W_per_sr) *
+                           (phase * static_cast<double>(profile) / (d * d)) *
+                           flight_.transmittance(d) * weight;
+  deposit(state.weight.apply(value), d + path_m, state.delay_s, histogram, outside);
+}
+
+}  // namespace tofsim::reference

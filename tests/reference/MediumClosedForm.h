@@ -1,0 +1,71 @@
+#pragma once
+// Closed forms of a homogeneous medium for the reference's tests (issue 42),
+// with the second moments of the reference's estimator, so that tolerances
+// follow from the sample count: a camera with a point light at its pinhole
+// (the lidar equation's geometry), render.indirect bounces 1, pixel centres.
+// A path draws a free flight t from the spectral-MIS mixture
+// p(t) = mean_c sigma_t,c exp(-sigma_t,c t) (FreeFlight.h): if it scatters at
+// t its estimate in channel c is T_c(t) sigma_s,c / p(t) x p(pi) I_c T_c(t) / t^2
+// (deposited at round trip 2 t); if it reaches a surface at r, whose vacuum
+// return is v_c, T_c(r) / P(r) x v_c T_c(r), P(r) = mean_c T_c(r). A light
+// off the pixel's ray adds an equiangular point per path (balance heuristic
+// with the free flight: each strategy's estimate f / (p_flight + p_equiangular),
+// the density tofsim/reference/Equiangular.h's).
+
+#include <cmath>
+
+#include <glm/glm.hpp>
+
+#include "tofsim/capture/Medium.h"
+
+namespace tofsim::test {
+
+/// Mean and second moment of one path's estimate in one bin and channel.
+struct Moments {
+  double mean = 0.0;
+  double second = 0.0;
+  void operator+=(const Moments& o) {
+    mean += o.mean;
+    second += o.second;
+  }
+  /// Standard error of the mean of n independent paths.
+  double standardError(double n) const { return std::sqrt(std::max(0.0, second - mean * mean) / n); }
+};
+
+inline double mixturePdf(const capture::Medium& m, double t) {
+  const glm::dvec3 st(m.sigmaT());
+  return (st.x * std::exp(-st.x * t) + st.y * std::exp(-st.y * t) + st.z * std::exp(-st.z * t)) / 3.0;
+}
+
+/// The single-scattered (lidar) return of channel c from one-way distances
+/// [s0, s1]: sigma_s p(pi) I int exp(-2 sigma_t s) / s^2 ds (Simpson), and
+/// the estimator's second moment.
+inline Moments lidarReturn(const capture::Medium& m, int c, double phaseBack, double intensity,
+                           double s0, double s1) {
+  Moments out;
+  if (!(s1 > s0)) return out;
+  constexpr int kSteps = 2000;  // even
+  const double h = (s1 - s0) / kSteps;
+  const double sigmaT = m.sigmaT()[c], sigmaS = m.sigma_s_per_m[c];
+  for (int i = 0; i <= kSteps; ++i) {
+    const double s = s0 + i * h;
+    const double w = (i == 0 || i == kSteps) ? 1.0 : (i % 2 == 1 ? 4.0 : 2.0);
+    const double f = sigmaS * phaseBack * intensity * std::exp(-2.0 * sigmaT * s) / (s * s);
+    out.mean += w * f;
+    out.second += w * f * f / mixturePdf(m, s);
+  }
+  out.mean *= h / 3.0;
+  out.second *= h / 3.0;
+  return out;
+}
+
+/// A surface at r whose return in vacuum is `vacuum` (channel c): the
+/// medium's is vacuum x T(r)^2, reached with probability P(r).
+inline Moments surfaceReturn(const capture::Medium& m, int c, double vacuum, double r) {
+  const glm::dvec3 st(m.sigmaT());
+  const double p = (std::exp(-st.x * r) + std::exp(-st.y * r) + std::exp(-st.z * r)) / 3.0;
+  const double t2 = std::exp(-2.0 * st[c] * r);
+  return {vacuum * t2, vacuum * vacuum * t2 * t2 / p};
+}
+
+}  // namespace tofsim::test
