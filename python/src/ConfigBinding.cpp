@@ -80,6 +80,9 @@ void bindConfig(py::module_& m) {
                                return names;
                              })
       .def_property_readonly(
+          "is_nlos", [](const config::RunConfig& c) { return c.nlos.has_value(); },
+          "whether the config is a non-line-of-sight capture (`nlos:`)")
+      .def_property_readonly(
           "frame_times_s",
           [](const config::RunConfig& c) -> std::optional<std::vector<double>> {
             if (!c.sequence) return std::nullopt;

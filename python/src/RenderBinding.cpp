@@ -19,6 +19,7 @@
 #include "Arrays.h"
 #include "Bindings.h"
 #include "NlosBinding.h"
+#include "SenseInputs.h"
 #include "tofsim/capture/VolumeCollector.h"
 #include "tofsim/io/Exr.h"
 #include "tofsim/io/Hdf5Capture.h"
@@ -193,6 +194,27 @@ py::object optionalVolume(std::optional<TransientVolume>& v) {
   return v ? py::object(volumeArray(std::move(*v))) : py::none();
 }
 
+// The config's sensors on the render in memory, as the CLI runs them on the
+// segments (render.seed; the direct light, the bounces and the depth where a
+// model takes them): name -> (arrays, metadata, warnings) (senseInputs).
+py::dict senseRendered(const config::RunConfig& config, const Rendered& r) {
+  py::dict results;
+  if (config.sensors.empty() || !r.transient) return results;
+  std::vector<const TransientVolume*> bounces;
+  if (r.indirectIsBounce1 && r.indirect) bounces.push_back(&*r.indirect);
+  for (const TransientVolume& b : r.bounces) bounces.push_back(&b);
+  sensors::SensorInputs inputs;
+  inputs.volume = &*r.transient;
+  inputs.directOnly = r.direct ? &*r.direct : nullptr;
+  inputs.groundTruthDepth_m = &r.result.depth_m;
+  inputs.bounces = r.direct && !bounces.empty() ? &bounces : nullptr;
+  inputs.seed = config.render.seed;
+  for (const sensors::SensorSpec& spec : config.sensors) {
+    results[py::str(spec.name)] = senseInputs(spec, inputs);
+  }
+  return results;
+}
+
 py::dict toPython(Rendered& r, const TimeAxis& axis) {
   py::dict d;
   d["transient"] = optionalVolume(r.transient);
@@ -277,7 +299,10 @@ class KeptRenderer {
       SigintScope sigint(mainThread);
       r = renderInMemory(config, prepared_, false, quiet_);
     }
-    return toPython(r, config.render.time);
+    py::dict sensors = senseRendered(config, r);
+    py::dict d = toPython(r, config.render.time);
+    d["sensors"] = sensors;
+    return d;
   }
 
   /// How many times the renderer prepared the scene (IR; 0 for the reference).

@@ -13,6 +13,7 @@
 
 #include "Arrays.h"
 #include "Bindings.h"
+#include "SenseInputs.h"
 #include "tofsim/config/SensorConfig.h"
 #include "tofsim/pipeline/SensorMetadata.h"
 #include "tofsim/sensors/CwTof.h"
@@ -71,11 +72,6 @@ std::vector<TransientVolume> bounceVolumes(const std::vector<FloatArray>& arrays
   return volumes;
 }
 
-// (outputs: name -> array, metadata: name -> JSON text, warnings). The
-// metadata is the CLI's sensors/<name>/<output>.json without its `files`. A
-// colour-mapped image repeats the Image of the same name (it is how the CLI
-// draws it), so it adds no array; a plot with no data of its own (SPAD
-// histograms) adds its plotted numbers.
 py::tuple sense(const FloatArray& transient, double start_s, double binWidth_s,
                 const std::string& sensorJson, uint64_t seed,
                 const std::optional<FloatArray>& direct, const std::optional<FloatArray>& depth,
@@ -109,8 +105,19 @@ py::tuple sense(const FloatArray& transient, double start_s, double binWidth_s,
   inputs.groundTruthDepth_m = depthImage ? &*depthImage : nullptr;
   inputs.bounces = bounces ? &bouncePointers : nullptr;
   inputs.seed = seed;
+  return senseInputs(spec, inputs);
+}
+
+}  // namespace
+
+// (outputs: name -> array, metadata: name -> JSON text, warnings). The
+// metadata is the CLI's sensors/<name>/<output>.json without its `files`. A
+// colour-mapped image repeats the Image of the same name (it is how the CLI
+// draws it), so it adds no array; a plot with no data of its own (SPAD
+// histograms) adds its plotted numbers.
+py::tuple senseInputs(const sensors::SensorSpec& spec, const sensors::SensorInputs& inputs) {
   std::vector<sensors::SensorOutput> outputs;
-  pipeline::SensorRunInfo run{&spec, axis, seed, {}};
+  pipeline::SensorRunInfo run{&spec, inputs.volume->axis(), inputs.seed, {}};
   {
     py::gil_scoped_release released;
     run.warnings = sensors::sensorWarnings(spec, inputs);
@@ -130,8 +137,6 @@ py::tuple sense(const FloatArray& transient, double start_s, double binWidth_s,
   }
   return py::make_tuple(arrays, metadata, run.warnings);
 }
-
-}  // namespace
 
 void bindSense(py::module_& m) {
   m.def("_sense", &sense, py::arg("transient"), py::arg("start_s"), py::arg("bin_width_s"),

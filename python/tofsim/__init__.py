@@ -10,6 +10,8 @@
                         {"type": "spad", "cycles": 10000, "pde": 0.3})
     spad["spad_counts"].shape                # (H, W, bins)
     saved = tofsim.load("out")               # a render's folder (.npy or capture.h5)
+    saved.sensors["spad"]["spad_depth_first"]  # its sensors' outputs, with .metadata
+    tofsim.read_array("out/sensors/spad/spad_confidence.exr")  # .npy or .exr
 
 Configs are validated exactly as by the `tofsim` command (configs/README.md);
 bad input raises ConfigError (a ValueError) with file, line, column and key.
@@ -18,7 +20,7 @@ bad input raises ConfigError (a ValueError) with file, line, column and key.
 from ._tofsim import Config, ConfigError
 from ._config import load_config
 from ._render import NlosResult, Renderer, RenderResult, SequenceResult, TimeAxis, load, render
-from ._sense import SensorResult, SensorWarning, sense
+from ._sense import SensorResult, SensorWarning, load_sensors, read_array, sense
 
 __all__ = [
     "Config",
@@ -32,6 +34,8 @@ __all__ = [
     "TimeAxis",
     "load",
     "load_config",
+    "load_sensors",
+    "read_array",
     "render",
     "sense",
 ]

@@ -1,9 +1,10 @@
 """tofsim.render: a config rendered into NumPy arrays."""
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 from . import _tofsim
 from ._config import load_config
+from ._sense import load_sensors, sensor_result
 
 
 @dataclass(frozen=True)
@@ -46,6 +47,9 @@ class RenderResult:
         time by pass), ...), and off_axis_before/after (= energy_before/after_axis)
     device: what rendered it (GL renderer string, or the CPU reference)
     files: written files, relative to output_dir (empty without one)
+    sensors: the config's sensors: name -> SensorResult (output name -> array,
+      with .metadata, .sensor and .warnings, as tofsim.sense returns), the
+      CLI's outputs read back from sensors/<name>/; {} without sensors
     """
 
     transient: object
@@ -59,6 +63,7 @@ class RenderResult:
     device: str
     files: list
     output_dir: object = None
+    sensors: dict = field(default_factory=dict)
 
 
 @dataclass
@@ -210,7 +215,10 @@ def render(config, renderer=None, backend=None, output_dir=None, quiet=True):
     build has no such key).
     output_dir: also write every output of `tofsim render` there (the arrays
     are then read back from those files: a volume the config does not write
-    is None). Without it nothing is written.
+    is None). Without it nothing is written, except for a config with
+    sensors: it runs as `tofsim render` into a temporary folder, removed once
+    read, so that result.sensors are the CLI's numbers (its volumes are then
+    those the config writes).
     quiet: False prints progress and warnings on stderr, as the CLI does.
 
     The GIL is released while rendering; Ctrl-C raises KeyboardInterrupt
@@ -224,11 +232,31 @@ def render(config, renderer=None, backend=None, output_dir=None, quiet=True):
     config = load_config(config, overrides)
     if config.frame_times_s is not None:
         return _render_sequence(config, output_dir, quiet)
+    if output_dir is None and config.sensors and not config.is_nlos:
+        return _render_with_sensors(config, quiet)
     out = _tofsim._render(config, None if output_dir is None else str(output_dir), quiet)
     out["time"] = TimeAxis(**out["time"])
     out["output_dir"] = output_dir
     if "H_format" in out:
         return NlosResult(**out)
+    if output_dir is not None:
+        out["sensors"] = load_sensors(output_dir)
+    return RenderResult(**out)
+
+
+def _render_with_sensors(config, quiet):
+    """A camera config with sensors and no output_dir: the CLI's run into a
+    temporary folder (removed once read), so that result.sensors holds the
+    CLI's numbers; the volumes are those the config writes (None where
+    output.transient or output.components leave one out)."""
+    import tempfile
+
+    with tempfile.TemporaryDirectory(prefix="tofsim-render-") as scratch:
+        out = _tofsim._render(config, scratch, quiet)
+        out["time"] = TimeAxis(**out["time"])
+        out["output_dir"] = None
+        out["files"] = []
+        out["sensors"] = load_sensors(scratch)
     return RenderResult(**out)
 
 
@@ -247,7 +275,9 @@ class Renderer:
     render(overrides) renders that config with further overrides (a dict or
     "key.path=value" strings: another camera, light, time axis or render
     settings, each render validated as tofsim.render's) into NumPy arrays,
-    without files, the same bytes as tofsim.render of the same config; an
+    without files, the same bytes as tofsim.render of the same config, and
+    the config's sensors run on them in memory (result.sensors, with the
+    run's seed: the numbers `tofsim render` writes); an
     override of what the Renderer was made from raises ValueError. Camera
     captures only (not `nlos:` nor `sequence:` configs). Use it from one
     thread at a time.
@@ -285,6 +315,9 @@ class Renderer:
         out = self._native.render(config)
         out["time"] = TimeAxis(**out["time"])
         out["output_dir"] = None
+        out["sensors"] = {
+            name: sensor_result(*native) for name, native in out["sensors"].items()
+        }
         return RenderResult(**out)
 
 
@@ -295,7 +328,7 @@ def load(folder):
     by tofsim itself: h5py is not needed). The time axis, stats and device
     come from transient.json; a volume the run did not write is None;
     steady is capture.h5's steady, else steady.exr, else the transient summed
-    over time."""
+    over time; sensors are the run's sensors/<name>/ outputs (load_sensors)."""
     import json
     import os
 
@@ -346,4 +379,5 @@ def load(folder):
         device=meta.get("device", ""),
         files=sorted(files),
         output_dir=folder,
+        sensors=load_sensors(folder),
     )

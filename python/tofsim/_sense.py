@@ -49,6 +49,55 @@ def _sensor_info(metadata):
     return sensor
 
 
+def read_array(path):
+    """A tofsim output array as a float32 NumPy array: a .npy file, or an
+    OpenEXR image (.exr, read by tofsim itself: (H, W, C))."""
+    import os
+
+    import numpy
+
+    path = os.fspath(path)
+    if path.endswith(".exr"):
+        return _tofsim._read_exr(path)
+    return numpy.load(path)
+
+
+def load_sensors(folder):
+    """The sensors a render wrote under folder/sensors/<sensor>/ (the CLI's
+    files, or render(..., output_dir=folder)): sensor name -> SensorResult,
+    the arrays read from each output's .npy (every output has one: an
+    Array's data, an Image's `files.npy`), the metadata from its JSON (less
+    `files`, as tofsim.sense gives it). Pictures (.png) are not read; their
+    metadata is there. {} when the run had no sensors."""
+    import os
+
+    root = os.path.join(os.fspath(folder), "sensors")
+    if not os.path.isdir(root):
+        return {}
+    results = {}
+    for name in sorted(os.listdir(root)):
+        directory = os.path.join(root, name)
+        if not os.path.isdir(directory):
+            continue
+        arrays, metadata = {}, {}
+        for entry in sorted(os.listdir(directory)):
+            if not entry.endswith(".json"):
+                continue
+            with open(os.path.join(directory, entry)) as f:
+                meta = json.load(f)
+            if meta.get("format") != "tofsim sensor output":
+                continue
+            files = meta.pop("files", {})
+            data = files.get("npy") or files.get("data")
+            if data is not None:
+                arrays[meta["name"]] = read_array(os.path.join(directory, data))
+            metadata[meta["name"]] = meta
+        if metadata:
+            info = _sensor_info(metadata)
+            results[name] = SensorResult(arrays, metadata, info, list(info.get("warnings", [])))
+    return results
+
+
 def _axis_of(time):
     if isinstance(time, dict):
         return float(time["start_s"]), float(time["bin_width_s"]), int(time["bins"])
@@ -84,9 +133,15 @@ def sense(transient, time, sensor, seed=0, direct=None, depth=None, bounces=None
         transient, start_s, bin_width_s, to_json(sensor), int(seed), direct, depth,
         None if bounces is None else list(bounces),
     )
+    result = sensor_result(arrays, texts, messages)
+    for message in result.warnings:
+        warnings.warn(f"sensor '{result.sensor['name']}' ({result.sensor['type']}): {message}",
+                      SensorWarning, stacklevel=2)
+    return result
+
+
+def sensor_result(arrays, texts, messages):
+    """A SensorResult from what the native module returns (arrays, metadata
+    as JSON text, warnings)."""
     metadata = {name: json.loads(text) for name, text in texts.items()}
-    info = _sensor_info(metadata)
-    for message in messages:
-        warnings.warn(f"sensor '{info['name']}' ({info['type']}): {message}", SensorWarning,
-                      stacklevel=2)
-    return SensorResult(arrays, metadata, info, list(messages))
+    return SensorResult(arrays, metadata, _sensor_info(metadata), list(messages))

@@ -48,7 +48,7 @@ TEST_F(MaterialsConfigTest, EachModelReachesTheKernel) {
   const RunConfig c = load(
       "  wax:\n    scattering_delay: {model: exponential, lifetime: 2.5 ns, fraction: 0.6}\n"
       "  skin:\n    scattering_delay: {model: gaussian, mean: 40 ps, sigma: 15 ps}\n"
-      "  dye:\n    scattering_delay: {model: exponential, lifetime: 1.2e-9}\n"
+      "  dye:\n    scattering_delay: {model: exponential, lifetime: 1.2 ns}\n"
       "  plain:\n    scattering_delay: none\n");
   ASSERT_EQ(c.materials.size(), 4u);
   EXPECT_EQ(c.materials[0].name, "wax");
@@ -164,7 +164,7 @@ TEST_F(MaterialsConfigTest, TheConfigEntryReplacesTheExtrasWhole) {
        {"scattering_delay.lifetime", "2.5 ns"},
        {"scattering_delay.fraction", "0.59999999999999998"}},
       {{"scattering_delay.model", "exponential"},
-       {"scattering_delay.lifetime", "2.0000000000000001e-09"},
+       {"scattering_delay.lifetime", "2 ns"},
        {"scattering_delay.reemission.0.0", "1"},
        {"scattering_delay.reemission.0.1", "1"},
        {"scattering_delay.reemission.0.2", "0"},
@@ -211,7 +211,8 @@ TEST_F(MaterialsConfigTest, AnUnknownNameListsTheScenesMaterials) {
 TEST_F(MaterialsConfigTest, BadExtrasNameTheGltfAndTheMaterial) {
   const RunConfig c = load("  {}\n");
   for (const auto& [key, value, message] :
-       {std::tuple{"scattering_delay.lifetime", "-1e-9", "lifetime: must be > 0"},
+       {std::tuple{"scattering_delay.lifetime", "-1 ns", "lifetime: must be > 0"},
+        std::tuple{"scattering_delay.lifetime", "2e-9", "a time needs a unit"},
         std::tuple{"scattering_delay.fraction", "2", "fraction: must be in [0, 1]"},
         std::tuple{"scattering_delay.lifetme", "1 ns", "lifetme: unknown key"}}) {
     scene::Scene scene;

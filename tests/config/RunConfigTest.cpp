@@ -79,6 +79,28 @@ TEST_F(RunConfigTest, UnitsParse) {
   EXPECT_THROW(parseDuration_s("fast"), std::invalid_argument);
 }
 
+// A bare time was seconds: "bin_width: 10" meant as 10 ps rendered one 10 s
+// bin (issue 44). Only 0, the same in every unit, needs none.
+TEST_F(RunConfigTest, ATimeWithoutAUnitIsAnErrorThatShowsTheForms) {
+  EXPECT_DOUBLE_EQ(parseDuration_s("0"), 0.0);
+  for (const char* bare : {"10", "1e-9", "-2"}) {
+    try {
+      parseDuration_s(bare);
+      ADD_FAILURE() << bare << " accepted";
+    } catch (const std::invalid_argument& e) {
+      const std::string what = e.what();
+      EXPECT_NE(what.find("a time needs a unit"), std::string::npos) << what;
+      EXPECT_NE(what.find(std::string(bare) + " ps"), std::string::npos) << what;
+      EXPECT_NE(what.find("mm"), std::string::npos) << what;
+    }
+  }
+  std::string yaml = kValid;
+  yaml.replace(yaml.find("bin_width: \"0.3 mm\""), 19, "bin_width: 10");
+  const std::string e = errorOf(yaml);
+  EXPECT_NE(e.find("time.bin_width: a time needs a unit"), std::string::npos) << e;
+  EXPECT_NE(e.find("test.yaml:"), std::string::npos) << e;
+}
+
 TEST_F(RunConfigTest, UnknownKeyNamesFileLineColumnAndKey) {
   const std::string e = errorOf(std::string(kValid) + "  bin_widht: 3 ps\n");
   EXPECT_NE(e.find("test.yaml:17:3"), std::string::npos) << e;

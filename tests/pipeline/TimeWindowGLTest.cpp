@@ -92,6 +92,26 @@ TEST_F(TimeWindowGLTest, ValidatePredictsTheCutAndStrictFailsOnAProvenOne) {
   EXPECT_EQ(r.output.find("tofsim:"), std::string::npos) << r.output;
 }
 
+// One bin far wider than all of the scene's arrivals resolves nothing: an
+// error from validate and from render (which writes nothing), naming
+// time.bin_width and a width that would resolve the light.
+TEST_F(TimeWindowGLTest, AnAxisThatCannotResolveTheLightIsAnError) {
+  const std::string wide = " --set 'time.bin_width=10 s' --set time.bins=1";
+  CommandResult r = test::runCli("validate " + kSpad + wide);
+  EXPECT_EQ(r.exitCode, 1) << r.output;
+  EXPECT_NE(r.output.find("time.bin_width: one bin of 1e+10 ns cannot resolve the scene's light"),
+            std::string::npos)
+      << r.output;
+  EXPECT_NE(r.output.find("a bin width near"), std::string::npos) << r.output;
+  const std::filesystem::path out = dir_ / "wide";
+  r = test::runCli("render " + kSpad + " -o " + out.string() + kSmall + wide);
+  EXPECT_EQ(r.exitCode, 1) << r.output;
+  EXPECT_FALSE(std::filesystem::exists(out / "transient.json"));
+  // A wide bin that still resolves the scene (2 ns of 7 ns of arrivals) renders.
+  r = test::runCli("validate " + kSpad + " --set 'time.bin_width=2 ns' --set time.bins=10");
+  EXPECT_EQ(r.exitCode, 0) << r.output;
+}
+
 TEST_F(TimeWindowGLTest, StrictFailsAndWritesNothing) {
   // A proven cut fails before rendering; a measured one after it, before the
   // outputs are committed. Neither leaves a folder it made.

@@ -64,6 +64,13 @@ double parseDuration_s(const std::string& text) {
     for (const auto& [name, metres] : kLengthUnits) u[name] = metres / kSpeedOfLight_m_per_s;
     return u;
   }();
+  // A bare number was read as seconds, which turned "bin_width: 10" (meant
+  // as ps) into one 10 s bin that rendered junk; only 0 needs no unit.
+  if (split(text).unit.empty() && split(text).value != 0.0) {
+    throw std::invalid_argument("a time needs a unit: write '" + text + " ps', '" + text +
+                                " ns', ... (s, ms, us, ns, ps, fs) or an optical path length ('" +
+                                text + " mm': the time light takes to cover it)");
+  }
   return scaled(text, units, "time");
 }
 

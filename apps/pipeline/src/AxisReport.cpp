@@ -117,8 +117,33 @@ AxisPrediction predictAxisCut(const config::RunConfig& config, const capture::Re
   return p;
 }
 
+namespace {
+
+// A bin this many times wider than the whole span of the scene's arrivals
+// cannot resolve anything: "time.bin_width: 10" read as 10 s rendered one
+// bin with every pixel's light in it, and sensors computed depths from it.
+// Bounds from the scene's box are loose (wider than the light), so only an
+// axis that is hopeless by a wide margin is refused.
+constexpr double kUnresolvedBinRatio = 100.0;
+
+void requireResolvingAxis(const config::RunConfig& config, const capture::RenderJob& job) {
+  const capture::ArrivalBounds b = boundsWithDelays(config, job);
+  const double span = b.longest_s() - b.shortest_s();
+  const TimeAxis& axis = job.settings.time;
+  if (!b.any || !(span > 0.0) || axis.bin_width_s <= kUnresolvedBinRatio * span) return;
+  const double suggested = std::max(span / 1000.0, 1e-13);
+  throw InputError(FileLoc{config.config_file.string()}, "time.bin_width",
+                   "one bin of " + ns(axis.bin_width_s) + " cannot resolve the scene's light, " +
+                       "which arrives within " + ns(b.shortest_s()) + " .. " + ns(b.longest_s()) +
+                       ": a bin width near " + format("%.3g ps", suggested * 1e12) +
+                       " would (durations take units: '10 ps', '3 mm')");
+}
+
+}  // namespace
+
 void checkAxisBeforeRender(const config::RunConfig& config, const capture::RenderJob& job,
                            bool notes) {
+  requireResolvingAxis(config, job);
   const AxisPrediction p = predictAxisCut(config, job);
   if (p.verdict == AxisPrediction::Verdict::Cuts) warnOrThrow(config, "time", p.message);
   if (p.verdict == AxisPrediction::Verdict::MayCut && notes) {

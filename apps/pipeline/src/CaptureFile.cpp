@@ -130,6 +130,8 @@ void CaptureFile::addSensorFiles(const std::filesystem::path& directory,
     const bool npy = endsWith(file, ".npy"), exr = endsWith(file, ".exr");
     if (!npy && !exr) continue;
     const std::string dataset = file.substr(0, file.size() - 4);  // sensors/<sensor>/<output>
+    // An Image's numbers come twice (.exr and its .npy twin): one dataset.
+    if (exr && std::find(files.begin(), files.end(), dataset + ".npy") != files.end()) continue;
     const std::filesystem::path path = directory / file;
     if (exr) {
       const Image image = io::readExr(path);

@@ -135,6 +135,8 @@ std::string sensorFileName(const SensorOutput& o) {
   return o.name;
 }
 
+std::string sensorArrayFileName(const SensorOutput& o) { return o.name + ".npy"; }
+
 std::vector<NamedMetadata> sensorMetadata(const SensorRunInfo& run,
                                           const std::vector<SensorOutput>& outputs, bool files,
                                           const std::map<std::string, PictureRange>& ranges) {
@@ -158,6 +160,7 @@ std::vector<NamedMetadata> sensorMetadata(const SensorRunInfo& run,
     json& doc = docs[i];
     if (isPicture(o)) doc["picture"] = pictureJson(o, ranges);
     if (files) doc["files"][isPicture(o) ? "picture" : "data"] = sensorFileName(o);
+    if (files && o.kind == SensorOutput::Kind::Image) doc["files"]["npy"] = sensorArrayFileName(o);
     if (files && run.camera && o.kind == SensorOutput::Kind::Image && o.point_cloud) {
       doc["files"]["point_cloud"] = o.name + ".ply";
     }

@@ -115,6 +115,10 @@ std::vector<std::string> writeSensorOutputs(const std::filesystem::path& directo
       case SensorOutput::Kind::Image: {
         const Image image = asImage(o);
         io::writeExr(path, image, channelNames(image.channels));
+        // The same numbers as .npy, which NumPy reads without OpenEXR.
+        files.push_back(sensorArrayFileName(o));
+        io::writeNpy(directory / files.back(), io::NpyShape(o.shape.begin(), o.shape.end()),
+                     o.data.data());
         if (o.point_cloud && run.camera) {
           files.push_back(o.name + ".ply");
           writePointCloud(directory / files.back(), o, image, outputs, *run.camera);

@@ -8,8 +8,8 @@
 namespace tofsim::config {
 
 /// Time in seconds. Accepts s, ms, us, ns, ps, fs, or a length (m, cm, mm, um,
-/// km), read as optical path length in vacuum and divided by c. A bare number is
-/// seconds.
+/// km), read as optical path length in vacuum and divided by c. A bare number
+/// other than 0 is refused (a unit is needed to tell "10" ps from s).
 double parseDuration_s(const std::string& text);
 /// Length in metres: m, cm, mm, um, km. A bare number is metres.
 double parseLength_m(const std::string& text);

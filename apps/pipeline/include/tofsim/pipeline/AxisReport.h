@@ -37,9 +37,10 @@ struct AxisPrediction {
 };
 AxisPrediction predictAxisCut(const config::RunConfig& config, const capture::RenderJob& job);
 
-/// Before anything is written: a proven cut is a warning on stderr, or with
-/// config.strict an InputError; `notes` also prints a possible cut as a note
-/// (`tofsim validate`).
+/// Before anything is written: an axis whose one bin is far wider than all
+/// of the scene's arrivals together is an InputError (time.bin_width); a
+/// proven cut is a warning on stderr, or with config.strict an InputError;
+/// `notes` also prints a possible cut as a note (`tofsim validate`).
 void checkAxisBeforeRender(const config::RunConfig& config, const capture::RenderJob& job,
                            bool notes);
 

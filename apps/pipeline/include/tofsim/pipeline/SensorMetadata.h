@@ -66,5 +66,8 @@ std::vector<NamedMetadata> sensorMetadata(const SensorRunInfo& run,
 /// The file an output is written to: <name>.npy (Array), .exr (Image) or
 /// .png (ColorMappedImage, HistogramPlot).
 std::string sensorFileName(const sensors::SensorOutput& output);
+/// An Image's numbers also as <name>.npy ((H, W) or (H, W, C) float32), for
+/// readers without OpenEXR; its metadata lists it as files.npy.
+std::string sensorArrayFileName(const sensors::SensorOutput& output);
 
 }  // namespace tofsim::pipeline
