@@ -1,0 +1,130 @@
+// Issue 42, item 2, on the CPU backend: a homogeneous medium filling the
+// scene attenuates every leg of transient instant radiosity by
+// exp(-sigma_t x) over its geometric length x: light -> surface -> camera
+// (direct), light -> camera (the light seen directly), light -> VPL (the RSM
+// VPLs' flux), parent -> child (later bounces' VPLs), VPL -> gather point ->
+// camera (every indirect gather, with ISMs and exact visibility, the merged
+// sub-pixel samples and the footprint deposit). A purely absorbing medium
+// scales each time bin by exp(-sigma_a x its path / eta)
+// (support/MediumAttenuation.h); camera_unwarp moves the camera leg out of
+// the time, not out of the attenuation.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <memory>
+
+#include "support/MediumAttenuation.h"
+#include "support/MediumPoints.h"
+#include "support/TestJobs.h"
+#include "tofsim/capture/DirectLightView.h"
+#include "tofsim/cpu/CpuBackend.h"
+#include "tofsim/ir/IrRenderer.h"
+
+namespace tofsim::cpu {
+namespace {
+
+using test::kMediumSigmaA;
+
+ir::IrRenderer cpuRenderer(std::unique_ptr<CpuBackend> backend = nullptr) {
+  if (!backend) backend = std::make_unique<CpuBackend>(CpuBackendOptions{2, true});
+  return ir::IrRenderer(std::move(backend));
+}
+
+std::unique_ptr<capture::Renderer> cpuRendererPtr() {
+  return std::make_unique<ir::IrRenderer>(
+      std::make_unique<CpuBackend>(CpuBackendOptions{2, true}));
+}
+
+TEST(MediumAttenuationTest, AbsorbingMediumScalesEachBinOfDirectAndIndirectLight) {
+  test::expectCornerAbsorbedPerBin(cpuRendererPtr);
+}
+
+TEST(MediumAttenuationTest, MergedSubPixelSamplesAndFootprintsAreAbsorbedByTheirPaths) {
+  test::expectSubPixelSamplesAbsorbed(cpuRendererPtr);
+}
+
+TEST(MediumAttenuationTest, CameraUnwarpKeepsTheCameraLegsAttenuation) {
+  test::expectUnwarpKeepsAttenuation(cpuRendererPtr);
+}
+
+// The CPU backend with one of its RSM VPLs only: every later bounce's VPL
+// descends from it, so the resampling by power picks the same parents with
+// and without the medium, and each child's ray is the same.
+class OneRsmVplBackend : public CpuBackend {
+ public:
+  OneRsmVplBackend() : CpuBackend(CpuBackendOptions{2, true}) {}
+  std::vector<ir::Vpl> generateVpls(const capture::RenderJob& job) override {
+    std::vector<ir::Vpl> all = CpuBackend::generateVpls(job);
+    if (all.empty()) return all;
+    return {all[all.size() / 3]};
+  }
+};
+
+TEST(MediumAttenuationTest, SecondBounceIsAttenuatedOverItsWholePath) {
+  test::CornerJob s = test::absorbingCornerJob();
+  s.job.settings.indirect.bounces = 2;
+  s.job.settings.indirect.vpls_per_bounce = 256;
+  s.job.settings.indirect.visibility = capture::Visibility::Exact;
+  const auto vacuum =
+      test::renderComponents(cpuRenderer(std::make_unique<OneRsmVplBackend>()), s.job);
+  const auto fog = test::renderComponents(cpuRenderer(std::make_unique<OneRsmVplBackend>()),
+                                          test::withAbsorbingMedium(s.job, kMediumSigmaA));
+  const TimeAxis& axis = s.job.settings.time;
+  EXPECT_GT(test::expectAbsorbedPerBin(vacuum.at("bounce1"), fog.at("bounce1"), axis, kMediumSigmaA,
+                                       "bounce1"),
+            20u);
+  EXPECT_GT(test::expectAbsorbedPerBin(vacuum.at("bounce2"), fog.at("bounce2"), axis, kMediumSigmaA,
+                                       "bounce2"),
+            100u);
+}
+
+TEST(MediumAttenuationTest, LightSeenDirectlyIsAttenuatedOverItsDistance) {
+  test::CornerJob s = test::absorbingCornerJob();
+  // The light in view, 1.2 m in front of the camera.
+  s.job.light.position_world = s.job.camera().position_world + glm::vec3(-0.1f, -0.3f, -1.15f);
+  const auto nothingInFront = [](int32_t, int32_t) { return std::optional<glm::vec3>(); };
+  const capture::DirectLightView vacuum = capture::directLightView(s.job, nothingInFront);
+  const capture::DirectLightView fog =
+      capture::directLightView(test::withAbsorbingMedium(s.job, kMediumSigmaA), nothingInFront);
+  ASSERT_TRUE(vacuum.visible);
+  ASSERT_TRUE(fog.visible);
+  EXPECT_EQ(fog.bin, vacuum.bin);
+  const float d = glm::length(s.job.light.position_world - s.job.camera().position_world);
+  for (int c = 0; c < 3; ++c) {
+    EXPECT_NEAR(fog.radiance[c], vacuum.radiance[c] * std::exp(-kMediumSigmaA[c] * d),
+                1e-5f * vacuum.radiance[c]);
+  }
+}
+
+TEST(MediumAttenuationTest, MediumPointsDirectLightIsAttenuatedOnBothLegs) {
+  // Given samples (medium points of a point-set imager): light -> point ->
+  // origin, exactly (support/MediumPoints.h).
+  test::MediumPoints m;
+  const auto render = [&](const capture::RenderJob& job) {
+    auto backend = std::make_unique<CpuBackend>(CpuBackendOptions{2, true});
+    backend->setSurfaces(
+        std::make_unique<ir::SurfaceImage>(m.samples(physics::VERTEX_MEDIUM, glm::vec3(0.0f))),
+        nullptr);
+    return test::renderComponents(cpuRenderer(std::move(backend)), job);
+  };
+  const auto vacuum = render(m.job);
+  const auto fog = render(test::withAbsorbingMedium(m.job, kMediumSigmaA));
+  const std::size_t perPixel = static_cast<std::size_t>(m.job.settings.time.bins) * 3;
+  for (std::size_t p = 0; p < m.points.size(); ++p) {
+    const float legs = glm::length(m.job.light.position_world - m.points[p]) +
+                       glm::length(m.points[p] - m.origin);
+    for (int c = 0; c < 3; ++c) {
+      double a = 0.0, b = 0.0;
+      for (std::size_t i = p * perPixel + c; i < (p + 1) * perPixel; i += 3) {
+        a += vacuum.at("direct")[i];
+        b += fog.at("direct")[i];
+      }
+      ASSERT_GT(a, 0.0) << "point " << p;
+      EXPECT_NEAR(b, a * std::exp(-kMediumSigmaA[c] * legs), 1e-5 * a) << "point " << p;
+    }
+  }
+}
+
+}  // namespace
+}  // namespace tofsim::cpu
