@@ -41,7 +41,7 @@ TEST(MediumAttenuationTest, AbsorbingMediumScalesEachBinOfDirectAndIndirectLight
 }
 
 TEST(MediumAttenuationTest, MergedSubPixelSamplesAndFootprintsAreAbsorbedByTheirPaths) {
-  test::expectSubPixelSamplesAbsorbed(cpuRendererPtr);
+  test::expectSubPixelSamplesAbsorbed(cpuRendererPtr, true);
 }
 
 TEST(MediumAttenuationTest, CameraUnwarpKeepsTheCameraLegsAttenuation) {

@@ -147,8 +147,8 @@ using MakeRenderer = std::function<std::unique_ptr<capture::Renderer>()>;
 
 /// The corner with one-bounce light, point-sampled pixels, in water's eta
 /// (a leg's geometric length is its optical path / eta), 1 cm bins.
-inline CornerJob absorbingCornerJob() {
-  CornerJob s(16);
+inline CornerJob absorbingCornerJob(int32_t side = 16) {
+  CornerJob s(side);
   s.job.settings.indirect.rsm_resolution = 16;
   s.job.settings.pixel_footprint = false;
   s.job.settings.time.index_of_refraction = 1.33;
@@ -156,13 +156,13 @@ inline CornerJob absorbingCornerJob() {
   return s;
 }
 
-/// The corner's direct and one-bounce light, with ISMs and exact
-/// visibility: every bin absorbed by its path.
-inline void expectCornerAbsorbedPerBin(const MakeRenderer& make) {
+/// The corner's direct and one-bounce light (side x side pixels), with ISMs
+/// and exact visibility: every bin absorbed by its path.
+inline void expectCornerAbsorbedPerBin(const MakeRenderer& make, int32_t side = 16) {
   for (const capture::Visibility visibility :
        {capture::Visibility::Ism, capture::Visibility::Exact}) {
     SCOPED_TRACE(visibility == capture::Visibility::Ism ? "ISM" : "exact");
-    CornerJob s = absorbingCornerJob();
+    CornerJob s = absorbingCornerJob(side);
     s.job.settings.indirect.visibility = visibility;
     const ComponentVolumes vacuum = renderComponents(*make(), s.job);
     const ComponentVolumes fog =
@@ -175,13 +175,15 @@ inline void expectCornerAbsorbedPerBin(const MakeRenderer& make) {
   }
 }
 
-/// 2 x 2 merged sub-pixel samples, point-sampled (bin by bin) and with
-/// footprints (pixel by pixel, weighed by the bins: a kernel spreads a few
-/// bins about its path).
-inline void expectSubPixelSamplesAbsorbed(const MakeRenderer& make) {
-  CornerJob s = absorbingCornerJob();
+/// 2 x 2 sub-pixel samples (merged where `merge`:
+/// render.indirect.merge_pixel_samples, a CPU option), point-sampled (bin by
+/// bin) and with footprints (pixel by pixel, weighed by the bins: a kernel
+/// spreads a few bins about its path).
+inline void expectSubPixelSamplesAbsorbed(const MakeRenderer& make, bool merge,
+                                          int32_t side = 16) {
+  CornerJob s = absorbingCornerJob(side);
   s.job.settings.pixel_samples = 2;
-  s.job.settings.indirect.merge_pixel_samples = true;
+  s.job.settings.indirect.merge_pixel_samples = merge;
   const TimeAxis& axis = s.job.settings.time;
   for (const bool footprint : {false, true}) {
     SCOPED_TRACE(footprint ? "footprints" : "point pixels");
@@ -213,8 +215,8 @@ inline std::vector<double> pixelSums(const std::vector<float>& v, int32_t bins) 
 /// camera_unwarp moves each contribution to the bin of its path without the
 /// camera leg; its energy stays the warped render's, attenuation and all
 /// (and below the vacuum's).
-inline void expectUnwarpKeepsAttenuation(const MakeRenderer& make) {
-  const CornerJob s = absorbingCornerJob();
+inline void expectUnwarpKeepsAttenuation(const MakeRenderer& make, int32_t side = 16) {
+  const CornerJob s = absorbingCornerJob(side);
   const capture::RenderJob fog = withAbsorbingMedium(s.job, kMediumSigmaA);
   capture::RenderJob fogUnwarped = fog, vacuumUnwarped = s.job;
   fogUnwarped.settings.time.camera_unwarp = vacuumUnwarped.settings.time.camera_unwarp = true;
