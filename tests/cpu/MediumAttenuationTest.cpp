@@ -40,6 +40,11 @@ TEST(MediumAttenuationTest, AbsorbingMediumScalesEachBinOfDirectAndIndirectLight
   test::expectCornerAbsorbedPerBin(cpuRendererPtr);
 }
 
+// A grey medium (fog) takes the gather's one-exp-per-lane path.
+TEST(MediumAttenuationTest, GreyMediumScalesEachBinOfDirectAndIndirectLight) {
+  test::expectCornerAbsorbedPerBin(cpuRendererPtr, 16, glm::vec3(0.5f));
+}
+
 TEST(MediumAttenuationTest, MergedSubPixelSamplesAndFootprintsAreAbsorbedByTheirPaths) {
   test::expectSubPixelSamplesAbsorbed(cpuRendererPtr, true);
 }

@@ -158,19 +158,18 @@ inline CornerJob absorbingCornerJob(int32_t side = 16) {
 
 /// The corner's direct and one-bounce light (side x side pixels), with ISMs
 /// and exact visibility: every bin absorbed by its path.
-inline void expectCornerAbsorbedPerBin(const MakeRenderer& make, int32_t side = 16) {
+inline void expectCornerAbsorbedPerBin(const MakeRenderer& make, int32_t side = 16,
+                                       const glm::vec3& sigmaA = kMediumSigmaA) {
   for (const capture::Visibility visibility :
        {capture::Visibility::Ism, capture::Visibility::Exact}) {
     SCOPED_TRACE(visibility == capture::Visibility::Ism ? "ISM" : "exact");
     CornerJob s = absorbingCornerJob(side);
     s.job.settings.indirect.visibility = visibility;
     const ComponentVolumes vacuum = renderComponents(*make(), s.job);
-    const ComponentVolumes fog =
-        renderComponents(*make(), withAbsorbingMedium(s.job, kMediumSigmaA));
+    const ComponentVolumes fog = renderComponents(*make(), withAbsorbingMedium(s.job, sigmaA));
     const TimeAxis& axis = s.job.settings.time;
     for (const char* part : {"direct", "indirect"}) {
-      EXPECT_GT(expectAbsorbedPerBin(vacuum.at(part), fog.at(part), axis, kMediumSigmaA, part),
-                100u);
+      EXPECT_GT(expectAbsorbedPerBin(vacuum.at(part), fog.at(part), axis, sigmaA, part), 100u);
     }
   }
 }

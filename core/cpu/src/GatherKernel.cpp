@@ -184,6 +184,16 @@ void nearFieldRadiance(const PixelSurface& s, const VplArrays& v, std::size_t fi
 // nothing are multiplied too, and never read.
 void attenuateLanes(const PixelSurface& s, std::size_t n, const GatherConstants& c,
                     VplTerms& terms) {
+  // A grey medium (fog): one exp per lane, the same float as each channel's.
+  if (c.sigmaT.r == c.sigmaT.g && c.sigmaT.g == c.sigmaT.b) {
+    for (std::size_t i = 0; i < n; ++i) {
+      const float t = physics::mediumTransmittance(c.sigmaT, terms.dist[i] + s.cameraLeg_m).r;
+      terms.r[i] *= t;
+      terms.g[i] *= t;
+      terms.b[i] *= t;
+    }
+    return;
+  }
   for (std::size_t i = 0; i < n; ++i) {
     const glm::vec3 t = physics::mediumTransmittance(c.sigmaT, terms.dist[i] + s.cameraLeg_m);
     terms.r[i] *= t.r;
