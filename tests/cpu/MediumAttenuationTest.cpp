@@ -11,6 +11,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
 
@@ -51,6 +52,41 @@ TEST(MediumAttenuationTest, MergedSubPixelSamplesAndFootprintsAreAbsorbedByTheir
 
 TEST(MediumAttenuationTest, CameraUnwarpKeepsTheCameraLegsAttenuation) {
   test::expectUnwarpKeepsAttenuation(cpuRendererPtr);
+}
+
+TEST(MediumAttenuationTest, DelayedResponsesKeepTheirAttenuation) {
+  // A delay (issue 41) moves light later in time, never its energy: each
+  // pixel's light in the medium is the same with the wall delayed (the
+  // delayed lanes and response classes of both gathers) as without, whose
+  // bins the closed form above holds.
+  test::CornerJob s = test::absorbingCornerJob();
+  const capture::RenderJob fog = test::withAbsorbingMedium(s.job, kMediumSigmaA);
+  physics::ResponseKernel delay;
+  delay.model = physics::ResponseModel::Exponential;
+  delay.lifetime_s = 5.0 * s.job.settings.time.bin_width_s;
+  delay.fraction = 0.7;
+  s.scene.materials[1].scatteringDelay = delay;  // the wall
+  for (const bool footprint : {false, true}) {
+    SCOPED_TRACE(footprint ? "footprints" : "point pixels");
+    capture::RenderJob job = fog;
+    job.settings.pixel_footprint = footprint;
+    const auto delayed = test::renderComponents(*cpuRendererPtr(), job);
+    s.scene.materials[1].scatteringDelay.reset();
+    const auto undelayed = test::renderComponents(*cpuRendererPtr(), job);
+    s.scene.materials[1].scatteringDelay = delay;
+    for (const char* part : {"direct", "indirect"}) {
+      const std::vector<double> a = test::pixelSums(undelayed.at(part), job.settings.time.bins);
+      const std::vector<double> b = test::pixelSums(delayed.at(part), job.settings.time.bins);
+      const double brightest = *std::max_element(a.begin(), a.end());
+      std::size_t lit = 0;
+      for (std::size_t k = 0; k < a.size(); ++k) {
+        if (!(a[k] > 1e-4 * brightest)) continue;
+        ++lit;
+        ASSERT_NEAR(b[k], a[k], 1e-4 * a[k]) << part << ", pixel " << k / 3 << " channel " << k % 3;
+      }
+      EXPECT_GT(lit, 50u) << part;
+    }
+  }
 }
 
 // The CPU backend with one of its RSM VPLs only: every later bounce's VPL
