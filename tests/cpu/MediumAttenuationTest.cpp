@@ -50,6 +50,10 @@ TEST(MediumAttenuationTest, MergedSubPixelSamplesAndFootprintsAreAbsorbedByTheir
   test::expectSubPixelSamplesAbsorbed(cpuRendererPtr, true);
 }
 
+TEST(MediumAttenuationTest, AdaptiveSubPixelSamplesAreAbsorbedByTheirPaths) {
+  test::expectSubPixelSamplesAbsorbed(cpuRendererPtr, false, 16, true);
+}
+
 TEST(MediumAttenuationTest, CameraUnwarpKeepsTheCameraLegsAttenuation) {
   test::expectUnwarpKeepsAttenuation(cpuRendererPtr);
 }
@@ -139,32 +143,11 @@ TEST(MediumAttenuationTest, LightSeenDirectlyIsAttenuatedOverItsDistance) {
 }
 
 TEST(MediumAttenuationTest, MediumPointsDirectLightIsAttenuatedOnBothLegs) {
-  // Given samples (medium points of a point-set imager): light -> point ->
-  // origin, exactly (support/MediumPoints.h).
-  test::MediumPoints m;
-  const auto render = [&](const capture::RenderJob& job) {
+  test::expectMediumPointsAbsorbed([](const capture::RenderJob& job, const ir::SurfaceImage& given) {
     auto backend = std::make_unique<CpuBackend>(CpuBackendOptions{2, true});
-    backend->setSurfaces(
-        std::make_unique<ir::SurfaceImage>(m.samples(physics::VERTEX_MEDIUM, glm::vec3(0.0f))),
-        nullptr);
+    backend->setSurfaces(std::make_unique<ir::SurfaceImage>(given), nullptr);
     return test::renderComponents(cpuRenderer(std::move(backend)), job);
-  };
-  const auto vacuum = render(m.job);
-  const auto fog = render(test::withAbsorbingMedium(m.job, kMediumSigmaA));
-  const std::size_t perPixel = static_cast<std::size_t>(m.job.settings.time.bins) * 3;
-  for (std::size_t p = 0; p < m.points.size(); ++p) {
-    const float legs = glm::length(m.job.light.position_world - m.points[p]) +
-                       glm::length(m.points[p] - m.origin);
-    for (int c = 0; c < 3; ++c) {
-      double a = 0.0, b = 0.0;
-      for (std::size_t i = p * perPixel + c; i < (p + 1) * perPixel; i += 3) {
-        a += vacuum.at("direct")[i];
-        b += fog.at("direct")[i];
-      }
-      ASSERT_GT(a, 0.0) << "point " << p;
-      EXPECT_NEAR(b, a * std::exp(-kMediumSigmaA[c] * legs), 1e-5 * a) << "point " << p;
-    }
-  }
+  });
 }
 
 }  // namespace

@@ -11,6 +11,7 @@
 
 #include <memory>
 
+#include "support/GivenSamplesGlBackend.h"
 #include "support/GlTestContext.h"
 #include "support/MediumAttenuation.h"
 #include "tofsim/ir/IrRenderer.h"
@@ -33,6 +34,13 @@ TEST(MediumAttenuationGLTest, AbsorbingMediumScalesEachBinOfDirectAndIndirectLig
 
 TEST(MediumAttenuationGLTest, CameraUnwarpKeepsTheCameraLegsAttenuation) {
   test::expectUnwarpKeepsAttenuation(glRenderer, kSide);
+}
+
+TEST(MediumAttenuationGLTest, MediumPointsDirectLightIsAttenuatedOnBothLegs) {
+  test::expectMediumPointsAbsorbed([](const capture::RenderJob& job, const ir::SurfaceImage& given) {
+    return test::renderComponents(
+        ir::IrRenderer(std::make_unique<test::GivenSamplesGlBackend>(given)), job);
+  });
 }
 
 }  // namespace

@@ -18,6 +18,7 @@
 #include <string>
 #include <vector>
 
+#include "support/MediumPoints.h"
 #include "support/TestJobs.h"
 #include "tofsim/capture/Renderer.h"
 #include "tofsim/capture/SegmentSink.h"
@@ -175,14 +176,16 @@ inline void expectCornerAbsorbedPerBin(const MakeRenderer& make, int32_t side = 
 }
 
 /// 2 x 2 sub-pixel samples (merged where `merge`:
-/// render.indirect.merge_pixel_samples, a CPU option), point-sampled (bin by
-/// bin) and with footprints (pixel by pixel, weighed by the bins: a kernel
-/// spreads a few bins about its path).
+/// render.indirect.merge_pixel_samples, a CPU option; only at edges where
+/// `adaptive`: render.adaptive_pixel_samples), point-sampled (bin by bin) and
+/// with footprints (pixel by pixel, weighed by the bins: a kernel spreads a
+/// few bins about its path).
 inline void expectSubPixelSamplesAbsorbed(const MakeRenderer& make, bool merge,
-                                          int32_t side = 16) {
+                                          int32_t side = 16, bool adaptive = false) {
   CornerJob s = absorbingCornerJob(side);
   s.job.settings.pixel_samples = 2;
   s.job.settings.indirect.merge_pixel_samples = merge;
+  s.job.settings.adaptive_pixel_samples = adaptive;
   const TimeAxis& axis = s.job.settings.time;
   for (const bool footprint : {false, true}) {
     SCOPED_TRACE(footprint ? "footprints" : "point pixels");
@@ -240,6 +243,31 @@ inline void expectUnwarpKeepsAttenuation(const MakeRenderer& make, int32_t side 
     }
     EXPECT_EQ(failed, 0u);
     EXPECT_GT(lit, 100u);
+  }
+}
+
+/// Given medium points (support/MediumPoints.h: a point-set imager's samples
+/// of VERTEX_MEDIUM) lit directly: each point's light is exp(-sigma_a (|l - x|
+/// + |x - origin|)) of the vacuum's, both legs exactly. `render` renders a
+/// job with the given samples.
+inline void expectMediumPointsAbsorbed(
+    const std::function<ComponentVolumes(const capture::RenderJob&, const ir::SurfaceImage&)>&
+        render) {
+  const MediumPoints m;
+  const ir::SurfaceImage given = m.samples(physics::VERTEX_MEDIUM, glm::vec3(0.0f));
+  const ComponentVolumes vacuum = render(m.job, given);
+  const ComponentVolumes fog = render(withAbsorbingMedium(m.job, kMediumSigmaA), given);
+  const std::vector<double> a = pixelSums(vacuum.at("direct"), m.job.settings.time.bins);
+  const std::vector<double> b = pixelSums(fog.at("direct"), m.job.settings.time.bins);
+  for (std::size_t p = 0; p < m.points.size(); ++p) {
+    const float legs = glm::length(m.job.light.position_world - m.points[p]) +
+                       glm::length(m.points[p] - m.origin);
+    for (int c = 0; c < 3; ++c) {
+      const std::size_t k = p * capture::kChannels + static_cast<std::size_t>(c);
+      ASSERT_GT(a[k], 0.0) << "point " << p;
+      EXPECT_NEAR(b[k], a[k] * std::exp(-kMediumSigmaA[c] * legs), 1e-5 * a[k])
+          << "point " << p << " channel " << c;
+    }
   }
 }
 
