@@ -10,8 +10,9 @@
 // spread instead over that path's distribution across the sample's footprint
 // (its sub-pixel, or the whole pixel for a centre sample;
 // footprint_deposit.glsl). With MEDIUM (a medium filling the scene) the
-// radiance is attenuated over both legs (medium_uniforms.glsl). Each bin has this thread as its only writer, so the
-// result does not depend on scheduling. With RESPONSE_CLASSES (a render with
+// radiance is attenuated over both legs (medium_uniforms.glsl). Each bin
+// has this thread as its only writer, so the result does not depend on
+// scheduling. With RESPONSE_CLASSES (a render with
 // scattering delays) the light of a delayed surface goes to its class's
 // buffer instead (response_classes.glsl), point samples as spikes. The
 // sample loop runs at most 16^2 times, far below llvmpipe's 65535 loop trips

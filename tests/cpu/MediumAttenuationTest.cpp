@@ -33,8 +33,7 @@ ir::IrRenderer cpuRenderer(std::unique_ptr<CpuBackend> backend = nullptr) {
 }
 
 std::unique_ptr<capture::Renderer> cpuRendererPtr() {
-  return std::make_unique<ir::IrRenderer>(
-      std::make_unique<CpuBackend>(CpuBackendOptions{2, true}));
+  return std::make_unique<ir::IrRenderer>(std::make_unique<CpuBackend>(CpuBackendOptions{2, true}));
 }
 
 TEST(MediumAttenuationTest, AbsorbingMediumScalesEachBinOfDirectAndIndirectLight) {
@@ -143,11 +142,12 @@ TEST(MediumAttenuationTest, LightSeenDirectlyIsAttenuatedOverItsDistance) {
 }
 
 TEST(MediumAttenuationTest, MediumPointsDirectLightIsAttenuatedOnBothLegs) {
-  test::expectMediumPointsAbsorbed([](const capture::RenderJob& job, const ir::SurfaceImage& given) {
-    auto backend = std::make_unique<CpuBackend>(CpuBackendOptions{2, true});
-    backend->setSurfaces(std::make_unique<ir::SurfaceImage>(given), nullptr);
-    return test::renderComponents(cpuRenderer(std::move(backend)), job);
-  });
+  test::expectMediumPointsAbsorbed(
+      [](const capture::RenderJob& job, const ir::SurfaceImage& given) {
+        auto backend = std::make_unique<CpuBackend>(CpuBackendOptions{2, true});
+        backend->setSurfaces(std::make_unique<ir::SurfaceImage>(given), nullptr);
+        return test::renderComponents(cpuRenderer(std::move(backend)), job);
+      });
 }
 
 }  // namespace

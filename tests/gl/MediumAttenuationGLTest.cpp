@@ -37,10 +37,11 @@ TEST(MediumAttenuationGLTest, CameraUnwarpKeepsTheCameraLegsAttenuation) {
 }
 
 TEST(MediumAttenuationGLTest, MediumPointsDirectLightIsAttenuatedOnBothLegs) {
-  test::expectMediumPointsAbsorbed([](const capture::RenderJob& job, const ir::SurfaceImage& given) {
-    return test::renderComponents(
-        ir::IrRenderer(std::make_unique<test::GivenSamplesGlBackend>(given)), job);
-  });
+  test::expectMediumPointsAbsorbed(
+      [](const capture::RenderJob& job, const ir::SurfaceImage& given) {
+        return test::renderComponents(
+            ir::IrRenderer(std::make_unique<test::GivenSamplesGlBackend>(given)), job);
+      });
 }
 
 }  // namespace

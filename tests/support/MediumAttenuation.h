@@ -13,8 +13,8 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
-#include <memory>
 #include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -60,9 +60,8 @@ inline capture::RenderJob withAbsorbingMedium(capture::RenderJob job, const glm:
 /// rounding of the binning), per channel; every such bin must. Returns the
 /// number of bins checked (so that a test can insist there are some).
 inline std::size_t expectAbsorbedPerBin(const std::vector<float>& without,
-                                        const std::vector<float>& withMedium,
-                                        const TimeAxis& axis, const glm::vec3& sigmaA,
-                                        const std::string& what) {
+                                        const std::vector<float>& withMedium, const TimeAxis& axis,
+                                        const glm::vec3& sigmaA, const std::string& what) {
   EXPECT_EQ(without.size(), withMedium.size()) << what;
   if (without.size() != withMedium.size()) return 0;
   float brightest = 0.0f;
@@ -180,8 +179,8 @@ inline void expectCornerAbsorbedPerBin(const MakeRenderer& make, int32_t side = 
 /// `adaptive`: render.adaptive_pixel_samples), point-sampled (bin by bin) and
 /// with footprints (pixel by pixel, weighed by the bins: a kernel spreads a
 /// few bins about its path).
-inline void expectSubPixelSamplesAbsorbed(const MakeRenderer& make, bool merge,
-                                          int32_t side = 16, bool adaptive = false) {
+inline void expectSubPixelSamplesAbsorbed(const MakeRenderer& make, bool merge, int32_t side = 16,
+                                          bool adaptive = false) {
   CornerJob s = absorbingCornerJob(side);
   s.job.settings.pixel_samples = 2;
   s.job.settings.indirect.merge_pixel_samples = merge;
@@ -195,10 +194,10 @@ inline void expectSubPixelSamplesAbsorbed(const MakeRenderer& make, bool merge,
         renderComponents(*make(), withAbsorbingMedium(s.job, kMediumSigmaA));
     for (const char* part : {"direct", "indirect"}) {
       const std::size_t checked =
-          footprint ? expectAbsorbedPerPixel(vacuum.at(part), fog.at(part), axis, kMediumSigmaA,
-                                             1e-2, part)
-                    : expectAbsorbedPerBin(vacuum.at(part), fog.at(part), axis, kMediumSigmaA,
-                                           part);
+          footprint
+              ? expectAbsorbedPerPixel(vacuum.at(part), fog.at(part), axis, kMediumSigmaA, 1e-2,
+                                       part)
+              : expectAbsorbedPerBin(vacuum.at(part), fog.at(part), axis, kMediumSigmaA, part);
       EXPECT_GT(checked, 100u) << part;
     }
   }
@@ -260,8 +259,8 @@ inline void expectMediumPointsAbsorbed(
   const std::vector<double> a = pixelSums(vacuum.at("direct"), m.job.settings.time.bins);
   const std::vector<double> b = pixelSums(fog.at("direct"), m.job.settings.time.bins);
   for (std::size_t p = 0; p < m.points.size(); ++p) {
-    const float legs = glm::length(m.job.light.position_world - m.points[p]) +
-                       glm::length(m.points[p] - m.origin);
+    const float legs =
+        glm::length(m.job.light.position_world - m.points[p]) + glm::length(m.points[p] - m.origin);
     for (int c = 0; c < 3; ++c) {
       const std::size_t k = p * capture::kChannels + static_cast<std::size_t>(c);
       ASSERT_GT(a[k], 0.0) << "point " << p;

@@ -87,7 +87,9 @@ CpuBackend::DirectConstants CpuBackend::directConstants() const {
   const glm::vec3 f = physics::scatter(surface.vertex, n, wLight, surface.toCamera).f;
   out.radiance = physics::directRadiance(f, c.intensity_W_per_sr, profile, cosX, dLight);
   // A medium: the light -> x and x -> camera legs (the latter whatever the unwarp).
-  if (c.medium) out.radiance *= physics::mediumTransmittance(c.sigmaT, dLight + surface.cameraLeg_m);
+  if (c.medium) {
+    out.radiance *= physics::mediumTransmittance(c.sigmaT, dLight + surface.cameraLeg_m);
+  }
   const float dCamera = dropLastLeg_ ? 0.0f : glm::length(x - surface.camera) + surface.lensPath_m;
   out.path_m = physics::directPathLength(c.eta, dLight, dCamera);
   return true;
