@@ -9,8 +9,10 @@
 // eta * |l - x| when the camera delay is unwarped. With PIXEL_FOOTPRINT it is
 // spread instead over that path's distribution across the sample's footprint
 // (its sub-pixel, or the whole pixel for a centre sample;
-// footprint_deposit.glsl). Each bin has this thread as its only writer, so the
-// result does not depend on scheduling. With RESPONSE_CLASSES (a render with
+// footprint_deposit.glsl). With MEDIUM (a medium filling the scene) the
+// radiance is attenuated over both legs (medium_uniforms.glsl). Each bin
+// has this thread as its only writer, so the result does not depend on
+// scheduling. With RESPONSE_CLASSES (a render with
 // scattering delays) the light of a delayed surface goes to its class's
 // buffer instead (response_classes.glsl), point samples as spikes. The
 // sample loop runs at most 16^2 times, far below llvmpipe's 65535 loop trips
@@ -19,6 +21,7 @@ layout(local_size_x = TOFSIM_WORK_GROUP_SIZE) in;
 
 #include "surface_samples.glsl"
 #include "light.glsl"
+#include "medium_uniforms.glsl"
 
 layout(std430, binding = TOFSIM_SSBO_DIRECT_VOLUME) buffer DirectVolume { float direct[]; };
 layout(std430, binding = TOFSIM_SSBO_OUTSIDE_AXIS) buffer OutsideAxis { float outside[]; };  // [2 * pixel]: before, [2 * pixel + 1]: after
@@ -64,6 +67,11 @@ void gatherSample(uint local, SurfaceSample g, CameraEnd end, inout float lostBe
   float dCamera = uCameraUnwarp != 0 ? 0.0 : length(x - camera);
 #endif
   float path_m = directPathLength(uIndexOfRefraction, dLight, dCamera);
+#ifdef MEDIUM
+  // The light -> x and x -> camera legs, the latter whatever the unwarp
+  // (the lens's path is inside the camera).
+  radiance *= mediumLegsTransmittance(dLight + length(x - camera));
+#endif
 #ifdef RESPONSE_CLASSES
   // The light of a delayed surface: into its class's buffer, whatever the
   // footprint setting (response_classes.glsl).

@@ -12,7 +12,9 @@
 // split the VPLs), makes the sum reproducible bit for bit whatever the batch
 // and segment sizes. With RESPONSE_CLASSES (a render with scattering delays)
 // a contribution of a delayed class (the VPL's, then the sample's vertex)
-// goes to its class's buffer instead (response_classes.glsl).
+// goes to its class's buffer instead (response_classes.glsl). With MEDIUM
+// (a medium filling the scene) each contribution is attenuated over its
+// VPL -> x and x -> camera legs (medium_uniforms.glsl).
 // Both ends of a contribution scatter (scatter_vertex.glsl): the VPL toward x
 // (vplScatterToward: 1 where its flux holds it), and x toward the camera for
 // the direction to the VPL (scatter()).
@@ -30,6 +32,7 @@ uniform int uIsmResolution;
 #endif
 
 #include "surface_samples.glsl"
+#include "medium_uniforms.glsl"
 
 layout(std430, binding = TOFSIM_SSBO_INDIRECT_VOLUME) buffer IndirectVolume { float indirect[]; };
 layout(std430, binding = TOFSIM_SSBO_OUTSIDE_AXIS) buffer OutsideAxis { float outside[]; };  // [2 * pixel]: before, [2 * pixel + 1]: after
@@ -146,6 +149,11 @@ void gatherVpl(uint local, Sample at, uint k, Vpl vpl, inout float lostBefore,
   if (!visible(uFirstVpl - uIsmFirstVpl + k, vpl, at.x, at.n, d, dist, cosX, iterations)) return;
   vec3 fCamera = scatter(at.vertex, at.n, -d, at.toCamera).f * at.weight;
   vec3 radiance = vplRadianceAt(vpl, fCamera, d, g);
+#ifdef MEDIUM
+  // The VPL -> x and x -> camera legs (the earlier ones are in the VPL's
+  // flux), the latter whatever the unwarp.
+  radiance *= mediumLegsTransmittance(dist + length(at.x - at.camera));
+#endif
   float path_m = vplPathLength(vpl.positionPath.w, uIndexOfRefraction, dist, at.cameraPath);
 #ifdef RESPONSE_CLASSES
   // The VPL's class (its history, in flux.w) then the sample's vertex:

@@ -7,7 +7,8 @@
 // taken off on both backends ("gather"). "segment" adds what a render's
 // segment pays around it: the clear at beginSegment and one read-back copy.
 // Usage: tofsim_cpu_gather [threads] [side] [rsm_resolution] [pixel_footprint 0|1, default 1]
-//        [cpu_only 0|1, default 0]
+//        [cpu_only 0|1, default 0] [medium 0|1, default 0: an absorbing medium
+//        filling the scene, sigma_a 0.1/m, which attenuates every pair (issue 42)]
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -92,6 +93,10 @@ int main(int argc, char** argv) {
   std::printf("corner %dx%d, rsm %d, %d threads, pixel_footprint %s\n", side, side, rsm, threads,
               footprint ? "true" : "false");
   const bool cpuOnly = argc > 5 && std::atoi(argv[5]) != 0;
+  if (argc > 6 && std::atoi(argv[6]) != 0) {
+    corner.job.settings.medium.sigma_a_per_m = glm::vec3(0.1f);
+    std::printf("in an absorbing medium, sigma_a 0.1/m\n");
+  }
   const struct {
     const char* name;
     bool visibility;

@@ -267,6 +267,19 @@ TEST(CpuMatchesGlGLTest, CornerVolumesWithIsms) {
   expectSameCornerVolumes(capture::Visibility::Ism);
 }
 
+// Issue 42: a medium filling the scene attenuates every leg on both backends
+// alike (an absorbing one, different per channel), with the tolerances of
+// vacuum; a small image, with ISMs (llvmpipe's exact visibility is slow).
+TEST(CpuMatchesGlGLTest, CornerVolumesInAnAbsorbingMedium) {
+  test::CornerJob s(12);
+  s.job.settings.indirect.visibility = capture::Visibility::Ism;
+  s.job.settings.indirect.rsm_resolution = 16;
+  s.job.settings.indirect.points_per_vpl = 500;
+  s.job.settings.shadow_map_resolution = 512;
+  s.job.settings.medium.sigma_a_per_m = glm::vec3(0.15f, 0.4f, 0.8f);
+  expectSameVolumesForEachPixelModel(s.job, 1e-3, 1e-2);
+}
+
 // Glossy VPLs and the BRDF on the camera side of their light agree as the
 // diffuse ones do, with the same tolerances: exact visibility with and
 // without the clamp, and ISMs (whose splat reads the glossy VPL layout).

@@ -12,6 +12,7 @@
 #include <cmath>
 #include <memory>
 
+#include "support/GivenSamplesGlBackend.h"
 #include "support/GlTestContext.h"
 #include "support/MediumPoints.h"
 #include "tofsim/capture/VolumeCollector.h"
@@ -24,20 +25,7 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-// The GL backend given `given` in place of the samples the driver traces
-// for a point set (the driver's medium points would come this way).
-class GivenSamplesGlBackend : public GlBackend {
- public:
-  explicit GivenSamplesGlBackend(ir::SurfaceImage given)
-      : GlBackend(test::glTestContext()), given_(std::move(given)) {}
-  void setSurfaces(std::unique_ptr<ir::SurfaceImage> /*traced*/,
-                   std::unique_ptr<ir::SurfaceImage> /*centres*/) override {
-    GlBackend::setSurfaces(std::make_unique<ir::SurfaceImage>(given_), nullptr);
-  }
-
- private:
-  ir::SurfaceImage given_;
-};
+using test::GivenSamplesGlBackend;
 
 capture::VolumeCollector render(const test::MediumPoints& m,
                                 std::unique_ptr<ir::IrBackend> backend) {

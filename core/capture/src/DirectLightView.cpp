@@ -1,5 +1,6 @@
 #include "tofsim/capture/DirectLightView.h"
 
+#include "tofsim/physics/MediumPhysics.h"
 #include "tofsim/volume/PhysicalConstants.h"
 
 namespace tofsim::capture {
@@ -34,6 +35,9 @@ DirectLightView directLightView(const RenderJob& job, const FirstSurface& firstS
   const double solidAngle = camera.pixelSolidAngle_sr(xy.x, xy.y);
   view.radiance = job.light.intensity_W_per_sr *
                   static_cast<float>(profile / (static_cast<double>(d) * d * solidAngle));
+  // A medium filling the scene attenuates the light -> camera leg.
+  const Medium& medium = job.settings.medium;
+  if (medium.present()) view.radiance *= physics::mediumTransmittance(medium.sigmaT(), d);
   // Unwarped time is the time at the scene point; the source itself emits at 0.
   const double path_m =
       job.settings.time.camera_unwarp ? 0.0 : job.settings.time.index_of_refraction * d;

@@ -149,7 +149,7 @@ std::vector<ir::Vpl> CpuBackend::generateVpls(const capture::RenderJob& job) {
   return traceRsmVpls(*scene_, job.light, s.rsm_resolution, s.rsm_edge_samples,
                       job.settings.time.index_of_refraction,
                       ir::vertexModelOf(job.settings.materials), threads_,
-                      litBounds_->of(job.light), &responseClasses_);
+                      litBounds_->of(job.light), &responseClasses_, job.settings.medium);
 }
 
 void CpuBackend::setVpls(const std::vector<ir::Vpl>& vpls) {
@@ -268,6 +268,7 @@ void CpuBackend::fillSurface(std::size_t i, float weight, const capture::PixelSt
   // The constant scatter's f (the directions do not matter to it).
   surface.brdf =
       physics::scatter(surface.vertex, surface.n, surface.toCamera, surface.toCamera).f * weight;
+  surface.cameraLeg_m = glm::length(surface.x - viewpoint);
   surface.cameraPath_m = physics::cameraPathLength(
       dropLastLeg_, eta, glm::length(surface.x - viewpoint) + surface.lensPath_m);
   // On a surface its tangent plane; at a medium point the ray's cross-section.
@@ -305,6 +306,8 @@ CpuBackend::IndirectConstants CpuBackend::indirectConstants() const {
   c.cameraUnwarp = dropLastLeg_;
   c.vplBrdfClamp = static_cast<float>(s.indirect.vpl_brdf_clamp_per_sr);
   c.bins = s.time.bins;
+  c.medium = s.medium.present();
+  c.sigmaT = s.medium.sigmaT();
   ic.exact = indirectVisibility_ && s.indirect.visibility == capture::Visibility::Exact;
   ic.eps = 1e-4f * sceneScale_m_;  // as indirect_gather.comp's exact visibility
   ic.delayed = !responses_->empty();

@@ -12,6 +12,7 @@
 #include "tofsim/cpu/CpuBackend.h"
 #include "tofsim/ir/SurfaceImage.h"
 #include "tofsim/physics/FootprintBuffer.h"
+#include "tofsim/physics/MediumPhysics.h"
 #include "tofsim/physics/ScatterVertex.h"
 #include "tofsim/physics/TransientPhysics.h"
 #include "tofsim/rays/RayScene.h"
@@ -36,6 +37,8 @@ struct CpuBackend::DirectConstants {
   int bins = 0;
   bool footprint = false;  ///< render.pixel_footprint
   bool delayed = false;    ///< the render has delayed response classes
+  bool medium = false;     ///< a medium fills the scene (Medium::present)
+  glm::vec3 sigmaT{0.0f};  ///< its extinction, 1/m
 };
 
 /// One sample's direct light, before its share of the pixel.
@@ -56,6 +59,8 @@ CpuBackend::DirectConstants CpuBackend::directConstants() const {
   c.bins = s.time.bins;
   c.footprint = s.pixel_footprint;
   c.delayed = !responses_->empty();
+  c.medium = s.medium.present();
+  c.sigmaT = s.medium.sigmaT();
   return c;
 }
 
@@ -81,6 +86,10 @@ CpuBackend::DirectConstants CpuBackend::directConstants() const {
   if (scene_->occluded(x + offset, c.light_world)) return false;
   const glm::vec3 f = physics::scatter(surface.vertex, n, wLight, surface.toCamera).f;
   out.radiance = physics::directRadiance(f, c.intensity_W_per_sr, profile, cosX, dLight);
+  // A medium: the light -> x and x -> camera legs (the latter whatever the unwarp).
+  if (c.medium) {
+    out.radiance *= physics::mediumTransmittance(c.sigmaT, dLight + surface.cameraLeg_m);
+  }
   const float dCamera = dropLastLeg_ ? 0.0f : glm::length(x - surface.camera) + surface.lensPath_m;
   out.path_m = physics::directPathLength(c.eta, dLight, dCamera);
   return true;

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "tofsim/physics/FootprintKernel.h"
+#include "tofsim/physics/MediumPhysics.h"
 #include "tofsim/physics/TransientPhysics.h"
 #include "tofsim/physics/VplNearField.h"
 
@@ -176,6 +177,31 @@ void nearFieldRadiance(const PixelSurface& s, const VplArrays& v, std::size_t fi
   }
 }
 
+// A medium filling the scene: each lane's radiance times the transmittance
+// of its VPL -> x leg and x's camera leg (the light -> VPL leg and the
+// earlier ones are in the VPL's flux). After the radiance passes, so each
+// lane is attenuated once whichever of them wrote it; lanes that light
+// nothing are multiplied too, and never read.
+void attenuateLanes(const PixelSurface& s, std::size_t n, const GatherConstants& c,
+                    VplTerms& terms) {
+  // A grey medium (fog): one exp per lane, the same float as each channel's.
+  if (c.sigmaT.r == c.sigmaT.g && c.sigmaT.g == c.sigmaT.b) {
+    for (std::size_t i = 0; i < n; ++i) {
+      const float t = physics::mediumTransmittance(c.sigmaT, terms.dist[i] + s.cameraLeg_m).r;
+      terms.r[i] *= t;
+      terms.g[i] *= t;
+      terms.b[i] *= t;
+    }
+    return;
+  }
+  for (std::size_t i = 0; i < n; ++i) {
+    const glm::vec3 t = physics::mediumTransmittance(c.sigmaT, terms.dist[i] + s.cameraLeg_m);
+    terms.r[i] *= t.r;
+    terms.g[i] *= t.g;
+    terms.b[i] *= t.b;
+  }
+}
+
 }  // namespace
 
 // target_clones: an AVX2 build and a baseline one of the same source, picked
@@ -234,6 +260,8 @@ __attribute__((target_clones("avx2", "default"))) void vplTerms(const PixelSurfa
   } else if (anyNear) {
     nearFieldRadiance(s, v, first, n, c, terms);
   }
+  // Tested once per block: without a medium the terms are those of before.
+  if (c.medium) attenuateLanes(s, n, c, terms);
   if (c.footprint) vplKernels(s, v, first, n, c, terms);
 }
 

@@ -39,6 +39,9 @@ struct PixelSurface {
   /// 1 / N^2: the factor the vectorised pass multiplies by.
   glm::vec3 brdf{0.0f};
   float cameraPath_m = 0.0f;  ///< eta * (|x - c| + lensPath_m), or 0 when unwarped
+  /// |x - c|: the camera leg's geometric length in a medium filling the
+  /// scene, whatever the unwarp (the lens's path is inside the camera).
+  float cameraLeg_m = 0.0f;
   /// c: where the camera leg ends, the viewpoint or the sample's aperture point.
   glm::vec3 camera{0.0f};
   float lensPath_m = 0.0f;  ///< a thin lens's path from c on (SurfaceImage::lensPathOf)
@@ -60,6 +63,10 @@ struct GatherConstants {
   bool cameraUnwarp = false;
   float vplBrdfClamp = 0.0f;  ///< 1/sr, <= 0: no clamp (physics::vplScatter)
   int32_t bins = 0;           ///< of the time axis
+  /// A medium fills the scene (capture::Medium::present): every term is
+  /// attenuated over its VPL -> x and x -> camera legs by sigmaT.
+  bool medium = false;
+  glm::vec3 sigmaT{0.0f};  ///< 1/m, per channel
 };
 
 /// Per-VPL terms of one block: bin (kNoLight when the VPL does not face the

@@ -40,7 +40,8 @@ std::vector<ir::Vpl> traceRsmVpls(const rays::RayScene& scene, const capture::Li
                                   int resolution, int edgeSamples, double indexOfRefraction,
                                   int vertexModel, int threads,
                                   const std::optional<scene::Bounds>& lit,
-                                  const physics::ResponseClassTable* classes) {
+                                  const physics::ResponseClassTable* classes,
+                                  const capture::Medium& medium) {
   const std::vector<physics::ScatterVertex> materials =
       ir::materialVertices(scene.scene(), vertexModel);
   const auto trace = [&](const ir::RsmView& view, int side, int x, int y) {
@@ -86,6 +87,7 @@ std::vector<ir::Vpl> traceRsmVpls(const rays::RayScene& scene, const capture::Li
     vpls.insert(vpls.end(), ofView.begin(), ofView.end());
   }
   // After the edge texels' merges, which sum their members' fluxes.
+  ir::attenuateLightLegs(vpls, medium, indexOfRefraction);
   if (classes != nullptr) ir::setFirstBounceClasses(vpls, *classes);
   return vpls;
 }

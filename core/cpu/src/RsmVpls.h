@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "tofsim/capture/Light.h"
+#include "tofsim/capture/Medium.h"
 #include "tofsim/ir/IrBackend.h"
 #include "tofsim/physics/ResponseClassTable.h"
 #include "tofsim/rays/RayScene.h"
@@ -27,6 +28,7 @@ std::vector<ir::Vpl> traceRsmVpls(const rays::RayScene& scene, const capture::Li
                                   int rsmResolution, int edgeSamples, double indexOfRefraction,
                                   int vertexModel, int threads,
                                   const std::optional<scene::Bounds>& lit = std::nullopt,
-                                  const physics::ResponseClassTable* classes = nullptr);
+                                  const physics::ResponseClassTable* classes = nullptr,
+                                  const capture::Medium& medium = capture::Medium{});
 
 }  // namespace tofsim::cpu

@@ -8,6 +8,7 @@
 #include "tofsim/ir/HitVertex.h"
 #include "tofsim/ir/MaterialVertex.h"
 #include "tofsim/ir/VplClasses.h"
+#include "tofsim/physics/MediumPhysics.h"
 #include "tofsim/physics/ScatterSampling.h"
 #include "tofsim/rays/RayScene.h"
 #include "tofsim/rays/Sampling.h"
@@ -52,7 +53,11 @@ std::optional<Vpl> shootChild(const rays::RayScene& scene, const Vpl& parent,
   // and carries the hit's vertex (and, where its flux does not hold its
   // scatter, the direction its light came from, -w).
   const physics::ScatterVertex vertex = hitVertex(*hit, vertices);
-  const glm::vec3 flux = physics::bounceVplFlux(vertex, share, continuation.weight);
+  glm::vec3 flux = physics::bounceVplFlux(vertex, share, continuation.weight);
+  if (tracing.medium.present()) {
+    flux *= physics::mediumTransmittance(tracing.medium.sigmaT(),
+                                         glm::length(hit->position_world - p));
+  }
   std::optional<Vpl> child;
   if (flux.r + flux.g + flux.b > 0.0f) {
     child = Vpl{glm::vec4(hit->position_world, path_m), glm::vec4(hit->normal_world, 0.0f),
@@ -146,7 +151,7 @@ BouncedVpls traceLaterBounces(const capture::RenderJob& job, const rays::RayScen
   std::unique_ptr<rays::RayScene> built;
   if (given == nullptr) built = std::make_unique<rays::RayScene>(*job.scene, 0);
   const rays::RayScene& scene = given != nullptr ? *given : *built;
-  const BounceTracing tracing{s.russian_roulette, s.trace_threads};
+  const BounceTracing tracing{s.russian_roulette, s.trace_threads, job.settings.medium};
   const BounceMaterials materials{vertexModelOf(job.settings.materials),
                                   static_cast<float>(s.vpl_brdf_clamp_per_sr),
                                   classes != nullptr && classes->delayed() ? classes : nullptr};

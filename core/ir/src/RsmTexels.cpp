@@ -4,6 +4,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "tofsim/physics/FootprintKernel.h"
+#include "tofsim/physics/MediumPhysics.h"
 
 namespace tofsim::ir {
 
@@ -97,6 +98,17 @@ std::optional<Vpl> rsmTexelVpl(const capture::Light& light, const RsmView& view,
   vpl.vertex = surface.vertex;
   if (!holdsScatter) vpl.incoming = glm::vec4(-fromLight, 0.0f);
   return vpl;
+}
+
+void attenuateLightLegs(std::vector<Vpl>& vpls, const capture::Medium& medium,
+                        double indexOfRefraction) {
+  if (!medium.present()) return;
+  const glm::vec3 sigmaT = medium.sigmaT();
+  const auto eta = static_cast<float>(indexOfRefraction);
+  for (Vpl& v : vpls) {
+    const glm::vec3 t = physics::mediumTransmittance(sigmaT, v.positionPath.w / eta);
+    v.flux = glm::vec4(glm::vec3(v.flux) * t, v.flux.w);  // w: the response class
+  }
 }
 
 }  // namespace tofsim::ir

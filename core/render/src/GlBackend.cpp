@@ -8,6 +8,7 @@
 #include "IndirectLight.h"
 #include "LightShadowMap.h"
 #include "LightUniforms.h"
+#include "MediumUniforms.h"
 #include "PixelFootprint.h"
 #include "SampleBuffers.h"
 #include "SurfaceMaps.h"
@@ -46,7 +47,8 @@ struct ViewBounds {
 };
 
 // Uniforms shared by the direct and indirect gathers: image, time axis,
-// imager (its viewpoint, whether its last leg counts, its footprint steps).
+// imager (its viewpoint, whether its last leg counts, its footprint steps),
+// the medium.
 void configureGather(const gl::Program& program, const RenderJob& job) {
   const TimeAxis& axis = job.settings.time;
   program.set("uImageWidth", imageWidth(job.imager));
@@ -58,6 +60,7 @@ void configureGather(const gl::Program& program, const RenderJob& job) {
   const bool dropLastLeg = job.settings.time.camera_unwarp || !lastLegCounts(job.imager);
   program.set("uCameraUnwarp", dropLastLeg ? 1 : 0);
   const RenderSettings& s = job.settings;
+  if (s.medium.present()) setMediumExtinction(program, s.medium);  // compiled with MEDIUM
   // Each sample's own camera end, or the viewpoint for all (camera_end.glsl).
   if (raysShareOrigin(job.imager)) {
     program.set("uCameraPosition_world", viewpoint(job.imager));
@@ -355,7 +358,7 @@ std::vector<ir::Vpl> GlBackend::generateVpls(const RenderJob& job) {
   std::vector<ir::Vpl> vpls = render::generateVpls(
       p.gpuScene, job.light, s.rsm_resolution, s.rsm_edge_samples,
       job.settings.time.index_of_refraction, p.bounds.lo, p.bounds.hi,
-      ir::vertexModelOf(job.settings.materials));
+      ir::vertexModelOf(job.settings.materials), job.settings.medium);
   ir::setFirstBounceClasses(vpls, responseClasses_);
   return vpls;
 }

@@ -73,6 +73,9 @@ std::vector<std::pair<std::string, std::string>> gatherDefines(const capture::Re
   if (s.pixel_footprint && camera != nullptr && camera->lens) {
     defines.emplace_back("PIXEL_RAY_STEPS", "1");
   }
+  // A medium filling the scene (medium_uniforms.glsl); without one the
+  // gathers of before.
+  if (s.medium.present()) defines.emplace_back("MEDIUM", "1");
   return defines;
 }
 

@@ -64,7 +64,8 @@ class RsmReadback {
 
 std::vector<Vpl> generateVpls(const GpuScene& scene, const capture::Light& light, int resolution,
                               int edgeSamples, double indexOfRefraction, const glm::vec3& lo,
-                              const glm::vec3& hi, int vertexModel) {
+                              const glm::vec3& hi, int vertexModel,
+                              const capture::Medium& medium) {
   const bool gltf = mapsMetallicRoughness(vertexModel);
   const std::vector<physics::ScatterVertex> materials =
       ir::materialVertices(scene.scene(), vertexModel);
@@ -105,6 +106,7 @@ std::vector<Vpl> generateVpls(const GpuScene& scene, const capture::Light& light
         std::move(texels), resolution, ir::rsmEdgeSamples(edgeSamples, resolution), subTexels);
     vpls.insert(vpls.end(), ofView.begin(), ofView.end());
   }
+  ir::attenuateLightLegs(vpls, medium, indexOfRefraction);
   return vpls;
 }
 

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "tofsim/capture/Light.h"
+#include "tofsim/capture/Medium.h"
 #include "tofsim/ir/IrBackend.h"
 
 namespace tofsim::render {
@@ -27,9 +28,11 @@ using ir::Vpl;  // matches struct Vpl in shaders/vpl.glsl (std430)
 /// (glTF: glossy VPLs, from the RSM's metallic and roughness too;
 /// ir::rsmTexelVpl). `edgeSamples`
 /// (render.indirect.rsm_edge_samples): the texels at edges from a finer RSM
-/// of the view (ir::rsmViewVpls).
+/// of the view (ir::rsmViewVpls). `medium`: the one filling the scene, which
+/// attenuates each VPL's light -> VPL leg (ir::attenuateLightLegs).
 std::vector<Vpl> generateVpls(const GpuScene& scene, const capture::Light& light, int rsmResolution,
                               int edgeSamples, double indexOfRefraction, const glm::vec3& boundsMin,
-                              const glm::vec3& boundsMax, int vertexModel);
+                              const glm::vec3& boundsMax, int vertexModel,
+                              const capture::Medium& medium = capture::Medium{});
 
 }  // namespace tofsim::render

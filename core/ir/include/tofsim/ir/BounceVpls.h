@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "tofsim/capture/Medium.h"
 #include "tofsim/capture/RenderJob.h"
 #include "tofsim/ir/IrBackend.h"
 #include "tofsim/physics/ResponseClassTable.h"
@@ -39,6 +40,9 @@ struct BounceTracing {
   bool russian_roulette = false;
   /// Threads over fixed runs of rays; 0 = all. The bytes do not depend on it.
   int32_t threads = 1;
+  /// The medium filling the scene (RenderSettings::medium): a child's flux
+  /// is attenuated over its parent -> child leg, exp(-sigma_t |x - x_parent|).
+  capture::Medium medium{};
 };
 
 /// How later bounces reflect (render.materials, render.indirect.vpl_brdf_clamp).

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "tofsim/capture/Light.h"
+#include "tofsim/capture/Medium.h"
 #include "tofsim/ir/IrBackend.h"
 
 namespace tofsim::ir {
@@ -50,5 +51,13 @@ struct RsmTexelSurface {
 std::optional<Vpl> rsmTexelVpl(const capture::Light& light, const RsmView& view, int resolution,
                                int x, int y, const RsmTexelSurface& surface,
                                double indexOfRefraction);
+
+/// In a medium filling the scene (Medium::present) the RSM VPLs' flux times
+/// the light -> VPL leg's transmittance, exp(-sigma_t path / eta) from each
+/// VPL's own path (after the edge texels' merges: a merged VPL's light is
+/// binned at its nearest member's path, and attenuated by it); without one
+/// nothing changes.
+void attenuateLightLegs(std::vector<Vpl>& vpls, const capture::Medium& medium,
+                        double indexOfRefraction);
 
 }  // namespace tofsim::ir
