@@ -125,6 +125,9 @@ class PathIntegrator {
   ContinuationSampling sampling_;
   /// The scene's delay kernels (ir::materialResponses), by base id.
   VertexDelays delays_;
+  /// The base kernel of the light's own surface (ir::lightResponse; 0: none):
+  /// every path's first delay.
+  int32_t lightResponse_;
 };
 
 }  // namespace tofsim::reference
