@@ -90,6 +90,7 @@ TEST(NlosRelayWallDelayTest, TheReferenceDelaysTheSpotAndAgreesWithIr) {
     const double sigma = 1.2 * std::sqrt(2.0 * f * (2.0 - f)) * tau / std::sqrt(paths);
     const double shift = measured(delayed, p).meanPath_m - measured(instant, p).meanPath_m;
     const double irShift = measured(irDelayed, p).meanPath_m - measured(irInstant, p).meanPath_m;
+    EXPECT_NEAR(shift, 2.0 * f * tau, 5.0 * sigma);
     EXPECT_NEAR(shift, irShift, 5.0 * sigma);
     EXPECT_NEAR(irShift, 2.0 * f * tau, 1e-4);
     EXPECT_NEAR(measured(delayed, p).energy / measured(instant, p).energy, 1.0, 1e-4);
