@@ -2,6 +2,7 @@
 // base kernels up to the depth, once, and composition as multiset union.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <set>
 
 #include "tofsim/physics/ResponseClassTable.h"
@@ -57,6 +58,46 @@ TEST(ResponseClassTableTest, RefusesTooManyClasses) {
   // 6 kernels at depth 3: C(9, 3) = 84 > 64.
   EXPECT_THROW(ResponseClassTable::build(kernels(6), 3), std::invalid_argument);
   EXPECT_NO_THROW(ResponseClassTable::build(kernels(6), 2));  // C(8, 2) = 28
+}
+
+// A light on a delayed surface (an NLOS laser spot on its relay wall, start
+// kernel 2): every path holds it. The table is class 0 and {2} + each
+// multiset of one vertex fewer (as many as the table one shallower, plus
+// {2}); its row 0 is {2}'s, so a vertex lit directly gets {2, k}, an RSM VPL
+// on an instant surface {2}, and the rest composes as before.
+TEST(ResponseClassTableTest, AStartKernelBeginsEveryPath) {
+  const ResponseClassTable t = ResponseClassTable::build(kernels(2), 3, 2);
+  ASSERT_EQ(t.classCount(), ResponseClassTable::build(kernels(2), 2).classCount() + 1);
+  EXPECT_TRUE(t.members[0].empty());
+  EXPECT_EQ(t.members[1], (std::vector<uint32_t>{2}));
+  for (uint32_t c = 1; c < t.classCount(); ++c) {
+    EXPECT_EQ(std::count(t.members[c].begin(), t.members[c].end(), 2u) >= 1, true);
+    EXPECT_LE(t.members[c].size(), 3u);
+    EXPECT_EQ(t.then(c, 0), c);
+  }
+  EXPECT_EQ(t.single(0), 1u);
+  EXPECT_EQ(t.members[t.single(1)], (std::vector<uint32_t>{1, 2}));
+  EXPECT_EQ(t.members[t.single(2)], (std::vector<uint32_t>{2, 2}));
+  EXPECT_EQ(t.members[t.then(t.single(1), 1)], (std::vector<uint32_t>{1, 1, 2}));
+  EXPECT_EQ(t.then(t.then(t.single(1), 1), 1), ResponseClassTable::kNoClass);
+  // Without a start kernel, the table of before, byte for byte.
+  const ResponseClassTable plain = ResponseClassTable::build(kernels(2), 3, 0);
+  const ResponseClassTable before = ResponseClassTable::build(kernels(2), 3);
+  EXPECT_EQ(plain.members, before.members);
+  EXPECT_EQ(plain.compose, before.compose);
+}
+
+TEST(ResponseClassTableTest, AStartKernelCountsTowardsTheLimit) {
+  // 6 kernels: one vertex fewer at depth 3 is C(8, 2) = 28 (+ class 0 = 29
+  // classes); at depth 4, C(9, 3) = 84: over 64.
+  EXPECT_EQ(ResponseClassTable::build(kernels(6), 3, 1).classCount(), 29u);
+  EXPECT_THROW(ResponseClassTable::build(kernels(6), 4, 1), std::invalid_argument);
+  // Exactly 64: 63 multisets of the rest and class 0. 2 kernels, rest depth
+  // d: (d + 1)(d + 2) / 2 = 63 has no solution; 1 kernel, rest depth 62:
+  // 63 multisets, 64 classes.
+  EXPECT_EQ(ResponseClassTable::build(kernels(1), 63, 1).classCount(), 64u);
+  EXPECT_THROW(ResponseClassTable::build(kernels(1), 64, 1), std::invalid_argument);
+  EXPECT_THROW(ResponseClassTable::build(kernels(2), 3, 3), std::invalid_argument);  // no kernel 3
 }
 
 }  // namespace

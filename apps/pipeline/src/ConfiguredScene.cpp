@@ -7,6 +7,7 @@
 #include "tofsim/ir/MaterialVertex.h"
 #include "tofsim/ir/VplClasses.h"
 #include "tofsim/physics/ResponseClassTable.h"
+#include "tofsim/pipeline/NlosScan.h"
 #include "tofsim/util/Error.h"
 
 namespace tofsim::pipeline {
@@ -27,13 +28,16 @@ void configureScene(const config::RunConfig& config, scene::Scene& scene,
 
 void checkResponseClasses(const config::RunConfig& config, const scene::Scene& scene) {
   if (config.renderer != config::RendererKind::InstantRadiosity) return;
-  const ir::MaterialResponses responses = ir::materialResponses(scene);
+  ir::MaterialResponses responses = ir::materialResponses(scene);
   if (responses.kernels.empty()) return;
   const int32_t bounces = config.render.indirect.bounces;
+  // An NLOS scan's laser spot stands on its relay wall (NlosScanGeometry::capture).
+  capture::Light light;
+  if (config.nlos) light.surface_material = relayWallMaterial(scene, config.nlos->relay_wall);
+  const uint32_t start = ir::lightResponse(responses, light);
   try {
     // The table the driver builds (IrRenderer), thrown away.
-    (void)physics::ResponseClassTable::build(responses.kernels,
-                                             ir::responseDepth(config.render.indirect));
+    (void)ir::responseClasses(std::move(responses.kernels), config.render.indirect, start);
   } catch (const std::invalid_argument& e) {
     std::string delayed;
     for (const scene::Material& m : scene.materials) {
@@ -41,7 +45,8 @@ void checkResponseClasses(const config::RunConfig& config, const scene::Scene& s
     }
     throw InputError(config.materials_at, "render.indirect.bounces",
                      std::string(e.what()) + " (render.indirect.bounces: " +
-                         std::to_string(bounces) + ", plus the surface the camera sees; delayed " +
+                         std::to_string(bounces) + ", plus the surface the camera sees" +
+                         (start != 0 ? " and the relay wall's laser spot" : "") + "; delayed " +
                          "materials: " + delayed + "): lower render.indirect.bounces, or give " +
                          "materials equal scattering delays (they share a kernel)");
   }

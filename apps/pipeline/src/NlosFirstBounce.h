@@ -17,7 +17,9 @@ namespace tofsim::pipeline {
 /// point's grid cell, albedo(l) x power / (pi x cell area) summed over R, G,
 /// B, in the bin of the spot's optical path (0, or the two legs with
 /// account_first_and_last_bounces); nothing where l is outside the cell or
-/// the path off the axis.
+/// the path off the axis. A relay wall with a scattering delay spreads it
+/// from that bin on by the wall's kernel (the stage's bin integrals: the wall
+/// is the spot's one delayed vertex).
 std::vector<float> nlosFirstBounce(const config::RunConfig& config, const NlosScanGeometry& scan,
                                    const scene::Scene& scene, const TimeAxis& axis);
 

@@ -13,11 +13,8 @@ namespace {
 
 // The wall's own albedo at the laser spot: its material's base colour (a
 // texture on the wall is not sampled).
-glm::vec3 wallAlbedo(const scene::Scene& scene, const std::string& wallName) {
-  for (const scene::Mesh& m : scene.meshes) {
-    if (m.node == wallName || m.name == wallName) return scene.materials.at(m.material).albedo;
-  }
-  return glm::vec3(0.0f);
+glm::vec3 wallAlbedo(const scene::Scene& scene, int32_t material) {
+  return material < 0 ? glm::vec3(0.0f) : scene.materials.at(material).albedo;
 }
 
 void requireInFront(const capture::RelayWall& wall, const glm::vec3& origin, const FileLoc& at,
@@ -32,6 +29,13 @@ void requireInFront(const capture::RelayWall& wall, const glm::vec3& origin, con
 }
 
 }  // namespace
+
+int32_t relayWallMaterial(const scene::Scene& scene, const std::string& wallName) {
+  for (const scene::Mesh& m : scene.meshes) {
+    if (m.node == wallName || m.name == wallName) return static_cast<int32_t>(m.material);
+  }
+  return -1;
+}
 
 std::size_t NlosScanGeometry::pointsPerCapture() const {
   return scan == config::NlosScan::Confocal ? 1 : sensorPoints.size();
@@ -67,8 +71,11 @@ NlosCapture NlosScanGeometry::capture(std::size_t i, const config::RunConfig& co
   const float lift = 1e-5f * std::max({wall.width_m, wall.height_m, 1e-3f});
   c.laser.position_world = l + lift * wall.normal;
   c.laser.direction_world = wall.normal;
-  c.laser.intensity_W_per_sr =
-      wallAlbedo(scene, wall.name) * nlos.laser_power_W * (power / static_cast<float>(M_PI));
+  // The spot's light leaves through the wall's scattering delay too: it
+  // starts every path's response class (ir::lightResponse).
+  c.laser.surface_material = relayWallMaterial(scene, wall.name);
+  c.laser.intensity_W_per_sr = wallAlbedo(scene, c.laser.surface_material) * nlos.laser_power_W *
+                               (power / static_cast<float>(M_PI));
   c.points.origin_world = sensorOrigin;
   c.points.last_leg_counts = nlos.account_first_and_last_bounces;
   if (scan == config::NlosScan::Confocal) {

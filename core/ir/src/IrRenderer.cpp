@@ -71,12 +71,14 @@ std::vector<GatherStep> planGathers(const BouncedVpls& bounced, std::size_t vpls
 
 // The response classes of a render of `job` (core/physics/temporal_response.md):
 // the scene's distinct scattering delays, on paths of up to one delayed vertex
-// per VPL bounce plus the pixel's own surface. A scene without delays gets the
+// per VPL bounce plus the pixel's own surface, started by the light's own
+// surface's (an NLOS laser spot's relay wall). A scene without delays gets the
 // table of the instant class alone (nothing allocated, the bytes of before).
 physics::ResponseClassTable responseClassesOf(const RenderJob& job) {
   try {
-    return physics::ResponseClassTable::build(materialResponses(*job.scene).kernels,
-                                              responseDepth(job.settings.indirect));
+    MaterialResponses responses = materialResponses(*job.scene);
+    const uint32_t start = lightResponse(responses, job.light);
+    return responseClasses(std::move(responses.kernels), job.settings.indirect, start);
   } catch (const std::invalid_argument& e) {
     throw InputError(std::string(e.what()) +
                      ": lower render.indirect.bounces or give fewer materials a scattering_delay");

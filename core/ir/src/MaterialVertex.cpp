@@ -21,6 +21,12 @@ MaterialResponses materialResponses(const scene::Scene& scene) {
   return r;
 }
 
+uint32_t lightResponse(const MaterialResponses& responses, const capture::Light& light) {
+  const auto m = static_cast<std::size_t>(light.surface_material);
+  if (light.surface_material < 0 || m >= responses.baseOfMaterial.size()) return 0;
+  return static_cast<uint32_t>(responses.baseOfMaterial[m]);
+}
+
 physics::ScatterVertex materialVertex(const scene::Material& m, int model, int32_t response) {
   physics::ScatterVertex v = physics::scatterVertex(model, m.albedo, m.metallic, m.roughness);
   v.response = response;

@@ -45,7 +45,9 @@ PathIntegrator::PathIntegrator(const RayScene& scene, const capture::RenderJob& 
       flight_(job.settings.medium),
       phase_(job.settings.medium.phase),
       g_(job.settings.medium.g),
-      angles_(job.settings.medium.phase, job.settings.medium.g) {}
+      angles_(job.settings.medium.phase, job.settings.medium.g),
+      lightResponse_(static_cast<int32_t>(
+          ir::lightResponse(ir::materialResponses(scene.scene()), job.light))) {}
 
 PathIntegrator::Radiance PathIntegrator::lightReflectedAt(const SurfaceHit& hit,
                                                           const glm::vec3& toViewer) const {
@@ -170,7 +172,7 @@ void PathIntegrator::traceContinuation(const SurfaceHit& hit, const glm::vec3& t
     fromCamera_m += glm::length(next->position_world - current.position_world);
     const Radiance reflected = lightReflectedAt(*next, toViewer);
     if (reflected.valid) {
-      deposit(state.weight.apply(reflected.value), reflected.path_m + fromCamera_m, state.delay_s,
+      deposit(state.seen(reflected.value), reflected.path_m + fromCamera_m, state.delay_s,
               histogram, outside);
     }
     current = *next;
@@ -193,7 +195,7 @@ void PathIntegrator::renderPixelCentre(int32_t x, int32_t y, PixelOutput& out,
   const double toCamera_m = lastLeg_m(cameraLeg_m);
   const std::size_t floats = static_cast<std::size_t>(job_.settings.time.bins) * kChannels;
   const glm::vec3 toCamera = glm::normalize(eye - hit.position_world);
-  if (delays_.delays(responseAt(hit))) {
+  if (delays_.delays(responseAt(hit)) || delays_.delays(lightResponse_)) {
     renderDelayedCentre(hit, toCamera, toCamera_m, pixelIndex(x, y), out, scratch);
     return;
   }
@@ -239,10 +241,10 @@ void PathIntegrator::renderDelayedCentre(const SurfaceHit& hit, const glm::vec3&
   const Radiance light = lightReflectedAt(hit, toCamera);  // the same for every path
   for (int32_t s = 0; s < samplesPerPixel_; ++s) {
     PathState state;
+    delays_.atLight(lightResponse_, delays, state);
     delays_.atVertex(response, delays, state);
     if (light.valid) {
-      deposit(state.weight.apply(light.value), light.path_m + toCamera_m, state.delay_s, direct,
-              outside);
+      deposit(state.seen(light.value), light.path_m + toCamera_m, state.delay_s, direct, outside);
     }
     if (bounces_ >= 2) {
       traceContinuation(hit, toCamera, toCamera_m, state, rng, delays, indirect, outside);
@@ -268,8 +270,7 @@ void PathIntegrator::addDirect(const SurfaceHit& hit, const glm::vec3& toCamera,
                                AxisLoss& outside) const {
   const Radiance direct = lightReflectedAt(hit, toCamera);
   if (!direct.valid) return;
-  deposit(state.weight.apply(direct.value), direct.path_m + toCamera_m, state.delay_s, histogram,
-          outside);
+  deposit(state.seen(direct.value), direct.path_m + toCamera_m, state.delay_s, histogram, outside);
 }
 
 void PathIntegrator::renderPixelArea(int32_t x, int32_t y, PixelOutput& out,
@@ -294,6 +295,7 @@ void PathIntegrator::renderPixelArea(int32_t x, int32_t y, PixelOutput& out,
     const double toCamera_m = lastLeg_m(glm::length(hit->position_world - eye));
     const glm::vec3 toCamera = glm::normalize(eye - hit->position_world);
     PathState state;
+    delays_.atLight(lightResponse_, delays, state);
     delays_.atVertex(responseAt(*hit), delays, state);
     addDirect(*hit, toCamera, toCamera_m, state, direct, outside);
     if (bounces_ >= 2) {

@@ -155,6 +155,9 @@ class PathIntegrator {
   int32_t phase_;
   float g_;
   PhaseAngleTable angles_;  ///< the phase's scattering angles, for the equiangular points
+  /// The base kernel of the light's own surface (ir::lightResponse; 0: none):
+  /// every path's first delay.
+  int32_t lightResponse_;
 };
 
 }  // namespace tofsim::reference

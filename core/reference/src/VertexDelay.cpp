@@ -104,4 +104,12 @@ void VertexDelays::atVertex(int32_t response, Pcg32& rng, PathState& state) cons
   if (s.reemits()) state.weight.reemit(s.reemission());
 }
 
+void VertexDelays::atLight(int32_t response, Pcg32& rng, PathState& state) const {
+  if (response <= 0) return;
+  const DelaySampler& s = samplers_.at(static_cast<std::size_t>(response - 1));
+  if (!(rng.nextDouble() < s.fraction())) return;  // prompt
+  state.delay_s += s.sample(rng);
+  if (s.reemits()) state.atLight = s.reemission();
+}
+
 }  // namespace tofsim::reference

@@ -59,10 +59,18 @@ class PathWeight {
 };
 
 /// What a path carries besides its geometry: its weight and the delays of
-/// its vertices so far (seconds).
+/// its vertices so far (seconds), and the re-emission of the light's own
+/// surface (VertexDelays::atLight), which acts on the light before anything
+/// else on the path does.
 struct PathState {
   PathWeight weight;
   double delay_s = 0.0;
+  std::optional<glm::dmat3> atLight;
+  /// The light `radiance` from the light, reflected at the current vertex
+  /// towards the viewer, seen at the camera.
+  glm::dvec3 seen(const glm::dvec3& radiance) const {
+    return weight.apply(atLight ? *atLight * radiance : radiance);
+  }
 };
 
 /// The scene's delay kernels by base id (ir::materialResponses: id k is
@@ -77,6 +85,11 @@ class VertexDelays {
   /// path's light: with probability fraction it is delayed (state.delay_s
   /// grows by a sampled delay) and re-emitted (state.weight.reemit).
   void atVertex(int32_t response, Pcg32& rng, PathState& state) const;
+  /// The light's own surface (base kernel `response`, 0: none; an NLOS
+  /// laser spot on its relay wall) delays the light it sends: drawn once per
+  /// path, for every vertex the path lights (its re-emission in
+  /// state.atLight).
+  void atLight(int32_t response, Pcg32& rng, PathState& state) const;
 
  private:
   std::vector<DelaySampler> samplers_;

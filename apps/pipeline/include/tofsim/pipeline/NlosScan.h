@@ -7,6 +7,7 @@
 
 #include <array>
 #include <cstddef>
+#include <string>
 #include <vector>
 
 #include "tofsim/capture/Imager.h"
@@ -51,6 +52,11 @@ std::vector<std::size_t> nlosPointShape(config::NlosScan scan, const std::array<
 /// Points as x, y, z floats one after another (the grids' .npy, HDF5 and
 /// NumPy layout).
 std::vector<float> flatXyz(const std::vector<glm::vec3>& points);
+
+/// The index of relay wall `wallName`'s material in scene.materials (the
+/// first mesh whose node or name it is), -1 where the scene has none: the
+/// laser spot's surface (capture::Light::surface_material).
+int32_t relayWallMaterial(const scene::Scene& scene, const std::string& wallName);
 
 /// The scan a config describes on its scene. Throws InputError at the
 /// config's key (file and line) when the wall is missing, not planar or has

@@ -1,6 +1,8 @@
 #pragma once
 // A point or spot light, or a cosine emitter, emitting one impulse at t = 0.
 
+#include <cstdint>
+
 #include <glm/glm.hpp>
 
 namespace tofsim::capture {
@@ -20,6 +22,11 @@ struct Light {
   /// Radiant intensity per channel (R, G, B), W/sr, of the impulse's energy:
   /// the transient volume integrates to radiance as if this were a CW source.
   glm::vec3 intensity_W_per_sr{1.0f};
+  /// The scene material (index into scene::Scene::materials) of the surface
+  /// the light stands on, -1 for none: an NLOS laser spot on its relay wall.
+  /// Its scattering delay is every path's first (the response classes'
+  /// start kernel, ir::responseStartOf; the reference samples it at the spot).
+  int32_t surface_material = -1;
 
   /// Fraction of the intensity emitted towards `direction` (unit): 1 for point
   /// lights, the cone profile for spots, the cosine for Lambertian lights.

@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "tofsim/capture/Light.h"
 #include "tofsim/physics/ResponseClassTable.h"
 #include "tofsim/physics/ScatterVertex.h"
 #include "tofsim/scene/Scene.h"
@@ -24,6 +25,10 @@ struct MaterialResponses {
   std::vector<int32_t> baseOfMaterial;
 };
 MaterialResponses materialResponses(const scene::Scene& scene);
+
+/// The base kernel of the surface `light` stands on (Light::surface_material;
+/// 0: none, or an instant material): the response classes' start kernel.
+uint32_t lightResponse(const MaterialResponses& responses, const capture::Light& light);
 
 /// The vertex of material `m` under model `model` (physics::VERTEX_*:
 /// vertexModelOf render.materials), before its textures, with base kernel

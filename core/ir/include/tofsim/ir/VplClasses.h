@@ -4,7 +4,9 @@
 // included, kept in Vpl::flux.w as an exact small integer (no reader of the
 // record looks at flux.w otherwise; the GL backend always uploads it). Made
 // once per VPL: a first-bounce (RSM) VPL's is single(k of its surface), a
-// later bounce's then(its parent's class, k of its surface).
+// later bounce's then(its parent's class, k of its surface). A light on a
+// delayed surface starts every path with its kernel: the table's row 0 is
+// then that kernel's class (ResponseClassTable::build's start).
 
 #include <cstdint>
 #include <vector>
@@ -16,10 +18,21 @@
 namespace tofsim::ir {
 
 /// The most delayed vertices a path of a render with indirect settings `s`
-/// meets: one per VPL bounce and the pixel's own surface (the depth of its
-/// ResponseClassTable; the config's check uses the same).
-inline int responseDepth(const capture::IndirectSettings& s) {
-  return s.enabled ? s.bounces + 1 : 1;
+/// meets: one per VPL bounce and the pixel's own surface, and the light's own
+/// surface where it delays (`start`, its base kernel: an NLOS laser spot on a
+/// delayed relay wall). The depth of its ResponseClassTable.
+inline int responseDepth(const capture::IndirectSettings& s, uint32_t start = 0) {
+  return (s.enabled ? s.bounces + 1 : 1) + (start != 0 ? 1 : 0);
+}
+
+/// The response classes of a render (IrRenderer's; the config's check builds
+/// the same): the scene's base kernels on paths of responseDepth, started by
+/// the light's kernel `start`. Throws std::invalid_argument over
+/// physics::kMaxResponseClasses.
+inline physics::ResponseClassTable responseClasses(std::vector<physics::ResponseKernel> kernels,
+                                                   const capture::IndirectSettings& s,
+                                                   uint32_t start) {
+  return physics::ResponseClassTable::build(std::move(kernels), responseDepth(s, start), start);
 }
 
 /// VPL v's class (flux.w).

@@ -53,38 +53,32 @@ struct ResponseClassTable {
   uint32_t single(uint32_t k) const { return then(0, k); }
 
   /// Every class of at most `maxDelayedVertices` delayed vertices among
-  /// `baseKernels`, in order of size, then lexicographic. Throws
-  /// std::invalid_argument over kMaxResponseClasses (the caller says which
-  /// setting to lower).
-  static ResponseClassTable build(std::vector<ResponseKernel> baseKernels,
-                                  int maxDelayedVertices) {
+  /// `baseKernels`, in order of size, then lexicographic. With a start
+  /// kernel s >= 1 (the base kernel of the surface the light stands on: an
+  /// NLOS laser spot's relay wall) every path begins with s: the table holds
+  /// class 0 and the classes {s} + m for each m of at most
+  /// `maxDelayedVertices` - 1 vertices (as many classes as a table one
+  /// vertex shallower, plus {s}), and its row 0, "from the light", is {s}'s:
+  /// single(k) is {s, k}, single(0) is {s}. Throws std::invalid_argument over
+  /// kMaxResponseClasses (the caller says which setting to lower).
+  static ResponseClassTable build(std::vector<ResponseKernel> baseKernels, int maxDelayedVertices,
+                                  uint32_t start = 0) {
     ResponseClassTable t;
     t.kernels = std::move(baseKernels);
     const auto k = static_cast<uint32_t>(t.kernels.size());
-    t.members.push_back({});
-    std::map<std::vector<uint32_t>, uint32_t> id{{{}, 0u}};
-    // Breadth first: the classes of size s + 1 from those of size s, each
-    // extended by a base id >= its last member (every multiset once).
-    std::size_t levelBegin = 0;
-    for (int size = 0; size < maxDelayedVertices && k > 0; ++size) {
-      const std::size_t levelEnd = t.members.size();
-      for (std::size_t c = levelBegin; c < levelEnd; ++c) {
-        const uint32_t from = t.members[c].empty() ? 1u : t.members[c].back();
-        for (uint32_t b = from; b <= k; ++b) {
-          std::vector<uint32_t> m = t.members[c];
-          m.push_back(b);
-          if (t.members.size() >= kMaxResponseClasses) {
-            throw std::invalid_argument(
-                std::to_string(k) + " delayed materials on paths of up to " +
-                std::to_string(maxDelayedVertices) + " delayed vertices make over " +
-                std::to_string(kMaxResponseClasses) + " response classes");
-          }
-          id.emplace(m, static_cast<uint32_t>(t.members.size()));
-          t.members.push_back(std::move(m));
-        }
-      }
-      levelBegin = levelEnd;
+    if (start > k) throw std::invalid_argument("a light's start kernel is not a base kernel");
+    const int depth = start == 0 ? maxDelayedVertices : maxDelayedVertices - 1;
+    // With a start kernel, class 0 is kept beside the classes that hold it.
+    t.members = multisets(k, depth, start == 0 ? kMaxResponseClasses : kMaxResponseClasses - 1,
+                          maxDelayedVertices);
+    if (start != 0) {
+      for (std::vector<uint32_t>& m : t.members)
+        m.insert(std::upper_bound(m.begin(), m.end(), start), start);
+      t.members.insert(t.members.begin(), std::vector<uint32_t>{});
     }
+    std::map<std::vector<uint32_t>, uint32_t> id;
+    for (std::size_t c = 0; c < t.members.size(); ++c)
+      id.emplace(t.members[c], static_cast<uint32_t>(c));
     t.compose.assign(t.members.size() * (k + 1), kNoClass);
     for (std::size_t c = 0; c < t.members.size(); ++c) {
       t.compose[c * (k + 1)] = static_cast<uint32_t>(c);
@@ -95,7 +89,42 @@ struct ResponseClassTable {
         if (found != id.end()) t.compose[c * (k + 1) + b] = found->second;
       }
     }
+    if (start != 0) {
+      // Light leaves the light already through its start kernel (class 1, {s}).
+      std::copy(t.compose.begin() + (k + 1), t.compose.begin() + 2 * (k + 1), t.compose.begin());
+    }
     return t;
+  }
+
+ private:
+  // Every multiset of at most `depth` ids among 1..k, the empty one first,
+  // in order of size, then lexicographic; over `limit` of them throws (the
+  // message names `reportedDepth` delayed vertices).
+  static std::vector<std::vector<uint32_t>> multisets(uint32_t k, int depth, std::size_t limit,
+                                                      int reportedDepth) {
+    std::vector<std::vector<uint32_t>> out{{}};
+    // Breadth first: the multisets of size s + 1 from those of size s, each
+    // extended by an id >= its last member (every multiset once).
+    std::size_t levelBegin = 0;
+    for (int size = 0; size < depth && k > 0; ++size) {
+      const std::size_t levelEnd = out.size();
+      for (std::size_t c = levelBegin; c < levelEnd; ++c) {
+        const uint32_t from = out[c].empty() ? 1u : out[c].back();
+        for (uint32_t b = from; b <= k; ++b) {
+          std::vector<uint32_t> m = out[c];
+          m.push_back(b);
+          if (out.size() >= limit) {
+            throw std::invalid_argument(
+                std::to_string(k) + " delayed materials on paths of up to " +
+                std::to_string(reportedDepth) + " delayed vertices make over " +
+                std::to_string(kMaxResponseClasses) + " response classes");
+          }
+          out.push_back(std::move(m));
+        }
+      }
+      levelBegin = levelEnd;
+    }
+    return out;
   }
 };
 
