@@ -9,7 +9,10 @@
 
 namespace tofsim::physics {
 
+using glm::atan;
+using glm::ceil;
 using glm::exp;
+using glm::tan;
 
 #define TOFSIM_PHYSICS_FN inline
 #include "medium.glsl"
