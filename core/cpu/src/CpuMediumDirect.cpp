@@ -4,7 +4,8 @@
 // shaders/medium.glsl's quadrature; the light's visibility at each node is a
 // shadow ray, as the direct gather's. Direct light (one scattering event),
 // added after the surfaces' into the same histograms and off-axis sums, each
-// pixel by one thread. shaders/medium_direct.comp is the GL twin.
+// pixel by one thread. shaders/medium_direct.comp is the GL twin; the
+// physics and its accuracy: core/physics/medium_single_scattering.md.
 #include <algorithm>
 #include <optional>
 
