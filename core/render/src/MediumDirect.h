@@ -4,7 +4,7 @@
 // time bin (shaders/medium_direct.comp, by shaders/medium.glsl's
 // quadrature), added to the segment's direct light after direct_gather.comp.
 // Made only for a job whose medium is present: without one the GL backend
-// runs what it ran before.
+// runs what it ran before. The physics: core/physics/medium_single_scattering.md.
 
 #include <cstddef>
 
