@@ -23,6 +23,7 @@ namespace tofsim::cpu {
 void CpuBackend::gatherDirect() {
   const std::size_t tiles = (pixelCount_ + kTilePixels - 1) / kTilePixels;
   parallelFor(tiles, threads_, [&](std::size_t tile) { gatherDirectTile(tile); });
+  if (job_.settings.medium.present()) gatherMediumDirect();
 }
 
 /// What the light, the time axis and the job fix for every direct sample of

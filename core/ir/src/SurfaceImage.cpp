@@ -58,19 +58,12 @@ void traceInto(SurfaceImage& image, const rays::RayScene& scene, const capture::
       const std::size_t p = row * image.width + x;
       const int32_t n = image.side[p];
       for (std::size_t e = 0; e < image.samplesOf(p); ++e) {
-        const std::size_t s = e / k;  // the sub-pixel
-        const auto sx = static_cast<float>(s % n), sy = static_cast<float>(s / n);
-        const glm::vec2 offset((sx + 0.5f) / n - 0.5f, (sy + 0.5f) / n - 0.5f);
-        capture::PrimaryRay ray = n == 1 ? rays.ray(x, y) : rays.ray(x, y, offset);
+        const capture::ApertureRay through =
+            sampleRay(rays, lens ? &*lens : nullptr, x, y, n, k, e);
+        const capture::PrimaryRay& ray = through.ray;
         const std::size_t i = image.firstSample[p] + e;
-        if (lens) {
-          const capture::ApertureRay through =
-              lens->through(ray, capture::aperturePoint(static_cast<int32_t>(e % k), k));
-          ray = through.ray;
-          image.aperture[i] = glm::vec4(ray.origin, through.lensPath_m);
-        } else if (!image.aperture.empty()) {
-          image.aperture[i] = glm::vec4(ray.origin, 0.0f);  // no lens after it
-        }
+        // Without a lens, no lens path after the origin.
+        if (!image.aperture.empty()) image.aperture[i] = glm::vec4(ray.origin, through.lensPath_m);
         const auto hit = scene.intersect(ray.origin, ray.direction);
         if (!hit) continue;
         image.position[i] = glm::vec4(hit->position_world, 1.0f);
@@ -83,6 +76,19 @@ void traceInto(SurfaceImage& image, const rays::RayScene& scene, const capture::
 }
 
 }  // namespace
+
+capture::ApertureRay sampleRay(const capture::PrimaryRays& rays, const capture::ThinLens* lens,
+                               int32_t x, int32_t y, int32_t side, int32_t apertureSamples,
+                               std::size_t e) {
+  const std::size_t s = e / static_cast<std::size_t>(apertureSamples);  // the sub-pixel
+  const int32_t n = side;
+  const auto sx = static_cast<float>(s % n), sy = static_cast<float>(s / n);
+  const glm::vec2 offset((sx + 0.5f) / n - 0.5f, (sy + 0.5f) / n - 0.5f);
+  const capture::PrimaryRay ray = n == 1 ? rays.ray(x, y) : rays.ray(x, y, offset);
+  if (lens == nullptr) return {ray, 0.0f};
+  return lens->through(
+      ray, capture::aperturePoint(static_cast<int32_t>(e % apertureSamples), apertureSamples));
+}
 
 SurfaceImage traceSurfaces(const rays::RayScene& scene, const capture::Imager& imager, int threads,
                            int32_t samplesPerSide, int32_t apertureSamples, int vertexModel) {

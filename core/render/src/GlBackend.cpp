@@ -8,6 +8,7 @@
 #include "IndirectLight.h"
 #include "LightShadowMap.h"
 #include "LightUniforms.h"
+#include "MediumDirect.h"
 #include "MediumUniforms.h"
 #include "PixelFootprint.h"
 #include "SampleBuffers.h"
@@ -200,6 +201,7 @@ struct GlBackend::Passes {
   LightShadowMap shadowMap;
   gl::Program directGather;
   std::unique_ptr<IndirectLight> indirectLight;  ///< null without VPLs
+  std::unique_ptr<MediumDirect> mediumDirect;    ///< null without a medium
   gl::Buffer directVolume, indirectVolume;
   gl::Buffer outsideAxis;                     ///< per pixel: light before the axis, light after it
   std::unique_ptr<PixelFootprint> footprint;  ///< null without render.pixel_footprint
@@ -288,6 +290,9 @@ ir::CentreSurfaces GlBackend::prepareSurfaces(const RenderJob& job) {
   setLightUniforms(p.directGather, job.light);
   p.shadowMap.bind(p.directGather);
   configureGather(p.directGather, job);
+  if (job.settings.medium.present()) {
+    p.mediumDirect = std::make_unique<MediumDirect>(job, p.foldModel);
+  }
   return surfaces;
 }
 
@@ -385,6 +390,7 @@ std::size_t GlBackend::fixedBytes() const {
                       p.shadowMap.bytes() + p.sampledPixels.size() + p.pixelRaySteps.size() +
                       p.vertexTable.size() + p.sampleCameraEnds.size() +
                       p.responseClasses.bytes();
+  if (p.mediumDirect) bytes += p.mediumDirect->bytes();
   if (p.indirectLight) bytes += p.indirectLight->fixedBytes();
   return bytes;
 }
@@ -463,6 +469,7 @@ void GlBackend::gatherDirect() {
   // The wide kernels' buffer into the direct volume; it is then the indirect
   // gathers'.
   if (p.footprint) p.footprint->integrateInto(p.directVolume, p.segmentPixels);
+  if (p.mediumDirect) p.mediumDirect->gather(p.shadowMap, p.firstPixel, p.segmentPixels);
   TOFSIM_GL_CHECK("direct gather");
 }
 

@@ -47,6 +47,7 @@ enum StorageBinding : uint32_t {
   kScatterVertices,  ///< the G-buffers' vertices by index: the materials', then given samples'
   kSampleCameraEnds,  ///< vec4 per given sample: its camera end, lens path (SAMPLE_CAMERA_ENDS)
   kResponseCompose,   ///< the response classes' compose table, uint (GatherResponseClasses)
+  kMediumRays,        ///< vec4 per sample: its ray direction (medium_direct.comp, issue 42)
 };
 
 /// Texture units (TOFSIM_UNIT_...).

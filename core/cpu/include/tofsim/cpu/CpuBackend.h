@@ -108,6 +108,9 @@ class CpuBackend : public ir::IrBackend {
   /// does not reach it (outside its cone or shadowed). Inline (and always
   /// inlined, in CpuBackend.cpp): it runs per sample.
   inline bool directLight(const DirectConstants& c, std::size_t sample, DirectLight& out) const;
+  /// The medium's single scattering along every sample's camera ray into
+  /// direct_ (CpuMediumDirect.cpp): with a medium only.
+  void gatherMediumDirect();
   /// VPLs [firstVpl, + count) into indirect_ for the segment's pixels in `tile`.
   void gatherTile(std::size_t tile, std::size_t firstVpl, std::size_t count);
   IndirectConstants indirectConstants() const;

@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "tofsim/capture/Imager.h"
+#include "tofsim/capture/ThinLens.h"
 #include "tofsim/ir/IrBackend.h"
 
 namespace tofsim::rays {
@@ -59,6 +60,15 @@ struct SurfaceImage {
   }
   float lensPathOf(std::size_t i) const { return aperture.empty() ? 0.0f : aperture[i].w; }
 };
+
+/// The ray traceSurfaces traces for entry e of pixel (x, y), a pixel of
+/// `side` x `side` sub-pixels each through `apertureSamples` points of
+/// `lens` (null: one, the chief rays), with the lens's path after its origin
+/// (0 without a lens). The medium's passes (issue 42) follow it where it
+/// meets no surface.
+capture::ApertureRay sampleRay(const capture::PrimaryRays& rays, const capture::ThinLens* lens,
+                               int32_t x, int32_t y, int32_t side, int32_t apertureSamples,
+                               std::size_t e);
 
 /// The imager's G-buffer: pixel (x, y), row 0 at the top, along its primary
 /// ray (capture::PrimaryRays; a pinhole's Camera::pixelDirection); with samplesPerSide N > 1, N x N

@@ -10,10 +10,13 @@
 namespace tofsim::physics {
 
 using glm::abs;
+using glm::atan;
+using glm::ceil;
 using glm::cos;
 using glm::exp;
 using glm::pow;
 using glm::sin;
+using glm::tan;
 
 #define TOFSIM_PHYSICS_FN inline
 #include "medium.glsl"
