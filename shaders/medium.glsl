@@ -80,6 +80,7 @@ TOFSIM_PHYSICS_FN vec3 samplePhaseDirection(int model, float g, vec3 forward, fl
   float sinTheta = sqrt(max(0.0f, 1.0f - mu * mu));
   float phi = 2.0f * PI * u2;
   return basisAround(forward) * vec3(sinTheta * cos(phi), sinTheta * sin(phi), mu);
+}
 
 // ---------------------------------------------------------------------------
 // Single scattering of the light along a camera ray (issue 42, item 3): the
