@@ -102,8 +102,9 @@ void SpadImages::finish(std::vector<SensorOutput>& outputs) {
   outputs.push_back(spadImage("spad_intensity", H, W, std::move(intensity_), "counts",
                               "SPAD total counts per pixel"));
   outputs.push_back(spadImage("spad_confidence", H, W, std::move(confidence_), "-",
-                              "SPAD detection confidence (background alone gives a smaller "
-                              "matched-filter maximum with this probability)"));
+                              "SPAD detection confidence (background alone gives every "
+                              "kernel-length window fewer counts than this pixel's fullest "
+                              "with this probability; Poisson scan test)"));
   for (std::size_t i = first; i < first + 5; ++i) {
     SensorOutput png = outputs[i];
     png.kind = SensorOutput::Kind::ColorMappedImage;
