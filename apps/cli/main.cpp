@@ -14,6 +14,7 @@
 #include "tofsim/pipeline/CompareRun.h"
 #include "tofsim/pipeline/ExitCode.h"
 #include "tofsim/pipeline/OutputEstimate.h"
+#include "tofsim/pipeline/PresetList.h"
 #include "tofsim/pipeline/RenderRun.h"
 #include "tofsim/pipeline/RunContentKey.h"
 #include "tofsim/pipeline/SceneInfo.h"
@@ -121,17 +122,22 @@ int runInfoCommand(const std::string& scenePath) {
   return 0;
 }
 
+int runPresetsCommand(const std::string& name) {
+  std::fputs(pipeline::describePresets(name).c_str(), stdout);
+  return 0;
+}
+
 // Every option of every subcommand: CLI11 writes into these.
 struct Args {
   std::string configPath, outputDir, platform, volumeDir, renderer, backend, dirA, dirB;
-  std::string batchRun, shard, scenePath;
+  std::string batchRun, shard, scenePath, presetName;
   std::vector<std::string> sets;
   bool quiet = false, strict = false, dryRun = false, verify = false;
   int jobs = 1;
 };
 
 struct Commands {
-  CLI::App *render, *sense, *compare, *validate, *batch, *info;
+  CLI::App *render, *sense, *compare, *validate, *batch, *info, *presets;
 };
 
 const char* kStrictHelp =
@@ -219,6 +225,19 @@ CLI::App* addInfo(CLI::App& app, Args& a) {
   return info;
 }
 
+CLI::App* addPresets(CLI::App& app, Args& a) {
+  CLI::App* presets = app.add_subcommand(
+      "presets", "List the device presets (SPAD, CW-ToF): the values each sets and their sources");
+  presets->add_option("name", a.presetName, "Only this preset");
+  return presets;
+}
+
+// Under every help: where the docs and a first config are.
+const char* kDocsFooter =
+    "Docs: README.md (quick start, outputs), configs/README.md (every config key),\n"
+    "sensors/README.md (sensor models). A first run:\n"
+    "  tofsim render configs/cornell_box.yaml -o out/cornell_box";
+
 // The one subcommand parsed.
 int dispatch(const Commands& c, const Args& a) {
   if (c.render->parsed()) {
@@ -233,6 +252,7 @@ int dispatch(const Commands& c, const Args& a) {
     return runBatchCommand(a.configPath, a.sets, a.jobs, a.shard, a.dryRun, a.verify, a.quiet);
   }
   if (c.info->parsed()) return runInfoCommand(a.scenePath);
+  if (c.presets->parsed()) return runPresetsCommand(a.presetName);
   return 2;
 }
 
@@ -244,7 +264,10 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   Args args;
   const Commands commands{addRender(app, args),   addSense(app, args), addCompare(app, args),
-                          addValidate(app, args), addBatch(app, args), addInfo(app, args)};
+                          addValidate(app, args), addBatch(app, args), addInfo(app, args),
+                          addPresets(app, args)};
+  app.footer(kDocsFooter);
+  for (CLI::App* sub : app.get_subcommands({})) sub->footer(kDocsFooter);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

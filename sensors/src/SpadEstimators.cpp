@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "KernelCorrelation.h"
+#include "PoissonTail.h"
 #include "tofsim/util/Error.h"
 
 namespace tofsim::sensors {
@@ -35,6 +36,51 @@ SpadEstimator::SpadEstimator(const BinKernel& kernel, const TimeAxis& axis, doub
 double SpadEstimator::depthOf_m(int32_t arrivalBin, double offset) const {
   // An arrival in bin tau is spread over that bin (the resampled energy).
   return axis_.depthOf_m(axis_.start_s + (arrivalBin + 0.5 + offset) * axis_.bin_width_s);
+}
+
+double SpadEstimator::confidence(const std::vector<double>& h, double total) const {
+  // A scan test: the counts n of the pixel's fullest window of W bins (the
+  // kernel's length, where a return's counts fall) against Poisson(W B), B
+  // the background per bin estimated from the bins outside that window (so
+  // that the return itself does not lift it; the median is 0 at the low
+  // rates of dark counts and ambient light, which made every dark count look
+  // like a return). One more count than seen outside keeps B above 0 where
+  // none was (a single dark count is then no return). The W-bin windows
+  // start at M = K - W + 1 places: confidence = P(n' < n)^M, the probability
+  // that background alone gives each window fewer counts (independent
+  // windows: it lies below the exact law of the maximum, so that background
+  // alone gives P(confidence > c) <= 1 - c, a median <= 1/2).
+  const int32_t K = axis_.bins;
+  const int32_t W = std::min(static_cast<int32_t>(kernel_.weights.size()), K);
+  double window = 0.0;
+  for (int32_t i = 0; i < W; ++i) window += h[i];
+  double fullest = window;
+  int32_t fullestAt = 0;
+  for (int32_t i = W; i < K; ++i) {
+    window += h[i] - h[i - W];
+    if (window > fullest) {
+      fullest = window;
+      fullestAt = i - W + 1;
+    }
+  }
+  const double outside = std::max(total - fullest, 0.0);
+  const double background = (outside + 1.0) / std::max(K - W, 1);
+  // Quasi-Poisson: N x Coates' flux is over-dispersed (a late bin's estimate
+  // has variance mean / P(reaching it)), and afterpulses and crosstalk come
+  // in bunches; the bins outside the window give the dispersion D =
+  // variance / mean (>= 1), and counts and mean are divided by it.
+  double squares = 0.0;
+  int32_t outsideBins = 0;
+  for (int32_t i = 0; i < K; ++i) {
+    if (i >= fullestAt && i < fullestAt + W) continue;
+    squares += (h[i] - background) * (h[i] - background);
+    ++outsideBins;
+  }
+  const double dispersion =
+      outsideBins > 1 ? std::max(1.0, squares / (outsideBins - 1) / background) : 1.0;
+  const detail::PoissonTail tail =
+      detail::poissonTail(fullest / dispersion, W * background / dispersion);
+  return std::exp(static_cast<double>(K - W + 1) * tail.logNotTail);
 }
 
 SpadEstimates SpadEstimator::estimate(const std::vector<double>& h, Scratch& s) const {
@@ -79,9 +125,7 @@ SpadEstimates SpadEstimator::estimate(const std::vector<double>& h, Scratch& s) 
   // sigmas above the background's B sum k = B.
   const double sigma = std::sqrt(std::max(background, 1.0) * kernelSquares_);
   const double threshold = background + thresholdSigma_ * sigma;
-  double zMax = -std::numeric_limits<double>::infinity();
   for (int32_t i = 0; i < K;) {
-    zMax = std::max(zMax, (s.response[i] - background) / sigma);
     if (s.response[i] < threshold) {
       ++i;
       continue;
@@ -93,7 +137,6 @@ SpadEstimates SpadEstimator::estimate(const std::vector<double>& h, Scratch& s) 
       if (s.response[j] >= threshold) end = j + 1;
     }
     const int32_t peak = peakOf(s.response, i, end);
-    for (int32_t j = i; j < end; ++j) zMax = std::max(zMax, (s.response[j] - background) / sigma);
     SpadReturn r;
     r.depth_m = depthOf_m(
         peak, parabolaOffset(at(s.response, peak - 1), s.response[peak], at(s.response, peak + 1)));
@@ -104,9 +147,7 @@ SpadEstimates SpadEstimator::estimate(const std::vector<double>& h, Scratch& s) 
     ++e.returns;
     i = end;
   }
-  // P(max of K background-only z < zMax) = Phi(zMax)^K.
-  const double tail = 0.5 * std::erfc(zMax / std::sqrt(2.0));
-  e.confidence = tail >= 1.0 ? 0.0 : std::exp(K * std::log1p(-tail));
+  e.confidence = confidence(h, total);
   return e;
 }
 

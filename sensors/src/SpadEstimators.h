@@ -31,8 +31,10 @@ struct SpadEstimates {
   double matched_depth_m = std::numeric_limits<double>::quiet_NaN();
   SpadReturn first, strongest, last;  ///< among the returns above the threshold
   int32_t returns = 0;                ///< how many
-  /// Probability that background alone gives a smaller matched-filter maximum
-  /// than this pixel's: Phi(z_max)^K over K bins (normal approximation).
+  /// Detection confidence in [0, 1]: P(n' < n)^M, n the counts of the
+  /// fullest window of the kernel's length W, n' ~ Poisson(W B) with B the
+  /// background per bin outside it, M = K - W + 1 windows. Background alone
+  /// gives P(confidence > c) <= 1 - c; a clear return gives ~1.
   double confidence = 0.0;
 };
 
@@ -54,6 +56,7 @@ class SpadEstimator {
 
  private:
   double depthOf_m(int32_t arrivalBin, double offset) const;
+  double confidence(const std::vector<double>& h, double total) const;
 
   BinKernel kernel_;
   TimeAxis axis_;

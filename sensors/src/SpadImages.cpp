@@ -87,7 +87,9 @@ SensorOutput SpadImages::depthImage(const std::string& name, std::vector<float> 
 void SpadImages::finish(std::vector<SensorOutput>& outputs) {
   const int32_t H = height_, W = width_;
   const std::size_t first = outputs.size();
-  const SensorOutput::PointCloud totals{"spad_intensity", "spad_confidence"};
+  // Only pixels with a detected return are points: the peak and the matched
+  // filter give a depth even for noise alone.
+  const SensorOutput::PointCloud totals{"spad_intensity", "spad_confidence", "spad_returns"};
   outputs.push_back(depthImage("spad_depth_peak", std::move(depthPeak_),
                                "SPAD depth from the histogram peak (c t / 2)", totals));
   outputs.push_back(depthImage("spad_depth_coates", std::move(depthCoates_),
@@ -100,8 +102,9 @@ void SpadImages::finish(std::vector<SensorOutput>& outputs) {
   outputs.push_back(spadImage("spad_intensity", H, W, std::move(intensity_), "counts",
                               "SPAD total counts per pixel"));
   outputs.push_back(spadImage("spad_confidence", H, W, std::move(confidence_), "-",
-                              "SPAD detection confidence (background alone gives a smaller "
-                              "matched-filter maximum with this probability)"));
+                              "SPAD detection confidence (background alone gives every "
+                              "kernel-length window fewer counts than this pixel's fullest "
+                              "with this probability; Poisson scan test)"));
   for (std::size_t i = first; i < first + 5; ++i) {
     SensorOutput png = outputs[i];
     png.kind = SensorOutput::Kind::ColorMappedImage;
@@ -114,7 +117,7 @@ void SpadImages::finish(std::vector<SensorOutput>& outputs) {
     const std::string which = kReturnNames[r];
     outputs.push_back(depthImage("spad_depth_" + which, std::move(returnDepth_[r]),
                                  "SPAD depth of the " + which + " return (NaN: none)",
-                                 {"spad_intensity_" + which, "spad_confidence"}));
+                                 {"spad_intensity_" + which, "spad_confidence", "spad_returns"}));
     outputs.push_back(spadImage("spad_intensity_" + which, H, W, std::move(returnIntensity_[r]),
                                 "counts", "SPAD signal counts of the " + which + " return"));
   }

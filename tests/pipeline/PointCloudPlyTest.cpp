@@ -173,4 +173,39 @@ TEST(PointCloudPlyTest, SensorWriterMakesOnePerDepthOutput) {
 }
 
 }  // namespace
+// A pixel without a detected return (spad_returns 0, the cloud's mask) is no
+// point, though the estimators gave it a finite depth; the others keep theirs.
+TEST(PointCloudPlyTest, NoPointWhereNoReturnWasDetected) {
+  const capture::Camera camera = testCamera();
+  sensors::SensorSpec spec;
+  spec.name = "spad";
+  spec.params = sensors::SpadParams{};
+  TimeAxis axis;
+  axis.bin_width_s = 1e-11;
+  axis.bins = 10;
+  SensorRunInfo run{&spec, axis, 1, {}, &camera};
+  sensors::SensorOutput depth;
+  depth.name = "spad_depth_peak";
+  depth.kind = sensors::SensorOutput::Kind::Image;
+  depth.shape = {3, 4};
+  depth.axes = {"y", "x"};
+  depth.unit = "m";
+  depth.data.assign(12, 2.0f);
+  depth.point_cloud =
+      sensors::SensorOutput::PointCloud{"spad_intensity", "spad_confidence", "spad_returns"};
+  sensors::SensorOutput returns = depth;
+  returns.name = "spad_returns";
+  returns.point_cloud.reset();
+  returns.data.assign(12, 1.0f);
+  returns.data[5] = 0.0f;  // (y 1, x 1): noise alone
+  returns.data[11] = 0.0f;
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "tofsim_ply_mask";
+  std::filesystem::remove_all(dir);
+  PlotRanges ranges({});
+  writeSensorOutputs(dir, {depth, returns}, run, ranges);
+  const Ply ply = readPly(dir / "spad_depth_peak.ply");
+  EXPECT_EQ(ply.vertices, 10u);
+  std::filesystem::remove_all(dir);
+}
+
 }  // namespace tofsim::pipeline

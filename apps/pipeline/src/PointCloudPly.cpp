@@ -34,7 +34,7 @@ std::size_t writePointCloudPly(const std::filesystem::path& path, const PointClo
   TOFSIM_CHECK(images.depth_m != nullptr);
   const Image& depth = *images.depth_m;
   TOFSIM_CHECK(depth.channels == 1 && depth.width == camera.width && depth.height == camera.height);
-  for (const Image* other : {images.intensity, images.confidence}) {
+  for (const Image* other : {images.intensity, images.confidence, images.mask}) {
     TOFSIM_CHECK(!other || (other->width == depth.width && other->height == depth.height &&
                             other->channels == 1));
   }
@@ -46,7 +46,7 @@ std::size_t writePointCloudPly(const std::filesystem::path& path, const PointClo
   for (int32_t y = 0; y < depth.height; ++y) {
     for (int32_t x = 0; x < depth.width; ++x) {
       const double d = depth.at(y, x, 0);
-      if (!std::isfinite(d)) continue;
+      if (!std::isfinite(d) || (images.mask && images.mask->at(y, x, 0) == 0.0f)) continue;
       const glm::dvec3 dir(rays.direction(x, y));
       const glm::dvec3 world = origin + d * dir;
       const glm::dvec3 cam(d * glm::dot(dir, right), d * glm::dot(dir, down),

@@ -82,7 +82,9 @@ void writePointCloud(const std::filesystem::path& path, const SensorOutput& o, c
                      const std::vector<SensorOutput>& outputs, const capture::Camera& camera) {
   const std::optional<Image> intensity = companion(outputs, o.point_cloud->intensity);
   const std::optional<Image> confidence = companion(outputs, o.point_cloud->confidence);
+  const std::optional<Image> mask = companion(outputs, o.point_cloud->mask);
   PointCloudImages images;
+  images.mask = mask ? &*mask : nullptr;
   images.depth_m = &depth;
   images.intensity = intensity ? &*intensity : nullptr;
   images.confidence = confidence ? &*confidence : nullptr;

@@ -51,10 +51,13 @@ struct SensorOutput {
   /// Image only: the values are depths in m along each pixel's ray (NaN: no
   /// depth), and the writer also makes the point cloud `<name>.ply`, each
   /// point with the values of the Images named here (same shape) as its
-  /// intensity and confidence (apps/pipeline, PointCloudPly.h).
+  /// intensity and confidence (apps/pipeline, PointCloudPly.h); `mask`
+  /// (empty: none) names an Image whose 0 pixels get no point (the SPAD's
+  /// spad_returns: no return detected, though the estimator gives a depth).
   struct PointCloud {
     std::string intensity;
     std::string confidence;
+    std::string mask;
   };
   std::optional<PointCloud> point_cloud;
 

@@ -1,6 +1,6 @@
 #pragma once
 // A depth image as a point cloud: binary little-endian PLY 1.0, one vertex
-// per pixel with a finite depth, as Open3D, CloudCompare and PCL read it.
+// per pixel with a finite depth (and a non-zero mask, if given), as Open3D, CloudCompare and PCL read it.
 // Properties, all float32: x, y, z (world frame, m: camera position + depth
 // along the pixel's ray), cam_x, cam_y, cam_z (camera frame, m: x right,
 // y down, z forward, OpenCV's convention), intensity and confidence (the
@@ -19,6 +19,7 @@ struct PointCloudImages {
   const Image* intensity = nullptr;   ///< same size; nullptr: 0
   const Image* confidence = nullptr;  ///< same size; nullptr: 1
   std::string comment;                ///< one line, written as a PLY comment
+  const Image* mask = nullptr;        ///< same size; 0: no point; nullptr: every finite depth
 };
 
 /// Writes `path`; returns the number of points.
