@@ -36,9 +36,12 @@ int32_t intElement(const ConfigNode& e) {
 SensorCommon parseCommon(const ConfigNode& n) {
   SensorCommon c;
   // `channel` or `channel_weights`: one choice of two keys, by hand.
-  const long long channel = n.getInt("channel", 0);
-  if (channel < 0) n.failKey("channel", "must be >= 0 (got " + std::to_string(channel) + ")");
-  c.channel.index = static_cast<int32_t>(channel);
+  // Neither given: the sum of the channels (ChannelSelection's default).
+  if (n.has("channel")) {
+    const long long channel = n.getInt("channel", 0);
+    if (channel < 0) n.failKey("channel", "must be >= 0 (got " + std::to_string(channel) + ")");
+    c.channel.index = static_cast<int32_t>(channel);
+  }
   if (auto w = n.optionalChild("channel_weights")) {
     for (const ConfigNode& e : w->elements()) c.channel.weights.push_back(e.asDouble());
     if (c.channel.weights.empty()) w->fail("must list one weight per volume channel");
