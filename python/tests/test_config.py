@@ -63,7 +63,7 @@ def test_a_bad_value_in_a_file_names_the_file_and_line(tmp_path, plane_config):
     with pytest.raises(tofsim.ConfigError) as e:
         tofsim.load_config(str(path))
     assert (e.value.file, e.value.line, e.value.key) == (str(path), 5, "render.renderr")
-    assert e.value.message == "unknown key"
+    assert e.value.message == "unknown key (did you mean 'renderer'?)"
 
 
 def test_an_override_is_named_as_the_source(plane_config):

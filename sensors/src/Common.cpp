@@ -43,7 +43,8 @@ void checkChannelSelection(const ChannelSelection& channel, int32_t c) {
       throw InputError("sensor channel_weights has " + std::to_string(channel.weights.size()) +
                        " weights but the volume has " + std::to_string(c) + " channels");
     }
-  } else if (channel.index < 0 || channel.index >= c) {
+  } else if (channel.index != ChannelSelection::kSumOfChannels &&
+             (channel.index < 0 || channel.index >= c)) {
     throw InputError("sensor channel " + std::to_string(channel.index) +
                      " is out of range: the volume has " + std::to_string(c) + " channels");
   }
@@ -62,7 +63,9 @@ void pixelSignal(const float* p, int32_t T, int32_t C, const SensorCommon& commo
   const auto& w = common.channel.weights;
   for (int32_t t = 0; t < T; ++t) {
     double v = 0.0;
-    if (w.empty()) {
+    if (w.empty() && common.channel.index == ChannelSelection::kSumOfChannels) {
+      for (int32_t c = 0; c < C; ++c) v += p[static_cast<std::size_t>(t) * C + c];
+    } else if (w.empty()) {
       v = p[static_cast<std::size_t>(t) * C + common.channel.index];
     } else {
       for (int32_t c = 0; c < C; ++c) v += w[c] * p[static_cast<std::size_t>(t) * C + c];

@@ -86,6 +86,23 @@ std::vector<std::string> SensorType<SpadParams>::warnings(const SpadParams& p,
                                                           const VolumeShape& shape, const Image*) {
   const TimeAxis& render = shape.axis;
   std::vector<std::string> out;
+  const auto ps = [](double s) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.6g ps", s * 1e12);
+    return std::string(text);
+  };
+  // A render bin's light is spread evenly over the TDC bins it covers
+  // (resampleEnergy), so bins coarser than the TDC's draw flat steps, the
+  // render's width each, where the instrument would resolve the pulse.
+  const double tdcWidth = resolveBins(p.bins, render).bin_width_s;
+  if (render.bin_width_s > tdcWidth * (1.0 + 1e-9)) {
+    char ratio[32];
+    std::snprintf(ratio, sizeof ratio, "%.3g", render.bin_width_s / tdcWidth);
+    out.push_back(
+        "the render's bins (" + ps(render.bin_width_s) + ") are coarser than the TDC's (" +
+        ps(tdcWidth) + "): the histogram shows flat steps " + ratio +
+        " TDC bins wide; render with time.bin_width <= " + ps(tdcWidth) + " to resolve them");
+  }
   if (p.irf.present()) {
     // The part of the response the window cannot hold is folded back into it
     // (convolveConserving), so the histogram's shape misleads.
@@ -93,11 +110,6 @@ std::vector<std::string> SensorType<SpadParams>::warnings(const SpadParams& p,
     const double irfWidth = static_cast<double>(p.irf.values.size()) * p.irf.sample_width_s;
     const double window = axis.bins * axis.bin_width_s;
     if (irfWidth > window) {
-      const auto ps = [](double s) {
-        char text[32];
-        std::snprintf(text, sizeof text, "%.6g ps", s * 1e12);
-        return std::string(text);
-      };
       out.push_back("the IRF spans " + ps(irfWidth) + ", wider than the TDC window of " +
                     ps(window) + ": light it moves outside the window is folded back in (" +
                     p.irf.file + ")");

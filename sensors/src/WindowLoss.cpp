@@ -14,7 +14,8 @@ namespace {
 
 bool selectionFits(const ChannelSelection& channel, int32_t channels) {
   if (!channel.weights.empty()) return static_cast<int32_t>(channel.weights.size()) == channels;
-  return channel.index >= 0 && channel.index < channels;
+  return channel.index == ChannelSelection::kSumOfChannels ||
+         (channel.index >= 0 && channel.index < channels);
 }
 
 double meterWholeVolume(std::optional<InstrumentWindow> window, const TransientVolume& volume) {

@@ -176,3 +176,26 @@ TEST(SensorConfigTest, EffectiveConfigRoundTrips) {
 
 }  // namespace
 }  // namespace tofsim::config
+
+namespace tofsim::config {
+namespace {
+// Neither `channel` nor `channel_weights`: the sum of the channels, kept so
+// through the effective config; `channel: 0` still picks the red channel.
+TEST(SensorConfigTest, NoChannelKeyMeansTheSumOfTheChannels) {
+  const auto specs =
+      parse("sensors:\n  - type: spad\n  - type: spad\n    name: red\n    channel: 0\n");
+  const auto& sum = std::get<SpadParams>(specs[0].params).common.channel;
+  EXPECT_TRUE(sum.weights.empty());
+  EXPECT_EQ(sum.index, ChannelSelection::kSumOfChannels);
+  EXPECT_EQ(std::get<SpadParams>(specs[1].params).common.channel.index, 0);
+  YAML::Node doc;
+  doc["sensors"] = sensorsToYaml(specs);
+  const auto again = parse(YAML::Dump(doc));
+  EXPECT_EQ(std::get<SpadParams>(again[0].params).common.channel.index,
+            ChannelSelection::kSumOfChannels);
+  EXPECT_EQ(std::get<SpadParams>(again[1].params).common.channel.index, 0);
+  EXPECT_NE(errorOf("sensors:\n  - type: spad\n    channel: -1\n").find("must be >= 0"),
+            std::string::npos);
+}
+}  // namespace
+}  // namespace tofsim::config

@@ -34,7 +34,7 @@ TEST(SensorFieldsTest, DocumentedDefaultsReadBackAsTheStructDefaults) {
       "spad.preset",       "spad.tdc_dnl",     "spad.dark_count_map",
       "cwtof.correlation", "cwtof.delay_map",  "cwtof.gain_map",
       "cwtof.offset_map",  "cwtof.companding", "cwtof.capture_order",
-      "cwtof.noise_table", "cwtof.preset"};
+      "cwtof.noise_table", "cwtof.preset",     "common.channel"};
   const std::set<std::string> words = {"spad.afterpulse_weights"};  // "equal"
   // A file whose default is its absence ("none (exponentials)").
   const std::set<std::string> files = {"spad.afterpulse_delay_table"};

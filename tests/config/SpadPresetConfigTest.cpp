@@ -39,6 +39,20 @@ TEST_F(SpadPresetConfigTest, PresetsGiveTheirCitedNumbers) {
   EXPECT_DOUBLE_EQ(array.bins.bin_width_s, 17e-12);     // gate shift [SPAD512S]
   EXPECT_DOUBLE_EQ(array.pde, 0.5);                     // PDP > 50 % [SPAD512S]
   EXPECT_DOUBLE_EQ(array.dark_count_rate_per_s, 25.0);  // DCR < 25 cps [SPAD512S]
+  // Timing not published for the array: assumed, and listed as such (a note,
+  // no source), not left at 0 (a sharper histogram than any capture).
+  EXPECT_DOUBLE_EQ(array.pulse_fwhm_s, 30e-12);    // y-tal's default laser [TAL13]
+  EXPECT_DOUBLE_EQ(array.jitter_fwhm_s, 100e-12);  // inside 50-500 ps [MH150]
+  for (const SpadPresetValue& v : findSpadPreset("spad512s")->values) {
+    const std::string key = v.key;
+    if (key == "pulse_fwhm" || key == "jitter_fwhm") {
+      EXPECT_EQ(v.source, nullptr) << key;
+      EXPECT_NE(v.note, nullptr) << key;
+    }
+  }
+  std::set<std::string> listed;
+  for (const SpadPresetValue& v : findSpadPreset("spad512s")->values) listed.insert(v.key);
+  EXPECT_TRUE(listed.count("pulse_fwhm") && listed.count("jitter_fwhm"));
   const SpadParams flash = parse("    preset: flash-lidar-fbk256\n");
   EXPECT_DOUBLE_EQ(flash.bins.bin_width_s, 250e-12);  // [FBK256]
   EXPECT_DOUBLE_EQ(flash.pde, 0.28);                  // IMX611's, listed as assumed

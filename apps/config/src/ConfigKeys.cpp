@@ -92,8 +92,8 @@ const ConfigKey kSensorEntryKeys[] = {
      "`streak`, `spad` or `cwtof`"},
     {"common.name", "string", "", "the type", "-",
      "label of this sensor"},
-    {"common.channel", "int", "", "0", "-",
-     "volume channel used when `channel_weights` is absent"},
+    {"common.channel", "int", ">= 0", "none", "-",
+     "the one volume channel seen; with neither this nor `channel_weights` the sensor sees the sum of the channels (as `[1, 1, 1]`)"},
     {"common.channel_weights", "list of numbers", "", "none", "-",
      "weighted sum of the channels instead (one weight per channel)"},
 };

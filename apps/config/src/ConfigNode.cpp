@@ -1,11 +1,13 @@
 #include "ConfigNode.h"
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
 #include <utility>
 
+#include "KeyHint.h"
 #include "YamlText.h"
 #include "tofsim/config/Units.h"
 
@@ -159,6 +161,7 @@ YAML::Node ConfigNode::lookup(const std::string& key) const {
 }
 
 bool ConfigNode::has(const std::string& key) const {
+  shared_->askedPaths.insert(pathOf(key));
   const YAML::Node value = lookup(key);
   return value.IsDefined() && !value.IsNull();
 }
@@ -167,7 +170,10 @@ void ConfigNode::markUsed(const std::string& key) const { shared_->usedPaths.ins
 
 ConfigNode ConfigNode::child(const std::string& key) const {
   if (!node_.IsMap()) fail("expected a mapping");
-  if (!has(key)) throw InputError(location(), pathOf(key), "required key is missing");
+  if (!has(key)) {
+    failIfTypoOf(key);
+    throw InputError(location(), pathOf(key), "required key is missing");
+  }
   markUsed(key);
   return ConfigNode(lookup(key), pathOf(key), shared_);
 }
@@ -304,10 +310,57 @@ double ConfigNode::getFrequency_Hz(const std::string& key, double fallback_Hz) c
   return withUnits(*this, key, fallback_Hz, parseFrequency_Hz);
 }
 
-void ConfigNode::collectUnused(const YAML::Node& node, const std::string& path) const {
+// A required key is missing: when a key beside it that no parser knows is one
+// typo away, that typo is the error to report ("camra" for "camera"), not the
+// absence.
+void ConfigNode::failIfTypoOf(const std::string& missingKey) const {
+  if (!node_.IsMap()) return;
+  std::vector<std::string> strangers;
+  for (const auto& entry : node_) {
+    if (!entry.first.IsScalar()) continue;
+    const std::string p = pathOf(entry.first.Scalar());
+    if (!shared_->usedPaths.count(p) && !shared_->askedPaths.count(p)) {
+      strangers.push_back(entry.first.Scalar());
+    }
+  }
+  const std::string typo = closestKey(missingKey, strangers);
+  if (typo.empty()) return;
+  for (const auto& entry : node_) {
+    if (entry.first.IsScalar() && entry.first.Scalar() == typo) {
+      throw InputError(locate(entry.first, pathOf(typo)), pathOf(typo),
+                       "unknown key (did you mean '" + missingKey + "'?)");
+    }
+  }
+}
+
+std::string ConfigNode::unknownKeyMessage(const std::string& key, const std::string& parentPath,
+                                          const std::string& fullPath,
+                                          const UnknownKeyHint& hint) const {
+  if (hint) {
+    const std::string relative =
+        path_.empty() ? fullPath : fullPath.substr(std::min(fullPath.size(), path_.size() + 1));
+    const std::string why = hint(relative);
+    if (!why.empty()) return "unknown key: " + why;
+  }
+  // The keys the parsers looked for at this level.
+  const std::string prefix = parentPath.empty() ? "" : parentPath + ".";
+  std::vector<std::string> known;
+  for (const std::set<std::string>* paths : {&shared_->askedPaths, &shared_->usedPaths}) {
+    for (const std::string& p : *paths) {
+      if (p.size() <= prefix.size() || p.compare(0, prefix.size(), prefix) != 0) continue;
+      const std::string rest = p.substr(prefix.size());
+      if (rest.find_first_of(".[") == std::string::npos) known.push_back(rest);
+    }
+  }
+  const std::string guess = closestKey(key, known);
+  return guess.empty() ? "unknown key" : "unknown key (did you mean '" + guess + "'?)";
+}
+
+void ConfigNode::collectUnused(const YAML::Node& node, const std::string& path,
+                               const UnknownKeyHint& hint) const {
   if (node.IsSequence()) {
     for (std::size_t i = 0; i < node.size(); ++i) {
-      collectUnused(node[i], path + "[" + std::to_string(i) + "]");
+      collectUnused(node[i], path + "[" + std::to_string(i) + "]", hint);
     }
     return;
   }
@@ -316,12 +369,14 @@ void ConfigNode::collectUnused(const YAML::Node& node, const std::string& path) 
     const std::string key = keyName(entry.first, path);
     const std::string p = path.empty() ? key : path + "." + key;
     if (!shared_->usedPaths.count(p)) {
-      throw InputError(locate(entry.first, p), p, "unknown key");
+      throw InputError(locate(entry.first, p), p, unknownKeyMessage(key, path, p, hint));
     }
-    collectUnused(entry.second, p);
+    collectUnused(entry.second, p, hint);
   }
 }
 
-void ConfigNode::reportUnusedKeys() const { collectUnused(node_, path_); }
+void ConfigNode::reportUnusedKeys(const UnknownKeyHint& hint) const {
+  collectUnused(node_, path_, hint);
+}
 
 }  // namespace tofsim::config

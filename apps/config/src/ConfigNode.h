@@ -6,6 +6,7 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include <functional>
 #include <memory>
 #include <optional>
 #include <set>
@@ -78,20 +79,33 @@ class ConfigNode {
 
   /// Marks a key as read without parsing it (e.g. handled elsewhere).
   void markUsed(const std::string& key) const;
-  /// Throws for the first key in the whole document that no parser read.
-  void reportUnusedKeys() const;
+  /// Says why a key nobody read is wrong when the caller knows better than a
+  /// spelling guess (a key of another sensor type); "" for no opinion. Given
+  /// the key's path relative to the node reportUnusedKeys() was called on.
+  using UnknownKeyHint = std::function<std::string(const std::string& relativePath)>;
+  /// Throws for the first key in the whole document that no parser read,
+  /// naming the closest key the parsers asked for at its level when one is a
+  /// likely typo of it ("unknown key (did you mean 'camera'?)").
+  void reportUnusedKeys(const UnknownKeyHint& hint = {}) const;
 
  private:
   struct Shared {
     std::string file;
     std::set<std::string> usedPaths;
+    // Every key path a parser looked for, present or not: the known keys of
+    // each level, which the typo hints choose from.
+    std::set<std::string> askedPaths;
     std::vector<std::pair<std::string, std::string>> overrideSources;
   };
   FileLoc locate(const YAML::Node& node, const std::string& path) const;
   std::string keyName(const YAML::Node& key, const std::string& parentPath) const;
   ConfigNode(YAML::Node node, std::string path, std::shared_ptr<Shared> shared);
   YAML::Node lookup(const std::string& key) const;
-  void collectUnused(const YAML::Node& node, const std::string& path) const;
+  void collectUnused(const YAML::Node& node, const std::string& path,
+                     const UnknownKeyHint& hint) const;
+  std::string unknownKeyMessage(const std::string& key, const std::string& parentPath,
+                                const std::string& fullPath, const UnknownKeyHint& hint) const;
+  void failIfTypoOf(const std::string& missingKey) const;
 
   YAML::Node node_;
   std::string path_;

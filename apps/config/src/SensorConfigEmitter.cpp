@@ -23,10 +23,11 @@ using namespace tofsim::sensors;
 
 void emitCommon(YAML::Node& n, const SensorCommon& c) {
   // `channel` or `channel_weights`: one choice of two keys, by hand.
-  if (c.channel.weights.empty()) {
-    n["channel"] = c.channel.index;
-  } else {
+  // The default (the sum of the channels) is written as no key at all.
+  if (!c.channel.weights.empty()) {
     for (double w : c.channel.weights) n["channel_weights"].push_back(shortest(w));
+  } else if (c.channel.index != ChannelSelection::kSumOfChannels) {
+    n["channel"] = c.channel.index;
   }
   emitFields(n, kRadiometryFields, c.radiometry);
 }

@@ -14,6 +14,7 @@
 #include "IrfFile.h"
 #include "SensorConfigType.h"
 #include "SpadTableFile.h"
+#include "tofsim/config/ConfigKeys.h"
 #include "tofsim/config/SensorConfig.h"
 #include "tofsim/config/Units.h"
 #include "tofsim/sensors/CwTofPresets.h"
@@ -35,9 +36,12 @@ int32_t intElement(const ConfigNode& e) {
 SensorCommon parseCommon(const ConfigNode& n) {
   SensorCommon c;
   // `channel` or `channel_weights`: one choice of two keys, by hand.
-  const long long channel = n.getInt("channel", 0);
-  if (channel < 0) n.failKey("channel", "must be >= 0 (got " + std::to_string(channel) + ")");
-  c.channel.index = static_cast<int32_t>(channel);
+  // Neither given: the sum of the channels (ChannelSelection's default).
+  if (n.has("channel")) {
+    const long long channel = n.getInt("channel", 0);
+    if (channel < 0) n.failKey("channel", "must be >= 0 (got " + std::to_string(channel) + ")");
+    c.channel.index = static_cast<int32_t>(channel);
+  }
   if (auto w = n.optionalChild("channel_weights")) {
     for (const ConfigNode& e : w->elements()) c.channel.weights.push_back(e.asDouble());
     if (c.channel.weights.empty()) w->fail("must list one weight per volume channel");
@@ -371,6 +375,24 @@ std::string knownTypes(std::index_sequence<I...>) {
   return known;
 }
 
+// A key this sensor type does not take but another one does is a mix-up of
+// types, not a typo: "'frequencies' is a cwtof key; this sensor is a spad".
+// The model rows of sensorConfigKeys() are "<type>.<key>".
+std::string otherTypesKey(const std::string& type, const std::string& key) {
+  if (key.find_first_of(".[") != std::string::npos) return "";
+  std::string owners;
+  for (const ConfigKey& row : sensorConfigKeys()) {
+    const std::string path = row.path;
+    const std::size_t dot = path.find('.');
+    const std::string model = path.substr(0, dot);
+    if (path.substr(dot + 1) != key) continue;
+    if (model == type || model == "common" || model == "bins") return "";
+    if (owners.find(model) == std::string::npos) owners += (owners.empty() ? "" : " and ") + model;
+  }
+  if (owners.empty()) return "";
+  return "'" + key + "' is a " + owners + " key; this sensor is a " + type;
+}
+
 /// Parses the alternative whose SensorType<>::name is `type`; false for none.
 template <std::size_t I = 0>
 bool parseAs(const std::string& type, const ConfigNode& n, SensorParams& out) {
@@ -399,7 +421,7 @@ std::vector<SensorSpec> parseSensors(const ConfigNode& list) {
                     ")");
     }
     spec.name = n.getString("name", type);
-    n.reportUnusedKeys();
+    n.reportUnusedKeys([&](const std::string& key) { return otherTypesKey(type, key); });
     specs.push_back(std::move(spec));
   }
   return specs;

@@ -22,7 +22,10 @@ using namespace tofsim::sensors;
 json commonJson(const SensorCommon& c) {
   json j;
   // `channel` or `channel_weights`: one choice of two keys, by hand.
-  if (c.channel.weights.empty()) {
+  // The default, the sum of the channels, is written "channel": "sum".
+  if (c.channel.weights.empty() && c.channel.index == ChannelSelection::kSumOfChannels) {
+    j["channel"] = "sum";
+  } else if (c.channel.weights.empty()) {
     j["channel"] = c.channel.index;
   } else {
     j["channel_weights"] = c.channel.weights;

@@ -12,10 +12,13 @@
 
 namespace tofsim::sensors {
 
-/// One channel of the volume, or a weighted sum of all of them.
+/// One channel of the volume, or a weighted sum of all of them. By default the
+/// plain sum of the channels: a sensor sees every colour the scene's light
+/// carries (a blue object is not black to it), as a user would guess.
 struct ChannelSelection {
-  int32_t index = 0;            ///< used when `weights` is empty
-  std::vector<double> weights;  ///< empty, or one weight per volume channel
+  static constexpr int32_t kSumOfChannels = -1;
+  int32_t index = kSumOfChannels;  ///< used when `weights` is empty: a channel, or the sum
+  std::vector<double> weights;     ///< empty, or one weight per volume channel
 };
 
 /// Expected photo-electrons per unit of the volume's value (radiance integrated
