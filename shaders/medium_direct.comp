@@ -32,12 +32,9 @@ uniform float uBinWidth_m;
 uniform float uIndexOfRefraction;
 uniform int uCameraUnwarp;
 uniform uint uMediumImagePixels;
-// The medium (capture::Medium): sigma_s and sigma_t per channel (1/m), its
-// phase model (PHASE_*) and g.
-uniform vec3 uMediumSigmaS;
-uniform vec3 uMediumSigmaT;
-uniform int uMediumPhase;
-uniform float uMediumG;
+// The medium (capture::Medium): uMediumSigmaS/T, uMediumPhase, uMediumG
+// (compiled with MEDIUM: gpu::gatherDefines; set by MediumUniforms.cpp).
+#include "medium_uniforms.glsl"
 #include "camera_end.glsl"
 
 #define GATHER_HISTOGRAM direct

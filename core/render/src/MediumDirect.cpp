@@ -5,6 +5,7 @@
 #include "GpuContract.h"
 #include "LightShadowMap.h"
 #include "LightUniforms.h"
+#include "MediumUniforms.h"
 #include "tofsim/capture/Imager.h"
 #include "tofsim/gl/Check.h"
 #include "tofsim/gl/Compute.h"
@@ -74,10 +75,8 @@ MediumDirect::MediumDirect(const capture::RenderJob& job, bool foldModel) {
   if (s.pixel_samples > 1) {
     p.set("uSampleWeight", 1.0f / static_cast<float>(s.pixel_samples * s.pixel_samples));
   }
-  p.set("uMediumSigmaS", s.medium.sigma_s_per_m);
-  p.set("uMediumSigmaT", s.medium.sigmaT());
-  p.set("uMediumPhase", s.medium.phase);
-  p.set("uMediumG", s.medium.g);
+  setMediumExtinction(p, s.medium);
+  setMediumScattering(p, s.medium);
 }
 
 void MediumDirect::gather(const LightShadowMap& shadowMap, std::size_t firstPixel,
