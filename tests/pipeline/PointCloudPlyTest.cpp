@@ -130,23 +130,41 @@ TEST(PointCloudPlyTest, HeaderAndValuesReadBack) {
   std::filesystem::remove(path);
 }
 
-TEST(PointCloudPlyTest, SensorWriterMakesOnePerDepthOutput) {
-  const capture::Camera camera = testCamera();
-  sensors::SensorSpec spec;
-  spec.name = "spad";
-  spec.params = sensors::SpadParams{};
+// A SPAD's run on 10 bins of 10 ps, seen through `camera`.
+SensorRunInfo spadRun(const sensors::SensorSpec& spec, const capture::Camera& camera) {
   TimeAxis axis;
   axis.bin_width_s = 1e-11;
   axis.bins = 10;
-  SensorRunInfo run{&spec, axis, 1, {}, &camera};
+  return SensorRunInfo{&spec, axis, 1, {}, &camera};
+}
+
+sensors::SensorSpec spadSpec() {
+  sensors::SensorSpec spec;
+  spec.name = "spad";
+  spec.params = sensors::SpadParams{};
+  return spec;
+}
+
+// A 4 x 3 depth image of 2 m everywhere, drawn as the point cloud `cloud`.
+sensors::SensorOutput depthImage(const std::string& name,
+                                 const sensors::SensorOutput::PointCloud& cloud) {
   sensors::SensorOutput depth;
-  depth.name = "spad_depth_matched";
+  depth.name = name;
   depth.kind = sensors::SensorOutput::Kind::Image;
   depth.shape = {3, 4};
   depth.axes = {"y", "x"};
   depth.unit = "m";
   depth.data.assign(12, 2.0f);
-  depth.point_cloud = sensors::SensorOutput::PointCloud{"spad_intensity", "spad_confidence"};
+  depth.point_cloud = cloud;
+  return depth;
+}
+
+TEST(PointCloudPlyTest, SensorWriterMakesOnePerDepthOutput) {
+  const capture::Camera camera = testCamera();
+  const sensors::SensorSpec spec = spadSpec();
+  SensorRunInfo run = spadRun(spec, camera);
+  const sensors::SensorOutput depth = depthImage(
+      "spad_depth_matched", sensors::SensorOutput::PointCloud{"spad_intensity", "spad_confidence"});
   sensors::SensorOutput intensity = depth;
   intensity.name = "spad_intensity";
   intensity.point_cloud.reset();
@@ -172,27 +190,15 @@ TEST(PointCloudPlyTest, SensorWriterMakesOnePerDepthOutput) {
   std::filesystem::remove_all(dir);
 }
 
-}  // namespace
 // A pixel without a detected return (spad_returns 0, the cloud's mask) is no
 // point, though the estimators gave it a finite depth; the others keep theirs.
 TEST(PointCloudPlyTest, NoPointWhereNoReturnWasDetected) {
   const capture::Camera camera = testCamera();
-  sensors::SensorSpec spec;
-  spec.name = "spad";
-  spec.params = sensors::SpadParams{};
-  TimeAxis axis;
-  axis.bin_width_s = 1e-11;
-  axis.bins = 10;
-  SensorRunInfo run{&spec, axis, 1, {}, &camera};
-  sensors::SensorOutput depth;
-  depth.name = "spad_depth_peak";
-  depth.kind = sensors::SensorOutput::Kind::Image;
-  depth.shape = {3, 4};
-  depth.axes = {"y", "x"};
-  depth.unit = "m";
-  depth.data.assign(12, 2.0f);
-  depth.point_cloud =
-      sensors::SensorOutput::PointCloud{"spad_intensity", "spad_confidence", "spad_returns"};
+  const sensors::SensorSpec spec = spadSpec();
+  const SensorRunInfo run = spadRun(spec, camera);
+  const sensors::SensorOutput depth =
+      depthImage("spad_depth_peak", sensors::SensorOutput::PointCloud{
+                                        "spad_intensity", "spad_confidence", "spad_returns"});
   sensors::SensorOutput returns = depth;
   returns.name = "spad_returns";
   returns.point_cloud.reset();
@@ -208,4 +214,5 @@ TEST(PointCloudPlyTest, NoPointWhereNoReturnWasDetected) {
   std::filesystem::remove_all(dir);
 }
 
+}  // namespace
 }  // namespace tofsim::pipeline
