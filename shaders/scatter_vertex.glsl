@@ -128,6 +128,13 @@ TOFSIM_PHYSICS_FN bool vertexOnSurface(ScatterVertex v) {
   return vertexModel(v) != VERTEX_MEDIUM;
 }
 
+// The cosine a VPL with unit normal n (zero for a medium VPL, ir/MediumVpl.h)
+// weighs its light toward unit d (VPL -> x) with: n . d at a surface VPL, 1 at
+// a medium VPL, which has no side (its phase function is in its scatter()).
+TOFSIM_PHYSICS_FN float vplEmitterCosine(vec3 n, vec3 d) {
+  return dot(n, n) == 0.0f ? 1.0f : dot(n, d);
+}
+
 // The cosine a vertex weighs light arriving along unit w (toward the light)
 // with: n . w on a surface, 1 in a medium (a phase function, no normal).
 TOFSIM_PHYSICS_FN float receiverCosine(ScatterVertex v, vec3 n, vec3 w) {
