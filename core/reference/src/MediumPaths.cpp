@@ -98,6 +98,10 @@ void PathIntegrator::traceMediumPath(const glm::vec3& eye, const glm::vec3& dire
     const Continuation step = sampleContinuation(*next, toViewer, rng);
     if (glm::dot(step.direction, next->geometric_world) <= 0.0f) break;  // below the surface
     if (step.ends) break;
+    // A black surface (albedo 0): nothing the path meets later reaches the
+    // camera. Ending it saves the rest of its vertices (the boundary of a
+    // semi-infinite medium: ReferenceSemiInfiniteTest).
+    if (step.weight == glm::dvec3(0.0)) break;
     state.weight.scale(step.weight);
     dir = step.direction;
     position = next->position_world;
