@@ -17,6 +17,8 @@
 #include <glm/glm.hpp>
 
 #include "tofsim/capture/Medium.h"
+#include "tofsim/volume/PhysicalConstants.h"
+#include "tofsim/volume/TimeAxis.h"
 
 namespace tofsim::test {
 
@@ -31,6 +33,15 @@ struct Moments {
   /// Standard error of the mean of n independent paths.
   double standardError(double n) const { return std::sqrt(std::max(0.0, second - mean * mean) / n); }
 };
+
+/// A time axis over geometric path lengths: bin b holds the paths of
+/// geometric length [l0 + b width, l0 + (b + 1) width) (metres) in a medium
+/// of index eta (the reference times eta x the geometric length).
+inline TimeAxis pathAxis(double eta, double l0_m, double width_m, int32_t bins) {
+  TimeAxis axis{eta * l0_m / kSpeedOfLight_m_per_s, eta * width_m / kSpeedOfLight_m_per_s, bins};
+  axis.index_of_refraction = eta;
+  return axis;
+}
 
 inline double mixturePdf(const capture::Medium& m, double t) {
   const glm::dvec3 st(m.sigmaT());

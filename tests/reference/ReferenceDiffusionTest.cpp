@@ -13,20 +13,17 @@
 // camera perpendicular to it, so the mean over the image cancels the flux
 // term (3 / 4 pi) F . w of the P1 radiance and leaves phi / (4 pi).
 //
-// Why not the semi-infinite medium: the reference's medium fills the whole
-// scene, and a boundary made of a black surface would absorb the escaping
-// light as an index-matched boundary does, but the reflectance R(rho, t) is
-// a flux through the boundary, which a pinhole pixel inside the medium does
-// not measure (its radiance at the boundary is where the diffusion
-// approximation is worst). The infinite medium's fluence is measured
-// cleanly, and it checks the same thing: many scattering events, their
-// times with eta, absorption along the path.
+// The semi-infinite medium (Patterson's reflectance, the radiance leaving a
+// boundary) is ReferenceSemiInfiniteTest; the infinite medium's fluence,
+// away from any boundary, is measured here.
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <vector>
 
+#include "DiffusionClosedForm.h"
+#include "MediumClosedForm.h"
 #include "RenderReference.h"
 #include "support/AnalyticScenes.h"
 #include "tofsim/physics/MediumPhysics.h"
@@ -46,15 +43,8 @@ constexpr int kSide = 16, kPaths = 256;     // 65 536 paths
 // I int_l0^l1 (4 pi D l)^(-3/2) exp(-r^2 / (4 D l) - mu_a l) dl (Simpson).
 double diffusionBin(double l0, double l1, double muA, double muSPrime) {
   const double d = 1.0 / (3.0 * (muA + muSPrime));
-  constexpr int kSteps = 2000;  // even
-  const double h = (l1 - l0) / kSteps;
-  double sum = 0.0;
-  for (int i = 0; i <= kSteps; ++i) {
-    const double l = l0 + i * h;
-    const double w = (i == 0 || i == kSteps) ? 1.0 : (i % 2 == 1 ? 4.0 : 2.0);
-    sum += w * std::pow(4.0 * M_PI * d * l, -1.5) * std::exp(-kR * kR / (4.0 * d * l) - muA * l);
-  }
-  return sum * h / 3.0;
+  return test::diffusion::simpson(
+      [&](double l) { return test::diffusion::green(kR * kR, l, d, muA); }, l0, l1);
 }
 
 // Mean of phi / 4 pi over bins [first, last) and its standard error, from the
@@ -94,9 +84,7 @@ TEST(ReferenceDiffusionTest, InfiniteMediumFluenceFollowsTheDiffusionGreensFunct
   job.camera().width = job.camera().height = kSide;
   job.light.position_world = {static_cast<float>(kR), 0.0f, 0.0f};
   job.light.intensity_W_per_sr = glm::vec3(1.0f);
-  job.settings.time = TimeAxis{kEta * kL0 / kSpeedOfLight_m_per_s,
-                               kEta * kBin / kSpeedOfLight_m_per_s, kBins};
-  job.settings.time.index_of_refraction = kEta;
+  job.settings.time = test::pathAxis(kEta, kL0, kBin, kBins);
   job.settings.medium.sigma_a_per_m = glm::vec3(static_cast<float>(kMuA));
   job.settings.medium.sigma_s_per_m = glm::vec3(static_cast<float>(kMuS));
   ReferenceSettings settings;

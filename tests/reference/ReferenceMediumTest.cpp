@@ -80,27 +80,36 @@ TEST(ReferenceMediumTest, AbsorbingMediumScalesEveryBinByItsGeometricPath) {
                             "indirect");
 }
 
+// A camera at `position` looking at `lookAt` with the light at its pinhole
+// (the lidar equation's geometry), side x side pixels, and a time axis whose
+// bin b holds the one-way geometric distances [s0 + b bin, s0 + (b + 1) bin)
+// at index eta.
+RenderJob monostaticJob(const scene::Scene& scene, glm::vec3 position, glm::vec3 lookAt,
+                        float fovDeg, int32_t side, glm::vec3 intensity, double eta, double s0,
+                        double bin, int32_t bins) {
+  RenderJob job;
+  job.scene = &scene;
+  job.camera().position_world = position;
+  job.camera().look_at_world = lookAt;
+  job.camera().fov_y_deg = fovDeg;
+  job.camera().width = job.camera().height = side;
+  job.light.position_world = position;
+  job.light.intensity_W_per_sr = intensity;
+  const double perMetre = 2.0 * eta / kSpeedOfLight_m_per_s;
+  job.settings.time = TimeAxis{s0 * perMetre, bin * perMetre, bins};
+  job.settings.time.index_of_refraction = eta;
+  return job;
+}
+
 // A camera with the light at its pinhole, looking away from everything (a
 // small plane far behind it keeps the scene non-empty): only the medium
 // returns light.
 struct LidarJob {
-  scene::Scene scene = test::makePlane(1.0f, glm::vec3(0.0f));
-  RenderJob job;
   static constexpr double kEta = 1.25;
   static constexpr double kS0 = 0.5, kBin = 0.25;  // one-way geometric distance, m
-  LidarJob() {
-    job.scene = &scene;
-    job.camera().position_world = {0.0f, 0.0f, 50.0f};
-    job.camera().look_at_world = {0.0f, 0.0f, 60.0f};
-    job.camera().fov_y_deg = 10.0f;
-    job.camera().width = job.camera().height = 4;
-    job.light.position_world = job.camera().position_world;
-    job.light.intensity_W_per_sr = glm::vec3(2.0f, 1.0f, 3.0f);
-    // Bin b: one-way distances [kS0 + b kBin, kS0 + (b + 1) kBin).
-    const double perMetre = 2.0 * kEta / kSpeedOfLight_m_per_s;
-    job.settings.time = TimeAxis{kS0 * perMetre, kBin * perMetre, 16};
-    job.settings.time.index_of_refraction = kEta;
-  }
+  scene::Scene scene = test::makePlane(1.0f, glm::vec3(0.0f));
+  RenderJob job = monostaticJob(scene, {0.0f, 0.0f, 50.0f}, {0.0f, 0.0f, 60.0f}, 10.0f, 4,
+                                {2.0f, 1.0f, 3.0f}, kEta, kS0, kBin, 16);
 };
 
 ReferenceSettings singleScattering(int32_t samples) {
@@ -177,9 +186,7 @@ TEST(ReferenceMediumTest, BistaticSingleScatteringIsTheIntegralAlongThePixelRay)
   LidarJob s;
   s.job.light.position_world = s.job.camera().position_world + glm::vec3(0.5f, 0.0f, 0.0f);
   constexpr double kL0 = 1.0, kWidth = 0.25;  // total geometric path of bin 0, bin width
-  s.job.settings.time = TimeAxis{kL0 * LidarJob::kEta / kSpeedOfLight_m_per_s,
-                                 kWidth * LidarJob::kEta / kSpeedOfLight_m_per_s, 16};
-  s.job.settings.time.index_of_refraction = LidarJob::kEta;
+  s.job.settings.time = test::pathAxis(LidarJob::kEta, kL0, kWidth, 16);
   const Medium m = medium({0.1f, 0.3f, 0.05f}, {0.3f, 0.2f, 0.5f},
                           physics::PHASE_HENYEY_GREENSTEIN, 0.5f);
   s.job.settings.medium = m;
@@ -241,18 +248,9 @@ TEST(ReferenceMediumTest, PlaneReturnIsTheVacuumReturnTimesTwoWayTransmittance) 
   // bin holds its attenuated return plus the lidar return of the medium
   // in front of it within the bin.
   scene::Scene plane = test::makePlane(6.0f, glm::vec3(0.5f, 0.4f, 0.3f));
-  RenderJob job;
-  job.scene = &plane;
-  job.camera().position_world = {0.0f, 0.0f, 2.0f};
-  job.camera().look_at_world = {0.0f, 0.0f, 0.0f};
-  job.camera().fov_y_deg = 20.0f;
-  job.camera().width = job.camera().height = 8;
-  job.light.position_world = job.camera().position_world;
-  job.light.intensity_W_per_sr = glm::vec3(2.0f, 1.0f, 0.5f);
-  constexpr double kEta = 1.2, kS0 = 1.0, kBin = 0.02;
-  const double perMetre = 2.0 * kEta / kSpeedOfLight_m_per_s;
-  job.settings.time = TimeAxis{kS0 * perMetre, kBin * perMetre, 100};
-  job.settings.time.index_of_refraction = kEta;
+  constexpr double kS0 = 1.0, kBin = 0.02;
+  RenderJob job = monostaticJob(plane, {0.0f, 0.0f, 2.0f}, {0.0f, 0.0f, 0.0f}, 20.0f, 8,
+                                {2.0f, 1.0f, 0.5f}, 1.2, kS0, kBin, 100);
   constexpr int kPaths = 4000;
   const VolumeCollector vacuum = test::renderReference(job, singleScattering(1));
   const Medium m = medium({0.05f, 0.1f, 0.2f}, {0.15f, 0.3f, 0.05f});

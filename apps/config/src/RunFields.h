@@ -69,8 +69,8 @@ inline constexpr std::array<Name<ReferenceSampling>, 2> kReferenceSamplingNames{
     {{"brdf", ReferenceSampling::Brdf}, {"cosine", ReferenceSampling::Cosine}}};
 
 inline constexpr auto kReferenceFields = std::tuple{
-    Field{"bounces", &ReferenceConfig::bounces, IntegerIn{1, 64},
-          {.doc = "surface interactions per path: 1 direct only, 2 direct + one indirect bounce, n"}},
+    Field{"bounces", &ReferenceConfig::bounces, IntegerIn{1, 4096},
+          {.doc = "path vertices: 1 direct only, 2 direct + one indirect bounce, n; in a `medium` each scattering event is a vertex too: light that has travelled a geometric path l has scattered about sigma_t l times, so set it above sigma_t x the axis's longest path + 4 sqrt of that (the light of longer chains is lost; core/reference/README.md, \"In a medium\")"}},
     Field{"samples_per_pixel", &ReferenceConfig::samples_per_pixel, IntegerIn{1, 1 << 24},
           {.doc = "paths per pixel (with `pixel_filter: box`, also the direct term's sub-pixel samples)"}},
     Field{"threads", &ReferenceConfig::threads, IntegerIn{0, 4096},

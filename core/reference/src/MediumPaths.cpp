@@ -24,32 +24,23 @@ namespace tofsim::reference {
 
 void PathIntegrator::renderPixelInMedium(int32_t x, int32_t y, PixelOutput& out,
                                          std::vector<double>& scratch) const {
+  PixelSums p = beginPixel(x, y, out, scratch);
   const capture::PrimaryRay centre = rays_.ray(x, y);
-  const glm::vec3 eye = centre.origin;
-  if (const auto hit = scene_.intersect(eye, centre.direction)) {
-    out.depth_m = static_cast<float>(glm::length(hit->position_world - eye));
-  }
-  const std::size_t floats = static_cast<std::size_t>(job_.settings.time.bins) * 3;
-  scratch.assign(2 * floats, 0.0);
-  double* direct = scratch.data();
-  double* indirect = direct + floats;
-  AxisLoss outside;
-  Pcg32 rng = Pcg32::forUnit(job_.settings.seed, pixelIndex(x, y));
-  Pcg32 delays = delayStream(pixelIndex(x, y));
   for (int32_t s = 0; s < samplesPerPixel_; ++s) {
     const glm::vec3 direction =
         pixelFilter_ == PixelFilter::Box
-            ? rays_.ray(x, y, rays::stratifiedPixelOffset(s, samplesPerPixel_, rng)).direction
+            ? rays_.ray(x, y, rays::stratifiedPixelOffset(s, samplesPerPixel_, p.rng)).direction
             : centre.direction;
-    traceMediumPath(eye, direction, rng, delays, direct, indirect, outside);
+    traceMediumPath(centre.origin, direction, p);
   }
-  storeAverages(direct, indirect, floats, outside, out);
+  storeAverages(p.direct, p.indirect, p.floats, p.outside, out);
 }
 
 void PathIntegrator::traceMediumPath(const glm::vec3& eye, const glm::vec3& direction,
-                                     Pcg32& rng, Pcg32& delays, double* direct,
-                                     double* indirect, AxisLoss& outside) const {
-  PathState state;
+                                     PixelSums& pixel) const {
+  Pcg32& rng = pixel.rng;
+  AxisLoss& outside = pixel.outside;
+  PathState state = startPath(pixel.delays);
   glm::vec3 position = eye;  // the current vertex
   glm::vec3 dir = direction;
   std::optional<SurfaceHit> surface;  // the current vertex when it is a surface
@@ -61,7 +52,7 @@ void PathIntegrator::traceMediumPath(const glm::vec3& eye, const glm::vec3& dire
     const double toSurface_m =
         next ? glm::length(next->position_world - position) : FreeFlight::kNone;
     const double flight_m = flight_.sample(rng);
-    double* histogram = vertex == 1 ? direct : indirect;
+    double* histogram = vertex == 1 ? pixel.direct : pixel.indirect;
     // The light the medium scatters towards the path along this leg, by two
     // strategies (balance heuristic): the free flight's event below, and an
     // equiangular point towards the light weighted by the phase function,
@@ -95,18 +86,22 @@ void PathIntegrator::traceMediumPath(const glm::vec3& eye, const glm::vec3& dire
     }
     if (!next) break;  // the path leaves the scene
     state.weight.scale(flight_.passWeight(toSurface_m));
-    delays_.atVertex(responseAt(*next), delays, state);
+    delays_.atVertex(responseAt(*next), pixel.delays, state);
     path_m += vertex == 1 ? lastLeg_m(toSurface_m) : toSurface_m;
     const glm::vec3 toViewer = -dir;
     const Radiance reflected = lightReflectedAt(*next, toViewer);
     if (reflected.valid) {
-      deposit(state.weight.apply(reflected.value * flight_.transmittance(reflected.path_m)),
+      deposit(state.seen(reflected.value * flight_.transmittance(reflected.path_m)),
               reflected.path_m + path_m, state.delay_s, histogram, outside);
     }
     if (vertex == bounces_) break;
     const Continuation step = sampleContinuation(*next, toViewer, rng);
     if (glm::dot(step.direction, next->geometric_world) <= 0.0f) break;  // below the surface
     if (step.ends) break;
+    // A black surface (albedo 0): nothing the path meets later reaches the
+    // camera. Ending it saves the rest of its vertices (the boundary of a
+    // semi-infinite medium: ReferenceSemiInfiniteTest).
+    if (step.weight == glm::dvec3(0.0)) break;
     state.weight.scale(step.weight);
     dir = step.direction;
     position = next->position_world;
@@ -130,7 +125,7 @@ void PathIntegrator::addMediumLight(const glm::vec3& p, const glm::vec3& toViewe
   const glm::dvec3 value = glm::dvec3(light.intensity_W_per_sr) *
                            (phase * static_cast<double>(profile) / (d * d)) *
                            flight_.transmittance(d) * weight;
-  deposit(state.weight.apply(value), d + path_m, state.delay_s, histogram, outside);
+  deposit(state.seen(value), d + path_m, state.delay_s, histogram, outside);
 }
 
 }  // namespace tofsim::reference

@@ -193,10 +193,9 @@ void PathIntegrator::renderPixelCentre(int32_t x, int32_t y, PixelOutput& out,
   // Unwarped time (or a point set timed at its points) is the time at the
   // first surface: drop the surface -> viewpoint leg.
   const double toCamera_m = lastLeg_m(cameraLeg_m);
-  const std::size_t floats = static_cast<std::size_t>(job_.settings.time.bins) * kChannels;
   const glm::vec3 toCamera = glm::normalize(eye - hit.position_world);
   if (delays_.delays(responseAt(hit)) || delays_.delays(lightResponse_)) {
-    renderDelayedCentre(hit, toCamera, toCamera_m, pixelIndex(x, y), out, scratch);
+    renderDelayedCentre(hit, toCamera, toCamera_m, x, y, out, scratch);
     return;
   }
 
@@ -214,43 +213,57 @@ void PathIntegrator::renderPixelCentre(int32_t x, int32_t y, PixelOutput& out,
   if (bounces_ < 2) return;
 
   // Bounces 2..n: fixed-depth cosine-sampled paths with next-event estimation.
-  scratch.assign(floats, 0.0);
-  AxisLoss outside;
-  Pcg32 rng = Pcg32::forUnit(job_.settings.seed, pixelIndex(x, y));
-  Pcg32 delays = delayStream(pixelIndex(x, y));
+  PixelSums p = beginPixel(x, y, out, scratch);
   for (int32_t s = 0; s < samplesPerPixel_; ++s) {
-    traceContinuation(hit, toCamera, toCamera_m, {}, rng, delays, scratch.data(), outside);
+    traceContinuation(hit, toCamera, toCamera_m, {}, p.rng, p.delays, p.indirect, p.outside);
   }
+  // The direct term is exact, already in out.direct: only the paths' average.
   const double norm = 1.0 / samplesPerPixel_;
-  for (std::size_t i = 0; i < floats; ++i) out.indirect[i] = static_cast<float>(scratch[i] * norm);
-  out.offAxis.before += outside.before * norm;
-  out.offAxis.after += outside.after * norm;
+  for (std::size_t i = 0; i < p.floats; ++i) {
+    out.indirect[i] = static_cast<float>(p.indirect[i] * norm);
+  }
+  out.offAxis.before += p.outside.before * norm;
+  out.offAxis.after += p.outside.after * norm;
 }
 
 void PathIntegrator::renderDelayedCentre(const SurfaceHit& hit, const glm::vec3& toCamera,
-                                         double toCamera_m, uint64_t pixel, PixelOutput& out,
-                                         std::vector<double>& scratch) const {
-  const std::size_t floats = static_cast<std::size_t>(job_.settings.time.bins) * kChannels;
-  scratch.assign(2 * floats, 0.0);
-  double* direct = scratch.data();
-  double* indirect = direct + floats;
-  AxisLoss outside;
-  Pcg32 rng = Pcg32::forUnit(job_.settings.seed, pixel);
-  Pcg32 delays = delayStream(pixel);
+                                         double toCamera_m, int32_t x, int32_t y,
+                                         PixelOutput& out, std::vector<double>& scratch) const {
+  PixelSums p = beginPixel(x, y, out, scratch);
   const int32_t response = responseAt(hit);
   const Radiance light = lightReflectedAt(hit, toCamera);  // the same for every path
   for (int32_t s = 0; s < samplesPerPixel_; ++s) {
-    PathState state;
-    delays_.atLight(lightResponse_, delays, state);
-    delays_.atVertex(response, delays, state);
+    PathState state = startPath(p.delays);
+    delays_.atVertex(response, p.delays, state);
     if (light.valid) {
-      deposit(state.seen(light.value), light.path_m + toCamera_m, state.delay_s, direct, outside);
+      deposit(state.seen(light.value), light.path_m + toCamera_m, state.delay_s, p.direct,
+              p.outside);
     }
     if (bounces_ >= 2) {
-      traceContinuation(hit, toCamera, toCamera_m, state, rng, delays, indirect, outside);
+      traceContinuation(hit, toCamera, toCamera_m, state, p.rng, p.delays, p.indirect,
+                        p.outside);
     }
   }
-  storeAverages(direct, indirect, floats, outside, out);
+  storeAverages(p.direct, p.indirect, p.floats, p.outside, out);
+}
+
+PathIntegrator::PixelSums PathIntegrator::beginPixel(int32_t x, int32_t y, PixelOutput& out,
+                                                     std::vector<double>& scratch) const {
+  const capture::PrimaryRay centre = rays_.ray(x, y);
+  if (const auto hit = scene_.intersect(centre.origin, centre.direction)) {
+    out.depth_m = static_cast<float>(glm::length(hit->position_world - centre.origin));
+  }
+  const std::size_t floats = static_cast<std::size_t>(job_.settings.time.bins) * kChannels;
+  scratch.assign(2 * floats, 0.0);
+  const uint64_t pixel = pixelIndex(x, y);
+  return PixelSums{floats, scratch.data(), scratch.data() + floats, AxisLoss{},
+                   Pcg32::forUnit(job_.settings.seed, pixel), delayStream(pixel)};
+}
+
+PathState PathIntegrator::startPath(Pcg32& delays) const {
+  PathState state;
+  delays_.atLight(lightResponse_, delays, state);
+  return state;
 }
 
 void PathIntegrator::storeAverages(const double* direct, const double* indirect,
@@ -275,34 +288,24 @@ void PathIntegrator::addDirect(const SurfaceHit& hit, const glm::vec3& toCamera,
 
 void PathIntegrator::renderPixelArea(int32_t x, int32_t y, PixelOutput& out,
                                      std::vector<double>& scratch) const {
-  const capture::PrimaryRay centreRay = rays_.ray(x, y);
-  const glm::vec3 eye = centreRay.origin;  // every ray of the pixel starts there
-  // The depth image stays the centre's, as the G-buffer's.
-  if (const auto centre = scene_.intersect(eye, centreRay.direction)) {
-    out.depth_m = static_cast<float>(glm::length(centre->position_world - eye));
-  }
-  const std::size_t floats = static_cast<std::size_t>(job_.settings.time.bins) * kChannels;
-  scratch.assign(2 * floats, 0.0);
-  double* direct = scratch.data();
-  double* indirect = direct + floats;
-  AxisLoss outside;
-  Pcg32 rng = Pcg32::forUnit(job_.settings.seed, pixelIndex(x, y));
-  Pcg32 delays = delayStream(pixelIndex(x, y));
+  PixelSums p = beginPixel(x, y, out, scratch);
+  const glm::vec3 eye = rays_.ray(x, y).origin;  // every ray of the pixel starts there
   for (int32_t s = 0; s < samplesPerPixel_; ++s) {
-    const glm::vec2 offset = stratifiedPixelOffset(s, samplesPerPixel_, rng);
-    const std::optional<SurfaceHit> hit = scene_.intersect(eye, rays_.ray(x, y, offset).direction);
+    const glm::vec2 offset = stratifiedPixelOffset(s, samplesPerPixel_, p.rng);
+    const std::optional<SurfaceHit> hit =
+        scene_.intersect(eye, rays_.ray(x, y, offset).direction);
     if (!hit) continue;  // a silhouette pixel: this part of it sees nothing
     const double toCamera_m = lastLeg_m(glm::length(hit->position_world - eye));
     const glm::vec3 toCamera = glm::normalize(eye - hit->position_world);
-    PathState state;
-    delays_.atLight(lightResponse_, delays, state);
-    delays_.atVertex(responseAt(*hit), delays, state);
-    addDirect(*hit, toCamera, toCamera_m, state, direct, outside);
+    PathState state = startPath(p.delays);
+    delays_.atVertex(responseAt(*hit), p.delays, state);
+    addDirect(*hit, toCamera, toCamera_m, state, p.direct, p.outside);
     if (bounces_ >= 2) {
-      traceContinuation(*hit, toCamera, toCamera_m, state, rng, delays, indirect, outside);
+      traceContinuation(*hit, toCamera, toCamera_m, state, p.rng, p.delays, p.indirect,
+                        p.outside);
     }
   }
-  storeAverages(direct, indirect, floats, outside, out);
+  storeAverages(p.direct, p.indirect, p.floats, p.outside, out);
 }
 
 }  // namespace tofsim::reference

@@ -76,7 +76,8 @@ class PathIntegrator {
   /// too is averaged over the pixel's paths, each of which draws the hit's
   /// delay once for its direct light and its continuation.
   void renderDelayedCentre(const SurfaceHit& hit, const glm::vec3& toCamera, double toCamera_m,
-                           uint64_t pixel, PixelOutput& out, std::vector<double>& scratch) const;
+                           int32_t x, int32_t y, PixelOutput& out,
+                           std::vector<double>& scratch) const;
   /// Adds the direct light reflected at `hit` towards the camera (unit
   /// toCamera), seen through the path's state (its weight and delays, the
   /// hit's own included), to `histogram` (T x 3).
@@ -103,6 +104,24 @@ class PathIntegrator {
   /// The generator of pixel `pixel`'s delays: a stream of its own, so that
   /// the directions a path draws do not depend on its delays.
   Pcg32 delayStream(uint64_t pixel) const;
+  /// One pixel's paths' sums (direct, indirect: `floats` doubles each, in
+  /// the caller's scratch, zeroed), the light off the axis, and the pixel's
+  /// two generators (its paths' and its delays').
+  struct PixelSums {
+    std::size_t floats;
+    double* direct;
+    double* indirect;
+    AxisLoss outside;
+    Pcg32 rng;
+    Pcg32 delays;
+  };
+  /// Every pixel's preamble (area, medium, delayed centre, point indirect):
+  /// the depth image's value (the centre ray's first surface, as the
+  /// G-buffer's), the zeroed sums in `scratch`, the generators.
+  PixelSums beginPixel(int32_t x, int32_t y, PixelOutput& out, std::vector<double>& scratch) const;
+  /// A path's state as it leaves the light: the light's own surface's delay
+  /// (and re-emission) drawn once, for every vertex the path lights.
+  PathState startPath(Pcg32& delays) const;
 
   // The medium that fills the scene (issue 42; MediumPaths.cpp). Without one
   // (!medium.present()) none of these runs: the bytes of before.
@@ -114,9 +133,8 @@ class PathIntegrator {
   /// One path from `eye` along unit `direction`: up to bounces_ vertices,
   /// each a surface or a medium event (free-flight sampling), each lit by
   /// next-event estimation through the medium; vertex 1's light goes to
-  /// `direct`, the later ones' to `indirect`.
-  void traceMediumPath(const glm::vec3& eye, const glm::vec3& direction, Pcg32& rng,
-                       Pcg32& delays, double* direct, double* indirect, AxisLoss& outside) const;
+  /// the pixel's `direct`, the later ones' to its `indirect`.
+  void traceMediumPath(const glm::vec3& eye, const glm::vec3& direction, PixelSums& pixel) const;
   /// Adds the light that medium point p scatters towards the unit direction
   /// toViewer straight from the light (phase function x I x profile / d^2 x
   /// transmittance, one shadow ray) x `weight` (the point's T sigma_s over
