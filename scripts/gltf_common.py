@@ -1,5 +1,5 @@
 """Shared by the scene generators (make_cornell_box.py, make_corner.py,
-make_glossy_floor.py): vector helpers, the document with its materials, vec3
+make_glossy_floor.py, and through gltf_writer.py the quad scenes): vector helpers, the document with its materials, vec3
 accessors, quads as meshes, a look-at camera, a node's translation animation,
 embedding the binary buffer and writing the .gltf atomically."""
 
