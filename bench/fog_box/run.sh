@@ -10,6 +10,8 @@
 # relative L1). Last, the reference's wall time at IR's error, interpolated
 # in log-log between the two counts around it (extrapolated as error ~
 # 1 / sqrt(time) from the nearest count outside the range), over IR's.
+# A truth already in OUTDIR (OUTDIR/truth) is reused: rerunning into the same
+# folder after a change to IR costs only the sweep and IR.
 # Usage: bench/fog_box/run.sh [RES=32] [TRUTH_SPP=32768] [SPPS="16 64 256 1024 4096"]
 #        [BACKENDS="cpu gl"] [OUTDIR]   (PYTHON: a python3 with numpy, /usr/bin/python3)
 set -euo pipefail
