@@ -1,7 +1,8 @@
-"""Shared by the scene generators (make_cornell_box.py, make_corner.py,
-make_glossy_floor.py): vector helpers, the document with its materials, vec3
-accessors, quads as meshes, a look-at camera, a node's translation animation,
-embedding the binary buffer and writing the .gltf atomically."""
+"""Shared by the scene generators (make_cornell_box.py, make_glossy_floor.py,
+make_nlos_letter.py, and the quad scenes through gltf_writer.py): vector
+helpers, the document with its materials, vec3 accessors, quads as meshes, a
+look-at camera, a node's translation animation, embedding the binary buffer
+and writing the .gltf atomically."""
 
 import base64
 import json

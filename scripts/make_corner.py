@@ -16,9 +16,8 @@ vertical fov. 6 triangles.
 Standard library only. Usage: python3 scripts/make_corner.py [out.gltf]
 """
 
-import math
-
-from gltf_common import add_camera, add_quads, finish, look_rotation, new_gltf, sub, write_gltf
+from gltf_common import look_rotation, sub
+from gltf_writer import write_quad_scene
 
 MATERIALS = [("wall_grey", (0.7, 0.7, 0.7)), ("floor_grey", (0.5, 0.5, 0.5))]
 
@@ -34,18 +33,10 @@ CAMERA_TARGET = (0.0, 0.6, 0.0)
 FOV_Y_DEG = 50.0
 
 
-def build_gltf():
-    blob = bytearray()
-    materials = [(name, rgb, 0.0, 1.0) for name, rgb in MATERIALS]
-    gltf = new_gltf("tofsim scripts/make_corner.py", "corner", materials)
-    add_quads(gltf, blob, QUADS)
-    add_camera(gltf, "corner_camera", math.radians(FOV_Y_DEG), CAMERA_POS,
-               look_rotation(sub(CAMERA_TARGET, CAMERA_POS)))
-    return finish(gltf, blob)
-
-
 def main():
-    write_gltf(build_gltf(), "corner.gltf")
+    write_quad_scene("corner.gltf", "make_corner.py", "corner", MATERIALS, QUADS,
+                     ("corner_camera", FOV_Y_DEG, CAMERA_POS,
+                      look_rotation(sub(CAMERA_TARGET, CAMERA_POS))))
 
 
 if __name__ == "__main__":

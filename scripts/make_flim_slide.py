@@ -21,9 +21,8 @@ vertical fov. 6 triangles.
 Standard library only. Usage: python3 scripts/make_flim_slide.py [out.gltf]
 """
 
-import math
-
-from gltf_common import add_camera, add_quads, finish, look_rotation, new_gltf, write_gltf
+from gltf_common import look_rotation
+from gltf_writer import rect_facing_z, write_quad_scene
 
 MATERIALS = [("background", (0.5, 0.5, 0.5)), ("dye_short", (0.1, 0.6, 0.1)),
              ("dye_long", (0.1, 0.6, 0.1))]
@@ -33,36 +32,21 @@ EXTRAS = {"dye_long": {"scattering_delay": {"model": "exponential", "lifetime": 
                                             "fraction": 0.9}}}
 
 
-def patch(x0, x1, y0, y1, z):
-    return [(x0, y0, z), (x1, y0, z), (x1, y1, z), (x0, y1, z)]
-
-
 # name, material, quad corners counter-clockwise seen from the lit side, normal
 QUADS = [
-    ("card", 0, patch(-0.05, 0.05, -0.05, 0.05, 0.0), (0, 0, 1)),
-    ("dye_a", 1, patch(-0.04, -0.01, -0.015, 0.015, 0.001), (0, 0, 1)),
-    ("dye_b", 2, patch(0.01, 0.04, -0.015, 0.015, 0.001), (0, 0, 1)),
+    ("card", 0, rect_facing_z(-0.05, 0.05, -0.05, 0.05, 0.0), (0, 0, 1)),
+    ("dye_a", 1, rect_facing_z(-0.04, -0.01, -0.015, 0.015, 0.001), (0, 0, 1)),
+    ("dye_b", 2, rect_facing_z(0.01, 0.04, -0.015, 0.015, 0.001), (0, 0, 1)),
 ]
 
 CAMERA_POS = (0.0, 0.0, 0.2)
 FOV_Y_DEG = 30.0
 
 
-def build_gltf():
-    blob = bytearray()
-    materials = [(name, rgb, 0.0, 1.0) for name, rgb in MATERIALS]
-    gltf = new_gltf("tofsim scripts/make_flim_slide.py", "flim_slide", materials)
-    for m in gltf["materials"]:
-        if m["name"] in EXTRAS:
-            m["extras"] = EXTRAS[m["name"]]
-    add_quads(gltf, blob, QUADS)
-    add_camera(gltf, "flim_camera", math.radians(FOV_Y_DEG), CAMERA_POS,
-               look_rotation((0.0, 0.0, -1.0)))
-    return finish(gltf, blob)
-
-
 def main():
-    write_gltf(build_gltf(), "flim_slide.gltf")
+    write_quad_scene("flim_slide.gltf", "make_flim_slide.py", "flim_slide", MATERIALS, QUADS,
+                     ("flim_camera", FOV_Y_DEG, CAMERA_POS, look_rotation((0.0, 0.0, -1.0))),
+                     extras=EXTRAS)
 
 
 if __name__ == "__main__":

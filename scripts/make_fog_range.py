@@ -19,42 +19,26 @@ Lambertian (metallic 0, roughness 1); the fog itself is the config's
 Standard library only. Usage: python3 scripts/make_fog_range.py [out.gltf]
 """
 
-import math
-
-from gltf_common import add_camera, add_quads, finish, look_rotation, new_gltf, write_gltf
+from gltf_common import look_rotation
+from gltf_writer import rect_facing_z, write_quad_scene
 
 MATERIALS = [("asphalt", (0.2, 0.2, 0.2)), ("board", (0.8, 0.8, 0.8))]
-
-
-def board(x0, x1, y0, y1, z):
-    """A quad facing +z (the camera)."""
-    return [(x0, y0, z), (x1, y0, z), (x1, y1, z), (x0, y1, z)]
-
 
 # name, material, quad corners counter-clockwise seen from the lit side, normal
 QUADS = [
     ("floor", 0, [(-3.0, 0.0, 0.0), (3.0, 0.0, 0.0), (3.0, 0.0, -16.0), (-3.0, 0.0, -16.0)],
      (0, 1, 0)),
-    ("near_board", 1, board(-1.3, -0.1, 0.4, 1.6, -6.0), (0, 0, 1)),
-    ("far_board", 1, board(0.1, 1.5, 0.2, 1.8, -12.0), (0, 0, 1)),
+    ("near_board", 1, rect_facing_z(-1.3, -0.1, 0.4, 1.6, -6.0), (0, 0, 1)),
+    ("far_board", 1, rect_facing_z(0.1, 1.5, 0.2, 1.8, -12.0), (0, 0, 1)),
 ]
 
 CAMERA_POS = (0.0, 1.0, 0.0)
 FOV_Y_DEG = 24.0
 
 
-def build_gltf():
-    blob = bytearray()
-    materials = [(name, rgb, 0.0, 1.0) for name, rgb in MATERIALS]
-    gltf = new_gltf("tofsim scripts/make_fog_range.py", "fog_range", materials)
-    add_quads(gltf, blob, QUADS)
-    add_camera(gltf, "fog_camera", math.radians(FOV_Y_DEG), CAMERA_POS,
-               look_rotation((0.0, 0.0, -1.0)))
-    return finish(gltf, blob)
-
-
 def main():
-    write_gltf(build_gltf(), "fog_range.gltf")
+    write_quad_scene("fog_range.gltf", "make_fog_range.py", "fog_range", MATERIALS, QUADS,
+                     ("fog_camera", FOV_Y_DEG, CAMERA_POS, look_rotation((0.0, 0.0, -1.0))))
 
 
 if __name__ == "__main__":
