@@ -1,0 +1,42 @@
+#pragma once
+// The parts of the viewer's page, each read from one kind of output and
+// added to the page's data (a JSON object; viewer.html draws it):
+//   "volume": the time-resolved volume (a camera's transient, an NLOS H), its
+//     time axis and downsampling; "image": its sum over time;
+//   "maps": 2-D images with a colour bar (depth, every sensor map);
+//   "lidars": lidar range images (issue 43), maps as makeMap makes them,
+//     drawn in their own section: a lidar collector adds itself to the list
+//     in ViewerPage.cpp.
+//   "notes": what was downsampled or left out, and why.
+
+#include <cstddef>
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+namespace tofsim::viewer {
+
+/// transient.json + transient.npy (or capture.h5): the volume and the steady
+/// image. False, adding nothing, when the folder has no transient.json.
+bool addCameraVolume(const std::filesystem::path& folder, nlohmann::json& page);
+
+/// H.json + H.npy of an NLOS capture: H as a volume whose pixels are the
+/// sensor points (an exhaustive scan's laser points summed). False when the
+/// folder has no H.json.
+bool addNlosVolume(const std::filesystem::path& folder, nlohmann::json& page);
+
+/// depth.npy and every sensor map under sensors/ (Images and y-x Arrays).
+void addMaps(const std::filesystem::path& folder, nlohmann::json& page);
+
+/// One map for the page: `values` (height, width), averaged over blocks that
+/// fit `budget` values, packed as uint16 between its finite extremes.
+nlohmann::json makeMap(const std::string& group, const std::string& name, const std::string& unit,
+                       const std::string& description, const std::vector<std::string>& axes,
+                       std::size_t height, std::size_t width, const std::vector<float>& values,
+                       std::size_t budget);
+
+/// A JSON file of an output folder, parsed; InputError naming it otherwise.
+nlohmann::json readJsonFile(const std::filesystem::path& path);
+
+}  // namespace tofsim::viewer
