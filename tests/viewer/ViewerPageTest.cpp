@@ -136,7 +136,7 @@ TEST_F(ViewerPageTest, AFolderThatIsNotAnOutputIsALocatedErrorAndWritesNothing) 
   std::ofstream(dir_ / "damaged" / "transient.json") << "{\"time\": ";
   const CommandResult damaged = runCli("view " + (dir_ / "damaged").string());
   EXPECT_EQ(damaged.exitCode, 1);
-  EXPECT_NE(damaged.output.find("damaged/transient.json: not a JSON object"), std::string::npos)
+  EXPECT_NE(damaged.output.find("damaged/transient.json: not a tofsim transient.json"), std::string::npos)
       << damaged.output;
   fs::create_directories(dir_ / "nlos");
   std::ofstream(dir_ / "nlos" / "H.json")

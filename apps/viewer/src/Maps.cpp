@@ -40,22 +40,14 @@ std::vector<std::filesystem::path> sortedEntries(const std::filesystem::path& fo
   return entries;
 }
 
-std::vector<std::string> stringList(const nlohmann::json& meta, const char* key) {
-  const auto it = meta.find(key);
-  if (it == meta.end() || !it->is_array()) return {};
-  std::vector<std::string> out;
-  for (const auto& v : *it) out.push_back(v.is_string() ? v.get<std::string>() : v.dump());
-  return out;
-}
-
 // The maps of one sensor output: an image (y, x) or (y, x, c), or an array
 // whose last two axes are y and x (one map per leading index). Anything else
 // (histograms, raw sweeps) is listed in the notes, not drawn.
 void addOutputMaps(const std::filesystem::path& json, const std::string& sensor,
                    std::vector<MapSource>& maps, nlohmann::json& page) {
   const nlohmann::json meta = readJsonFile(json);
-  const std::string kind = meta.value("kind", std::string());
-  const std::string name = meta.value("name", json.stem().string());
+  const std::string kind = textOf(meta, "kind");
+  const std::string name = json.stem().string();
   std::filesystem::path npy = json;
   npy.replace_extension(".npy");
   std::error_code ec;
@@ -87,8 +79,8 @@ void addOutputMaps(const std::filesystem::path& json, const std::string& sensor,
   for (std::size_t s = 0; s < shown; ++s) {
     MapSource map{sensor,
                   name,
-                  meta.value("unit", std::string()),
-                  meta.value("description", std::string()),
+                  textOf(meta, "unit"),
+                  textOf(meta, "description"),
                   {axes[axes.size() - 2], axes.back()},
                   height,
                   width,
@@ -112,6 +104,19 @@ nlohmann::json readJsonFile(const std::filesystem::path& path) {
     throw InputError(FileLoc{path.string()}, "", "not a JSON object (a tofsim output's metadata)");
   }
   return json;
+}
+
+std::string textOf(const nlohmann::json& meta, const char* key) {
+  const auto it = meta.find(key);
+  return it != meta.end() && it->is_string() ? it->get<std::string>() : std::string();
+}
+
+std::vector<std::string> stringList(const nlohmann::json& meta, const char* key) {
+  const auto it = meta.find(key);
+  if (it == meta.end() || !it->is_array()) return {};
+  std::vector<std::string> out;
+  for (const auto& v : *it) out.push_back(v.is_string() ? v.get<std::string>() : v.dump());
+  return out;
 }
 
 nlohmann::json makeMap(const std::string& group, const std::string& name, const std::string& unit,

@@ -38,5 +38,9 @@ nlohmann::json makeMap(const std::string& group, const std::string& name, const 
 
 /// A JSON file of an output folder, parsed; InputError naming it otherwise.
 nlohmann::json readJsonFile(const std::filesystem::path& path);
+/// meta[key] when it is a string, else "" (a label: never an error).
+std::string textOf(const nlohmann::json& meta, const char* key);
+/// meta[key] when it is a list, each entry as text (a string, or its JSON).
+std::vector<std::string> stringList(const nlohmann::json& meta, const char* key);
 
 }  // namespace tofsim::viewer

@@ -25,11 +25,13 @@ bool isFile(const std::filesystem::path& path) {
 
 const nlohmann::json& timeOf(const nlohmann::json& meta, const std::filesystem::path& file) {
   const auto time = meta.find("time");
-  if (time == meta.end() || !time->is_object() || !time->contains("start_s") ||
-      !time->contains("bin_width_s") || !time->contains("start_m") ||
-      !time->contains("bin_width_m")) {
+  bool numbers = time != meta.end() && time->is_object();
+  for (const char* key : {"start_s", "bin_width_s", "start_m", "bin_width_m"}) {
+    numbers = numbers && time->contains(key) && (*time)[key].is_number();
+  }
+  if (!numbers) {
     throw InputError(FileLoc{file.string()}, "time",
-                     "no time axis (start_s, bin_width_s, start_m, bin_width_m)");
+                     "no time axis (numbers start_s, bin_width_s, start_m, bin_width_m)");
   }
   return *time;
 }
@@ -82,9 +84,9 @@ void noteReduction(const VolumeReducer& reducer, const std::string& what, nlohma
 bool addCameraVolume(const std::filesystem::path& folder, nlohmann::json& page) {
   const std::filesystem::path metaPath = folder / pipeline::files::kMetadata;
   if (!isFile(metaPath)) return false;
+  pipeline::SavedVolumeStream stream(folder, {});  // checks transient.json against the volume
   const nlohmann::json meta = readJsonFile(metaPath);
   const nlohmann::json& time = timeOf(meta, metaPath);
-  pipeline::SavedVolumeStream stream(folder, {});
   const sensors::VolumeShape& shape = stream.shape();
   const auto height = static_cast<std::size_t>(shape.height);
   const auto width = static_cast<std::size_t>(shape.width);
@@ -98,11 +100,11 @@ bool addCameraVolume(const std::filesystem::path& folder, nlohmann::json& page) 
       reducer.addPixel(p / width, p % width, values + i * bins * channels);
     }
   }
-  std::vector<std::string> names = meta.value("channels", std::vector<std::string>{});
+  std::vector<std::string> names = stringList(meta, "channels");
   names.resize(channels);
   nlohmann::json volume = volumeEntry(reducer, time, bins, names);
   volume["label"] = "transient";
-  volume["unit"] = meta.value("value_unit", std::string("W m^-2 sr^-1"));
+  volume["unit"] = textOf(meta, "value_unit");
   volume["axes"] = {"y", "x"};
   volume["source"] = pipeline::savedComponentName(folder, "transient");
   page["kind"] = "camera";
@@ -140,7 +142,7 @@ bool addNlosVolume(const std::filesystem::path& folder, nlohmann::json& page) {
   }
   nlohmann::json volume = volumeEntry(reducer, time, bins, {"H"});
   volume["label"] = lasers > 1 ? "H (the laser points summed)" : "H";
-  volume["unit"] = meta.value("value_unit", std::string("W m^-2 sr^-1"));
+  volume["unit"] = textOf(meta, "value_unit");
   volume["axes"] = {"sx", "sy"};
   volume["source"] = "H.npy";
   page["kind"] = "nlos";
