@@ -50,7 +50,7 @@ TEST_F(ViewerChromiumTest, AClickedPixelsPlottedHistogramEqualsTheNpy) {
     GTEST_SKIP() << "no chromium on PATH (apt-get install chromium, or set "
                     "TOFSIM_CHROMIUM): the page is not loaded in a browser";
   const fs::path out = dir_ / "render";
-  const CommandResult r = renderSmallCornell(out);
+  const CommandResult r = renderSmallCornell(out, "--set sensors=[]");
   ASSERT_EQ(r.exitCode, 0) << r.output;
   ASSERT_EQ(runCli("view " + out.string()).exitCode, 0);
   const io::NpyArray transient = io::readNpy(out / "transient.npy");  // (10, 12, 96, 3)

@@ -69,6 +69,10 @@ void addOutputMaps(const std::filesystem::path& json, const std::string& sensor,
   // Slices: the leading index of a y-x array, or the channel of an image.
   const std::size_t height = array.shape[imageChannels ? 0 : array.shape.size() - 2];
   const std::size_t width = array.shape[imageChannels ? 1 : array.shape.size() - 1];
+  if (height * width == 0) {
+    page["notes"].push_back("sensors/" + sensor + "/" + name + ".npy is empty: not drawn");
+    return;
+  }
   const std::size_t slices = array.data.size() / (height * width);
   const std::size_t shown = std::min(slices, kMaxSlices);
   if (shown < slices) {

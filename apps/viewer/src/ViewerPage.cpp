@@ -1,8 +1,10 @@
 #include "tofsim/viewer/ViewerPage.h"
 
+#include <algorithm>
 #include <map>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <vector>
 
 #include "Sections.h"
 #include "ViewerBudget.h"
@@ -32,6 +34,24 @@ std::string scriptSafeJson(const nlohmann::json& data) {
   return out;
 }
 
+// A batch's or a capture sequence's folder holds one output per subfolder:
+// the error names one to view instead.
+std::string subfolderHint(const std::filesystem::path& folder) {
+  std::vector<std::filesystem::path> outputs;
+  std::error_code ec;
+  for (const auto& entry : std::filesystem::directory_iterator(folder, ec)) {
+    const std::filesystem::path p = entry.path();
+    if (std::filesystem::is_regular_file(p / "transient.json", ec) ||
+        std::filesystem::is_regular_file(p / "H.json", ec)) {
+      outputs.push_back(p);
+    }
+  }
+  if (outputs.empty()) return "";
+  std::sort(outputs.begin(), outputs.end());
+  return "; its subfolders are outputs (" + std::to_string(outputs.size()) +
+         "): view one, e.g. tofsim view " + outputs.front().string();
+}
+
 nlohmann::json collectPage(const std::filesystem::path& folder) {
   std::error_code ec;
   if (!std::filesystem::is_directory(folder, ec)) {
@@ -46,7 +66,8 @@ nlohmann::json collectPage(const std::filesystem::path& folder) {
   if (!addCameraVolume(folder, page) && !addNlosVolume(folder, page)) {
     throw InputError(FileLoc{folder.string()}, "",
                      "not a tofsim output folder: it has neither transient.json (a camera "
-                     "render) nor H.json (an NLOS capture)");
+                     "render) nor H.json (an NLOS capture)" +
+                         subfolderHint(folder));
   }
   addMaps(folder, page);
   // Lidar range images (issue 43): a collector filling page["lidars"] with
