@@ -12,7 +12,11 @@ CLI::App* addView(CLI::App& app, ViewArgs& args) {
       "Write an output folder's steady image, transient, histograms and sensor maps as "
       "one self-contained HTML page (OUTDIR/view.html)");
   view->add_option("folder", args.folder, "Output folder of a render (camera or NLOS)")->required();
-  view->add_option("-o,--output", args.page, "The page's path (default: OUTDIR/view.html)");
+  // -o "" would silently mean the default: a usage error, as for render's -o.
+  view->add_option("-o,--output", args.page, "The page's path (default: OUTDIR/view.html)")
+      ->check(CLI::Validator(
+          [](const std::string& s) { return s.empty() ? "must not be empty" : std::string(); }, "",
+          "NOT_EMPTY"));
   return view;
 }
 

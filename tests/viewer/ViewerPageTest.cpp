@@ -79,7 +79,7 @@ TEST_F(ViewerPageTest, TheVolumeAndSteadyImageAreTheRendersOfEitherFormat) {
   }
 }
 
-TEST_F(ViewerPageTest, EverySensorMapIsDrawnWithItsUnitAndValues) {
+TEST_F(ViewerPageTest, EverySensorMapAndHistogramIsInThePage) {
   const nlohmann::json page = view("npy");
   std::vector<std::string> names;
   for (const auto& m : page["maps"])
@@ -99,6 +99,19 @@ TEST_F(ViewerPageTest, EverySensorMapIsDrawnWithItsUnitAndValues) {
     for (std::size_t i = 0; i < values.size(); ++i) {
       EXPECT_NEAR(values[i], depth.data[i], step / 2 + 1e-6 * std::fabs(depth.data[i])) << i;
     }
+  }
+  // A SPAD's counts (y, x, t): every pixel's histogram.
+  ASSERT_EQ(page["histograms"].size(), 1u);
+  const nlohmann::json& h = page["histograms"][0];
+  EXPECT_EQ(h["label"], "spad/spad_counts");
+  EXPECT_EQ(h["unit"], "counts");
+  EXPECT_EQ(h["full"], nlohmann::json({10, 12, 96}));
+  const io::NpyArray counts = io::readNpy(rendered("npy") / "sensors/spad/spad_counts.npy");
+  const std::vector<double> values = decoded(h);
+  ASSERT_EQ(values.size(), counts.data.size());
+  const double scale = h["scale"];
+  for (std::size_t i = 0; i < values.size(); ++i) {
+    ASSERT_NEAR(values[i], counts.data[i], halfTolerance(counts.data[i], scale)) << i;
   }
 }
 

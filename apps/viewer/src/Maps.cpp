@@ -10,6 +10,7 @@
 #include "PackedArray.h"
 #include "Sections.h"
 #include "ViewerBudget.h"
+#include "VolumeReducer.h"
 #include "tofsim/io/FileBytes.h"
 #include "tofsim/io/Npy.h"
 #include "tofsim/pipeline/OutputFileNames.h"
@@ -25,6 +26,13 @@ struct MapSource {
   std::vector<std::string> axes;
   std::size_t height = 0, width = 0;
   std::vector<float> values;
+};
+
+// A sensor array of axes (y, x, t) with its time axis: read once every
+// output is listed, so the arrays share their budget.
+struct HistogramSource {
+  std::string sensor, name, unit;
+  std::filesystem::path json, npy;
 };
 
 // Outputs of more slices than this show their first ones (a note says so).
@@ -44,7 +52,8 @@ std::vector<std::filesystem::path> sortedEntries(const std::filesystem::path& fo
 // whose last two axes are y and x (one map per leading index). Anything else
 // (histograms, raw sweeps) is listed in the notes, not drawn.
 void addOutputMaps(const std::filesystem::path& json, const std::string& sensor,
-                   std::vector<MapSource>& maps, nlohmann::json& page) {
+                   std::vector<MapSource>& maps, std::vector<HistogramSource>& histograms,
+                   nlohmann::json& page) {
   const nlohmann::json meta = readJsonFile(json);
   const std::string kind = textOf(meta, "kind");
   const std::string name = json.stem().string();
@@ -55,6 +64,10 @@ void addOutputMaps(const std::filesystem::path& json, const std::string& sensor,
   const std::vector<std::string> axes = stringList(meta, "axes");
   const bool yxLast = axes.size() >= 2 && axes[axes.size() - 2] == "y" && axes.back() == "x";
   const bool imageChannels = kind == "image" && axes.size() == 3;
+  if (kind == "array" && axes == std::vector<std::string>{"y", "x", "t"} && meta.contains("time")) {
+    histograms.push_back({sensor, name, textOf(meta, "unit"), json, npy});
+    return;
+  }
   if (!(kind == "image" && axes.size() == 2) && !yxLast && !imageChannels) {
     page["notes"].push_back("sensors/" + sensor + "/" + name + ".npy (" + kind + ", axes " +
                             nlohmann::json(axes).dump() + ") is not drawn: not a y-x map");
@@ -96,6 +109,38 @@ void addOutputMaps(const std::filesystem::path& json, const std::string& sensor,
     }
     if (slices > 1) map.name += "[" + std::to_string(s) + "]";
     maps.push_back(std::move(map));
+  }
+}
+
+// Each (y, x, t) array as a volume of one channel, the arrays sharing
+// kHistogramsValues.
+void addHistograms(const std::vector<HistogramSource>& sources, nlohmann::json& page) {
+  page["histograms"] = nlohmann::json::array();
+  for (const HistogramSource& source : sources) {
+    const nlohmann::json meta = readJsonFile(source.json);
+    const nlohmann::json& time = timeOf(meta, source.json);
+    const io::NpyArray array = io::readNpy(source.npy);
+    if (array.shape.size() != 3) {
+      throw InputError(FileLoc{source.npy.string()}, "",
+                       "shape " + nlohmann::json(array.shape).dump() + " is not the (y, x, t) of " +
+                           source.json.filename().string());
+    }
+    const std::size_t height = array.shape[0], width = array.shape[1], bins = array.shape[2];
+    VolumeReducer reducer(height, width, bins, 1, kHistogramsValues / sources.size());
+    for (std::size_t p = 0; p < height * width; ++p) {
+      reducer.addPixel(p / width, p % width, array.data.data() + p * bins);
+    }
+    nlohmann::json entry = volumeEntry(reducer, time, bins, {source.name});
+    entry["label"] = source.sensor + "/" + source.name;
+    entry["unit"] = source.unit;
+    const Reduction& r = reducer.reduction();
+    if (r.pixelBlock > 1 || r.binRun > 1) {
+      page["notes"].push_back(entry["label"].get<std::string>() + ": pixels averaged over " +
+                              std::to_string(r.pixelBlock) + " x " + std::to_string(r.pixelBlock) +
+                              " blocks, " + std::to_string(r.binRun) +
+                              " bins summed into one, to fit the page");
+    }
+    page["histograms"].push_back(std::move(entry));
   }
 }
 
@@ -142,6 +187,7 @@ nlohmann::json makeMap(const std::string& group, const std::string& name, const 
 
 void addMaps(const std::filesystem::path& folder, nlohmann::json& page) {
   std::vector<MapSource> maps;
+  std::vector<HistogramSource> histograms;
   std::error_code ec;
   const std::filesystem::path depth = folder / pipeline::files::kDepthNpy;
   if (std::filesystem::is_regular_file(depth, ec)) {
@@ -163,7 +209,7 @@ void addMaps(const std::filesystem::path& folder, nlohmann::json& page) {
       if (!std::filesystem::is_directory(sensor, ec)) continue;
       for (const auto& file : sortedEntries(sensor)) {
         if (file.extension() == ".json") {
-          addOutputMaps(file, sensor.filename().string(), maps, page);
+          addOutputMaps(file, sensor.filename().string(), maps, histograms, page);
         }
       }
     }
@@ -182,6 +228,7 @@ void addMaps(const std::filesystem::path& folder, nlohmann::json& page) {
     }
     page["maps"].push_back(std::move(map));
   }
+  addHistograms(histograms, page);
 }
 
 }  // namespace tofsim::viewer

@@ -4,6 +4,8 @@
 //   "volume": the time-resolved volume (a camera's transient, an NLOS H), its
 //     time axis and downsampling; "image": its sum over time;
 //   "maps": 2-D images with a colour bar (depth, every sensor map);
+//   "histograms": sensor arrays (y, x, t) (a SPAD's counts), volumes as
+//     "volume" is, each pixel's histogram plotted on a click;
 //   "lidars": lidar range images (issue 43), maps as makeMap makes them,
 //     drawn in their own section: a lidar collector adds itself to the list
 //     in ViewerPage.cpp.
@@ -26,8 +28,18 @@ bool addCameraVolume(const std::filesystem::path& folder, nlohmann::json& page);
 /// folder has no H.json.
 bool addNlosVolume(const std::filesystem::path& folder, nlohmann::json& page);
 
-/// depth.npy and every sensor map under sensors/ (Images and y-x Arrays).
+/// depth.npy and every sensor map under sensors/ (Images and y-x Arrays);
+/// sensor arrays of axes (y, x, t) with a time axis (a SPAD's counts) as
+/// "histograms": volumes of one channel, plotted beside the volume's on a click.
 void addMaps(const std::filesystem::path& folder, nlohmann::json& page);
+
+class VolumeReducer;
+/// The "time" object of an output's metadata; InputError naming `file` unless
+/// it has start_s, bin_width_s, start_m and bin_width_m as numbers.
+const nlohmann::json& timeOf(const nlohmann::json& meta, const std::filesystem::path& file);
+/// A reduced volume's entry: its values (float16) and its merged bins' axis.
+nlohmann::json volumeEntry(const VolumeReducer& reducer, const nlohmann::json& time,
+                           std::size_t bins, const std::vector<std::string>& channels);
 
 /// One map for the page: `values` (height, width), averaged over blocks that
 /// fit `budget` values, packed as uint16 between its finite extremes.

@@ -1,7 +1,7 @@
 #pragma once
 // What the viewer's page may hold, in values of 2 bytes each (base64 makes
-// each 2.67 characters of text). Together 6.25 Mi values = 12.5 MiB of data,
-// 16.7 MiB of text: the page stays under kPageBytes whatever the render's size.
+// each 2.67 characters of text). Together 8.25 Mi values = 16.5 MiB of data,
+// 22 MiB of text: the page stays under kPageBytes whatever the render's size.
 
 #include <cstddef>
 
@@ -14,8 +14,10 @@ inline constexpr std::size_t kImageValues = std::size_t{768} << 10;  // 512 x 51
 /// One map (a sensor image, depth), and all maps together.
 inline constexpr std::size_t kMapValues = std::size_t{256} << 10;  // 512 x 512
 inline constexpr std::size_t kMapsValues = std::size_t{1536} << 10;
+/// The sensors' histogram arrays (y, x, t) together (a SPAD's counts).
+inline constexpr std::size_t kHistogramsValues = std::size_t{2} << 20;
 /// The page's size that follows from the budgets (base64: 4 characters per 3
 /// bytes), plus the template and the metadata: checked after writing.
-inline constexpr std::size_t kPageBytes = std::size_t{18} << 20;
+inline constexpr std::size_t kPageBytes = std::size_t{24} << 20;
 
 }  // namespace tofsim::viewer

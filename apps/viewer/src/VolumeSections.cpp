@@ -23,6 +23,32 @@ bool isFile(const std::filesystem::path& path) {
   return std::filesystem::is_regular_file(path, ec);
 }
 
+nlohmann::json imageEntry(const VolumeReducer& reducer, std::size_t channels,
+                          const std::string& label) {
+  const std::size_t block =
+      planPixelBlock(reducer.height(), reducer.width(), channels, kImageValues);
+  nlohmann::json image =
+      packFloat16(blockMean(reducer.timeSum(), reducer.height(), reducer.width(), channels, block));
+  image["label"] = label;
+  image["h"] = reducedSize(reducer.height(), block);
+  image["w"] = reducedSize(reducer.width(), block);
+  image["channels"] = channels;
+  image["pixel_block"] = block;
+  return image;
+}
+
+void noteReduction(const VolumeReducer& reducer, const std::string& what, nlohmann::json& page) {
+  const Reduction& r = reducer.reduction();
+  if (r.pixelBlock == 1 && r.binRun == 1) return;
+  page["notes"].push_back(what + " downsampled to fit the page (" +
+                          std::to_string(kVolumeValues >> 20) +
+                          " Mi values): pixels averaged over " + std::to_string(r.pixelBlock) +
+                          " x " + std::to_string(r.pixelBlock) + " blocks, " +
+                          std::to_string(r.binRun) + " bins summed into one");
+}
+
+}  // namespace
+
 const nlohmann::json& timeOf(const nlohmann::json& meta, const std::filesystem::path& file) {
   const auto time = meta.find("time");
   bool numbers = time != meta.end() && time->is_object();
@@ -54,32 +80,6 @@ nlohmann::json volumeEntry(const VolumeReducer& reducer, const nlohmann::json& t
   v["bin_width_m"] = time["bin_width_m"].get<double>() * run;
   return v;
 }
-
-nlohmann::json imageEntry(const VolumeReducer& reducer, std::size_t channels,
-                          const std::string& label) {
-  const std::size_t block =
-      planPixelBlock(reducer.height(), reducer.width(), channels, kImageValues);
-  nlohmann::json image =
-      packFloat16(blockMean(reducer.timeSum(), reducer.height(), reducer.width(), channels, block));
-  image["label"] = label;
-  image["h"] = reducedSize(reducer.height(), block);
-  image["w"] = reducedSize(reducer.width(), block);
-  image["channels"] = channels;
-  image["pixel_block"] = block;
-  return image;
-}
-
-void noteReduction(const VolumeReducer& reducer, const std::string& what, nlohmann::json& page) {
-  const Reduction& r = reducer.reduction();
-  if (r.pixelBlock == 1 && r.binRun == 1) return;
-  page["notes"].push_back(what + " downsampled to fit the page (" +
-                          std::to_string(kVolumeValues >> 20) +
-                          " Mi values): pixels averaged over " + std::to_string(r.pixelBlock) +
-                          " x " + std::to_string(r.pixelBlock) + " blocks, " +
-                          std::to_string(r.binRun) + " bins summed into one");
-}
-
-}  // namespace
 
 bool addCameraVolume(const std::filesystem::path& folder, nlohmann::json& page) {
   const std::filesystem::path metaPath = folder / pipeline::files::kMetadata;

@@ -4,7 +4,7 @@
 // the transient, a clicked pixel's histogram (time in ns and metres of path),
 // every sensor map with its colour bar; for an NLOS capture H's time slices.
 // Scripts and data are inline (no network); what would not fit the page's
-// budget (ViewerBudget.h: under 18 MiB) is downsampled, and the page says how.
+// budget (ViewerBudget.h: under 24 MiB) is downsampled, and the page says how.
 
 #include <cstddef>
 #include <filesystem>
