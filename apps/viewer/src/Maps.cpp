@@ -214,6 +214,17 @@ void addMaps(const std::filesystem::path& folder, nlohmann::json& page) {
       }
     }
   }
+  // Counts bounded too: each map and histogram adds its labels to the page.
+  if (maps.size() > kMaxMaps) {
+    page["notes"].push_back(std::to_string(maps.size()) + " maps: the first " +
+                            std::to_string(kMaxMaps) + " are drawn");
+    maps.resize(kMaxMaps);
+  }
+  if (histograms.size() > kMaxHistograms) {
+    page["notes"].push_back(std::to_string(histograms.size()) + " (y, x, t) arrays: the first " +
+                            std::to_string(kMaxHistograms) + " are plotted");
+    histograms.resize(kMaxHistograms);
+  }
   // Every map gets an equal share of the maps' budget, at most kMapValues.
   const std::size_t share =
       maps.empty() ? kMapValues : std::min(kMapValues, kMapsValues / maps.size());

@@ -16,6 +16,10 @@ inline constexpr std::size_t kMapValues = std::size_t{256} << 10;  // 512 x 512
 inline constexpr std::size_t kMapsValues = std::size_t{1536} << 10;
 /// The sensors' histogram arrays (y, x, t) together (a SPAD's counts).
 inline constexpr std::size_t kHistogramsValues = std::size_t{2} << 20;
+/// At most this many maps and (y, x, t) arrays (their labels and notes
+/// are the page's only text that grows with the folder).
+inline constexpr std::size_t kMaxMaps = 256;
+inline constexpr std::size_t kMaxHistograms = 16;
 /// The page's size that follows from the budgets (base64: 4 characters per 3
 /// bytes), plus the template and the metadata: checked after writing.
 inline constexpr std::size_t kPageBytes = std::size_t{24} << 20;
