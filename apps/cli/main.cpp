@@ -22,6 +22,7 @@
 #include "tofsim/pipeline/Version.h"
 #include "tofsim/util/Error.h"
 #include "tofsim/util/Interrupt.h"
+#include "ViewCommand.h"
 
 namespace {
 
@@ -134,10 +135,11 @@ struct Args {
   std::vector<std::string> sets;
   bool quiet = false, strict = false, dryRun = false, verify = false;
   int jobs = 1;
+  cli::ViewArgs view;
 };
 
 struct Commands {
-  CLI::App *render, *sense, *compare, *validate, *batch, *info, *presets;
+  CLI::App *render, *sense, *compare, *validate, *batch, *info, *presets, *view;
 };
 
 const char* kStrictHelp =
@@ -253,6 +255,7 @@ int dispatch(const Commands& c, const Args& a) {
   }
   if (c.info->parsed()) return runInfoCommand(a.scenePath);
   if (c.presets->parsed()) return runPresetsCommand(a.presetName);
+  if (c.view->parsed()) return cli::runViewCommand(a.view);
   return 2;
 }
 
@@ -265,7 +268,7 @@ int main(int argc, char** argv) {
   Args args;
   const Commands commands{addRender(app, args),   addSense(app, args), addCompare(app, args),
                           addValidate(app, args), addBatch(app, args), addInfo(app, args),
-                          addPresets(app, args)};
+                          addPresets(app, args),  cli::addView(app, args.view)};
   app.footer(kDocsFooter);
   for (CLI::App* sub : app.get_subcommands({})) sub->footer(kDocsFooter);
   try {

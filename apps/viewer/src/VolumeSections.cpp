@@ -1,0 +1,155 @@
+// The page's volume and image: a camera's transient (streamed a run of pixels
+// at a time: never held whole) or an NLOS capture's H.
+
+#include <algorithm>
+#include <string>
+#include <vector>
+
+#include "PackedArray.h"
+#include "Sections.h"
+#include "ViewerBudget.h"
+#include "VolumeReducer.h"
+#include "tofsim/io/Npy.h"
+#include "tofsim/pipeline/OutputFileNames.h"
+#include "tofsim/pipeline/SavedVolume.h"
+#include "tofsim/util/Error.h"
+
+namespace tofsim::viewer {
+
+namespace {
+
+bool isFile(const std::filesystem::path& path) {
+  std::error_code ec;
+  return std::filesystem::is_regular_file(path, ec);
+}
+
+nlohmann::json imageEntry(const VolumeReducer& reducer, std::size_t channels,
+                          const std::string& label) {
+  const std::size_t block =
+      planPixelBlock(reducer.height(), reducer.width(), channels, kImageValues);
+  nlohmann::json image =
+      packFloat16(blockMean(reducer.timeSum(), reducer.height(), reducer.width(), channels, block));
+  image["label"] = label;
+  image["h"] = reducedSize(reducer.height(), block);
+  image["w"] = reducedSize(reducer.width(), block);
+  image["channels"] = channels;
+  image["pixel_block"] = block;
+  return image;
+}
+
+void noteReduction(const VolumeReducer& reducer, const std::string& what, nlohmann::json& page) {
+  const Reduction& r = reducer.reduction();
+  if (r.pixelBlock == 1 && r.binRun == 1) return;
+  page["notes"].push_back(what + " downsampled to fit the page (" +
+                          std::to_string(kVolumeValues >> 20) +
+                          " Mi values): pixels averaged over " + std::to_string(r.pixelBlock) +
+                          " x " + std::to_string(r.pixelBlock) + " blocks, " +
+                          std::to_string(r.binRun) + " bins summed into one");
+}
+
+}  // namespace
+
+const nlohmann::json& timeOf(const nlohmann::json& meta, const std::filesystem::path& file) {
+  const auto time = meta.find("time");
+  bool numbers = time != meta.end() && time->is_object();
+  for (const char* key : {"start_s", "bin_width_s", "start_m", "bin_width_m"}) {
+    numbers = numbers && time->contains(key) && (*time)[key].is_number();
+  }
+  if (!numbers) {
+    throw InputError(FileLoc{file.string()}, "time",
+                     "no time axis (numbers start_s, bin_width_s, start_m, bin_width_m)");
+  }
+  return *time;
+}
+
+// The volume's entry: its reduced values and the axis of its merged bins.
+nlohmann::json volumeEntry(const VolumeReducer& reducer, const nlohmann::json& time,
+                           std::size_t bins, const std::vector<std::string>& channels) {
+  const auto run = static_cast<double>(reducer.reduction().binRun);
+  nlohmann::json v = packFloat16(reducer.reduced());
+  v["full"] = {reducer.height(), reducer.width(), bins};
+  v["h"] = reducer.reducedHeight();
+  v["w"] = reducer.reducedWidth();
+  v["bins"] = reducer.reducedBins();
+  v["channels"] = channels;
+  v["pixel_block"] = reducer.reduction().pixelBlock;
+  v["bin_run"] = reducer.reduction().binRun;
+  v["start_s"] = time["start_s"];
+  v["bin_width_s"] = time["bin_width_s"].get<double>() * run;
+  v["start_m"] = time["start_m"];
+  v["bin_width_m"] = time["bin_width_m"].get<double>() * run;
+  return v;
+}
+
+bool addCameraVolume(const std::filesystem::path& folder, nlohmann::json& page) {
+  const std::filesystem::path metaPath = folder / pipeline::files::kMetadata;
+  if (!isFile(metaPath)) return false;
+  pipeline::SavedVolumeStream stream(folder, {});  // checks transient.json against the volume
+  const nlohmann::json meta = readJsonFile(metaPath);
+  const nlohmann::json& time = timeOf(meta, metaPath);
+  const sensors::VolumeShape& shape = stream.shape();
+  const auto height = static_cast<std::size_t>(shape.height);
+  const auto width = static_cast<std::size_t>(shape.width);
+  const auto bins = static_cast<std::size_t>(shape.axis.bins);
+  const auto channels = static_cast<std::size_t>(shape.channels);
+  VolumeReducer reducer(height, width, bins, channels, kVolumeValues);
+  while (const std::size_t run = stream.read(std::max<std::size_t>(width, 1))) {
+    const float* values = stream.values("transient");
+    for (std::size_t i = 0; i < run; ++i) {
+      const std::size_t p = stream.firstPixel() + i;
+      reducer.addPixel(p / width, p % width, values + i * bins * channels);
+    }
+  }
+  std::vector<std::string> names = stringList(meta, "channels");
+  names.resize(channels);
+  nlohmann::json volume = volumeEntry(reducer, time, bins, names);
+  volume["label"] = "transient";
+  volume["unit"] = textOf(meta, "value_unit");
+  volume["axes"] = {"y", "x"};
+  volume["source"] = pipeline::savedComponentName(folder, "transient");
+  page["kind"] = "camera";
+  page["volume"] = std::move(volume);
+  page["image"] = imageEntry(reducer, channels, "steady (the transient summed over time)");
+  noteReduction(reducer, "The transient", page);
+  return true;
+}
+
+bool addNlosVolume(const std::filesystem::path& folder, nlohmann::json& page) {
+  const std::filesystem::path metaPath = folder / "H.json";
+  if (!isFile(metaPath)) return false;
+  const nlohmann::json meta = readJsonFile(metaPath);
+  const nlohmann::json& time = timeOf(meta, metaPath);
+  const std::filesystem::path hPath = folder / "H.npy";
+  const io::NpyArray h = io::readNpy(hPath);
+  if (h.shape.size() != 3 && h.shape.size() != 5) {
+    throw InputError(FileLoc{hPath.string()}, "",
+                     "H has " + std::to_string(h.shape.size()) +
+                         " axes; an NLOS capture's has 3 (t, sx, sy) or 5 (t, lx, ly, sx, sy)");
+  }
+  const std::size_t bins = h.shape[0], sx = h.shape[h.shape.size() - 2], sy = h.shape.back();
+  const std::size_t lasers = h.shape.size() == 5 ? h.shape[1] * h.shape[2] : 1;
+  VolumeReducer reducer(sx, sy, bins, 1, kVolumeValues);
+  std::vector<float> histogram(bins);
+  for (std::size_t x = 0; x < sx; ++x) {
+    for (std::size_t y = 0; y < sy; ++y) {
+      std::fill(histogram.begin(), histogram.end(), 0.0f);
+      for (std::size_t t = 0; t < bins; ++t) {
+        for (std::size_t l = 0; l < lasers; ++l)
+          histogram[t] += h.data[((t * lasers + l) * sx + x) * sy + y];
+      }
+      reducer.addPixel(x, y, histogram.data());
+    }
+  }
+  nlohmann::json volume = volumeEntry(reducer, time, bins, {"H"});
+  volume["label"] = lasers > 1 ? "H (the laser points summed)" : "H";
+  volume["unit"] = textOf(meta, "value_unit");
+  volume["axes"] = {"sx", "sy"};
+  volume["source"] = "H.npy";
+  page["kind"] = "nlos";
+  page["volume"] = std::move(volume);
+  page["image"] = imageEntry(reducer, 1, "H summed over time (rows sx, columns sy)");
+  noteReduction(reducer, "H", page);
+  return true;
+}
+
+}  // namespace tofsim::viewer
