@@ -50,14 +50,14 @@ TEST(NlosPicturesTest, LaserPointsAndLongAxesAreSummed) {
   const auto at = [](std::size_t t, std::size_t lx, std::size_t sx, std::size_t sy) {
     return (((t * 2 + lx) * 1 + 0) * 3 + sx) * 2 + sy;
   };
-  v.H[at(4001, 0, 2, 1)] = 1.0f;
-  v.H[at(4002, 1, 2, 1)] = 3.0f;
+  v.H[at(4000, 0, 2, 1)] = 1.0f;  // bins 3999 .. 4001 make row 1333
+  v.H[at(4001, 1, 2, 1)] = 3.0f;
   EXPECT_EQ(nlosPictureBinsPerRow(5000), 3u);
   const std::vector<Image> p = nlosProjections(v);
   EXPECT_EQ(p[0].at(0, 2, 0), 4.0f);
   EXPECT_EQ(p[1].height, 1667);
-  EXPECT_EQ(p[1].at(4001 / 3, 2, 0), 4.0f);
-  EXPECT_EQ(p[2].at(4001 / 3, 1, 0), 4.0f);
+  EXPECT_EQ(p[1].at(1333, 2, 0), 4.0f);
+  EXPECT_EQ(p[2].at(1333, 1, 0), 4.0f);
 }
 
 }  // namespace

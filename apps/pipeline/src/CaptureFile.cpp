@@ -220,18 +220,15 @@ void CaptureFile::addSensorFiles(const std::filesystem::path& directory,
   }
 }
 
-// A sensor array whose axes begin y, x over the image gets the pixel
-// scales; its t axis the t scale where it is the render's own time axis
-// (a sensor's instrument window of other bins keeps its axis unscaled).
+// A sensor array's axes named y, x, t or c get the scale of that name where
+// they have its length; t only where it is the render's own time axis (a
+// sensor's instrument window of other bins keeps its axis unscaled).
 void CaptureFile::attachSensorScales(const std::string& dataset, const io::NpyShape& shape,
                                      const std::string& jsonText) {
   const nlohmann::json j = nlohmann::json::parse(jsonText, nullptr, false);
   if (!j.is_object() || !j.contains("axes") || !j.at("axes").is_array() || height_ == 0) return;
   const nlohmann::json& axes = j.at("axes");
-  if (axes.size() != shape.size() || shape.size() < 2 || axes[0] != "y" || axes[1] != "x" ||
-      shape[0] != height_ || shape[1] != width_) {
-    return;
-  }
+  if (axes.size() != shape.size()) return;
   bool sameTime = !timeJson_.empty() && j.contains("time") && j.at("time").is_object();
   if (sameTime) {
     const nlohmann::json render = nlohmann::json::parse(timeJson_), own = j.at("time");
@@ -240,11 +237,12 @@ void CaptureFile::attachSensorScales(const std::string& dataset, const io::NpySh
           sameTime && own.contains(key) && render.contains(key) && own.at(key) == render.at(key);
     }
   }
-  std::vector<std::string> more;
-  for (std::size_t a = 2; a < axes.size(); ++a) {
-    more.push_back(axes[a] == "t" && sameTime ? "t" : axes[a] == "c" && shape[a] == 3 ? "c" : "");
+  for (std::size_t a = 0; a < axes.size(); ++a) {
+    const bool scaled = (axes[a] == "y" && shape[a] == height_) ||
+                        (axes[a] == "x" && shape[a] == width_) || (axes[a] == "t" && sameTime) ||
+                        (axes[a] == "c" && shape[a] == capture::kChannels);
+    if (scaled) writer_.attachScale(dataset, static_cast<unsigned>(a), axes[a].get<std::string>());
   }
-  attachScales(dataset, height_, width_, more);
 }
 
 void CaptureFile::commit() { writer_.commit(); }

@@ -15,7 +15,8 @@
 // scales (what netCDF-4 readers and xarray take as coordinates): y and x
 // (pixel row and column), t (each bin's leading edge, s) and c (channel),
 // attached to every dataset's axes they describe: the volumes', steady's,
-// depth's, and a sensor array's y, x and, on the render's own time axis, t.
+// depth's, and a sensor array's axes of those names and lengths (t only on
+// the render's own time axis).
 
 #include <filesystem>
 #include <memory>
@@ -63,7 +64,8 @@ class CaptureFile {
   /// and the scales `more` (by name, "" for none) to the axes after them.
   void attachScales(const std::string& dataset, std::size_t height, std::size_t width,
                     const std::vector<std::string>& more);
-  /// attachScales for the sensor array `dataset` of `shape` described by `jsonText`.
+  /// The scales of the sensor array `dataset` of `shape` described by
+  /// `jsonText`: each axis its JSON names y, x, t or c, of the scale's length.
   void attachSensorScales(const std::string& dataset, const io::NpyShape& shape,
                           const std::string& jsonText);
 

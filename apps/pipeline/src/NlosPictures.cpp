@@ -1,5 +1,7 @@
 #include "NlosPictures.h"
 
+#include <algorithm>
+
 #include "tofsim/imaging/Pictures.h"
 
 namespace tofsim::pipeline {
@@ -40,6 +42,22 @@ std::vector<Image> nlosProjections(const NlosVolume& volume) {
   return {steady, xt, yt};
 }
 
+namespace {
+
+// A projection over time is a few dozen points wide and hundreds of bins
+// tall: its columns repeated until it is about half as wide as tall, so the
+// wall's axis reads (whole columns, no smoothing).
+Image widened(const Image& image) {
+  const int32_t factor = std::max(1, image.height / (2 * std::max(1, image.width)));
+  Image wide(image.width * factor, image.height, 1);
+  for (int32_t y = 0; y < image.height; ++y) {
+    for (int32_t x = 0; x < wide.width; ++x) wide.at(y, x, 0) = image.at(y, x / factor, 0);
+  }
+  return wide;
+}
+
+}  // namespace
+
 std::vector<std::string> writeNlosPictures(const std::filesystem::path& directory,
                                            const NlosVolume& volume) {
   const std::vector<Image> p = nlosProjections(volume);
@@ -51,9 +69,9 @@ std::vector<std::string> writeNlosPictures(const std::filesystem::path& director
   const double rowStep_m =
       volume.axis.bin_width_m() * static_cast<double>(nlosPictureBinsPerRow(volume.shape.front()));
   overTime.rows = imaging::RowAxis{volume.axis.start_m(), rowStep_m, "optical path [m]"};
-  imaging::writeColormappedPng(directory / "H_xt.png", p[1],
+  imaging::writeColormappedPng(directory / "H_xt.png", widened(p[1]),
                                "H summed over the wall's y: x right [W m^-2 sr^-1]", overTime);
-  imaging::writeColormappedPng(directory / "H_yt.png", p[2],
+  imaging::writeColormappedPng(directory / "H_yt.png", widened(p[2]),
                                "H summed over the wall's x: y right [W m^-2 sr^-1]", overTime);
   return {"H_steady.png", "H_xt.png", "H_yt.png"};
 }
