@@ -91,7 +91,7 @@ install(EXPORT tofsimTargets NAMESPACE tofsim:: DESTINATION ${TOFSIM_INSTALL_CMA
 # and a C++ project has no C enabled. Debian's libhdf5-dev has these paths on
 # every machine.
 set(HDF5_PREFER_PARALLEL OFF)
-find_package(HDF5 REQUIRED COMPONENTS C)
+find_package(HDF5 REQUIRED COMPONENTS C HL)
 foreach(property LINK_LIBRARIES INCLUDE_DIRECTORIES COMPILE_DEFINITIONS)
   get_target_property(value HDF5::HDF5 INTERFACE_${property})
   set(TOFSIM_HDF5_${property} "${value}")
@@ -99,6 +99,8 @@ foreach(property LINK_LIBRARIES INCLUDE_DIRECTORIES COMPILE_DEFINITIONS)
     set(TOFSIM_HDF5_${property} "")
   endif()
 endforeach()
+# The high-level library (H5DS dimension scales) that core/io adds to HDF5::HDF5.
+list(APPEND TOFSIM_HDF5_LINK_LIBRARIES ${HDF5_HL_LIBRARIES})
 configure_package_config_file(cmake/tofsimConfig.cmake.in
   ${PROJECT_BINARY_DIR}/tofsimConfig.cmake
   INSTALL_DESTINATION ${TOFSIM_INSTALL_CMAKEDIR}

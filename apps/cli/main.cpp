@@ -19,6 +19,7 @@
 #include "tofsim/pipeline/RunContentKey.h"
 #include "tofsim/pipeline/SceneInfo.h"
 #include "tofsim/pipeline/SenseRun.h"
+#include "tofsim/pipeline/ValidateRun.h"
 #include "tofsim/pipeline/Version.h"
 #include "tofsim/util/Error.h"
 #include "tofsim/util/Interrupt.h"
@@ -95,8 +96,7 @@ int runCompareCommand(const std::string& a, const std::string& b, const std::str
 int runValidateCommand(const std::string& configPath, const std::vector<std::string>& sets,
                        bool strict) {
   const config::RunConfig config = config::loadRunConfig(configPath, parseOverrides(sets, strict));
-  pipeline::checkRunSizes(config);     // output.max_bytes, an NLOS scan's memory
-  pipeline::validateTimeAxis(config);  // warnings and notes on stderr; --strict: a proven cut fails
+  pipeline::validateRun(config);  // render's checks before rendering; notes on stderr
   std::printf("%s: ok\n", configPath.c_str());
   return 0;
 }

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cstring>
+#include <utility>
 #include <vector>
 
 #include "HiddenPatch.h"
@@ -165,6 +166,11 @@ TEST(NlosCaptureTest, AMissingCurvedOrFlatWallOrAnOriginBehindItIsAnErrorAtItsKe
   scene::Scene line = hiddenPatch();
   for (glm::vec3& p : line.meshes[0].positions_world) p.y = 0.0f;
   expectInputError(nlosConfig(config::NlosScan::Confocal, 16), line, "no area");
+  // Flat, its two triangles wound opposite ways: no side faces the scene.
+  scene::Scene flipped = hiddenPatch();
+  ASSERT_EQ(flipped.meshes[0].indices.size(), 6u);
+  std::swap(flipped.meshes[0].indices[4], flipped.meshes[0].indices[5]);
+  expectInputError(nlosConfig(config::NlosScan::Confocal, 16), flipped, "no front face");
 }
 
 }  // namespace

@@ -51,8 +51,9 @@ class NlosRunTest : public test::TempDirTest {
 TEST_F(NlosRunTest, TheHdf5HoldsWhatTheNpyFilesAndTheJsonSay) {
   const RunSummary s = run(smallScan("exhaustive", "  laser_grid: [2, 3]\n"));
   const std::filesystem::path out = dir_ / "out";
-  for (const char* f : {"H.npy", "H.json", "sensor_grid_xyz.npy", "laser_grid_xyz.npy",
-                        "capture.hdf5", "config.effective.yaml"}) {
+  for (const char* f :
+       {"H.npy", "H.json", "sensor_grid_xyz.npy", "laser_grid_xyz.npy", "capture.hdf5",
+        "config.effective.yaml", "H_steady.png", "H_xt.png", "H_yt.png"}) {
     EXPECT_TRUE(std::filesystem::exists(out / f)) << f;
   }
   const io::NpyArray h = io::readNpy(out / "H.npy");
@@ -86,7 +87,7 @@ TEST_F(NlosRunTest, TheHdf5HoldsWhatTheNpyFilesAndTheJsonSay) {
   EXPECT_EQ(j["scan"], "exhaustive");
   EXPECT_EQ(j["stats"]["captures"], 6);
   EXPECT_NEAR(j["delta_t_m"].get<double>(), 0.02, 1e-12);
-  EXPECT_EQ(s.files.size(), 7u);
+  EXPECT_EQ(s.files.size(), 10u);  // with the three pictures
 }
 
 TEST_F(NlosRunTest, ConfocalFileIsConfocalAndHdf5CanBeLeftOut) {

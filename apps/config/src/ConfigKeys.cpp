@@ -25,7 +25,7 @@ namespace {
 // clang-format off
 const ConfigKey kRunConfigKeys[] = {
     {"scene", "string", "", "required", "-",
-     "glTF file, relative to the config's folder"},
+     "glTF file, relative to the config's folder (`output.directory` is relative to the folder the command runs in)"},
     {"camera", "mapping", "", "required", "-",
      "see below (`{}` for all defaults); not with `nlos`"},
     {"light", "mapping", "", "required", "-",

@@ -22,13 +22,13 @@ void emitValue(YAML::Node& n, const char* key, const K& kind, const sensors::Inf
   if constexpr (kIsChecked<K>) {
     emitValue(n, key, kind.kind, info, value);
   } else if constexpr (std::is_same_v<K, sensors::OptionalDuration>) {
-    if (value) n[key] = durationText(*value);
+    if (value) n[key] = timeText(*value, durationText(*value));
   } else if constexpr (std::is_same_v<K, sensors::Text>) {
     // Empty text that means "not given" (info.unset) is not an explicit value.
     if (info.unset && value.empty()) return;
     n[key] = std::string(value);  // a std::filesystem::path too
   } else if constexpr (std::is_same_v<K, Picoseconds>) {
-    n[key] = withUnit(value, 1e-12, "ps", "s");
+    n[key] = timeText(value, withUnit(value, 1e-12, "ps", "s"));
   } else if constexpr (std::is_same_v<K, Bytes>) {
     n[key] = std::to_string(value) + " B";
   } else if constexpr (std::is_same_v<K, Angle>) {
@@ -46,7 +46,7 @@ void emitValue(YAML::Node& n, const char* key, const K& kind, const sensors::Inf
     // 0 of a field "from the render" is not an explicit value: leave it out.
     if (info.unset && !(value > 0)) return;
     if constexpr (std::is_same_v<K, sensors::Duration>) {
-      n[key] = durationText(value);
+      n[key] = timeText(value, durationText(value));
     } else if constexpr (std::is_same_v<K, sensors::Length>) {
       n[key] = shortest(value) + " m";
     } else if constexpr (std::is_same_v<K, sensors::Integer>) {

@@ -18,7 +18,7 @@ inline constexpr std::array<Name<VideoToneMap>, 2> kToneMapNames{
 // written beside the visit (RunSections.cpp, EffectiveConfig.cpp).
 inline constexpr auto kOutputFields = std::tuple{
     Field{"directory", &OutputConfig::directory, Text{},
-          {.doc = "output folder (`-o` overrides)"}},
+          {.doc = "output folder (`-o` overrides), relative to the folder the command runs in (unlike `scene` and the other files a config names, which are relative to the config's folder)"}},
     Field{"format", &OutputConfig::format, Choice<OutputFormat>{kOutputFormatNames},
           {.doc = "`npy`: each array its own `.npy` (`transient.npy`, `direct.npy`, ...); `hdf5`: the volumes, `depth`, `steady` and every sensor array as datasets of one `capture.h5`, chunked along the pixels, shuffle + gzip, each with its metadata as attributes (README.md, \"What a render writes\"); the EXR and PNG pictures and the JSON files stay. An `nlos` capture writes its own files either way"}},
     Field{"transient", &OutputConfig::transient, Flag{},

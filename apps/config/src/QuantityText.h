@@ -9,7 +9,9 @@
 #include <utility>
 
 #include "ShortestNumber.h"
+#include "tofsim/config/Units.h"
 #include "tofsim/sensors/ParamField.h"
+#include "tofsim/volume/PhysicalConstants.h"
 
 namespace tofsim::config {
 
@@ -22,6 +24,24 @@ inline std::string durationText(double s) {
     if (std::abs(s) >= scale) return withUnit(s, scale, name, "s");
   }
   return withUnit(s, 1e-15, "fs", "s");
+}
+
+/// A time as a config writes it, in the form the user most likely wrote:
+/// the shortest of `timeForm` (the time as a duration) and the optical path
+/// lengths ("1 cm": the time light takes to cover it, Units.h) that reads
+/// back to exactly `s`; `timeForm` on a tie. The effective config of
+/// `bin_width: 1 cm` says "1 cm", not "33.35640951981521 ps" (the metadata
+/// keeps the seconds); a time written in ps keeps its form.
+inline std::string timeText(double s, std::string timeForm) {
+  std::string best = std::move(timeForm);
+  if (s == 0.0) return best;
+  const std::pair<double, const char*> lengths[] = {
+      {1e3, "km"}, {1.0, "m"}, {1e-2, "cm"}, {1e-3, "mm"}, {1e-6, "um"}};
+  for (const auto& [metres, name] : lengths) {
+    const std::string text = shortest(s / (metres / kSpeedOfLight_m_per_s)) + " " + name;
+    if (text.size() < best.size() && parseDuration_s(text) == s) best = text;
+  }
+  return best;
 }
 
 /// "-0.5 ps", "1e+300 s": 6 significant digits in the largest unit giving a

@@ -97,6 +97,7 @@ void parseSensorList(const ConfigNode& list, RunConfig& config) {
   checkSensorsFitImage(list, config.sensors, image);
   checkBounceOrders(list, config);
   checkSpadGates(list, config);
+  checkSensorChannels(list, config);
   checkSensorKernels(list, config.sensors, config.render.time);
 }
 

@@ -6,8 +6,10 @@
 
 #include "ShortestNumber.h"
 #include "SpadTableFile.h"
+#include "tofsim/capture/SegmentSink.h"
 #include "tofsim/sensors/Common.h"
 #include "tofsim/sensors/Spad.h"
+#include "tofsim/util/Error.h"
 
 namespace tofsim::config {
 
@@ -90,6 +92,26 @@ void checkSpadGates(const ConfigNode& list, const RunConfig& config) {
                                            ") ns lies outside the TDC's window [" +
                                            shortest(tdc.start_s * 1e9) + ", " +
                                            shortest(tdc.end_s() * 1e9) + ") ns");
+    }
+  }
+}
+
+// The sensors' own check (sensors::checkChannelSelection, which runs when a
+// sensor opens on the rendered volume) run here on the channel count the
+// run will give them, so that a wrong count is a located error before
+// anything renders rather than one without a line after it.
+void checkSensorChannels(const ConfigNode& list, const RunConfig& config) {
+  const int32_t channels = config.nlos ? 1 : capture::kChannels;
+  const std::vector<ConfigNode> elements = list.elements();
+  for (std::size_t i = 0; i < config.sensors.size(); ++i) {
+    const sensors::ChannelSelection& channel =
+        std::visit([](const auto& p) { return p.common.channel; }, config.sensors[i].params);
+    try {
+      sensors::checkChannelSelection(channel, channels);
+    } catch (const InputError& e) {
+      const std::string volume = config.nlos ? " (an nlos capture's H)" : " (R, G, B)";
+      elements[i].failKey(channel.weights.empty() ? "channel" : "channel_weights",
+                          std::string(e.what()) + volume);
     }
   }
 }

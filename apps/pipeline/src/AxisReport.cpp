@@ -8,9 +8,6 @@
 #include "Warning.h"
 #include "tofsim/physics/ResponseReach.h"
 #include "tofsim/pipeline/Capture.h"
-#include "tofsim/pipeline/ConfiguredScene.h"
-#include "tofsim/scene/AnimatedScene.h"
-#include "tofsim/scene/GltfLoader.h"
 #include "tofsim/sensors/WindowLoss.h"
 #include "tofsim/util/Error.h"
 
@@ -40,6 +37,10 @@ std::string suggestAxis(const TimeAxis& axis, const capture::ArrivalBounds& boun
   double start = axis.start_s;
   if (fit || (before && bounds.shortest_s() < start)) {
     start += std::floor((bounds.shortest_s() - start) / w + 1e-9) * w;
+    // Nothing arrives before the light's impulse at t = 0: a camera inside
+    // the scene's box (a shortest bound of 0) needs a start of 0, not the
+    // grid's step below it.
+    if (start < 0.0 && bounds.shortest_s() >= 0.0) start = 0.0;
   }
   const double end = fit ? bounds.longest_s()
                          : (after ? std::max(axis.end_s(), bounds.longest_s()) : axis.end_s());
@@ -149,18 +150,6 @@ void checkAxisBeforeRender(const config::RunConfig& config, const capture::Rende
   if (p.verdict == AxisPrediction::Verdict::MayCut && notes) {
     std::fprintf(stderr, "tofsim: note: %s\n", p.message.c_str());
   }
-}
-
-void validateTimeAxis(const config::RunConfig& config) {
-  // A sequence's scene is read with its animations, as its render reads it
-  // first, so that their errors (a keyframe past the scene bound, a zero
-  // quaternion) come from `validate` too.
-  scene::LoadReport report;
-  scene::Scene scene = config.sequence
-                           ? scene::AnimatedScene::load(config.scene_file, &report).restScene()
-                           : scene::loadGltf(config.scene_file, &report);
-  configureScene(config, scene, report);
-  checkAxisBeforeRender(config, makeRenderJob(config, scene), true);
 }
 
 AxisLossFractions axisLossFractions(const capture::RenderResult& result) {

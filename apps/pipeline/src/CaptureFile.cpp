@@ -61,7 +61,42 @@ bool endsWith(const std::string& s, std::string_view suffix) {
          s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
 }
 
+// The coordinates 0 .. n - 1.
+std::vector<double> indices(std::size_t n) {
+  std::vector<double> v(n);
+  for (std::size_t i = 0; i < n; ++i) v[i] = static_cast<double>(i);
+  return v;
+}
+
+std::vector<io::H5Attribute> scaleAttributes(const char* units, const char* longName) {
+  return {{"units", std::string(units)}, {"long_name", std::string(longName)}};
+}
+
 }  // namespace
+
+bool CaptureFile::pixelScales(std::size_t height, std::size_t width) {
+  if (height_ == 0) {
+    height_ = height;
+    width_ = width;
+    writer_.writeScale("y", indices(height), scaleAttributes("pixel", "image row, 0 at the top"));
+    writer_.writeScale("x", indices(width),
+                       scaleAttributes("pixel", "image column, 0 at the left"));
+    std::vector<io::H5Attribute> c = scaleAttributes("1", "colour channel");
+    c.push_back({"names", std::vector<std::string>{"R", "G", "B"}});
+    writer_.writeScale("c", indices(capture::kChannels), c);
+  }
+  return height == height_ && width == width_;
+}
+
+void CaptureFile::attachScales(const std::string& dataset, std::size_t height, std::size_t width,
+                               const std::vector<std::string>& more) {
+  if (!pixelScales(height, width)) return;
+  writer_.attachScale(dataset, 0, "y");
+  writer_.attachScale(dataset, 1, "x");
+  for (std::size_t a = 0; a < more.size(); ++a) {
+    if (!more[a].empty()) writer_.attachScale(dataset, static_cast<unsigned>(2 + a), more[a]);
+  }
+}
 
 class CaptureFile::VolumeSink : public capture::SegmentSink {
  public:
@@ -71,6 +106,7 @@ class CaptureFile::VolumeSink : public capture::SegmentSink {
         component_(component),
         stream_(stream),
         pixelFloats_(pixelFloats) {}
+  std::size_t height = 0, width = 0;
   void consume(const capture::Segment& segment) override {
     stream_.append(segment.component(component_), segment.pixelCount * pixelFloats_);
   }
@@ -93,14 +129,31 @@ capture::SegmentSink& CaptureFile::volume(const std::string& dataset, std::strin
                            static_cast<std::size_t>(bins), capture::kChannels};
   io::H5FloatStream& stream = writer_.stream(dataset, shape);
   volumes_.push_back(std::make_unique<VolumeSink>(dataset, component, stream, shape[2] * shape[3]));
+  volumes_.back()->height = shape[0];
+  volumes_.back()->width = shape[1];
   return *volumes_.back();
 }
 
 void CaptureFile::describeVolumes(const std::string& metadataJson) {
+  // The t scale: each bin's leading edge, start_s + i bin_width_s.
+  const nlohmann::json meta = nlohmann::json::parse(metadataJson, nullptr, false);
+  if (timeJson_.empty() && meta.is_object() && meta.contains("time")) {
+    const nlohmann::json& t = meta.at("time");
+    const double start = t.value("start_s", 0.0), width = t.value("bin_width_s", 0.0);
+    std::vector<double> edges(t.value("bins", std::size_t{0}));
+    for (std::size_t i = 0; i < edges.size(); ++i)
+      edges[i] = start + static_cast<double>(i) * width;
+    writer_.writeScale("t", edges,
+                       scaleAttributes("s",
+                                       "arrival time at the bin's leading edge, from the "
+                                       "light's impulse (transient.json: time)"));
+    timeJson_ = t.dump();
+  }
   for (const std::unique_ptr<VolumeSink>& v : volumes_) {
     std::vector<io::H5Attribute> a = attributesOf(metadataJson);
     a.push_back({"component", v->dataset()});
     writer_.setAttributes(v->dataset(), a);
+    attachScales(v->dataset(), v->height, v->width, {timeJson_.empty() ? "" : "t", "c"});
   }
 }
 
@@ -112,6 +165,7 @@ void CaptureFile::addSteady(const Image& steady) {
   writer_.setAttributes(
       "steady", attributesOf(imageJson({"y", "x", "c"}, "W m^-2 sr^-1",
                                        "the transient summed over its time bins (steady.exr)")));
+  attachScales("steady", steady.height, steady.width, {steady.channels == 3 ? "c" : ""});
 }
 
 void CaptureFile::addDepth(const Image& depth_m) {
@@ -122,6 +176,7 @@ void CaptureFile::addDepth(const Image& depth_m) {
       "depth", attributesOf(imageJson({"y", "x"}, "m",
                                       "camera-to-surface distance, 0 where a pixel sees no "
                                       "surface (depth.exr, depth.npy)")));
+  attachScales("depth", depth_m.height, depth_m.width, {});
 }
 
 void CaptureFile::addSensorFiles(const std::filesystem::path& directory,
@@ -133,15 +188,15 @@ void CaptureFile::addSensorFiles(const std::filesystem::path& directory,
     // An Image's numbers come twice (.exr and its .npy twin): one dataset.
     if (exr && std::find(files.begin(), files.end(), dataset + ".npy") != files.end()) continue;
     const std::filesystem::path path = directory / file;
+    io::NpyShape shape;
     if (exr) {
       const Image image = io::readExr(path);
-      io::NpyShape shape{static_cast<std::size_t>(image.height),
-                         static_cast<std::size_t>(image.width)};
+      shape = {static_cast<std::size_t>(image.height), static_cast<std::size_t>(image.width)};
       if (image.channels > 1) shape.push_back(static_cast<std::size_t>(image.channels));
       writer_.write(dataset, shape, image.data.data());
     } else {
       io::NpyStreamReader reader(path);
-      const io::NpyShape shape = reader.shape();
+      shape = reader.shape();
       if (shape.size() < 3 || io::elementCount(shape) == 0) {
         std::vector<float> values(reader.remaining());
         reader.read(values.data(), values.size());
@@ -157,8 +212,36 @@ void CaptureFile::addSensorFiles(const std::filesystem::path& directory,
     }
     const std::filesystem::path json = directory / (dataset + ".json");
     std::error_code ec;
-    if (std::filesystem::exists(json, ec))
-      writer_.setAttributes(dataset, attributesOf(readText(json)));
+    if (std::filesystem::exists(json, ec)) {
+      const std::string text = readText(json);
+      writer_.setAttributes(dataset, attributesOf(text));
+      attachSensorScales(dataset, shape, text);
+    }
+  }
+}
+
+// A sensor array's axes named y, x, t or c get the scale of that name where
+// they have its length; t only where it is the render's own time axis (a
+// sensor's instrument window of other bins keeps its axis unscaled).
+void CaptureFile::attachSensorScales(const std::string& dataset, const io::NpyShape& shape,
+                                     const std::string& jsonText) {
+  const nlohmann::json j = nlohmann::json::parse(jsonText, nullptr, false);
+  if (!j.is_object() || !j.contains("axes") || !j.at("axes").is_array() || height_ == 0) return;
+  const nlohmann::json& axes = j.at("axes");
+  if (axes.size() != shape.size()) return;
+  bool sameTime = !timeJson_.empty() && j.contains("time") && j.at("time").is_object();
+  if (sameTime) {
+    const nlohmann::json render = nlohmann::json::parse(timeJson_), own = j.at("time");
+    for (const char* key : {"start_s", "bin_width_s", "bins"}) {
+      sameTime =
+          sameTime && own.contains(key) && render.contains(key) && own.at(key) == render.at(key);
+    }
+  }
+  for (std::size_t a = 0; a < axes.size(); ++a) {
+    const bool scaled = (axes[a] == "y" && shape[a] == height_) ||
+                        (axes[a] == "x" && shape[a] == width_) || (axes[a] == "t" && sameTime) ||
+                        (axes[a] == "c" && shape[a] == capture::kChannels);
+    if (scaled) writer_.attachScale(dataset, static_cast<unsigned>(a), axes[a].get<std::string>());
   }
 }
 

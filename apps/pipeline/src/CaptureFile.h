@@ -11,7 +11,12 @@
 //
 // Datasets: transient, direct, indirect, bounce<k> (H, W, T, C); steady
 // (H, W, C); depth (H, W); sensors/<sensor>/<output> (the .npy's and .exr's
-// arrays of sensors/<sensor>/).
+// arrays of sensors/<sensor>/). The axes' coordinates are HDF5 dimension
+// scales (what netCDF-4 readers and xarray take as coordinates): y and x
+// (pixel row and column), t (each bin's leading edge, s) and c (channel),
+// attached to every dataset's axes they describe: the volumes', steady's,
+// depth's, and a sensor array's axes of those names and lengths (t only on
+// the render's own time axis).
 
 #include <filesystem>
 #include <memory>
@@ -52,8 +57,22 @@ class CaptureFile {
 
  private:
   class VolumeSink;
+  /// The scales y, x and c, written once; false when an image of another
+  /// size came first (then `dataset` keeps its axes unscaled).
+  bool pixelScales(std::size_t height, std::size_t width);
+  /// Attaches y and x to axes 0 and 1 of `dataset` (height x width first)
+  /// and the scales `more` (by name, "" for none) to the axes after them.
+  void attachScales(const std::string& dataset, std::size_t height, std::size_t width,
+                    const std::vector<std::string>& more);
+  /// The scales of the sensor array `dataset` of `shape` described by
+  /// `jsonText`: each axis its JSON names y, x, t or c, of the scale's length.
+  void attachSensorScales(const std::string& dataset, const io::NpyShape& shape,
+                          const std::string& jsonText);
+
   io::H5CaptureWriter writer_;
   std::vector<std::unique_ptr<VolumeSink>> volumes_;
+  std::size_t height_ = 0, width_ = 0;  ///< of the y and x scales, once written
+  std::string timeJson_;                ///< transient.json's time, once the t scale is written
 };
 
 }  // namespace tofsim::pipeline

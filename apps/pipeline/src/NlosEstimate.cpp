@@ -62,6 +62,15 @@ OutputEstimate nlosOutputs(const config::RunConfig& config) {
     estimate.items.push_back({"first_bounce.npy", h, size.keys});
   }
   if (config.nlos->hdf5) estimate.items.push_back({"capture.hdf5", h, size.keys + ", nlos.hdf5"});
+  // H_steady/H_xt/H_yt.png (NlosPictures.h): 8-bit RGB as a bound for a
+  // PNG, as a camera's pictures count (OutputProducts.cpp): the wall and two
+  // projections of at most 2048 rows, widened to half their height.
+  const auto& grid = config.nlos->sensor_grid;
+  const double rows = std::min<double>(size.bins, 2048.0);
+  const double pixels =
+      grid[0] * grid[1] +
+      (std::max<double>(grid[0], rows / 2) + std::max<double>(grid[1], rows / 2)) * rows;
+  estimate.items.push_back({"H_*.png", bytesOf(3.0 * pixels), "nlos.sensor_grid, time.bins"});
   for (const sensors::SensorSpec& spec : config.sensors) {
     estimate.items.push_back({"sensors/" + spec.name, bytesOf(sensorBytes(config, spec, size)),
                               "nlos.sensor_grid x the sensor's bins"});

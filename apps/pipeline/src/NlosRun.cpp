@@ -4,6 +4,7 @@
 
 #include "KeptAcrossRenders.h"
 #include "NlosFirstBounce.h"
+#include "NlosPictures.h"
 #include "NlosSensors.h"
 #include "NlosTalFile.h"
 #include "RenderStatsJson.h"
@@ -52,6 +53,10 @@ std::string nlosMetadataJson(const config::RunConfig& config, const NlosScanGeom
       "first_bounce.npy (H's shape): the laser spot's own return, the spot's radiance averaged "
       "over the sensor point's grid cell where the cell holds the spot (every point of a confocal "
       "scan), in the bin of its path; not in H or capture.hdf5; the sensors see H + first_bounce";
+  j["pictures_doc"] =
+      "H_steady.png: H summed over time (the wall's steady image, x right, y up); H_xt.png and "
+      "H_yt.png: H summed over the wall's y and x, rows the optical path (bins summed in groups "
+      "past 2048 rows); laser points summed; colour-mapped views of H, not its numbers";
   j["value_doc"] =
       "radiance at the sensor point towards sensor_origin arriving within the bin, summed over "
       "R, G and B (as tal render's H), for an impulse of the laser at t = 0; only light that "
@@ -95,6 +100,7 @@ void writeOutputs(const config::RunConfig& config, const NlosScanGeometry& scan,
     io::writeNpy(dir / "first_bounce.npy", volume.shape, firstBounce.data());
     files.push_back("first_bounce.npy");
   }
+  for (std::string& f : writeNlosPictures(dir, volume)) files.push_back(std::move(f));
   io::writeNpy(dir / "sensor_grid_xyz.npy", grid(scan.sensorGrid),
                flatXyz(scan.sensorPoints).data());
   files.push_back("sensor_grid_xyz.npy");

@@ -26,9 +26,10 @@ double sumOf(const Image& image) {
 }
 }  // namespace
 
-capture::RenderJob prepareCapture(const config::RunConfig& config, const scene::Scene& scene) {
+capture::RenderJob prepareCapture(const config::RunConfig& config, const scene::Scene& scene,
+                                  bool notes) {
   capture::RenderJob job = makeRenderJob(config, scene);
-  checkAxisBeforeRender(config, job, false);  // a proven cut fails here under --strict
+  checkAxisBeforeRender(config, job, notes);  // a proven cut fails here under --strict
   return job;
 }
 

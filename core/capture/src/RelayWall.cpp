@@ -29,20 +29,29 @@ RelayWall relayWallOf(const scene::Scene& scene, const std::string& name) {
     }
     throw InputError("no node or mesh named '" + name + "' in the scene for the relay wall");
   }
-  // The plane: the area-weighted normal of every triangle.
-  glm::dvec3 areaNormal(0.0);
+  // The plane: the area-weighted normal of every triangle. Triangles facing
+  // opposite ways cancel in it (a closed box sums to 0): then the largest
+  // triangle's normal stands in, so that the plane test below says "not
+  // planar" for a solid, and a flat wall wound both ways has no front face.
+  glm::dvec3 areaNormal(0.0), largest(0.0);
   glm::dvec3 anyPoint(0.0);
+  double totalTwiceArea = 0.0;
   for (const scene::Mesh* m : meshes) {
     for (std::size_t t = 0; t + 2 < m->indices.size(); t += 3) {
       const glm::dvec3 a = m->positions_world[m->indices[t]];
       const glm::dvec3 b = m->positions_world[m->indices[t + 1]];
       const glm::dvec3 c = m->positions_world[m->indices[t + 2]];
-      areaNormal += glm::cross(b - a, c - a);
+      const glm::dvec3 n = glm::cross(b - a, c - a);
+      areaNormal += n;
+      totalTwiceArea += glm::length(n);
+      if (glm::length(n) > glm::length(largest)) largest = n;
       anyPoint = a;
     }
   }
+  if (!(totalTwiceArea > 0.0)) throw InputError("relay wall '" + name + "' has no area");
+  const bool cancelled = !(glm::length(areaNormal) > 1e-6 * totalTwiceArea);
+  if (cancelled) areaNormal = largest;
   const double twiceArea = glm::length(areaNormal);
-  if (!(twiceArea > 0.0)) throw InputError("relay wall '" + name + "' has no area");
   RelayWall wall;
   wall.name = name;
   wall.normal = glm::vec3(areaNormal / twiceArea);
@@ -73,6 +82,11 @@ RelayWall relayWallOf(const scene::Scene& scene, const std::string& name) {
   if (offPlane > 1e-4 * std::max(extent, 1e-6)) {
     throw InputError("relay wall '" + name + "' is not planar (a vertex lies " +
                      std::to_string(offPlane) + " m off its plane)");
+  }
+  if (cancelled) {
+    throw InputError("relay wall '" + name +
+                     "' has no front face: its triangles are wound both ways (glTF's "
+                     "counter-clockwise winding says which side faces the scene)");
   }
   wall.width_m = static_cast<float>(hi[0] - lo[0]);
   wall.height_m = static_cast<float>(hi[1] - lo[1]);

@@ -1,5 +1,7 @@
 // H5CaptureWriter: float32 datasets chunked by captureChunk, shuffle +
 // deflate, written into AtomicFile's temporary and renamed by commit().
+#include <hdf5_hl.h>
+
 #include <algorithm>
 #include <cstring>
 #include <deque>
@@ -236,6 +238,43 @@ void H5CaptureWriter::setAttributes(const std::string& name,
   for (const H5Attribute& a : attributes) {
     detail::writeAttribute(dataset.get(), a, impl_->path, name);
   }
+}
+
+void H5CaptureWriter::writeScale(const std::string& name, const std::vector<double>& values,
+                                 const std::vector<H5Attribute>& attributes) {
+  const detail::H5QuietErrors quiet;
+  Impl& w = *impl_;
+  w.makeParents(name);
+  const hsize_t size = values.size();
+  const H5Space space(
+      h5Check(H5Screate_simple(1, &size, nullptr), w.path, name, "cannot make its dataspace"));
+  const H5PropList dcpl = untimed(H5P_DATASET_CREATE, w.path, name);
+  const H5Dataset dataset(h5Check(H5Dcreate2(w.file.get(), name.c_str(), H5T_IEEE_F64LE,
+                                             space.get(), H5P_DEFAULT, dcpl.get(), H5P_DEFAULT),
+                                  w.path, name, "cannot create the dataset"));
+  if (!values.empty()) {
+    h5Check(
+        H5Dwrite(dataset.get(), H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()),
+        w.path, name, "cannot write the dataset");
+  }
+  const std::string base = name.substr(name.find_last_of('/') + 1);
+  h5Check(H5DSset_scale(dataset.get(), base.c_str()), w.path, name,
+          "cannot make it a dimension scale");
+  for (const H5Attribute& a : attributes) detail::writeAttribute(dataset.get(), a, w.path, name);
+}
+
+void H5CaptureWriter::attachScale(const std::string& name, unsigned axis,
+                                  const std::string& scale) {
+  const detail::H5QuietErrors quiet;
+  Impl& w = *impl_;
+  const H5Dataset dataset(h5Check(H5Dopen2(w.file.get(), name.c_str(), H5P_DEFAULT), w.path, name,
+                                  "cannot open the dataset"));
+  const H5Dataset scaleSet(h5Check(H5Dopen2(w.file.get(), scale.c_str(), H5P_DEFAULT), w.path,
+                                   scale, "cannot open the scale"));
+  h5Check(H5DSattach_scale(dataset.get(), scaleSet.get(), axis), w.path, name,
+          "cannot attach the scale " + scale);
+  const std::string label = scale.substr(scale.find_last_of('/') + 1);
+  h5Check(H5DSset_label(dataset.get(), axis, label.c_str()), w.path, name, "cannot label its axis");
 }
 
 void H5CaptureWriter::commit() {

@@ -44,10 +44,6 @@ AxisPrediction predictAxisCut(const config::RunConfig& config, const capture::Re
 void checkAxisBeforeRender(const config::RunConfig& config, const capture::RenderJob& job,
                            bool notes);
 
-/// `tofsim validate`: loads the config's scene (with its animations for a
-/// sequence, whose errors it throws) and runs checkAxisBeforeRender with notes.
-void validateTimeAxis(const config::RunConfig& config);
-
 /// Light off the axis as fractions of all the light (binned + off the axis);
 /// 0 when nothing arrived. Needs result.onAxisEnergy.
 struct AxisLossFractions {

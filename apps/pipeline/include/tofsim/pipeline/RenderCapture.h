@@ -27,8 +27,10 @@
 namespace tofsim::pipeline {
 
 /// The render job of `config` over `scene` (Capture.h), its time axis checked
-/// before rendering: a proven cut warns, or under render.strict throws.
-capture::RenderJob prepareCapture(const config::RunConfig& config, const scene::Scene& scene);
+/// before rendering: a proven cut warns, or under render.strict throws;
+/// `notes` (validate) also prints a possible cut as a note.
+capture::RenderJob prepareCapture(const config::RunConfig& config, const scene::Scene& scene,
+                                  bool notes = false);
 
 /// Who takes the cleaned segments: each gets every segment in order, with
 /// the components direct, indirect, total (kTotal) and the bounces listed

@@ -28,7 +28,8 @@ struct RelayWall {
 /// The wall made of every mesh the glTF node (or mesh) `name` placed. Its y
 /// axis is the world's +y projected into the plane (the first edge where the
 /// wall is horizontal). Throws InputError naming the wall when nothing has
-/// that name, when its triangles are not in one plane or when it has no area.
+/// that name, when its triangles are not in one plane (a solid: "not planar"),
+/// when it has no area or when its triangles face both ways (no front face).
 RelayWall relayWallOf(const scene::Scene& scene, const std::string& name);
 
 /// tal's grid (`get_grid_xyz`): nx x ny points at the centres of the cells of

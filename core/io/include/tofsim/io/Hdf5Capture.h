@@ -73,6 +73,15 @@ class H5CaptureWriter {
   void write(const std::string& name, const NpyShape& shape, const float* data);
   /// Adds attributes to the dataset `name` (written already or streaming).
   void setAttributes(const std::string& name, const std::vector<H5Attribute>& attributes);
+  /// A one-dimensional float64 dataset `name` holding an axis's coordinates,
+  /// made an HDF5 dimension scale (H5DSset_scale, libhdf5's high-level
+  /// library: what netCDF-4 and xarray read as a coordinate), with
+  /// `attributes` (units, long_name).
+  void writeScale(const std::string& name, const std::vector<double>& values,
+                  const std::vector<H5Attribute>& attributes);
+  /// Attaches the scale `scale` (writeScale) to axis `axis` of the dataset
+  /// `name` and labels that axis with the scale's name.
+  void attachScale(const std::string& name, unsigned axis, const std::string& scale);
   /// Checks that every stream is complete, closes the file and renames it
   /// into place; InputError naming the file (and the dataset) otherwise.
   void commit();
