@@ -31,7 +31,7 @@ constexpr int32_t kMaxAzimuths = 1 << 20;
 
 glm::vec3 finiteVec3(const ConfigNode& node, const char* key, const glm::vec3& fallback) {
   const glm::vec3 v = vec3Of(node, key, fallback);
-  if (!glm::all(glm::isfinite(v))) node.failKey(key, "must be finite [x, y, z] in metres");
+  if (!(std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z))) node.failKey(key, "must be finite [x, y, z] in metres");
   return v;
 }
 
@@ -158,6 +158,25 @@ void parseReturns(const ConfigNode& lidarNode, lidar::ReturnSettings& r) {
   }
 }
 
+void parsePlotBeams(const ConfigNode& lidarNode, LidarConfig& out) {
+  if (!lidarNode.has("plot_beams")) return;
+  const ConfigNode list = lidarNode.child("plot_beams");
+  const lidar::LidarSpec& s = out.spec;
+  for (const ConfigNode& beam : list.elements()) {
+    std::vector<double> v;
+    if (beam.isSequence()) {
+      for (const ConfigNode& e : beam.elements()) v.push_back(e.asDouble());
+    }
+    if (v.size() != 2) beam.fail("expected [ring, azimuth in degrees]");
+    const double a = std::round((v[1] - s.azimuth_start_deg) / s.azimuth_step_deg);
+    if (!(v[0] >= 0 && v[0] < s.channels() && v[0] == std::floor(v[0]))) {
+      beam.fail("the ring must be an integer in [0, " + std::to_string(s.channels()) + ")");
+    }
+    if (!(a >= 0 && a < s.azimuths())) beam.fail("the azimuth is outside lidar.azimuth");
+    out.plot_beams.push_back({static_cast<int32_t>(v[0]), static_cast<int32_t>(a)});
+  }
+}
+
 void parseScan(const ConfigNode& n) {
   if (n.has("preset")) {
     n.failKey("preset", "unknown preset '" + n.getString("preset", "") +
@@ -200,6 +219,7 @@ void parseLidarView(const ConfigNode& root, RunConfig& config) {
     n.failKey("rotation_rate", "must be > 0 Hz");
   }
   parseReturns(n, out->spec.returns);
+  parsePlotBeams(n, *out);
   config.camera.camera.width = out->spec.azimuths();
   config.camera.camera.height = out->spec.channels();
   config.lidar = std::move(out);
@@ -258,6 +278,16 @@ YAML::Node lidarNode(const LidarConfig& c) {
   n["returns"]["max"] = s.returns.max;
   n["returns"]["threshold"] = shortest(s.returns.threshold);
   n["returns"]["separation"] = shortest(s.returns.separation_m) + " m";
+  YAML::Node beams(YAML::NodeType::Sequence);
+  for (const auto& [ring, a] : c.plot_beams) {
+    YAML::Node beam(YAML::NodeType::Sequence);
+    beam.push_back(ring);
+    beam.push_back(shortest(s.azimuthOf_deg(a)));
+    beam.SetStyle(YAML::EmitterStyle::Flow);
+    beams.push_back(beam);
+  }
+  beams.SetStyle(YAML::EmitterStyle::Flow);
+  n["plot_beams"] = beams;
   return n;
 }
 

@@ -1,10 +1,12 @@
 #include "LidarFiles.h"
 
+#include <cstdio>
 #include <nlohmann/json.hpp>
 
 #include "SensorReport.h"
 #include "TimeAxisJson.h"
 #include "tofsim/config/LidarConfig.h"
+#include "tofsim/imaging/LinePlot.h"
 #include "tofsim/imaging/Pictures.h"
 #include "tofsim/io/Exr.h"
 #include "tofsim/io/Npy.h"
@@ -126,6 +128,34 @@ std::string metadataJson(const config::RunConfig& config, const LidarFrame& fram
   return j.dump(2) + "\n";
 }
 
+// waveforms.png: the lidar.plot_beams' waveforms against range.
+void writeWaveformPlot(const config::RunConfig& config, const TransientVolume& volume,
+                       const std::filesystem::path& dir, std::vector<std::string>& files) {
+  const config::LidarConfig& lidar = *config.lidar;
+  if (lidar.plot_beams.empty()) return;
+  const TimeAxis& axis = volume.axis();
+  const double toRange = axis.camera_unwarp ? axis.index_of_refraction
+                                            : 2.0 * axis.index_of_refraction;
+  imaging::LinePlot plot;
+  for (const auto& [ring, a] : lidar.plot_beams) {
+    const float* w = volume.data() + volume.index(ring, a, 0, 0);
+    plot.series.emplace_back(w, w + volume.bins());
+    char label[96];
+    std::snprintf(label, sizeof label, "ring %d (%.1f deg), azimuth %.1f deg", ring,
+                  lidar.spec.elevations_deg[static_cast<std::size_t>(ring)],
+                  lidar.spec.azimuthOf_deg(a));
+    plot.labels.push_back(label);
+  }
+  plot.x0 = axis.start_m() / toRange;
+  plot.dx = axis.bin_width_m() / toRange;
+  plot.xUnit = "m";
+  plot.xLabel = "range";
+  plot.yLabel = "irradiance per bin [W m^-2]";
+  plot.title = "lidar waveforms (direct light)";
+  imaging::writeLinePlotPng(dir / "waveforms.png", plot);
+  files.push_back("waveforms.png");
+}
+
 // The configured sensors on the waveforms: pixels are beams.
 void writeSensors(const config::RunConfig& config, const TransientVolume& volume,
                   const std::filesystem::path& dir, PlotRanges& ranges, const Progress& progress,
@@ -173,6 +203,7 @@ std::vector<std::string> writeLidarFiles(const config::RunConfig& config, const 
   lidar::writePly(dir / "points.ply", frame.returns->points, "tofsim lidar returns");
   lidar::writePcd(dir / "points.pcd", frame.returns->points);
   files.insert(files.end(), {"points.ply", "points.pcd"});
+  writeWaveformPlot(config, volume, dir, files);
   writeSensors(config, volume, dir, ranges, progress, files);
   warnUntakenPlotRanges(ranges.untaken(""));
   std::vector<std::string> listed = files;

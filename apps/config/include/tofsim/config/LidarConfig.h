@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <glm/glm.hpp>
 #include <string>
+#include <vector>
 
 #include "tofsim/lidar/LidarSpec.h"
 #include "tofsim/util/Error.h"
@@ -23,6 +24,10 @@ struct LidarConfig {
   /// rotation_rate: turns per second; a beam fires at its azimuth's time
   /// (the point clouds' time_offset). The scene is captured at rest.
   double rotation_rate_Hz = 10.0;
+  /// plot_beams: the beams (ring, azimuth index) whose waveforms
+  /// waveforms.png draws, as [ring, azimuth in degrees] pairs resolved to
+  /// the nearest azimuth.
+  std::vector<std::array<int32_t, 2>> plot_beams;
   FileLoc at;  ///< where `lidar:` is
 };
 
