@@ -3,7 +3,7 @@
 lidar of configs/lidar_street.yaml, as a self-contained glTF 2.0 file (buffer
 embedded as base64). Metres, glTF frame (+y up); the street runs along x.
 
-  ground:     y = 0, x and z in [-40, 40], asphalt (albedo 0.12)
+  ground:     y = 0, x and z in [-30, 30], asphalt (albedo 0.12)
   buildings:  four boxes, two on each side of the street (z beyond +-8),
               6 to 15 m high, concrete 0.45 and brick 0.3
   car:        a 4.5 x 1.5 x 1.8 m box at x in [4, 8.5], z in [1, 2.8], white 0.7
@@ -55,7 +55,7 @@ def build_gltf():
     blob = bytearray()
     materials = [(name, rgb, 0.0, 1.0) for name, rgb in MATERIALS]
     gltf = new_gltf("tofsim scripts/make_lidar_street.py", "lidar_street", materials)
-    quads = [("ground", ASPHALT, [(-40, 0, -40), (-40, 0, 40), (40, 0, 40), (40, 0, -40)], (0, 1, 0))]
+    quads = [("ground", ASPHALT, [(-30, 0, -30), (-30, 0, 30), (30, 0, 30), (30, 0, -30)], (0, 1, 0))]
     for name, material, xs, ys, zs in BOXES:
         quads += box_quads(name, material, xs, ys, zs)
     for i, (x, z) in enumerate(POSTS):

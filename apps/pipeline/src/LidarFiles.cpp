@@ -1,5 +1,6 @@
 #include "LidarFiles.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <nlohmann/json.hpp>
 
@@ -26,11 +27,15 @@ namespace {
 
 nlohmann::ordered_json vec(const glm::vec3& v) { return {v.x, v.y, v.z}; }
 
-// The picture with the highest ring on top (the arrays keep ring 0 in row 0).
-Image flippedRows(const Image& image) {
-  Image out(image.width, image.height, image.channels);
-  for (int32_t y = 0; y < image.height; ++y) {
-    for (int32_t x = 0; x < image.width; ++x) out.at(y, x, 0) = image.at(image.height - 1 - y, x, 0);
+// The picture with the highest ring on top (the arrays keep ring 0 in row
+// 0), each ring drawn up to 8 rows tall so that a wide scan stays readable.
+Image pictureRows(const Image& image) {
+  const int32_t repeat = std::clamp(image.width / std::max(1, 8 * image.height), 1, 8);
+  Image out(image.width, image.height * repeat, image.channels);
+  for (int32_t y = 0; y < out.height; ++y) {
+    for (int32_t x = 0; x < image.width; ++x) {
+      out.at(y, x, 0) = image.at(image.height - 1 - y / repeat, x, 0);
+    }
   }
   return out;
 }
@@ -44,7 +49,7 @@ void writeImage(const std::filesystem::path& dir, const std::string& name, const
   scale.range = ranges.take(name);
   scale.nonPositiveIsNoData = true;
   scale.noDataLabel = "no return";
-  imaging::writeColormappedPng(dir / (name + ".png"), flippedRows(image), label, scale);
+  imaging::writeColormappedPng(dir / (name + ".png"), pictureRows(image), label, scale);
   for (const char* ext : {".npy", ".exr", ".png"}) files.push_back(name + ext);
 }
 

@@ -5,6 +5,7 @@
 #include "KeptAcrossRenders.h"
 #include "LidarFiles.h"
 #include "StagedOutput.h"
+#include "tofsim/pipeline/AxisReport.h"
 #include "tofsim/config/LidarConfig.h"
 #include "tofsim/ir/IrBackend.h"
 #include "tofsim/ir/MaterialVertex.h"
@@ -37,6 +38,27 @@ OutputEstimate lidarOutputs(const config::RunConfig& config) {
   return e;
 }
 
+namespace {
+
+// As a camera render's check after it (AxisReport.h), for the beams.
+void warnLightOffTheAxis(const lidar::LidarWaveforms& w, const Progress& progress) {
+  double onAxis = 0.0;
+  for (float v : w.volume.values()) onAxis += v;
+  const double total = onAxis + w.lost.before + w.lost.after;
+  if (!(total > 0.0)) return;
+  const auto percent = [&](double v) { return std::to_string(100.0 * v / total) + " %"; };
+  if (w.lost.after > kWindowLossWarning * total) {
+    progress.message("warning: " + percent(w.lost.after) +
+                     " of the lidar's light arrives after the last bin: raise time.bins");
+  }
+  if (w.lost.before > kWindowLossWarning * total) {
+    progress.message("warning: " + percent(w.lost.before) +
+                     " of the lidar's light arrives before the first bin: lower time.start");
+  }
+}
+
+}  // namespace
+
 RunSummary runLidarRender(const config::RunConfig& config, PreparedRenderer& prepared,
                           const RunOptions& options) {
   Progress progress("render", options.quiet);
@@ -67,6 +89,7 @@ RunSummary runLidarRender(const config::RunConfig& config, PreparedRenderer& pre
   progress.message("lidar: " + std::to_string(config.lidar->spec.channels()) + " x " +
                    std::to_string(config.lidar->spec.azimuths()) + " beams, " +
                    std::to_string(returns.points.size()) + " returns");
+  warnLightOffTheAxis(waveforms, progress);
   throwIfInterrupted();
   const LidarFrame frame{&waveforms, &returns, seconds, threads};
   summary.files = writeLidarFiles(config, frame, folder.staging(), progress);
