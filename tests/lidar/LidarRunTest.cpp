@@ -70,7 +70,13 @@ TEST_F(LidarRunTest, ARunWritesItsFilesAndASpadCountsItsBeams) {
   EXPECT_GT(ground, 18);
   const nlohmann::json meta = nlohmann::json::parse(std::ifstream(out / "lidar.json"));
   EXPECT_EQ(meta["stats"]["beams"].get<double>(), 144.0);
-  EXPECT_GT(meta["stats"]["points"].get<int>(), 130);
+  // Dual returns: one or two points per beam that has a return.
+  int withReturns = 0;
+  for (float r : range.data) withReturns += r > 0.0f;
+  EXPECT_EQ(meta["stats"]["beams_with_returns"].get<int>(), withReturns);
+  EXPECT_GE(meta["stats"]["points"].get<int>(), withReturns);
+  EXPECT_LE(meta["stats"]["points"].get<int>(), 2 * withReturns);
+  EXPECT_GT(withReturns, 100);
   const io::NpyArray counts = io::readNpy(out / "sensors/spad/spad_counts.npy");
   ASSERT_EQ(counts.shape.size(), 3u);
   EXPECT_EQ(counts.shape[0], 4u);

@@ -115,7 +115,21 @@ void parseDivergence(const ConfigNode& n, lidar::LidarSpec& s) {
     if (text.find_first_not_of("0123456789.+-eE ") == std::string::npos) {
       n.failKey("beam_divergence", "needs a unit: '3 mrad', '0.2 deg' (got '" + text + "')");
     }
-    s.divergence_rad = glm::radians(n.getAngle_deg("beam_divergence", 0.0));
+    // Radians and milliradians read as they are written (the effective
+    // config's "rad" gives back the same double); degrees through
+    // parseAngle_deg.
+    const std::size_t unit = text.find_last_not_of(" ");
+    const bool mrad = text.size() > 4 && text.compare(unit - 3, 4, "mrad") == 0;
+    const bool rad = !mrad && text.size() > 3 && text.compare(unit - 2, 3, "rad") == 0;
+    if (mrad || rad) {
+      try {
+        s.divergence_rad = std::stod(text.substr(0, unit - (mrad ? 3 : 2))) / (mrad ? 1000.0 : 1.0);
+      } catch (const std::exception&) {
+        n.failKey("beam_divergence", "expected an angle such as '3 mrad' (got '" + text + "')");
+      }
+    } else {
+      s.divergence_rad = glm::radians(n.getAngle_deg("beam_divergence", 0.0));
+    }
   }
   if (!(s.divergence_rad > 0.0) || s.divergence_rad >= M_PI / 2) {
     n.failKey("beam_divergence", "must be > 0 and below 90 degrees (the full angle)");
@@ -269,7 +283,7 @@ YAML::Node lidarNode(const LidarConfig& c) {
   n["azimuth"]["start"] = shortest(s.azimuth_start_deg);
   n["azimuth"]["end"] = shortest(s.azimuth_end_deg);
   n["azimuth"]["step"] = shortest(s.azimuth_step_deg);
-  n["beam_divergence"] = shortest(s.divergence_rad * 1e3) + " mrad";
+  n["beam_divergence"] = shortest(s.divergence_rad) + " rad";
   n["beam_profile"] = beamProfileName(s.profile);
   n["beam_rays"] = s.beam_rays;
   n["power"] = shortest(s.power_W);

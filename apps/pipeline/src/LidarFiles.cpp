@@ -43,7 +43,8 @@ Image pictureRows(const Image& image) {
 // name.npy, name.exr (channel Y) and name.png of a (channels, azimuths) image.
 void writeImage(const std::filesystem::path& dir, const std::string& name, const Image& image,
                 const std::string& label, PlotRanges& ranges, std::vector<std::string>& files) {
-  io::writeNpy(dir / (name + ".npy"), image);
+  io::writeNpy(dir / (name + ".npy"), {std::size_t(image.height), std::size_t(image.width)},
+               image.data.data());
   io::writeExr(dir / (name + ".exr"), image, {"Y"});
   imaging::ColorScale scale;
   scale.range = ranges.take(name);
