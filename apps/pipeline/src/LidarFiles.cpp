@@ -1,6 +1,7 @@
 #include "LidarFiles.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <nlohmann/json.hpp>
 
@@ -134,7 +135,8 @@ std::string metadataJson(const config::RunConfig& config, const LidarFrame& fram
   return j.dump(2) + "\n";
 }
 
-// waveforms.png: the lidar.plot_beams' waveforms against range.
+// waveforms.png: the lidar.plot_beams' waveforms against range, over the
+// bins that hold their light (and 1 m either side), in uW m^-2.
 void writeWaveformPlot(const config::RunConfig& config, const TransientVolume& volume,
                        const std::filesystem::path& dir, std::vector<std::string>& files) {
   const config::LidarConfig& lidar = *config.lidar;
@@ -142,21 +144,37 @@ void writeWaveformPlot(const config::RunConfig& config, const TransientVolume& v
   const TimeAxis& axis = volume.axis();
   const double toRange = axis.camera_unwarp ? axis.index_of_refraction
                                             : 2.0 * axis.index_of_refraction;
+  const double binRange_m = axis.bin_width_m() / toRange;
+  int32_t first = volume.bins(), last = -1;
+  for (const auto& [ring, a] : lidar.plot_beams) {
+    const float* w = volume.data() + volume.index(ring, a, 0, 0);
+    for (int32_t b = 0; b < volume.bins(); ++b) {
+      if (w[b] > 0.0f) {
+        first = std::min(first, b);
+        last = std::max(last, b);
+      }
+    }
+  }
+  const auto pad = static_cast<int32_t>(std::ceil(1.0 / binRange_m));
+  first = last < 0 ? 0 : std::max(0, first - pad);
+  last = last < 0 ? volume.bins() - 1 : std::min(volume.bins() - 1, last + pad);
   imaging::LinePlot plot;
   for (const auto& [ring, a] : lidar.plot_beams) {
     const float* w = volume.data() + volume.index(ring, a, 0, 0);
-    plot.series.emplace_back(w, w + volume.bins());
+    std::vector<float> series;
+    for (int32_t b = first; b <= last; ++b) series.push_back(w[b] * 1e6f);
+    plot.series.push_back(std::move(series));
     char label[96];
     std::snprintf(label, sizeof label, "ring %d (%.1f deg), azimuth %.1f deg", ring,
                   lidar.spec.elevations_deg[static_cast<std::size_t>(ring)],
                   lidar.spec.azimuthOf_deg(a));
     plot.labels.push_back(label);
   }
-  plot.x0 = axis.start_m() / toRange;
-  plot.dx = axis.bin_width_m() / toRange;
+  plot.x0 = axis.start_m() / toRange + first * binRange_m;
+  plot.dx = binRange_m;
   plot.xUnit = "m";
   plot.xLabel = "range";
-  plot.yLabel = "irradiance per bin [W m^-2]";
+  plot.yLabel = "irradiance per bin [uW m^-2]";
   plot.title = "lidar waveforms (direct light)";
   imaging::writeLinePlotPng(dir / "waveforms.png", plot);
   files.push_back("waveforms.png");
