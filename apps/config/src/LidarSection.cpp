@@ -44,6 +44,7 @@ void parseOrientation(const ConfigNode& lidarNode, LidarConfig& out) {
   if (!o.has("look_at")) o.failKey("look_at", "required key is missing ([x, y, z] in metres)");
   out.look_at_world = finiteVec3(o, "look_at", {});
   const glm::vec3 up = finiteVec3(o, "up", {0.0f, 0.0f, 1.0f});
+  out.up_written = up;
   if (!(glm::length(up) > 0.0f)) o.failKey("up", "must not be zero (the spin axis)");
   lidar::LidarSpec& s = out.spec;
   s.up_world = glm::normalize(up);
@@ -269,7 +270,7 @@ YAML::Node lidarNode(const LidarConfig& c) {
   n["scan"] = "spinning";
   n["position"] = vec(s.position_world);
   n["orientation"]["look_at"] = vec(c.look_at_world);
-  n["orientation"]["up"] = vec(s.up_world);
+  n["orientation"]["up"] = vec(c.up_written);
   if (c.channel_count > 0) {
     n["channels"]["count"] = c.channel_count;
     n["channels"]["min"] = shortest(c.channel_min_deg);

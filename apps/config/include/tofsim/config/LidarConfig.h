@@ -17,6 +17,7 @@ namespace tofsim::config {
 struct LidarConfig {
   lidar::LidarSpec spec;
   glm::vec3 look_at_world{1.0f, 0.0f, 0.0f};  ///< as written (spec.forward_world follows)
+  glm::vec3 up_written{0.0f, 0.0f, 1.0f};     ///< as written (spec.up_world: normalised)
   /// channels: {count, min, max} as written; count 0 when the elevations
   /// were given as a list.
   int32_t channel_count = 0;
