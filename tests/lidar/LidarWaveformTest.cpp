@@ -130,7 +130,10 @@ TEST_P(LidarStepEdgeTest, ABeamOnAStepEdgeReturnsTwoEchoesSplitByItsProfile) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Profiles, LidarStepEdgeTest,
-                         ::testing::Values(BeamProfile::Gaussian, BeamProfile::Tophat));
+                         ::testing::Values(BeamProfile::Gaussian, BeamProfile::Tophat),
+                         [](const ::testing::TestParamInfo<BeamProfile>& info) {
+                           return info.param == BeamProfile::Gaussian ? "Gaussian" : "Tophat";
+                         });
 
 TEST(LidarWaveformTest, APlanesEchoIsRhoCosOverPiRSquared) {
   const double rho = 0.3;
