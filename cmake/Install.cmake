@@ -9,7 +9,7 @@ include(CMakePackageConfigHelpers)
 # links and that is missing here fails at configure time (install(EXPORT)
 # names it).
 set(TOFSIM_EXPORTED_LIBRARIES util volume optics physics io compare scene capture rays ir gl
-    render reference cpu sensors config imaging pipeline)
+    render reference cpu lidar_spec lidar sensors config imaging pipeline)
 
 # The libraries' include folders are absolute source (and build) paths, right
 # for this build tree only: in the export they become <prefix>/include, where

@@ -41,6 +41,21 @@ out("fuzz_config", "medium_fog.yaml", "scene: scenes/cornell_box.gltf\ncamera: {
     "medium: {visibility: 50 m, albedo: [0.9, 0.95, 1], phase: rayleigh}\n")
 out("fuzz_config", "fog_lidar.yaml", open(os.path.join(src, "configs/fog_lidar.yaml")).read())
 
+# config: a lidar (issue 43): the shipped street, elevations as a list with
+# every optional key, and the keys it refuses (a preset, a raster scan)
+out("fuzz_config", "lidar_street.yaml", open(os.path.join(src, "configs/lidar_street.yaml")).read())
+out("fuzz_config", "lidar_list.yaml", "scene: scenes/cornell_box.gltf\nlidar:\n"
+    "  position: [0.3, 0.5, -0.5]\n  orientation: {look_at: [0.3, 0.5, 0.5], up: [0, 1, 0]}\n"
+    "  channels: [-10, -2.5, 0, 4]\n  azimuth: {start: -30 deg, end: 0.5 rad, step: 1.5}\n"
+    "  beam_divergence: 0.2 deg\n  beam_profile: tophat\n  beam_rays: 7\n  power: 2\n"
+    "  rotation_rate: 20 Hz\n  plot_beams: [[0, 0], [3, 10.5]]\n"
+    "  returns: {mode: all, max: 4, threshold: 1e-6, separation: 5 cm}\n"
+    "time: {bins: 16, bin_width: 1 m}\nmedium: {sigma_a: 0.1}\noutput: {transient: false}\n")
+out("fuzz_config", "lidar_refused.yaml", "scene: scenes/cornell_box.gltf\nlidar:\n"
+    "  preset: vlp16\n  scan: raster\n  position: [0, 0, 0]\n"
+    "  channels: {count: 0}\n  azimuth: {step: 0}\n  beam_divergence: 0 mrad\n"
+    "camera: {}\ntime: {bins: 16, bin_width: 1 m}\n")
+
 # glTF: the shipped scene, a triangle with indices, a strip with a sparse
 # POSITION accessor, and the triangle as .glb
 out("fuzz_gltf", "cornell_box.gltf", open(os.path.join(src, "configs/scenes/cornell_box.gltf")).read())

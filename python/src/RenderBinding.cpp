@@ -254,6 +254,10 @@ py::dict render(const config::RunConfig& config, const std::optional<std::string
     SigintScope sigint(mainThread);
     return renderNlos(config, outputDir, quiet);
   }
+  if (config.lidar && !outputDir) {
+    throw py::value_error(
+        "a `lidar:` config renders into a folder for now: tofsim.render(config, output_dir=...)");
+  }
   Rendered r;
   {
     py::gil_scoped_release released;
@@ -312,9 +316,9 @@ class KeptRenderer {
 
  private:
   static void refuseNlosAndSequences(const config::RunConfig& config) {
-    if (config.nlos || config.sequence) {
+    if (config.nlos || config.sequence || config.lidar) {
       throw py::value_error(
-          "tofsim.Renderer renders camera captures; render an `nlos:` or `sequence:` config "
+          "tofsim.Renderer renders camera captures; render an `nlos:`, `lidar:` or `sequence:` config "
           "with tofsim.render");
     }
   }

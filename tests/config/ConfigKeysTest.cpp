@@ -205,6 +205,11 @@ TEST_F(ConfigKeysWriterTest, EffectiveConfigWritesEveryDeclaredKey) {
                                     << medium << "\n";
     leafPaths(YAML::Load(effectiveConfigYaml(loadRunConfig(dir_ / "md.yaml"))), "", written);
   }
+  // A lidar in place of the camera and the light (channels as a count).
+  std::ofstream(dir_ / "li.yaml") << "scene: scene.gltf\nlidar: {position: [0, 0, 1], "
+                                     "orientation: {look_at: [1, 0, 1]}, channels: {count: 2, "
+                                     "min: -1, max: 1}}\ntime: {}\n";
+  leafPaths(YAML::Load(effectiveConfigYaml(loadRunConfig(dir_ / "li.yaml"))), "", written);
   written.erase("");
   std::set<std::string> declared;
   for (const ConfigKey& k : runConfigKeys()) declared.insert(k.path);

@@ -131,6 +131,27 @@ const char* kSingleNlos =
     "scene: scene.gltf\nnlos: {relay_wall: w, scan: single, laser_point: [0.25, 0.75], "
     "sensor_origin: [0, 0, 1], laser_origin: [0, 0, 1]}\ntime: {}\n";
 
+// The lidar's keys (instead of camera and light), each off its default
+// (`scan` has one value today).
+const char* kMinimalLidar =
+    "scene: scene.gltf\nlidar: {position: [0, 0, 1], orientation: {look_at: [1, 0, 1]}, "
+    "channels: {count: 1}}\ntime: {}\n";
+const char* kEveryLidarKey = R"(scene: scene.gltf
+lidar:
+  position: [0, 0, 1]
+  orientation: {look_at: [1, 0, 1], up: [0, 0.5, 2]}
+  channels: {count: 3, min: -5, max: 5}
+  azimuth: {start: 10, end: 100, step: 1.5}
+  beam_divergence: 0.2 deg
+  beam_profile: tophat
+  beam_rays: 7
+  power: 2
+  rotation_rate: 20 Hz
+  returns: {mode: all, max: 4, threshold: 1e-6, separation: 5 cm}
+  plot_beams: [[1, 40]]
+time: {bins: 64}
+)";
+
 // The node at a dotted key path, or an undefined node.
 YAML::Node at(const YAML::Node& root, const std::string& path) {
   YAML::Node node = YAML::Clone(root);
@@ -167,6 +188,7 @@ TEST_F(EveryKeyRoundTripTest, EveryDeclaredKeyIsNonDefaultAndSurvivesTheRoundTri
     const std::string type = key.type;
     if (type == "mapping" || std::string(key.path) == "sensors") continue;
     if (std::string(key.path).rfind("nlos.", 0) == 0) continue;  // NlosKeysSurviveTheRoundTrip
+    if (std::string(key.path).rfind("lidar.", 0) == 0) continue;  // LidarKeysSurvive...
     // Instead of camera: RayListConfigTest.TheEffectiveConfigRoundTrips.
     if (std::string(key.path).rfind("rays.", 0) == 0) continue;
     // Keyed by a material's name, each model's own keys:
@@ -216,6 +238,24 @@ TEST_F(EveryKeyRoundTripTest, NlosKeysAreNonDefaultAndSurviveTheRoundTrip) {
     if (fallback.IsDefined()) {
       EXPECT_NE(text(value), text(fallback)) << path << " has its default value in the test config";
     }
+  }
+}
+
+TEST_F(EveryKeyRoundTripTest, LidarKeysAreNonDefaultAndSurviveTheRoundTrip) {
+  const YAML::Node defaults =
+      YAML::Load(effectiveConfigYaml(load(kMinimalLidar, "minimal_lidar.yaml")));
+  const std::string written = effectiveConfigYaml(load(kEveryLidarKey, "lidar.yaml"));
+  const YAML::Node every = YAML::Load(written);
+  EXPECT_FALSE(every["camera"].IsDefined());
+  EXPECT_FALSE(every["light"].IsDefined());
+  EXPECT_EQ(effectiveConfigYaml(load(written, "again.yaml")), written);
+  for (const ConfigKey& key : runConfigKeys()) {
+    const std::string path = key.path;
+    if (path.rfind("lidar.", 0) != 0) continue;
+    const YAML::Node value = at(every, path);
+    ASSERT_TRUE(value.IsDefined()) << path << " is not in the effective config";
+    if (std::string(key.defaultValue) == "required" || path == "lidar.scan") continue;
+    EXPECT_NE(text(value), text(at(defaults, path))) << path << " has its default value";
   }
 }
 

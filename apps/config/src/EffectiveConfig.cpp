@@ -6,6 +6,7 @@
 #include "CameraFields.h"
 #include "FieldEmit.h"
 #include "LensConfig.h"
+#include "LidarSection.h"
 #include "LightFields.h"
 #include "MaterialSection.h"
 #include "MediumSection.h"
@@ -199,6 +200,8 @@ std::string effectiveConfigYaml(const RunConfig& config) {
   root["scene"] = std::filesystem::absolute(config.scene_file).lexically_normal().string();
   if (config.nlos) {
     root["nlos"] = nlosNode(*config.nlos);
+  } else if (config.lidar) {
+    root["lidar"] = lidarNode(*config.lidar);
   } else {
     if (config.rays) {
       root["rays"] = raysNode(*config.rays);
@@ -216,9 +219,10 @@ std::string effectiveConfigYaml(const RunConfig& config) {
   if (config.medium) root["medium"] = mediumNode(config);
   root["render"] = renderNode(config);
   YAML::Node output = outputNode(config.output);
-  if (config.nlos) {  // the keys an nlos capture reads (RunChecks.cpp's checkNlosRun)
+  if (config.nlos || config.lidar) {  // the keys they read (checkNlosRun, checkLidarRun)
     YAML::Node kept;
     for (const char* key : {"directory", "transient", "max_bytes"}) kept[key] = output[key];
+    if (config.lidar) kept["plot_ranges"] = output["plot_ranges"];
     output = kept;
   }
   root["output"] = output;

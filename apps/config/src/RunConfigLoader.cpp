@@ -5,6 +5,7 @@
 
 #include "CameraConfigParser.h"
 #include "ConfigNode.h"
+#include "LidarSection.h"
 #include "MaterialSection.h"
 #include "MediumSection.h"
 #include "NlosConfigParser.h"
@@ -47,8 +48,13 @@ void parseScene(const ConfigNode& root, RunConfig& config) {
   }
 }
 
-// A camera and a light, or an nlos scan in their place.
+// A camera and a light, or an nlos scan or a lidar in their place.
 void parseView(const ConfigNode& root, RunConfig& config) {
+  if (root.has("lidar")) {
+    parseLidarView(root, config);
+    checkLidarRun(root);
+    return;
+  }
   const auto nlos = root.optionalChild("nlos");
   if (!nlos && root.has("rays")) {
     if (root.has("camera")) root.failKey("camera", "a capture has one imager: `camera` or `rays`, not both");

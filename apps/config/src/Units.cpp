@@ -78,7 +78,8 @@ double parseLength_m(const std::string& text) { return scaled(text, kLengthUnits
 
 double parseAngle_deg(const std::string& text) {
   static const std::map<std::string, double, std::less<>> units = {{"deg", 1.0},
-                                                                   {"rad", 180.0 / M_PI}};
+                                                                   {"rad", 180.0 / M_PI},
+                                                                   {"mrad", 0.18 / M_PI}};
   return scaled(text, units, "angle");
 }
 

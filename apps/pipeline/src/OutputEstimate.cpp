@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <limits>
 
+#include "LidarRun.h"
 #include "tofsim/pipeline/NlosEstimate.h"
 #include "tofsim/pipeline/OutputProducts.h"
 #include "tofsim/util/Error.h"
@@ -120,6 +121,8 @@ void checkRunSizes(const config::RunConfig& config) {
   if (config.nlos) {
     checkNlosMemory(config);
     checkMaxBytes(nlosOutputs(config), config);
+  } else if (config.lidar) {
+    checkMaxBytes(lidarOutputs(config), config);
   } else {
     checkMaxBytes(estimateOutputs(config), config);
   }

@@ -7,6 +7,7 @@
 #include <optional>
 
 #include "KeptAcrossRenders.h"
+#include "LidarRun.h"
 #include "NlosRun.h"
 #include "OutputStreams.h"
 #include "ProductWriters.h"
@@ -58,6 +59,7 @@ RunSummary runRender(const config::RunConfig& config, const RunOptions& options)
 RunSummary runRender(const config::RunConfig& config, PreparedRenderer& prepared,
                      const RunOptions& options) {
   if (config.nlos) return runNlosRender(config, prepared, options);
+  if (config.lidar) return runLidarRender(config, prepared, options);
   if (config.sequence) return runSequenceRender(config, prepared, options);
   Progress progress("render", options.quiet);  // its time includes the scene's loading
   prepared.prepare(config);
@@ -67,7 +69,7 @@ RunSummary runRender(const config::RunConfig& config, PreparedRenderer& prepared
 
 RunSummary runRender(const config::RunConfig& config, const scene::Scene& scene,
                      const RunOptions& options) {
-  TOFSIM_CHECK(!config.nlos);
+  TOFSIM_CHECK(!config.nlos && !config.lidar);
   Progress progress("render", options.quiet);
   PreparedRenderer prepared(options.eglPlatform);
   return renderScene(config, scene, options, progress, prepared);

@@ -23,6 +23,9 @@ void validateRun(const config::RunConfig& config) {
     planNlosScan(config, scene);  // the relay wall and the origins in front of it
     return;
   }
+  // A lidar's beams are not a camera's job: its light off the axis is
+  // reported by its render (lidar.json's stats, LidarRun.cpp).
+  if (config.lidar) return;
   prepareCapture(config, scene, /*notes=*/true);  // the glTF camera, the time axis
   // The MP4 encoder, a module loaded on first use, as render asks for it.
   if (config.output.video || (config.sequence && config.sequence->video)) {

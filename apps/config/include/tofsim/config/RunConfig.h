@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <glm/glm.hpp>
 #include <map>
+#include <memory>
 #include <optional>
 #include <string>
 #include <utility>
@@ -25,6 +26,10 @@
 #include "tofsim/sensors/SensorSpec.h"
 
 namespace tofsim::config {
+
+/// `lidar:` in place of `camera:` (LidarConfig.h); declared here only, so
+/// that the lidar's header stays out of every file that includes this one.
+struct LidarConfig;
 
 /// camera.psf: the lens's point spread function, applied to every time bin
 /// of the transient before any output or sensor (pipeline::PsfSegments), or
@@ -190,6 +195,9 @@ struct RunConfig {
   /// (NlosConfig.h); `light` then holds the laser spot's emitter (a
   /// Lambertian light, placed per laser point by the pipeline).
   std::optional<NlosConfig> nlos;
+  /// A lidar capture in place of a camera and a light (LidarConfig.h,
+  /// core/lidar); null without `lidar:`. Shared, not copied: it is read only.
+  std::shared_ptr<const LidarConfig> lidar;
   /// A capture sequence of the scene's animations (SequenceConfig.h); unset:
   /// one capture at the rest pose. Not with nlos.
   std::optional<SequenceConfig> sequence;

@@ -13,7 +13,7 @@ namespace tofsim::config {
 double parseDuration_s(const std::string& text);
 /// Length in metres: m, cm, mm, um, km. A bare number is metres.
 double parseLength_m(const std::string& text);
-/// Angle in degrees: deg or rad. A bare number is degrees.
+/// Angle in degrees: deg, rad or mrad. A bare number is degrees.
 double parseAngle_deg(const std::string& text);
 /// Byte count: B, KB, MB, GB, KiB, MiB, GiB, TiB. A bare number is bytes.
 double parseBytes(const std::string& text);

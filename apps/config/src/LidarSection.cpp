@@ -1,0 +1,309 @@
+#include "LidarSection.h"
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "ShortestNumber.h"
+#include "Vec3Key.h"
+
+namespace tofsim::config {
+
+const char* beamProfileName(lidar::BeamProfile profile) {
+  return profile == lidar::BeamProfile::Tophat ? "tophat" : "gaussian";
+}
+
+const char* returnModeName(lidar::ReturnMode mode) {
+  switch (mode) {
+    case lidar::ReturnMode::First: return "first";
+    case lidar::ReturnMode::Strongest: return "strongest";
+    case lidar::ReturnMode::Last: return "last";
+    case lidar::ReturnMode::Dual: return "dual";
+    case lidar::ReturnMode::All: return "all";
+  }
+  return "strongest";
+}
+
+namespace {
+
+constexpr int32_t kMaxChannels = 1024;
+constexpr int32_t kMaxAzimuths = 1 << 20;
+
+glm::vec3 finiteVec3(const ConfigNode& node, const char* key, const glm::vec3& fallback) {
+  const glm::vec3 v = vec3Of(node, key, fallback);
+  if (!(std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z))) node.failKey(key, "must be finite [x, y, z] in metres");
+  return v;
+}
+
+void parseOrientation(const ConfigNode& lidarNode, LidarConfig& out) {
+  if (!lidarNode.has("orientation")) {
+    lidarNode.failKey("orientation", "required key is missing ({look_at: [x, y, z], up: [x, y, z]})");
+  }
+  const ConfigNode o = lidarNode.child("orientation");
+  if (!o.isMap()) o.fail("expected {look_at: [x, y, z], up: [x, y, z]}");
+  if (!o.has("look_at")) o.failKey("look_at", "required key is missing ([x, y, z] in metres)");
+  out.look_at_world = finiteVec3(o, "look_at", {});
+  const glm::vec3 up = finiteVec3(o, "up", {0.0f, 0.0f, 1.0f});
+  out.up_written = up;
+  if (!(glm::length(up) > 0.0f)) o.failKey("up", "must not be zero (the spin axis)");
+  lidar::LidarSpec& s = out.spec;
+  s.up_world = glm::normalize(up);
+  const glm::vec3 d = out.look_at_world - s.position_world;
+  const glm::vec3 forward = d - glm::dot(d, s.up_world) * s.up_world;
+  if (!(glm::length(forward) > 1e-6f * std::max(1.0f, glm::length(d)))) {
+    o.failKey("look_at", "must not lie on the spin axis (`up` through `position`): azimuth 0 looks at it");
+  }
+  s.forward_world = glm::normalize(forward);
+}
+
+void parseChannels(const ConfigNode& lidarNode, LidarConfig& out) {
+  if (!lidarNode.has("channels")) {
+    lidarNode.failKey("channels", "required key is missing ({count, min, max} in degrees, or a list of elevations)");
+  }
+  const ConfigNode c = lidarNode.child("channels");
+  std::vector<double>& el = out.spec.elevations_deg;
+  if (c.isSequence()) {
+    for (const ConfigNode& e : c.elements()) el.push_back(e.asDouble());
+    if (el.empty()) c.fail("no channels: list at least one elevation (degrees)");
+  } else {
+    if (!c.isMap()) c.fail("expected {count, min, max} or a list of elevations (degrees)");
+    const long long count = c.getInt("count", 0);
+    if (count < 1 || count > kMaxChannels) {
+      c.failKey("count", "no channels: count must be in [1, " + std::to_string(kMaxChannels) + "]");
+    }
+    out.channel_count = static_cast<int32_t>(count);
+    out.channel_min_deg = c.getAngle_deg("min", 0.0);
+    out.channel_max_deg = c.getAngle_deg("max", out.channel_min_deg);
+    if (out.channel_max_deg < out.channel_min_deg) c.failKey("max", "must be >= min");
+    if (count > 1 && !(out.channel_max_deg > out.channel_min_deg)) {
+      c.failKey("max", "must be > min with more than one channel");
+    }
+    for (long long i = 0; i < count; ++i) {
+      el.push_back(count == 1 ? out.channel_min_deg
+                              : out.channel_min_deg + (out.channel_max_deg - out.channel_min_deg) *
+                                                          double(i) / double(count - 1));
+    }
+  }
+  if (static_cast<int32_t>(el.size()) > kMaxChannels) {
+    c.fail("at most " + std::to_string(kMaxChannels) + " channels");
+  }
+  for (double e : el) {
+    if (!(e >= -90.0 && e <= 90.0)) c.fail("elevations must be in [-90, 90] degrees");
+  }
+}
+
+void parseAzimuth(const ConfigNode& lidarNode, lidar::LidarSpec& s) {
+  if (!lidarNode.has("azimuth")) return;
+  const ConfigNode a = lidarNode.child("azimuth");
+  if (!a.isMap()) a.fail("expected {start, end, step} in degrees");
+  s.azimuth_start_deg = a.getAngle_deg("start", s.azimuth_start_deg);
+  s.azimuth_end_deg = a.getAngle_deg("end", s.azimuth_end_deg);
+  s.azimuth_step_deg = a.getAngle_deg("step", s.azimuth_step_deg);
+  if (!(s.azimuth_step_deg > 0.0)) a.failKey("step", "must be > 0 degrees");
+  if (!(s.azimuth_end_deg > s.azimuth_start_deg)) a.failKey("end", "must be > start");
+  if (s.azimuth_end_deg - s.azimuth_start_deg > 360.0 + 1e-9) {
+    a.failKey("end", "end - start must be at most 360 degrees (one turn)");
+  }
+  if (s.azimuths() > kMaxAzimuths) {
+    a.failKey("step", "gives more than " + std::to_string(kMaxAzimuths) + " azimuths");
+  }
+}
+
+void parseDivergence(const ConfigNode& n, lidar::LidarSpec& s) {
+  if (n.has("beam_divergence")) {
+    const std::string text = n.child("beam_divergence").asString();
+    // A bare number could be degrees or milliradians: a unit is needed.
+    if (text.find_first_not_of("0123456789.+-eE ") == std::string::npos) {
+      n.failKey("beam_divergence", "needs a unit: '3 mrad', '0.2 deg' (got '" + text + "')");
+    }
+    // Radians and milliradians read as they are written (the effective
+    // config's "rad" gives back the same double); degrees through
+    // parseAngle_deg.
+    const std::size_t unit = text.find_last_not_of(" ");
+    const bool mrad = text.size() > 4 && text.compare(unit - 3, 4, "mrad") == 0;
+    const bool rad = !mrad && text.size() > 3 && text.compare(unit - 2, 3, "rad") == 0;
+    if (mrad || rad) {
+      try {
+        s.divergence_rad = std::stod(text.substr(0, unit - (mrad ? 3 : 2))) / (mrad ? 1000.0 : 1.0);
+      } catch (const std::exception&) {
+        n.failKey("beam_divergence", "expected an angle such as '3 mrad' (got '" + text + "')");
+      }
+    } else {
+      s.divergence_rad = glm::radians(n.getAngle_deg("beam_divergence", 0.0));
+    }
+  }
+  if (!(s.divergence_rad > 0.0) || s.divergence_rad >= M_PI / 2) {
+    n.failKey("beam_divergence", "must be > 0 and below 90 degrees (the full angle)");
+  }
+  const std::string profile = n.getString("beam_profile", "gaussian");
+  if (profile == "gaussian") {
+    s.profile = lidar::BeamProfile::Gaussian;
+  } else if (profile == "tophat") {
+    s.profile = lidar::BeamProfile::Tophat;
+  } else {
+    n.failKey("beam_profile", "must be gaussian or tophat (got '" + profile + "')");
+  }
+  const long long rays = n.getInt("beam_rays", s.beam_rays);
+  if (rays < 1 || rays > 4096) n.failKey("beam_rays", "must be in [1, 4096]");
+  s.beam_rays = static_cast<int32_t>(rays);
+}
+
+void parseReturns(const ConfigNode& lidarNode, lidar::ReturnSettings& r) {
+  if (!lidarNode.has("returns")) return;
+  const ConfigNode n = lidarNode.child("returns");
+  if (!n.isMap()) n.fail("expected {mode, max, threshold, separation}");
+  const std::string mode = n.getString("mode", returnModeName(r.mode));
+  bool known = false;
+  for (auto m : {lidar::ReturnMode::First, lidar::ReturnMode::Strongest, lidar::ReturnMode::Last,
+                 lidar::ReturnMode::Dual, lidar::ReturnMode::All}) {
+    if (mode == returnModeName(m)) {
+      r.mode = m;
+      known = true;
+    }
+  }
+  if (!known) n.failKey("mode", "must be first, strongest, last, dual or all (got '" + mode + "')");
+  const long long max = n.getInt("max", r.max);
+  if (max < 1 || max > 255) n.failKey("max", "must be in [1, 255]");
+  r.max = static_cast<int32_t>(max);
+  r.threshold = n.getDouble("threshold", r.threshold);
+  if (!(r.threshold >= 0.0 && std::isfinite(r.threshold))) n.failKey("threshold", "must be >= 0");
+  r.separation_m = n.getLength_m("separation", r.separation_m);
+  if (!(r.separation_m >= 0.0 && std::isfinite(r.separation_m))) {
+    n.failKey("separation", "must be a length >= 0");
+  }
+}
+
+void parsePlotBeams(const ConfigNode& lidarNode, LidarConfig& out) {
+  if (!lidarNode.has("plot_beams")) return;
+  const ConfigNode list = lidarNode.child("plot_beams");
+  const lidar::LidarSpec& s = out.spec;
+  for (const ConfigNode& beam : list.elements()) {
+    std::vector<double> v;
+    if (beam.isSequence()) {
+      for (const ConfigNode& e : beam.elements()) v.push_back(e.asDouble());
+    }
+    if (v.size() != 2) beam.fail("expected [ring, azimuth in degrees]");
+    const double a = std::round((v[1] - s.azimuth_start_deg) / s.azimuth_step_deg);
+    if (!(v[0] >= 0 && v[0] < s.channels() && v[0] == std::floor(v[0]))) {
+      beam.fail("the ring must be an integer in [0, " + std::to_string(s.channels()) + ")");
+    }
+    if (!(a >= 0 && a < s.azimuths())) beam.fail("the azimuth is outside lidar.azimuth");
+    out.plot_beams.push_back({static_cast<int32_t>(v[0]), static_cast<int32_t>(a)});
+  }
+}
+
+void parseScan(const ConfigNode& n) {
+  if (n.has("preset")) {
+    n.failKey("preset", "unknown preset '" + n.getString("preset", "") +
+                            "': no lidar presets are built yet; give the channels, azimuth and "
+                            "beam_divergence (configs/README.md, `lidar`)");
+  }
+  const std::string scan = n.getString("scan", "spinning");
+  if (scan == "raster" || scan == "zones") {
+    n.failKey("scan", "'" + scan + "' scans are not built yet: only `scan: spinning`");
+  }
+  if (scan != "spinning") n.failKey("scan", "must be spinning (got '" + scan + "')");
+}
+
+}  // namespace
+
+void parseLidarView(const ConfigNode& root, RunConfig& config) {
+  for (const char* key : {"camera", "nlos", "rays", "light"}) {
+    if (root.has(key)) {
+      root.failKey(key, "a lidar capture has its own beams from `lidar.position` (no camera, "
+                        "light, rays or nlos scan): remove `" + std::string(key) + "` or `lidar`");
+    }
+  }
+  const ConfigNode n = root.child("lidar");
+  if (!n.isMap()) n.fail("expected a mapping (position, orientation, channels, azimuth, ...)");
+  auto out = std::make_shared<LidarConfig>();
+  out->at = n.location();
+  parseScan(n);
+  if (!n.has("position")) n.failKey("position", "required key is missing ([x, y, z] in metres)");
+  out->spec.position_world = finiteVec3(n, "position", {});
+  parseOrientation(n, *out);
+  parseChannels(n, *out);
+  parseAzimuth(n, out->spec);
+  parseDivergence(n, out->spec);
+  out->spec.power_W = n.getDouble("power", out->spec.power_W);
+  if (!(out->spec.power_W > 0.0 && std::isfinite(out->spec.power_W))) {
+    n.failKey("power", "must be > 0 W");
+  }
+  out->rotation_rate_Hz = n.getFrequency_Hz("rotation_rate", out->rotation_rate_Hz);
+  if (!(out->rotation_rate_Hz > 0.0 && std::isfinite(out->rotation_rate_Hz))) {
+    n.failKey("rotation_rate", "must be > 0 Hz");
+  }
+  parseReturns(n, out->spec.returns);
+  parsePlotBeams(n, *out);
+  config.camera.camera.width = out->spec.azimuths();
+  config.camera.camera.height = out->spec.channels();
+  config.lidar = std::move(out);
+}
+
+void checkLidarRun(const ConfigNode& root) {
+  if (root.has("sequence")) {
+    root.failKey("sequence", "a sequence of lidar captures (a rolling scan of a moving scene) is "
+                             "not built yet: remove `sequence` or `lidar`");
+  }
+  if (const auto output = root.optionalChild("output")) {
+    for (const char* key : {"steady", "depth", "frames", "video", "frame_pngs", "components",
+                            "video_tone_map", "video_stride", "video_window", "video_fps",
+                            "format"}) {
+      if (output->has(key)) {
+        output->failKey(key, "does not apply to a lidar capture (it writes waveforms.npy, its "
+                             "range and intensity images and point clouds: configs/README.md, "
+                             "`lidar`)");
+      }
+    }
+  }
+}
+
+YAML::Node lidarNode(const LidarConfig& c) {
+  const lidar::LidarSpec& s = c.spec;
+  const auto vec = [](const glm::vec3& v) {
+    YAML::Node n(YAML::NodeType::Sequence);
+    for (int i = 0; i < 3; ++i) n.push_back(shortest(v[i]));
+    n.SetStyle(YAML::EmitterStyle::Flow);
+    return n;
+  };
+  YAML::Node n;
+  n["scan"] = "spinning";
+  n["position"] = vec(s.position_world);
+  n["orientation"]["look_at"] = vec(c.look_at_world);
+  n["orientation"]["up"] = vec(c.up_written);
+  if (c.channel_count > 0) {
+    n["channels"]["count"] = c.channel_count;
+    n["channels"]["min"] = shortest(c.channel_min_deg);
+    n["channels"]["max"] = shortest(c.channel_max_deg);
+  } else {
+    YAML::Node list(YAML::NodeType::Sequence);
+    for (double e : s.elevations_deg) list.push_back(shortest(e));
+    list.SetStyle(YAML::EmitterStyle::Flow);
+    n["channels"] = list;
+  }
+  n["azimuth"]["start"] = shortest(s.azimuth_start_deg);
+  n["azimuth"]["end"] = shortest(s.azimuth_end_deg);
+  n["azimuth"]["step"] = shortest(s.azimuth_step_deg);
+  n["beam_divergence"] = shortest(s.divergence_rad) + " rad";
+  n["beam_profile"] = beamProfileName(s.profile);
+  n["beam_rays"] = s.beam_rays;
+  n["power"] = shortest(s.power_W);
+  n["rotation_rate"] = shortest(c.rotation_rate_Hz) + " Hz";
+  n["returns"]["mode"] = returnModeName(s.returns.mode);
+  n["returns"]["max"] = s.returns.max;
+  n["returns"]["threshold"] = shortest(s.returns.threshold);
+  n["returns"]["separation"] = shortest(s.returns.separation_m) + " m";
+  YAML::Node beams(YAML::NodeType::Sequence);
+  for (const auto& [ring, a] : c.plot_beams) {
+    YAML::Node beam(YAML::NodeType::Sequence);
+    beam.push_back(ring);
+    beam.push_back(shortest(s.azimuthOf_deg(a)));
+    beam.SetStyle(YAML::EmitterStyle::Flow);
+    beams.push_back(beam);
+  }
+  beams.SetStyle(YAML::EmitterStyle::Flow);
+  n["plot_beams"] = beams;
+  return n;
+}
+
+}  // namespace tofsim::config

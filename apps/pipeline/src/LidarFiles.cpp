@@ -1,0 +1,242 @@
+#include "LidarFiles.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <nlohmann/json.hpp>
+
+#include "SensorReport.h"
+#include "TimeAxisJson.h"
+#include "tofsim/config/LidarConfig.h"
+#include "tofsim/imaging/LinePlot.h"
+#include "tofsim/imaging/Pictures.h"
+#include "tofsim/io/Exr.h"
+#include "tofsim/io/Npy.h"
+#include "tofsim/lidar/BeamPattern.h"
+#include "tofsim/lidar/PointCloudFiles.h"
+#include "tofsim/pipeline/PlotRanges.h"
+#include "tofsim/pipeline/SensorMetadata.h"
+#include "tofsim/pipeline/SensorWriter.h"
+#include "tofsim/pipeline/Version.h"
+#include "tofsim/sensors/RunSensor.h"
+#include "tofsim/util/AtomicFile.h"
+#include "tofsim/util/Interrupt.h"
+
+namespace tofsim::pipeline {
+
+namespace {
+
+nlohmann::ordered_json vec(const glm::vec3& v) { return {v.x, v.y, v.z}; }
+
+// The picture with the highest ring on top (the arrays keep ring 0 in row
+// 0), each ring drawn up to 8 rows tall so that a wide scan stays readable.
+Image pictureRows(const Image& image) {
+  const int32_t repeat = std::clamp(image.width / std::max(1, 8 * image.height), 1, 8);
+  Image out(image.width, image.height * repeat, image.channels);
+  for (int32_t y = 0; y < out.height; ++y) {
+    for (int32_t x = 0; x < image.width; ++x) {
+      out.at(y, x, 0) = image.at(image.height - 1 - y / repeat, x, 0);
+    }
+  }
+  return out;
+}
+
+// name.npy, name.exr (channel Y) and name.png of a (channels, azimuths) image.
+void writeImage(const std::filesystem::path& dir, const std::string& name, const Image& image,
+                const std::string& label, PlotRanges& ranges, std::vector<std::string>& files) {
+  io::writeNpy(dir / (name + ".npy"), {std::size_t(image.height), std::size_t(image.width)},
+               image.data.data());
+  io::writeExr(dir / (name + ".exr"), image, {"Y"});
+  imaging::ColorScale scale;
+  scale.range = ranges.take(name);
+  scale.nonPositiveIsNoData = true;
+  scale.noDataLabel = "no return";
+  imaging::writeColormappedPng(dir / (name + ".png"), pictureRows(image), label, scale);
+  for (const char* ext : {".npy", ".exr", ".png"}) files.push_back(name + ext);
+}
+
+std::vector<float> beamDirections(const lidar::LidarSpec& s) {
+  std::vector<float> out;
+  out.reserve(static_cast<std::size_t>(s.channels()) * s.azimuths() * 3);
+  for (int32_t r = 0; r < s.channels(); ++r) {
+    for (int32_t a = 0; a < s.azimuths(); ++a) {
+      const glm::vec3 d = lidar::beamDirection(s, r, a);
+      out.insert(out.end(), {d.x, d.y, d.z});
+    }
+  }
+  return out;
+}
+
+nlohmann::ordered_json settingsJson(const config::LidarConfig& c) {
+  const lidar::LidarSpec& s = c.spec;
+  nlohmann::ordered_json j;
+  j["scan"] = "spinning";
+  j["position"] = vec(s.position_world);
+  j["forward"] = vec(s.forward_world);
+  j["up"] = vec(s.up_world);
+  j["elevations_deg"] = s.elevations_deg;
+  j["azimuth_start_deg"] = s.azimuth_start_deg;
+  j["azimuth_step_deg"] = s.azimuth_step_deg;
+  j["azimuths"] = s.azimuths();
+  j["beam_direction_doc"] =
+      "beam (ring r, azimuth a): cos(el_r) (cos(az_a) forward + sin(az_a) (up x forward)) + "
+      "sin(el_r) up, az_a = azimuth_start_deg + a azimuth_step_deg; beam_directions.npy holds "
+      "them (channels, azimuths, 3)";
+  j["beam_divergence_rad"] = s.divergence_rad;
+  j["beam_profile"] = config::beamProfileName(s.profile);
+  j["beam_rays"] = s.beam_rays;
+  j["power_W"] = s.power_W;
+  j["rotation_rate_Hz"] = c.rotation_rate_Hz;
+  j["returns"] = {{"mode", config::returnModeName(s.returns.mode)},
+                  {"max", s.returns.max},
+                  {"threshold", s.returns.threshold},
+                  {"separation_m", s.returns.separation_m}};
+  return j;
+}
+
+std::string metadataJson(const config::RunConfig& config, const LidarFrame& frame,
+                         const std::vector<std::string>& files) {
+  const lidar::LidarSpec& s = config.lidar->spec;
+  nlohmann::ordered_json j;
+  j["format"] = "tofsim lidar capture";
+  j["tofsim_version"] = kVersion;
+  j["files"] = files;
+  j["lidar"] = settingsJson(*config.lidar);
+  j["waveforms_shape"] = {s.channels(), s.azimuths(), config.render.time.bins};
+  j["axes"] = {"ring", "azimuth", "t"};
+  j["value_unit"] = "W m^-2";
+  j["value_doc"] =
+      "waveforms.npy: the laser light reaching the receiver's aperture within the bin, as "
+      "irradiance for an impulse of `power_W` at t = 0: each receiver ray brings power x share x "
+      "f x cos / r^2 x T (f the surface's BRDF toward the lidar, the mean of R, G and B; T the "
+      "medium's transmittance both ways); direct light only (multipath is a later slice)";
+  j["echo_doc"] =
+      "an echo is a run of bins above returns.threshold (runs closer than returns.separation "
+      "merged): intensity = its summed bins, range = its energy-weighted mean time x (c / eta) / "
+      "2; range.* and intensity.* hold the mode's first return (0: none), rows = rings (ring 0 "
+      "first; the PNG draws the highest ring on top); points.ply / points.pcd every kept return";
+  j["time"] = timeAxisJson(config.render.time);
+  if (config.render.medium.present()) {
+    const glm::vec3 t = config.render.medium.sigmaT();
+    j["medium"] = {{"sigma_t_per_m", vec(t)},
+                   {"doc", "attenuates every ray both ways; the medium's own backscatter is not "
+                           "in the waveforms yet"}};
+  }
+  const double beams = double(s.channels()) * s.azimuths();
+  j["stats"] = {{"seconds", frame.seconds},
+                {"threads", frame.threads},
+                {"beams", beams},
+                {"rays", beams * lidar::beamRays(s.beam_rays, s.divergence_rad, s.profile).size()},
+                {"beams_per_second", frame.seconds > 0.0 ? beams / frame.seconds : 0.0},
+                {"beams_with_returns", frame.returns->beamsWithReturns},
+                {"points", frame.returns->points.size()},
+                {"lost_before_axis", frame.waveforms->lost.before},
+                {"lost_after_axis", frame.waveforms->lost.after}};
+  return j.dump(2) + "\n";
+}
+
+// waveforms.png: the lidar.plot_beams' waveforms against range, over the
+// bins that hold their light (and 1 m either side), in uW m^-2.
+void writeWaveformPlot(const config::RunConfig& config, const TransientVolume& volume,
+                       const std::filesystem::path& dir, std::vector<std::string>& files) {
+  const config::LidarConfig& lidar = *config.lidar;
+  if (lidar.plot_beams.empty()) return;
+  const TimeAxis& axis = volume.axis();
+  const double toRange = axis.camera_unwarp ? axis.index_of_refraction
+                                            : 2.0 * axis.index_of_refraction;
+  const double binRange_m = axis.bin_width_m() / toRange;
+  int32_t first = volume.bins(), last = -1;
+  for (const auto& [ring, a] : lidar.plot_beams) {
+    const float* w = volume.data() + volume.index(ring, a, 0, 0);
+    for (int32_t b = 0; b < volume.bins(); ++b) {
+      if (w[b] > 0.0f) {
+        first = std::min(first, b);
+        last = std::max(last, b);
+      }
+    }
+  }
+  const auto pad = static_cast<int32_t>(std::ceil(1.0 / binRange_m));
+  first = last < 0 ? 0 : std::max(0, first - pad);
+  last = last < 0 ? volume.bins() - 1 : std::min(volume.bins() - 1, last + pad);
+  imaging::LinePlot plot;
+  for (const auto& [ring, a] : lidar.plot_beams) {
+    const float* w = volume.data() + volume.index(ring, a, 0, 0);
+    std::vector<float> series;
+    for (int32_t b = first; b <= last; ++b) series.push_back(w[b] * 1e6f);
+    plot.series.push_back(std::move(series));
+    char label[96];
+    std::snprintf(label, sizeof label, "ring %d (%.1f deg), azimuth %.1f deg", ring,
+                  lidar.spec.elevations_deg[static_cast<std::size_t>(ring)],
+                  lidar.spec.azimuthOf_deg(a));
+    plot.labels.push_back(label);
+  }
+  plot.x0 = axis.start_m() / toRange + first * binRange_m;
+  plot.dx = binRange_m;
+  plot.xUnit = "m";
+  plot.xLabel = "range";
+  plot.yLabel = "irradiance per bin [uW m^-2]";
+  plot.title = "lidar waveforms (direct light)";
+  imaging::writeLinePlotPng(dir / "waveforms.png", plot);
+  files.push_back("waveforms.png");
+}
+
+// The configured sensors on the waveforms: pixels are beams.
+void writeSensors(const config::RunConfig& config, const TransientVolume& volume,
+                  const std::filesystem::path& dir, PlotRanges& ranges, const Progress& progress,
+                  std::vector<std::string>& files) {
+  for (std::size_t i = 0; i < config.sensors.size(); ++i) {
+    throwIfInterrupted();
+    const sensors::SensorSpec& spec = config.sensors[i];
+    SensorRunInfo run{&spec, volume.axis(), config.render.seed, {}};
+    std::vector<sensors::SensorOutput> outputs;
+    try {
+      run.warnings = sensors::sensorWarnings(spec, sensors::shapeOf(volume), nullptr);
+      printSensorWarnings(spec, run.warnings);
+      outputs = sensors::runSensor(spec, {&volume, nullptr, nullptr, nullptr, config.render.seed});
+    } catch (const InputError& e) {
+      rethrowSensorError(config, i, e);
+    }
+    const std::filesystem::path relative = std::filesystem::path("sensors") / spec.name;
+    for (const std::string& f : writeSensorOutputs(dir / relative, outputs, run, ranges)) {
+      files.push_back((relative / f).string());
+    }
+    progress.message("sensor '" + spec.name + "': " + std::to_string(outputs.size()) + " outputs");
+  }
+}
+
+}  // namespace
+
+std::vector<std::string> writeLidarFiles(const config::RunConfig& config, const LidarFrame& frame,
+                                         const std::filesystem::path& dir,
+                                         const Progress& progress) {
+  const lidar::LidarSpec& s = config.lidar->spec;
+  const TransientVolume& volume = frame.waveforms->volume;
+  std::vector<std::string> files;
+  if (config.output.transient) {
+    io::writeNpy(dir / "waveforms.npy",
+                 {std::size_t(s.channels()), std::size_t(s.azimuths()), std::size_t(volume.bins())},
+                 volume.data());
+    files.push_back("waveforms.npy");
+  }
+  PlotRanges ranges(config.output.plot_ranges);
+  writeImage(dir, "range", frame.returns->range_m, "range [m]", ranges, files);
+  writeImage(dir, "intensity", frame.returns->intensity, "intensity [W m^-2]", ranges, files);
+  io::writeNpy(dir / "beam_directions.npy",
+               {std::size_t(s.channels()), std::size_t(s.azimuths()), 3}, beamDirections(s).data());
+  files.push_back("beam_directions.npy");
+  lidar::writePly(dir / "points.ply", frame.returns->points, "tofsim lidar returns");
+  lidar::writePcd(dir / "points.pcd", frame.returns->points);
+  files.insert(files.end(), {"points.ply", "points.pcd"});
+  writeWaveformPlot(config, volume, dir, files);
+  writeSensors(config, volume, dir, ranges, progress, files);
+  warnUntakenPlotRanges(ranges.untaken(""));
+  std::vector<std::string> listed = files;
+  listed.push_back("config.effective.yaml");
+  writeFileAtomically(dir / "lidar.json", metadataJson(config, frame, listed));
+  files.push_back("lidar.json");
+  writeFileAtomically(dir / "config.effective.yaml", config::effectiveConfigYaml(config));
+  files.push_back("config.effective.yaml");
+  return files;
+}
+
+}  // namespace tofsim::pipeline

@@ -1,0 +1,109 @@
+// Issue 43: a lidar's direct-light beams per second (core/lidar's
+// renderDirectWaveforms: receiver rays through Embree, each beam's waveform
+// on the time axis) and, on the same frame, the echoes and returns
+// (lidarReturns), on a glTF scene (default: configs/scenes/lidar_street.gltf,
+// the lidar 1.8 m above its street, spin axis +y).
+//
+// Usage: tofsim_lidar_beams [channels] [azimuths] [bins] [beam_rays] [threads] [repeats] [scene]
+// Defaults: 16 1800 1000 16 0 (all cores) 3. Prints the best of the repeats.
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+
+#include "tofsim/ir/MaterialVertex.h"
+#include "tofsim/lidar/BeamPattern.h"
+#include "tofsim/lidar/DirectWaveforms.h"
+#include "tofsim/lidar/LidarReturns.h"
+#include "tofsim/scene/GltfLoader.h"
+#include "tofsim/util/ParallelFor.h"
+
+using namespace tofsim;
+
+namespace {
+
+double seconds(std::chrono::steady_clock::time_point since) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - since).count();
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const auto arg = [&](int i, long long fallback) {
+    return argc > i ? std::atoll(argv[i]) : fallback;
+  };
+  const auto channels = static_cast<int>(arg(1, 16));
+  const auto azimuths = static_cast<int>(arg(2, 1800));
+  const auto bins = static_cast<int32_t>(arg(3, 1000));
+  const auto rays = static_cast<int32_t>(arg(4, 16));
+  const int threads = resolveThreads(static_cast<int>(arg(5, 0)));
+  const int repeats = static_cast<int>(std::max(1LL, arg(6, 3)));
+  const std::string scenePath =
+      argc > 7 ? argv[7] : std::string(TOFSIM_SOURCE_DIR) + "/configs/scenes/lidar_street.gltf";
+
+  const scene::Scene scene = scene::loadGltf(scenePath);
+  const rays::RayScene rayScene(scene, threads);
+  lidar::WaveformScene traced{&rayScene, ir::materialVertices(scene, physics::VERTEX_LAMBERTIAN), {}};
+  lidar::LidarSpec spec;
+  spec.position_world = {0.0f, 1.8f, 0.0f};
+  spec.up_world = {0.0f, 1.0f, 0.0f};
+  spec.forward_world = {1.0f, 0.0f, 0.0f};
+  for (int c = 0; c < channels; ++c) {
+    spec.elevations_deg.push_back(channels == 1 ? 0.0 : -15.0 + 30.0 * c / (channels - 1));
+  }
+  spec.azimuth_step_deg = 360.0 / azimuths;
+  spec.beam_rays = rays;
+  TimeAxis axis;
+  axis.bin_width_s = 300e-12;  // 4.5 cm of range; 1000 bins reach 45 m
+  axis.bins = bins;
+
+  // The rays alone (Embree's closest hits, nothing done with them): what
+  // the waveforms cost beyond tracing.
+  const std::vector<lidar::BeamRay> beamRays =
+      lidar::beamRays(spec.beam_rays, spec.divergence_rad, spec.profile);
+  const auto traceAll = [&] {
+    std::vector<double> sums(static_cast<std::size_t>(channels) * azimuths / 256 + 1, 0.0);
+    parallelForBlocks(static_cast<std::size_t>(channels) * azimuths, 256, threads,
+                      [&](std::size_t begin, std::size_t end) {
+                        for (std::size_t b = begin; b < end; ++b) {
+                          const lidar::BeamFrame f = lidar::beamFrame(
+                              lidar::beamDirection(spec, static_cast<int32_t>(b / azimuths),
+                                                   static_cast<int32_t>(b % azimuths)),
+                              spec.up_world);
+                          for (const lidar::BeamRay& r : beamRays) {
+                            const auto hit = rayScene.intersect(
+                                spec.position_world, lidar::rayDirection(f, r.offset_rad));
+                            if (hit) sums[begin / 256] += hit->distance_m;
+                          }
+                        }
+                      });
+    return sums[0];
+  };
+  double bestTrace = 1e300;
+  for (int r = 0; r < repeats; ++r) {
+    const auto start = std::chrono::steady_clock::now();
+    (void)traceAll();
+    bestTrace = std::min(bestTrace, seconds(start));
+  }
+  double best = 1e300, bestReturns = 1e300;
+  std::size_t points = 0;
+  for (int r = 0; r < repeats; ++r) {
+    const auto start = std::chrono::steady_clock::now();
+    const lidar::LidarWaveforms w = lidar::renderDirectWaveforms(spec, traced, axis, threads);
+    best = std::min(best, seconds(start));
+    const auto returnsStart = std::chrono::steady_clock::now();
+    points = lidar::lidarReturns(spec, w.volume, 10.0).points.size();
+    bestReturns = std::min(bestReturns, seconds(returnsStart));
+  }
+  const double beams = double(channels) * azimuths;
+  std::printf("scene %s, %d x %d beams, %d bins, %d rays per beam, %d threads\n", scenePath.c_str(),
+              channels, azimuths, bins, rays, threads);
+  std::printf("rays alone: %.3f s = %.0f beams/s (%.0f rays/s)\n", bestTrace, beams / bestTrace,
+              beams * rays / bestTrace);
+  std::printf("waveforms: %.3f s = %.0f beams/s (%.0f rays/s); returns: %.3f s = %.0f beams/s; "
+              "%zu points\n",
+              best, beams / best, beams * rays / best, bestReturns, beams / bestReturns, points);
+  return 0;
+}

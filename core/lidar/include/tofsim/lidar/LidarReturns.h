@@ -1,0 +1,27 @@
+#pragma once
+// A frame's returns: each beam's echoes (Echoes.h) as the mode keeps them,
+// as images and as points.
+
+#include <vector>
+
+#include "tofsim/lidar/LidarSpec.h"
+#include "tofsim/lidar/PointCloudFiles.h"
+#include "tofsim/volume/TransientVolume.h"
+
+namespace tofsim::lidar {
+
+struct LidarReturns {
+  /// (channels, azimuths): the mode's first return's range (m) and energy
+  /// (the waveform's unit); 0 where a beam has none.
+  Image range_m, intensity;
+  /// Every kept return, beam by beam (ring-major, then azimuth, then return).
+  std::vector<LidarPoint> points;
+  std::size_t beamsWithReturns = 0;
+};
+
+/// The returns of `waveforms` (renderDirectWaveforms' volume); a beam fires
+/// at (azimuth - start) / 360 / rotation_rate_Hz after the scan's start.
+LidarReturns lidarReturns(const LidarSpec& spec, const TransientVolume& waveforms,
+                          double rotation_rate_Hz);
+
+}  // namespace tofsim::lidar

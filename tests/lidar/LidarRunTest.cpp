@@ -1,0 +1,130 @@
+// A `lidar:` config through the pipeline and the CLI: the files a run
+// writes agree with each other, a SPAD sensor runs on the waveforms (pixels
+// = beams), the effective config loads again to the same run; bad input
+// (no channels, a zero step, a divergence <= 0, a preset, a scan not built,
+// `lidar` beside `camera` or `nlos`) ends in a located error, exit 1 and no
+// output folder.
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "pipeline/CliRun.h"
+#include "support/TempDir.h"
+#include "tofsim/config/LidarConfig.h"
+#include "tofsim/config/RunConfig.h"
+#include "tofsim/io/Npy.h"
+#include "tofsim/pipeline/RenderRun.h"
+
+namespace tofsim {
+namespace {
+
+namespace fs = std::filesystem;
+
+const std::string kStreet = std::string(TOFSIM_SOURCE_DIR) + "/configs/scenes/lidar_street.gltf";
+
+// 4 channels x 36 azimuths over the street, 400 bins of 300 ps (0 .. 18 m).
+std::string smallLidar(const std::string& extra = "") {
+  return "scene: " + kStreet +
+         "\n"
+         "lidar:\n"
+         "  position: [0, 1.8, 0]\n"
+         "  orientation: {look_at: [1, 1.8, 0], up: [0, 1, 0]}\n"
+         "  channels: {count: 4, min: -15, max: 0}\n"
+         "  azimuth: {start: 0, end: 360, step: 10}\n"
+         "  beam_divergence: 3 mrad\n"
+         "  returns: {mode: dual, max: 2}\n" +
+         extra + "time: {bin_width: 300 ps, bins: 400}\n";
+}
+
+class LidarRunTest : public test::TempDirTest {
+ protected:
+  fs::path writeConfig(const std::string& yaml) {
+    const fs::path path = dir_ / "c.yaml";
+    std::ofstream(path) << yaml;
+    return path;
+  }
+};
+
+TEST_F(LidarRunTest, ARunWritesItsFilesAndASpadCountsItsBeams) {
+  const config::RunConfig c = config::loadRunConfig(writeConfig(
+      smallLidar() + "sensors:\n  - {type: spad, cycles: 1000, source_scale: 1e5}\n"));
+  pipeline::RunOptions options;
+  options.outputDirectory = dir_ / "out";
+  options.quiet = true;
+  pipeline::runRender(c, options);
+  const fs::path out = dir_ / "out";
+  EXPECT_EQ(io::readNpy(out / "waveforms.npy").shape, (std::vector<std::size_t>{4, 36, 400}));
+  const io::NpyArray range = io::readNpy(out / "range.npy");
+  EXPECT_EQ(range.shape, (std::vector<std::size_t>{4, 36}));
+  for (const char* f : {"range.exr", "range.png", "intensity.npy", "intensity.exr",
+                        "intensity.png", "points.pcd", "points.ply", "beam_directions.npy"}) {
+    EXPECT_TRUE(fs::exists(out / f)) << f;
+  }
+  // The lowest ring (-15 deg from 1.8 m) sees the ground at 1.8 / sin 15 deg
+  // where nothing stands nearer.
+  int ground = 0;
+  for (std::size_t a = 0; a < 36; ++a) ground += std::fabs(range.data[a] - 6.955) < 0.05;
+  EXPECT_GT(ground, 18);
+  const nlohmann::json meta = nlohmann::json::parse(std::ifstream(out / "lidar.json"));
+  EXPECT_EQ(meta["stats"]["beams"].get<double>(), 144.0);
+  // Dual returns: one or two points per beam that has a return.
+  int withReturns = 0;
+  for (float r : range.data) withReturns += r > 0.0f;
+  EXPECT_EQ(meta["stats"]["beams_with_returns"].get<int>(), withReturns);
+  EXPECT_GE(meta["stats"]["points"].get<int>(), withReturns);
+  EXPECT_LE(meta["stats"]["points"].get<int>(), 2 * withReturns);
+  EXPECT_GT(withReturns, 100);
+  const io::NpyArray counts = io::readNpy(out / "sensors/spad/spad_counts.npy");
+  ASSERT_EQ(counts.shape.size(), 3u);
+  EXPECT_EQ(counts.shape[0], 4u);
+  EXPECT_EQ(counts.shape[1], 36u);
+  double total = 0.0;
+  for (float v : counts.data) total += v;
+  EXPECT_GT(total, 0.0);
+  // The effective config is the same run again.
+  const config::RunConfig again = config::loadRunConfig(out / "config.effective.yaml");
+  ASSERT_TRUE(again.lidar);
+  EXPECT_EQ(config::effectiveConfigYaml(again), config::effectiveConfigYaml(c));
+  EXPECT_EQ(again.lidar->spec.elevations_deg, c.lidar->spec.elevations_deg);
+}
+
+struct BadLidar {
+  const char* name;
+  std::string yaml;
+  const char* where;  ///< "file:line" and the key the error names
+};
+
+TEST_F(LidarRunTest, BadInputIsALocatedErrorAndWritesNothing) {
+  const std::string base = smallLidar();
+  const auto replace = [&](const std::string& from, const std::string& to) {
+    std::string s = base;
+    s.replace(s.find(from), from.size(), to);
+    return s;
+  };
+  const std::vector<BadLidar> cases = {
+      {"no channels", replace("{count: 4, min: -15, max: 0}", "{count: 0}"), ":5:"},
+      {"an empty list", replace("{count: 4, min: -15, max: 0}", "[]"), ":5:"},
+      {"a zero step", replace("step: 10", "step: 0"), ":6:"},
+      {"no divergence", replace("3 mrad", "0 mrad"), ":7:"},
+      {"a negative divergence", replace("3 mrad", "-1 mrad"), ":7:"},
+      {"a preset", replace("  beam_divergence", "  preset: vlp16\n  beam_divergence"), ":7:"},
+      {"a raster scan", replace("  beam_divergence", "  scan: raster\n  beam_divergence"), ":7:"},
+      {"a camera too", base + "camera: {resolution: [4, 4]}\n", ":10:"},
+      {"an nlos scan too", base + "nlos: {relay_wall: wall}\n", ":10:"},
+  };
+  for (const BadLidar& bad : cases) {
+    const fs::path config = writeConfig(bad.yaml);
+    const test::CommandResult r =
+        test::runCli("render " + config.string() + " -o " + (dir_ / "out").string());
+    EXPECT_EQ(r.exitCode, 1) << bad.name << ": " << r.output;
+    EXPECT_NE(r.output.find("c.yaml" + std::string(bad.where)), std::string::npos)
+        << bad.name << ": " << r.output;
+    EXPECT_FALSE(fs::exists(dir_ / "out")) << bad.name;
+  }
+}
+
+}  // namespace
+}  // namespace tofsim
