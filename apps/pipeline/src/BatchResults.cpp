@@ -20,11 +20,6 @@ using nlohmann::json;
 
 namespace {
 
-const char* statusText(BatchRunStatus s) {
-  constexpr const char* names[] = {"done", "skipped", "failed", "pending", "interrupted", "busy"};
-  return names[static_cast<int>(s)];
-}
-
 std::optional<json> readJson(const fs::path& file) {
   std::ifstream in(file);
   if (!in) return std::nullopt;
@@ -86,7 +81,7 @@ json runRow(const config::BatchConfig& batch, const BatchRunResult& r) {
   json row = {{"run", r.name},
               {"swept", swept},
               {"directory", r.directory.string()},
-              {"status", statusText(r.status)},
+              {"status", batchRunStatusName(r.status)},
               {"seconds", r.seconds},
               {"render_from", json()},
               {"sensors", json::object()}};

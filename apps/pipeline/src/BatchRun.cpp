@@ -66,24 +66,6 @@ std::string exitText(int status) {
   return "status " + std::to_string(status);
 }
 
-const char* statusName(BatchRunStatus s) {
-  switch (s) {
-    case BatchRunStatus::Done:
-      return "done";
-    case BatchRunStatus::Skipped:
-      return "skipped";
-    case BatchRunStatus::Failed:
-      return "failed";
-    case BatchRunStatus::Pending:
-      return "pending";
-    case BatchRunStatus::Interrupted:
-      return "interrupted";
-    case BatchRunStatus::Busy:
-      return "busy";
-  }
-  return "?";
-}
-
 fs::path lockFile(const BatchRunResult& r) {
   return r.directory.parent_path() / ("." + r.name + ".lock");
 }
@@ -319,7 +301,7 @@ void runPending(const BatchOptions& options, const config::BatchConfig& batch, c
       slot.lock.reset();  // the batch's hold on the run's lock; the worker let go already
       char line[256];
       std::snprintf(line, sizeof line, "[%zu/%zu] %s %s (%.1f s)", ++finished, toRun,
-                    r.name.c_str(), statusName(r.status), r.seconds);
+                    r.name.c_str(), batchRunStatusName(r.status), r.seconds);
       progress.message(line);
     }
   }
@@ -391,55 +373,6 @@ BatchSummary runBatch(const BatchOptions& options) {
     }
   }
   return summary;
-}
-
-std::string formatBatchSummary(const BatchSummary& summary, bool dryRun) {
-  std::size_t width = 3, statusWidth = std::string("interrupted").size();
-  for (const BatchRunResult& r : summary.runs) {
-    width = std::max(width, r.name.size());
-    if (dryRun) statusWidth = std::max(statusWidth, r.state.size());
-  }
-  std::string out;
-  char line[2048];
-  const int w = static_cast<int>(width), sw = static_cast<int>(statusWidth);
-  if (dryRun) {
-    std::snprintf(line, sizeof line, "%-*s  %-*s  %s\n", w, "run", sw, "state", "varied keys");
-  } else {
-    std::snprintf(line, sizeof line, "%-*s  %-*s  %8s  %s\n", w, "run", sw, "status", "seconds",
-                  "output");
-  }
-  out += line;
-  std::size_t counts[6] = {0, 0, 0, 0, 0, 0};
-  for (const BatchRunResult& r : summary.runs) {
-    ++counts[static_cast<int>(r.status)];
-    if (dryRun) {
-      std::snprintf(line, sizeof line, "%-*s  %-*s  %s\n", w, r.name.c_str(), sw, r.state.c_str(),
-                    r.message.c_str());
-    } else {
-      std::snprintf(line, sizeof line, "%-*s  %-*s  %8.1f  %s\n", w, r.name.c_str(), sw,
-                    statusName(r.status), r.seconds, r.directory.string().c_str());
-    }
-    out += line;
-    if (!dryRun && !r.message.empty()) out += "    " + r.message + "\n";
-  }
-  if (dryRun) {
-    std::snprintf(line, sizeof line,
-                  "batch: %zu of %zu run(s) in this shard: %zu done, %zu to run\n",
-                  summary.runs.size(), summary.totalRuns, counts[1], counts[3]);
-  } else {
-    std::snprintf(line, sizeof line,
-                  "batch: %zu of %zu run(s) in this shard: %zu done, %zu skipped, %zu failed, "
-                  "%zu interrupted, %zu busy, %zu pending\n",
-                  summary.runs.size(), summary.totalRuns, counts[0], counts[1], counts[2],
-                  counts[4], counts[5], counts[3]);
-  }
-  out += line;
-  if (summary.interruptSignal != 0) {
-    out += std::string("batch: interrupted by ") +
-           (summary.interruptSignal == SIGINT ? "SIGINT" : "SIGTERM") +
-           "; rerun the batch to finish the interrupted and pending runs\n";
-  }
-  return out;
 }
 
 }  // namespace tofsim::pipeline
