@@ -27,6 +27,13 @@ using namespace tofsim::sensors;
 class CwTofPresetConfigTest : public test::SensorKeysTest<CwTofParams> {
  protected:
   CwTofPresetConfigTest() : SensorKeysTest("cwtof") {}
+  // p through the effective config's writer and read again.
+  static CwTofParams roundTrip(const CwTofParams& p) {
+    YAML::Node doc;
+    doc["sensors"] = sensorsToYaml({SensorSpec{"cwtof", p}});
+    const ConfigNode again(YAML::Load(YAML::Dump(doc)), "effective.yaml");
+    return std::get<CwTofParams>(parseSensors(again.child("sensors")).front().params);
+  }
 };
 
 TEST_F(CwTofPresetConfigTest, PresetsGiveTheirCitedNumbers) {
@@ -106,16 +113,38 @@ TEST_F(CwTofPresetConfigTest, ExplicitKeysWinOverThePreset) {
   EXPECT_EQ(p.capture_order.front(), (CwTofCaptureStep{2, 0}));
   EXPECT_EQ(p.frequencies_Hz, (std::vector<double>{80e6, 16e6, 120e6}));  // not given: the preset's
   EXPECT_EQ(p.adc_bits, 16);
-  // New frequencies with the preset's order of 9 raws: located, naming the key.
-  const std::string error = errorOf("    preset: kinect-v2\n    frequencies: [20 MHz, 100 MHz]\n");
-  EXPECT_NE(error.find("sensor.yaml:4"), std::string::npos) << error;
-  EXPECT_NE(error.find("frequencies"), std::string::npos) << error;
-  EXPECT_NE(error.find("capture_order"), std::string::npos) << error;
-  // With their own order they are fine.
+  // With their own order, new frequencies take it.
   const CwTofParams two = parse(
       "    preset: kinect-v2\n    frequencies: [20 MHz, 100 MHz]\n"
       "    capture_order: [[0, 0], [0, 1], [0, 2], [1, 0], [1, 1], [1, 2]]\n");
-  EXPECT_EQ(two.frequencies_Hz.size(), 2u);
+  EXPECT_EQ(two.capture_order.size(), 6u);
+  EXPECT_EQ(two.capture_order[1], (CwTofCaptureStep{0, 1}));
+}
+
+// Issue 44 item 7: new frequencies or steps over a preset with a capture
+// order derive theirs from the preset's pattern (Kinect: each frequency in
+// turn, its steps descending from 0); `null` derives it too; `[]` is a
+// located error that shows an order to write.
+TEST_F(CwTofPresetConfigTest, NewFrequenciesOrStepsDeriveThePresetsCaptureOrder) {
+  const CwTofParams two = parse("    preset: kinect-v2\n    frequencies: [20 MHz, 100 MHz]\n");
+  EXPECT_EQ(two.capture_order, (std::vector<CwTofCaptureStep>{
+                                   {0, 0}, {0, 2}, {0, 1}, {1, 0}, {1, 2}, {1, 1}}));
+  const CwTofParams four = parse(
+      "    preset: kinect-v2\n    frequencies: 40 MHz\n    phase_steps: 4\n"
+      "    capture_order: null\n");
+  EXPECT_EQ(four.capture_order,
+            (std::vector<CwTofCaptureStep>{{0, 0}, {0, 3}, {0, 2}, {0, 1}}));
+  // The derived order is written out and reads back as itself.
+  EXPECT_EQ(roundTrip(two).capture_order, two.capture_order);
+  const std::string empty = errorOf(
+      "    preset: kinect-v2\n    frequencies: [20 MHz, 100 MHz]\n    capture_order: []\n");
+  EXPECT_NE(empty.find("sensor.yaml:5"), std::string::npos) << empty;
+  EXPECT_NE(empty.find("capture_order: lists no raws"), std::string::npos) << empty;
+  EXPECT_NE(empty.find("e.g. [[0, 0], [0, 2], [0, 1], [1, 0], [1, 2], [1, 1]]"),
+            std::string::npos)
+      << empty;
+  // Without a preset, null is the default order (frequency-major).
+  EXPECT_TRUE(parse("    frequencies: 40 MHz\n    capture_order: null\n").capture_order.empty());
 }
 
 TEST_F(CwTofPresetConfigTest, UnknownPresetIsALocatedErrorListingTheKnownNames) {

@@ -47,6 +47,11 @@ std::vector<Override> setOf(const ConfigNode& node) {
   if (!node.isMap()) node.fail("must be a mapping of key.path: value");
   std::vector<Override> out;
   for (const std::string& key : node.keys()) {
+    if (!node.has(key)) {  // `key: null` sets null (e.g. a capture_order to derive)
+      node.markUsed(key);
+      out.push_back(Override{key, "null"});
+      continue;
+    }
     markAll(node.child(key));
     out.push_back(Override{key, flowText(node.child(key).yaml())});
   }

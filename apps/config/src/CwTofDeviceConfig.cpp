@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "ConfigPath.h"
+#include "CwTofCaptureOrderConfig.h"
 #include "CsvRows.h"
 #include "ShortestNumber.h"
 #include "SpadTableFile.h"
@@ -85,6 +86,12 @@ std::vector<sensors::CwTofCaptureStep> parseCaptureOrder(const ConfigNode& n,
                                                          const CwTofParams& p) {
   const ConfigNode node = n.child("capture_order");
   if (!node.isSequence()) n.failKey("capture_order", "expected a list of [f, n]");
+  if (node.yaml().size() == 0) {
+    n.failKey("capture_order",
+              "lists no raws: write every [frequency index, phase step] once, in the order the "
+              "raws are taken (e.g. " + suggestedCaptureOrder(p) +
+                  "), or leave it out (or null) to have it derived");
+  }
   const auto F = static_cast<int32_t>(p.frequencies_Hz.size());
   const int32_t N = p.phase_steps;
   std::vector<bool> seen(static_cast<std::size_t>(F) * N, false);
@@ -200,7 +207,8 @@ bool parseCwTofDeviceKey(const ConfigNode& n, std::string_view key, CwTofParams&
     return true;
   }
   if (key == "capture_order") {
-    if (n.has(k)) p.capture_order = parseCaptureOrder(n, p);
+    // `capture_order: null` (read, so not an unknown key): derived after.
+    if (n.optionalChild(k)) p.capture_order = parseCaptureOrder(n, p);
     return true;
   }
   if (key == "noise_table") {

@@ -8,6 +8,7 @@
 #include <variant>
 
 #include "ConfigNode.h"
+#include "CwTofCaptureOrderConfig.h"
 #include "CwTofDeviceConfig.h"
 #include "CwTofWaveformFile.h"
 #include "FieldParse.h"
@@ -305,19 +306,6 @@ void SensorConfigType<SpadParams>::checkImage(const ConfigNode& n, const SpadPar
 }
 
 // --- cwtof ----------------------------------------------------------------------
-namespace {
-// A preset's capture order lists its own frequencies and steps: an explicit
-// `frequencies` or `phase_steps` that changes them needs its own order.
-void checkPresetCaptureOrder(const ConfigNode& n, const CwTofParams& p) {
-  if (p.preset.empty() || n.has("capture_order") || p.capture_order.empty()) return;
-  const std::size_t raws = p.frequencies_Hz.size() * static_cast<std::size_t>(p.phase_steps);
-  if (p.capture_order.size() == raws) return;
-  n.failKey(n.has("frequencies") ? "frequencies" : "phase_steps",
-            "changes the raws of preset '" + p.preset + "', whose capture_order lists " +
-                std::to_string(p.capture_order.size()) + " of them: set `capture_order` too");
-}
-}  // namespace
-
 CwTofParams SensorConfigType<CwTofParams>::parse(const ConfigNode& n) {
   CwTofParams p;
   applyPreset(n, cwtofPresets(), "CW-ToF", p);
@@ -354,7 +342,7 @@ CwTofParams SensorConfigType<CwTofParams>::parse(const ConfigNode& n) {
       if (p.frequencies_Hz.empty()) freqs->fail("must list at least one frequency");
     }
   });
-  checkPresetCaptureOrder(n, p);
+  derivePresetCaptureOrder(n, p);
   checkCwTofDevice(n, p);
   return p;
 }

@@ -19,6 +19,9 @@
 #include <thread>
 
 #include "BatchWorker.h"
+#include "SharedRender.h"
+#include "SharedRenders.h"
+#include "tofsim/pipeline/BatchResults.h"
 #include "tofsim/pipeline/ExitCode.h"
 #include "tofsim/pipeline/PreparedRenderer.h"
 #include "tofsim/pipeline/RenderRun.h"
@@ -45,6 +48,7 @@ struct WorkerSlot {
   Clock::time_point start;
   std::optional<RunLock> lock;
   bool signalled = false;  // the batch's interrupt was passed on to it
+  bool rendersKey = false;  // renders its run's render key for the runs that wait on it
 };
 
 std::string lastLogLine(const fs::path& dir) {
@@ -62,32 +66,16 @@ std::string exitText(int status) {
   return "status " + std::to_string(status);
 }
 
-const char* statusName(BatchRunStatus s) {
-  switch (s) {
-    case BatchRunStatus::Done:
-      return "done";
-    case BatchRunStatus::Skipped:
-      return "skipped";
-    case BatchRunStatus::Failed:
-      return "failed";
-    case BatchRunStatus::Pending:
-      return "pending";
-    case BatchRunStatus::Interrupted:
-      return "interrupted";
-    case BatchRunStatus::Busy:
-      return "busy";
-  }
-  return "?";
-}
-
 fs::path lockFile(const BatchRunResult& r) {
   return r.directory.parent_path() / ("." + r.name + ".lock");
 }
 
-// The content key of every run of the shard; the scene digest once per scene
-// file, as a sweep usually renders one scene many times.
+// The content key of every run of the shard, and whether it can take its
+// render from another run of its render key (SharedRender.h); the scene
+// digest once per scene file, as a sweep usually renders one scene many times.
 std::vector<RunContentKey> runKeys(const config::BatchConfig& batch, const fs::path& base,
                                    const std::vector<BatchRunResult>& runs,
+                                   std::vector<bool>& shareable,
                                    const std::function<void(std::size_t, std::size_t)>& visited) {
   std::map<fs::path, std::string> sceneDigests;
   std::vector<RunContentKey> keys;
@@ -96,6 +84,7 @@ std::vector<RunContentKey> runKeys(const config::BatchConfig& batch, const fs::p
     std::string& scene = sceneDigests[fs::absolute(config.scene_file).lexically_normal()];
     if (scene.empty()) scene = sceneInputsDigest(config.scene_file);
     keys.push_back(runContentKey(config, scene));
+    shareable.push_back(sharedRenderObstacle(config).empty());
     visited(keys.size(), runs.size());
   }
   return keys;
@@ -105,7 +94,8 @@ std::vector<RunContentKey> runKeys(const config::BatchConfig& batch, const fs::p
 // slot has none); or marks it busy (another batch has it: returns false) or
 // skipped (another batch finished it since it was assessed).
 bool startRun(const BatchOptions& options, const WorkerTask& task, std::size_t run,
-              const RunContentKey& key, BatchRunResult& r, WorkerSlot& slot) {
+              std::optional<std::size_t> source, const RunContentKey& key, BatchRunResult& r,
+              WorkerSlot& slot) {
   fs::create_directories(r.directory);
   std::optional<RunLock> lock = RunLock::tryAcquire(lockFile(r));
   if (!lock) {
@@ -121,10 +111,10 @@ bool startRun(const BatchOptions& options, const WorkerTask& task, std::size_t r
   // The folder is not emptied: the render replaces the earlier outputs only
   // once its own set is complete, and its manifest lists only its own files.
   // A worker that ended while idle (a signal of its own) is replaced.
-  if (!slot.worker || !slot.worker->send(run, *lock)) {
+  if (!slot.worker || !slot.worker->send(run, *lock, source)) {
     slot.worker.reset();
     slot.worker = BatchWorker::spawn(task);
-    if (!slot.worker->send(run, *lock)) {
+    if (!slot.worker->send(run, *lock, source)) {
       throw InputError("batch: a new worker process ended before its first run");
     }
   }
@@ -221,14 +211,21 @@ namespace {
 // In the worker: the run rendered as `tofsim render <base> --set ... -o <dir>
 // --batch-run <name>` renders it, through the worker's renderer.
 int renderRun(const fs::path& base, const config::BatchRun& run, const BatchRunResult& r,
-              PreparedRenderer& prepared) {
+              const BatchRunResult* source, PreparedRenderer& prepared) {
   return exitCodeOf([&] {
     const config::RunConfig config = config::loadRunConfig(base, run.overrides);
     RunOptions options;
     options.outputDirectory = r.directory;
     options.eglPlatform = gl::eglPlatformFromEnvironment();
     // The key from the config this render loaded: the manifest records what was rendered.
-    options.batchManifest = {r.name, runContentKey(config)};
+    options.batchManifest = {r.name, runContentKey(config), source ? source->name : ""};
+    if (source) {
+      const RunSummary summary = senseFromSavedRender(config, source->directory, prepared, options);
+      std::fprintf(stderr, "batch: run '%s' took the render of run '%s'; wrote %zu file(s) to %s\n",
+                   r.name.c_str(), source->name.c_str(), summary.files.size(),
+                   summary.outputDirectory.string().c_str());
+      return 0;
+    }
     const RunSummary summary = runRender(config, prepared, options);
     std::fputs(renderSummaryText(config, summary).c_str(), stderr);
     std::fprintf(stderr,
@@ -241,13 +238,16 @@ int renderRun(const fs::path& base, const config::BatchRun& run, const BatchRunR
 }
 
 void runPending(const BatchOptions& options, const config::BatchConfig& batch, const fs::path& base,
-                const std::vector<RunContentKey>& keys, std::deque<std::size_t> pending,
-                const Progress& progress, BatchSummary& summary) {
+                const std::vector<RunContentKey>& keys, const std::vector<bool>& shareable,
+                std::deque<std::size_t> pending, const Progress& progress,
+                BatchSummary& summary) {
   const WorkerTask task{
       [&](std::size_t run) { return summary.runs[run].directory / kRunLogName; },
-      [&](std::size_t run, PreparedRenderer& prepared) {
-        return renderRun(base, batch.run(summary.runs[run].index), summary.runs[run], prepared);
+      [&](std::size_t run, std::optional<std::size_t> source, PreparedRenderer& prepared) {
+        return renderRun(base, batch.run(summary.runs[run].index), summary.runs[run],
+                         source ? &summary.runs[*source] : nullptr, prepared);
       }};
+  SharedRenders shared(keys, shareable, summary.runs);
   std::vector<WorkerSlot> slots(static_cast<std::size_t>(options.jobs));
   // Runs another batch is rendering: asked again when this batch has nothing
   // else to start, so that both batches end with every run done.
@@ -264,18 +264,25 @@ void runPending(const BatchOptions& options, const config::BatchConfig& batch, c
     }
     if (pending.empty() && Clock::now() >= retryAt) pending.swap(waiting);
     for (WorkerSlot& slot : slots) {
-      while (!slot.run && !pending.empty()) {
-        const std::size_t run = pending.front();
-        pending.pop_front();
-        if (!startRun(options, task, run, keys[run], summary.runs[run], slot)) {
-          waiting.push_back(run);
+      while (!slot.run) {
+        const std::optional<SharedRenders::Next> next = shared.next(pending);
+        if (!next) break;
+        BatchRunResult& r = summary.runs[next->run];
+        if (!startRun(options, task, next->run, next->source, keys[next->run], r, slot)) {
+          shared.ended(next->run, next->renders, false);
+          waiting.push_back(next->run);
           retryAt = Clock::now() + std::chrono::milliseconds(250);
+        } else if (!slot.run) {  // skipped: another batch finished it
+          shared.ended(next->run, next->renders, true);
+        } else {
+          slot.rendersKey = next->renders;
         }
       }
     }
     const bool busy = std::any_of(slots.begin(), slots.end(), [](auto& s) { return s.run; });
     if (!busy) {
       if (pending.empty() && waiting.empty()) break;
+      shared.noneRendering();  // nothing runs: no run may wait on a render
       std::this_thread::sleep_for(std::chrono::milliseconds(50));
       continue;
     }
@@ -289,11 +296,12 @@ void runPending(const BatchOptions& options, const config::BatchConfig& batch, c
       BatchRunResult& r = summary.runs[*slot.run];
       r.seconds = std::chrono::duration<double>(Clock::now() - slot.start).count();
       recordOutcome(code, status, pendingInterrupt(), keys[*slot.run], r);
+      shared.ended(*slot.run, slot.rendersKey, r.status == BatchRunStatus::Done);
       slot.run.reset();
       slot.lock.reset();  // the batch's hold on the run's lock; the worker let go already
       char line[256];
       std::snprintf(line, sizeof line, "[%zu/%zu] %s %s (%.1f s)", ++finished, toRun,
-                    r.name.c_str(), statusName(r.status), r.seconds);
+                    r.name.c_str(), batchRunStatusName(r.status), r.seconds);
       progress.message(line);
     }
   }
@@ -336,7 +344,9 @@ BatchSummary runBatch(const BatchOptions& options) {
     for (const config::Override& o : run.varied) r.message += o.keyPath + "=" + o.value + "  ";
     summary.runs.push_back(std::move(r));
   }
-  const std::vector<RunContentKey> keys = runKeys(batch, base, summary.runs, pass("runs keyed"));
+  std::vector<bool> shareable;
+  const std::vector<RunContentKey> keys =
+      runKeys(batch, base, summary.runs, shareable, pass("runs keyed"));
   const auto assessed = pass("runs assessed");
   std::deque<std::size_t> pending;
   for (std::size_t i = 0; i < summary.runs.size(); ++i) {
@@ -355,58 +365,14 @@ BatchSummary runBatch(const BatchOptions& options) {
     summary.interruptSignal = pendingInterrupt();  // one that came after the last check
   } else {
     const Progress progress("batch", options.quiet);
-    runPending(options, batch, base, keys, std::move(pending), progress, summary);
+    runPending(options, batch, base, keys, shareable, std::move(pending), progress, summary);
+    try {
+      writeBatchResults(batch, options, summary);
+    } catch (const std::exception& e) {  // the runs' own outputs stand: a note, not a failure
+      std::fprintf(stderr, "batch: results table not written: %s\n", e.what());
+    }
   }
   return summary;
-}
-
-std::string formatBatchSummary(const BatchSummary& summary, bool dryRun) {
-  std::size_t width = 3, statusWidth = std::string("interrupted").size();
-  for (const BatchRunResult& r : summary.runs) {
-    width = std::max(width, r.name.size());
-    if (dryRun) statusWidth = std::max(statusWidth, r.state.size());
-  }
-  std::string out;
-  char line[2048];
-  const int w = static_cast<int>(width), sw = static_cast<int>(statusWidth);
-  if (dryRun) {
-    std::snprintf(line, sizeof line, "%-*s  %-*s  %s\n", w, "run", sw, "state", "varied keys");
-  } else {
-    std::snprintf(line, sizeof line, "%-*s  %-*s  %8s  %s\n", w, "run", sw, "status", "seconds",
-                  "output");
-  }
-  out += line;
-  std::size_t counts[6] = {0, 0, 0, 0, 0, 0};
-  for (const BatchRunResult& r : summary.runs) {
-    ++counts[static_cast<int>(r.status)];
-    if (dryRun) {
-      std::snprintf(line, sizeof line, "%-*s  %-*s  %s\n", w, r.name.c_str(), sw, r.state.c_str(),
-                    r.message.c_str());
-    } else {
-      std::snprintf(line, sizeof line, "%-*s  %-*s  %8.1f  %s\n", w, r.name.c_str(), sw,
-                    statusName(r.status), r.seconds, r.directory.string().c_str());
-    }
-    out += line;
-    if (!dryRun && !r.message.empty()) out += "    " + r.message + "\n";
-  }
-  if (dryRun) {
-    std::snprintf(line, sizeof line,
-                  "batch: %zu of %zu run(s) in this shard: %zu done, %zu to run\n",
-                  summary.runs.size(), summary.totalRuns, counts[1], counts[3]);
-  } else {
-    std::snprintf(line, sizeof line,
-                  "batch: %zu of %zu run(s) in this shard: %zu done, %zu skipped, %zu failed, "
-                  "%zu interrupted, %zu busy, %zu pending\n",
-                  summary.runs.size(), summary.totalRuns, counts[0], counts[1], counts[2],
-                  counts[4], counts[5], counts[3]);
-  }
-  out += line;
-  if (summary.interruptSignal != 0) {
-    out += std::string("batch: interrupted by ") +
-           (summary.interruptSignal == SIGINT ? "SIGINT" : "SIGTERM") +
-           "; rerun the batch to finish the interrupted and pending runs\n";
-  }
-  return out;
 }
 
 }  // namespace tofsim::pipeline

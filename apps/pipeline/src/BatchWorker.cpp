@@ -61,10 +61,13 @@ RunLock::~RunLock() {
 
 namespace {
 
-// The channel's messages: the batch sends a run's index with its lock as
-// SCM_RIGHTS; the worker answers with the run's exit code.
+// The channel's messages: the batch sends a run's index (and the run whose
+// render it takes, or kNoSource) with its lock as SCM_RIGHTS; the worker
+// answers with the run's exit code.
+constexpr std::uint64_t kNoSource = ~std::uint64_t{0};
 struct Request {
   std::uint64_t run = 0;
+  std::uint64_t source = kNoSource;
 };
 
 // A message of one request and room for one descriptor.
@@ -82,8 +85,8 @@ struct RequestMessage {
   RequestMessage& operator=(const RequestMessage&) = delete;
 };
 
-bool sendRequest(int fd, std::uint64_t run, int lockFd) {
-  Request request{run};
+bool sendRequest(int fd, std::uint64_t run, std::uint64_t source, int lockFd) {
+  Request request{run, source};
   RequestMessage m(request);
   msghdr& msg = m.msg;
   cmsghdr* c = CMSG_FIRSTHDR(&msg);
@@ -161,7 +164,9 @@ void closeInheritedFiles(int keep) {
       const std::size_t run = static_cast<std::size_t>(request.run);
       redirectOutput(task.logFile(run));
       if (!prepared) prepared.emplace(gl::eglPlatformFromEnvironment());
-      int code = task.render(run, *prepared);
+      std::optional<std::size_t> source;
+      if (request.source != kNoSource) source = static_cast<std::size_t>(request.source);
+      int code = task.render(run, source, *prepared);
       // After a failed run the next one starts afresh: nothing of a render
       // that threw (a device in an unknown state) is reused.
       if (code != 0) prepared.reset();
@@ -215,8 +220,8 @@ BatchWorker& BatchWorker::operator=(BatchWorker&& other) noexcept {
 
 BatchWorker::~BatchWorker() { waitStatus(); }
 
-bool BatchWorker::send(std::size_t run, const RunLock& lock) {
-  return fd_ >= 0 && sendRequest(fd_, run, lock.fd());
+bool BatchWorker::send(std::size_t run, const RunLock& lock, std::optional<std::size_t> source) {
+  return fd_ >= 0 && sendRequest(fd_, run, source ? *source : kNoSource, lock.fd());
 }
 
 std::optional<int> BatchWorker::receive() {

@@ -51,8 +51,10 @@ class RunLock {
 struct WorkerTask {
   /// Where run `run`'s stdout and stderr go (its log.txt).
   std::function<std::filesystem::path(std::size_t run)> logFile;
-  /// Renders run `run` through `prepared` and returns its exit code.
-  std::function<int(std::size_t run, PreparedRenderer& prepared)> render;
+  /// Renders run `run` through `prepared` (or, given `source`, takes that
+  /// run's render: SharedRender.h) and returns its exit code.
+  std::function<int(std::size_t run, std::optional<std::size_t> source, PreparedRenderer& prepared)>
+      render;
 };
 
 /// The batch's handle on one worker process. Move-only; its end closes the
@@ -75,8 +77,9 @@ class BatchWorker {
   /// worker ended (for poll(2) over the busy workers).
   int fd() const { return fd_; }
   /// Sends run `run` with its lock, which the worker holds until the run
-  /// ends. False when the worker is gone.
-  bool send(std::size_t run, const RunLock& lock);
+  /// ends, and the run whose render it takes, if any. False when the worker
+  /// is gone.
+  bool send(std::size_t run, const RunLock& lock, std::optional<std::size_t> source = {});
   /// The answer to the run sent, when fd() is readable: its exit code, or
   /// nullopt when the worker ended without answering (waitStatus() says how).
   std::optional<int> receive();

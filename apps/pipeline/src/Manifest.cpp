@@ -55,7 +55,8 @@ std::string missingOutput(const nlohmann::json& doc, const fs::path& directory, 
 
 std::vector<ManifestEntry> writeManifest(const fs::path& directory, const std::string& runName,
                                          const std::vector<std::string>& files,
-                                         const RunContentKey& inputs) {
+                                         const RunContentKey& inputs,
+                                         const std::string& renderFrom) {
   std::vector<ManifestEntry> entries;
   for (const std::string& f : files) {
     const std::string rel = fs::path(f).generic_string();
@@ -76,7 +77,13 @@ std::vector<ManifestEntry> writeManifest(const fs::path& directory, const std::s
   const nlohmann::json doc = {
       {"run", runName},
       {"hash", "fnv1a64"},
-      {"inputs", {{"config", inputs.config}, {"scene", inputs.scene}, {"version", inputs.version}}},
+      {"inputs",
+       {{"config", inputs.config},
+        {"scene", inputs.scene},
+        {"version", inputs.version},
+        {"render", inputs.render},
+        {"sense", inputs.sense}}},
+      {"render", {{"key", inputs.render}, {"from", renderFrom.empty() ? runName : renderFrom}}},
       {"files", list}};
   writeFileAtomically(directory / kManifestName, doc.dump(2) + "\n");
   return entries;

@@ -6,6 +6,7 @@
 #include <iterator>
 #include <nlohmann/json.hpp>
 
+#include "tofsim/config/EffectiveConfigParts.h"
 #include "tofsim/pipeline/Version.h"
 #include "tofsim/util/Error.h"
 #include "tofsim/util/Hash.h"
@@ -124,6 +125,16 @@ RunContentKey runContentKey(const config::RunConfig& config, const std::string& 
   key.config = hex64(configHash.value());
   key.scene = sceneDigest.empty() ? sceneInputsDigest(config.scene_file) : sceneDigest;
   key.version = kVersion;
+  const config::EffectiveConfigParts parts = config::effectiveConfigParts(config);
+  Fnv1a64 renderHash;
+  for (const std::string& part : {parts.render, key.scene, key.version}) {
+    renderHash.update(part);
+    renderHash.update("\0", 1);
+  }
+  key.render = hex64(renderHash.value());
+  Fnv1a64 senseHash;
+  senseHash.update(parts.sensors);
+  key.sense = hex64(senseHash.value());
   return key;
 }
 

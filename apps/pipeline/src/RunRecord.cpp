@@ -18,7 +18,8 @@ void writeRecord(const config::RunConfig& config, const capture::RenderJob& job,
   if (options.batchManifest) {
     // Last: it lists the files above with their checksums, so it exists
     // only once all of them do.
-    writeManifest(dir, options.batchManifest->runName, files, options.batchManifest->inputs);
+    writeManifest(dir, options.batchManifest->runName, files, options.batchManifest->inputs,
+                  options.batchManifest->renderFrom);
     files.push_back(kManifestName);
   }
 }

@@ -42,6 +42,8 @@ struct BatchOptions {
 };
 
 enum class BatchRunStatus { Done, Skipped, Failed, Pending, Interrupted, Busy };
+/// "done", "skipped", "failed", "pending", "interrupted", "busy".
+const char* batchRunStatusName(BatchRunStatus status);
 
 struct BatchRunResult {
   std::size_t index = 0;

@@ -30,11 +30,14 @@ struct ManifestEntry {
 /// Hashes `files` (relative to `directory`: the outputs a render wrote) and
 /// writes manifest.json atomically. The log, the manifest itself and any
 /// dot-file (locks, staging folders) are never listed. Returns the entries,
-/// sorted by path.
+/// sorted by path. `renderFrom`: the run whose render this run's volume
+/// and render files are (SharedRender.h; "" for the run itself), recorded
+/// with the render key as "render": {"key", "from"}.
 std::vector<ManifestEntry> writeManifest(const std::filesystem::path& directory,
                                          const std::string& runName,
                                          const std::vector<std::string>& files,
-                                         const RunContentKey& inputs);
+                                         const RunContentKey& inputs,
+                                         const std::string& renderFrom = "");
 
 /// Where a run folder stands against the key its config has now.
 enum class RunState { Done, Missing, Stale, Incomplete };

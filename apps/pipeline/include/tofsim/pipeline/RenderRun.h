@@ -20,6 +20,7 @@ namespace tofsim::pipeline {
 struct BatchManifestInfo {
   std::string runName;
   RunContentKey inputs;
+  std::string renderFrom;  ///< the run whose render it took (SharedRender.h); "" itself
 };
 
 struct RunOptions {

@@ -6,6 +6,12 @@
 // up to date; any difference names what changed (configs/README.md, Batch
 // files). The seed is in the effective config, and the renders are
 // deterministic, so nothing else decides the bytes.
+//
+// The key split in two: `render`, a digest of everything the volume and the
+// render's own files depend on (the effective config without `sensors:`,
+// the scene and the version), and `sense`, of the sensors alone. Runs of one
+// render key differ only in their sensors: a batch renders one of them and
+// senses the others from its saved volume (SharedRender.h).
 
 #include <filesystem>
 #include <string>
@@ -19,6 +25,8 @@ struct RunContentKey {
   std::string config;   ///< hex64 of config::effectiveConfigYaml
   std::string scene;    ///< hex64 over the scene file and the files it references
   std::string version;  ///< pipeline::kVersion, verbatim
+  std::string render;   ///< hex64 over the config without sensors, the scene and the version
+  std::string sense;    ///< hex64 of the effective `sensors:` list
   bool operator==(const RunContentKey&) const = default;
 };
 
