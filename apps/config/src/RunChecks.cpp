@@ -35,7 +35,11 @@ void checkVplCount(const ConfigNode& root, const RunConfig& config) {
                        " light view(s) = " + std::to_string(first - medium) + " VPLs";
     if (medium > 0) what += " + " + std::to_string(medium) + " medium VPLs";
     if (later > 0) what += " + " + std::to_string(later) + " of later bounces";
-    indirect.failKey(later > 0 ? "bounces" : "rsm_resolution",
+    // The key that asked for the most: a given medium_vpls over the RSM's.
+    const char* key = later > 0                                              ? "bounces"
+                      : medium > first - medium && indirect.has("medium_vpls") ? "medium_vpls"
+                                                                               : "rsm_resolution";
+    indirect.failKey(key,
                      what + ", more than the limit of " + std::to_string(kMaxVpls));
   }
 }
