@@ -239,7 +239,10 @@ class GivenVplsBackend : public CpuBackend {
 struct FloorScene {
   double h = 1.0, halfFloor = 20.0, rho = 0.5, intensity = 1.0;
   double sigmaS = 0.3, sigmaA = 0.2, clamp = 100.0;
-  glm::dvec3 camera{0.0, -1.0, 1.0};
+  // Close to the floor point: a camera ray of 1.4 cm, so that light scattered
+  // into it on the way (the camera ray's own medium points) stays far below
+  // the statistics' spread; the leg's time and transmittance are the test's.
+  glm::dvec3 camera{0.0, -0.01, 0.01};
   capture::Medium medium() const {
     capture::Medium m;
     m.sigma_s_per_m = glm::vec3(static_cast<float>(sigmaS));
@@ -338,7 +341,7 @@ void expectFloorPointMatchesTheIntegral(int phase, double g) {
   ir::IrRenderer(std::move(backend)).render(job, volume);
 
   std::vector<Window> windows;
-  const double edges[] = {2.40, 2.50, 2.65, 3.0, 3.5, 4.5, 6.0, 10.0, 100.0};
+  const double edges[] = {1.0, 1.1, 1.25, 1.6, 2.1, 3.1, 4.6, 8.6, 98.6};
   for (std::size_t k = 0; k + 1 < std::size(edges); ++k) windows.push_back({edges[k], edges[k + 1]});
   integrateFloorPoint(s, phase, g, windows);
   for (const Window& w : windows) {
