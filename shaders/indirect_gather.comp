@@ -23,9 +23,10 @@ layout(local_size_x = TOFSIM_WORK_GROUP_SIZE) in;
 #include "transient_physics.glsl"
 #include "vpl_near_field.glsl"
 #include "vpl.glsl"
-#ifdef EXACT_VISIBILITY
+#if defined(EXACT_VISIBILITY) || defined(MEDIUM_VPLS)
 #include "scene_geometry.glsl"
-#else
+#endif
+#ifndef EXACT_VISIBILITY
 layout(std430, binding = TOFSIM_SSBO_ISM) readonly buffer Ism { float ism[]; };
 uniform uint uVplStride;
 uniform int uIsmResolution;
@@ -71,17 +72,27 @@ uniform float uSceneScale_m;
 const uint kLoopTripLimit = 30000u;
 layout(std430, binding = TOFSIM_SSBO_LOOP_GUARD) buffer LoopGuard { uint loopLimitHit; };
 
+// With MEDIUM_VPLS (a scattering medium, capture::Medium::scatters) a medium VPL
+// (zero normal) has no hemisphere to map: it is tested exactly whatever
+// render.indirect.visibility says (the CPU's CpuBackend does the same).
 bool visible(uint ismIndex, Vpl vpl, vec3 x, vec3 n, vec3 d, float dist, float cosX,
              inout uint iterations) {
-#ifdef EXACT_VISIBILITY
+#ifndef EXACT_VISIBILITY
+#ifdef MEDIUM_VPLS
+  if (dot(vpl.normal.xyz, vpl.normal.xyz) != 0.0) {
+#endif
+    ivec2 texel = paraboloidTexel(vpl, d, uIsmResolution);
+    float stored = ism[ismIndex * uVplStride + uint(texel.y * uIsmResolution + texel.x)];
+    // One texel spans at most 4/R radians (at the paraboloid's centre).
+    float bias = ismDepthBias(dist, cosX, 4.0 / float(uIsmResolution), 0.01 * uSceneScale_m);
+    return dist - bias <= stored;
+#ifdef MEDIUM_VPLS
+  }
+#endif
+#endif
+#if defined(EXACT_VISIBILITY) || defined(MEDIUM_VPLS)
   float eps = 1e-4 * uSceneScale_m;
   return !segmentOccluded(vpl.positionPath.xyz + vpl.normal.xyz * eps, x + n * eps, iterations);
-#else
-  ivec2 texel = paraboloidTexel(vpl, d, uIsmResolution);
-  float stored = ism[ismIndex * uVplStride + uint(texel.y * uIsmResolution + texel.x)];
-  // One texel spans at most 4/R radians (at the paraboloid's centre).
-  float bias = ismDepthBias(dist, cosX, 4.0 / float(uIsmResolution), 0.01 * uSceneScale_m);
-  return dist - bias <= stored;
 #endif
 }
 
@@ -138,7 +149,7 @@ void gatherVpl(uint local, Sample at, uint k, Vpl vpl, inout float lostBefore,
   if (dist2 <= 0.0) return;
   float dist = sqrt(dist2);
   vec3 d = toX / dist;
-  float cosVpl = dot(vpl.normal.xyz, d);
+  float cosVpl = vplEmitterCosine(vpl.normal.xyz, d);  // 1 at a medium VPL
   float cosX = receiverCosine(at.vertex, at.n, -d);
   if (cosVpl <= 0.0 || cosX <= 0.0) return;
   float g = vertexOnSurface(at.vertex)

@@ -26,6 +26,9 @@ void main() {
   uint j = id % uPointsPerVpl;
   uint vplIndex = uFirstVpl + local;
   Vpl vpl = vpls[vplIndex];
+  // A medium VPL (zero normal) has no hemisphere to map: the gather tests
+  // it exactly (indirect_gather.comp's visible).
+  if (dot(vpl.normal.xyz, vpl.normal.xyz) == 0.0) return;
   uint h0 = hash3(uSeed, vplIndex, j);
   uint h1 = pcgHash(h0), h2 = pcgHash(h1);
   vec3 p = sampleSurface(unitFloat(h0), unitFloat(h1), unitFloat(h2));

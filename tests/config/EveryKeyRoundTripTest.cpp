@@ -70,6 +70,7 @@ render:
   indirect:
     enabled: false
     rsm_resolution: 8
+    medium_vpls: 300
     rsm_edge_samples: 3
     merge_pixel_samples: true
     ism_resolution: 16

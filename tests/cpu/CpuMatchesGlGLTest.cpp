@@ -457,5 +457,27 @@ TEST(CpuMatchesGlGLTest, CornerAndCornellBoxVolumesWithAdaptiveSamples) {
   }
 }
 
+// Issue 42, item 4: a fog-filled corner (a scattering medium, different per
+// channel, Henyey-Greenstein): the light's medium VPLs and a later bounce
+// through the medium (medium children, and children of medium parents) on
+// both backends alike: a medium VPL's side (vplEmitterCosine), its phase
+// function (GL: whole VPL records, no model folding) and its exact
+// visibility among ISMs, with the tolerances of vacuum.
+TEST(CpuMatchesGlGLTest, CornerVolumesInAScatteringMedium) {
+  test::CornerJob s(8);
+  s.job.settings.indirect.visibility = capture::Visibility::Ism;
+  s.job.settings.indirect.rsm_resolution = 8;
+  s.job.settings.indirect.points_per_vpl = 500;
+  s.job.settings.indirect.medium_vpls = 64;
+  s.job.settings.indirect.bounces = 2;
+  s.job.settings.indirect.vpls_per_bounce = 64;
+  s.job.settings.shadow_map_resolution = 512;
+  s.job.settings.medium.sigma_a_per_m = glm::vec3(0.05f, 0.1f, 0.2f);
+  s.job.settings.medium.sigma_s_per_m = glm::vec3(0.6f, 0.4f, 0.3f);
+  s.job.settings.medium.phase = physics::PHASE_HENYEY_GREENSTEIN;
+  s.job.settings.medium.g = 0.5f;
+  expectSameVolumesForEachPixelModel(s.job, 1e-3, 1e-2);
+}
+
 }  // namespace
 }  // namespace tofsim::cpu

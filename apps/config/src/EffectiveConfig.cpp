@@ -167,7 +167,12 @@ YAML::Node renderNode(const RunConfig& config) {
   YAML::Node n;
   emitFields(n, kRenderFields, config, [&](const std::string& key) {
     YAML::Node section;
-    if (key == "indirect") emitFields(section, kIndirectFields, config.render.indirect);
+    if (key == "indirect") {
+      emitFields(section, kIndirectFields, config.render.indirect);
+      // Only with a medium: a config without one keeps its effective bytes
+      // (and its run content key).
+      if (!config.medium) section.remove("medium_vpls");
+    }
     if (key == "reference") emitFields(section, kReferenceFields, config.reference);
     n[key] = section;
   });

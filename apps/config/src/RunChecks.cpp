@@ -23,16 +23,23 @@ void checkVplCount(const ConfigNode& root, const RunConfig& config) {
       : light.type == capture::Light::Type::Spot && light.cone_half_angle_deg <= 60.0f ? 1
                                                                                        : 6;
   const long long side = s.rsm_resolution;
-  const long long first = faces * side * side;
+  // A scattering medium's VPLs from the light join the first bounce.
+  const long long medium = config.render.medium.scatters() ? s.medium_vpls : 0;
+  const long long first = faces * side * side + medium;
   // Every later bounce traces vpls_per_bounce (0: as many as the first) VPLs.
   const long long later = (s.bounces - 1) * (s.vpls_per_bounce > 0 ? s.vpls_per_bounce : first);
   if (s.enabled && first + later > kMaxVpls) {
     const ConfigNode render = root.child("render");
     const ConfigNode indirect = render.child("indirect");
     std::string what = std::to_string(side) + "^2 x " + std::to_string(faces) +
-                       " light view(s) = " + std::to_string(first) + " VPLs";
+                       " light view(s) = " + std::to_string(first - medium) + " VPLs";
+    if (medium > 0) what += " + " + std::to_string(medium) + " medium VPLs";
     if (later > 0) what += " + " + std::to_string(later) + " of later bounces";
-    indirect.failKey(later > 0 ? "bounces" : "rsm_resolution",
+    // The key that asked for the most: a given medium_vpls over the RSM's.
+    const char* key = later > 0                                              ? "bounces"
+                      : medium > first - medium && indirect.has("medium_vpls") ? "medium_vpls"
+                                                                               : "rsm_resolution";
+    indirect.failKey(key,
                      what + ", more than the limit of " + std::to_string(kMaxVpls));
   }
 }

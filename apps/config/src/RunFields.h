@@ -37,6 +37,8 @@ inline constexpr auto kIndirectFields = std::tuple{
           {.doc = "render indirect light"}},
     Field{"rsm_resolution", &capture::IndirectSettings::rsm_resolution, IntegerIn{1, 4096},
           {.unit = "pixel", .doc = "reflective shadow map side; VPLs = its square per light view (one view for spots up to 60° half angle, six cube faces otherwise; texels that see no lit surface make none, a texel at an edge may make more: `rsm_edge_samples`); at most 4,194,304 texels over the views"}},
+    Field{"medium_vpls", &capture::IndirectSettings::medium_vpls, IntegerIn{0, 1 << 22},
+          {.doc = "with a scattering `medium` (`sigma_s` > 0): rays from the light, drawn from its emission profile, each leaving one medium VPL where it scatters before any surface (a free-flight distance; its flux the power extinguished there, its phase function the medium's), bounce 1 with the RSM's VPLs; later bounces may scatter in the medium too. 0 = none; the default 1024 is the default RSM's VPL count (32^2). Ignored without a scattering medium (core/physics/medium_vpls.md)"}},
     Field{"rsm_edge_samples", &capture::IndirectSettings::rsm_edge_samples, IntegerIn{1, 16},
           {.doc = "N: an RSM texel at an edge (a silhouette, a crease or a depth jump in its 3 x 3 neighbourhood, the test of `adaptive_pixel_samples`) is traced at N x N sub-texels and makes one VPL per flat surface among them, with their summed flux: the first bounce's energy right at the RSM's edges (README.md, \"How it renders\", VPLs). N is lowered so that N `rsm_resolution` <= 2048; 1 = one VPL per texel, at its centre"}},
     Field{"merge_pixel_samples", &capture::IndirectSettings::merge_pixel_samples, Flag{},

@@ -166,6 +166,9 @@ void CpuIsm::build(std::size_t firstVpl, std::size_t count, int threads) {
   parallelFor(count, threads, [&](std::size_t i) {
     float* map = &maps_[i * floatsPerVpl_];
     std::fill_n(map, floatsPerVpl_, kEmpty);
+    // A medium VPL (zero normal) has no hemisphere to map: its map stays
+    // empty, passes every lane, and CpuBackend tests it exactly.
+    if (vplNormal_[firstVpl + i] == glm::vec3(0.0f)) return;
     splat(firstVpl + i, map);
     pullPush(map);
   });

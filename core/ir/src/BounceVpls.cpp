@@ -1,12 +1,15 @@
 #include "tofsim/ir/BounceVpls.h"
 
 #include <algorithm>
+#include <cmath>
 #include <memory>
 #include <optional>
 #include <thread>
 
 #include "tofsim/ir/HitVertex.h"
 #include "tofsim/ir/MaterialVertex.h"
+#include "tofsim/ir/MediumVpl.h"
+#include "tofsim/ir/MediumVpls.h"
 #include "tofsim/ir/VplClasses.h"
 #include "tofsim/physics/MediumPhysics.h"
 #include "tofsim/physics/ScatterSampling.h"
@@ -31,6 +34,40 @@ uint64_t unitOf(uint64_t tag, int32_t bounce, std::size_t index) {
 
 double powerOf(const Vpl& v) { return static_cast<double>(v.flux.r) + v.flux.g + v.flux.b; }
 
+// The flux of a child at vertex `child` that receives `share` of a parent of
+// vertex `parent` through a continuation of `weight`. Where both fluxes are
+// in the same units (both Lambertian: W/sr; neither: W) physics::bounceVplFlux,
+// the floats of before; across them (a medium VPL's W and a Lambertian
+// surface's W/sr, in a scattering medium) through the power the ray carries.
+glm::vec3 childFlux(const physics::ScatterVertex& parent, const physics::ScatterVertex& child,
+                    const glm::vec3& share, const glm::vec3& weight) {
+  const bool cosineParent = physics::vplFluxHoldsScatter(parent);
+  const bool cosineChild = physics::vplFluxHoldsScatter(child);
+  if (cosineParent == cosineChild) return physics::bounceVplFlux(child, share, weight);
+  const float pi = static_cast<float>(M_PI);
+  // A Lambertian parent's share is albedo Phi / pi (W/sr), its cosine
+  // sampling's weight 1: the ray carries pi times it.
+  const glm::vec3 power = cosineParent ? share * pi : share * weight;
+  return cosineChild ? glm::vec3(child.color) * power / pi : power;
+}
+
+// The direction a parent's light continues in and its weight f cos / pdf:
+// a medium VPL's drawn from its phase function about the direction its light
+// travelled (-incoming; weight: the albedo), a surface VPL's from its BRDF
+// (physics::sampleVplContinuation).
+physics::GltfBounce continuationOf(const Vpl& parent, float brdfClamp, Pcg32& rng) {
+  if (isMediumVpl(parent)) {
+    const physics::ScatterVertex& v = parent.vertex;
+    const float u1 = rng.nextFloat();
+    const float u2 = rng.nextFloat();
+    return {physics::samplePhaseDirection(static_cast<int>(v.color.w), v.roughness,
+                                          -glm::vec3(parent.incoming), u1, u2),
+            glm::vec3(v.color)};
+  }
+  return physics::sampleVplContinuation(parent.vertex, glm::vec3(parent.normal),
+                                        glm::vec3(parent.incoming), brdfClamp, rng);
+}
+
 // Child `index`'s light path continued from `parent`, whose power share is
 // `share` (rgb: the parent's flux scaled to total power / count; W/sr, or W
 // for glossy VPLs).
@@ -41,29 +78,52 @@ std::optional<Vpl> shootChild(const rays::RayScene& scene, const Vpl& parent,
                               const std::vector<physics::ScatterVertex>& vertices) {
   Pcg32 rng = Pcg32::forUnit(seed, unitOf(kChildUnit, bounce, index));
   const glm::vec3 p(parent.positionPath);
-  const glm::vec3 n(parent.normal);
-  const physics::GltfBounce continuation = physics::sampleVplContinuation(
-      parent.vertex, n, glm::vec3(parent.incoming), materials.brdfClamp, rng);
+  const glm::vec3 n(parent.normal);  // 0 at a medium VPL: the ray starts at p
+  const physics::GltfBounce continuation = continuationOf(parent, materials.brdfClamp, rng);
   const glm::vec3 w = continuation.direction;
-  if (!(glm::dot(w, n) > 0.0f)) return std::nullopt;
+  if (!isMediumVpl(parent) && !(glm::dot(w, n) > 0.0f)) return std::nullopt;
   const auto hit = scene.intersect(p + n * scene.epsilon_m(), w);
-  if (!hit) return std::nullopt;  // the light leaves the scene
-  const float path_m = parent.positionPath.w + eta * glm::length(hit->position_world - p);
-  // The child receives the parent's share times the continuation's weight
-  // and carries the hit's vertex (and, where its flux does not hold its
-  // scatter, the direction its light came from, -w).
-  const physics::ScatterVertex vertex = hitVertex(*hit, vertices);
-  glm::vec3 flux = physics::bounceVplFlux(vertex, share, continuation.weight);
-  if (tracing.medium.present()) {
-    flux *= physics::mediumTransmittance(tracing.medium.sigmaT(),
-                                         glm::length(hit->position_world - p));
+  // In a scattering medium the ray may end in it first (free flight): a
+  // medium child standing for the power extinguished there, or the hit's
+  // child weighted by its transmittance over the chance of getting there.
+  std::optional<FreeFlight> flight;
+  if (tracing.medium.scatters()) {
+    flight = sampleFreeFlight(tracing.medium,
+                              hit ? static_cast<double>(glm::length(hit->position_world - p)) : kNoHit,
+                              false, rng.nextDouble());
   }
   std::optional<Vpl> child;
-  if (flux.r + flux.g + flux.b > 0.0f) {
-    child = Vpl{glm::vec4(hit->position_world, path_m), glm::vec4(hit->normal_world, 0.0f),
-                glm::vec4(flux, 0.0f)};
-    child->vertex = vertex;
-    if (!physics::vplFluxHoldsScatter(vertex)) child->incoming = glm::vec4(-w, 0.0f);
+  physics::ScatterVertex vertex;
+  if (flight && flight->inMedium) {
+    const auto t = static_cast<float>(flight->t_m);
+    const physics::ScatterVertex mediumVertex =
+        physics::mediumVertex(tracing.medium.albedo(), tracing.medium.phase, tracing.medium.g);
+    const glm::vec3 flux =
+        childFlux(parent.vertex, mediumVertex, share, continuation.weight) * flight->weight;
+    if (flux.r + flux.g + flux.b > 0.0f) {
+      child = mediumVpl(p + w * t, parent.positionPath.w + eta * t, flux, -w, tracing.medium, 0.0f);
+    }
+    vertex = mediumVertex;
+  } else {
+    if (!hit) return std::nullopt;  // the light leaves the scene
+    const float path_m = parent.positionPath.w + eta * glm::length(hit->position_world - p);
+    // The child receives the parent's share times the continuation's weight
+    // and carries the hit's vertex (and, where its flux does not hold its
+    // scatter, the direction its light came from, -w).
+    vertex = hitVertex(*hit, vertices);
+    glm::vec3 flux = childFlux(parent.vertex, vertex, share, continuation.weight);
+    if (flight) {
+      flux *= flight->weight;
+    } else if (tracing.medium.present()) {
+      flux *= physics::mediumTransmittance(tracing.medium.sigmaT(),
+                                           glm::length(hit->position_world - p));
+    }
+    if (flux.r + flux.g + flux.b > 0.0f) {
+      child = Vpl{glm::vec4(hit->position_world, path_m), glm::vec4(hit->normal_world, 0.0f),
+                  glm::vec4(flux, 0.0f)};
+      child->vertex = vertex;
+      if (!physics::vplFluxHoldsScatter(vertex)) child->incoming = glm::vec4(-w, 0.0f);
+    }
   }
   if (child && tracing.russian_roulette) {
     // Survival q = the largest albedo (base colour) channel: a survivor's flux / q stays
@@ -139,8 +199,24 @@ BouncedVpls traceLaterBounces(const capture::RenderJob& job, const rays::RayScen
                               const physics::ResponseClassTable* classes) {
   const capture::IndirectSettings& s = job.settings.indirect;
   TOFSIM_CHECK(s.bounces >= 1);
+  std::unique_ptr<rays::RayScene> built;
+  const auto scene = [&]() -> const rays::RayScene& {
+    if (given != nullptr) return *given;
+    if (!built) built = std::make_unique<rays::RayScene>(*job.scene, 0);
+    return *built;
+  };
+  const physics::ResponseClassTable* delayed =
+      classes != nullptr && classes->delayed() ? classes : nullptr;
   BouncedVpls out;
   out.vpls = std::move(firstBounce);
+  // A scattering medium: the light's paths that scatter in it before any
+  // surface, after the RSM's VPLs (bounce 1: one scattering event).
+  if (s.enabled && s.medium_vpls > 0 && job.settings.medium.scatters()) {
+    const std::vector<Vpl> medium = lightMediumVpls(
+        scene(), job.light, job.settings.medium, static_cast<std::size_t>(s.medium_vpls),
+        job.settings.seed, job.settings.time.index_of_refraction, s.trace_threads, delayed);
+    out.vpls.insert(out.vpls.end(), medium.begin(), medium.end());
+  }
   out.firstOfBounce = {0, out.vpls.size()};
   if (s.bounces == 1 || out.vpls.empty()) {
     out.firstOfBounce.resize(static_cast<std::size_t>(s.bounces) + 1, out.vpls.size());
@@ -148,18 +224,14 @@ BouncedVpls traceLaterBounces(const capture::RenderJob& job, const rays::RayScen
   }
   const std::size_t count =
       s.vpls_per_bounce > 0 ? static_cast<std::size_t>(s.vpls_per_bounce) : out.vpls.size();
-  std::unique_ptr<rays::RayScene> built;
-  if (given == nullptr) built = std::make_unique<rays::RayScene>(*job.scene, 0);
-  const rays::RayScene& scene = given != nullptr ? *given : *built;
   const BounceTracing tracing{s.russian_roulette, s.trace_threads, job.settings.medium};
   const BounceMaterials materials{vertexModelOf(job.settings.materials),
-                                  static_cast<float>(s.vpl_brdf_clamp_per_sr),
-                                  classes != nullptr && classes->delayed() ? classes : nullptr};
+                                  static_cast<float>(s.vpl_brdf_clamp_per_sr), delayed};
   std::vector<Vpl> parents(out.vpls);
   for (int32_t bounce = 2; bounce <= s.bounces; ++bounce) {
     // Russian roulette ends paths: bounce 3 on traces one ray per VPL kept.
     const std::size_t rays = s.russian_roulette && bounce > 2 ? parents.size() : count;
-    parents = traceBounce(scene, parents, rays, bounce, job.settings.seed,
+    parents = traceBounce(scene(), parents, rays, bounce, job.settings.seed,
                           job.settings.time.index_of_refraction, tracing, materials);
     out.vpls.insert(out.vpls.end(), parents.begin(), parents.end());
     out.firstOfBounce.push_back(out.vpls.size());

@@ -271,7 +271,9 @@ RenderResult IrRenderer::render(const RenderJob& job, SegmentSink& sink,
   // Bounce 1 from the backend's RSM, later bounces traced from it here, so
   // both backends gather the same VPLs of every bounce; bounced.firstOfBounce
   // keeps which VPLs are of which bounce (for bounce-resolved output).
-  const BouncedVpls bounced = job.settings.indirect.bounces > 1
+  const capture::IndirectSettings& indirect = job.settings.indirect;
+  const BouncedVpls bounced = indirect.bounces > 1 || (indirect.enabled && indirect.medium_vpls > 0 &&
+                                                        job.settings.medium.scatters())
                                   ? withLaterBounces(job, rays(), backend.generateVpls(job), &classes)
                                   : withLaterBounces(job, backend.generateVpls(job), &classes);
   const std::vector<Vpl>& vpls = bounced.vpls;

@@ -19,6 +19,7 @@
 #include "tofsim/gl/Compute.h"
 #include "tofsim/gl/Context.h"
 #include "tofsim/ir/MaterialVertex.h"
+#include "tofsim/ir/MediumVpl.h"
 #include "tofsim/ir/SurfaceImage.h"
 #include "tofsim/physics/FootprintKernel.h"
 #include "tofsim/ir/VplClasses.h"
@@ -97,7 +98,7 @@ void configureIndirectGather(const gl::Program& program, const RenderJob& job) {
   program.set("uSceneScale_m", std::max(glm::length(extent), 1e-6f));
   program.set("uGeometryClamp",
               static_cast<float>(job.settings.indirect.geometry_term_clamp_per_m2));
-  if (job.settings.materials == capture::MaterialModel::Gltf) {
+  if (ir::vplsCarryVertex(job.settings)) {
     program.set("uVplBrdfClamp", static_cast<float>(job.settings.indirect.vpl_brdf_clamp_per_sr));
   }
 }
@@ -372,8 +373,11 @@ void GlBackend::setVpls(const std::vector<ir::Vpl>& vpls) {
   Passes& p = passes();
   p.indirectLight.reset();
   if (vpls.empty()) return;
+  // A medium VPL's vertex is not of the render's model: the gather reads
+  // each VPL's (no SCATTER_MODEL folding).
+  const bool foldModel = p.foldModel && std::none_of(vpls.begin(), vpls.end(), ir::isMediumVpl);
   p.indirectLight = std::make_unique<IndirectLight>(
-      sceneObjects_->soup(), vpls, p.job, p.foldModel, p.responseClasses.defines());
+      sceneObjects_->soup(), vpls, p.job, foldModel, p.responseClasses.defines());
   configureIndirectGather(p.indirectLight->gatherProgram(), p.job);
 }
 

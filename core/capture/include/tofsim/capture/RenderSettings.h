@@ -22,6 +22,11 @@ enum class MaterialModel { Lambertian, Gltf };
 struct IndirectSettings {
   bool enabled = true;
   int32_t rsm_resolution = 32;    ///< RSM side; VPL count = rsm_resolution^2
+  /// With a scattering medium (RenderSettings::medium, sigma_s > 0): rays
+  /// from the light that leave a medium VPL each where they scatter before
+  /// any surface (ir::lightMediumVpls), bounce 1 after the RSM's; 0 = none.
+  /// 1024: the default RSM's count (32^2).
+  int32_t medium_vpls = 1024;
   /// N: a texel at an edge of the RSM is traced at N x N sub-texels, one
   /// VPL per flat surface among them (ir::rsmViewVpls); 1 = none.
   int32_t rsm_edge_samples = 4;

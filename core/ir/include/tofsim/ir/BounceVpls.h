@@ -42,6 +42,9 @@ struct BounceTracing {
   int32_t threads = 1;
   /// The medium filling the scene (RenderSettings::medium): a child's flux
   /// is attenuated over its parent -> child leg, exp(-sigma_t |x - x_parent|).
+  /// Where it scatters (Medium::scatters) the leg is a free flight instead
+  /// (ir::sampleFreeFlight): the child may be a medium VPL where the ray
+  /// scatters before its hit (core/physics/medium_vpls.md).
   capture::Medium medium{};
 };
 
@@ -75,12 +78,18 @@ struct BounceMaterials {
 /// clamped by brdfClamp; a w below the surface ends the path; the parents
 /// are still picked by the power they received, which stays unbiased), and
 /// records -w and its hit's material.
+/// A medium parent (ir::isMediumVpl) shoots by its phase function about the
+/// direction its light travelled (physics::samplePhaseDirection; weight: the
+/// albedo); in a scattering medium each child's ray takes a free flight
+/// (BounceTracing::medium).
 std::vector<Vpl> traceBounce(const rays::RayScene& scene, const std::vector<Vpl>& parents,
                              std::size_t count, int32_t bounce, uint64_t seed,
                              double indexOfRefraction, const BounceTracing& tracing = {},
                              const BounceMaterials& materials = {});
 
-/// Bounce 1 (`firstBounce`, the backend's RSM VPLs) followed by bounces
+/// Bounce 1 (`firstBounce`, the backend's RSM VPLs, then with a scattering
+/// medium render.indirect.medium_vpls of the light's medium VPLs,
+/// ir::lightMediumVpls) followed by bounces
 /// 2..job.settings.indirect.bounces, traced through `scene` (the driver's
 /// RayScene of job.scene), on indirect.trace_threads threads. Bounce 2 traces vpls_per_bounce rays
 /// (0: as many as bounce 1 has VPLs), and so does every later bounce, or with russian_roulette as
@@ -90,7 +99,8 @@ BouncedVpls withLaterBounces(const capture::RenderJob& job, const rays::RayScene
                              std::vector<Vpl> firstBounce,
                              const physics::ResponseClassTable* classes = nullptr);
 /// The same through a RayScene of job.scene built here (only when there is a
-/// later bounce and light to continue): for callers without a driver.
+/// later bounce and light to continue, or medium VPLs to trace): for callers
+/// without a driver.
 BouncedVpls withLaterBounces(const capture::RenderJob& job, std::vector<Vpl> firstBounce,
                              const physics::ResponseClassTable* classes = nullptr);
 

@@ -34,6 +34,14 @@ inline Vpl mediumVpl(glm::vec3 x, float path_m, glm::vec3 extinguished_W, glm::v
   return v;
 }
 
+/// Whether the gathers read each VPL's `incoming` and `vertex` (GL: the VPL
+/// buffer holds whole records, vpl.glsl's VPL_VERTICES): where some VPL's
+/// scatter may not be in its flux, a glTF surface's (render.materials:
+/// gltf) or a medium VPL's (a scattering medium).
+inline bool vplsCarryVertex(const capture::RenderSettings& settings) {
+  return settings.materials == capture::MaterialModel::Gltf || settings.medium.scatters();
+}
+
 /// Whether `v` is a medium VPL (its normal is zero).
 inline bool isMediumVpl(const Vpl& v) { return glm::vec3(v.normal) == glm::vec3(0.0f); }
 
