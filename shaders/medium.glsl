@@ -144,8 +144,10 @@ struct MediumRay {
   float lensPath;   // path added to the camera leg (a thin lens's), m; 0 unwarped
 };
 
-TOFSIM_PHYSICS_FN MediumRay mediumRay(vec3 origin, vec3 direction, vec3 light, float surface,
-                                      float lensPath) {
+// The ray toward an emitter at `light` of radius `radius` (the light's
+// MEDIUM_EMITTER_RADIUS_M, a VPL's mediumVplRadius).
+TOFSIM_PHYSICS_FN MediumRay mediumEmitterRay(vec3 origin, vec3 direction, vec3 light, float radius,
+                                             float surface, float lensPath) {
   MediumRay ray;
   ray.origin = origin;
   ray.direction = direction;
@@ -156,10 +158,26 @@ TOFSIM_PHYSICS_FN MediumRay mediumRay(vec3 origin, vec3 direction, vec3 light, f
   // Its length, not sqrt(|a|^2 - along^2): that cancels where the ray passes
   // close to the light far from the camera.
   ray.miss = length(ray.perpendicular);
-  ray.height = sqrt(ray.miss * ray.miss + MEDIUM_EMITTER_RADIUS_M * MEDIUM_EMITTER_RADIUS_M);
+  ray.height = sqrt(ray.miss * ray.miss + radius * radius);
   ray.surface = surface;
   ray.lensPath = lensPath;
   return ray;
+}
+
+// The ray toward the light source.
+TOFSIM_PHYSICS_FN MediumRay mediumRay(vec3 origin, vec3 direction, vec3 light, float surface,
+                                      float lensPath) {
+  return mediumEmitterRay(origin, direction, light, MEDIUM_EMITTER_RADIUS_M, surface, lensPath);
+}
+
+// A VPL as the emitter of the medium's light along a camera ray (issue 42,
+// item 4; core/physics/medium_vpl_scattering.md): a point whose 1/r^2 the
+// gathers bound by render.indirect's geometry clamp C (min(cos / d^2, C) at
+// a medium receiver, whose cosine is 1). The quadrature's 1/(r^2 + R^2)
+// bounds it the same way at r = 0 with R = 1 / sqrt(C), and is 1/r^2 to
+// (R/r)^2 beyond; without a clamp (C <= 0) the VPL is as small as the light.
+TOFSIM_PHYSICS_FN float mediumVplRadius(float clampPerM2) {
+  return clampPerM2 > 0.0f ? 1.0f / sqrt(clampPerM2) : MEDIUM_EMITTER_RADIUS_M;
 }
 
 // The first and last branch of a ray (MEDIUM_BRANCH_*): unwarped, two.

@@ -34,6 +34,13 @@ inline Vpl mediumVpl(glm::vec3 x, float path_m, glm::vec3 extinguished_W, glm::v
   return v;
 }
 
+/// Whether the medium scatters (sigma_s > 0 in a channel): then every VPL's
+/// light also scatters into the camera rays (the backends' medium VPL pass,
+/// core/physics/medium_vpl_scattering.md), which takes its own accumulator.
+inline bool mediumScatters(const capture::Medium& medium) {
+  return medium.present() && glm::any(glm::greaterThan(medium.sigma_s_per_m, glm::vec3(0.0f)));
+}
+
 /// Whether `v` is a medium VPL (its normal is zero).
 inline bool isMediumVpl(const Vpl& v) { return glm::vec3(v.normal) == glm::vec3(0.0f); }
 
