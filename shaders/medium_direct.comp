@@ -41,7 +41,7 @@ vec3 mediumBinLight(MediumRay ray, int branch, vec2 span, int k) {
   MediumInterval iv = mediumInterval(
       ray, mediumBinSpan(ray, branch, span, k, uIndexOfRefraction, uStart_m, uBinWidth_m, uBins));
   vec3 sum = vec3(0.0);
-  for (int node = 0; node < iv.steps * MEDIUM_GAUSS_NODES; ++node) {
+  for (int node = 0; node < iv.steps * iv.nodes; ++node) {
     MediumNode n = mediumNode(ray, iv, node);
     float profile = lightProfile(uLightProfile, uLightDirection_world, uSpotCosOuter,
                                  uSpotCosInner, n.fromLight);

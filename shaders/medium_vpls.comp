@@ -74,10 +74,10 @@ vec3 vplNodeIntensity(Vpl vpl, uint ismIndex, MediumNode n) {
 // the time axis starting at `start_m` (the axis' less the VPL's path).
 vec3 vplBinLight(Vpl vpl, uint ismIndex, MediumRay ray, int branch, vec2 span, int k,
                  float start_m) {
-  MediumInterval iv = mediumInterval(
+  MediumInterval iv = mediumVplInterval(
       ray, mediumBinSpan(ray, branch, span, k, uIndexOfRefraction, start_m, uBinWidth_m, uBins));
   vec3 sum = vec3(0.0);
-  for (int node = 0; node < iv.steps * MEDIUM_GAUSS_NODES; ++node) {
+  for (int node = 0; node < iv.steps * iv.nodes; ++node) {
     ++gIterations;
     MediumNode n = mediumNode(ray, iv, node);
     if (n.weight == 0.0) continue;

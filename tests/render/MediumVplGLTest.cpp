@@ -160,7 +160,8 @@ std::vector<glm::dvec3> expectedBins(const VplMediumScene& s, const ir::Vpl& v) 
   return bins;
 }
 
-// Every bin within 2e-3 of itself (plus 1e-6 of the peak), and at least
+// Every bin within 5e-4 of itself (plus 1e-6 of the peak; measured: 6e-5 at
+// most), and at least
 // `tail` (bin, channel)s above 1e-4 of the peak compared.
 void expectBins(const std::vector<float>& got, const std::vector<glm::dvec3>& expected,
                 int tail) {
@@ -171,7 +172,7 @@ void expectBins(const std::vector<float>& got, const std::vector<glm::dvec3>& ex
   for (std::size_t k = 0; k < expected.size(); ++k) {
     for (int c = 0; c < 3; ++c) {
       const double e = expected[k][c];
-      EXPECT_NEAR(got[k * 3 + c], e, 2e-3 * e + 1e-6 * peak) << "bin " << k << " channel " << c;
+      EXPECT_NEAR(got[k * 3 + c], e, 5e-4 * e + 1e-6 * peak) << "bin " << k << " channel " << c;
       lit += e > 1e-4 * peak;
     }
   }

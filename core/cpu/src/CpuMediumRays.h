@@ -29,6 +29,7 @@ struct MediumAxis {
   float start_m = 0.0f, width_m = 1.0f, eta = 1.0f;
   int32_t bins = 0;
   bool unwarp = false;  ///< the camera leg untimed (CpuBackend::dropLastLeg_)
+  bool vpl = false;     ///< a VPL emitter: mediumVplInterval's nodes
 };
 
 /// The light of bin k's part of a branch's span (k: -1 before the axis, bins
@@ -37,10 +38,12 @@ struct MediumAxis {
 template <class NodeLight>
 glm::vec3 mediumBinLight(const MediumAxis& a, const physics::MediumRay& ray, int branch,
                          glm::vec2 span, int k, const NodeLight& nodeLight) {
-  const physics::MediumInterval iv = physics::mediumInterval(
-      ray, physics::mediumBinSpan(ray, branch, span, k, a.eta, a.start_m, a.width_m, a.bins));
+  const glm::vec2 part =
+      physics::mediumBinSpan(ray, branch, span, k, a.eta, a.start_m, a.width_m, a.bins);
+  const physics::MediumInterval iv =
+      a.vpl ? physics::mediumVplInterval(ray, part) : physics::mediumInterval(ray, part);
   glm::vec3 sum(0.0f);
-  for (int node = 0; node < iv.steps * physics::MEDIUM_GAUSS_NODES; ++node) {
+  for (int node = 0; node < iv.steps * iv.nodes; ++node) {
     const physics::MediumNode n = physics::mediumNode(ray, iv, node);
     if (n.weight == 0.0f) continue;
     sum += nodeLight(n);

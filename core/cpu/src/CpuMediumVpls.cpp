@@ -47,7 +47,7 @@ void CpuBackend::gatherMediumIndirect(std::size_t firstVpl, std::size_t count) {
   const capture::RenderSettings& s = job_.settings;
   VplMediumTerms t;
   t.axis = {static_cast<float>(s.time.start_m()), static_cast<float>(s.time.bin_width_m()),
-            static_cast<float>(s.time.index_of_refraction), s.time.bins, dropLastLeg_};
+            static_cast<float>(s.time.index_of_refraction), s.time.bins, dropLastLeg_, true};
   t.sigmaS = s.medium.sigma_s_per_m;
   t.sigmaT = s.medium.sigmaT();
   t.phase = s.medium.phase;
