@@ -118,7 +118,7 @@ void gatherVpl(uint local, Sample at, uint k, Vpl vpl, inout float lostBefore,
   if (dist2 <= 0.0) return;
   float dist = sqrt(dist2);
   vec3 d = toX / dist;
-  float cosVpl = dot(vpl.normal.xyz, d);
+  float cosVpl = vplEmitterCosine(vpl.normal.xyz, d);  // 1 at a medium VPL
   float cosX = receiverCosine(at.vertex, at.n, -d);
   if (cosVpl <= 0.0 || cosX <= 0.0) return;
   float g = vertexOnSurface(at.vertex)

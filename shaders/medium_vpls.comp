@@ -56,7 +56,7 @@ uint gIterations = 0u;
 // VPL vpl's (ISM ismIndex) intensity toward the node, W/sr, and 0 where it
 // does not see it.
 vec3 vplNodeIntensity(Vpl vpl, uint ismIndex, MediumNode n) {
-#ifdef GLTF_MATERIALS
+#ifdef VPL_VERTICES
   vec3 intensity = vplIntensityToward(vpl.vertex, vpl.normal.xyz, vpl.incoming.xyz, vpl.flux.rgb,
                                       n.fromLight, uVplBrdfClamp);
 #else

@@ -110,10 +110,8 @@ ir::Vpl surfaceVpl() {
   return v;
 }
 
-// A medium VPL at the same place whose light came from +x, tilted up. The
-// render's materials glTF: the GL VPL buffer holds each VPL's vertex.
-ir::Vpl mediumVplAt(VplMediumScene& s) {
-  s.job.settings.materials = capture::MaterialModel::Gltf;
+// A medium VPL at the same place whose light came from +x, tilted up.
+ir::Vpl mediumVplAt(const VplMediumScene& s) {
   const capture::Medium& medium = s.job.settings.medium;
   return ir::mediumVpl(glm::vec3(0.12f, 0.03f, -1.5f), 0.4f, glm::vec3(0.8f, 0.5f, 0.3f),
                        glm::normalize(glm::vec3(1.0f, 0.3f, -0.2f)), medium, 0.0f);
@@ -229,7 +227,7 @@ TEST_P(MediumVplGLTest, TheVplPathShiftsItsLightByWholeBins) {
 TOFSIM_ON_BOTH_BACKENDS(MediumVplGLTest);
 
 // GL against CPU: 4 x 4 pixels of 2 x 2 samples, a plane that ends some of
-// the rays (and takes the VPLs' light itself), a surface VPL and a
+// the rays (and takes the VPLs' light itself), a glTF surface VPL and a
 // Henyey-Greenstein medium VPL on a ray's path, exact visibility: each
 // pixel's bins agree to 2e-3 of its largest.
 TEST(MediumVplAgreementGLTest, GlMatchesCpu) {
@@ -242,8 +240,8 @@ TEST(MediumVplAgreementGLTest, GlMatchesCpu) {
   s.job.settings.medium.g = 0.7f;
   ir::Vpl medium = mediumVplAt(s);
   medium.positionPath = glm::vec4(-0.05f, 0.02f, -1.2f, 0.3f);  // on a pixel's rays
-  // A glTF surface VPL: a glTF render's (its GL surface gather folds every
-  // vertex on the render's model).
+  // A glTF render and a glTF surface VPL (the glTF gathers' VPL records).
+  s.job.settings.materials = capture::MaterialModel::Gltf;
   ir::Vpl surface = surfaceVpl();
   surface.incoming = glm::vec4(glm::normalize(glm::vec3(-0.3f, 0.2f, 1.0f)), 0.0f);
   surface.vertex = physics::scatterVertex(physics::VERTEX_GLTF, {0.9f, 0.6f, 0.3f}, 0.0f, 0.5f);

@@ -40,6 +40,18 @@ inline bool vplOccluded(const rays::RayScene& scene, const VplArrays& v, std::si
   return scene.occluded(from, surface.x + surface.n * eps);
 }
 
+// ISM visibility with medium VPLs: a medium VPL has no hemisphere about a
+// normal to map (its map stays empty and passes every lane), so its lanes
+// lit by the block are tested by exact rays here.
+void cullOccludedMediumLanes(const rays::RayScene& scene, const VplArrays& v, std::size_t first,
+                             std::size_t n, const PixelSurface& surface, float eps,
+                             VplTerms& terms) {
+  for (std::size_t k = 0; k < n; ++k) {
+    if (terms.bin[k] == kNoLight || v.emitterOffset[first + k] == 0.0f) continue;
+    if (vplOccluded(scene, v, first + k, surface, eps)) terms.bin[k] = kNoLight;
+  }
+}
+
 }  // namespace
 
 using ir::SurfaceImage;
@@ -156,7 +168,7 @@ std::vector<ir::Vpl> CpuBackend::generateVpls(const capture::RenderJob& job) {
 
 void CpuBackend::setVpls(const std::vector<ir::Vpl>& vpls) {
   vpls_ = std::make_unique<VplArrays>(vpls);
-  mediumVpls_ = !vpls.empty() && ir::mediumScatters(job_.settings.medium);
+  mediumVpls_ = !vpls.empty() && job_.settings.medium.scatters();
   ism_.reset();
   if (indirectVisibility_ && job_.settings.indirect.visibility == capture::Visibility::Ism &&
       !vpls.empty()) {
@@ -358,6 +370,7 @@ void CpuBackend::gatherPixelBlock(const IndirectConstants& c, std::size_t first,
     vplTerms(surfaces[s], v, first, n, c.kernel, terms[s]);
     if (ism) {
       ism->cullHidden(first, n, sceneScale_m_, surfaces[s].n, surfaces[s].cosineOffset, terms[s]);
+      if (v.anyMedium) cullOccludedMediumLanes(*scene_, v, first, n, surfaces[s], c.eps, terms[s]);
     }
   }
   if (c.delayed) depositDelayedLanes(c, first, n, i, perPixel, surfaces, lit, terms);

@@ -74,6 +74,7 @@ void CpuBackend::gatherMediumIndirect(std::size_t firstVpl, std::size_t count) {
       for (std::size_t k = firstVpl; k < firstVpl + count; ++k) {
         const glm::vec3 at(v.px[k], v.py[k], v.pz[k]), normal(v.nx[k], v.ny[k], v.nz[k]);
         const glm::vec3 flux(v.fr[k], v.fg[k], v.fb[k]);
+        const bool medium = normal == glm::vec3(0.0f);
         const physics::ScatterVertex vertex = v.scattering ? v.vertex[k] : physics::ScatterVertex{};
         const glm::vec3 incoming = v.scattering ? glm::vec3(v.ix[k], v.iy[k], v.iz[k]) : glm::vec3(0.0f);
         MediumAxis axis = t.axis;
@@ -87,7 +88,11 @@ void CpuBackend::gatherMediumIndirect(std::size_t firstVpl, std::size_t count) {
           if (t.exact && scene_->occluded(at + normal * t.eps, n.x)) {
             return glm::vec3(0.0f);
           }
-          if (ism && !ism->visible(k, n.fromLight, n.r, glm::vec3(0.0f), 1.0f, sceneScale_m_)) {
+          // A medium VPL has no hemisphere to map: exact rays among ISMs too
+          // (as the surface gather's cullOccludedMediumLanes).
+          if (ism && (medium ? scene_->occluded(at, n.x)
+                             : !ism->visible(k, n.fromLight, n.r, glm::vec3(0.0f), 1.0f,
+                                             sceneScale_m_))) {
             return glm::vec3(0.0f);
           }
           return physics::mediumNodeRadiance(n, t.sigmaS, t.sigmaT, t.phase, t.g, intensity, 1.0f);

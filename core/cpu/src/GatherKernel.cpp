@@ -94,7 +94,7 @@ void scatteredRadiance(const PixelSurface& s, const VplArrays& v, std::size_t fi
     const glm::vec3 vplN(v.nx[k], v.ny[k], v.nz[k]);
     const glm::vec3 toX = s.x - glm::vec3(v.px[k], v.py[k], v.pz[k]);
     const float dist2 = glm::dot(toX, toX);
-    const float g = geometryAt(s, v, k, glm::dot(vplN, d), s.cosineOffset - glm::dot(s.n, d), dist2,
+    const float g = geometryAt(s, v, k, physics::vplEmitterCosine(vplN, d), s.cosineOffset - glm::dot(s.n, d), dist2,
                                c.geometryClamp);
     const glm::vec3 fVpl = v.scatterToward(k, d, c.vplBrdfClamp);
     const glm::vec3 fCamera = physics::scatter(s.vertex, s.n, -d, s.toCamera).f * s.weight;
@@ -167,7 +167,7 @@ void nearFieldRadiance(const PixelSurface& s, const VplArrays& v, std::size_t fi
     float gi = g[j];
     if (clipped[j]) {
       const glm::vec3 d(terms.dx[i], terms.dy[i], terms.dz[i]);
-      gi = geometryAt(s, v, k, v.nx[k] * d.x + v.ny[k] * d.y + v.nz[k] * d.z,
+      gi = geometryAt(s, v, k, v.emitterOffset[k] + (v.nx[k] * d.x + v.ny[k] * d.y + v.nz[k] * d.z),
                       s.cosineOffset - (s.n.x * d.x + s.n.y * d.y + s.n.z * d.z), dist2Of(s, v, k),
                       c.geometryClamp);
     }
@@ -224,6 +224,7 @@ __attribute__((target_clones("avx2", "default"))) void vplTerms(const PixelSurfa
   const float* __restrict fg = v.fg.data() + first;
   const float* __restrict fb = v.fb.data() + first;
   const float* __restrict nearLimit = v.nearLimit.data() + first;
+  const float* __restrict emitterOffset = v.emitterOffset.data() + first;
   // __restrict and locals: with a run-time alias check per pointer the
   // vectoriser passes its limit of ten and leaves the loop scalar (it did so
   // from the near field on, b100e61).
@@ -239,7 +240,8 @@ __attribute__((target_clones("avx2", "default"))) void vplTerms(const PixelSurfa
     const float dist2 = tx * tx + ty * ty + tz * tz;
     const float dist = std::sqrt(dist2);
     const float dx = tx / dist, dy = ty / dist, dz = tz / dist;
-    const float cosVpl = nx[i] * dx + ny[i] * dy + nz[i] * dz;
+    // physics::vplEmitterCosine: 1 at a medium VPL (no normal, no side).
+    const float cosVpl = emitterOffset[i] + (nx[i] * dx + ny[i] * dy + nz[i] * dz);
     const float cosX = cosineOffset - (normal.x * dx + normal.y * dy + normal.z * dz);
     // & rather than &&: no branch, so the loop vectorises.
     const bool lit = (dist2 > 0.0f) & (cosVpl > 0.0f) & (cosX > 0.0f);

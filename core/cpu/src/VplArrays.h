@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "tofsim/ir/IrBackend.h"
+#include "tofsim/ir/MediumVpl.h"
 #include "tofsim/physics/ScatterVertex.h"
 #include "tofsim/physics/VplNearField.h"
 
@@ -23,6 +24,10 @@ struct VplArrays {
   std::vector<float> ux, uy, uz, uw;    ///< patch step along the RSM's right axis, w: light leg
   std::vector<float> vx, vy, vz, vw;    ///< along its up axis (ir::Vpl::patchU / patchV)
   std::vector<float> nearLimit;         ///< physics::vplNearFieldLimit of the patch, m^4
+  /// physics::vplEmitterCosine with no branch per lane: the emitter cosine
+  /// toward d is emitterOffset + n . d (1 + 0 at a medium VPL, whose normal
+  /// is zero; 0 + n . d, the same float, at a surface VPL).
+  std::vector<float> emitterOffset;
   /// Only where `scattering` (empty otherwise): ir::Vpl::incoming and ::vertex.
   std::vector<float> ix, iy, iz;
   std::vector<physics::ScatterVertex> vertex;
@@ -31,10 +36,13 @@ struct VplArrays {
   std::vector<uint32_t> responseClass;
   std::size_t count = 0;
   bool scattering = false;  ///< some VPL's scatter is not in its flux: vplScatter it
+  /// Some VPL is a medium VPL (ir::isMediumVpl): it has no hemisphere map,
+  /// so it is tested exactly whatever the visibility (CpuBackend).
+  bool anyMedium = false;
 
   explicit VplArrays(const std::vector<ir::Vpl>& vpls = {}) : count(vpls.size()) {
     for (std::vector<float>* a : {&px, &py, &pz, &path, &nx, &ny, &nz, &fr, &fg, &fb, &ux, &uy, &uz,
-                                  &uw, &vx, &vy, &vz, &vw, &nearLimit}) {
+                                  &uw, &vx, &vy, &vz, &vw, &nearLimit, &emitterOffset}) {
       a->resize(count);
     }
     for (std::size_t k = 0; k < count; ++k) {
@@ -46,6 +54,8 @@ struct VplArrays {
       ux[k] = v.patchU.x, uy[k] = v.patchU.y, uz[k] = v.patchU.z, uw[k] = v.patchU.w;
       vx[k] = v.patchV.x, vy[k] = v.patchV.y, vz[k] = v.patchV.z, vw[k] = v.patchV.w;
       nearLimit[k] = physics::vplNearFieldLimit(glm::vec3(v.patchU), glm::vec3(v.patchV));
+      emitterOffset[k] = ir::isMediumVpl(v) ? 1.0f : 0.0f;
+      anyMedium = anyMedium || ir::isMediumVpl(v);
       scattering = scattering || !physics::vplFluxHoldsScatter(v.vertex);
       if (v.flux.w != 0.0f && responseClass.empty()) responseClass.assign(count, 0u);
     }
@@ -70,7 +80,7 @@ struct VplArrays {
   }
 
   std::size_t bytes() const {
-    return count * (19 * sizeof(float) + (responseClass.empty() ? 0 : sizeof(uint32_t)) +
+    return count * (20 * sizeof(float) + (responseClass.empty() ? 0 : sizeof(uint32_t)) +
                     (scattering ? 3 * sizeof(float) + sizeof(physics::ScatterVertex) : 0));
   }
 };

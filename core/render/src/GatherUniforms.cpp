@@ -7,6 +7,7 @@
 #include "GpuContract.h"
 #include "MediumUniforms.h"
 #include "tofsim/capture/Imager.h"
+#include "tofsim/ir/MediumVpl.h"
 
 namespace tofsim::render {
 
@@ -62,7 +63,7 @@ void configureIndirectGather(const gl::Program& program, const RenderJob& job) {
   program.set("uSceneScale_m", std::max(glm::length(extent), 1e-6f));
   program.set("uGeometryClamp",
               static_cast<float>(job.settings.indirect.geometry_term_clamp_per_m2));
-  if (job.settings.materials == capture::MaterialModel::Gltf) {
+  if (ir::vplsCarryVertex(job.settings)) {
     program.set("uVplBrdfClamp", static_cast<float>(job.settings.indirect.vpl_brdf_clamp_per_sr));
   }
 }

@@ -321,11 +321,14 @@ void GlBackend::setVpls(const std::vector<ir::Vpl>& vpls) {
   Passes& p = passes();
   p.indirectLight.reset();
   if (vpls.empty()) return;
+  // A medium VPL's vertex is not of the render's model: the gather reads
+  // each VPL's (no SCATTER_MODEL folding).
+  const bool foldModel = p.foldModel && std::none_of(vpls.begin(), vpls.end(), ir::isMediumVpl);
   p.indirectLight = std::make_unique<IndirectLight>(
-      sceneObjects_->soup(), vpls, p.job, p.foldModel, p.responseClasses.defines());
+      sceneObjects_->soup(), vpls, p.job, foldModel, p.responseClasses.defines());
   configureIndirectGather(p.indirectLight->gatherProgram(), p.job);
   p.mediumVpls.reset();
-  if (ir::mediumScatters(p.job.settings.medium)) {
+  if (p.job.settings.medium.scatters()) {
     p.mediumVpls = std::make_unique<MediumVpls>(p.job, *p.mediumDirect);
   }
 }

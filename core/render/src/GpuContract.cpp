@@ -1,6 +1,7 @@
 #include "GpuContract.h"
 
 #include "tofsim/ir/IrBackend.h"
+#include "tofsim/ir/MediumVpl.h"
 
 namespace tofsim::render::gpu {
 
@@ -62,6 +63,9 @@ std::vector<std::pair<std::string, std::string>> gatherDefines(const capture::Re
   // The G-buffer's and the VPL records' layout (their glTF parameters), and
   // the one model of every vertex (scatter_vertex.glsl folds on it).
   if (s.materials == capture::MaterialModel::Gltf) defines.emplace_back("GLTF_MATERIALS", "1");
+  if (ir::vplsCarryVertex(s)) defines.emplace_back("VPL_VERTICES", "1");
+  // Medium VPLs among the VPLs (a scattering medium): their exact visibility.
+  if (s.medium.scatters()) defines.emplace_back("MEDIUM_VPLS", "1");
   if (foldModel) {
     defines.emplace_back("SCATTER_MODEL", std::to_string(ir::vertexModelOf(s.materials)));
   }

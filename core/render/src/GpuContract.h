@@ -80,7 +80,9 @@ std::vector<std::pair<std::string, std::string>> shaderDefines();
 
 /// The gathers' variant of the job (direct_gather.comp, indirect_gather.comp):
 /// PIXEL_SAMPLES (render.pixel_samples), PIXEL_FOOTPRINT, VPL_FOOTPRINT,
-/// GLTF_MATERIALS (render.materials: gltf), ADAPTIVE_SAMPLES
+/// GLTF_MATERIALS (render.materials: gltf), VPL_VERTICES (whole VPL records:
+/// ir::vplsCarryVertex), MEDIUM_VPLS (a scattering medium: medium VPLs,
+/// tested exactly whatever the visibility), ADAPTIVE_SAMPLES
 /// (render.adaptive_pixel_samples with pixel_samples > 1), SURFACE_STEPS (a
 /// footprint over an imager whose steps are the surface's: a point set). As
 /// defines, so that render.pixel_footprint: false compiles the point-sampling

@@ -6,6 +6,7 @@
 #include "GpuContract.h"
 #include "tofsim/gl/Check.h"
 #include "tofsim/gl/Compute.h"
+#include "tofsim/ir/MediumVpl.h"
 #include "tofsim/util/Error.h"
 #include "tofsim/util/Interrupt.h"
 
@@ -33,11 +34,12 @@ std::vector<std::pair<std::string, std::string>> gatherDefines(
 
 void dispatchThreads(std::size_t threads) { gl::dispatchThreads(threads, gpu::kWorkGroupSize); }
 
-// The VPL buffer as vpl.glsl declares it: whole VPLs with
-// render.materials: gltf, else each VPL's first kLambertianVplBytes (the
-// Lambertian gathers read no material).
-gl::Buffer vplBufferOf(const std::vector<ir::Vpl>& vpls, bool gltf) {
-  if (gltf) return gl::Buffer(vpls.size() * sizeof(ir::Vpl), vpls.data(), 0);
+// The VPL buffer as vpl.glsl declares it: whole VPLs where the gathers
+// read their vertices (VPL_VERTICES: render.materials: gltf, a scattering
+// medium), else each VPL's first kLambertianVplBytes (the Lambertian gathers
+// read no material).
+gl::Buffer vplBufferOf(const std::vector<ir::Vpl>& vpls, bool whole) {
+  if (whole) return gl::Buffer(vpls.size() * sizeof(ir::Vpl), vpls.data(), 0);
   std::vector<unsigned char> packed(vpls.size() * ir::kLambertianVplBytes);
   for (std::size_t k = 0; k < vpls.size(); ++k) {
     std::memcpy(&packed[k * ir::kLambertianVplBytes], &vpls[k], ir::kLambertianVplBytes);
@@ -63,21 +65,21 @@ IndirectLight::IndirectLight(const TriangleSoup& soup, const std::vector<ir::Vpl
       // A shadow ray visits about two nodes per level and a few leaves.
       tripsPerShadowRay_(std::min<std::size_t>(soup.bvh.size() + soup.triangleCount(),
                                                4 * static_cast<std::size_t>(soup.bvhDepth) + 16)),
+      shadowRays_(settings.indirect.visibility == capture::Visibility::Exact ||
+                  settings.medium.scatters()),
       gather_(gpu::makeProgram({{GL_COMPUTE_SHADER, "indirect_gather.comp"}}, defines)) {
   TOFSIM_CHECK(!vpls.empty() && triangleCount_ > 0);
   corners_ = gl::Buffer(soup.corners.size() * sizeof(glm::vec4), soup.corners.data(), 0);
   areaCdf_ = gl::Buffer(soup.areaCdf.size() * sizeof(float), soup.areaCdf.data(), 0);
   bvh_ = gl::Buffer(soup.bvh.size() * sizeof(BvhNode), soup.bvh.data(), 0);
-  vplBuffer_ = vplBufferOf(vpls, settings.materials == capture::MaterialModel::Gltf);
+  vplBuffer_ = vplBufferOf(vpls, ir::vplsCarryVertex(settings));
   loopGuard_ = gl::Buffer(sizeof(uint32_t));
   loopGuard_.clear();
   fixedBytes_ = corners_.size() + areaCdf_.size() + bvh_.size() + vplBuffer_.size();
   if (settings_.visibility == capture::Visibility::Ism) {
     // The splat reads the VPL buffer: the gather's struct Vpl.
     std::vector<std::pair<std::string, std::string>> vplLayout;
-    if (settings.materials == capture::MaterialModel::Gltf) {
-      vplLayout.emplace_back("GLTF_MATERIALS", "1");
-    }
+    if (ir::vplsCarryVertex(settings)) vplLayout.emplace_back("VPL_VERTICES", "1");
     splat_ = gpu::makeProgram({{GL_COMPUTE_SHADER, "ism_splat.comp"}}, vplLayout);
     pull_ = gpu::makeProgram({{GL_COMPUTE_SHADER, "ism_pull.comp"}});
     push_ = gpu::makeProgram({{GL_COMPUTE_SHADER, "ism_push.comp"}});
@@ -115,8 +117,7 @@ std::size_t IndirectLight::vplsPerDispatch() const {
   // are straight-line code (footprint_deposit.glsl) and cost none. With
   // adaptive samples a masked-out pixel loops over one sample, not N^2: the
   // N^2 pixels stay the worst case this counts.
-  const std::size_t shadowRay =
-      settings_.visibility == capture::Visibility::Exact ? tripsPerShadowRay_ : 0;
+  const std::size_t shadowRay = shadowRays_ ? tripsPerShadowRay_ : 0;
   const std::size_t perSample = (samplesPerPixel_ > 1 ? 1 : 0) + shadowRay;
   const std::size_t tripsPerVpl = 1 + samplesPerPixel_ * perSample;
   return std::max<std::size_t>(1, kTripsPerDispatch / tripsPerVpl);

@@ -68,6 +68,9 @@ class IndirectLight {
   std::size_t vplCount_ = 0;
   std::size_t triangleCount_ = 0;
   std::size_t tripsPerShadowRay_ = 0;
+  /// Whether a gather may trace shadow rays: exact visibility, or medium
+  /// VPLs (exact whatever the visibility, indirect_gather.comp's visible).
+  bool shadowRays_ = false;
   std::size_t fixedBytes_ = 0;
   std::size_t ismFirstVpl_ = 0;  ///< VPL whose ISM starts the ISM buffer
   std::vector<std::size_t> levelOffsets_;

@@ -8,6 +8,7 @@
 #include "MediumDirect.h"
 #include "tofsim/gl/Check.h"
 #include "tofsim/gl/Compute.h"
+#include "tofsim/ir/MediumVpl.h"
 #include "tofsim/physics/MediumPhysics.h"
 #include "tofsim/util/Interrupt.h"
 
@@ -29,7 +30,7 @@ MediumVpls::MediumVpls(const capture::RenderJob& job, const MediumDirect& direct
   program_.set("uSceneScale_m", std::max(glm::length(extent), 1e-6f));  // as the gather's
   program_.set("uVplRadius", physics::mediumVplRadius(
                                  static_cast<float>(s.indirect.geometry_term_clamp_per_m2)));
-  if (s.materials == capture::MaterialModel::Gltf) {
+  if (ir::vplsCarryVertex(s)) {
     program_.set("uVplBrdfClamp", static_cast<float>(s.indirect.vpl_brdf_clamp_per_sr));
   }
 }

@@ -4,7 +4,7 @@
 // indirect gather, into a volume and off-axis sums of its own, which the
 // read-backs add to the indirect light (so that each bin sums its VPLs in
 // index order whatever the batch plan, as the CPU backend does). Made only
-// for a render with VPLs and a scattering medium (ir::mediumScatters). The
+// for a render with VPLs and a scattering medium (capture::Medium::scatters). The
 // physics: core/physics/medium_vpl_scattering.md.
 
 #include <cstddef>

@@ -28,6 +28,10 @@ struct Medium {
   bool present() const {
     return glm::any(glm::greaterThan(sigma_a_per_m + sigma_s_per_m, glm::vec3(0.0f)));
   }
+  /// Whether it scatters (sigma_s > 0 in a channel): only then do the
+  /// light's paths leave medium VPLs (ir/MediumVpls.h); an absorbing-only
+  /// medium only attenuates.
+  bool scatters() const { return glm::any(glm::greaterThan(sigma_s_per_m, glm::vec3(0.0f))); }
   /// Extinction, sigma_a + sigma_s, 1/m.
   glm::vec3 sigmaT() const { return sigma_a_per_m + sigma_s_per_m; }
   /// Single-scattering albedo sigma_s / sigma_t per channel (0 where sigma_t is 0).

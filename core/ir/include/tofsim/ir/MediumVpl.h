@@ -34,11 +34,12 @@ inline Vpl mediumVpl(glm::vec3 x, float path_m, glm::vec3 extinguished_W, glm::v
   return v;
 }
 
-/// Whether the medium scatters (sigma_s > 0 in a channel): then every VPL's
-/// light also scatters into the camera rays (the backends' medium VPL pass,
-/// core/physics/medium_vpl_scattering.md), which takes its own accumulator.
-inline bool mediumScatters(const capture::Medium& medium) {
-  return medium.present() && glm::any(glm::greaterThan(medium.sigma_s_per_m, glm::vec3(0.0f)));
+/// Whether the gathers read each VPL's `incoming` and `vertex` (GL: the VPL
+/// buffer holds whole records, vpl.glsl's VPL_VERTICES): where some VPL's
+/// scatter may not be in its flux, a glTF surface's (render.materials:
+/// gltf) or a medium VPL's (a scattering medium).
+inline bool vplsCarryVertex(const capture::RenderSettings& settings) {
+  return settings.materials == capture::MaterialModel::Gltf || settings.medium.scatters();
 }
 
 /// Whether `v` is a medium VPL (its normal is zero).
