@@ -23,14 +23,6 @@ layout(local_size_x = TOFSIM_WORK_GROUP_SIZE) in;
 #include "transient_physics.glsl"
 #include "vpl_near_field.glsl"
 #include "vpl.glsl"
-#if defined(EXACT_VISIBILITY) || defined(MEDIUM_VPLS)
-#include "scene_geometry.glsl"
-#endif
-#ifndef EXACT_VISIBILITY
-layout(std430, binding = TOFSIM_SSBO_ISM) readonly buffer Ism { float ism[]; };
-uniform uint uVplStride;
-uniform int uIsmResolution;
-#endif
 
 #include "surface_samples.glsl"
 #include "medium_uniforms.glsl"
@@ -51,7 +43,6 @@ uniform uint uFirstVpl;     // first VPL of this dispatch
 uniform uint uVplCount;     // VPLs in this dispatch
 uniform uint uIsmFirstVpl;  // first VPL whose ISM is at the start of the ISM buffer
 uniform float uGeometryClamp;  // <= 0: no clamping
-uniform float uSceneScale_m;
 
 #define GATHER_HISTOGRAM indirect
 #include "bin_deposit.glsl"
@@ -72,29 +63,7 @@ uniform float uSceneScale_m;
 const uint kLoopTripLimit = 30000u;
 layout(std430, binding = TOFSIM_SSBO_LOOP_GUARD) buffer LoopGuard { uint loopLimitHit; };
 
-// With MEDIUM_VPLS (a scattering medium, capture::Medium::scatters) a medium VPL
-// (zero normal) has no hemisphere to map: it is tested exactly whatever
-// render.indirect.visibility says (the CPU's CpuBackend does the same).
-bool visible(uint ismIndex, Vpl vpl, vec3 x, vec3 n, vec3 d, float dist, float cosX,
-             inout uint iterations) {
-#ifndef EXACT_VISIBILITY
-#ifdef MEDIUM_VPLS
-  if (dot(vpl.normal.xyz, vpl.normal.xyz) != 0.0) {
-#endif
-    ivec2 texel = paraboloidTexel(vpl, d, uIsmResolution);
-    float stored = ism[ismIndex * uVplStride + uint(texel.y * uIsmResolution + texel.x)];
-    // One texel spans at most 4/R radians (at the paraboloid's centre).
-    float bias = ismDepthBias(dist, cosX, 4.0 / float(uIsmResolution), 0.01 * uSceneScale_m);
-    return dist - bias <= stored;
-#ifdef MEDIUM_VPLS
-  }
-#endif
-#endif
-#if defined(EXACT_VISIBILITY) || defined(MEDIUM_VPLS)
-  float eps = 1e-4 * uSceneScale_m;
-  return !segmentOccluded(vpl.positionPath.xyz + vpl.normal.xyz * eps, x + n * eps, iterations);
-#endif
-}
+#include "vpl_visibility.glsl"
 
 // One G-buffer sample as the gather uses it.
 struct Sample {

@@ -144,8 +144,10 @@ struct MediumRay {
   float lensPath;   // path added to the camera leg (a thin lens's), m; 0 unwarped
 };
 
-TOFSIM_PHYSICS_FN MediumRay mediumRay(vec3 origin, vec3 direction, vec3 light, float surface,
-                                      float lensPath) {
+// The ray toward an emitter at `light` of radius `radius` (the light's
+// MEDIUM_EMITTER_RADIUS_M, a VPL's mediumVplRadius).
+TOFSIM_PHYSICS_FN MediumRay mediumEmitterRay(vec3 origin, vec3 direction, vec3 light, float radius,
+                                             float surface, float lensPath) {
   MediumRay ray;
   ray.origin = origin;
   ray.direction = direction;
@@ -156,10 +158,26 @@ TOFSIM_PHYSICS_FN MediumRay mediumRay(vec3 origin, vec3 direction, vec3 light, f
   // Its length, not sqrt(|a|^2 - along^2): that cancels where the ray passes
   // close to the light far from the camera.
   ray.miss = length(ray.perpendicular);
-  ray.height = sqrt(ray.miss * ray.miss + MEDIUM_EMITTER_RADIUS_M * MEDIUM_EMITTER_RADIUS_M);
+  ray.height = sqrt(ray.miss * ray.miss + radius * radius);
   ray.surface = surface;
   ray.lensPath = lensPath;
   return ray;
+}
+
+// The ray toward the light source.
+TOFSIM_PHYSICS_FN MediumRay mediumRay(vec3 origin, vec3 direction, vec3 light, float surface,
+                                      float lensPath) {
+  return mediumEmitterRay(origin, direction, light, MEDIUM_EMITTER_RADIUS_M, surface, lensPath);
+}
+
+// A VPL as the emitter of the medium's light along a camera ray (issue 42,
+// item 4; core/physics/medium_vpl_scattering.md): a point whose 1/r^2 the
+// gathers bound by render.indirect's geometry clamp C (min(cos / d^2, C) at
+// a medium receiver, whose cosine is 1). The quadrature's 1/(r^2 + R^2)
+// bounds it the same way at r = 0 with R = 1 / sqrt(C), and is 1/r^2 to
+// (R/r)^2 beyond; without a clamp (C <= 0) the VPL is as small as the light.
+TOFSIM_PHYSICS_FN float mediumVplRadius(float clampPerM2) {
+  return clampPerM2 > 0.0f ? 1.0f / sqrt(clampPerM2) : MEDIUM_EMITTER_RADIUS_M;
 }
 
 // The first and last branch of a ray (MEDIUM_BRANCH_*): unwarped, two.
@@ -250,11 +268,13 @@ TOFSIM_PHYSICS_FN vec2 mediumBinSpan(MediumRay ray, int branch, vec2 span, int k
 
 // An interval of s in the substitution's angle: the tangent where it starts,
 // its width (phi1 - phi0, computed without the cancellation of two angles
-// near pi/2) and its angle steps of MEDIUM_GAUSS_NODES nodes each.
+// near pi/2) and its angle steps of `nodes` Gauss-Legendre nodes each
+// (MEDIUM_GAUSS_NODES; a VPL's bounded intervals fewer: mediumVplInterval).
 struct MediumInterval {
   float tan0;
   float width;
   int steps;
+  int nodes;
 };
 
 TOFSIM_PHYSICS_FN MediumInterval mediumInterval(MediumRay ray, vec2 part) {
@@ -271,11 +291,29 @@ TOFSIM_PHYSICS_FN MediumInterval mediumInterval(MediumRay ray, vec2 part) {
   iv.width = max(width, 0.0f);
   iv.steps = int(ceil(iv.width / MEDIUM_MAX_ANGLE_STEP));
   if (part.y < 0.0f && iv.width > 0.0f) iv.steps = max(iv.steps, MEDIUM_TAIL_STEPS);
+  iv.nodes = MEDIUM_GAUSS_NODES;
   return iv;
 }
 
-// Node j of the Gauss-Legendre rule on [0, 1]: (position, weight).
-TOFSIM_PHYSICS_FN vec2 mediumGaussNode(int j) {
+// A VPL emitter's interval (issue 42, item 4; medium_vpl_scattering.md): the
+// same steps with fewer nodes where the interval is bounded, since nearly
+// every bin's interval is far narrower than the integrand's angular scale
+// (a Henyey-Greenstein lobe of g = 0.845 is ~0.15 rad wide in phi) and the
+// VPLs' cost is the nodes of every bin of every ray: one node (the midpoint)
+// up to MEDIUM_VPL_MIDPOINT_WIDTH, two above (exact for cubics); an interval
+// to infinity keeps its MEDIUM_GAUSS_NODES (the transmittance's tail).
+const float MEDIUM_VPL_MIDPOINT_WIDTH = PI / 1024.0f;
+TOFSIM_PHYSICS_FN MediumInterval mediumVplInterval(MediumRay ray, vec2 part) {
+  MediumInterval iv = mediumInterval(ray, part);
+  if (part.y >= 0.0f) iv.nodes = iv.width <= MEDIUM_VPL_MIDPOINT_WIDTH ? 1 : 2;
+  return iv;
+}
+
+// Node j of the n-node Gauss-Legendre rule on [0, 1] (n = 1, 2 or 4):
+// (position, weight).
+TOFSIM_PHYSICS_FN vec2 mediumGaussNode(int n, int j) {
+  if (n == 1) return vec2(0.5f, 1.0f);
+  if (n == 2) return vec2(j == 0 ? 0.2113248654051871f : 0.7886751345948129f, 0.5f);
   if (j == 0) return vec2(0.0694318442029737f, 0.1739274225687269f);
   if (j == 1) return vec2(0.3300094782075719f, 0.3260725774312731f);
   if (j == 2) return vec2(0.6699905217924281f, 0.3260725774312731f);
@@ -293,11 +331,11 @@ struct MediumNode {
   float weight;    // 0: a node at s = infinity (nothing arrives)
 };
 
-// Node k of interval iv, k in [0, steps x MEDIUM_GAUSS_NODES).
+// Node k of interval iv, k in [0, steps x nodes).
 TOFSIM_PHYSICS_FN MediumNode mediumNode(MediumRay ray, MediumInterval iv, int k) {
   MediumNode n;
-  int step = k / MEDIUM_GAUSS_NODES;
-  vec2 gauss = mediumGaussNode(k - step * MEDIUM_GAUSS_NODES);
+  int step = k / iv.nodes;
+  vec2 gauss = mediumGaussNode(iv.nodes, k - step * iv.nodes);
   float stepWidth = iv.width / float(iv.steps);
   // tan(phi0 + offset) by the addition formula: precise where phi0 is near
   // +-pi/2, where phi0 itself has lost the digits s needs. It holds for

@@ -17,11 +17,6 @@ layout(local_size_x = TOFSIM_WORK_GROUP_SIZE) in;
 
 layout(std430, binding = TOFSIM_SSBO_DIRECT_VOLUME) buffer DirectVolume { float direct[]; };
 layout(std430, binding = TOFSIM_SSBO_OUTSIDE_AXIS) buffer OutsideAxis { float outside[]; };
-// One vec4 (xyz unit direction) per sample: pixel p's N x N at p N^2 + s,
-// then with ADAPTIVE_SAMPLES one per pixel centre from uMediumImagePixels N^2.
-layout(std430, binding = TOFSIM_SSBO_MEDIUM_RAYS) readonly buffer MediumRays {
-  vec4 mediumRays[];
-};
 
 uniform uint uFirstPixel;
 uniform uint uPixelCount;
@@ -31,7 +26,6 @@ uniform float uStart_m;
 uniform float uBinWidth_m;
 uniform float uIndexOfRefraction;
 uniform int uCameraUnwarp;
-uniform uint uMediumImagePixels;
 // The medium (capture::Medium): uMediumSigmaS/T, uMediumPhase, uMediumG
 // (compiled with MEDIUM: gpu::gatherDefines; set by MediumUniforms.cpp).
 #include "medium_uniforms.glsl"
@@ -39,23 +33,15 @@ uniform uint uMediumImagePixels;
 
 #define GATHER_HISTOGRAM direct
 #include "bin_deposit.glsl"
+#include "medium_sample_rays.glsl"
 
-// Sample s's ray direction (the pixel takes `samples` samples).
-vec3 mediumRayDirection(ivec2 xy, int samples, int s) {
-  uint pixel = uint(xy.y * uImageWidth + xy.x);
-  uint i = pixel * uint(kSamplesPerPixel) + uint(s);
-#if defined(ADAPTIVE_SAMPLES) && PIXEL_SAMPLES > 1
-  if (samples == 1) i = uMediumImagePixels * uint(kSamplesPerPixel) + pixel;
-#endif
-  return mediumRays[i].xyz;
-}
 
 // The light of bin k's part of the ray (k: -1 before the axis, uBins after).
 vec3 mediumBinLight(MediumRay ray, int branch, vec2 span, int k) {
   MediumInterval iv = mediumInterval(
       ray, mediumBinSpan(ray, branch, span, k, uIndexOfRefraction, uStart_m, uBinWidth_m, uBins));
   vec3 sum = vec3(0.0);
-  for (int node = 0; node < iv.steps * MEDIUM_GAUSS_NODES; ++node) {
+  for (int node = 0; node < iv.steps * iv.nodes; ++node) {
     MediumNode n = mediumNode(ray, iv, node);
     float profile = lightProfile(uLightProfile, uLightDirection_world, uSpotCosOuter,
                                  uSpotCosInner, n.fromLight);
@@ -87,23 +73,9 @@ void gatherRay(uint local, MediumRay ray, float weight, inout float lostBefore,
 
 void gatherSample(uint local, ivec2 xy, int samples, int s, inout float lostBefore,
                   inout float lostAfter) {
-  SurfaceSample g = pixelSample(xy, samples, s);
-  CameraEnd end = cameraEndOf(xy, samples, s);
-  vec3 origin = end.position;
-  float surface = g.position.w != 0.0 ? length(g.position.xyz - origin) : MEDIUM_UNBOUNDED;
-#ifdef SAMPLE_CAMERA_ENDS
-  float lensPath = uCameraUnwarp != 0 ? 0.0 : end.lensPath_m;
-#else
-  float lensPath = 0.0;
-#endif
-  MediumRay ray = mediumRay(origin, mediumRayDirection(xy, samples, s), uLightPosition_world,
-                            surface, lensPath);
-  // Each sample's share of the pixel, as direct_gather.comp weighs it.
-#if PIXEL_SAMPLES > 1
-  float weight = g.weight;
-#else
-  float weight = 1.0;
-#endif
+  float weight;
+  MediumRay ray = mediumSampleRay(xy, samples, s, uLightPosition_world, MEDIUM_EMITTER_RADIUS_M,
+                                  weight);
   gatherRay(local, ray, weight, lostBefore, lostAfter);
 }
 

@@ -198,4 +198,14 @@ TOFSIM_PHYSICS_FN vec3 vplScatter(ScatterVertex v, vec3 n, vec3 incoming, vec3 t
   return f;
 }
 
+// A VPL's intensity toward unit u, W/sr (the medium's light along a camera
+// ray, issue 42 item 4): flux x vplScatter x its emitter cosine, 0 behind a
+// surface VPL (a medium VPL has no side: vplEmitterCosine is 1).
+TOFSIM_PHYSICS_FN vec3 vplIntensityToward(ScatterVertex v, vec3 n, vec3 incoming, vec3 flux,
+                                          vec3 u, float clampPerSr) {
+  float cosine = vplEmitterCosine(n, u);
+  if (cosine <= 0.0f) return vec3(0.0f);
+  return flux * vplScatter(v, n, incoming, u, clampPerSr) * cosine;
+}
+
 #endif  // TOFSIM_SCATTER_VERTEX_GLSL

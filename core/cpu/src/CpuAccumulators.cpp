@@ -39,6 +39,16 @@ void CpuBackend::allocate(std::size_t pixelsPerSegment, std::size_t vplsPerBatch
     responses_->configure(physics::classStages(responseClasses_, job_.settings.time.bin_width_s),
                           pixelsPerSegment, job_.settings.time.bins);
   }
+  // The VPLs' light scattered by the medium into the camera rays: zeroed by
+  // moveOut as it adds it to the indirect light (or here, when a segment was
+  // left unfinished).
+  const std::size_t mediumFloats = mediumVpls_ ? floats : 0;
+  if (mediumIndirect_.size() != mediumFloats) {
+    mediumIndirect_ = util::ZeroedBuffer<float>(mediumFloats);
+  } else {
+    std::fill_n(mediumIndirect_.data(), mediumFloats, 0.0f);
+  }
+  mediumOutside_.assign(mediumVpls_ ? pixelsPerSegment : 0, physics::OffAxisSums{});
   accumulatorsZero_ = true;
   outside_.assign(pixelsPerSegment, physics::OffAxisSums{});
   segmentSurfaces_.resize(pixelsPerSegment * maxSamplesPerPixel());
@@ -79,6 +89,8 @@ void CpuBackend::clearAccumulators(std::size_t pixels) {
   const std::size_t stride = static_cast<std::size_t>(job_.settings.time.bins) * kChannels;
   std::fill_n(direct_.data(), pixels * stride, 0.0f);
   std::fill_n(indirect_.data(), pixels * stride, 0.0f);
+  std::fill_n(mediumIndirect_.data(), mediumIndirect_.size() > 0 ? pixels * stride : 0, 0.0f);
+  std::fill(mediumOutside_.begin(), mediumOutside_.end(), physics::OffAxisSums{});
   for (std::size_t i = 0; i < pixels && footprint_.size() > 0; ++i) {
     const FootprintBins written = footprintBins_[i];
     if (written.first <= written.last) {
@@ -92,7 +104,7 @@ void CpuBackend::clearAccumulators(std::size_t pixels) {
   responses_->clear();
 }
 
-void CpuBackend::moveOut(float* from, float* to, bool integrateFootprints) {
+void CpuBackend::moveOut(float* from, float* to, bool integrateFootprints, float* medium) {
   const std::size_t tiles = (pixelCount_ + kTilePixels - 1) / kTilePixels;
   const std::size_t stride = static_cast<std::size_t>(job_.settings.time.bins) * kChannels;
   // Per pixel while its histogram is in cache: the wide footprint kernels
@@ -103,6 +115,11 @@ void CpuBackend::moveOut(float* from, float* to, bool integrateFootprints) {
     for (std::size_t i = tile * kTilePixels; i < end; ++i) {
       float* histogram = &from[i * stride];
       if (integrateFootprints) integratePixel(i, histogram);
+      if (medium != nullptr) {  // the VPLs' light in the medium, after the surfaces'
+        float* add = medium + i * stride;
+        for (std::size_t j = 0; j < stride; ++j) histogram[j] += add[j];
+        std::fill_n(add, stride, 0.0f);
+      }
       std::copy_n(histogram, stride, to + i * stride);
       std::fill_n(histogram, stride, 0.0f);
     }
@@ -110,15 +127,22 @@ void CpuBackend::moveOut(float* from, float* to, bool integrateFootprints) {
 }
 
 void CpuBackend::takeIndirect(float* indirect) {
-  moveOut(indirect_.data(), indirect, job_.settings.pixel_footprint || !responses_->empty());
+  moveOut(indirect_.data(), indirect, job_.settings.pixel_footprint || !responses_->empty(),
+          mediumVpls_ ? mediumIndirect_.data() : nullptr);
 }
 
 void CpuBackend::readSegment(float* direct, float* indirect, AxisLoss& offAxis) {
   // The direct gather integrated its footprints itself; the indirect gathers'
   // wide kernels, added after every batch, are summed once per pixel here.
   moveOut(direct_.data(), direct, false);
-  moveOut(indirect_.data(), indirect, job_.settings.pixel_footprint || !responses_->empty());
+  moveOut(indirect_.data(), indirect, job_.settings.pixel_footprint || !responses_->empty(),
+          mediumVpls_ ? mediumIndirect_.data() : nullptr);
   accumulatorsZero_ = true;
+  for (std::size_t i = 0; i < pixelCount_ && mediumVpls_; ++i) {
+    outside_[i].before += mediumOutside_[i].before;
+    outside_[i].after += mediumOutside_[i].after;
+    mediumOutside_[i] = physics::OffAxisSums{};
+  }
   for (std::size_t i = 0; i < pixelCount_; ++i) {
     offAxis.before += outside_[i].before;
     offAxis.after += outside_[i].after;

@@ -17,6 +17,7 @@
 #include "VplArrays.h"
 #include "tofsim/capture/SegmentSink.h"
 #include "tofsim/capture/ThinLens.h"
+#include "tofsim/ir/MediumVpl.h"
 #include "tofsim/ir/SurfaceImage.h"
 #include "tofsim/physics/FootprintBuffer.h"
 #include "tofsim/physics/ScatterVertex.h"
@@ -88,6 +89,7 @@ ir::CentreSurfaces CpuBackend::prepareSurfaces(const capture::RenderJob& job) {
   job_ = job;
   dropLastLeg_ = job.settings.time.camera_unwarp || !capture::lastLegCounts(job.imager);
   vpls_.reset();  // a new render: nothing of the previous one survives
+  mediumVpls_ = false;
   ism_.reset();
   // The driver's G-buffer (depth, the light seen by the camera, the adaptive
   // samples' edges) is the pixel centres', whatever the sub-pixel samples.
@@ -166,6 +168,7 @@ std::vector<ir::Vpl> CpuBackend::generateVpls(const capture::RenderJob& job) {
 
 void CpuBackend::setVpls(const std::vector<ir::Vpl>& vpls) {
   vpls_ = std::make_unique<VplArrays>(vpls);
+  mediumVpls_ = !vpls.empty() && job_.settings.medium.scatters();
   ism_.reset();
   if (indirectVisibility_ && job_.settings.indirect.visibility == capture::Visibility::Ism &&
       !vpls.empty()) {
@@ -295,6 +298,7 @@ void CpuBackend::gatherIndirect(std::size_t firstVpl, std::size_t count) {
   TOFSIM_CHECK(vpls_ != nullptr && firstVpl + count <= vpls_->count);
   const std::size_t tiles = (pixelCount_ + kTilePixels - 1) / kTilePixels;
   parallelFor(tiles, threads_, [&](std::size_t tile) { gatherTile(tile, firstVpl, count); });
+  if (mediumVpls_) gatherMediumIndirect(firstVpl, count);
 }
 
 /// What the job fixes for every indirect contribution of a tile.

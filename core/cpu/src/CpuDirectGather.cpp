@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "CpuDirectConstants.h"
 #include "GatherKernel.h"
 #include "GatherTiles.h"
 #include "ParallelFor.h"
@@ -25,22 +26,6 @@ void CpuBackend::gatherDirect() {
   parallelFor(tiles, threads_, [&](std::size_t tile) { gatherDirectTile(tile); });
   if (job_.settings.medium.present()) gatherMediumDirect();
 }
-
-/// What the light, the time axis and the job fix for every direct sample of
-/// a tile, read once per tile.
-struct CpuBackend::DirectConstants {
-  capture::Light::ProfileTerms profile;  ///< the light's (Light::profileTerms)
-  glm::vec3 light_world{0.0f};           ///< the light's position, m
-  glm::vec3 intensity_W_per_sr{0.0f};
-  float start_m = 0.0f;  ///< of the time axis, as optical path
-  float width_m = 1.0f;  ///< of a bin, as optical path
-  float eta = 1.0f;      ///< index of refraction
-  int bins = 0;
-  bool footprint = false;  ///< render.pixel_footprint
-  bool delayed = false;    ///< the render has delayed response classes
-  bool medium = false;     ///< a medium fills the scene (Medium::present)
-  glm::vec3 sigmaT{0.0f};  ///< its extinction, 1/m
-};
 
 /// One sample's direct light, before its share of the pixel.
 struct CpuBackend::DirectLight {

@@ -4,6 +4,7 @@
 #include <string>
 
 #include "tofsim/capture/SegmentSink.h"
+#include "tofsim/ir/MediumVpl.h"
 #include "tofsim/util/Error.h"
 
 namespace tofsim::ir {
@@ -62,6 +63,11 @@ MemoryPlan planMemory(const capture::RenderJob& job, const DeviceLimits& limits,
   // per class, the first bin written (CPU).
   if (responseBuffers > 0) {
     pixel.otherBytes = 16 * sizeof(double) + responseBuffers * sizeof(int32_t);
+  }
+  // A scattering medium's VPL light along the camera rays: its own histogram
+  // and off-axis sums per pixel (the backends' medium VPL pass).
+  if (vplCount > 0 && job.settings.medium.scatters()) {
+    pixel.otherBytes += pixel.floatsPerPixel * sizeof(float) + 2 * sizeof(float);
   }
   plan.segments =
       capture::planSegments(pixelCount, pixel, budget, limits.maxBufferBytes, limits.maxPixelsPerPass);

@@ -3,12 +3,14 @@
 #include <algorithm>
 
 #include "GatherResponseClasses.h"
+#include "GatherUniforms.h"
 #include "GpuContract.h"
 #include "GpuScene.h"
 #include "IndirectLight.h"
 #include "LightShadowMap.h"
 #include "LightUniforms.h"
 #include "MediumDirect.h"
+#include "MediumVpls.h"
 #include "MediumUniforms.h"
 #include "PixelFootprint.h"
 #include "SampleBuffers.h"
@@ -47,61 +49,6 @@ struct ViewBounds {
   }
   glm::vec3 lo, hi;
 };
-
-// Uniforms shared by the direct and indirect gathers: image, time axis,
-// imager (its viewpoint, whether its last leg counts, its footprint steps),
-// the medium.
-void configureGather(const gl::Program& program, const RenderJob& job) {
-  const TimeAxis& axis = job.settings.time;
-  program.set("uImageWidth", imageWidth(job.imager));
-  program.set("uBins", axis.bins);
-  program.set("uStart_m", static_cast<float>(axis.start_m()));
-  program.set("uBinWidth_m", static_cast<float>(axis.bin_width_m()));
-  program.set("uIndexOfRefraction", static_cast<float>(job.settings.time.index_of_refraction));
-  // The CPU backend's dropLastLeg_: unwarped, or a last leg that takes no time.
-  const bool dropLastLeg = job.settings.time.camera_unwarp || !lastLegCounts(job.imager);
-  program.set("uCameraUnwarp", dropLastLeg ? 1 : 0);
-  const RenderSettings& s = job.settings;
-  if (s.medium.present()) setMediumExtinction(program, s.medium);  // compiled with MEDIUM
-  // Each sample's own camera end, or the viewpoint for all (camera_end.glsl).
-  if (raysShareOrigin(job.imager)) {
-    program.set("uCameraPosition_world", viewpoint(job.imager));
-  } else if (gpu::adaptiveSamples(s)) {
-    program.set("uImagePixels", static_cast<unsigned>(imageWidth(job.imager) * imageHeight(job.imager)));
-  }
-  const int32_t n = s.pixel_samples;
-  // Each sample stands for 1 / N^2 of the pixel (as the CPU backend weighs it).
-  if (s.pixel_footprint || n > 1) program.set("uSampleWeight", 1.0f / static_cast<float>(n * n));
-  if (s.pixel_footprint) {
-    const Camera* camera = cameraOf(job.imager);
-    if (camera != nullptr) program.set("uCameraForward", camera->forward());
-    // A lens's steps are each pixel's, in a buffer (Passes::pixelRaySteps).
-    if (camera != nullptr && camera->lens) return;
-    // A sample's footprint is its sub-pixel: the steps shrink by N.
-    const PixelSteps sample(job.imager, 1.0f / static_cast<float>(n));
-    program.set("uSampleStepX", sample.stepU());
-    program.set("uSampleStepY", sample.stepV());
-    // A masked-out pixel's one centre sample spans the whole pixel: the
-    // steps of pixel_samples: 1 (whose side is 1), unscaled.
-    if (gpu::adaptiveSamples(s)) {
-      const PixelSteps pixel(job.imager, 1.0f);
-      program.set("uPixelStepX", pixel.stepU());
-      program.set("uPixelStepY", pixel.stepV());
-    }
-  }
-}
-
-// Uniforms of the indirect gather only: scene scale (biases) and the clamp.
-void configureIndirectGather(const gl::Program& program, const RenderJob& job) {
-  configureGather(program, job);
-  const glm::vec3 extent = job.scene->bounds().max - job.scene->bounds().min;
-  program.set("uSceneScale_m", std::max(glm::length(extent), 1e-6f));
-  program.set("uGeometryClamp",
-              static_cast<float>(job.settings.indirect.geometry_term_clamp_per_m2));
-  if (ir::vplsCarryVertex(job.settings)) {
-    program.set("uVplBrdfClamp", static_cast<float>(job.settings.indirect.vpl_brdf_clamp_per_sr));
-  }
-}
 
 }  // namespace
 
@@ -203,6 +150,7 @@ struct GlBackend::Passes {
   gl::Program directGather;
   std::unique_ptr<IndirectLight> indirectLight;  ///< null without VPLs
   std::unique_ptr<MediumDirect> mediumDirect;    ///< null without a medium
+  std::unique_ptr<MediumVpls> mediumVpls;  ///< null without VPLs and a scattering medium
   gl::Buffer directVolume, indirectVolume;
   gl::Buffer outsideAxis;                     ///< per pixel: light before the axis, light after it
   std::unique_ptr<PixelFootprint> footprint;  ///< null without render.pixel_footprint
@@ -379,6 +327,10 @@ void GlBackend::setVpls(const std::vector<ir::Vpl>& vpls) {
   p.indirectLight = std::make_unique<IndirectLight>(
       sceneObjects_->soup(), vpls, p.job, foldModel, p.responseClasses.defines());
   configureIndirectGather(p.indirectLight->gatherProgram(), p.job);
+  p.mediumVpls.reset();
+  if (p.job.settings.medium.scatters()) {
+    p.mediumVpls = std::make_unique<MediumVpls>(p.job, *p.mediumDirect);
+  }
 }
 
 std::size_t GlBackend::fixedBytes() const {
@@ -459,6 +411,7 @@ void GlBackend::beginSegment(std::size_t firstPixel, std::size_t count) {
   p.outsideAxis.bindRange(GL_SHADER_STORAGE_BUFFER, gpu::kOutsideAxis, 0,
                           count * 2 * sizeof(float));
   if (p.footprint) p.footprint->beginSegment(count);
+  if (p.mediumVpls) p.mediumVpls->beginSegment(count);
 }
 
 void GlBackend::gatherDirect() {
@@ -482,6 +435,9 @@ void GlBackend::gatherIndirect(std::size_t firstVpl, std::size_t count) {
   TOFSIM_CHECK(p.indirectLight != nullptr);
   p.bindSurfaces();
   p.indirectLight->gather(firstVpl, count, p.firstPixel, p.segmentPixels);
+  if (p.mediumVpls) {
+    p.mediumVpls->gather(*p.indirectLight, firstVpl, count, p.firstPixel, p.segmentPixels);
+  }
 }
 
 void GlBackend::takeIndirect(float* indirect) {
@@ -491,6 +447,7 @@ void GlBackend::takeIndirect(float* indirect) {
   const std::size_t bytes = p.segmentPixels * static_cast<std::size_t>(p.job.settings.time.bins) *
                             gpu::kChannels * sizeof(float);
   p.indirectVolume.download(0, bytes, indirect);
+  if (p.mediumVpls) p.mediumVpls->addInto(indirect, nullptr, p.segmentPixels);
   p.indirectVolume.clear();
   // The gathers write through the binding of beginSegment's range, which
   // clear() leaves in place; the barrier orders the clear before them.
@@ -507,6 +464,7 @@ void GlBackend::readSegment(float* direct, float* indirect, AxisLoss& offAxis) {
   p.directVolume.download(0, bytes, direct);
   p.indirectVolume.download(0, bytes, indirect);
   p.outsideAxis.download(0, p.segmentPixels * 2 * sizeof(float), p.outside.data());
+  if (p.mediumVpls) p.mediumVpls->addInto(indirect, p.outside.data(), p.segmentPixels);
   for (std::size_t i = 0; i < p.segmentPixels; ++i) {
     offAxis.before += p.outside[2 * i];
     offAxis.after += p.outside[2 * i + 1];

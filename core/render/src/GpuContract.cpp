@@ -30,6 +30,8 @@ std::vector<std::pair<std::string, std::string>> shaderDefines() {
       {"TOFSIM_SSBO_SAMPLE_CAMERA_ENDS", n(kSampleCameraEnds)},
       {"TOFSIM_SSBO_RESPONSE_COMPOSE", n(kResponseCompose)},
       {"TOFSIM_SSBO_MEDIUM_RAYS", n(kMediumRays)},
+      {"TOFSIM_SSBO_MEDIUM_VPL_VOLUME", n(kMediumVplVolume)},
+      {"TOFSIM_SSBO_MEDIUM_VPL_OUTSIDE", n(kMediumVplOutside)},
       {"TOFSIM_UNIT_G_POSITION", n(kGPosition)},
       {"TOFSIM_UNIT_G_NORMAL", n(kGNormal)},
       {"TOFSIM_UNIT_G_ALBEDO", n(kGAlbedo)},

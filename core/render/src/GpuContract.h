@@ -48,6 +48,8 @@ enum StorageBinding : uint32_t {
   kSampleCameraEnds,  ///< vec4 per given sample: its camera end, lens path (SAMPLE_CAMERA_ENDS)
   kResponseCompose,   ///< the response classes' compose table, uint (GatherResponseClasses)
   kMediumRays,        ///< vec4 per sample: its ray direction (medium_direct.comp, issue 42)
+  kMediumVplVolume,   ///< segment's VPL light scattered into the camera rays (medium_vpls.comp)
+  kMediumVplOutside,  ///< its two floats per pixel off the axis
 };
 
 /// Texture units (TOFSIM_UNIT_...).

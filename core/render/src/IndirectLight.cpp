@@ -159,15 +159,19 @@ void IndirectLight::buildVisibility(std::size_t firstVpl, std::size_t count) {
   TOFSIM_GL_CHECK("ISM build");
 }
 
+void IndirectLight::bindVisibility(const gl::Program& program) const {
+  bindSceneBuffers();
+  program.use();
+  if (settings_.visibility == capture::Visibility::Ism) {
+    program.set("uVplStride", static_cast<unsigned>(floatsPerVpl_));
+    program.set("uIsmResolution", settings_.ism_resolution);
+    program.set("uIsmFirstVpl", static_cast<unsigned>(ismFirstVpl_));
+  }
+}
+
 void IndirectLight::gather(std::size_t first, std::size_t count, std::size_t firstPixel,
                            std::size_t pixelCount) {
-  bindSceneBuffers();
-  gather_.use();
-  if (settings_.visibility == capture::Visibility::Ism) {
-    gather_.set("uVplStride", static_cast<unsigned>(floatsPerVpl_));
-    gather_.set("uIsmResolution", settings_.ism_resolution);
-    gather_.set("uIsmFirstVpl", static_cast<unsigned>(ismFirstVpl_));
-  }
+  bindVisibility(gather_);
   gather_.set("uFirstPixel", static_cast<unsigned>(firstPixel));
   gather_.set("uPixelCount", static_cast<unsigned>(pixelCount));
   // Sub-dispatches in VPL order keep each pixel's additions in index order.
@@ -180,6 +184,11 @@ void IndirectLight::gather(std::size_t first, std::size_t count, std::size_t fir
     done += n;
     throwIfInterrupted();  // Ctrl-C between dispatches, not only between segments
   }
+  checkLoopGuard();
+  TOFSIM_GL_CHECK("indirect gather");
+}
+
+void IndirectLight::checkLoopGuard() const {
   uint32_t loopLimitHit = 0;
   loopGuard_.download(0, sizeof loopLimitHit, &loopLimitHit);
   if (loopLimitHit != 0) {
@@ -188,7 +197,6 @@ void IndirectLight::gather(std::size_t first, std::size_t count, std::size_t fir
         "(llvmpipe: 65535), so light could be lost; use visibility: ism or a "
         "smaller scene for exact visibility");
   }
-  TOFSIM_GL_CHECK("indirect gather");
 }
 
 }  // namespace tofsim::render

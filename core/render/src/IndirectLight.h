@@ -47,6 +47,12 @@ class IndirectLight {
   /// and outside-axis buffers.
   void gather(std::size_t firstVpl, std::size_t count, std::size_t firstPixel,
               std::size_t pixelCount);
+  /// Binds the VPLs and their visibility (the ISMs built last, or the BVH)
+  /// for `program`, which reads them through vpl.glsl and vpl_visibility.glsl
+  /// (the medium's VPL pass, MediumVpls), its ISM uniforms set; uses it.
+  void bindVisibility(const gl::Program& program) const;
+  /// Throws where a pass came near llvmpipe's loop-trip limit (its guard flag).
+  void checkLoopGuard() const;
 
  private:
   IndirectLight(const TriangleSoup& soup, const std::vector<ir::Vpl>& vpls,

@@ -44,20 +44,11 @@ std::vector<glm::vec4> sampleDirections(const capture::Imager& imager, int32_t n
 
 }  // namespace
 
-MediumDirect::MediumDirect(const capture::RenderJob& job, bool foldModel) {
+void configureMediumPass(const gl::Program& p, const capture::RenderJob& job) {
   const capture::RenderSettings& s = job.settings;
-  TOFSIM_CHECK(s.medium.present());
-  // The G-buffer's layout and the sample's camera ends, as the gathers read them.
-  program_ = gpu::makeProgram({{GL_COMPUTE_SHADER, "medium_direct.comp"}},
-                              gpu::gatherDefines(job, foldModel));
   const bool adaptive = gpu::adaptiveSamples(s);
-  const std::vector<glm::vec4> directions =
-      sampleDirections(job.imager, s.pixel_samples, adaptive);
-  rays_ = gl::Buffer(directions.size() * sizeof(glm::vec4), directions.data());
   const int32_t width = capture::imageWidth(job.imager);
   const auto pixels = static_cast<unsigned>(width * capture::imageHeight(job.imager));
-  const gl::Program& p = program_;
-  setLightUniforms(p, job.light);
   p.set("uImageWidth", width);
   p.set("uBins", s.time.bins);
   p.set("uStart_m", static_cast<float>(s.time.start_m()));
@@ -77,6 +68,19 @@ MediumDirect::MediumDirect(const capture::RenderJob& job, bool foldModel) {
   }
   setMediumExtinction(p, s.medium);
   setMediumScattering(p, s.medium);
+}
+
+MediumDirect::MediumDirect(const capture::RenderJob& job, bool foldModel) {
+  const capture::RenderSettings& s = job.settings;
+  TOFSIM_CHECK(s.medium.present());
+  // The G-buffer's layout and the sample's camera ends, as the gathers read them.
+  program_ = gpu::makeProgram({{GL_COMPUTE_SHADER, "medium_direct.comp"}},
+                              gpu::gatherDefines(job, foldModel));
+  const std::vector<glm::vec4> directions =
+      sampleDirections(job.imager, s.pixel_samples, gpu::adaptiveSamples(s));
+  rays_ = gl::Buffer(directions.size() * sizeof(glm::vec4), directions.data());
+  setLightUniforms(program_, job.light);
+  configureMediumPass(program_, job);
 }
 
 void MediumDirect::gather(const LightShadowMap& shadowMap, std::size_t firstPixel,

@@ -16,6 +16,10 @@ namespace tofsim::render {
 
 class LightShadowMap;
 
+/// The uniforms every medium pass over the camera rays reads (time axis,
+/// image, camera ends, samples' weight, the medium; medium_sample_rays.glsl).
+void configureMediumPass(const gl::Program& program, const capture::RenderJob& job);
+
 class MediumDirect {
  public:
   /// For `job` (its medium present) gathered from its G-buffer's samples
@@ -30,6 +34,9 @@ class MediumDirect {
 
   /// Device memory it holds: the samples' ray directions.
   std::size_t bytes() const { return rays_.size(); }
+  /// The samples' ray directions (medium_sample_rays.glsl's uMediumRays),
+  /// which the VPLs' medium pass reads too (MediumVpls).
+  const gl::Buffer& rays() const { return rays_; }
 
  private:
   gl::Program program_;

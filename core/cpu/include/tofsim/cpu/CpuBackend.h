@@ -33,6 +33,10 @@
 namespace tofsim::rays {
 class RayScene;
 }
+namespace tofsim::capture {
+class PrimaryRays;
+class ThinLens;
+}
 namespace tofsim::physics {
 struct OffAxisSums;
 struct ResponseKernel;
@@ -54,6 +58,7 @@ struct PixelSurface;
 struct VplArrays;
 struct VplTerms;
 struct BlockPair;
+struct MediumSampleRay;
 
 class CpuBackend : public ir::IrBackend {
  public:
@@ -111,6 +116,15 @@ class CpuBackend : public ir::IrBackend {
   /// The medium's single scattering along every sample's camera ray into
   /// direct_ (CpuMediumDirect.cpp): with a medium only.
   void gatherMediumDirect();
+  /// Segment pixel i's samples' camera rays, as the medium passes integrate
+  /// along them (CpuMediumDirect.cpp): `rays` of the job's imager, `lens`
+  /// its thin lens with aperture samples (null without).
+  void mediumSampleRays(const capture::PrimaryRays& rays, const capture::ThinLens* lens,
+                        std::size_t i, std::vector<MediumSampleRay>& out) const;
+  /// VPLs [firstVpl, + count)'s light scattered once by the medium into
+  /// every sample's camera ray (CpuMediumVpls.cpp), into mediumIndirect_:
+  /// with a scattering medium only.
+  void gatherMediumIndirect(std::size_t firstVpl, std::size_t count);
   /// VPLs [firstVpl, + count) into indirect_ for the segment's pixels in `tile`.
   void gatherTile(std::size_t tile, std::size_t firstVpl, std::size_t count);
   IndirectConstants indirectConstants() const;
@@ -145,7 +159,8 @@ class CpuBackend : public ir::IrBackend {
   double* footprintOf(std::size_t i, const glm::vec3& kernel);
   /// The segment's histograms in `from` out to `to` (with the indirect
   /// light's wide footprint kernels summed in, pixel by pixel), and zeroed.
-  void moveOut(float* from, float* to, bool integrateFootprints);
+  /// `medium` (null: none): mediumIndirect_, added after the footprints and zeroed.
+  void moveOut(float* from, float* to, bool integrateFootprints, float* medium = nullptr);
   /// Traces every pixel's N x N samples if adaptive samples are still waiting
   /// for a mask that did not come.
   void finishSurfaces();
@@ -191,6 +206,13 @@ class CpuBackend : public ir::IrBackend {
   /// The segment's histograms, (pixel, bin, channel); zero from the kernel
   /// (ZeroedBuffer.h) and kept across renders of the same size.
   util::ZeroedBuffer<float> direct_, indirect_;
+  /// With a scattering medium and VPLs (mediumVpls_): the VPLs' light the
+  /// medium scatters into the camera rays, (pixel, bin, channel) and off
+  /// the axis, kept apart from indirect_ so that each (pixel, bin) adds it in
+  /// VPL order whatever the batch plan; moveOut adds it to the indirect light.
+  util::ZeroedBuffer<float> mediumIndirect_;
+  std::vector<physics::OffAxisSums> mediumOutside_;
+  bool mediumVpls_ = false;
   /// direct_, indirect_ and footprint_ hold zeros (after allocate and readSegment).
   bool accumulatorsZero_ = false;
   std::vector<physics::OffAxisSums> outside_;  ///< per pixel of the segment: light off the axis

@@ -1,0 +1,38 @@
+#!/usr/bin/env bash
+# The cost of the VPLs' light scattered by the medium into the camera rays
+# (issue 42, item 4: core/physics/medium_vpl_scattering.md) on
+# configs/fog_lidar.yaml (64 x 64, 1100 bins, 136 VPLs), without sensors, on
+# BACKEND (cpu or gl), RUNS times per variant, interleaved:
+#   fog           the fog as shipped: single scattering, VPLs, the pass
+#   fog_albedo0   the same extinction without scattering (medium.albedo 0):
+#                 the VPLs' surface gather without the pass (and without
+#                 single scattering, which costs ~1 s)
+#   fog_no_vpls   render.indirect.enabled false: direct light and single
+#                 scattering only
+# Prints each run's render seconds (stats.seconds), process wall and CPU
+# seconds, max RSS, then the medians and their ratios to fog_albedo0. On a
+# loaded machine read the CPU column. Usage:
+#   bench/medium_vpl_cost/run.sh [BACKEND=cpu] [RUNS=3] [OUTDIR]
+set -euo pipefail
+cd "$(dirname "$0")/../.."
+backend=${1:-cpu}
+runs=${2:-3}
+out=${3:-$(mktemp -d)}
+mkdir -p "$out"
+source bench/timed_renders.sh
+variants=("fog:" "fog_albedo0:--set medium.albedo=0" "fog_no_vpls:--set render.indirect.enabled=false")
+echo "commit: $(git rev-parse --short HEAD), $(nproc) CPUs, backend $backend, load: $(cut -d' ' -f1-3 /proc/loadavg)"
+echo "| run | variant | render s (stats.seconds) | process wall s | process CPU s | max RSS MB |"
+echo "|---|---|---|---|---|---|"
+for ((r = 1; r <= runs; ++r)); do
+  for v in "${variants[@]}"; do
+    IFS=: read -r name extra <<<"$v"
+    # shellcheck disable=SC2086
+    timed_render "$r" "$name" "$out/$name.$r" configs/fog_lidar.yaml --backend "$backend" \
+      --set 'sensors=[]' $extra
+  done
+done
+echo
+echo "| variant | median render s | ratio | median process wall s | ratio | median process CPU s | ratio |"
+echo "|---|---|---|---|---|---|---|"
+for v in "${variants[@]}"; do ratio_row "${v%%:*}" fog_albedo0; done

@@ -1,0 +1,123 @@
+// The CPU backend's VPL light scattered into the camera rays (issue 42, item
+// 4): every VPL of a batch is an emitter for the medium's single scattering
+// along each pixel sample's camera ray (before its first surface, or along
+// the whole ray when it sees none), by the light's pass's quadrature
+// (CpuMediumRays.h, shaders/medium.glsl): its intensity toward the node
+// (physics::vplIntensityToward: a surface VPL's cosine emitter or BRDF, a
+// medium VPL's albedo x phase), its 1/r^2 bounded by render.indirect's
+// geometry clamp (mediumVplRadius), its light starting at its own optical
+// path, its visibility the batch's (exact rays or the ISMs, as the surface
+// gather's). The physics: core/physics/medium_vpl_scattering.md;
+// shaders/medium_vpls.comp is the GL twin.
+#include <algorithm>
+#include <optional>
+
+#include "CpuIsm.h"
+#include "CpuMediumRays.h"
+#include "GatherTiles.h"
+#include "ParallelFor.h"
+#include "ResponseClasses.h"
+#include "VplArrays.h"
+#include "tofsim/capture/ThinLens.h"
+#include "tofsim/cpu/CpuBackend.h"
+#include "tofsim/ir/SurfaceImage.h"
+#include "tofsim/physics/ScatterVertex.h"
+#include "tofsim/rays/RayScene.h"
+#include "tofsim/util/Error.h"
+
+namespace tofsim::cpu {
+
+namespace {
+
+/// What the job fixes for every VPL's medium light.
+struct VplMediumTerms {
+  MediumAxis axis;  ///< start_m: the time axis'; each VPL's path is taken off it
+  glm::vec3 sigmaS{0.0f}, sigmaT{0.0f};
+  int32_t phase = 0;
+  float g = 0.0f;
+  float radius = 0.0f;      ///< mediumVplRadius of the geometry clamp, m
+  float brdfClamp = 0.0f;   ///< render.indirect.vpl_brdf_clamp, 1/sr
+  bool exact = false;       ///< exact visibility rays, else the ISMs (or none)
+  float eps = 0.0f;         ///< the exact rays' start offset, m (as the gather's)
+};
+
+}  // namespace
+
+void CpuBackend::gatherMediumIndirect(std::size_t firstVpl, std::size_t count) {
+  const capture::RenderSettings& s = job_.settings;
+  VplMediumTerms t;
+  t.axis = {static_cast<float>(s.time.start_m()), static_cast<float>(s.time.bin_width_m()),
+            static_cast<float>(s.time.index_of_refraction), s.time.bins, dropLastLeg_, true};
+  t.sigmaS = s.medium.sigma_s_per_m;
+  t.sigmaT = s.medium.sigmaT();
+  t.phase = s.medium.phase;
+  t.g = s.medium.g;
+  t.radius = physics::mediumVplRadius(static_cast<float>(s.indirect.geometry_term_clamp_per_m2));
+  t.brdfClamp = static_cast<float>(s.indirect.vpl_brdf_clamp_per_sr);
+  t.exact = indirectVisibility_ && s.indirect.visibility == capture::Visibility::Exact;
+  t.eps = 1e-4f * sceneScale_m_;  // as the surface gather's exact visibility
+  const CpuIsm* ism = t.exact || !indirectVisibility_ ? nullptr : ism_.get();
+  const VplArrays& v = *vpls_;
+  const capture::PrimaryRays rays(job_.imager);
+  std::optional<capture::ThinLens> lens;
+  if (apertureSamples_ > 1) lens.emplace(*capture::cameraOf(job_.imager));
+  const bool delayed = !responses_->empty();
+  const std::size_t tiles = (pixelCount_ + kTilePixels - 1) / kTilePixels;
+  parallelFor(tiles, threads_, [&](std::size_t tile) {
+    std::vector<MediumSampleRay> samples;
+    std::vector<float> classLight(delayed ? static_cast<std::size_t>(t.axis.bins) * kChannels : 0);
+    const std::size_t end = std::min(pixelCount_, (tile + 1) * kTilePixels);
+    for (std::size_t i = tile * kTilePixels; i < end; ++i) {
+      mediumSampleRays(rays, lens ? &*lens : nullptr, i, samples);
+      float* histogram = &mediumIndirect_[i * t.axis.bins * kChannels];
+      // VPL by VPL (increasing index), sample by sample.
+      for (std::size_t k = firstVpl; k < firstVpl + count; ++k) {
+        const glm::vec3 at(v.px[k], v.py[k], v.pz[k]), normal(v.nx[k], v.ny[k], v.nz[k]);
+        const glm::vec3 flux(v.fr[k], v.fg[k], v.fb[k]);
+        const bool medium = normal == glm::vec3(0.0f);
+        const physics::ScatterVertex vertex = v.scattering ? v.vertex[k] : physics::ScatterVertex{};
+        const glm::vec3 incoming = v.scattering ? glm::vec3(v.ix[k], v.iy[k], v.iz[k]) : glm::vec3(0.0f);
+        MediumAxis axis = t.axis;
+        axis.start_m -= v.path[k];  // the VPL's light starts at its own path
+        const auto nodeLight = [&](const physics::MediumNode& n) {
+          const glm::vec3 intensity =
+              v.scattering ? physics::vplIntensityToward(vertex, normal, incoming, flux,
+                                                         n.fromLight, t.brdfClamp)
+                           : flux * std::max(physics::vplEmitterCosine(normal, n.fromLight), 0.0f);
+          if (intensity == glm::vec3(0.0f)) return glm::vec3(0.0f);
+          if (t.exact && scene_->occluded(at + normal * t.eps, n.x)) {
+            return glm::vec3(0.0f);
+          }
+          // A medium VPL has no hemisphere to map: exact rays among ISMs too
+          // (as the surface gather's cullOccludedMediumLanes).
+          if (ism && (medium ? scene_->occluded(at, n.x)
+                             : !ism->visible(k, n.fromLight, n.r, glm::vec3(0.0f), 1.0f,
+                                             sceneScale_m_))) {
+            return glm::vec3(0.0f);
+          }
+          return physics::mediumNodeRadiance(n, t.sigmaS, t.sigmaT, t.phase, t.g, intensity, 1.0f);
+        };
+        // Its response class after a medium point (which adds no delay).
+        const uint32_t cls =
+            delayed ? responseClasses_.then(v.responseClass.empty() ? 0u : v.responseClass[k], 0u)
+                    : 0u;
+        float* into = cls != 0 ? classLight.data() : histogram;
+        for (const MediumSampleRay& r : samples) {
+          const physics::MediumRay ray = physics::mediumEmitterRay(r.origin, r.direction, at,
+                                                                   t.radius, r.surface, r.lensPath);
+          addMediumRayLight(axis, ray, r.weight, into, mediumOutside_[i], nodeLight);
+        }
+        if (cls == 0) continue;
+        // A delayed class's light goes to its buffer, bin by bin.
+        for (int32_t b = 0; b < t.axis.bins; ++b) {
+          const glm::vec3 e(classLight[b * kChannels], classLight[b * kChannels + 1],
+                            classLight[b * kChannels + 2]);
+          if (e != glm::vec3(0.0f)) responses_->depositInBin(i, cls, b, e, mediumOutside_[i]);
+        }
+        std::fill(classLight.begin(), classLight.end(), 0.0f);
+      }
+    }
+  });
+}
+
+}  // namespace tofsim::cpu
