@@ -71,6 +71,7 @@ render:
     enabled: false
     rsm_resolution: 8
     medium_vpls: 300
+    medium_camera_rays: false
     rsm_edge_samples: 3
     merge_pixel_samples: true
     ism_resolution: 16

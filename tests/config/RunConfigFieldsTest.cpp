@@ -51,7 +51,7 @@ TEST_F(RunConfigFieldsTest, TableDocumentedDefaultsReadBackAsTheStructDefaults) 
       ++checked;
     }
   }
-  EXPECT_EQ(checked, 15 + 5);
+  EXPECT_EQ(checked, 15 + 6);
 }
 
 TEST_F(RunConfigFieldsTest, OutputFormatIsNpyOrHdf5WithALocatedError) {

@@ -171,7 +171,10 @@ YAML::Node renderNode(const RunConfig& config) {
       emitFields(section, kIndirectFields, config.render.indirect);
       // Only with a medium: a config without one keeps its effective bytes
       // (and its run content key).
-      if (!config.medium) section.remove("medium_vpls");
+      if (!config.medium) {
+        section.remove("medium_vpls");
+        section.remove("medium_camera_rays");
+      }
     }
     if (key == "reference") emitFields(section, kReferenceFields, config.reference);
     n[key] = section;

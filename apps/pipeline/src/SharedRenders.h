@@ -41,8 +41,8 @@ class SharedRenders {
   void noneRendering() { rendering_.clear(); }
 
  private:
-  const std::vector<RunContentKey>& keys_;
-  const std::vector<bool>& shareable_;
+  std::vector<RunContentKey> keys_;  // copies: callers may pass temporaries
+  std::vector<bool> shareable_;
   std::map<std::string, std::size_t> sources_;  ///< render key -> a finished run
   std::set<std::string> rendering_;             ///< render keys being rendered
 };

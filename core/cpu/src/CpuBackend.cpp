@@ -168,7 +168,7 @@ std::vector<ir::Vpl> CpuBackend::generateVpls(const capture::RenderJob& job) {
 
 void CpuBackend::setVpls(const std::vector<ir::Vpl>& vpls) {
   vpls_ = std::make_unique<VplArrays>(vpls);
-  mediumVpls_ = !vpls.empty() && job_.settings.medium.scatters();
+  mediumVpls_ = !vpls.empty() && job_.settings.vplsLightCameraRays();
   ism_.reset();
   if (indirectVisibility_ && job_.settings.indirect.visibility == capture::Visibility::Ism &&
       !vpls.empty()) {

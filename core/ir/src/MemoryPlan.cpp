@@ -66,7 +66,7 @@ MemoryPlan planMemory(const capture::RenderJob& job, const DeviceLimits& limits,
   }
   // A scattering medium's VPL light along the camera rays: its own histogram
   // and off-axis sums per pixel (the backends' medium VPL pass).
-  if (vplCount > 0 && job.settings.medium.scatters()) {
+  if (vplCount > 0 && job.settings.vplsLightCameraRays()) {
     pixel.otherBytes += pixel.floatsPerPixel * sizeof(float) + 2 * sizeof(float);
   }
   plan.segments =

@@ -328,7 +328,7 @@ void GlBackend::setVpls(const std::vector<ir::Vpl>& vpls) {
       sceneObjects_->soup(), vpls, p.job, foldModel, p.responseClasses.defines());
   configureIndirectGather(p.indirectLight->gatherProgram(), p.job);
   p.mediumVpls.reset();
-  if (p.job.settings.medium.scatters()) {
+  if (p.job.settings.vplsLightCameraRays()) {
     p.mediumVpls = std::make_unique<MediumVpls>(p.job, *p.mediumDirect);
   }
 }
