@@ -24,7 +24,8 @@ namespace tofsim::cpu {
 void CpuBackend::gatherDirect() {
   const std::size_t tiles = (pixelCount_ + kTilePixels - 1) / kTilePixels;
   parallelFor(tiles, threads_, [&](std::size_t tile) { gatherDirectTile(tile); });
-  if (job_.settings.medium.present()) gatherMediumDirect();
+  // An absorbing medium scatters nothing into the rays (it only attenuates).
+  if (job_.settings.medium.scatters()) gatherMediumDirect();
 }
 
 /// One sample's direct light, before its share of the pixel.

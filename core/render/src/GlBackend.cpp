@@ -149,7 +149,7 @@ struct GlBackend::Passes {
   LightShadowMap shadowMap;
   gl::Program directGather;
   std::unique_ptr<IndirectLight> indirectLight;  ///< null without VPLs
-  std::unique_ptr<MediumDirect> mediumDirect;    ///< null without a medium
+  std::unique_ptr<MediumDirect> mediumDirect;    ///< null without a scattering medium
   std::unique_ptr<MediumVpls> mediumVpls;  ///< null without VPLs and a scattering medium
   gl::Buffer directVolume, indirectVolume;
   gl::Buffer outsideAxis;                     ///< per pixel: light before the axis, light after it
@@ -239,7 +239,8 @@ ir::CentreSurfaces GlBackend::prepareSurfaces(const RenderJob& job) {
   setLightUniforms(p.directGather, job.light);
   p.shadowMap.bind(p.directGather);
   configureGather(p.directGather, job);
-  if (job.settings.medium.present()) {
+  // An absorbing medium scatters nothing into the rays (it only attenuates).
+  if (job.settings.medium.scatters()) {
     p.mediumDirect = std::make_unique<MediumDirect>(job, p.foldModel);
   }
   return surfaces;
