@@ -138,6 +138,41 @@ TEST_F(ViewerPageTest, AnNlosCapturesPageHoldsH) {
   }
 }
 
+TEST_F(ViewerPageTest, ALidarsPageHoldsItsWaveformsAndRangeImage) {
+  const fs::path out = dir_ / "lidar";
+  const CommandResult r = runCli(
+      "render " + std::string(TOFSIM_SOURCE_DIR) + "/configs/lidar_street.yaml -o " +
+      out.string() + " --set lidar.channels.count=4 --set lidar.azimuth.step=10 -q");
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  ASSERT_EQ(runCli("view " + out.string()).exitCode, 0);
+  const nlohmann::json page = pageData(fileBytes((out / "view.html").string()));
+  EXPECT_EQ(page["kind"], "lidar");
+  const io::NpyArray w = io::readNpy(out / "waveforms.npy");  // (rings, azimuths, t)
+  ASSERT_EQ(w.shape.size(), 3u);
+  EXPECT_EQ(page["volume"]["full"], nlohmann::json({w.shape[0], w.shape[1], w.shape[2]}));
+  const std::vector<double> values = decoded(page["volume"]);
+  const double scale = page["volume"]["scale"];
+  ASSERT_EQ(values.size(), w.data.size());
+  for (std::size_t i = 0; i < values.size(); ++i) {
+    ASSERT_NEAR(values[i], w.data[i], halfTolerance(w.data[i], scale)) << i;
+  }
+  const io::NpyArray range = io::readNpy(out / "range.npy");
+  bool found = false;
+  for (const auto& m : page["lidars"]) {
+    if (m["name"] != "range") continue;
+    found = true;
+    const std::vector<double> v = decoded(m);
+    ASSERT_EQ(v.size(), w.shape[0] * w.shape[1]);
+    const std::size_t perBeam = range.data.size() / v.size();  // returns per beam
+    const double step = (m["hi"].get<double>() - m["lo"].get<double>()) / 65534.0;
+    for (std::size_t i = 0; i < v.size(); ++i) {
+      const double expected = range.data[i * perBeam];
+      EXPECT_NEAR(v[i], expected, step / 2 + 1e-6 * std::fabs(expected)) << i;
+    }
+  }
+  EXPECT_TRUE(found);
+}
+
 TEST_F(ViewerPageTest, AFolderThatIsNotAnOutputIsALocatedErrorAndWritesNothing) {
   const CommandResult empty = runCli("view " + dir_.string());
   EXPECT_EQ(empty.exitCode, 1);

@@ -6,9 +6,8 @@
 //   "maps": 2-D images with a colour bar (depth, every sensor map);
 //   "histograms": sensor arrays (y, x, t) (a SPAD's counts), volumes as
 //     "volume" is, each pixel's histogram plotted on a click;
-//   "lidars": lidar range images (issue 43), maps as makeMap makes them,
-//     drawn in their own section: a lidar collector adds itself to the list
-//     in ViewerPage.cpp.
+//   "lidars": a lidar's range and intensity images (issue 43), maps as
+//     makeMap makes them, drawn in their own section (addLidarVolume).
 //   "notes": what was downsampled or left out, and why.
 
 #include <cstddef>
@@ -27,6 +26,12 @@ bool addCameraVolume(const std::filesystem::path& folder, nlohmann::json& page);
 /// sensor points (an exhaustive scan's laser points summed). False when the
 /// folder has no H.json.
 bool addNlosVolume(const std::filesystem::path& folder, nlohmann::json& page);
+
+/// lidar.json + waveforms.npy of a lidar: the waveforms as a volume whose
+/// pixels are the beams (rings x azimuths), and its range and intensity
+/// images (the first return's) in "lidars". False when the folder has no
+/// lidar.json.
+bool addLidarVolume(const std::filesystem::path& folder, nlohmann::json& page);
 
 /// depth.npy and every sensor map under sensors/ (Images and y-x Arrays);
 /// sensor arrays of axes (y, x, t) with a time axis (a SPAD's counts) as

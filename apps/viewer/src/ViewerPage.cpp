@@ -63,15 +63,14 @@ nlohmann::json collectPage(const std::filesystem::path& folder) {
                          {"tofsim_version", pipeline::kVersion},
                          {"notes", nlohmann::json::array()},
                          {"lidars", nlohmann::json::array()}};
-  if (!addCameraVolume(folder, page) && !addNlosVolume(folder, page)) {
+  if (!addCameraVolume(folder, page) && !addNlosVolume(folder, page) &&
+      !addLidarVolume(folder, page)) {
     throw InputError(FileLoc{folder.string()}, "",
-                     "not a tofsim output folder: it has neither transient.json (a camera "
-                     "render) nor H.json (an NLOS capture)" +
+                     "not a tofsim output folder: it has none of transient.json (a camera "
+                     "render), H.json (an NLOS capture) and lidar.json (a lidar)" +
                          subfolderHint(folder));
   }
   addMaps(folder, page);
-  // Lidar range images (issue 43): a collector filling page["lidars"] with
-  // makeMap entries goes here.
   return page;
 }
 

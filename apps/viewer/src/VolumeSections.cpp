@@ -1,5 +1,6 @@
 // The page's volume and image: a camera's transient (streamed a run of pixels
-// at a time: never held whole) or an NLOS capture's H.
+// at a time: never held whole), an NLOS capture's H or a lidar's waveforms
+// (with its range and intensity images).
 
 #include <algorithm>
 #include <string>
@@ -45,6 +46,24 @@ void noteReduction(const VolumeReducer& reducer, const std::string& what, nlohma
                           " Mi values): pixels averaged over " + std::to_string(r.pixelBlock) +
                           " x " + std::to_string(r.pixelBlock) + " blocks, " +
                           std::to_string(r.binRun) + " bins summed into one");
+}
+
+// A lidar's image `name`.npy (rings x azimuths; the first return's where it
+// holds one per return), if the folder has one.
+void addLidarMap(const std::filesystem::path& folder, const std::string& name,
+                 const std::string& unit, const std::string& description, nlohmann::json& page) {
+  const std::filesystem::path path = folder / (name + ".npy");
+  if (!isFile(path)) return;
+  const io::NpyArray a = io::readNpy(path);
+  if (a.shape.size() < 2 || a.shape[0] * a.shape[1] == 0) {
+    throw InputError(FileLoc{path.string()}, "", "a lidar image has axes (rings, azimuths)");
+  }
+  const std::size_t rings = a.shape[0], azimuths = a.shape[1];
+  std::vector<float> first(rings * azimuths);
+  const std::size_t stride = a.data.size() / first.size();
+  for (std::size_t i = 0; i < first.size(); ++i) first[i] = a.data[i * stride];
+  page["lidars"].push_back(makeMap("lidar", name, unit, description, {"ring", "azimuth"}, rings,
+                                   azimuths, first, kMapValues));
 }
 
 }  // namespace
@@ -149,6 +168,41 @@ bool addNlosVolume(const std::filesystem::path& folder, nlohmann::json& page) {
   page["volume"] = std::move(volume);
   page["image"] = imageEntry(reducer, 1, "H summed over time (rows sx, columns sy)");
   noteReduction(reducer, "H", page);
+  return true;
+}
+
+bool addLidarVolume(const std::filesystem::path& folder, nlohmann::json& page) {
+  const std::filesystem::path metaPath = folder / "lidar.json";
+  if (!isFile(metaPath)) return false;
+  const nlohmann::json meta = readJsonFile(metaPath);
+  const nlohmann::json& time = timeOf(meta, metaPath);
+  const std::filesystem::path wavePath = folder / "waveforms.npy";
+  const io::NpyArray w = io::readNpy(wavePath);
+  if (w.shape.size() != 3) {
+    throw InputError(FileLoc{wavePath.string()}, "",
+                     "a lidar's waveforms have 3 axes (rings, azimuths, t), not " +
+                         std::to_string(w.shape.size()));
+  }
+  const std::size_t rings = w.shape[0], azimuths = w.shape[1], bins = w.shape[2];
+  VolumeReducer reducer(rings, azimuths, bins, 1, kVolumeValues);
+  for (std::size_t r = 0; r < rings; ++r) {
+    for (std::size_t a = 0; a < azimuths; ++a) {
+      reducer.addPixel(r, a, w.data.data() + (r * azimuths + a) * bins);
+    }
+  }
+  nlohmann::json volume = volumeEntry(reducer, time, bins, {"waveform"});
+  volume["label"] = "waveforms";
+  volume["unit"] = textOf(meta, "value_unit");
+  volume["axes"] = {"ring", "azimuth"};
+  volume["source"] = "waveforms.npy";
+  page["kind"] = "lidar";
+  page["volume"] = std::move(volume);
+  page["image"] =
+      imageEntry(reducer, 1, "the waveforms summed over time (rows rings, columns azimuths)");
+  noteReduction(reducer, "The waveforms", page);
+  addLidarMap(folder, "range", "m", "the first return's range (0: none)", page);
+  addLidarMap(folder, "intensity", textOf(meta, "value_unit"), "the first return's intensity",
+              page);
   return true;
 }
 
