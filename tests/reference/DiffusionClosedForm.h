@@ -8,6 +8,8 @@
 
 #include <cmath>
 
+#include "support/Simpson.h"
+
 namespace tofsim::test::diffusion {
 
 constexpr double kPi = 3.14159265358979323846;
@@ -20,14 +22,7 @@ inline double green(double r2, double l, double d, double muA) {
   return std::pow(4.0 * kPi * d * l, -1.5) * std::exp(-r2 / (4.0 * d * l) - muA * l);
 }
 
-/// Simpson's rule of f over [a, b] (`steps` even).
-template <class F>
-double simpson(const F& f, double a, double b, int steps = 2000) {
-  const double h = (b - a) / steps;
-  double sum = f(a) + f(b);
-  for (int i = 1; i < steps; ++i) sum += (i % 2 == 1 ? 4.0 : 2.0) * f(a + i * h);
-  return sum * h / 3.0;
-}
+using test::simpson;
 
 /// A semi-infinite medium z > 0 behind an index-matched boundary z = 0 (the
 /// light that crosses it never returns), an isotropic unit pulse at depth

@@ -15,6 +15,7 @@
 #include <functional>
 
 #include "support/AnalyticScenes.h"
+#include "support/Simpson.h"
 #include "support/TestBackends.h"
 #include "tofsim/capture/Imager.h"
 #include "tofsim/capture/VolumeCollector.h"
@@ -28,14 +29,7 @@ using capture::RenderJob;
 using capture::VolumeCollector;
 constexpr double kPi = 3.14159265358979323846;
 
-// Composite Simpson's rule of f on [a, b] with n (even) intervals.
-double simpson(const std::function<double(double)>& f, double a, double b, int n = 2000) {
-  if (b <= a) return 0.0;
-  const double h = (b - a) / n;
-  double sum = f(a) + f(b);
-  for (int i = 1; i < n; ++i) sum += f(a + i * h) * (i % 2 == 1 ? 4.0 : 2.0);
-  return sum * h / 3.0;
-}
+using test::simpson;
 
 // The s where a monotonic path(s) on [lo, hi] reaches q (bisection).
 double solve(const std::function<double(double)>& path, double q, double lo, double hi) {

@@ -18,6 +18,7 @@
 
 #include "support/AnalyticScenes.h"
 #include "support/BackendScene.h"
+#include "support/Simpson.h"
 #include "support/TestBackends.h"
 #include "tofsim/ir/MediumVpl.h"
 #include "tofsim/physics/MediumPhysics.h"
@@ -35,14 +36,7 @@ std::unique_ptr<ir::IrBackend> makeBackend(test::TestBackend backend) {
   return std::make_unique<GlBackend>(test::glTestContext());
 }
 
-// Composite Simpson's rule of f on [a, b] with n (even) intervals.
-double simpson(const std::function<double(double)>& f, double a, double b, int n) {
-  if (b <= a) return 0.0;
-  const double h = (b - a) / n;
-  double sum = f(a) + f(b);
-  for (int i = 1; i < n; ++i) sum += f(a + i * h) * (i % 2 == 1 ? 4.0 : 2.0);
-  return sum * h / 3.0;
-}
+using test::simpson;
 
 // The s in [lo, hi] where the increasing path(s) reaches q (bisection).
 double solve(const std::function<double(double)>& path, double q, double lo, double hi) {
