@@ -13,6 +13,7 @@
 #include "CpuIsm.h"
 #include "GatherKernel.h"
 #include "support/AnalyticScenes.h"
+#include "support/GivenVplsCpuBackend.h"
 #include "support/MediumPoints.h"
 #include "tofsim/capture/Imager.h"
 #include "tofsim/capture/VolumeCollector.h"
@@ -26,16 +27,7 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-// The CPU backend with VPLs given instead of the RSM's.
-class GivenVplsBackend : public CpuBackend {
- public:
-  explicit GivenVplsBackend(std::vector<ir::Vpl> vpls)
-      : CpuBackend(CpuBackendOptions{2, true}), vpls_(std::move(vpls)) {}
-  std::vector<ir::Vpl> generateVpls(const capture::RenderJob&) override { return vpls_; }
-
- private:
-  std::vector<ir::Vpl> vpls_;
-};
+using GivenVplsBackend = test::GivenVplsCpuBackend;
 
 ir::Vpl pointVpl(const glm::vec3& at, const glm::vec3& normal, const glm::vec3& flux,
                  float path_m) {

@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "support/AnalyticScenes.h"
+#include "support/GivenVplsCpuBackend.h"
 #include "support/MediumPoints.h"
 #include "tofsim/capture/Imager.h"
 #include "tofsim/capture/VolumeCollector.h"
@@ -225,16 +226,7 @@ TEST(MediumVplsTest, LaterBouncesThroughTheMediumConserveThePowerTheParentsSend)
 // is (integral F^2 / pdf - L^2) / N, pdf the VPLs' density of m
 // (lightMediumVpls: s exp(-s r) / ((1 - exp(-s D)) 4 pi r^2)).
 
-// The gather of the given VPLs alone (no RSM).
-class GivenVplsBackend : public CpuBackend {
- public:
-  explicit GivenVplsBackend(std::vector<ir::Vpl> vpls)
-      : CpuBackend(CpuBackendOptions{2, true}), vpls_(std::move(vpls)) {}
-  std::vector<ir::Vpl> generateVpls(const capture::RenderJob&) override { return vpls_; }
-
- private:
-  std::vector<ir::Vpl> vpls_;
-};
+using GivenVplsBackend = test::GivenVplsCpuBackend;
 
 struct FloorScene {
   double h = 1.0, halfFloor = 20.0, rho = 0.5, intensity = 1.0;
