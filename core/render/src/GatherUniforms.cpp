@@ -63,8 +63,12 @@ void configureIndirectGather(const gl::Program& program, const RenderJob& job) {
   program.set("uSceneScale_m", std::max(glm::length(extent), 1e-6f));
   program.set("uGeometryClamp",
               static_cast<float>(job.settings.indirect.geometry_term_clamp_per_m2));
-  if (ir::vplsCarryVertex(job.settings)) {
-    program.set("uVplBrdfClamp", static_cast<float>(job.settings.indirect.vpl_brdf_clamp_per_sr));
+  setVplBrdfClamp(program, job.settings);
+}
+
+void setVplBrdfClamp(const gl::Program& program, const capture::RenderSettings& settings) {
+  if (ir::vplsCarryVertex(settings) && glGetUniformLocation(program.id(), "uVplBrdfClamp") >= 0) {
+    program.set("uVplBrdfClamp", static_cast<float>(settings.indirect.vpl_brdf_clamp_per_sr));
   }
 }
 

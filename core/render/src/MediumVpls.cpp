@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <vector>
 
+#include "GatherUniforms.h"
 #include "GpuContract.h"
 #include "IndirectLight.h"
 #include "MediumDirect.h"
@@ -30,9 +31,7 @@ MediumVpls::MediumVpls(const capture::RenderJob& job, const MediumDirect& direct
   program_.set("uSceneScale_m", std::max(glm::length(extent), 1e-6f));  // as the gather's
   program_.set("uVplRadius", physics::mediumVplRadius(
                                  static_cast<float>(s.indirect.geometry_term_clamp_per_m2)));
-  if (ir::vplsCarryVertex(s)) {
-    program_.set("uVplBrdfClamp", static_cast<float>(s.indirect.vpl_brdf_clamp_per_sr));
-  }
+  setVplBrdfClamp(program_, s);
 }
 
 void MediumVpls::beginSegment(std::size_t pixels) {
