@@ -210,6 +210,12 @@ TEST_F(ConfigKeysWriterTest, EffectiveConfigWritesEveryDeclaredKey) {
                                      "orientation: {look_at: [1, 0, 1]}, channels: {count: 2, "
                                      "min: -1, max: 1}}\ntime: {}\n";
   leafPaths(YAML::Load(effectiveConfigYaml(loadRunConfig(dir_ / "li.yaml"))), "", written);
+  // A lidar's multipath (its keys are written only with it on, the
+  // direct-light configs keeping their bytes).
+  std::ofstream(dir_ / "lm.yaml") << "scene: scene.gltf\nlidar: {position: [0, 0, 1], "
+                                     "orientation: {look_at: [1, 0, 1]}, channels: [0], "
+                                     "multipath: {bounces: 1}}\ntime: {}\n";
+  leafPaths(YAML::Load(effectiveConfigYaml(loadRunConfig(dir_ / "lm.yaml"))), "", written);
   written.erase("");
   std::set<std::string> declared;
   for (const ConfigKey& k : runConfigKeys()) declared.insert(k.path);

@@ -126,5 +126,53 @@ TEST_F(LidarRunTest, BadInputIsALocatedErrorAndWritesNothing) {
   }
 }
 
+// lidar.multipath through the config: the waveforms gain the multipath
+// (and only light: every bin at least the direct run's), the effective
+// config runs it again, and bad multipath keys are located errors.
+TEST_F(LidarRunTest, MultipathAddsToTheWaveformsAndBadKeysAreLocated) {
+  const auto waveforms = [&](const std::string& extra, const char* name) {
+    const config::RunConfig c = config::loadRunConfig(writeConfig(smallLidar(extra)));
+    pipeline::RunOptions options;
+    options.outputDirectory = dir_ / name;
+    options.quiet = true;
+    pipeline::runRender(c, options);
+    return io::readNpy(dir_ / name / "waveforms.npy").data;
+  };
+  const std::string multipath = "  multipath: {bounces: 1, receiver_fov: 30 mrad}\n";
+  const std::vector<float> direct = waveforms("", "direct");
+  const std::vector<float> both = waveforms(multipath, "multipath");
+  ASSERT_EQ(direct.size(), both.size());
+  double d = 0.0, b = 0.0;
+  int lower = 0;
+  for (std::size_t i = 0; i < direct.size(); ++i) {
+    d += direct[i], b += both[i];
+    lower += both[i] < direct[i];
+  }
+  EXPECT_EQ(lower, 0);
+  EXPECT_GT(b, d * 1.0001);
+  const config::RunConfig again =
+      config::loadRunConfig(dir_ / "multipath" / "config.effective.yaml");
+  ASSERT_TRUE(again.lidar);
+  EXPECT_EQ(again.lidar->multipath.bounces, 1);
+  EXPECT_EQ(again.lidar->multipath.receiver_fov_rad, 0.03);
+
+  const std::vector<BadLidar> cases = {
+      {"a receiver narrower than the beam", smallLidar("  multipath: {bounces: 1, receiver_fov: 1 mrad}\n"), ":9:"},
+      {"a receiver fov without a unit", smallLidar("  multipath: {bounces: 1, receiver_fov: 30}\n"), ":9:"},
+      {"too many bounces", smallLidar("  multipath: {bounces: 9}\n"), ":9:"},
+      {"no spot rays", smallLidar("  multipath: {bounces: 1, spot_rays: 0}\n"), ":9:"},
+      {"a typo", smallLidar("  multipath: {bounce: 1}\n"), ":9:"},
+  };
+  for (const BadLidar& bad : cases) {
+    const fs::path config = writeConfig(bad.yaml);
+    const test::CommandResult r =
+        test::runCli("render " + config.string() + " -o " + (dir_ / "out").string());
+    EXPECT_EQ(r.exitCode, 1) << bad.name << ": " << r.output;
+    EXPECT_NE(r.output.find("c.yaml" + std::string(bad.where)), std::string::npos)
+        << bad.name << ": " << r.output;
+    EXPECT_FALSE(fs::exists(dir_ / "out")) << bad.name;
+  }
+}
+
 }  // namespace
 }  // namespace tofsim

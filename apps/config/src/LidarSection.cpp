@@ -109,29 +109,31 @@ void parseAzimuth(const ConfigNode& lidarNode, lidar::LidarSpec& s) {
   }
 }
 
-void parseDivergence(const ConfigNode& n, lidar::LidarSpec& s) {
-  if (n.has("beam_divergence")) {
-    const std::string text = n.child("beam_divergence").asString();
-    // A bare number could be degrees or milliradians: a unit is needed.
-    if (text.find_first_not_of("0123456789.+-eE ") == std::string::npos) {
-      n.failKey("beam_divergence", "needs a unit: '3 mrad', '0.2 deg' (got '" + text + "')");
-    }
-    // Radians and milliradians read as they are written (the effective
-    // config's "rad" gives back the same double); degrees through
-    // parseAngle_deg.
-    const std::size_t unit = text.find_last_not_of(" ");
-    const bool mrad = text.size() > 4 && text.compare(unit - 3, 4, "mrad") == 0;
-    const bool rad = !mrad && text.size() > 3 && text.compare(unit - 2, 3, "rad") == 0;
-    if (mrad || rad) {
-      try {
-        s.divergence_rad = std::stod(text.substr(0, unit - (mrad ? 3 : 2))) / (mrad ? 1000.0 : 1.0);
-      } catch (const std::exception&) {
-        n.failKey("beam_divergence", "expected an angle such as '3 mrad' (got '" + text + "')");
-      }
-    } else {
-      s.divergence_rad = glm::radians(n.getAngle_deg("beam_divergence", 0.0));
+// A small angle that needs its unit (beam_divergence, multipath.receiver_fov).
+double angleWithUnit_rad(const ConfigNode& n, const char* key) {
+  const std::string text = n.child(key).asString();
+  // A bare number could be degrees or milliradians: a unit is needed.
+  if (text.find_first_not_of("0123456789.+-eE ") == std::string::npos) {
+    n.failKey(key, "needs a unit: '3 mrad', '0.2 deg' (got '" + text + "')");
+  }
+  // Radians and milliradians read as they are written (the effective
+  // config's "rad" gives back the same double); degrees through
+  // parseAngle_deg.
+  const std::size_t unit = text.find_last_not_of(" ");
+  const bool mrad = text.size() > 4 && text.compare(unit - 3, 4, "mrad") == 0;
+  const bool rad = !mrad && text.size() > 3 && text.compare(unit - 2, 3, "rad") == 0;
+  if (mrad || rad) {
+    try {
+      return std::stod(text.substr(0, unit - (mrad ? 3 : 2))) / (mrad ? 1000.0 : 1.0);
+    } catch (const std::exception&) {
+      n.failKey(key, "expected an angle such as '3 mrad' (got '" + text + "')");
     }
   }
+  return glm::radians(n.getAngle_deg(key, 0.0));
+}
+
+void parseDivergence(const ConfigNode& n, lidar::LidarSpec& s) {
+  if (n.has("beam_divergence")) s.divergence_rad = angleWithUnit_rad(n, "beam_divergence");
   if (!(s.divergence_rad > 0.0) || s.divergence_rad >= M_PI / 2) {
     n.failKey("beam_divergence", "must be > 0 and below 90 degrees (the full angle)");
   }
@@ -205,6 +207,34 @@ void parseScan(const ConfigNode& n) {
   if (scan != "spinning") n.failKey("scan", "must be spinning (got '" + scan + "')");
 }
 
+// lidar.multipath: a beam's light that bounces before it returns
+// (core/lidar MultipathWaveforms.h); off unless asked for.
+void parseMultipath(const ConfigNode& lidarNode, LidarConfig& out) {
+  if (!lidarNode.has("multipath")) return;
+  const ConfigNode n = lidarNode.child("multipath");
+  if (!n.isMap()) n.fail("expected {bounces, spot_rays, receiver_rays, receiver_fov, vpls_per_bounce}");
+  lidar::MultipathSettings& m = out.multipath;
+  const auto count = [&](const char* key, long long fallback, long long lo, long long hi) {
+    const long long v = n.getInt(key, fallback);
+    if (v < lo || v > hi) {
+      n.failKey(key, "must be in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
+    }
+    return static_cast<int32_t>(v);
+  };
+  m.bounces = count("bounces", m.bounces, 0, 8);
+  m.spot_rays = count("spot_rays", m.spot_rays, 1, 1024);
+  m.receiver_rays = count("receiver_rays", m.receiver_rays, 1, 4096);
+  m.vpls_per_bounce = count("vpls_per_bounce", m.vpls_per_bounce, 1, 4096);
+  const double divergence = out.spec.divergence_rad;
+  if (n.has("receiver_fov")) {
+    m.receiver_fov_rad = angleWithUnit_rad(n, "receiver_fov");
+    if (!(m.receiver_fov_rad >= divergence) || m.receiver_fov_rad >= M_PI) {
+      n.failKey("receiver_fov", "must be at least the beam_divergence (" +
+                                    shortest(divergence) + " rad) and below 180 degrees");
+    }
+  }
+}
+
 }  // namespace
 
 void parseLidarView(const ConfigNode& root, RunConfig& config) {
@@ -235,6 +265,7 @@ void parseLidarView(const ConfigNode& root, RunConfig& config) {
   }
   parseReturns(n, out->spec.returns);
   parsePlotBeams(n, *out);
+  parseMultipath(n, *out);
   config.camera.camera.width = out->spec.azimuths();
   config.camera.camera.height = out->spec.channels();
   config.lidar = std::move(out);
@@ -303,6 +334,15 @@ YAML::Node lidarNode(const LidarConfig& c) {
   }
   beams.SetStyle(YAML::EmitterStyle::Flow);
   n["plot_beams"] = beams;
+  if (c.multipath.enabled()) {  // only when asked for: the effective configs of before stay
+    const lidar::MultipathSettings& m = c.multipath;
+    n["multipath"]["bounces"] = m.bounces;
+    n["multipath"]["spot_rays"] = m.spot_rays;
+    n["multipath"]["receiver_rays"] = m.receiver_rays;
+    n["multipath"]["receiver_fov"] =
+        shortest(m.receiver_fov_rad > 0.0 ? m.receiver_fov_rad : s.divergence_rad) + " rad";
+    n["multipath"]["vpls_per_bounce"] = m.vpls_per_bounce;
+  }
   return n;
 }
 

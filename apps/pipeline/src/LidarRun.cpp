@@ -9,6 +9,7 @@
 #include "tofsim/config/LidarConfig.h"
 #include "tofsim/ir/IrBackend.h"
 #include "tofsim/ir/MaterialVertex.h"
+#include "tofsim/lidar/MultipathWaveforms.h"
 #include "tofsim/pipeline/Manifest.h"
 #include "tofsim/pipeline/PreparedRenderer.h"
 #include "tofsim/pipeline/Progress.h"
@@ -57,6 +58,20 @@ void warnLightOffTheAxis(const lidar::LidarWaveforms& w, const Progress& progres
   }
 }
 
+// lidar.multipath (off by default): each beam's light that bounces before
+// it returns, with the render's clamps, materials and seed.
+void addLidarMultipath(const config::RunConfig& config, const lidar::WaveformScene& traced,
+                       int threads, lidar::LidarWaveforms& waveforms) {
+  lidar::MultipathSettings m = config.lidar->multipath;
+  if (!m.enabled()) return;
+  m.geometry_clamp_per_m2 = config.render.indirect.geometry_term_clamp_per_m2;
+  m.brdf_clamp_per_sr = config.render.indirect.vpl_brdf_clamp_per_sr;
+  m.vertex_model = ir::vertexModelOf(config.render.materials);
+  m.seed = config.render.seed;
+  lidar::addMultipathWaveforms(config.lidar->spec, m, traced, config.render.time, threads,
+                               waveforms);
+}
+
 }  // namespace
 
 RunSummary runLidarRender(const config::RunConfig& config, PreparedRenderer& prepared,
@@ -77,8 +92,9 @@ RunSummary runLidarRender(const config::RunConfig& config, PreparedRenderer& pre
   lidar::WaveformScene traced{&rays,
                               ir::materialVertices(scene, ir::vertexModelOf(config.render.materials)),
                               config.render.medium};
-  const lidar::LidarWaveforms waveforms =
+  lidar::LidarWaveforms waveforms =
       lidar::renderDirectWaveforms(config.lidar->spec, traced, config.render.time, threads);
+  addLidarMultipath(config, traced, threads, waveforms);
   const lidar::LidarReturns returns =
       lidar::lidarReturns(config.lidar->spec, waveforms.volume, config.lidar->rotation_rate_Hz);
   const double seconds =

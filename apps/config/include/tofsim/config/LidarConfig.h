@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "tofsim/lidar/LidarSpec.h"
+#include "tofsim/lidar/MultipathSettings.h"
 #include "tofsim/util/Error.h"
 
 namespace tofsim::config {
@@ -29,6 +30,9 @@ struct LidarConfig {
   /// waveforms.png draws, as [ring, azimuth in degrees] pairs resolved to
   /// the nearest azimuth.
   std::vector<std::array<int32_t, 2>> plot_beams;
+  /// multipath: each beam's light that bounces before it returns (its
+  /// render-derived fields, the clamps and the seed, are filled by the run).
+  lidar::MultipathSettings multipath;
   FileLoc at;  ///< where `lidar:` is
 };
 

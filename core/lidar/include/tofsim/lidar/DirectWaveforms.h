@@ -17,7 +17,8 @@
 // receiver's aperture area in m^2.
 //
 // Light that bounces more than once (multipath, IR's indirect light per
-// beam) is the next slice; it will add to the same waveforms.
+// beam, `lidar.multipath`) is MultipathWaveforms.h's, added to the same
+// waveforms.
 
 #include <cstdint>
 #include <vector>
