@@ -91,6 +91,15 @@ nlohmann::ordered_json settingsJson(const config::LidarConfig& c) {
                   {"max", s.returns.max},
                   {"threshold", s.returns.threshold},
                   {"separation_m", s.returns.separation_m}};
+  if (c.multipath.enabled()) {  // written only when on: the direct runs' files stay
+    const lidar::MultipathSettings& m = c.multipath;
+    j["multipath"] = {{"bounces", m.bounces},
+                      {"spot_rays", m.spot_rays},
+                      {"receiver_rays", m.receiver_rays},
+                      {"receiver_fov_rad", m.receiver_fov_rad > 0.0 ? m.receiver_fov_rad
+                                                                    : s.divergence_rad},
+                      {"vpls_per_bounce", m.vpls_per_bounce}};
+  }
   return j;
 }
 
@@ -109,7 +118,11 @@ std::string metadataJson(const config::RunConfig& config, const LidarFrame& fram
       "waveforms.npy: the laser light reaching the receiver's aperture within the bin, as "
       "irradiance for an impulse of `power_W` at t = 0: each receiver ray brings power x share x "
       "f x cos / r^2 x T (f the surface's BRDF toward the lidar, the mean of R, G and B; T the "
-      "medium's transmittance both ways); direct light only (multipath is a later slice)";
+      "medium's transmittance both ways); " +
+      std::string(config.lidar->multipath.enabled()
+                      ? "plus the multipath (lidar.multipath): each receiver point's radiance "
+                        "from the spot's VPLs times its solid angle, in the bin of the whole path"
+                      : "direct light only (lidar.multipath off)");
   j["echo_doc"] =
       "an echo is a run of bins above returns.threshold (runs closer than returns.separation "
       "merged): intensity = its summed bins, range = its energy-weighted mean time x (c / eta) / "
@@ -175,7 +188,8 @@ void writeWaveformPlot(const config::RunConfig& config, const TransientVolume& v
   plot.xUnit = "m";
   plot.xLabel = "range";
   plot.yLabel = "irradiance per bin [uW m^-2]";
-  plot.title = "lidar waveforms (direct light)";
+  plot.title = config.lidar->multipath.enabled() ? "lidar waveforms (direct light + multipath)"
+                                                 : "lidar waveforms (direct light)";
   imaging::writeLinePlotPng(dir / "waveforms.png", plot);
   files.push_back("waveforms.png");
 }
