@@ -55,6 +55,16 @@ out("fuzz_config", "lidar_refused.yaml", "scene: scenes/cornell_box.gltf\nlidar:
     "  preset: vlp16\n  scan: raster\n  position: [0, 0, 0]\n"
     "  channels: {count: 0}\n  azimuth: {step: 0}\n  beam_divergence: 0 mrad\n"
     "camera: {}\ntime: {bins: 16, bin_width: 1 m}\n")
+# config: a lidar's multipath (every key), and the values it refuses
+out("fuzz_config", "lidar_multipath.yaml", "scene: scenes/cornell_box.gltf\nlidar:\n"
+    "  position: [0.3, 0.5, -0.5]\n  orientation: {look_at: [0.3, 0.5, 0.5], up: [0, 1, 0]}\n"
+    "  channels: [-10, 0]\n  azimuth: {start: -5, end: 5, step: 5}\n  beam_divergence: 3 mrad\n"
+    "  multipath: {bounces: 2, spot_rays: 3, receiver_rays: 9, receiver_fov: 1 deg,"
+    " vpls_per_bounce: 5}\ntime: {bins: 16, bin_width: 1 m}\n")
+out("fuzz_config", "lidar_multipath_refused.yaml", "scene: scenes/cornell_box.gltf\nlidar:\n"
+    "  position: [0, 0, 0]\n  channels: [0]\n  orientation: {look_at: [1, 0, 0]}\n"
+    "  multipath: {bounces: 9, spot_rays: 0, receiver_fov: 1 mrad}\n"
+    "time: {bins: 16, bin_width: 1 m}\n")
 
 # glTF: the shipped scene, a triangle with indices, a strip with a sparse
 # POSITION accessor, and the triangle as .glb
