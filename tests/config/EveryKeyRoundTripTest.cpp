@@ -151,6 +151,7 @@ lidar:
   rotation_rate: 20 Hz
   returns: {mode: all, max: 4, threshold: 1e-6, separation: 5 cm}
   plot_beams: [[1, 40]]
+  multipath: {bounces: 2, spot_rays: 5, receiver_rays: 9, receiver_fov: 10 deg, vpls_per_bounce: 3}
 time: {bins: 64}
 )";
 
