@@ -46,7 +46,8 @@ int main(int argc, char** argv) {
 
   const scene::Scene scene = scene::loadGltf(scenePath);
   const rays::RayScene rayScene(scene, threads);
-  lidar::WaveformScene traced{&rayScene, ir::materialVertices(scene, physics::VERTEX_LAMBERTIAN), {}};
+  lidar::WaveformScene traced{
+      &rayScene, ir::materialVertices(scene, physics::VERTEX_LAMBERTIAN), {}};
   lidar::LidarSpec spec;
   spec.position_world = {0.0f, 1.8f, 0.0f};
   spec.up_world = {0.0f, 1.0f, 0.0f};
@@ -74,10 +75,11 @@ int main(int argc, char** argv) {
   }
   const double beams = double(channels) * azimuths;
   const double pairs = double(settings.spot_rays) * settings.receiver_rays;
-  std::printf("scene %s, %d x %d beams, %d bins, %d threads; multipath: %d bounce(s), %d spot x "
-              "%d receiver rays, receiver fov %.1f mrad\n",
-              scenePath.c_str(), channels, azimuths, axis.bins, threads, settings.bounces,
-              settings.spot_rays, settings.receiver_rays, settings.receiver_fov_rad * 1e3);
+  std::printf(
+      "scene %s, %d x %d beams, %d bins, %d threads; multipath: %d bounce(s), %d spot x "
+      "%d receiver rays, receiver fov %.1f mrad\n",
+      scenePath.c_str(), channels, azimuths, axis.bins, threads, settings.bounces,
+      settings.spot_rays, settings.receiver_rays, settings.receiver_fov_rad * 1e3);
   std::printf("direct: %.3f s = %.0f beams/s\n", bestDirect, beams / bestDirect);
   std::printf("multipath added: %.3f s = %.0f beams/s (%.2f M shadow rays/s at most)\n",
               bestMultipath, beams / bestMultipath, beams * pairs / bestMultipath * 1e-6);

@@ -14,8 +14,8 @@
 
 #include <gtest/gtest.h>
 
-#include <cmath>
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <cstring>
 
@@ -209,7 +209,8 @@ TEST(LidarMultipathTest, CornerTailMatchesTheReference) {
   // The reference: independent renders, their spread giving its error.
   constexpr int kRenders = 8;
   std::vector<Moments> ref;
-  for (int k = 0; k < kRenders; ++k) ref.push_back(momentsOf(referenceTail(b, corner.scene, time, 11 + k)));
+  for (int k = 0; k < kRenders; ++k)
+    ref.push_back(momentsOf(referenceTail(b, corner.scene, time, 11 + k)));
   double e = 0.0, e2 = 0.0, t = 0.0, t2 = 0.0;
   for (const Moments& m : ref) {
     e += m.energy, e2 += m.energy * m.energy, t += m.meanBin, t2 += m.meanBin * m.meanBin;

@@ -17,9 +17,9 @@ namespace {
 struct ReceiverPoint {
   rays::SurfaceHit hit;
   physics::ScatterVertex vertex;
-  glm::vec3 toLidar;     // unit, y -> lidar
-  float cameraPath_m;    // eta r_y, or 0 with time.camera_unwarp
-  glm::vec3 weight;      // the ray's solid angle x the medium's transmittance over r_y
+  glm::vec3 toLidar;   // unit, y -> lidar
+  float cameraPath_m;  // eta r_y, or 0 with time.camera_unwarp
+  glm::vec3 weight;    // the ray's solid angle x the medium's transmittance over r_y
 };
 
 // A beam's seed for its later bounces (splitmix64 of the run's seed and the
@@ -48,11 +48,11 @@ std::vector<ir::Vpl> spotVpls(const LidarSpec& spec, const MultipathRays& rays,
     if (!hit || !(hit->distance_m > 0.0f)) continue;
     ir::Vpl v;
     v.vertex = ir::hitVertex(*hit, scene.materials);
-    const glm::vec3 power = static_cast<float>(spec.power_W) * ray.share *
-                            transmittance(scene.medium, hit->distance_m);
+    const glm::vec3 power =
+        static_cast<float>(spec.power_W) * ray.share * transmittance(scene.medium, hit->distance_m);
     const bool holds = physics::vplFluxHoldsScatter(v.vertex);
-    const glm::vec3 flux = holds ? glm::vec3(v.vertex.color) * power / static_cast<float>(M_PI)
-                                 : power;
+    const glm::vec3 flux =
+        holds ? glm::vec3(v.vertex.color) * power / static_cast<float>(M_PI) : power;
     v.positionPath = glm::vec4(hit->position_world, eta * hit->distance_m);
     v.normal = glm::vec4(hit->normal_world, 0.0f);
     v.flux = glm::vec4(flux, 0.0f);
@@ -91,9 +91,9 @@ void addLaterBounces(const MultipathSettings& settings, const WaveformScene& sce
   materials.brdfClamp = static_cast<float>(settings.brdf_clamp_per_sr);
   std::vector<ir::Vpl> parents = vpls;
   for (int32_t bounce = 2; bounce <= settings.bounces && !parents.empty(); ++bounce) {
-    parents = ir::traceBounce(*scene.rays, parents,
-                              static_cast<std::size_t>(settings.vpls_per_bounce), bounce, seed,
-                              eta, tracing, materials);
+    parents =
+        ir::traceBounce(*scene.rays, parents, static_cast<std::size_t>(settings.vpls_per_bounce),
+                        bounce, seed, eta, tracing, materials);
     vpls.insert(vpls.end(), parents.begin(), parents.end());
   }
 }
@@ -122,7 +122,8 @@ WaveformLoss addBeamMultipath(const LidarSpec& spec, const MultipathSettings& se
   if (vpls.empty()) return lost;
   const std::vector<ReceiverPoint> points = receiverPoints(spec, rays, scene, frame, axis);
   if (points.empty()) return lost;
-  if (settings.bounces > 1) addLaterBounces(settings, scene, eta, beamSeed(settings.seed, beam), vpls);
+  if (settings.bounces > 1)
+    addLaterBounces(settings, scene, eta, beamSeed(settings.seed, beam), vpls);
   const float clamp = static_cast<float>(settings.geometry_clamp_per_m2);
   const float brdfClamp = static_cast<float>(settings.brdf_clamp_per_sr);
   const float start = static_cast<float>(axis.start_m());
@@ -172,18 +173,19 @@ void addMultipathWaveforms(const LidarSpec& spec, const MultipathSettings& setti
   std::vector<WaveformLoss> lost((beams + kBlock - 1) / kBlock);
   float* data = waveforms.volume.data();
   const std::size_t stride = waveforms.volume.pixelStride();
-  parallelForBlocks(beams, kBlock, resolveThreads(threads), [&](std::size_t begin, std::size_t end) {
-    WaveformLoss& l = lost[begin / kBlock];
-    for (std::size_t b = begin; b < end; ++b) {
-      const auto ring = static_cast<int32_t>(b / static_cast<std::size_t>(azimuths));
-      const auto azimuth = static_cast<int32_t>(b % static_cast<std::size_t>(azimuths));
-      const WaveformLoss beam = addBeamMultipath(spec, settings, rays, scene, axis,
-                                                 beamDirection(spec, ring, azimuth), b,
-                                                 data + b * stride);
-      l.before += beam.before;
-      l.after += beam.after;
-    }
-  });
+  parallelForBlocks(
+      beams, kBlock, resolveThreads(threads), [&](std::size_t begin, std::size_t end) {
+        WaveformLoss& l = lost[begin / kBlock];
+        for (std::size_t b = begin; b < end; ++b) {
+          const auto ring = static_cast<int32_t>(b / static_cast<std::size_t>(azimuths));
+          const auto azimuth = static_cast<int32_t>(b % static_cast<std::size_t>(azimuths));
+          const WaveformLoss beam =
+              addBeamMultipath(spec, settings, rays, scene, axis,
+                               beamDirection(spec, ring, azimuth), b, data + b * stride);
+          l.before += beam.before;
+          l.after += beam.after;
+        }
+      });
   for (const WaveformLoss& l : lost) {  // in block order: the same sum for any thread count
     waveforms.lost.before += l.before;
     waveforms.lost.after += l.after;

@@ -13,8 +13,8 @@ struct MultipathSettings {
   /// spot lights the receiver points (one-bounce multipath), n = n - 1 more
   /// bounces by VPLs traced from the spot.
   int32_t bounces = 0;
-  int32_t spot_rays = 4;      ///< laser rays (spot VPLs) per beam, >= 1
-  int32_t receiver_rays = 16; ///< receiver rays per beam, >= 1
+  int32_t spot_rays = 4;          ///< laser rays (spot VPLs) per beam, >= 1
+  int32_t receiver_rays = 16;     ///< receiver rays per beam, >= 1
   double receiver_fov_rad = 0.0;  ///< full angle; 0: the beam's divergence
   int32_t vpls_per_bounce = 16;   ///< per beam, for each bounce after the first
   /// From render: indirect.geometry_term_clamp (1/m^2, <= 0 none),
