@@ -157,8 +157,10 @@ TEST_F(LidarRunTest, MultipathAddsToTheWaveformsAndBadKeysAreLocated) {
   EXPECT_EQ(again.lidar->multipath.receiver_fov_rad, 0.03);
 
   const std::vector<BadLidar> cases = {
-      {"a receiver narrower than the beam", smallLidar("  multipath: {bounces: 1, receiver_fov: 1 mrad}\n"), ":9:"},
-      {"a receiver fov without a unit", smallLidar("  multipath: {bounces: 1, receiver_fov: 30}\n"), ":9:"},
+      {"a receiver narrower than the beam",
+       smallLidar("  multipath: {bounces: 1, receiver_fov: 1 mrad}\n"), ":9:"},
+      {"a receiver fov without a unit", smallLidar("  multipath: {bounces: 1, receiver_fov: 30}\n"),
+       ":9:"},
       {"too many bounces", smallLidar("  multipath: {bounces: 9}\n"), ":9:"},
       {"no spot rays", smallLidar("  multipath: {bounces: 1, spot_rays: 0}\n"), ":9:"},
       {"a typo", smallLidar("  multipath: {bounce: 1}\n"), ":9:"},

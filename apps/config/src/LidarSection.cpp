@@ -212,7 +212,8 @@ void parseScan(const ConfigNode& n) {
 void parseMultipath(const ConfigNode& lidarNode, LidarConfig& out) {
   if (!lidarNode.has("multipath")) return;
   const ConfigNode n = lidarNode.child("multipath");
-  if (!n.isMap()) n.fail("expected {bounces, spot_rays, receiver_rays, receiver_fov, vpls_per_bounce}");
+  if (!n.isMap())
+    n.fail("expected {bounces, spot_rays, receiver_rays, receiver_fov, vpls_per_bounce}");
   lidar::MultipathSettings& m = out.multipath;
   const auto count = [&](const char* key, long long fallback, long long lo, long long hi) {
     const long long v = n.getInt(key, fallback);
@@ -229,8 +230,8 @@ void parseMultipath(const ConfigNode& lidarNode, LidarConfig& out) {
   if (n.has("receiver_fov")) {
     m.receiver_fov_rad = angleWithUnit_rad(n, "receiver_fov");
     if (!(m.receiver_fov_rad >= divergence) || m.receiver_fov_rad >= M_PI) {
-      n.failKey("receiver_fov", "must be at least the beam_divergence (" +
-                                    shortest(divergence) + " rad) and below 180 degrees");
+      n.failKey("receiver_fov", "must be at least the beam_divergence (" + shortest(divergence) +
+                                    " rad) and below 180 degrees");
     }
   }
 }

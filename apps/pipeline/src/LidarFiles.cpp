@@ -93,12 +93,12 @@ nlohmann::ordered_json settingsJson(const config::LidarConfig& c) {
                   {"separation_m", s.returns.separation_m}};
   if (c.multipath.enabled()) {  // written only when on: the direct runs' files stay
     const lidar::MultipathSettings& m = c.multipath;
-    j["multipath"] = {{"bounces", m.bounces},
-                      {"spot_rays", m.spot_rays},
-                      {"receiver_rays", m.receiver_rays},
-                      {"receiver_fov_rad", m.receiver_fov_rad > 0.0 ? m.receiver_fov_rad
-                                                                    : s.divergence_rad},
-                      {"vpls_per_bounce", m.vpls_per_bounce}};
+    j["multipath"] = {
+        {"bounces", m.bounces},
+        {"spot_rays", m.spot_rays},
+        {"receiver_rays", m.receiver_rays},
+        {"receiver_fov_rad", m.receiver_fov_rad > 0.0 ? m.receiver_fov_rad : s.divergence_rad},
+        {"vpls_per_bounce", m.vpls_per_bounce}};
   }
   return j;
 }
