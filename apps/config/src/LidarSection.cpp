@@ -2,10 +2,12 @@
 
 #include <cmath>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "ShortestNumber.h"
 #include "Vec3Key.h"
+#include "tofsim/config/LidarPresets.h"
 
 namespace tofsim::config {
 
@@ -22,6 +24,15 @@ const char* returnModeName(lidar::ReturnMode mode) {
     case lidar::ReturnMode::All: return "all";
   }
   return "strongest";
+}
+
+const char* scanPatternName(lidar::ScanPattern scan) {
+  switch (scan) {
+    case lidar::ScanPattern::Spinning: return "spinning";
+    case lidar::ScanPattern::Raster: return "raster";
+    case lidar::ScanPattern::Zones: return "zones";
+  }
+  return "spinning";
 }
 
 namespace {
@@ -54,14 +65,19 @@ void parseOrientation(const ConfigNode& lidarNode, LidarConfig& out) {
     o.failKey("look_at", "must not lie on the spin axis (`up` through `position`): azimuth 0 looks at it");
   }
   s.forward_world = glm::normalize(forward);
+  // A grid scan looks at look_at itself (up only sets its roll: ScanGrid.h).
+  if (s.gridScan()) s.forward_world = glm::normalize(d);
 }
 
 void parseChannels(const ConfigNode& lidarNode, LidarConfig& out) {
   if (!lidarNode.has("channels")) {
+    if (!out.spec.elevations_deg.empty()) return;  // a preset's
     lidarNode.failKey("channels", "required key is missing ({count, min, max} in degrees, or a list of elevations)");
   }
   const ConfigNode c = lidarNode.child("channels");
   std::vector<double>& el = out.spec.elevations_deg;
+  el.clear();  // the config's channels replace a preset's
+  out.channel_count = 0;
   if (c.isSequence()) {
     for (const ConfigNode& e : c.elements()) el.push_back(e.asDouble());
     if (el.empty()) c.fail("no channels: list at least one elevation (degrees)");
@@ -135,7 +151,7 @@ void parseDivergence(const ConfigNode& n, lidar::LidarSpec& s) {
   if (!(s.divergence_rad > 0.0) || s.divergence_rad >= M_PI / 2) {
     n.failKey("beam_divergence", "must be > 0 and below 90 degrees (the full angle)");
   }
-  const std::string profile = n.getString("beam_profile", "gaussian");
+  const std::string profile = n.getString("beam_profile", beamProfileName(s.profile));
   if (profile == "gaussian") {
     s.profile = lidar::BeamProfile::Gaussian;
   } else if (profile == "tophat") {
@@ -182,27 +198,104 @@ void parsePlotBeams(const ConfigNode& lidarNode, LidarConfig& out) {
     if (beam.isSequence()) {
       for (const ConfigNode& e : beam.elements()) v.push_back(e.asDouble());
     }
-    if (v.size() != 2) beam.fail("expected [ring, azimuth in degrees]");
-    const double a = std::round((v[1] - s.azimuth_start_deg) / s.azimuth_step_deg);
+    if (v.size() != 2) {
+      beam.fail(s.gridScan() ? "expected [row, column]" : "expected [ring, azimuth in degrees]");
+    }
+    const double a = s.gridScan() ? v[1] : std::round((v[1] - s.azimuth_start_deg) / s.azimuth_step_deg);
     if (!(v[0] >= 0 && v[0] < s.channels() && v[0] == std::floor(v[0]))) {
       beam.fail("the ring must be an integer in [0, " + std::to_string(s.channels()) + ")");
     }
-    if (!(a >= 0 && a < s.azimuths())) beam.fail("the azimuth is outside lidar.azimuth");
+    if (!(a >= 0 && a < s.azimuths() && a == std::floor(a))) {
+      beam.fail(s.gridScan() ? "the column must be an integer in [0, " +
+                                   std::to_string(s.azimuths()) + ")"
+                             : std::string("the azimuth is outside lidar.azimuth"));
+    }
     out.plot_beams.push_back({static_cast<int32_t>(v[0]), static_cast<int32_t>(a)});
   }
 }
 
-void parseScan(const ConfigNode& n) {
-  if (n.has("preset")) {
-    n.failKey("preset", "unknown preset '" + n.getString("preset", "") +
-                            "': no lidar presets are built yet; give the channels, azimuth and "
-                            "beam_divergence (configs/README.md, `lidar`)");
+// --- lidar.preset and the grid scans (raster, zones) ------------------------
+
+// lidar.preset: its values are the defaults of the lidar's keys and of
+// time.bin_width / time.bins (parseTime runs after, so explicit keys win).
+void applyLidarPreset(const ConfigNode& n, LidarConfig& out, TimeAxis& time) {
+  if (!n.has("preset")) return;
+  const std::string name = n.getString("preset", "");
+  const LidarPreset* preset = findLidarPreset(name);
+  if (!preset) {
+    std::string names;
+    for (const LidarPreset& p : lidarPresets()) names += std::string(names.empty() ? "" : ", ") + p.name;
+    n.failKey("preset", "unknown lidar preset '" + name + "' (presets: " + names +
+                            "; `tofsim presets` lists their values and sources)");
   }
-  const std::string scan = n.getString("scan", "spinning");
-  if (scan == "raster" || scan == "zones") {
-    n.failKey("scan", "'" + scan + "' scans are not built yet: only `scan: spinning`");
+  LidarDefaults d{out, time};
+  preset->apply(d);
+  out = d.lidar;
+  out.preset = name;
+  time = d.time;
+}
+
+void parseGrid(const ConfigNode& n, lidar::ScanGrid& g) {
+  if (const auto grid = n.optionalChild("grid")) {
+    if (!grid->isMap()) grid->fail("expected {rows, columns}");
+    for (const auto& [key, field] : {std::pair{"rows", &g.rows}, std::pair{"columns", &g.columns}}) {
+      const long long v = grid->getInt(key, *field);
+      if (v < 1 || v > kMaxChannels) {
+        grid->failKey(key, "must be in [1, " + std::to_string(kMaxChannels) + "]");
+      }
+      *field = static_cast<int32_t>(v);
+    }
   }
-  if (scan != "spinning") n.failKey("scan", "must be spinning (got '" + scan + "')");
+  if (const auto fov = n.optionalChild("field_of_view")) {
+    if (!fov->isMap()) fov->fail("expected {horizontal, vertical} full angles in degrees");
+    g.fov_horizontal_deg = fov->getAngle_deg("horizontal", g.fov_horizontal_deg);
+    g.fov_vertical_deg = fov->getAngle_deg("vertical", g.fov_vertical_deg);
+    for (const auto& [key, v] : {std::pair{"horizontal", g.fov_horizontal_deg},
+                                 std::pair{"vertical", g.fov_vertical_deg}}) {
+      if (!(v > 0.0 && v < 170.0)) {
+        fov->failKey(key, "must be in (0, 170) degrees (a full angle through a pinhole's plane)");
+      }
+    }
+  }
+  const long long rays = n.getInt("zone_rays", g.zone_rays);
+  if (rays < 1 || rays > 64) n.failKey("zone_rays", "must be in [1, 64] (rays a side of a zone)");
+  g.zone_rays = static_cast<int32_t>(rays);
+}
+
+// lidar.scan and the keys that belong to another scan than the one chosen.
+void parseScan(const ConfigNode& n, lidar::LidarSpec& s) {
+  const std::string scan = n.getString("scan", scanPatternName(s.scan));
+  bool known = false;
+  for (auto p : {lidar::ScanPattern::Spinning, lidar::ScanPattern::Raster, lidar::ScanPattern::Zones}) {
+    if (scan == scanPatternName(p)) {
+      s.scan = p;
+      known = true;
+    }
+  }
+  if (!known) n.failKey("scan", "must be spinning, raster or zones (got '" + scan + "')");
+  const auto refuse = [&](std::initializer_list<const char*> keys, const std::string& why) {
+    for (const char* key : keys) {
+      if (n.has(key)) n.failKey(key, "does not apply to `scan: " + scan + "`: " + why);
+    }
+  };
+  if (!s.gridScan()) {
+    refuse({"grid", "field_of_view", "zone_rays"}, "they lay out a raster's or zones' grid");
+    return;
+  }
+  refuse({"channels", "azimuth", "rotation_rate"},
+         "its beams are `grid` over `field_of_view`, all fired at once");
+  if (s.scan == lidar::ScanPattern::Zones) {
+    refuse({"beam_divergence", "beam_profile", "beam_rays"},
+           "a zone's receiver is its whole solid angle (`zone_rays` a side)");
+  } else {
+    refuse({"zone_rays"}, "a raster beam's receiver is its divergence cone (`beam_rays`)");
+  }
+  parseGrid(n, s.grid);
+  if (s.grid.rows < 1 || !(s.grid.fov_horizontal_deg > 0.0)) {
+    n.failKey(n.has("scan") ? "scan" : "preset",
+              "`scan: " + scan + "` needs `grid: {rows, columns}` and `field_of_view: "
+              "{horizontal, vertical}` (degrees)");
+  }
 }
 
 }  // namespace
@@ -218,13 +311,16 @@ void parseLidarView(const ConfigNode& root, RunConfig& config) {
   if (!n.isMap()) n.fail("expected a mapping (position, orientation, channels, azimuth, ...)");
   auto out = std::make_shared<LidarConfig>();
   out->at = n.location();
-  parseScan(n);
+  applyLidarPreset(n, *out, config.render.time);
+  parseScan(n, out->spec);
   if (!n.has("position")) n.failKey("position", "required key is missing ([x, y, z] in metres)");
   out->spec.position_world = finiteVec3(n, "position", {});
   parseOrientation(n, *out);
-  parseChannels(n, *out);
-  parseAzimuth(n, out->spec);
-  parseDivergence(n, out->spec);
+  if (!out->spec.gridScan()) {
+    parseChannels(n, *out);
+    parseAzimuth(n, out->spec);
+  }
+  if (out->spec.scan != lidar::ScanPattern::Zones) parseDivergence(n, out->spec);
   out->spec.power_W = n.getDouble("power", out->spec.power_W);
   if (!(out->spec.power_W > 0.0 && std::isfinite(out->spec.power_W))) {
     n.failKey("power", "must be > 0 W");
@@ -267,11 +363,18 @@ YAML::Node lidarNode(const LidarConfig& c) {
     return n;
   };
   YAML::Node n;
-  n["scan"] = "spinning";
+  if (!c.preset.empty()) n["preset"] = c.preset;
+  n["scan"] = scanPatternName(s.scan);
   n["position"] = vec(s.position_world);
   n["orientation"]["look_at"] = vec(c.look_at_world);
   n["orientation"]["up"] = vec(c.up_written);
-  if (c.channel_count > 0) {
+  if (s.gridScan()) {
+    n["grid"]["rows"] = s.grid.rows;
+    n["grid"]["columns"] = s.grid.columns;
+    n["field_of_view"]["horizontal"] = shortest(s.grid.fov_horizontal_deg);
+    n["field_of_view"]["vertical"] = shortest(s.grid.fov_vertical_deg);
+    if (s.scan == lidar::ScanPattern::Zones) n["zone_rays"] = s.grid.zone_rays;
+  } else if (c.channel_count > 0) {
     n["channels"]["count"] = c.channel_count;
     n["channels"]["min"] = shortest(c.channel_min_deg);
     n["channels"]["max"] = shortest(c.channel_max_deg);
@@ -281,14 +384,18 @@ YAML::Node lidarNode(const LidarConfig& c) {
     list.SetStyle(YAML::EmitterStyle::Flow);
     n["channels"] = list;
   }
-  n["azimuth"]["start"] = shortest(s.azimuth_start_deg);
-  n["azimuth"]["end"] = shortest(s.azimuth_end_deg);
-  n["azimuth"]["step"] = shortest(s.azimuth_step_deg);
-  n["beam_divergence"] = shortest(s.divergence_rad) + " rad";
-  n["beam_profile"] = beamProfileName(s.profile);
-  n["beam_rays"] = s.beam_rays;
+  if (!s.gridScan()) {
+    n["azimuth"]["start"] = shortest(s.azimuth_start_deg);
+    n["azimuth"]["end"] = shortest(s.azimuth_end_deg);
+    n["azimuth"]["step"] = shortest(s.azimuth_step_deg);
+  }
+  if (s.scan != lidar::ScanPattern::Zones) {
+    n["beam_divergence"] = shortest(s.divergence_rad) + " rad";
+    n["beam_profile"] = beamProfileName(s.profile);
+    n["beam_rays"] = s.beam_rays;
+  }
   n["power"] = shortest(s.power_W);
-  n["rotation_rate"] = shortest(c.rotation_rate_Hz) + " Hz";
+  if (!s.gridScan()) n["rotation_rate"] = shortest(c.rotation_rate_Hz) + " Hz";
   n["returns"]["mode"] = returnModeName(s.returns.mode);
   n["returns"]["max"] = s.returns.max;
   n["returns"]["threshold"] = shortest(s.returns.threshold);
@@ -297,7 +404,11 @@ YAML::Node lidarNode(const LidarConfig& c) {
   for (const auto& [ring, a] : c.plot_beams) {
     YAML::Node beam(YAML::NodeType::Sequence);
     beam.push_back(ring);
-    beam.push_back(shortest(s.azimuthOf_deg(a)));
+    if (s.gridScan()) {
+      beam.push_back(a);
+    } else {
+      beam.push_back(shortest(s.azimuthOf_deg(a)));
+    }
     beam.SetStyle(YAML::EmitterStyle::Flow);
     beams.push_back(beam);
   }

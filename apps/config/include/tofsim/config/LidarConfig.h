@@ -30,10 +30,15 @@ struct LidarConfig {
   /// the nearest azimuth.
   std::vector<std::array<int32_t, 2>> plot_beams;
   FileLoc at;  ///< where `lidar:` is
+  /// lidar.preset: the device preset whose values were the defaults
+  /// (LidarPresets.h); empty: none.
+  std::string preset;
 };
 
 /// "gaussian" / "tophat"; "first" ... "all".
 const char* beamProfileName(lidar::BeamProfile profile);
 const char* returnModeName(lidar::ReturnMode mode);
+/// "spinning" / "raster" / "zones".
+const char* scanPatternName(lidar::ScanPattern scan);
 
 }  // namespace tofsim::config
