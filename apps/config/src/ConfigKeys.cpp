@@ -35,7 +35,7 @@ const ConfigKey kRunConfigKeys[] = {
     {"nlos", "mapping", "", "none", "-",
      "a non-line-of-sight relay-wall scan instead of `camera` and `light`, see below"},
     {"lidar", "mapping", "", "none", "-",
-     "a spinning lidar instead of `camera` and `light` (its beams are its captures), see below; not with `camera`, `light`, `rays`, `nlos` or `sequence`"},
+     "a lidar (spinning, a raster or a multizone sensor) instead of `camera` and `light` (its beams or zones are its captures), see below; not with `camera`, `light`, `rays`, `nlos` or `sequence`"},
     {"lidar.position", "vec3", "", "required", "m",
      "where the lidar's beams start"},
     {"lidar.orientation", "mapping", "", "required", "-",

@@ -89,7 +89,8 @@ void gridJson(const lidar::LidarSpec& s, nlohmann::ordered_json& j) {
         "field_solid_angle_sr); each zone integrates the radiance it returns over the zone's "
         "solid angle with zone_rays^2 rays through its sub-cells' centres, each weighted by its "
         "solid angle; zone_distance.npy: the device's own per-zone distance (the peak bin, "
-        "refined by a parabola through the logs of its neighbours; 0: no light)";
+        "refined by a parabola through the logs of its neighbours, or their energy-weighted "
+        "centre where one is empty; 0: no light)";
     j["field_solid_angle_sr"] = lidar::fieldSolidAngle_sr(s);
   } else {
     j["beam_divergence_rad"] = s.divergence_rad;
@@ -167,7 +168,9 @@ std::string metadataJson(const config::RunConfig& config, const LidarFrame& fram
   j["stats"] = {{"seconds", frame.seconds},
                 {"threads", frame.threads},
                 {"beams", beams},
-                {"rays", beams * lidar::beamRays(s.beam_rays, s.divergence_rad, s.profile).size()},
+                {"rays", beams * (s.scan == lidar::ScanPattern::Zones
+                                      ? s.grid.zone_rays * s.grid.zone_rays
+                                      : lidar::beamRays(s.beam_rays, s.divergence_rad, s.profile).size())},
                 {"beams_per_second", frame.seconds > 0.0 ? beams / frame.seconds : 0.0},
                 {"beams_with_returns", frame.returns->beamsWithReturns},
                 {"points", frame.returns->points.size()},

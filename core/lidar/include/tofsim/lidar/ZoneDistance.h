@@ -5,7 +5,9 @@
 // one for pulsed histograms: the highest bin b, refined by the vertex of
 // the parabola through the logarithms of bins b - 1, b, b + 1 (exact for a
 // Gaussian echo sampled at the bin centres), the offset clamped to half a
-// bin and 0 where a neighbour is empty (an echo in one bin: its centre).
+// bin; where a neighbour is empty (direct light without a pulse shape fills
+// one or two bins) the energy-weighted centre of the three bins instead (an
+// echo in one bin: its centre).
 // The distance is the radial range (c / eta) t / 2 of that time (t / 1
 // with time.camera_unwarp), as TimeAxis::depthOf_m.
 
