@@ -1,7 +1,9 @@
 #pragma once
 // The `lidar:` section of a run config (issue 43), in place of `camera:` and
-// `light:`: a spinning lidar whose beams are captures of their own
-// (core/lidar). Keys, units and defaults: configs/README.md, `lidar`.
+// `light:`: a spinning lidar, a raster or a multizone sensor whose beams
+// (zones) are captures of their own (core/lidar), its defaults perhaps a
+// device preset's (LidarPresets.h). Keys, units and defaults:
+// configs/README.md, `lidar`.
 
 #include <array>
 #include <cstdint>
