@@ -85,14 +85,14 @@ TEST_F(LidarPresetTest, PresetValuesReachTheSpec) {
 }
 
 TEST_F(LidarPresetTest, ExplicitKeysWin) {
-  const config::RunConfig a =
-      load("  preset: spinning-16\n  channels: {count: 4, min: -2, max: 2}\n"
-           "  beam_divergence: 1 mrad\n  returns: {mode: last}\n");
+  const config::RunConfig a = load(
+      "  preset: spinning-16\n  channels: {count: 4, min: -2, max: 2}\n"
+      "  beam_divergence: 1 mrad\n  returns: {mode: last}\n");
   EXPECT_EQ(a.lidar->spec.channels(), 4);
   EXPECT_DOUBLE_EQ(a.lidar->spec.divergence_rad, 1e-3);
   EXPECT_EQ(a.lidar->spec.returns.mode, lidar::ReturnMode::Last);
-  EXPECT_EQ(a.lidar->spec.returns.max, 2);           // the preset's
-  EXPECT_EQ(a.lidar->spec.azimuths(), 1800);          // the preset's
+  EXPECT_EQ(a.lidar->spec.returns.max, 2);    // the preset's
+  EXPECT_EQ(a.lidar->spec.azimuths(), 1800);  // the preset's
   const config::RunConfig b =
       load("  preset: multizone-8x8\n  grid: {rows: 4, columns: 4}\n  zone_rays: 2\n",
            "time: {bins: 64}\n");
@@ -124,8 +124,8 @@ TEST_F(LidarPresetTest, GridScansAndPresetsRoundTrip) {
 TEST_F(LidarPresetTest, PresetsCommandListsEachValueAndItsSource) {
   const test::CommandResult all = test::runCli("presets");
   ASSERT_EQ(all.exitCode, 0) << all.output;
-  for (const char* name : {"spinning-16 (lidar)", "spinning-64 (lidar)", "multizone-8x8 (lidar)",
-                           "spad512s"}) {
+  for (const char* name :
+       {"spinning-16 (lidar)", "spinning-64 (lidar)", "multizone-8x8 (lidar)", "spad512s"}) {
     EXPECT_NE(all.output.find(name), std::string::npos) << name;
   }
   const test::CommandResult one = test::runCli("presets multizone-8x8");
@@ -152,18 +152,19 @@ TEST_F(LidarPresetTest, BadInputIsALocatedErrorAndWritesNothing) {
     return s.replace(s.find(from), from.size(), to);
   };
   const std::vector<Bad> cases = {
-      {"an unknown preset", "  preset: vlp-17\n", "c.yaml:5:", "spinning-16, spinning-64, multizone-8x8"},
+      {"an unknown preset", "  preset: vlp-17\n",
+       "c.yaml:5:", "spinning-16, spinning-64, multizone-8x8"},
       {"zones of no rows", replace(zones, "rows: 8", "rows: 0"), "c.yaml:6:", "rows"},
-      {"zones of 2000 columns", replace(zones, "columns: 8", "columns: 2000"), "c.yaml:6:",
-       "columns"},
+      {"zones of 2000 columns", replace(zones, "columns: 8", "columns: 2000"),
+       "c.yaml:6:", "columns"},
       {"zones without a grid", "  scan: zones\n", "c.yaml:5:", "grid"},
       {"a field of view of 180 deg", replace(zones, "horizontal: 45", "horizontal: 180"),
        "c.yaml:7:", "horizontal"},
       {"zones with channels", zones + "  channels: {count: 4}\n", "c.yaml:8:", "channels"},
-      {"zones with a divergence", zones + "  beam_divergence: 3 mrad\n", "c.yaml:8:",
-       "beam_divergence"},
-      {"a spinning lidar with a grid",
-       "  channels: {count: 4}\n  grid: {rows: 8, columns: 8}\n", "c.yaml:6:", "grid"},
+      {"zones with a divergence", zones + "  beam_divergence: 3 mrad\n",
+       "c.yaml:8:", "beam_divergence"},
+      {"a spinning lidar with a grid", "  channels: {count: 4}\n  grid: {rows: 8, columns: 8}\n",
+       "c.yaml:6:", "grid"},
       {"an unknown scan", "  scan: flash\n", "c.yaml:5:", "spinning, raster or zones"},
   };
   for (const Bad& bad : cases) {

@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -48,12 +49,14 @@ class LidarZonesTest : public test::TempDirTest {
 
   // The 8 x 8 zones (power 1 W); returns the waveforms (rows, columns, T)
   // and the field's solid angle from lidar.json.
-  io::NpyArray zones(double& field_sr) {
-    const fs::path out = render("zones", std::string("lidar:\n  scan: zones\n  position: ") +
-                                             kPosition + "\n  orientation: {look_at: " + kLookAt +
-                                             ", up: [0, 1, 0]}\n  grid: {rows: 8, columns: 8}\n"
-                                             "  field_of_view: {horizontal: 40, vertical: 40}\n"
-                                             "  zone_rays: 3\ntime: {bin_width: 200 ps, bins: 600}\n");
+  io::NpyArray zones(double& field_sr, const std::string& extra = "") {
+    const fs::path out = render("zones" + std::to_string(extra.size()),
+                                std::string("lidar:\n  scan: zones\n  position: ") + kPosition +
+                                    "\n  orientation: {look_at: " + kLookAt +
+                                    ", up: [0, 1, 0]}\n  grid: {rows: 8, columns: 8}\n"
+                                    "  field_of_view: {horizontal: 40, vertical: 40}\n"
+                                    "  zone_rays: 3\ntime: {bin_width: 200 ps, bins: 600}\n" +
+                                    extra);
     const nlohmann::json meta = nlohmann::json::parse(std::ifstream(out / "lidar.json"));
     field_sr = meta["lidar"]["field_solid_angle_sr"].get<double>();
     return io::readNpy(out / "waveforms.npy");
@@ -171,6 +174,15 @@ TEST_F(LidarZonesTest, ZonesEqualACameraWhosePixelsAreTheZones) {
   RecordProperty("worst_relative", std::to_string(worst));
 }
 
+// One zone a task: the same bytes on one and three threads.
+TEST_F(LidarZonesTest, ZonesAreTheSameBytesOnOneAndThreeThreads) {
+  double field_sr = 0.0;
+  const io::NpyArray one = zones(field_sr, "render: {threads: 1}\n");
+  const io::NpyArray three = zones(field_sr, "render: {threads: 3}\n");
+  ASSERT_EQ(one.data.size(), three.data.size());
+  EXPECT_EQ(std::memcmp(one.data.data(), three.data.data(), one.data.size() * sizeof(float)), 0);
+}
+
 // A raster of 5 x 7 single-ray beams looking down at the ground (y = 0)
 // from 2 m: each beam's direction is the pinhole's through its cell's
 // centre (written here from the documented formula), and its return lies on
@@ -181,7 +193,8 @@ TEST_F(LidarZonesTest, RasterBeamsLandWhereTheirDirectionsSay) {
       "raster",
       "lidar:\n  scan: raster\n  position: [0, 2, 0]\n  orientation: {look_at: [-2, 0, 2], up: "
       "[0, 1, 0]}\n  grid: {rows: 5, columns: 7}\n  field_of_view: {horizontal: 40, vertical: "
-      "30}\n  beam_rays: 1\n  returns: {mode: first, max: 1}\ntime: {bin_width: 50 ps, bins: 1000}\n");
+      "30}\n  beam_rays: 1\n  returns: {mode: first, max: 1}\ntime: {bin_width: 50 ps, bins: "
+      "1000}\n");
   const io::NpyArray range = io::readNpy(out / "range.npy");
   const io::NpyArray dirs = io::readNpy(out / "beam_directions.npy");
   ASSERT_EQ(range.shape, (std::vector<std::size_t>{5, 7}));

@@ -1,10 +1,11 @@
 #include "tofsim/config/LidarPresets.h"
 
+#include <yaml-cpp/yaml.h>
+
 #include <array>
 #include <cmath>
 #include <cstdio>
 #include <sstream>
-#include <yaml-cpp/yaml.h>
 
 #include "LidarSection.h"
 #include "ShortestNumber.h"
@@ -106,8 +107,7 @@ void applyMultizone(LidarDefaults& d) {
 }
 constexpr std::array<PresetValue, 7> kMultizoneValues{{
     {"scan", "[DS13754] zones of one SPAD array under a flood VCSEL (940 nm [DS14161])", nullptr},
-    {"grid", "[DS13754] 4x4 or 8x8 zones: 8x8 (the TMF8828 as four 4x4 captures [DS693])",
-     nullptr},
+    {"grid", "[DS13754] 4x4 or 8x8 zones: 8x8 (the TMF8828 as four 4x4 captures [DS693])", nullptr},
     {"field_of_view", "[DS13754] 45 x 45 deg (63 deg diagonal); the VL53L8CX's the same [DS14161]",
      nullptr},
     {"zone_rays", nullptr,

@@ -14,7 +14,8 @@ constexpr int32_t kMaxCells = 1024;  // a grid's rows or columns, as a lidar's c
 void parseGrid(const ConfigNode& n, lidar::ScanGrid& g) {
   if (const auto grid = n.optionalChild("grid")) {
     if (!grid->isMap()) grid->fail("expected {rows, columns}");
-    for (const auto& [key, field] : {std::pair{"rows", &g.rows}, std::pair{"columns", &g.columns}}) {
+    for (const auto& [key, field] :
+         {std::pair{"rows", &g.rows}, std::pair{"columns", &g.columns}}) {
       const long long v = grid->getInt(key, *field);
       if (v < 1 || v > kMaxCells) {
         grid->failKey(key, "must be in [1, " + std::to_string(kMaxCells) + "]");
@@ -48,7 +49,8 @@ void applyLidarPreset(const ConfigNode& n, LidarConfig& out, TimeAxis& time) {
   const LidarPreset* preset = findLidarPreset(name);
   if (!preset) {
     std::string names;
-    for (const LidarPreset& p : lidarPresets()) names += std::string(names.empty() ? "" : ", ") + p.name;
+    for (const LidarPreset& p : lidarPresets())
+      names += std::string(names.empty() ? "" : ", ") + p.name;
     n.failKey("preset", "unknown lidar preset '" + name + "' (presets: " + names +
                             "; `tofsim presets` lists their values and sources)");
   }
@@ -63,7 +65,8 @@ void applyLidarPreset(const ConfigNode& n, LidarConfig& out, TimeAxis& time) {
 void parseLidarScan(const ConfigNode& n, lidar::LidarSpec& s) {
   const std::string scan = n.getString("scan", scanPatternName(s.scan));
   bool known = false;
-  for (auto p : {lidar::ScanPattern::Spinning, lidar::ScanPattern::Raster, lidar::ScanPattern::Zones}) {
+  for (auto p :
+       {lidar::ScanPattern::Spinning, lidar::ScanPattern::Raster, lidar::ScanPattern::Zones}) {
     if (scan == scanPatternName(p)) {
       s.scan = p;
       known = true;
@@ -90,8 +93,9 @@ void parseLidarScan(const ConfigNode& n, lidar::LidarSpec& s) {
   parseGrid(n, s.grid);
   if (s.grid.rows < 1 || !(s.grid.fov_horizontal_deg > 0.0)) {
     n.failKey(n.has("scan") ? "scan" : "preset",
-              "`scan: " + scan + "` needs `grid: {rows, columns}` and `field_of_view: "
-              "{horizontal, vertical}` (degrees)");
+              "`scan: " + scan +
+                  "` needs `grid: {rows, columns}` and `field_of_view: "
+                  "{horizontal, vertical}` (degrees)");
   }
 }
 

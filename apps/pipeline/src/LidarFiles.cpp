@@ -165,12 +165,14 @@ std::string metadataJson(const config::RunConfig& config, const LidarFrame& fram
                            "in the waveforms yet"}};
   }
   const double beams = double(s.channels()) * s.azimuths();
+  const double raysPerBeam =
+      s.scan == lidar::ScanPattern::Zones
+          ? double(s.grid.zone_rays) * s.grid.zone_rays
+          : double(lidar::beamRays(s.beam_rays, s.divergence_rad, s.profile).size());
   j["stats"] = {{"seconds", frame.seconds},
                 {"threads", frame.threads},
                 {"beams", beams},
-                {"rays", beams * (s.scan == lidar::ScanPattern::Zones
-                                      ? s.grid.zone_rays * s.grid.zone_rays
-                                      : lidar::beamRays(s.beam_rays, s.divergence_rad, s.profile).size())},
+                {"rays", beams * raysPerBeam},
                 {"beams_per_second", frame.seconds > 0.0 ? beams / frame.seconds : 0.0},
                 {"beams_with_returns", frame.returns->beamsWithReturns},
                 {"points", frame.returns->points.size()},

@@ -41,8 +41,7 @@ double subCellSolidAngle_sr(const LidarSpec& spec, const glm::dvec2& p) {
 namespace {
 
 // Sub-cell (i, j) of zone (row, column): its centre on the image plane.
-glm::dvec2 subCellCentre(const LidarSpec& spec, int32_t row, int32_t column, int32_t i,
-                         int32_t j) {
+glm::dvec2 subCellCentre(const LidarSpec& spec, int32_t row, int32_t column, int32_t i, int32_t j) {
   const double n = spec.grid.zone_rays;
   return gridPlanePoint(spec, row + (j + 0.5) / n, column + (i + 0.5) / n);
 }
@@ -64,8 +63,7 @@ double fieldSolidAngle_sr(const LidarSpec& spec) {
   return sum;
 }
 
-std::vector<BeamRay> zoneRays(const LidarSpec& spec, int32_t row, int32_t column,
-                              double field_sr) {
+std::vector<BeamRay> zoneRays(const LidarSpec& spec, int32_t row, int32_t column, double field_sr) {
   const GridFrame grid = gridFrame(spec);
   const BeamFrame beam = beamFrame(gridCellDirection(spec, row, column), spec.up_world);
   const glm::dvec3 axis(beam.axis), u(beam.u), v(beam.v);
@@ -82,7 +80,8 @@ std::vector<BeamRay> zoneRays(const LidarSpec& spec, int32_t row, int32_t column
       const double sideways = glm::length(lateral);
       const double angle = std::atan2(sideways, glm::dot(d, axis));
       const glm::dvec2 offset = sideways > 0.0 ? lateral * (angle / sideways) : glm::dvec2(0.0);
-      rays.push_back({glm::vec2(offset), static_cast<float>(subCellSolidAngle_sr(spec, p) / field_sr)});
+      rays.push_back(
+          {glm::vec2(offset), static_cast<float>(subCellSolidAngle_sr(spec, p) / field_sr)});
     }
   }
   return rays;

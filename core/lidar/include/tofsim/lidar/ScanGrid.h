@@ -58,7 +58,6 @@ double fieldSolidAngle_sr(const LidarSpec& spec);
 /// Zone (row, column)'s receiver rays, as offsets in beamFrame(its centre
 /// direction, up) with shares = their solid angle / fieldSolidAngle_sr, in
 /// sub-cell order (sub-row j from the bottom, sub-column i: entry j N + i).
-std::vector<BeamRay> zoneRays(const LidarSpec& spec, int32_t row, int32_t column,
-                              double field_sr);
+std::vector<BeamRay> zoneRays(const LidarSpec& spec, int32_t row, int32_t column, double field_sr);
 
 }  // namespace tofsim::lidar
