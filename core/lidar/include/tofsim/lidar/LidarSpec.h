@@ -63,8 +63,10 @@ struct ReturnSettings {
 
 struct LidarSpec {
   glm::vec3 position_world{0.0f};
-  glm::vec3 forward_world{1.0f, 0.0f, 0.0f};  ///< unit, normal to up: azimuth 0
-  glm::vec3 up_world{0.0f, 0.0f, 1.0f};       ///< unit: the spin axis
+  /// Unit. Spinning: normal to up, azimuth 0; raster and zones: the look
+  /// direction itself (ScanGrid's frame orthogonalises up to it).
+  glm::vec3 forward_world{1.0f, 0.0f, 0.0f};
+  glm::vec3 up_world{0.0f, 0.0f, 1.0f};  ///< unit: the spin axis (a grid scan's up)
   std::vector<double> elevations_deg;         ///< one per channel (ring)
   double azimuth_start_deg = 0.0;
   double azimuth_end_deg = 360.0;  ///< exclusive
