@@ -65,6 +65,17 @@ out("fuzz_config", "lidar_multipath_refused.yaml", "scene: scenes/cornell_box.gl
     "  position: [0, 0, 0]\n  channels: [0]\n  orientation: {look_at: [1, 0, 0]}\n"
     "  multipath: {bounces: 9, spot_rays: 0, receiver_fov: 1 mrad}\n"
     "time: {bins: 16, bin_width: 1 m}\n")
+# config: lidar presets and grid scans (zones43): the shipped multizone
+# sensor, a raster with every grid key, zones overriding a preset
+out("fuzz_config", "multizone_8x8.yaml", open(os.path.join(src, "configs/multizone_8x8.yaml")).read())
+out("fuzz_config", "lidar_raster.yaml", "scene: scenes/cornell_box.gltf\nlidar:\n"
+    "  scan: raster\n  position: [0.3, 0.3, -0.8]\n  orientation: {look_at: [0.3, 0.3, 0], up: [0, 1, 0]}\n"
+    "  grid: {rows: 3, columns: 5}\n  field_of_view: {horizontal: 30 deg, vertical: 0.2 rad}\n"
+    "  beam_rays: 4\n  plot_beams: [[1, 4]]\ntime: {bins: 16, bin_width: 1 m}\n")
+out("fuzz_config", "lidar_zones_preset.yaml", "scene: scenes/cornell_box.gltf\nlidar:\n"
+    "  preset: spinning-64\n  scan: zones\n  position: [0, 0, 0]\n  orientation: {look_at: [0, 0, 1]}\n"
+    "  grid: {rows: 2, columns: 0}\n  field_of_view: {horizontal: 170}\n  zone_rays: 65\n"
+    "time: {}\n")
 
 # glTF: the shipped scene, a triangle with indices, a strip with a sparse
 # POSITION accessor, and the triangle as .glb

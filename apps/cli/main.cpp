@@ -229,7 +229,7 @@ CLI::App* addInfo(CLI::App& app, Args& a) {
 
 CLI::App* addPresets(CLI::App& app, Args& a) {
   CLI::App* presets = app.add_subcommand(
-      "presets", "List the device presets (SPAD, CW-ToF): the values each sets and their sources");
+      "presets", "List the device presets (SPAD, CW-ToF, lidar): the values each sets and their sources");
   presets->add_option("name", a.presetName, "Only this preset");
   return presets;
 }

@@ -216,6 +216,11 @@ TEST_F(ConfigKeysWriterTest, EffectiveConfigWritesEveryDeclaredKey) {
                                      "orientation: {look_at: [1, 0, 1]}, channels: [0], "
                                      "multipath: {bounces: 1}}\ntime: {}\n";
   leafPaths(YAML::Load(effectiveConfigYaml(loadRunConfig(dir_ / "lm.yaml"))), "", written);
+  // A preset's multizone sensor (a grid scan: its grid and zone keys).
+  std::ofstream(dir_ / "mz.yaml") << "scene: scene.gltf\nlidar: {preset: multizone-8x8, "
+                                     "position: [0, 0, 1], orientation: {look_at: [1, 0, 1]}}\n"
+                                     "time: {}\n";
+  leafPaths(YAML::Load(effectiveConfigYaml(loadRunConfig(dir_ / "mz.yaml"))), "", written);
   written.erase("");
   std::set<std::string> declared;
   for (const ConfigKey& k : runConfigKeys()) declared.insert(k.path);

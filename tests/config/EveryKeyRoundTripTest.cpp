@@ -255,6 +255,11 @@ TEST_F(EveryKeyRoundTripTest, LidarKeysAreNonDefaultAndSurviveTheRoundTrip) {
   for (const ConfigKey& key : runConfigKeys()) {
     const std::string path = key.path;
     if (path.rfind("lidar.", 0) != 0) continue;
+    // A grid scan's keys and the preset: LidarPresetTest.GridScansAndPresetsRoundTrip.
+    if (path.rfind("lidar.grid", 0) == 0 || path.rfind("lidar.field_of_view", 0) == 0 ||
+        path == "lidar.zone_rays" || path == "lidar.preset") {
+      continue;
+    }
     const YAML::Node value = at(every, path);
     ASSERT_TRUE(value.IsDefined()) << path << " is not in the effective config";
     if (std::string(key.defaultValue) == "required" || path == "lidar.scan") continue;

@@ -1,9 +1,9 @@
 // A `lidar:` config through the pipeline and the CLI: the files a run
 // writes agree with each other, a SPAD sensor runs on the waveforms (pixels
 // = beams), the effective config loads again to the same run; bad input
-// (no channels, a zero step, a divergence <= 0, a preset, a scan not built,
-// `lidar` beside `camera` or `nlos`) ends in a located error, exit 1 and no
-// output folder.
+// (no channels, a zero step, a divergence <= 0, an unknown preset, a raster
+// scan with channels, `lidar` beside `camera` or `nlos`) ends in a located
+// error, exit 1 and no output folder.
 
 #include <gtest/gtest.h>
 
@@ -111,7 +111,8 @@ TEST_F(LidarRunTest, BadInputIsALocatedErrorAndWritesNothing) {
       {"no divergence", replace("3 mrad", "0 mrad"), ":7:"},
       {"a negative divergence", replace("3 mrad", "-1 mrad"), ":7:"},
       {"a preset", replace("  beam_divergence", "  preset: vlp16\n  beam_divergence"), ":7:"},
-      {"a raster scan", replace("  beam_divergence", "  scan: raster\n  beam_divergence"), ":7:"},
+      {"a raster scan with channels",
+       replace("  beam_divergence", "  scan: raster\n  beam_divergence"), ":5:"},
       {"a camera too", base + "camera: {resolution: [4, 4]}\n", ":10:"},
       {"an nlos scan too", base + "nlos: {relay_wall: wall}\n", ":10:"},
   };

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "pipeline/CliRun.h"
+#include "tofsim/config/LidarPresets.h"
 #include "tofsim/sensors/CwTofPresets.h"
 #include "tofsim/sensors/SpadPresets.h"
 
@@ -35,6 +36,7 @@ TEST(PresetsCliTest, ListsEveryPresetWithValuesAndSources) {
   ASSERT_EQ(r.exitCode, 0) << r.output;
   for (const auto& p : sensors::spadPresets()) expectListed(p, r.output);
   for (const auto& p : sensors::cwtofPresets()) expectListed(p, r.output);
+  for (const auto& p : config::lidarPresets()) expectListed(p, r.output);
   EXPECT_NE(r.output.find("spad512s (spad)"), std::string::npos);
   EXPECT_NE(r.output.find("bin_width = 1.7e-11 s"), std::string::npos) << r.output;  // 17 ps, s
 

@@ -173,6 +173,27 @@ TEST_F(ViewerPageTest, ALidarsPageHoldsItsWaveformsAndRangeImage) {
   EXPECT_TRUE(found);
 }
 
+// A multizone sensor's folder: its own per-zone distance is a lidar map.
+TEST_F(ViewerPageTest, AMultizonePageHoldsItsZoneDistances) {
+  const fs::path out = dir_ / "zones";
+  const CommandResult r = runCli("render " + std::string(TOFSIM_SOURCE_DIR) +
+                                 "/configs/multizone_8x8.yaml -o " + out.string() + " -q");
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  ASSERT_EQ(runCli("view " + out.string()).exitCode, 0);
+  const nlohmann::json page = pageData(fileBytes((out / "view.html").string()));
+  const io::NpyArray d = io::readNpy(out / "zone_distance.npy");
+  bool found = false;
+  for (const auto& m : page["lidars"]) {
+    if (m["name"] != "zone_distance") continue;
+    found = true;
+    const std::vector<double> v = decoded(m);
+    ASSERT_EQ(v.size(), d.data.size());
+    const double step = (m["hi"].get<double>() - m["lo"].get<double>()) / 65534.0;
+    for (std::size_t i = 0; i < v.size(); ++i) EXPECT_NEAR(v[i], d.data[i], step / 2 + 1e-6) << i;
+  }
+  EXPECT_TRUE(found);
+}
+
 TEST_F(ViewerPageTest, AFolderThatIsNotAnOutputIsALocatedErrorAndWritesNothing) {
   const CommandResult empty = runCli("view " + dir_.string());
   EXPECT_EQ(empty.exitCode, 1);

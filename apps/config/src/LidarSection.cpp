@@ -6,6 +6,7 @@
 
 #include "ShortestNumber.h"
 #include "Vec3Key.h"
+#include "LidarScanSection.h"
 
 namespace tofsim::config {
 
@@ -22,6 +23,15 @@ const char* returnModeName(lidar::ReturnMode mode) {
     case lidar::ReturnMode::All: return "all";
   }
   return "strongest";
+}
+
+const char* scanPatternName(lidar::ScanPattern scan) {
+  switch (scan) {
+    case lidar::ScanPattern::Spinning: return "spinning";
+    case lidar::ScanPattern::Raster: return "raster";
+    case lidar::ScanPattern::Zones: return "zones";
+  }
+  return "spinning";
 }
 
 namespace {
@@ -54,14 +64,19 @@ void parseOrientation(const ConfigNode& lidarNode, LidarConfig& out) {
     o.failKey("look_at", "must not lie on the spin axis (`up` through `position`): azimuth 0 looks at it");
   }
   s.forward_world = glm::normalize(forward);
+  // A grid scan looks at look_at itself (up only sets its roll: ScanGrid.h).
+  if (s.gridScan()) s.forward_world = glm::normalize(d);
 }
 
 void parseChannels(const ConfigNode& lidarNode, LidarConfig& out) {
   if (!lidarNode.has("channels")) {
+    if (!out.spec.elevations_deg.empty()) return;  // a preset's
     lidarNode.failKey("channels", "required key is missing ({count, min, max} in degrees, or a list of elevations)");
   }
   const ConfigNode c = lidarNode.child("channels");
   std::vector<double>& el = out.spec.elevations_deg;
+  el.clear();  // the config's channels replace a preset's
+  out.channel_count = 0;
   if (c.isSequence()) {
     for (const ConfigNode& e : c.elements()) el.push_back(e.asDouble());
     if (el.empty()) c.fail("no channels: list at least one elevation (degrees)");
@@ -137,7 +152,7 @@ void parseDivergence(const ConfigNode& n, lidar::LidarSpec& s) {
   if (!(s.divergence_rad > 0.0) || s.divergence_rad >= M_PI / 2) {
     n.failKey("beam_divergence", "must be > 0 and below 90 degrees (the full angle)");
   }
-  const std::string profile = n.getString("beam_profile", "gaussian");
+  const std::string profile = n.getString("beam_profile", beamProfileName(s.profile));
   if (profile == "gaussian") {
     s.profile = lidar::BeamProfile::Gaussian;
   } else if (profile == "tophat") {
@@ -184,33 +199,30 @@ void parsePlotBeams(const ConfigNode& lidarNode, LidarConfig& out) {
     if (beam.isSequence()) {
       for (const ConfigNode& e : beam.elements()) v.push_back(e.asDouble());
     }
-    if (v.size() != 2) beam.fail("expected [ring, azimuth in degrees]");
-    const double a = std::round((v[1] - s.azimuth_start_deg) / s.azimuth_step_deg);
+    if (v.size() != 2) {
+      beam.fail(s.gridScan() ? "expected [row, column]" : "expected [ring, azimuth in degrees]");
+    }
+    const double a = s.gridScan() ? v[1] : std::round((v[1] - s.azimuth_start_deg) / s.azimuth_step_deg);
     if (!(v[0] >= 0 && v[0] < s.channels() && v[0] == std::floor(v[0]))) {
       beam.fail("the ring must be an integer in [0, " + std::to_string(s.channels()) + ")");
     }
-    if (!(a >= 0 && a < s.azimuths())) beam.fail("the azimuth is outside lidar.azimuth");
+    if (!(a >= 0 && a < s.azimuths() && a == std::floor(a))) {
+      beam.fail(s.gridScan() ? "the column must be an integer in [0, " +
+                                   std::to_string(s.azimuths()) + ")"
+                             : std::string("the azimuth is outside lidar.azimuth"));
+    }
     out.plot_beams.push_back({static_cast<int32_t>(v[0]), static_cast<int32_t>(a)});
   }
-}
-
-void parseScan(const ConfigNode& n) {
-  if (n.has("preset")) {
-    n.failKey("preset", "unknown preset '" + n.getString("preset", "") +
-                            "': no lidar presets are built yet; give the channels, azimuth and "
-                            "beam_divergence (configs/README.md, `lidar`)");
-  }
-  const std::string scan = n.getString("scan", "spinning");
-  if (scan == "raster" || scan == "zones") {
-    n.failKey("scan", "'" + scan + "' scans are not built yet: only `scan: spinning`");
-  }
-  if (scan != "spinning") n.failKey("scan", "must be spinning (got '" + scan + "')");
 }
 
 // lidar.multipath: a beam's light that bounces before it returns
 // (core/lidar MultipathWaveforms.h); off unless asked for.
 void parseMultipath(const ConfigNode& lidarNode, LidarConfig& out) {
   if (!lidarNode.has("multipath")) return;
+  if (out.spec.scan == lidar::ScanPattern::Zones) {
+    lidarNode.failKey("multipath", "a zone scan's flood emitter has no spot: multipath is built "
+                                   "for spinning and raster scans");
+  }
   const ConfigNode n = lidarNode.child("multipath");
   if (!n.isMap())
     n.fail("expected {bounces, spot_rays, receiver_rays, receiver_fov, vpls_per_bounce}");
@@ -249,13 +261,16 @@ void parseLidarView(const ConfigNode& root, RunConfig& config) {
   if (!n.isMap()) n.fail("expected a mapping (position, orientation, channels, azimuth, ...)");
   auto out = std::make_shared<LidarConfig>();
   out->at = n.location();
-  parseScan(n);
+  applyLidarPreset(n, *out, config.render.time);
+  parseLidarScan(n, out->spec);
   if (!n.has("position")) n.failKey("position", "required key is missing ([x, y, z] in metres)");
   out->spec.position_world = finiteVec3(n, "position", {});
   parseOrientation(n, *out);
-  parseChannels(n, *out);
-  parseAzimuth(n, out->spec);
-  parseDivergence(n, out->spec);
+  if (!out->spec.gridScan()) {
+    parseChannels(n, *out);
+    parseAzimuth(n, out->spec);
+  }
+  if (out->spec.scan != lidar::ScanPattern::Zones) parseDivergence(n, out->spec);
   out->spec.power_W = n.getDouble("power", out->spec.power_W);
   if (!(out->spec.power_W > 0.0 && std::isfinite(out->spec.power_W))) {
     n.failKey("power", "must be > 0 W");
@@ -299,11 +314,18 @@ YAML::Node lidarNode(const LidarConfig& c) {
     return n;
   };
   YAML::Node n;
-  n["scan"] = "spinning";
+  if (!c.preset.empty()) n["preset"] = c.preset;
+  n["scan"] = scanPatternName(s.scan);
   n["position"] = vec(s.position_world);
   n["orientation"]["look_at"] = vec(c.look_at_world);
   n["orientation"]["up"] = vec(c.up_written);
-  if (c.channel_count > 0) {
+  if (s.gridScan()) {
+    n["grid"]["rows"] = s.grid.rows;
+    n["grid"]["columns"] = s.grid.columns;
+    n["field_of_view"]["horizontal"] = shortest(s.grid.fov_horizontal_deg);
+    n["field_of_view"]["vertical"] = shortest(s.grid.fov_vertical_deg);
+    if (s.scan == lidar::ScanPattern::Zones) n["zone_rays"] = s.grid.zone_rays;
+  } else if (c.channel_count > 0) {
     n["channels"]["count"] = c.channel_count;
     n["channels"]["min"] = shortest(c.channel_min_deg);
     n["channels"]["max"] = shortest(c.channel_max_deg);
@@ -313,14 +335,18 @@ YAML::Node lidarNode(const LidarConfig& c) {
     list.SetStyle(YAML::EmitterStyle::Flow);
     n["channels"] = list;
   }
-  n["azimuth"]["start"] = shortest(s.azimuth_start_deg);
-  n["azimuth"]["end"] = shortest(s.azimuth_end_deg);
-  n["azimuth"]["step"] = shortest(s.azimuth_step_deg);
-  n["beam_divergence"] = shortest(s.divergence_rad) + " rad";
-  n["beam_profile"] = beamProfileName(s.profile);
-  n["beam_rays"] = s.beam_rays;
+  if (!s.gridScan()) {
+    n["azimuth"]["start"] = shortest(s.azimuth_start_deg);
+    n["azimuth"]["end"] = shortest(s.azimuth_end_deg);
+    n["azimuth"]["step"] = shortest(s.azimuth_step_deg);
+  }
+  if (s.scan != lidar::ScanPattern::Zones) {
+    n["beam_divergence"] = shortest(s.divergence_rad) + " rad";
+    n["beam_profile"] = beamProfileName(s.profile);
+    n["beam_rays"] = s.beam_rays;
+  }
   n["power"] = shortest(s.power_W);
-  n["rotation_rate"] = shortest(c.rotation_rate_Hz) + " Hz";
+  if (!s.gridScan()) n["rotation_rate"] = shortest(c.rotation_rate_Hz) + " Hz";
   n["returns"]["mode"] = returnModeName(s.returns.mode);
   n["returns"]["max"] = s.returns.max;
   n["returns"]["threshold"] = shortest(s.returns.threshold);
@@ -329,7 +355,11 @@ YAML::Node lidarNode(const LidarConfig& c) {
   for (const auto& [ring, a] : c.plot_beams) {
     YAML::Node beam(YAML::NodeType::Sequence);
     beam.push_back(ring);
-    beam.push_back(shortest(s.azimuthOf_deg(a)));
+    if (s.gridScan()) {
+      beam.push_back(a);
+    } else {
+      beam.push_back(shortest(s.azimuthOf_deg(a)));
+    }
     beam.SetStyle(YAML::EmitterStyle::Flow);
     beams.push_back(beam);
   }

@@ -14,6 +14,8 @@
 #include "tofsim/io/Npy.h"
 #include "tofsim/lidar/BeamPattern.h"
 #include "tofsim/lidar/PointCloudFiles.h"
+#include "tofsim/lidar/ScanGrid.h"
+#include "tofsim/lidar/ZoneDistance.h"
 #include "tofsim/pipeline/PlotRanges.h"
 #include "tofsim/pipeline/SensorMetadata.h"
 #include "tofsim/pipeline/SensorWriter.h"
@@ -67,13 +69,53 @@ std::vector<float> beamDirections(const lidar::LidarSpec& s) {
   return out;
 }
 
+// A raster's or zones' layout (ScanGrid.h) into lidar.json's settings.
+void gridJson(const lidar::LidarSpec& s, nlohmann::ordered_json& j) {
+  const lidar::GridFrame f = lidar::gridFrame(s);
+  j["right"] = vec(glm::vec3(f.right));
+  j["grid"] = {{"rows", s.grid.rows}, {"columns", s.grid.columns}};
+  j["field_of_view_deg"] = {{"horizontal", s.grid.fov_horizontal_deg},
+                            {"vertical", s.grid.fov_vertical_deg}};
+  j["beam_direction_doc"] =
+      "cell (row r, column c): normalize(forward + u right + up' v), u = tan(horizontal / 2) "
+      "(2 (c + 1/2) / columns - 1), v = tan(vertical / 2) (2 (r + 1/2) / rows - 1), up' = right x "
+      "forward: row 0 the lowest, column 0 the leftmost (a camera of columns x rows pixels over "
+      "the field of view has them as its pixels, its row y = rows - 1 - r); "
+      "beam_directions.npy holds them (rows, columns, 3)";
+  if (s.scan == lidar::ScanPattern::Zones) {
+    j["zone_rays"] = s.grid.zone_rays;
+    j["zone_doc"] =
+        "a flood emitter at the position fills the field of view (intensity power / "
+        "field_solid_angle_sr); each zone integrates the radiance it returns over the zone's "
+        "solid angle with zone_rays^2 rays through its sub-cells' centres, each weighted by its "
+        "solid angle; zone_distance.npy: the device's own per-zone distance (the peak bin, "
+        "refined by a parabola through the logs of its neighbours, or their energy-weighted "
+        "centre where one is empty; 0: no light)";
+    j["field_solid_angle_sr"] = lidar::fieldSolidAngle_sr(s);
+  } else {
+    j["beam_divergence_rad"] = s.divergence_rad;
+    j["beam_profile"] = config::beamProfileName(s.profile);
+    j["beam_rays"] = s.beam_rays;
+  }
+  j["power_W"] = s.power_W;
+  j["returns"] = {{"mode", config::returnModeName(s.returns.mode)},
+                  {"max", s.returns.max},
+                  {"threshold", s.returns.threshold},
+                  {"separation_m", s.returns.separation_m}};
+}
+
 nlohmann::ordered_json settingsJson(const config::LidarConfig& c) {
   const lidar::LidarSpec& s = c.spec;
   nlohmann::ordered_json j;
-  j["scan"] = "spinning";
+  if (!c.preset.empty()) j["preset"] = c.preset;
+  j["scan"] = config::scanPatternName(s.scan);
   j["position"] = vec(s.position_world);
   j["forward"] = vec(s.forward_world);
   j["up"] = vec(s.up_world);
+  if (s.gridScan()) {
+    gridJson(s, j);
+    return j;
+  }
   j["elevations_deg"] = s.elevations_deg;
   j["azimuth_start_deg"] = s.azimuth_start_deg;
   j["azimuth_step_deg"] = s.azimuth_step_deg;
@@ -136,10 +178,14 @@ std::string metadataJson(const config::RunConfig& config, const LidarFrame& fram
                            "in the waveforms yet"}};
   }
   const double beams = double(s.channels()) * s.azimuths();
+  const double raysPerBeam =
+      s.scan == lidar::ScanPattern::Zones
+          ? double(s.grid.zone_rays) * s.grid.zone_rays
+          : double(lidar::beamRays(s.beam_rays, s.divergence_rad, s.profile).size());
   j["stats"] = {{"seconds", frame.seconds},
                 {"threads", frame.threads},
                 {"beams", beams},
-                {"rays", beams * lidar::beamRays(s.beam_rays, s.divergence_rad, s.profile).size()},
+                {"rays", beams * raysPerBeam},
                 {"beams_per_second", frame.seconds > 0.0 ? beams / frame.seconds : 0.0},
                 {"beams_with_returns", frame.returns->beamsWithReturns},
                 {"points", frame.returns->points.size()},
@@ -178,9 +224,13 @@ void writeWaveformPlot(const config::RunConfig& config, const TransientVolume& v
     for (int32_t b = first; b <= last; ++b) series.push_back(w[b] * 1e6f);
     plot.series.push_back(std::move(series));
     char label[96];
-    std::snprintf(label, sizeof label, "ring %d (%.1f deg), azimuth %.1f deg", ring,
-                  lidar.spec.elevations_deg[static_cast<std::size_t>(ring)],
-                  lidar.spec.azimuthOf_deg(a));
+    if (lidar.spec.gridScan()) {
+      std::snprintf(label, sizeof label, "row %d, column %d", ring, a);
+    } else {
+      std::snprintf(label, sizeof label, "ring %d (%.1f deg), azimuth %.1f deg", ring,
+                    lidar.spec.elevations_deg[static_cast<std::size_t>(ring)],
+                    lidar.spec.azimuthOf_deg(a));
+    }
     plot.labels.push_back(label);
   }
   plot.x0 = axis.start_m() / toRange + first * binRange_m;
@@ -192,6 +242,18 @@ void writeWaveformPlot(const config::RunConfig& config, const TransientVolume& v
                                                  : "lidar waveforms (direct light)";
   imaging::writeLinePlotPng(dir / "waveforms.png", plot);
   files.push_back("waveforms.png");
+}
+
+// A multizone sensor's own distance per zone (ZoneDistance.h).
+Image zoneDistances(const TransientVolume& volume) {
+  Image out(volume.width(), volume.height(), 1);
+  for (int32_t y = 0; y < volume.height(); ++y) {
+    for (int32_t x = 0; x < volume.width(); ++x) {
+      out.at(y, x, 0) = static_cast<float>(
+          lidar::zoneDistance_m(volume.data() + volume.index(y, x, 0, 0), volume.axis()));
+    }
+  }
+  return out;
 }
 
 // The configured sensors on the waveforms: pixels are beams.
@@ -235,6 +297,9 @@ std::vector<std::string> writeLidarFiles(const config::RunConfig& config, const 
   PlotRanges ranges(config.output.plot_ranges);
   writeImage(dir, "range", frame.returns->range_m, "range [m]", ranges, files);
   writeImage(dir, "intensity", frame.returns->intensity, "intensity [W m^-2]", ranges, files);
+  if (s.scan == lidar::ScanPattern::Zones) {
+    writeImage(dir, "zone_distance", zoneDistances(volume), "zone distance [m]", ranges, files);
+  }
   io::writeNpy(dir / "beam_directions.npy",
                {std::size_t(s.channels()), std::size_t(s.azimuths()), 3}, beamDirections(s).data());
   files.push_back("beam_directions.npy");

@@ -13,6 +13,7 @@
 #include "tofsim/pipeline/Manifest.h"
 #include "tofsim/pipeline/PreparedRenderer.h"
 #include "tofsim/pipeline/Progress.h"
+#include "tofsim/lidar/ZoneWaveforms.h"
 #include "tofsim/rays/RayScene.h"
 #include "tofsim/util/Interrupt.h"
 #include "tofsim/util/ParallelFor.h"
@@ -92,8 +93,11 @@ RunSummary runLidarRender(const config::RunConfig& config, PreparedRenderer& pre
   lidar::WaveformScene traced{&rays,
                               ir::materialVertices(scene, ir::vertexModelOf(config.render.materials)),
                               config.render.medium};
+  // Zones: the flood's light over each zone's solid angle (ZoneWaveforms.h).
+  const bool zones = config.lidar->spec.scan == lidar::ScanPattern::Zones;
   lidar::LidarWaveforms waveforms =
-      lidar::renderDirectWaveforms(config.lidar->spec, traced, config.render.time, threads);
+      zones ? lidar::renderZoneWaveforms(config.lidar->spec, traced, config.render.time, threads)
+            : lidar::renderDirectWaveforms(config.lidar->spec, traced, config.render.time, threads);
   addLidarMultipath(config, traced, threads, waveforms);
   const lidar::LidarReturns returns =
       lidar::lidarReturns(config.lidar->spec, waveforms.volume, config.lidar->rotation_rate_Hz);

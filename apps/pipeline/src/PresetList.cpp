@@ -4,6 +4,7 @@
 #include <type_traits>
 
 #include "SensorParametersJson.h"
+#include "tofsim/config/LidarPresets.h"
 #include "tofsim/sensors/CwTofPresets.h"
 #include "tofsim/sensors/SensorFields.h"
 #include "tofsim/sensors/SpadPresets.h"
@@ -77,10 +78,15 @@ std::string describePresets(const std::string& name) {
     names += std::string(", ") + p.name;
     if (name.empty() || name == p.name) out += (out.empty() ? "" : "\n") + describe(p, "cwtof", sensors::kCwTofFields);
   }
+  for (const config::LidarPreset& p : config::lidarPresets()) {
+    names += std::string(", ") + p.name;
+    if (name.empty() || name == p.name) out += (out.empty() ? "" : "\n") + config::describeLidarPreset(p);
+  }
   if (out.empty()) throw InputError("no preset '" + name + "' (presets: " + names + ")");
   if (name.empty()) {
-    out += "\nUse one as `preset: <name>` in a sensor (configs/README.md, Sensors); explicit "
-           "keys replace its values.\n";
+    out += "\nUse one as `preset: <name>` in a sensor (configs/README.md, Sensors) or as "
+           "`lidar.preset: <name>` (configs/README.md, `lidar`); explicit keys replace its "
+           "values.\n";
   }
   return out;
 }

@@ -203,6 +203,9 @@ bool addLidarVolume(const std::filesystem::path& folder, nlohmann::json& page) {
   addLidarMap(folder, "range", "m", "the first return's range (0: none)", page);
   addLidarMap(folder, "intensity", textOf(meta, "value_unit"), "the first return's intensity",
               page);
+  addLidarMap(folder, "zone_distance", "m",
+              "a multizone sensor's own per-zone distance (its on-chip estimate; 0: no light)",
+              page);
   return true;
 }
 

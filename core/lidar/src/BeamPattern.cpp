@@ -3,9 +3,12 @@
 #include <algorithm>
 #include <cmath>
 
+#include "tofsim/lidar/ScanGrid.h"
+
 namespace tofsim::lidar {
 
 glm::vec3 beamDirection(const LidarSpec& spec, int32_t ring, int32_t azimuth) {
+  if (spec.gridScan()) return gridCellDirection(spec, ring, azimuth);
   const double el = glm::radians(spec.elevations_deg.at(static_cast<std::size_t>(ring)));
   const double az = glm::radians(spec.azimuthOf_deg(azimuth));
   const glm::dvec3 up(spec.up_world), forward(spec.forward_world);

@@ -1,7 +1,9 @@
 #pragma once
 // The `lidar:` section of a run config (issue 43), in place of `camera:` and
-// `light:`: a spinning lidar whose beams are captures of their own
-// (core/lidar). Keys, units and defaults: configs/README.md, `lidar`.
+// `light:`: a spinning lidar, a raster or a multizone sensor whose beams
+// (zones) are captures of their own (core/lidar), its defaults perhaps a
+// device preset's (LidarPresets.h). Keys, units and defaults:
+// configs/README.md, `lidar`.
 
 #include <array>
 #include <cstdint>
@@ -34,10 +36,15 @@ struct LidarConfig {
   /// render-derived fields, the clamps and the seed, are filled by the run).
   lidar::MultipathSettings multipath;
   FileLoc at;  ///< where `lidar:` is
+  /// lidar.preset: the device preset whose values were the defaults
+  /// (LidarPresets.h); empty: none.
+  std::string preset;
 };
 
 /// "gaussian" / "tophat"; "first" ... "all".
 const char* beamProfileName(lidar::BeamProfile profile);
 const char* returnModeName(lidar::ReturnMode mode);
+/// "spinning" / "raster" / "zones".
+const char* scanPatternName(lidar::ScanPattern scan);
 
 }  // namespace tofsim::config

@@ -1,5 +1,5 @@
 #pragma once
-// `tofsim presets`: every device preset (SPAD and CW-ToF) as text, with the
+// `tofsim presets`: every device preset (SPAD, CW-ToF, lidar) as text, with the
 // values it sets (SI units, the sensor JSON's keys) and each value's source,
 // or why it is assumed; so a user can choose one without provoking an error.
 

@@ -16,7 +16,8 @@
 
 namespace tofsim::lidar {
 
-/// The unit direction of beam (ring, azimuth) in the world.
+/// The unit direction of beam (ring, azimuth) in the world; for a raster or
+/// zone scan, cell (row, column)'s centre (ScanGrid.h).
 glm::vec3 beamDirection(const LidarSpec& spec, int32_t ring, int32_t azimuth);
 
 /// One receiver ray of a beam: its angular offset from the beam's axis

@@ -27,9 +27,26 @@ enum class BeamProfile { Gaussian, Tophat };
 /// Which echoes of a beam's waveform become returns (Echoes.h).
 enum class ReturnMode { First, Strongest, Last, Dual, All };
 
-/// How the beams are laid out in time and space. Only `spinning` is built;
-/// raster and zones (multizone direct-ToF) are later slices.
-enum class ScanPattern { Spinning };
+/// How the beams are laid out. Spinning: channels (elevations) x azimuths
+/// about the spin axis. Raster: a grid of beams over a rectangular field of
+/// view (a MEMS or flash-like raster), each beam its own divergence cone.
+/// Zones (multizone direct-ToF, VL53L5CX / TMF8828 class): the emitter
+/// floods the field of view and each zone's receiver integrates its whole
+/// rectangular solid angle (ScanGrid.h).
+enum class ScanPattern { Spinning, Raster, Zones };
+
+/// The grid of a raster or zone scan: rows x columns cells tiling the field
+/// of view on the image plane at unit distance (a pinhole's pixels: cell
+/// (row, column) spans equal steps of tan), row 0 the lowest, column 0 the
+/// leftmost seen from the device. The device looks along `forward_world`
+/// (towards look_at, not projected) with `up_world` orthogonalised to it.
+struct ScanGrid {
+  int32_t rows = 0, columns = 0;
+  double fov_horizontal_deg = 0.0, fov_vertical_deg = 0.0;  ///< full angles, in (0, 180)
+  /// Zones: zone_rays x zone_rays receiver rays per zone, at the centres of
+  /// its sub-cells (as a camera's pixel_samples).
+  int32_t zone_rays = 4;
+};
 
 struct ReturnSettings {
   ReturnMode mode = ReturnMode::Strongest;
@@ -46,13 +63,16 @@ struct ReturnSettings {
 
 struct LidarSpec {
   glm::vec3 position_world{0.0f};
-  glm::vec3 forward_world{1.0f, 0.0f, 0.0f};  ///< unit, normal to up: azimuth 0
-  glm::vec3 up_world{0.0f, 0.0f, 1.0f};       ///< unit: the spin axis
+  /// Unit. Spinning: normal to up, azimuth 0; raster and zones: the look
+  /// direction itself (ScanGrid's frame orthogonalises up to it).
+  glm::vec3 forward_world{1.0f, 0.0f, 0.0f};
+  glm::vec3 up_world{0.0f, 0.0f, 1.0f};  ///< unit: the spin axis (a grid scan's up)
   std::vector<double> elevations_deg;         ///< one per channel (ring)
   double azimuth_start_deg = 0.0;
   double azimuth_end_deg = 360.0;  ///< exclusive
   double azimuth_step_deg = 0.2;   ///< > 0
   ScanPattern scan = ScanPattern::Spinning;
+  ScanGrid grid;  ///< raster and zones only
   double divergence_rad = 3e-3;  ///< full angle, > 0
   BeamProfile profile = BeamProfile::Gaussian;
   /// Receiver rays over the divergence cone per beam (BeamPattern.h's
@@ -61,10 +81,16 @@ struct LidarSpec {
   double power_W = 1.0;  ///< the laser's power per beam, per unit pulse
   ReturnSettings returns;
 
-  int32_t channels() const { return static_cast<int32_t>(elevations_deg.size()); }
-  /// Azimuths start, start + step, ... below end (a small tolerance, so
-  /// that 0..360 by 0.2 is 1800 azimuths, not 1801).
+  bool gridScan() const { return scan != ScanPattern::Spinning; }
+  /// The waveforms' rows: channels (spinning) or the grid's rows.
+  int32_t channels() const {
+    return gridScan() ? grid.rows : static_cast<int32_t>(elevations_deg.size());
+  }
+  /// The waveforms' columns: azimuths start, start + step, ... below end (a
+  /// small tolerance, so that 0..360 by 0.2 is 1800 azimuths, not 1801); the
+  /// grid's columns for raster and zones.
   int32_t azimuths() const {
+    if (gridScan()) return grid.columns;
     if (!(azimuth_step_deg > 0.0) || !(azimuth_end_deg > azimuth_start_deg)) return 0;
     return static_cast<int32_t>(
         std::ceil((azimuth_end_deg - azimuth_start_deg) / azimuth_step_deg - 1e-9));
