@@ -166,6 +166,8 @@ TEST_F(LidarPresetTest, BadInputIsALocatedErrorAndWritesNothing) {
       {"a spinning lidar with a grid", "  channels: {count: 4}\n  grid: {rows: 8, columns: 8}\n",
        "c.yaml:6:", "grid"},
       {"an unknown scan", "  scan: flash\n", "c.yaml:5:", "spinning, raster or zones"},
+      {"zones with multipath", zones + "  multipath: {bounces: 1}\n", "c.yaml:8:",
+       "flood emitter has no spot"},
   };
   for (const Bad& bad : cases) {
     const fs::path config = write(bad.keys, "time: {bins: 64}\n");
