@@ -4,6 +4,7 @@
 
 #include "KeptAcrossRenders.h"
 #include "LidarFiles.h"
+#include "LidarSequence.h"
 #include "StagedOutput.h"
 #include "tofsim/pipeline/AxisReport.h"
 #include "tofsim/config/LidarConfig.h"
@@ -43,7 +44,11 @@ namespace {
 // As a camera render's check after it (AxisReport.h), for the beams.
 void warnLightOffTheAxis(const lidar::LidarWaveforms& w, const Progress& progress) {
   double onAxis = 0.0;
-  for (float v : w.volume.values()) onAxis += v;
+  if (w.volume.size() > 0) {
+    for (float v : w.volume.values()) onAxis += v;
+  } else {
+    onAxis = w.sparse.total();  // the same sum
+  }
   const double total = onAxis + w.lost.before + w.lost.after;
   if (!(total > 0.0)) return;
   const auto percent = [&](double v) { return std::to_string(100.0 * v / total) + " %"; };
@@ -61,6 +66,7 @@ void warnLightOffTheAxis(const lidar::LidarWaveforms& w, const Progress& progres
 
 RunSummary runLidarRender(const config::RunConfig& config, PreparedRenderer& prepared,
                           const RunOptions& options) {
+  if (config.sequence) return runLidarSequence(config, options);  // a rolling scan per frame
   Progress progress("render", options.quiet);
   prepared.prepare(config);
   const scene::Scene& scene = prepared.scene();
@@ -77,10 +83,12 @@ RunSummary runLidarRender(const config::RunConfig& config, PreparedRenderer& pre
   lidar::WaveformScene traced{&rays,
                               ir::materialVertices(scene, ir::vertexModelOf(config.render.materials)),
                               config.render.medium};
-  const lidar::LidarWaveforms waveforms =
-      lidar::renderDirectWaveforms(config.lidar->spec, traced, config.render.time, threads);
+  // The dense volume only for the sensors that read it: waveforms.npy is
+  // streamed from the beams' nonzero bins, the returns found on them.
+  const lidar::LidarWaveforms waveforms = lidar::renderDirectWaveforms(
+      config.lidar->spec, traced, config.render.time, threads, !config.sensors.empty());
   const lidar::LidarReturns returns =
-      lidar::lidarReturns(config.lidar->spec, waveforms.volume, config.lidar->rotation_rate_Hz);
+      lidar::lidarReturns(config.lidar->spec, waveforms, config.lidar->rotation_rate_Hz);
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   summary.backend = "cpu";
