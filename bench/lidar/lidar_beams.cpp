@@ -142,7 +142,7 @@ int main(int argc, char** argv) {
         lidar::renderDirectWaveforms(spec, traced, axis, threads, false);
     bestSparse = std::min(bestSparse, seconds(start));
     const auto returnsStart = std::chrono::steady_clock::now();
-    sparsePoints = lidar::lidarReturns(spec, w, 10.0).points.size();
+    sparsePoints = lidar::lidarReturns(spec, w, 10.0, threads).points.size();
     bestSparseReturns = std::min(bestSparseReturns, seconds(returnsStart));
     bestFrame = std::min(bestFrame, seconds(start));
   }

@@ -30,27 +30,12 @@ constexpr double kZ0_m = 5.0;
 constexpr double kStart_s = 0.2;  // the turn starts with the plate at 11 m
 constexpr double kRate_Hz = 10.0;
 
-// The plate moves; the rays are rebuilt where the scan asks (the
-// pipeline's MovingScene does the same).
-class Plate {
- public:
-  explicit Plate(const scene::AnimatedScene& animated) : animated_(animated) {
-    scene_ = animated.restScene();
-    traced_.materials = ir::materialVertices(scene_, physics::VERTEX_LAMBERTIAN);
-  }
-  const WaveformScene& at(double t_s) {
-    rays_.reset();
-    animated_.updateScene(scene_, t_s);
-    rays_.emplace(scene_, 1);
-    traced_.rays = &*rays_;
-    return traced_;
-  }
-
- private:
-  const scene::AnimatedScene& animated_;
-  scene::Scene scene_;
-  std::optional<rays::RayScene> rays_;
-  WaveformScene traced_;
+// The plate at any time, as the pipeline traces it.
+struct Plate : AnimatedWaveformScene {
+  explicit Plate(const scene::AnimatedScene& animated)
+      : AnimatedWaveformScene(
+            animated, animated.restScene(),
+            ir::materialVertices(animated.restScene(), physics::VERTEX_LAMBERTIAN), {}, 1) {}
 };
 
 class LidarRollingScanTest : public test::TempDirTest {

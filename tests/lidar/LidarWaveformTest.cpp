@@ -207,7 +207,7 @@ TEST(LidarWaveformTest, TheReturnsAreTheSameWithOrWithoutTheVolume) {
     EXPECT_EQ(sparse.lost.before, dense.lost.before);
     EXPECT_EQ(sparse.lost.after, dense.lost.after);
     const LidarReturns a = lidarReturns(spec, dense.volume, 10.0);
-    const LidarReturns b = lidarReturns(spec, sparse, 10.0);
+    const LidarReturns b = lidarReturns(spec, sparse, 10.0, threads);
     ASSERT_EQ(a.points.size(), b.points.size());
     for (std::size_t i = 0; i < a.points.size(); ++i) {
       const LidarPoint &p = a.points[i], &q = b.points[i];

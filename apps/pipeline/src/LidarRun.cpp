@@ -88,7 +88,7 @@ RunSummary runLidarRender(const config::RunConfig& config, PreparedRenderer& pre
   const lidar::LidarWaveforms waveforms = lidar::renderDirectWaveforms(
       config.lidar->spec, traced, config.render.time, threads, !config.sensors.empty());
   const lidar::LidarReturns returns =
-      lidar::lidarReturns(config.lidar->spec, waveforms, config.lidar->rotation_rate_Hz);
+      lidar::lidarReturns(config.lidar->spec, waveforms, config.lidar->rotation_rate_Hz, threads);
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   summary.backend = "cpu";

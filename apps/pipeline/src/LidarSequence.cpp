@@ -3,7 +3,6 @@
 #include <chrono>
 #include <cstdio>
 #include <nlohmann/json.hpp>
-#include <optional>
 
 #include "KeptAcrossRenders.h"
 #include "LidarFiles.h"
@@ -30,36 +29,6 @@ namespace fs = std::filesystem;
 using nlohmann::json;
 
 namespace {
-
-// The scene moved to each column's time, its rays rebuilt there.
-class MovingScene {
- public:
-  MovingScene(const config::RunConfig& config, const scene::AnimatedScene& animated,
-              scene::Scene scene, int threads)
-      : animated_(animated), scene_(std::move(scene)), threads_(threads) {
-    traced_.materials =
-        ir::materialVertices(scene_, ir::vertexModelOf(config.render.materials));
-    traced_.medium = config.render.medium;
-  }
-  const lidar::WaveformScene& at(double t_s) {
-    if (!rays_ || t_s != time_s_) {
-      rays_.reset();  // it holds the scene: gone before the scene moves
-      animated_.updateScene(scene_, t_s);
-      rays_.emplace(scene_, threads_);
-      traced_.rays = &*rays_;
-      time_s_ = t_s;
-    }
-    return traced_;
-  }
-
- private:
-  const scene::AnimatedScene& animated_;
-  scene::Scene scene_;
-  int threads_;
-  std::optional<rays::RayScene> rays_;
-  lidar::WaveformScene traced_;
-  double time_s_ = 0.0;
-};
 
 std::string frameFolder(std::size_t k) {
   char name[32];
@@ -93,7 +62,10 @@ RunSummary runLidarSequence(const config::RunConfig& config, const RunOptions& o
   checkOutputsFit(estimate, config, folder.staging());
 
   const int threads = resolveThreads(config.cpu_threads);
-  MovingScene moving(config, animated, std::move(rest), threads);
+  std::vector<physics::ScatterVertex> materials =
+      ir::materialVertices(rest, ir::vertexModelOf(config.render.materials));
+  lidar::AnimatedWaveformScene moving(animated, std::move(rest), std::move(materials),
+                                      config.render.medium, threads);
   const lidar::SceneAtTime sceneAt = [&](double t_s) -> const lidar::WaveformScene& {
     return moving.at(t_s);
   };
@@ -107,7 +79,7 @@ RunSummary runLidarSequence(const config::RunConfig& config, const RunOptions& o
         lidar::renderRollingWaveforms(lidar.spec, sceneAt, config.render.time, t,
                                       lidar.rotation_rate_Hz, threads, !config.sensors.empty());
     const lidar::LidarReturns returns =
-        lidar::lidarReturns(lidar.spec, waveforms, lidar.rotation_rate_Hz);
+        lidar::lidarReturns(lidar.spec, waveforms, lidar.rotation_rate_Hz, threads);
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     throwIfInterrupted();

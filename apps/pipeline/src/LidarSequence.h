@@ -4,7 +4,7 @@
 // sequence's time t_k: each azimuth column fires at its own time (t_k +
 // (azimuth - start) / 360 / rotation_rate, RollingScan.h) and is traced
 // against the scene there (its glTF animations played, the moving meshes
-// re-baked and the rays rebuilt per column). The frames are written as a
+// re-baked and updated in the rays' BVH per column: AnimatedWaveformScene). The frames are written as a
 // lidar render's files into OUTDIR/frame_NNNNN/, beside OUTDIR/sequence.json
 // (each frame's time, seed and folder) and config.effective.yaml; the whole
 // set is staged and swapped in at once (no resume of an interrupted set).

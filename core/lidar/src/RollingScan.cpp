@@ -9,6 +9,27 @@ double firingOffset_s(const LidarSpec& spec, int32_t azimuth, double rotation_ra
   return (spec.azimuthOf_deg(azimuth) - spec.azimuth_start_deg) / 360.0 / rotation_rate_Hz;
 }
 
+AnimatedWaveformScene::AnimatedWaveformScene(const scene::AnimatedScene& animated,
+                                             scene::Scene scene,
+                                             std::vector<physics::ScatterVertex> materials,
+                                             const capture::Medium& medium, int threads)
+    : animated_(animated), scene_(std::move(scene)), threads_(threads) {
+  traced_.materials = std::move(materials);
+  traced_.medium = medium;
+}
+
+const WaveformScene& AnimatedWaveformScene::at(double t_s) {
+  if (time_s_ == t_s) return traced_;
+  animated_.updateScene(scene_, t_s);
+  if (!rays_ || !rays_->updateMeshes(animated_.movingMeshes())) {
+    rays_.reset();  // it holds the scene's meshes: gone before the new one
+    rays_.emplace(scene_, threads_);
+  }
+  traced_.rays = &*rays_;
+  time_s_ = t_s;
+  return traced_;
+}
+
 namespace {
 
 struct alignas(64) BeamLight {  // a line each: a column's rings fill theirs on several threads

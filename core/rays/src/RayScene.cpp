@@ -43,6 +43,7 @@ RayScene::RayScene(const scene::Scene& scene, int threads) : scene_(scene) {
   // Robust: watertight traversal, so rays through shared edges never slip through.
   rtcSetSceneFlags(rtcScene_, RTC_SCENE_FLAG_ROBUST);
   rtcSetSceneBuildQuality(rtcScene_, RTC_BUILD_QUALITY_HIGH);
+  builtVertices_.assign(scene.meshes.size(), 0);
   for (std::size_t m = 0; m < scene.meshes.size(); ++m) {
     const scene::Mesh& mesh = scene.meshes[m];
     if (mesh.triangleCount() == 0) continue;
@@ -61,6 +62,7 @@ RayScene::RayScene(const scene::Scene& scene, int threads) : scene_(scene) {
     std::copy_n(mesh.indices.data(), mesh.triangleCount() * 3, indices);
     rtcCommitGeometry(geometry);
     rtcAttachGeometryByID(rtcScene_, geometry, static_cast<unsigned>(m));
+    builtVertices_[m] = mesh.positions_world.size();
     rtcReleaseGeometry(geometry);
   }
   rtcCommitScene(rtcScene_);
@@ -68,6 +70,33 @@ RayScene::RayScene(const scene::Scene& scene, int threads) : scene_(scene) {
   packets_ = rtcGetDeviceProperty(device_, RTC_DEVICE_PROPERTY_NATIVE_RAY8_SUPPORTED) != 0;
   const scene::Bounds b = scene.bounds();
   epsilon_m_ = std::max(1e-5f * glm::length(b.max - b.min), 1e-7f);
+}
+
+bool RayScene::updateMeshes(const std::vector<std::size_t>& moved) {
+  for (std::size_t m : moved) {
+    const scene::Mesh& mesh = scene_.meshes[m];
+    RTCGeometry geometry = mesh.triangleCount() == 0
+                               ? nullptr
+                               : rtcGetGeometry(rtcScene_, static_cast<unsigned>(m));
+    if (mesh.triangleCount() != 0 && geometry == nullptr) return false;
+    if (geometry != nullptr && builtVertices_[m] != mesh.positions_world.size()) return false;
+    if (mesh.triangleCount() == 0 && builtVertices_[m] != 0) return false;
+  }
+  for (std::size_t m : moved) {
+    const scene::Mesh& mesh = scene_.meshes[m];
+    if (mesh.triangleCount() == 0) continue;
+    RTCGeometry geometry = rtcGetGeometry(rtcScene_, static_cast<unsigned>(m));
+    auto* vertices =
+        static_cast<float*>(rtcGetGeometryBufferData(geometry, RTC_BUFFER_TYPE_VERTEX, 0));
+    for (std::size_t i = 0; i < mesh.positions_world.size(); ++i) {
+      for (int k = 0; k < 3; ++k) vertices[3 * i + k] = mesh.positions_world[i][k];
+    }
+    rtcUpdateGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0);
+    rtcCommitGeometry(geometry);
+  }
+  rtcCommitScene(rtcScene_);
+  throwIfDeviceError(device_, "BVH update");
+  return true;
 }
 
 RayScene::~RayScene() {

@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <glm/glm.hpp>
 #include <optional>
+#include <vector>
 
 #include "tofsim/scene/Scene.h"
 
@@ -56,6 +57,13 @@ class RayScene {
   /// coherent packet (a lidar beam's receiver rays): hits[i] for ray i.
   void intersectPacket(const glm::vec3& origin, const glm::vec3* directions, int count,
                        std::optional<SurfaceHit>* hits) const;
+  /// After the scene's meshes `moved` were re-baked in place (same vertex
+  /// and triangle counts: scene::AnimatedScene::updateScene), their vertices
+  /// copied again and the BVH rebuilt on the same device: the hits of a
+  /// RayScene built anew, without a new device per update (a rolling lidar
+  /// scan updates per azimuth column). Returns false, changing nothing, when
+  /// a mesh's counts differ from what was built: build a new RayScene then.
+  bool updateMeshes(const std::vector<std::size_t>& moved);
   /// True when something lies strictly between `from` and `to`. `from` should
   /// already be offset off its surface (see offsetOrigin).
   bool occluded(const glm::vec3& from, const glm::vec3& to) const;
@@ -78,6 +86,7 @@ class RayScene {
   RTCScene rtcScene_ = nullptr;
   float epsilon_m_ = 1e-5f;
   bool packets_ = false;  ///< the device traces 8-wide packets natively
+  std::vector<std::size_t> builtVertices_;  ///< per mesh slot: vertices built (0: none)
 };
 
 }  // namespace tofsim::rays
