@@ -137,6 +137,11 @@ TEST_F(LidarRunTest, ARollingSequenceSeesEachColumnAtItsOwnTime) {
       EXPECT_NEAR(range.data[a], want, 0.01) << "frame " << k << ", azimuth " << azimuth;
     }
   }
+  // The effective config is the same run again.
+  const config::RunConfig again = config::loadRunConfig(out / "config.effective.yaml");
+  ASSERT_TRUE(again.lidar && again.sequence);
+  EXPECT_EQ(config::effectiveConfigYaml(again), config::effectiveConfigYaml(c));
+  EXPECT_EQ(again.sequence->times_s, c.sequence->times_s);
 }
 
 struct BadLidar {
