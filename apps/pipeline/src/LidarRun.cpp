@@ -36,6 +36,12 @@ OutputEstimate lidarOutputs(const config::RunConfig& config) {
     e.items.push_back({"sensors/" + spec.name, beams * config.render.time.bins * 4 * 2,
                        keys + " x the sensor's bins"});
   }
+  if (config.sequence) {  // a rolling scan's frames, each a frame's files (LidarSequence.h)
+    for (OutputItem& item : e.items) {
+      item.bytes *= config.sequence->times_s.size();
+      item.drivenBy += " x the sequence's frames";
+    }
+  }
   return e;
 }
 

@@ -54,12 +54,7 @@ RunSummary runLidarSequence(const config::RunConfig& config, const RunOptions& o
       options.outputDirectory.empty() ? config.output.directory : options.outputDirectory;
   StagedFolder folder(summary.outputDirectory, keptAcrossRenders);
   noteLinkedOutput(folder, progress);
-  OutputEstimate estimate = lidarOutputs(config);
-  for (OutputItem& item : estimate.items) {
-    item.bytes *= seq.times_s.size();
-    item.drivenBy += " x sequence frames";
-  }
-  checkOutputsFit(estimate, config, folder.staging());
+  checkOutputsFit(lidarOutputs(config), config, folder.staging());
 
   const int threads = resolveThreads(config.cpu_threads);
   std::vector<physics::ScatterVertex> materials =
