@@ -90,7 +90,10 @@ RunSummary runLidarRender(const config::RunConfig& config, PreparedRenderer& pre
                               ir::materialVertices(scene, ir::vertexModelOf(config.render.materials)),
                               config.render.medium};
   // The dense volume only for the sensors that read it: waveforms.npy is
-  // streamed from the beams' nonzero bins, the returns found on them.
+  // streamed from the beams' nonzero bins, the returns found on them. Light
+  // added to the waveforms after this render (multipath, a medium's
+  // backscatter) needs the volume kept: the files, the plot and the returns
+  // then read it (LidarWaveforms::beamWaveform, lidarReturns).
   const lidar::LidarWaveforms waveforms = lidar::renderDirectWaveforms(
       config.lidar->spec, traced, config.render.time, threads, !config.sensors.empty());
   const lidar::LidarReturns returns =
