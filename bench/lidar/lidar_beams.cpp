@@ -2,7 +2,10 @@
 // renderDirectWaveforms: receiver rays through Embree, each beam's waveform
 // on the time axis) and, on the same frame, the echoes and returns
 // (lidarReturns), on a glTF scene (default: configs/scenes/lidar_street.gltf,
-// the lidar 1.8 m above its street, spin axis +y).
+// the lidar 1.8 m above its street, spin axis +y). Both ways a run makes
+// them: with the dense (channels, azimuths, bins) volume (what a sensor on
+// the waveforms needs) and without it, the returns found on each beam's
+// nonzero bins (a frame whose waveforms no sensor reads).
 //
 // Usage: tofsim_lidar_beams [channels] [azimuths] [bins] [beam_rays] [threads] [repeats] [scene]
 // Defaults: 16 1800 1000 16 0 (all cores) 3. Prints the best of the repeats.
@@ -11,6 +14,7 @@
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
+#include <optional>
 #include <string>
 
 #include "tofsim/ir/MaterialVertex.h"
@@ -63,6 +67,34 @@ int main(int argc, char** argv) {
   // the waveforms cost beyond tracing.
   const std::vector<lidar::BeamRay> beamRays =
       lidar::beamRays(spec.beam_rays, spec.divergence_rad, spec.profile);
+  // The same rays as Embree packets, a beam's rays traced together.
+  const auto tracePackets = [&] {
+    std::vector<double> sums(static_cast<std::size_t>(channels) * azimuths / 256 + 1, 0.0);
+    parallelForBlocks(static_cast<std::size_t>(channels) * azimuths, 256, threads,
+                      [&](std::size_t begin, std::size_t end) {
+                        constexpr int kPacket = rays::RayScene::kPacketSize;
+                        glm::vec3 d[kPacket];
+                        std::optional<rays::SurfaceHit> hits[kPacket];
+                        for (std::size_t b = begin; b < end; ++b) {
+                          const lidar::BeamFrame f = lidar::beamFrame(
+                              lidar::beamDirection(spec, static_cast<int32_t>(b / azimuths),
+                                                   static_cast<int32_t>(b % azimuths)),
+                              spec.up_world);
+                          for (std::size_t first = 0; first < beamRays.size(); first += kPacket) {
+                            const int n = static_cast<int>(
+                                std::min<std::size_t>(kPacket, beamRays.size() - first));
+                            for (int i = 0; i < n; ++i) {
+                              d[i] = lidar::rayDirection(f, beamRays[first + i].offset_rad);
+                            }
+                            rayScene.intersectPacket(spec.position_world, d, n, hits);
+                            for (int i = 0; i < n; ++i) {
+                              if (hits[i]) sums[begin / 256] += hits[i]->distance_m;
+                            }
+                          }
+                        }
+                      });
+    return sums[0];
+  };
   const auto traceAll = [&] {
     std::vector<double> sums(static_cast<std::size_t>(channels) * azimuths / 256 + 1, 0.0);
     parallelForBlocks(static_cast<std::size_t>(channels) * azimuths, 256, threads,
@@ -87,8 +119,15 @@ int main(int argc, char** argv) {
     (void)traceAll();
     bestTrace = std::min(bestTrace, seconds(start));
   }
+  double bestPackets = 1e300;
+  for (int r = 0; r < repeats; ++r) {
+    const auto start = std::chrono::steady_clock::now();
+    (void)tracePackets();
+    bestPackets = std::min(bestPackets, seconds(start));
+  }
   double best = 1e300, bestReturns = 1e300;
-  std::size_t points = 0;
+  double bestSparse = 1e300, bestSparseReturns = 1e300, bestFrame = 1e300;
+  std::size_t points = 0, sparsePoints = 0;
   for (int r = 0; r < repeats; ++r) {
     const auto start = std::chrono::steady_clock::now();
     const lidar::LidarWaveforms w = lidar::renderDirectWaveforms(spec, traced, axis, threads);
@@ -96,6 +135,16 @@ int main(int argc, char** argv) {
     const auto returnsStart = std::chrono::steady_clock::now();
     points = lidar::lidarReturns(spec, w.volume, 10.0).points.size();
     bestReturns = std::min(bestReturns, seconds(returnsStart));
+  }
+  for (int r = 0; r < repeats; ++r) {
+    const auto start = std::chrono::steady_clock::now();
+    const lidar::LidarWaveforms w =
+        lidar::renderDirectWaveforms(spec, traced, axis, threads, false);
+    bestSparse = std::min(bestSparse, seconds(start));
+    const auto returnsStart = std::chrono::steady_clock::now();
+    sparsePoints = lidar::lidarReturns(spec, w, 10.0, threads).points.size();
+    bestSparseReturns = std::min(bestSparseReturns, seconds(returnsStart));
+    bestFrame = std::min(bestFrame, seconds(start));
   }
   const double beams = double(channels) * azimuths;
   std::printf("scene %s, %d x %d beams, %d bins, %d rays per beam, %d threads\n", scenePath.c_str(),
@@ -105,5 +154,11 @@ int main(int argc, char** argv) {
   std::printf("waveforms: %.3f s = %.0f beams/s (%.0f rays/s); returns: %.3f s = %.0f beams/s; "
               "%zu points\n",
               best, beams / best, beams * rays / best, bestReturns, beams / bestReturns, points);
+  std::printf("rays alone, packets: %.3f s = %.0f beams/s (%.0f rays/s)\n", bestPackets,
+              beams / bestPackets, beams * rays / bestPackets);
+  std::printf("waveforms, no volume: %.3f s = %.0f beams/s; returns: %.3f s; waveforms and "
+              "returns: %.3f s = %.0f beams/s; %zu points\n",
+              bestSparse, beams / bestSparse, bestSparseReturns, bestFrame, beams / bestFrame,
+              sparsePoints);
   return 0;
 }

@@ -2,8 +2,9 @@
 // writes agree with each other, a SPAD sensor runs on the waveforms (pixels
 // = beams), the effective config loads again to the same run; bad input
 // (no channels, a zero step, a divergence <= 0, an unknown preset, a raster
-// scan with channels, `lidar` beside `camera` or `nlos`) ends in a located
-// error, exit 1 and no output folder.
+// scan with channels, `lidar` beside `camera` or `nlos`, a sequence of a
+// still scene or with a camera's video) ends in a located error, exit 1 and
+// no output folder; a rolling scan of a moving plate through the config.
 
 #include <gtest/gtest.h>
 
@@ -12,6 +13,7 @@
 #include <nlohmann/json.hpp>
 
 #include "pipeline/CliRun.h"
+#include "scene/AnimatedGltfFiles.h"
 #include "support/TempDir.h"
 #include "tofsim/config/LidarConfig.h"
 #include "tofsim/config/RunConfig.h"
@@ -91,6 +93,57 @@ TEST_F(LidarRunTest, ARunWritesItsFilesAndASpadCountsItsBeams) {
   EXPECT_EQ(again.lidar->spec.elevations_deg, c.lidar->spec.elevations_deg);
 }
 
+// A rolling scan through the pipeline: a plate 5 m + 30 m/s t ahead of the
+// lidar (along +z), two frames, each the turn from its own time; every
+// column's range is the plate's at its firing time (the closed form of
+// LidarRollingScanTest, here through the config, the scene's animation and
+// the files).
+TEST_F(LidarRunTest, ARollingSequenceSeesEachColumnAtItsOwnTime) {
+  test::AnimatedGltf plate;
+  plate.addChannel(0, "translation", {0, 1}, {-20, -20, 5, -20, -20, 35}, "LINEAR");
+  const fs::path scene = test::writeText(
+      dir_ / "plate.gltf",
+      plate.json(R"([{"mesh": 0, "scale": [60, 60, 1], "translation": [-20, -20, 5]}])", "[0]"));
+  const config::RunConfig c = config::loadRunConfig(writeConfig(
+      "scene: " + scene.string() +
+      "\n"
+      "lidar:\n"
+      "  position: [0, 0, 0]\n"
+      "  orientation: {look_at: [0, 0, 1], up: [0, 1, 0]}\n"
+      "  channels: [0]\n"
+      "  azimuth: {start: -20, end: 20, step: 4}\n"
+      "  rotation_rate: 10 Hz\n"
+      "  returns: {mode: first, max: 1}\n"
+      "time: {bin_width: 10 ps, bins: 10000}\n"
+      "sequence: {times: [0.2 s, 0.3 s]}\n"));
+  pipeline::RunOptions options;
+  options.outputDirectory = dir_ / "out";
+  options.quiet = true;
+  pipeline::runRender(c, options);
+  const fs::path out = dir_ / "out";
+  const nlohmann::json seq = nlohmann::json::parse(std::ifstream(out / "sequence.json"));
+  ASSERT_EQ(seq["frames"].size(), 2u);
+  for (std::size_t k = 0; k < 2; ++k) {
+    const double start = seq["frames"][k]["time_s"].get<double>();
+    const fs::path frame = out / seq["frames"][k]["folder"].get<std::string>();
+    const io::NpyArray range = io::readNpy(frame / "range.npy");
+    ASSERT_EQ(range.shape, (std::vector<std::size_t>{1, 10}));
+    EXPECT_EQ(io::readNpy(frame / "waveforms.npy").shape,
+              (std::vector<std::size_t>{1, 10, 10000}));
+    for (std::size_t a = 0; a < 10; ++a) {
+      const double azimuth = -20.0 + 4.0 * a;
+      const double t = start + (azimuth + 20.0) / 360.0 / 10.0;
+      const double want = (5.0 + 30.0 * t) / std::cos(azimuth * M_PI / 180.0);
+      EXPECT_NEAR(range.data[a], want, 0.01) << "frame " << k << ", azimuth " << azimuth;
+    }
+  }
+  // The effective config is the same run again.
+  const config::RunConfig again = config::loadRunConfig(out / "config.effective.yaml");
+  ASSERT_TRUE(again.lidar && again.sequence);
+  EXPECT_EQ(config::effectiveConfigYaml(again), config::effectiveConfigYaml(c));
+  EXPECT_EQ(again.sequence->times_s, c.sequence->times_s);
+}
+
 struct BadLidar {
   const char* name;
   std::string yaml;
@@ -115,6 +168,10 @@ TEST_F(LidarRunTest, BadInputIsALocatedErrorAndWritesNothing) {
        replace("  beam_divergence", "  scan: raster\n  beam_divergence"), ":5:"},
       {"a camera too", base + "camera: {resolution: [4, 4]}\n", ":10:"},
       {"an nlos scan too", base + "nlos: {relay_wall: wall}\n", ":10:"},
+      {"a sequence of a still scene", base + "sequence: {times: [0 s]}\n", ":10:"},
+      {"a sequence's video", base + "sequence: {times: [0 s], video: false}\n", ":10:"},
+      {"a sequence's exposure samples", base + "sequence: {times: [0 s], exposure_samples: 2}\n",
+       ":10:"},
   };
   for (const BadLidar& bad : cases) {
     const fs::path config = writeConfig(bad.yaml);

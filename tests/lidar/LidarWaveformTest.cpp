@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstring>
 #include <limits>
 
 #include "support/AnalyticScenes.h"
@@ -17,6 +18,7 @@
 #include "tofsim/lidar/DirectWaveforms.h"
 #include "tofsim/lidar/Echoes.h"
 #include "tofsim/lidar/LidarReturns.h"
+#include "tofsim/scene/GltfLoader.h"
 
 namespace tofsim::lidar {
 namespace {
@@ -175,6 +177,89 @@ TEST(LidarWaveformTest, TheSameBytesOnAnyThreadCount) {
   const LidarWaveforms one = renderDirectWaveforms(spec, room.traced, axis, 1);
   const LidarWaveforms two = renderDirectWaveforms(spec, room.traced, axis, 2);
   EXPECT_EQ(one.volume.values(), two.volume.values());
+}
+
+// A frame rendered without its dense volume (returns found on each beam's
+// nonzero bins) gives the volume's returns to the bit, and its bins are the
+// volume's: a room with a plate across half of it, so that beams over the
+// plate's edges return two echoes.
+TEST(LidarWaveformTest, TheReturnsAreTheSameWithOrWithoutTheVolume) {
+  scene::Scene s = test::makeClosedBox(4.0f, glm::vec3(0.5f));
+  test::addQuad(s, glm::vec3(1.0f, 0.8f, 0.0f), glm::vec3(-1, 0, 0), 1.6f, glm::vec3(0.8f));
+  Traced room(std::move(s));
+  LidarSpec spec = spinning(glm::vec3(0.0f), {-12.0, -4.0, 0.0, 4.0, 12.0}, 1.0);
+  spec.divergence_rad = 0.03;  // wide beams: many over an edge
+  spec.returns.mode = ReturnMode::All;
+  spec.returns.max = 4;
+  spec.returns.separation_m = 0.05;
+  const TimeAxis axis = axisTo(4.0);
+  const LidarWaveforms dense = renderDirectWaveforms(spec, room.traced, axis, 2, true);
+  for (int threads : {1, 2}) {
+    const LidarWaveforms sparse = renderDirectWaveforms(spec, room.traced, axis, threads, false);
+    EXPECT_EQ(sparse.volume.size(), 0u);
+    std::vector<float> w(static_cast<std::size_t>(axis.bins));
+    for (std::size_t b = 0; b < sparse.sparse.beams(); ++b) {
+      sparse.beamWaveform(b, w.data());
+      ASSERT_EQ(0, std::memcmp(w.data(), dense.volume.data() + b * dense.volume.pixelStride(),
+                               w.size() * 4))
+          << "beam " << b;
+    }
+    EXPECT_EQ(sparse.lost.before, dense.lost.before);
+    EXPECT_EQ(sparse.lost.after, dense.lost.after);
+    const LidarReturns a = lidarReturns(spec, dense.volume, 10.0);
+    const LidarReturns b = lidarReturns(spec, sparse, 10.0, threads);
+    ASSERT_EQ(a.points.size(), b.points.size());
+    for (std::size_t i = 0; i < a.points.size(); ++i) {
+      const LidarPoint &p = a.points[i], &q = b.points[i];
+      EXPECT_TRUE(p.x == q.x && p.y == q.y && p.z == q.z && p.intensity == q.intensity &&
+                  p.ring == q.ring && p.azimuth_deg == q.azimuth_deg &&
+                  p.return_index == q.return_index && p.time_offset_s == q.time_offset_s)
+          << "point " << i;
+    }
+    EXPECT_EQ(a.range_m.data, b.range_m.data);
+    EXPECT_EQ(a.intensity.data, b.intensity.data);
+    std::size_t twoEchoes = 0;
+    for (std::size_t i = 0; i < a.points.size(); ++i) twoEchoes += a.points[i].return_index == 1;
+    EXPECT_GE(twoEchoes, 5u);  // the comparison covers beams with several echoes (10)
+  }
+}
+
+// A beam's rays traced as Embree packets hit what each ray alone hits, bit
+// for bit: lidar_street's beams along +x (azimuth 0), whose rays' lateral
+// components have both signs, and their neighbours (Embree's
+// coherent-context traversal lost half of such a packet).
+TEST(LidarWaveformTest, PacketsHitWhatTheirRaysHitAlone) {
+  const scene::Scene street = scene::loadGltf(std::string(TOFSIM_SOURCE_DIR) +
+                                              "/configs/scenes/lidar_street.gltf");
+  const rays::RayScene rays(street, 1);
+  LidarSpec spec;
+  spec.position_world = {0.0f, 1.8f, 0.0f};
+  spec.up_world = {0.0f, 1.0f, 0.0f};
+  spec.forward_world = {1.0f, 0.0f, 0.0f};
+  for (int c = 0; c < 16; ++c) spec.elevations_deg.push_back(-15.0 + 2.0 * c);
+  const ReceiverRays receiver(beamRays(16, 3e-3, BeamProfile::Gaussian));
+  constexpr int kPacket = rays::RayScene::kPacketSize;
+  glm::vec3 d[kPacket];
+  std::optional<rays::SurfaceHit> hits[kPacket];
+  int compared = 0;
+  for (int32_t ring = 0; ring < 16; ++ring) {
+    for (int32_t a : {0, 1, 900, 1799}) {
+      const BeamFrame f = beamFrame(beamDirection(spec, ring, a), spec.up_world);
+      for (int first = 0; first < 16; first += kPacket) {
+        for (int i = 0; i < kPacket; ++i) d[i] = rayDirection(f, receiver.tilts[first + i]);
+        rays.intersectPacket(spec.position_world, d, kPacket, hits);
+        for (int i = 0; i < kPacket; ++i) {
+          const std::optional<rays::SurfaceHit> alone = rays.intersect(spec.position_world, d[i]);
+          ASSERT_EQ(bool(alone), bool(hits[i])) << "ring " << ring << ", azimuth " << a;
+          if (!alone) continue;
+          ++compared;
+          EXPECT_EQ(alone->distance_m, hits[i]->distance_m) << "ring " << ring << ", azimuth " << a;
+          EXPECT_EQ(alone->triangle, hits[i]->triangle) << "ring " << ring << ", azimuth " << a;
+        }
+      }
+    }
+  }
+  EXPECT_GT(compared, 300);  // of 512 rays: the highest rings see the sky
 }
 
 TEST(LidarEchoesTest, ModesKeepTheirReturns) {

@@ -219,6 +219,10 @@ std::string effectiveConfigYaml(const RunConfig& config) {
     root["light"] = lightNode(config.light);
   }
   if (config.sequence) root["sequence"] = sequenceNode(*config.sequence);
+  if (config.sequence && config.lidar) {  // a camera's keys, refused beside a lidar
+    root["sequence"].remove("video");
+    root["sequence"].remove("exposure_samples");
+  }
   YAML::Node time;
   emitFields(time, kTimeFields, config.render.time);
   root["time"] = time;

@@ -287,11 +287,33 @@ void parseLidarView(const ConfigNode& root, RunConfig& config) {
   config.lidar = std::move(out);
 }
 
-void checkLidarRun(const ConfigNode& root) {
-  if (root.has("sequence")) {
-    root.failKey("sequence", "a sequence of lidar captures (a rolling scan of a moving scene) is "
-                             "not built yet: remove `sequence` or `lidar`");
+namespace {
+
+// A lidar's `sequence` (rolling scans, beams43): frame k is the turn from
+// t_k, each column at its own time; a camera's video and exposure samples
+// do not apply.
+void checkLidarSequence(const ConfigNode& root) {
+  const auto seq = root.optionalChild("sequence");
+  if (!seq) return;
+  const ConfigNode lidarNode = root.child("lidar");
+  const std::string scan = lidarNode.getString("scan", "spinning");
+  if (scan != "spinning" || lidarNode.has("multipath")) {
+    root.failKey("sequence", "a lidar's sequence is a rolling scan of a spinning lidar without "
+                             "multipath: remove `sequence`, `lidar.multipath` or the grid scan");
   }
+  for (const char* key : {"video", "exposure_samples"}) {
+    if (seq->has(key)) {
+      seq->failKey(key, "does not apply to a lidar's sequence (frame k is the lidar's turn "
+                        "from its time, each azimuth column at its own firing time: "
+                        "configs/README.md, `lidar`)");
+    }
+  }
+}
+
+}  // namespace
+
+void checkLidarRun(const ConfigNode& root) {
+  checkLidarSequence(root);
   if (const auto output = root.optionalChild("output")) {
     for (const char* key : {"steady", "depth", "frames", "video", "frame_pngs", "components",
                             "video_tone_map", "video_stride", "video_window", "video_fps",

@@ -196,18 +196,24 @@ std::string metadataJson(const config::RunConfig& config, const LidarFrame& fram
 
 // waveforms.png: the lidar.plot_beams' waveforms against range, over the
 // bins that hold their light (and 1 m either side), in uW m^-2.
-void writeWaveformPlot(const config::RunConfig& config, const TransientVolume& volume,
+void writeWaveformPlot(const config::RunConfig& config, const lidar::LidarWaveforms& waveforms,
                        const std::filesystem::path& dir, std::vector<std::string>& files) {
   const config::LidarConfig& lidar = *config.lidar;
   if (lidar.plot_beams.empty()) return;
-  const TimeAxis& axis = volume.axis();
+  const TimeAxis& axis = waveforms.axis;
+  const int32_t bins = axis.bins;
+  std::vector<std::vector<float>> beams;
+  for (const auto& [ring, a] : lidar.plot_beams) {
+    beams.emplace_back(static_cast<std::size_t>(bins));
+    waveforms.beamWaveform(static_cast<std::size_t>(ring) * lidar.spec.azimuths() + a,
+                           beams.back().data());
+  }
   const double toRange = axis.camera_unwarp ? axis.index_of_refraction
                                             : 2.0 * axis.index_of_refraction;
   const double binRange_m = axis.bin_width_m() / toRange;
-  int32_t first = volume.bins(), last = -1;
-  for (const auto& [ring, a] : lidar.plot_beams) {
-    const float* w = volume.data() + volume.index(ring, a, 0, 0);
-    for (int32_t b = 0; b < volume.bins(); ++b) {
+  int32_t first = bins, last = -1;
+  for (const std::vector<float>& w : beams) {
+    for (int32_t b = 0; b < bins; ++b) {
       if (w[b] > 0.0f) {
         first = std::min(first, b);
         last = std::max(last, b);
@@ -216,10 +222,11 @@ void writeWaveformPlot(const config::RunConfig& config, const TransientVolume& v
   }
   const auto pad = static_cast<int32_t>(std::ceil(1.0 / binRange_m));
   first = last < 0 ? 0 : std::max(0, first - pad);
-  last = last < 0 ? volume.bins() - 1 : std::min(volume.bins() - 1, last + pad);
+  last = last < 0 ? bins - 1 : std::min(bins - 1, last + pad);
   imaging::LinePlot plot;
-  for (const auto& [ring, a] : lidar.plot_beams) {
-    const float* w = volume.data() + volume.index(ring, a, 0, 0);
+  for (std::size_t i = 0; i < beams.size(); ++i) {
+    const auto& [ring, a] = lidar.plot_beams[i];
+    const std::vector<float>& w = beams[i];
     std::vector<float> series;
     for (int32_t b = first; b <= last; ++b) series.push_back(w[b] * 1e6f);
     plot.series.push_back(std::move(series));
@@ -280,6 +287,30 @@ void writeSensors(const config::RunConfig& config, const TransientVolume& volume
   }
 }
 
+// waveforms.npy (channels, azimuths, T): the volume where kept, else the
+// beams' nonzero bins expanded a block of beams at a time (no frame-sized
+// buffer: 64 x 1024 beams of 1000 bins are 262 MB).
+void writeWaveformsNpy(const lidar::LidarSpec& s, const lidar::LidarWaveforms& waveforms,
+                       const std::filesystem::path& path) {
+  const io::NpyShape shape{std::size_t(s.channels()), std::size_t(s.azimuths()),
+                           std::size_t(waveforms.axis.bins)};
+  if (waveforms.volume.size() > 0) {
+    io::writeNpy(path, shape, waveforms.volume.data());
+    return;
+  }
+  io::NpyStreamWriter out(path, shape);
+  const std::size_t bins = shape[2];
+  const std::size_t beams = waveforms.sparse.beams();
+  constexpr std::size_t kBlock = 256;
+  std::vector<float> block(kBlock * bins);
+  for (std::size_t begin = 0; begin < beams; begin += kBlock) {
+    const std::size_t n = std::min(kBlock, beams - begin);
+    for (std::size_t b = 0; b < n; ++b) waveforms.beamWaveform(begin + b, block.data() + b * bins);
+    out.append(block.data(), n * bins);
+  }
+  out.commit();
+}
+
 }  // namespace
 
 std::vector<std::string> writeLidarFiles(const config::RunConfig& config, const LidarFrame& frame,
@@ -289,9 +320,7 @@ std::vector<std::string> writeLidarFiles(const config::RunConfig& config, const 
   const TransientVolume& volume = frame.waveforms->volume;
   std::vector<std::string> files;
   if (config.output.transient) {
-    io::writeNpy(dir / "waveforms.npy",
-                 {std::size_t(s.channels()), std::size_t(s.azimuths()), std::size_t(volume.bins())},
-                 volume.data());
+    writeWaveformsNpy(s, *frame.waveforms, dir / "waveforms.npy");
     files.push_back("waveforms.npy");
   }
   PlotRanges ranges(config.output.plot_ranges);
@@ -306,8 +335,8 @@ std::vector<std::string> writeLidarFiles(const config::RunConfig& config, const 
   lidar::writePly(dir / "points.ply", frame.returns->points, "tofsim lidar returns");
   lidar::writePcd(dir / "points.pcd", frame.returns->points);
   files.insert(files.end(), {"points.ply", "points.pcd"});
-  writeWaveformPlot(config, volume, dir, files);
-  writeSensors(config, volume, dir, ranges, progress, files);
+  writeWaveformPlot(config, *frame.waveforms, dir, files);
+  if (!config.sensors.empty()) writeSensors(config, volume, dir, ranges, progress, files);
   warnUntakenPlotRanges(ranges.untaken(""));
   std::vector<std::string> listed = files;
   listed.push_back("config.effective.yaml");

@@ -4,6 +4,7 @@
 
 #include "KeptAcrossRenders.h"
 #include "LidarFiles.h"
+#include "LidarSequence.h"
 #include "StagedOutput.h"
 #include "tofsim/pipeline/AxisReport.h"
 #include "tofsim/config/LidarConfig.h"
@@ -37,6 +38,12 @@ OutputEstimate lidarOutputs(const config::RunConfig& config) {
     e.items.push_back({"sensors/" + spec.name, beams * config.render.time.bins * 4 * 2,
                        keys + " x the sensor's bins"});
   }
+  if (config.sequence) {  // a rolling scan's frames, each a frame's files (LidarSequence.h)
+    for (OutputItem& item : e.items) {
+      item.bytes *= config.sequence->times_s.size();
+      item.drivenBy += " x the sequence's frames";
+    }
+  }
   return e;
 }
 
@@ -45,7 +52,11 @@ namespace {
 // As a camera render's check after it (AxisReport.h), for the beams.
 void warnLightOffTheAxis(const lidar::LidarWaveforms& w, const Progress& progress) {
   double onAxis = 0.0;
-  for (float v : w.volume.values()) onAxis += v;
+  if (w.volume.size() > 0) {
+    for (float v : w.volume.values()) onAxis += v;
+  } else {
+    onAxis = w.sparse.total();  // the same sum
+  }
   const double total = onAxis + w.lost.before + w.lost.after;
   if (!(total > 0.0)) return;
   const auto percent = [&](double v) { return std::to_string(100.0 * v / total) + " %"; };
@@ -77,6 +88,7 @@ void addLidarMultipath(const config::RunConfig& config, const lidar::WaveformSce
 
 RunSummary runLidarRender(const config::RunConfig& config, PreparedRenderer& prepared,
                           const RunOptions& options) {
+  if (config.sequence) return runLidarSequence(config, options);  // a rolling scan per frame
   Progress progress("render", options.quiet);
   prepared.prepare(config);
   const scene::Scene& scene = prepared.scene();
@@ -93,14 +105,20 @@ RunSummary runLidarRender(const config::RunConfig& config, PreparedRenderer& pre
   lidar::WaveformScene traced{&rays,
                               ir::materialVertices(scene, ir::vertexModelOf(config.render.materials)),
                               config.render.medium};
-  // Zones: the flood's light over each zone's solid angle (ZoneWaveforms.h).
-  const bool zones = config.lidar->spec.scan == lidar::ScanPattern::Zones;
+  // The dense volume only where something reads or adds to it: the sensors,
+  // the multipath (added after the render) and the zones (ZoneWaveforms.h:
+  // the flood's light over each zone's solid angle, always dense). Else
+  // waveforms.npy is streamed from the beams' nonzero bins and the returns
+  // found on them (LidarWaveforms::beamWaveform, lidarReturns).
+  const lidar::LidarSpec& spec = config.lidar->spec;
+  const bool keepVolume = !config.sensors.empty() || config.lidar->multipath.enabled();
   lidar::LidarWaveforms waveforms =
-      zones ? lidar::renderZoneWaveforms(config.lidar->spec, traced, config.render.time, threads)
-            : lidar::renderDirectWaveforms(config.lidar->spec, traced, config.render.time, threads);
+      spec.scan == lidar::ScanPattern::Zones
+          ? lidar::renderZoneWaveforms(spec, traced, config.render.time, threads)
+          : lidar::renderDirectWaveforms(spec, traced, config.render.time, threads, keepVolume);
   addLidarMultipath(config, traced, threads, waveforms);
   const lidar::LidarReturns returns =
-      lidar::lidarReturns(config.lidar->spec, waveforms.volume, config.lidar->rotation_rate_Hz);
+      lidar::lidarReturns(config.lidar->spec, waveforms, config.lidar->rotation_rate_Hz, threads);
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   summary.backend = "cpu";

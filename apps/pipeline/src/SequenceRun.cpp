@@ -42,25 +42,6 @@ uint64_t sequenceFrameSeed(uint64_t seed, std::size_t frame) {
   return seed + static_cast<uint64_t>(frame) * 0x9E3779B97F4A7C15ull;
 }
 
-namespace {
-
-constexpr const char* kFrameRecord = "frame.json";
-// Where this run's frames are rendered, each committed whole as it is done,
-// inside the sequence's folder and hidden: the earlier set beside it stays
-// complete until the new one swaps in, and a rerun of the same inputs after
-// an interrupt resumes from it. The swap carries it away with the earlier set.
-constexpr const char* kPartialFolder = ".tofsim-sequence-partial";
-
-std::string frameFolder(std::size_t k) {
-  char name[32];
-  std::snprintf(name, sizeof name, "frame_%05zu", k);
-  return name;
-}
-
-json keyJson(const RunContentKey& key) {
-  return {{"config", key.config}, {"scene", key.scene}, {"version", key.version}};
-}
-
 // Frame times the animations do not cover are an error: a glTF channel
 // holds its last key there, so such frames would repeat one pose.
 void checkFrameTimes(const config::SequenceConfig& seq, const scene::AnimatedScene& scene,
@@ -86,6 +67,25 @@ void checkFrameTimes(const config::SequenceConfig& seq, const scene::AnimatedSce
                            seconds(b) + "] s");
     }
   }
+}
+
+namespace {
+
+constexpr const char* kFrameRecord = "frame.json";
+// Where this run's frames are rendered, each committed whole as it is done,
+// inside the sequence's folder and hidden: the earlier set beside it stays
+// complete until the new one swaps in, and a rerun of the same inputs after
+// an interrupt resumes from it. The swap carries it away with the earlier set.
+constexpr const char* kPartialFolder = ".tofsim-sequence-partial";
+
+std::string frameFolder(std::size_t k) {
+  char name[32];
+  std::snprintf(name, sizeof name, "frame_%05zu", k);
+  return name;
+}
+
+json keyJson(const RunContentKey& key) {
+  return {{"config", key.config}, {"scene", key.scene}, {"version", key.version}};
 }
 
 // A frame folder that an earlier run of the same inputs completed.

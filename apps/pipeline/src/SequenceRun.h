@@ -13,7 +13,11 @@
 // is kept: a rerun after an interrupt resumes at its first missing frame,
 // and the earlier set stays whole until the new one replaces it.
 
+#include <filesystem>
+
+#include "tofsim/config/RunConfig.h"
 #include "tofsim/pipeline/RenderRun.h"
+#include "tofsim/scene/AnimatedScene.h"
 
 namespace tofsim::pipeline {
 
@@ -25,5 +29,11 @@ RunSummary runSequenceRender(const config::RunConfig& config, PreparedRenderer& 
 /// Frame k's seed: render.seed for frame 0 (a one-frame sequence of a still
 /// scene is the static render's bytes), a distinct stream for the others.
 uint64_t sequenceFrameSeed(uint64_t seed, std::size_t frame);
+
+/// Throws InputError at `sequence` when the scene has no animation, or a
+/// frame time lies outside its animations (a channel would hold its last
+/// key there: frames repeating one pose).
+void checkFrameTimes(const config::SequenceConfig& seq, const scene::AnimatedScene& scene,
+                     const std::filesystem::path& sceneFile);
 
 }  // namespace tofsim::pipeline

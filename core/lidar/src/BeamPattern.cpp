@@ -55,10 +55,18 @@ BeamFrame beamFrame(const glm::vec3& axis, const glm::vec3& up) {
 }
 
 glm::vec3 rayDirection(const BeamFrame& frame, const glm::vec2& offset_rad) {
+  return rayDirection(frame, rayTilt(offset_rad));
+}
+
+RayTilt rayTilt(const glm::vec2& offset_rad) {
   const float angle = glm::length(offset_rad);
-  if (angle <= 0.0f) return frame.axis;
-  const glm::vec2 unit = offset_rad / angle;
-  return glm::normalize(frame.axis + std::tan(angle) * (unit.x * frame.u + unit.y * frame.v));
+  if (angle <= 0.0f) return {};
+  return {offset_rad / angle, std::tan(angle), false};
+}
+
+glm::vec3 rayDirection(const BeamFrame& frame, const RayTilt& tilt) {
+  if (tilt.onAxis) return frame.axis;
+  return glm::normalize(frame.axis + tilt.tangent * (tilt.unit.x * frame.u + tilt.unit.y * frame.v));
 }
 
 }  // namespace tofsim::lidar

@@ -7,17 +7,18 @@ namespace tofsim::lidar {
 
 namespace {
 
-// The echo of bins [first, last]: energy, and the energy-weighted mean time.
-Echo echoOf(const float* w, int32_t first, int32_t last, const TimeAxis& axis, double legs) {
+// The echo of the nonzero bins b[0 .. n): energy, and the energy-weighted
+// mean time (zero bins add nothing to either: the dense run's sums).
+Echo echoOf(const WaveformBin* b, std::size_t n, const TimeAxis& axis, double legs) {
   Echo e;
-  e.first_bin = first;
-  e.last_bin = last;
+  e.first_bin = b[0].bin;
+  e.last_bin = b[n - 1].bin;
   double weighted = 0.0;
-  for (int32_t b = first; b <= last; ++b) {
-    e.intensity += w[b];
-    weighted += double(w[b]) * axis.binCenter_s(b);
+  for (std::size_t i = 0; i < n; ++i) {
+    e.intensity += b[i].value;
+    weighted += double(b[i].value) * axis.binCenter_s(b[i].bin);
   }
-  e.time_s = e.intensity > 0.0 ? weighted / e.intensity : axis.binCenter_s(first);
+  e.time_s = e.intensity > 0.0 ? weighted / e.intensity : axis.binCenter_s(e.first_bin);
   e.range_m = axis.speedOfLight_m_per_s() * e.time_s / legs;
   return e;
 }
@@ -33,25 +34,34 @@ std::size_t strongestOf(const std::vector<Echo>& echoes, std::size_t skip) {
 
 }  // namespace
 
-std::vector<Echo> findEchoes(const float* waveform, const TimeAxis& axis,
+std::vector<Echo> findEchoes(const WaveformBin* bins, std::size_t count, const TimeAxis& axis,
                              const ReturnSettings& returns) {
   const double legs = axis.camera_unwarp ? 1.0 : 2.0;
   // The separation as bins of optical path: range x eta x legs.
   const double gap_m = returns.separation_m * axis.index_of_refraction * legs;
   const auto gapBins = static_cast<int32_t>(std::ceil(gap_m / axis.bin_width_m()));
   std::vector<Echo> echoes;
-  int32_t first = -1, last = -1;
-  for (int32_t b = 0; b < axis.bins; ++b) {
-    if (!(waveform[b] > returns.threshold)) continue;
-    if (first >= 0 && b - last > gapBins) {
-      echoes.push_back(echoOf(waveform, first, last, axis, legs));
-      first = -1;
+  std::size_t first = count, last = count;  // entries: an echo is [first, last]
+  for (std::size_t i = 0; i < count; ++i) {
+    if (!(bins[i].value > returns.threshold)) continue;
+    if (first < count && bins[i].bin - bins[last].bin > gapBins) {
+      echoes.push_back(echoOf(bins + first, last - first + 1, axis, legs));
+      first = count;
     }
-    if (first < 0) first = b;
-    last = b;
+    if (first == count) first = i;
+    last = i;
   }
-  if (first >= 0) echoes.push_back(echoOf(waveform, first, last, axis, legs));
+  if (first < count) echoes.push_back(echoOf(bins + first, last - first + 1, axis, legs));
   return echoes;
+}
+
+std::vector<Echo> findEchoes(const float* waveform, const TimeAxis& axis,
+                             const ReturnSettings& returns) {
+  std::vector<WaveformBin> bins;
+  for (int32_t b = 0; b < axis.bins; ++b) {
+    if (waveform[b] != 0.0f) bins.push_back({b, waveform[b]});
+  }
+  return findEchoes(bins.data(), bins.size(), axis, returns);
 }
 
 std::vector<Echo> selectReturns(const std::vector<Echo>& echoes, const ReturnSettings& returns) {

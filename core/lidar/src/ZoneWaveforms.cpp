@@ -9,7 +9,9 @@ LidarWaveforms renderZoneWaveforms(const LidarSpec& spec, const WaveformScene& s
                                    const TimeAxis& axis, int threads) {
   const int32_t rows = spec.channels();
   const int32_t columns = spec.azimuths();
-  LidarWaveforms out{TransientVolume(columns, rows, axis, {"intensity"}), {}};
+  LidarWaveforms out;
+  out.volume = TransientVolume(columns, rows, axis, {"intensity"});
+  out.axis = axis;
   const double field_sr = fieldSolidAngle_sr(spec);
   const auto zones = static_cast<std::size_t>(rows) * static_cast<std::size_t>(columns);
   std::vector<WaveformLoss> lost(zones);

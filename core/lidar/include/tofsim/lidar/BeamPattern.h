@@ -47,4 +47,15 @@ struct BeamFrame {
 BeamFrame beamFrame(const glm::vec3& axis, const glm::vec3& up);
 glm::vec3 rayDirection(const BeamFrame& frame, const glm::vec2& offset_rad);
 
+/// A ray's offset as rayDirection uses it, worked out once for every beam
+/// (a frame's beams share their rays' offsets): the offset's unit
+/// direction and the tangent of its angle; the same directions to the bit.
+struct RayTilt {
+  glm::vec2 unit{0.0f};
+  float tangent = 0.0f;
+  bool onAxis = true;
+};
+RayTilt rayTilt(const glm::vec2& offset_rad);
+glm::vec3 rayDirection(const BeamFrame& frame, const RayTilt& tilt);
+
 }  // namespace tofsim::lidar

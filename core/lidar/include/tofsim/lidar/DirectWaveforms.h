@@ -26,6 +26,7 @@
 #include "tofsim/capture/Medium.h"
 #include "tofsim/lidar/BeamPattern.h"
 #include "tofsim/lidar/LidarSpec.h"
+#include "tofsim/lidar/SparseWaveforms.h"
 #include "tofsim/physics/ScatterVertex.h"
 #include "tofsim/rays/RayScene.h"
 #include "tofsim/volume/TransientVolume.h"
@@ -46,6 +47,21 @@ struct WaveformLoss {
   double before = 0.0, after = 0.0;
 };
 
+/// A beam's receiver rays (BeamPattern.h) with their tilts, worked out once
+/// for every beam of a frame.
+struct ReceiverRays {
+  explicit ReceiverRays(std::vector<BeamRay> beamRays);
+  std::vector<BeamRay> rays;
+  std::vector<RayTilt> tilts;
+};
+
+/// Beam (ring, azimuth)'s rays' direct light, each ray's (bin, value) in
+/// ray order appended to `out` (its rays traced as Embree packets from the
+/// lidar's position); what fell off the axis added to `lost`.
+void beamRayBins(const LidarSpec& spec, const ReceiverRays& rays,
+                 const WaveformScene& scene, const TimeAxis& axis, int32_t ring, int32_t azimuth,
+                 std::vector<WaveformBin>& out, WaveformLoss& lost);
+
 /// Adds beam (ring, azimuth)'s direct light into `waveform` (axis.bins
 /// floats); returns what fell off the axis.
 WaveformLoss addBeamWaveform(const LidarSpec& spec, const std::vector<BeamRay>& rays,
@@ -53,14 +69,25 @@ WaveformLoss addBeamWaveform(const LidarSpec& spec, const std::vector<BeamRay>& 
                              int32_t azimuth, float* waveform);
 
 struct LidarWaveforms {
-  /// Height channels, width azimuths, one channel "intensity": pixels are beams.
+  /// Height channels, width azimuths, one channel "intensity": pixels are
+  /// beams. Empty (size() 0) unless asked for (keepVolume).
   TransientVolume volume;
+  /// Every beam's nonzero bins: the same waveforms (the volume, where kept,
+  /// is these expanded).
+  SparseWaveforms sparse;
+  TimeAxis axis;
   WaveformLoss lost;
+  /// Beam b's waveform (axis bins floats) into `out`: the volume's where
+  /// kept (what was added to it after the render included), else the
+  /// sparse bins expanded.
+  void beamWaveform(std::size_t beam, float* out) const;
 };
 
 /// Every beam's waveform, on `threads` threads (0: all) over fixed blocks of
-/// beams: the same bytes for any thread count.
+/// beams: the same bytes for any thread count. The dense volume is made
+/// (and written in blocks, each by the thread that rendered it) only with
+/// keepVolume; the returns need the sparse bins alone.
 LidarWaveforms renderDirectWaveforms(const LidarSpec& spec, const WaveformScene& scene,
-                                     const TimeAxis& axis, int threads);
+                                     const TimeAxis& axis, int threads, bool keepVolume = true);
 
 }  // namespace tofsim::lidar

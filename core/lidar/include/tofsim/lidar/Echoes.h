@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "tofsim/lidar/LidarSpec.h"
+#include "tofsim/lidar/SparseWaveforms.h"
 #include "tofsim/volume/TimeAxis.h"
 
 namespace tofsim::lidar {
@@ -26,6 +27,10 @@ struct Echo {
 
 /// The echoes of one waveform (axis.bins floats), in time order.
 std::vector<Echo> findEchoes(const float* waveform, const TimeAxis& axis,
+                             const ReturnSettings& returns);
+/// The same of a waveform given as its nonzero bins (`count`, in bin order:
+/// SparseWaveforms.h): the same echoes to the bit.
+std::vector<Echo> findEchoes(const WaveformBin* bins, std::size_t count, const TimeAxis& axis,
                              const ReturnSettings& returns);
 
 /// The returns `returns.mode` keeps of `echoes` (in time order), at most

@@ -4,7 +4,9 @@
 
 #include <vector>
 
+#include "tofsim/lidar/DirectWaveforms.h"
 #include "tofsim/lidar/LidarSpec.h"
+#include "tofsim/lidar/SparseWaveforms.h"
 #include "tofsim/lidar/PointCloudFiles.h"
 #include "tofsim/volume/TransientVolume.h"
 
@@ -23,5 +25,13 @@ struct LidarReturns {
 /// at (azimuth - start) / 360 / rotation_rate_Hz after the scan's start.
 LidarReturns lidarReturns(const LidarSpec& spec, const TransientVolume& waveforms,
                           double rotation_rate_Hz);
+/// The same of the beams' nonzero bins (the same returns to the bit), on
+/// `threads` threads (0: all; the same bytes on any count).
+LidarReturns lidarReturns(const LidarSpec& spec, const SparseWaveforms& waveforms,
+                          const TimeAxis& axis, double rotation_rate_Hz, int threads = 1);
+/// Of a render's waveforms: its volume where kept (what was added to it
+/// included), else its nonzero bins.
+LidarReturns lidarReturns(const LidarSpec& spec, const LidarWaveforms& waveforms,
+                          double rotation_rate_Hz, int threads = 1);
 
 }  // namespace tofsim::lidar

@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <glm/glm.hpp>
 #include <optional>
+#include <vector>
 
 #include "tofsim/scene/Scene.h"
 
@@ -49,6 +50,20 @@ class RayScene {
   /// Closest hit along origin + t * direction (direction unit), t in (tNear, inf).
   std::optional<SurfaceHit> intersect(const glm::vec3& origin, const glm::vec3& direction,
                                       float tNear = 0.0f) const;
+  /// Rays in a packet (Embree's rtcIntersect8: AVX2's width).
+  static constexpr int kPacketSize = 8;
+  /// The closest hits of `count` (<= kPacketSize) rays from one origin, as
+  /// intersect(origin, directions[i]) gives them, traced together as one
+  /// coherent packet (a lidar beam's receiver rays): hits[i] for ray i.
+  void intersectPacket(const glm::vec3& origin, const glm::vec3* directions, int count,
+                       std::optional<SurfaceHit>* hits) const;
+  /// After the scene's meshes `moved` were re-baked in place (same vertex
+  /// and triangle counts: scene::AnimatedScene::updateScene), their vertices
+  /// copied again and the BVH rebuilt on the same device: the hits of a
+  /// RayScene built anew, without a new device per update (a rolling lidar
+  /// scan updates per azimuth column). Returns false, changing nothing, when
+  /// a mesh's counts differ from what was built: build a new RayScene then.
+  bool updateMeshes(const std::vector<std::size_t>& moved);
   /// True when something lies strictly between `from` and `to`. `from` should
   /// already be offset off its surface (see offsetOrigin).
   bool occluded(const glm::vec3& from, const glm::vec3& to) const;
@@ -63,10 +78,15 @@ class RayScene {
   float epsilon_m() const { return epsilon_m_; }
 
  private:
+  SurfaceHit completeHit(const glm::vec3& direction, float distance_m, uint32_t geomID,
+                         uint32_t primID, glm::vec2 barycentric) const;
+
   const scene::Scene& scene_;
   RTCDevice device_ = nullptr;
   RTCScene rtcScene_ = nullptr;
   float epsilon_m_ = 1e-5f;
+  bool packets_ = false;  ///< the device traces 8-wide packets natively
+  std::vector<std::size_t> builtVertices_;  ///< per mesh slot: vertices built (0: none)
 };
 
 }  // namespace tofsim::rays

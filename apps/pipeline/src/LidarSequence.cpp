@@ -1,0 +1,118 @@
+#include "LidarSequence.h"
+
+#include <chrono>
+#include <cstdio>
+#include <nlohmann/json.hpp>
+
+#include "KeptAcrossRenders.h"
+#include "LidarFiles.h"
+#include "LidarRun.h"
+#include "SequenceFrame.h"
+#include "SequenceRun.h"
+#include "StagedOutput.h"
+#include "tofsim/config/LidarConfig.h"
+#include "tofsim/ir/IrBackend.h"
+#include "tofsim/ir/MaterialVertex.h"
+#include "tofsim/lidar/LidarReturns.h"
+#include "tofsim/lidar/RollingScan.h"
+#include "tofsim/pipeline/ConfiguredScene.h"
+#include "tofsim/pipeline/Manifest.h"
+#include "tofsim/rays/RayScene.h"
+#include "tofsim/scene/AnimatedScene.h"
+#include "tofsim/util/AtomicFile.h"
+#include "tofsim/util/Interrupt.h"
+#include "tofsim/util/ParallelFor.h"
+
+namespace tofsim::pipeline {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+namespace {
+
+std::string frameFolder(std::size_t k) {
+  char name[32];
+  std::snprintf(name, sizeof name, "frame_%05zu", k);
+  return name;
+}
+
+}  // namespace
+
+RunSummary runLidarSequence(const config::RunConfig& config, const RunOptions& options) {
+  const config::SequenceConfig& seq = *config.sequence;
+  const config::LidarConfig& lidar = *config.lidar;
+  Progress progress("sequence", options.quiet);
+  scene::LoadReport report;
+  const scene::AnimatedScene animated = scene::AnimatedScene::load(config.scene_file, &report);
+  reportLoad(report, progress, true);
+  checkFrameTimes(seq, animated, config.scene_file);
+  scene::Scene rest = animated.restScene();
+  configureScene(config, rest, report);
+
+  RunSummary summary;
+  summary.outputDirectory =
+      options.outputDirectory.empty() ? config.output.directory : options.outputDirectory;
+  StagedFolder folder(summary.outputDirectory, keptAcrossRenders);
+  noteLinkedOutput(folder, progress);
+  checkOutputsFit(lidarOutputs(config), config, folder.staging());
+
+  const int threads = resolveThreads(config.cpu_threads);
+  std::vector<physics::ScatterVertex> materials =
+      ir::materialVertices(rest, ir::vertexModelOf(config.render.materials));
+  lidar::AnimatedWaveformScene moving(animated, std::move(rest), std::move(materials),
+                                      config.render.medium, threads);
+  const lidar::SceneAtTime sceneAt = [&](double t_s) -> const lidar::WaveformScene& {
+    return moving.at(t_s);
+  };
+  json frames = json::array();
+  for (std::size_t k = 0; k < seq.times_s.size(); ++k) {
+    const double t = seq.times_s[k];
+    progress.message("frame " + std::to_string(k + 1) + "/" + std::to_string(seq.times_s.size()) +
+                     ": the turn from t = " + std::to_string(t) + " s");
+    const auto start = std::chrono::steady_clock::now();
+    const lidar::LidarWaveforms waveforms =
+        lidar::renderRollingWaveforms(lidar.spec, sceneAt, config.render.time, t,
+                                      lidar.rotation_rate_Hz, threads, !config.sensors.empty());
+    const lidar::LidarReturns returns =
+        lidar::lidarReturns(lidar.spec, waveforms, lidar.rotation_rate_Hz, threads);
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    throwIfInterrupted();
+    config::RunConfig frameConfig = config;
+    frameConfig.render.seed = sequenceFrameSeed(config.render.seed, k);
+    const std::string name = frameFolder(k);
+    fs::create_directory(folder.staging() / name);
+    const LidarFrame frame{&waveforms, &returns, seconds, threads};
+    for (const std::string& f :
+         writeLidarFiles(frameConfig, frame, folder.staging() / name, progress)) {
+      summary.files.push_back(name + "/" + f);
+    }
+    frames.push_back(
+        {{"index", k}, {"time_s", t}, {"seed", frameConfig.render.seed}, {"folder", name}});
+  }
+  const json doc = {{"frames", frames},
+                    {"count", seq.times_s.size()},
+                    {"rotation_rate_Hz", lidar.rotation_rate_Hz},
+                    {"doc", "frame k: the lidar's turn from time_s, azimuth column a fired at "
+                            "time_s + (azimuth_a - azimuth_start) / 360 / rotation_rate_Hz "
+                            "against the scene there (the points' time_offset)"},
+                    {"animation_start_s", animated.start_s()},
+                    {"animation_end_s", animated.end_s()}};
+  writeFileAtomically(folder.staging() / "sequence.json", doc.dump(2) + "\n");
+  summary.files.push_back("sequence.json");
+  writeFileAtomically(folder.staging() / "config.effective.yaml",
+                      config::effectiveConfigYaml(config));
+  summary.files.push_back("config.effective.yaml");
+  if (options.batchManifest) {
+    writeManifest(folder.staging(), options.batchManifest->runName, summary.files,
+                  options.batchManifest->inputs);
+    summary.files.push_back(kManifestName);
+  }
+  summary.backend = "cpu";
+  summary.device = "CPU (" + std::to_string(threads) + " threads, Embree)";
+  throwIfInterrupted();
+  commitOutput(folder, progress);
+  return summary;
+}
+
+}  // namespace tofsim::pipeline
