@@ -6,16 +6,15 @@
 #include <memory>
 #include <optional>
 
-#include "KeptAcrossRenders.h"
 #include "LidarRun.h"
 #include "NlosRun.h"
 #include "OutputStreams.h"
 #include "ProductWriters.h"
+#include "RunFolder.h"
 #include "RunRecord.h"
 #include "SensorPasses.h"
 #include "SequenceFrame.h"
 #include "SequenceRun.h"
-#include "StagedOutput.h"
 #include "tofsim/imaging/Video.h"
 #include "tofsim/pipeline/CaptureLoop.h"
 #include "tofsim/pipeline/OutputEstimate.h"
@@ -26,7 +25,6 @@
 #include "tofsim/pipeline/RenderCapture.h"
 #include "tofsim/scene/GltfLoader.h"
 #include "tofsim/util/Error.h"
-#include "tofsim/util/Interrupt.h"
 
 namespace tofsim::pipeline {
 
@@ -114,11 +112,8 @@ class OutputSink : public CaptureSink {
         progress_(progress),
         summary_(summary),
         frame_(frame) {
-    summary.outputDirectory =
-        options.outputDirectory.empty() ? config.output.directory : options.outputDirectory;
-    folder_.emplace(summary.outputDirectory, keptAcrossRenders);
-    noteLinkedOutput(*folder_, progress);
-    checkOutputsFit(estimateOutputs(config), config, folder_->staging());
+    folder_.emplace(config, options, estimateOutputs(config), progress);
+    summary.outputDirectory = folder_->path();
     products_ = renderProducts(config);
     // Its encoder loaded before the render, not found missing after it.
     if (config.output.video || (config.sequence && config.sequence->video)) {
@@ -149,8 +144,7 @@ class OutputSink : public CaptureSink {
     // A signal that came during the last step still means "stop": the
     // earlier results stay rather than being replaced by a run the user
     // abandoned.
-    throwIfInterrupted();
-    commitOutput(*folder_, progress_);
+    folder_->commit();
   }
 
  private:
@@ -162,7 +156,7 @@ class OutputSink : public CaptureSink {
   Progress& progress_;
   RunSummary& summary_;
   const SequenceFrame* frame_;
-  std::optional<StagedFolder> folder_;
+  std::optional<RunFolder> folder_;
   std::vector<OutputProduct> products_;
   std::optional<OutputStreams> streams_;
   std::optional<CaptureChain> chain_;
