@@ -17,6 +17,7 @@
 #include "SequenceRun.h"
 #include "tofsim/imaging/Video.h"
 #include "tofsim/pipeline/CaptureLoop.h"
+#include "tofsim/pipeline/Metadata.h"
 #include "tofsim/pipeline/OutputEstimate.h"
 #include "tofsim/pipeline/OutputProducts.h"
 #include "tofsim/pipeline/PlotRanges.h"
@@ -24,6 +25,7 @@
 #include "tofsim/pipeline/Progress.h"
 #include "tofsim/pipeline/RenderCapture.h"
 #include "tofsim/scene/GltfLoader.h"
+#include "tofsim/util/AtomicFile.h"
 #include "tofsim/util/Error.h"
 
 namespace tofsim::pipeline {
@@ -112,14 +114,17 @@ class OutputSink : public CaptureSink {
         progress_(progress),
         summary_(summary),
         frame_(frame) {
-    folder_.emplace(config, options, estimateOutputs(config), progress);
+    OutputEstimate outputs = estimateOutputs(config);
+    if (!options.sharedVolume.empty()) outputs.temporaryBytes += volumeBytes(config);
+    folder_.emplace(config, options, outputs, progress);
     summary.outputDirectory = folder_->path();
     products_ = renderProducts(config);
     // Its encoder loaded before the render, not found missing after it.
     if (config.output.video || (config.sequence && config.sequence->video)) {
       imaging::requireVideoEncoder();
     }
-    streams_.emplace(config, job, folder_->staging(), products_, options.psfOnTransient, progress);
+    streams_.emplace(config, job, folder_->staging(), products_, options.psfOnTransient,
+                     options.sharedVolume, progress);
     SensorStreams* sensors = streams_->sensors();
     if (frame && sensors) {
       renderSensorPasses(config, *frame, *sensors, streams_->consumers(), streams_->bounces(),
@@ -173,6 +178,11 @@ void OutputSink::writeOutputs(const Image& steady) {
   for (const OutputProduct& p : products_) {
     writeProduct(p, config_, job_, dir, steady, summary_, streams, ranges, progress_);
     summary_.files.insert(summary_.files.end(), p.files.begin(), p.files.end());
+  }
+  if (!options_.sharedVolume.empty()) {  // its axis, for the runs that take it
+    writeFileAtomically(options_.sharedVolume / files::kMetadata,
+                        transientMetadataJson(config_, job_, summary_.result, summary_.backend,
+                                              summary_.device));
   }
   CaptureFile* capture = streams.capture();
   if (sensors) {
