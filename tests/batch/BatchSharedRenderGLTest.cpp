@@ -203,5 +203,21 @@ TEST_F(BatchSharedRenderGLTest, AKinectV2FrequencySweepWithALensPsfAndNoSavedVol
   }
 }
 
+// A lidar's runs save waveforms.npy, not the camera volume a shared render's
+// sensors read: a sweep over its sensors renders each run (on 05d73fe the
+// second run took the first's render and failed on a missing transient.json).
+TEST_F(BatchSharedRenderGLTest, ALidarsSensorSweepRendersEachRun) {
+  const std::string batch = test::writeBatchFile(
+      dir_, std::string(TOFSIM_SOURCE_DIR) + "/configs/lidar_street.yaml",
+      "set:\n"
+      "  lidar.azimuth: {start: 0, end: 40, step: 2}\n"
+      "  lidar.plot_beams: []\n"
+      "  sensors: [{type: spad, name: s}]\n"
+      "sweep:\n  product:\n    sensors.0.jitter_fwhm: [30 ps, 60 ps]\n");
+  const CommandResult r = runCli("batch " + batch + " -q");
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  EXPECT_EQ(renderFrom("run0001_jitter_fwhm-60ps"), "run0001_jitter_fwhm-60ps");
+}
+
 }  // namespace
 }  // namespace tofsim
