@@ -100,6 +100,35 @@ nlohmann::json volumeEntry(const VolumeReducer& reducer, const nlohmann::json& t
   return v;
 }
 
+namespace {
+
+// What a volume section shows beside its reduced values.
+struct VolumeSection {
+  const char* kind;                   // the page's kind: "camera", "nlos", "lidar"
+  std::string label;                  // the volume's name on the page
+  std::vector<std::string> axes;      // its image's rows and columns
+  std::string source;                 // the file it was read from
+  std::vector<std::string> channels;  // one name each
+  std::string imageLabel;             // the image: the volume summed over time
+  std::string reduced;                // "The transient", "H", ...: in the reduction note
+};
+
+// The section's volume, its image and the note of what was merged, into the page.
+void setVolume(const VolumeReducer& reducer, const nlohmann::json& meta, const nlohmann::json& time,
+               std::size_t bins, const VolumeSection& section, nlohmann::json& page) {
+  nlohmann::json volume = volumeEntry(reducer, time, bins, section.channels);
+  volume["label"] = section.label;
+  volume["unit"] = textOf(meta, "value_unit");
+  volume["axes"] = section.axes;
+  volume["source"] = section.source;
+  page["kind"] = section.kind;
+  page["volume"] = std::move(volume);
+  page["image"] = imageEntry(reducer, section.channels.size(), section.imageLabel);
+  noteReduction(reducer, section.reduced, page);
+}
+
+}  // namespace
+
 bool addCameraVolume(const std::filesystem::path& folder, nlohmann::json& page) {
   const std::filesystem::path metaPath = folder / pipeline::files::kMetadata;
   if (!isFile(metaPath)) return false;
@@ -121,15 +150,10 @@ bool addCameraVolume(const std::filesystem::path& folder, nlohmann::json& page) 
   }
   std::vector<std::string> names = stringList(meta, "channels");
   names.resize(channels);
-  nlohmann::json volume = volumeEntry(reducer, time, bins, names);
-  volume["label"] = "transient";
-  volume["unit"] = textOf(meta, "value_unit");
-  volume["axes"] = {"y", "x"};
-  volume["source"] = pipeline::savedComponentName(folder, "transient");
-  page["kind"] = "camera";
-  page["volume"] = std::move(volume);
-  page["image"] = imageEntry(reducer, channels, "steady (the transient summed over time)");
-  noteReduction(reducer, "The transient", page);
+  setVolume(reducer, meta, time, bins,
+            {"camera", "transient", {"y", "x"}, pipeline::savedComponentName(folder, "transient"),
+             names, "steady (the transient summed over time)", "The transient"},
+            page);
   return true;
 }
 
@@ -159,15 +183,10 @@ bool addNlosVolume(const std::filesystem::path& folder, nlohmann::json& page) {
       reducer.addPixel(x, y, histogram.data());
     }
   }
-  nlohmann::json volume = volumeEntry(reducer, time, bins, {"H"});
-  volume["label"] = lasers > 1 ? "H (the laser points summed)" : "H";
-  volume["unit"] = textOf(meta, "value_unit");
-  volume["axes"] = {"sx", "sy"};
-  volume["source"] = "H.npy";
-  page["kind"] = "nlos";
-  page["volume"] = std::move(volume);
-  page["image"] = imageEntry(reducer, 1, "H summed over time (rows sx, columns sy)");
-  noteReduction(reducer, "H", page);
+  setVolume(reducer, meta, time, bins,
+            {"nlos", lasers > 1 ? "H (the laser points summed)" : "H", {"sx", "sy"}, "H.npy",
+             {"H"}, "H summed over time (rows sx, columns sy)", "H"},
+            page);
   return true;
 }
 
@@ -190,16 +209,10 @@ bool addLidarVolume(const std::filesystem::path& folder, nlohmann::json& page) {
       reducer.addPixel(r, a, w.data.data() + (r * azimuths + a) * bins);
     }
   }
-  nlohmann::json volume = volumeEntry(reducer, time, bins, {"waveform"});
-  volume["label"] = "waveforms";
-  volume["unit"] = textOf(meta, "value_unit");
-  volume["axes"] = {"ring", "azimuth"};
-  volume["source"] = "waveforms.npy";
-  page["kind"] = "lidar";
-  page["volume"] = std::move(volume);
-  page["image"] =
-      imageEntry(reducer, 1, "the waveforms summed over time (rows rings, columns azimuths)");
-  noteReduction(reducer, "The waveforms", page);
+  setVolume(reducer, meta, time, bins,
+            {"lidar", "waveforms", {"ring", "azimuth"}, "waveforms.npy", {"waveform"},
+             "the waveforms summed over time (rows rings, columns azimuths)", "The waveforms"},
+            page);
   addLidarMap(folder, "range", "m", "the first return's range (0: none)", page);
   addLidarMap(folder, "intensity", textOf(meta, "value_unit"), "the first return's intensity",
               page);
