@@ -3,6 +3,8 @@
 // (with its range and intensity images).
 
 #include <algorithm>
+#include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -127,6 +129,27 @@ void setVolume(const VolumeReducer& reducer, const nlohmann::json& meta, const n
   noteReduction(reducer, section.reduced, page);
 }
 
+// An NLOS or lidar capture: its metadata `json` (with the time axis) and the
+// array `npy` beside it; none when the folder has no `json`.
+struct SavedArray {
+  nlohmann::json meta;
+  nlohmann::json time;
+  std::filesystem::path path;  // of the array
+  io::NpyArray array;
+};
+
+std::optional<SavedArray> readSavedArray(const std::filesystem::path& folder, const char* json,
+                                         const char* npy) {
+  const std::filesystem::path metaPath = folder / json;
+  if (!isFile(metaPath)) return std::nullopt;
+  SavedArray saved;
+  saved.meta = readJsonFile(metaPath);
+  saved.time = timeOf(saved.meta, metaPath);
+  saved.path = folder / npy;
+  saved.array = io::readNpy(saved.path);
+  return saved;
+}
+
 }  // namespace
 
 bool addCameraVolume(const std::filesystem::path& folder, nlohmann::json& page) {
@@ -158,14 +181,11 @@ bool addCameraVolume(const std::filesystem::path& folder, nlohmann::json& page) 
 }
 
 bool addNlosVolume(const std::filesystem::path& folder, nlohmann::json& page) {
-  const std::filesystem::path metaPath = folder / "H.json";
-  if (!isFile(metaPath)) return false;
-  const nlohmann::json meta = readJsonFile(metaPath);
-  const nlohmann::json& time = timeOf(meta, metaPath);
-  const std::filesystem::path hPath = folder / "H.npy";
-  const io::NpyArray h = io::readNpy(hPath);
+  const std::optional<SavedArray> saved = readSavedArray(folder, "H.json", "H.npy");
+  if (!saved) return false;
+  const io::NpyArray& h = saved->array;
   if (h.shape.size() != 3 && h.shape.size() != 5) {
-    throw InputError(FileLoc{hPath.string()}, "",
+    throw InputError(FileLoc{saved->path.string()}, "",
                      "H has " + std::to_string(h.shape.size()) +
                          " axes; an NLOS capture's has 3 (t, sx, sy) or 5 (t, lx, ly, sx, sy)");
   }
@@ -183,7 +203,7 @@ bool addNlosVolume(const std::filesystem::path& folder, nlohmann::json& page) {
       reducer.addPixel(x, y, histogram.data());
     }
   }
-  setVolume(reducer, meta, time, bins,
+  setVolume(reducer, saved->meta, saved->time, bins,
             {"nlos", lasers > 1 ? "H (the laser points summed)" : "H", {"sx", "sy"}, "H.npy",
              {"H"}, "H summed over time (rows sx, columns sy)", "H"},
             page);
@@ -191,14 +211,11 @@ bool addNlosVolume(const std::filesystem::path& folder, nlohmann::json& page) {
 }
 
 bool addLidarVolume(const std::filesystem::path& folder, nlohmann::json& page) {
-  const std::filesystem::path metaPath = folder / "lidar.json";
-  if (!isFile(metaPath)) return false;
-  const nlohmann::json meta = readJsonFile(metaPath);
-  const nlohmann::json& time = timeOf(meta, metaPath);
-  const std::filesystem::path wavePath = folder / "waveforms.npy";
-  const io::NpyArray w = io::readNpy(wavePath);
+  const std::optional<SavedArray> saved = readSavedArray(folder, "lidar.json", "waveforms.npy");
+  if (!saved) return false;
+  const io::NpyArray& w = saved->array;
   if (w.shape.size() != 3) {
-    throw InputError(FileLoc{wavePath.string()}, "",
+    throw InputError(FileLoc{saved->path.string()}, "",
                      "a lidar's waveforms have 3 axes (rings, azimuths, t), not " +
                          std::to_string(w.shape.size()));
   }
@@ -209,13 +226,13 @@ bool addLidarVolume(const std::filesystem::path& folder, nlohmann::json& page) {
       reducer.addPixel(r, a, w.data.data() + (r * azimuths + a) * bins);
     }
   }
-  setVolume(reducer, meta, time, bins,
+  setVolume(reducer, saved->meta, saved->time, bins,
             {"lidar", "waveforms", {"ring", "azimuth"}, "waveforms.npy", {"waveform"},
              "the waveforms summed over time (rows rings, columns azimuths)", "The waveforms"},
             page);
   addLidarMap(folder, "range", "m", "the first return's range (0: none)", page);
-  addLidarMap(folder, "intensity", textOf(meta, "value_unit"), "the first return's intensity",
-              page);
+  addLidarMap(folder, "intensity", textOf(saved->meta, "value_unit"),
+              "the first return's intensity", page);
   return true;
 }
 
