@@ -1,6 +1,8 @@
 # Sourced by the benches that time whole `tofsim render` processes
-# (footprint_cost, camera_optics): one timed run recorded as a table row and
-# a sample, and the samples' medians. The caller sets `out` (its folder).
+# (footprint_cost, camera_optics, capture_loop, medium_vpl_cost,
+# scattering_delay): one timed run recorded as a table row and a sample, the
+# samples' medians, and the tables' headers. The caller sets `out` (its
+# folder), or calls bench_args.
 #
 # timed_render RUN NAME DIR ARGS...: runs `tofsim render ARGS... -q -o DIR`
 # (the binary $TOFSIM, ./build/apps/cli/tofsim unless set)
@@ -33,4 +35,45 @@ ratio_row() {
   awk -v n="$1" -v r="$(median_of "$1" 2)" -v w="$(median_of "$1" 3)" -v c="$(median_of "$1" 4)" \
     -v br="$(median_of "$2" 2)" -v bw="$(median_of "$2" 3)" -v bc="$(median_of "$2" 4)" \
     'BEGIN { printf "| %s | %.3f | %.2fx | %.2f | %.2fx | %.2f | %.2fx |\n", n, r, r / br, w, w / bw, c, c / bc }'
+}
+
+# bench_args RUNS_DEFAULT [RUNS] [OUTDIR]: sets `runs` and `out` (made; a
+# temporary folder unless given) from a bench's last two arguments.
+bench_args() {
+  runs=${2:-$1}
+  out=${3:-$(mktemp -d)}
+  mkdir -p "$out"
+}
+
+# runs_header: the machine's line and the runs table's header.
+runs_header() {
+  echo "commit: $(git rev-parse --short HEAD), $(nproc) CPUs, load: $(cut -d' ' -f1-3 /proc/loadavg)"
+  echo "| run | variant | render s (stats.seconds) | process wall s | process CPU s | max RSS MB |"
+  echo "|---|---|---|---|---|---|"
+}
+
+# medians_header: the medians table's header, after a blank line.
+medians_header() {
+  echo
+  echo "| variant | median render s | ratio | median process wall s | ratio | median process CPU s | ratio |"
+  echo "|---|---|---|---|---|---|---|"
+}
+
+# time_variants BASE ARGS...: each of the caller's `variants` ("NAME:EXTRA
+# ARGS", split at spaces) rendered `runs` times, interleaved so that the
+# machine's load hits them alike, as `tofsim render ARGS... EXTRA...`; the
+# two tables, ratios to variant BASE's medians.
+time_variants() {
+  local base=$1 r v name extra
+  shift
+  runs_header
+  for ((r = 1; r <= runs; ++r)); do
+    for v in "${variants[@]}"; do
+      IFS=: read -r name extra <<<"$v"
+      # shellcheck disable=SC2086
+      timed_render "$r" "$name" "$out/$name.$r" "$@" $extra
+    done
+  done
+  medians_header
+  for v in "${variants[@]}"; do ratio_row "${v%%:*}" "$base"; done
 }

@@ -5,7 +5,7 @@ its geometry, materials and camera."""
 
 import math
 
-from gltf_common import add_camera, add_quads, finish, new_gltf, write_gltf
+from gltf_common import add_camera, add_quads, finish, look_rotation, new_gltf, write_gltf
 
 
 def rect_facing_z(x0, x1, y0, y1, z):
@@ -16,7 +16,7 @@ def rect_facing_z(x0, x1, y0, y1, z):
 def quad_scene(script, scene_name, materials, quads, camera, extras=None):
     """The glTF document of `quads` (add_quads' rows) in Lambertian
     `materials` ((name, (r, g, b)): metallic 0, roughness 1) with one camera
-    (name, vertical fov in degrees, position, rotation quaternion). extras:
+    (name, vertical fov in degrees, position, view direction; +y up). extras:
     a material name's `extras` (a scene's own scattering delay)."""
     blob = bytearray()
     gltf = new_gltf("tofsim scripts/" + script, scene_name,
@@ -25,11 +25,12 @@ def quad_scene(script, scene_name, materials, quads, camera, extras=None):
         if extras and m["name"] in extras:
             m["extras"] = extras[m["name"]]
     add_quads(gltf, blob, quads)
-    name, fov_y_deg, position, rotation = camera
-    add_camera(gltf, name, math.radians(fov_y_deg), position, rotation)
+    name, fov_y_deg, position, forward = camera
+    add_camera(gltf, name, math.radians(fov_y_deg), position, look_rotation(forward))
     return finish(gltf, blob)
 
 
 def write_quad_scene(default_name, *args, **kwargs):
-    """quad_scene(...) written to argv[1] or configs/scenes/<default_name>."""
+    """quad_scene(...) written to argv[1] or configs/scenes/<default_name>:
+    a script's whole main."""
     write_gltf(quad_scene(*args, **kwargs), default_name)

@@ -16,6 +16,7 @@ packages=(
   python3-dev pybind11-dev python3-numpy python3-pytest  # the Python module and its tests
   python3-h5py                                       # tests/io/tal_capture_h5py.py: the captures as h5py sees them
   dpkg-dev file                                      # cpack -G DEB: dpkg-shlibdeps finds the Depends (tests/install)
+  chromium                                           # tests/viewer: `tofsim view`'s page in headless Chromium
 )
 
 bash "$(dirname "$0")/apt-install.sh" "${packages[@]}"

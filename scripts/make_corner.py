@@ -16,7 +16,7 @@ vertical fov. 6 triangles.
 Standard library only. Usage: python3 scripts/make_corner.py [out.gltf]
 """
 
-from gltf_common import look_rotation, sub
+from gltf_common import sub
 from gltf_writer import write_quad_scene
 
 MATERIALS = [("wall_grey", (0.7, 0.7, 0.7)), ("floor_grey", (0.5, 0.5, 0.5))]
@@ -30,14 +30,8 @@ QUADS = [
 
 CAMERA_POS = (1.6, 1.2, 1.6)
 CAMERA_TARGET = (0.0, 0.6, 0.0)
-FOV_Y_DEG = 50.0
-
-
-def main():
-    write_quad_scene("corner.gltf", "make_corner.py", "corner", MATERIALS, QUADS,
-                     ("corner_camera", FOV_Y_DEG, CAMERA_POS,
-                      look_rotation(sub(CAMERA_TARGET, CAMERA_POS))))
-
+# name, vertical fov (deg), position, view direction
+CAMERA = ("corner_camera", 50.0, CAMERA_POS, sub(CAMERA_TARGET, CAMERA_POS))
 
 if __name__ == "__main__":
-    main()
+    write_quad_scene("corner.gltf", "make_corner.py", "corner", MATERIALS, QUADS, CAMERA)

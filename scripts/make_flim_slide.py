@@ -21,7 +21,6 @@ vertical fov. 6 triangles.
 Standard library only. Usage: python3 scripts/make_flim_slide.py [out.gltf]
 """
 
-from gltf_common import look_rotation
 from gltf_writer import rect_facing_z, write_quad_scene
 
 MATERIALS = [("background", (0.5, 0.5, 0.5)), ("dye_short", (0.1, 0.6, 0.1)),
@@ -39,15 +38,9 @@ QUADS = [
     ("dye_b", 2, rect_facing_z(0.01, 0.04, -0.015, 0.015, 0.001), (0, 0, 1)),
 ]
 
-CAMERA_POS = (0.0, 0.0, 0.2)
-FOV_Y_DEG = 30.0
-
-
-def main():
-    write_quad_scene("flim_slide.gltf", "make_flim_slide.py", "flim_slide", MATERIALS, QUADS,
-                     ("flim_camera", FOV_Y_DEG, CAMERA_POS, look_rotation((0.0, 0.0, -1.0))),
-                     extras=EXTRAS)
-
+# name, vertical fov (deg), position, view direction
+CAMERA = ("flim_camera", 30.0, (0.0, 0.0, 0.2), (0.0, 0.0, -1.0))
 
 if __name__ == "__main__":
-    main()
+    write_quad_scene("flim_slide.gltf", "make_flim_slide.py", "flim_slide", MATERIALS, QUADS,
+                     CAMERA, extras=EXTRAS)

@@ -14,7 +14,6 @@ makeClosedBox(2, 0.6)). Camera `box_camera`: at (0, 0, 0.9) m looking down
 Standard library only. Usage: python3 scripts/make_fog_box.py [out.gltf]
 """
 
-from gltf_common import look_rotation
 from gltf_writer import write_quad_scene
 
 MATERIALS = [("wall", (0.6, 0.6, 0.6))]
@@ -29,14 +28,8 @@ QUADS = [
     ("ceiling", 0, [(-1, 1, -1), (1, 1, -1), (1, 1, 1), (-1, 1, 1)], (0, -1, 0)),
 ]
 
-CAMERA_POS = (0.0, 0.0, 0.9)
-FOV_Y_DEG = 60.0
-
-
-def main():
-    write_quad_scene("fog_box.gltf", "make_fog_box.py", "fog_box", MATERIALS, QUADS,
-                     ("box_camera", FOV_Y_DEG, CAMERA_POS, look_rotation((0.0, 0.0, -1.0))))
-
+# name, vertical fov (deg), position, view direction
+CAMERA = ("box_camera", 60.0, (0.0, 0.0, 0.9), (0.0, 0.0, -1.0))
 
 if __name__ == "__main__":
-    main()
+    write_quad_scene("fog_box.gltf", "make_fog_box.py", "fog_box", MATERIALS, QUADS, CAMERA)

@@ -19,7 +19,6 @@ Lambertian (metallic 0, roughness 1); the fog itself is the config's
 Standard library only. Usage: python3 scripts/make_fog_range.py [out.gltf]
 """
 
-from gltf_common import look_rotation
 from gltf_writer import rect_facing_z, write_quad_scene
 
 MATERIALS = [("asphalt", (0.2, 0.2, 0.2)), ("board", (0.8, 0.8, 0.8))]
@@ -32,14 +31,8 @@ QUADS = [
     ("far_board", 1, rect_facing_z(0.1, 1.5, 0.2, 1.8, -12.0), (0, 0, 1)),
 ]
 
-CAMERA_POS = (0.0, 1.0, 0.0)
-FOV_Y_DEG = 24.0
-
-
-def main():
-    write_quad_scene("fog_range.gltf", "make_fog_range.py", "fog_range", MATERIALS, QUADS,
-                     ("fog_camera", FOV_Y_DEG, CAMERA_POS, look_rotation((0.0, 0.0, -1.0))))
-
+# name, vertical fov (deg), position, view direction
+CAMERA = ("fog_camera", 24.0, (0.0, 1.0, 0.0), (0.0, 0.0, -1.0))
 
 if __name__ == "__main__":
-    main()
+    write_quad_scene("fog_range.gltf", "make_fog_range.py", "fog_range", MATERIALS, QUADS, CAMERA)

@@ -16,10 +16,8 @@
 # camera. Usage: bench/camera_optics/run.sh [RUNS=3] [OUTDIR]
 set -euo pipefail
 cd "$(dirname "$0")/../.."
-runs=${1:-3}
-out=${2:-$(mktemp -d)}
-mkdir -p "$out"
 source bench/timed_renders.sh
+bench_args 3 "$@"
 raws=(--set sensors.0.taps=2 --set sensors.0.adc_bits=12 --set sensors.0.adc_gain=0.05
       --set sensors.0.full_well=200000 --set sensors.0.gain_sigma=0.01
       --set sensors.0.offset_sigma=20 --set sensors.0.dark_current=50)
@@ -42,9 +40,7 @@ args_of() {
     all) printf '%s\n' "${raws[@]}" "${lens[@]}" "${vignetting[@]}" "${psf[@]}" "${no_volumes[@]}" ;;
   esac
 }
-echo "commit: $(git rev-parse --short HEAD), $(nproc) CPUs, load: $(cut -d' ' -f1-3 /proc/loadavg)"
-echo "| run | variant | render s (stats.seconds) | process wall s | process CPU s | max RSS MB |"
-echo "|---|---|---|---|---|---|"
+runs_header
 for ((r = 1; r <= runs; ++r)); do
   for v in "${variants[@]}"; do
     mapfile -t extra < <(args_of "$v")
@@ -52,9 +48,7 @@ for ((r = 1; r <= runs; ++r)); do
       --set output.video=false "${extra[@]}"
   done
 done
-echo
-echo "| variant | median render s | ratio | median process wall s | ratio | median process CPU s | ratio |"
-echo "|---|---|---|---|---|---|---|"
+medians_header
 for v in "${variants[@]}"; do
   # Writing the volumes (100 MB here) costs more than most parts and varies
   # with the disk: every part is timed writing none (no transient.json

@@ -14,16 +14,12 @@ set -euo pipefail
 before=$(realpath "$1")
 after=$(realpath "$2")
 cd "$(dirname "$0")/../.."
-runs=${3:-3}
-out=${4:-$(mktemp -d)}
-mkdir -p "$out"
 source bench/timed_renders.sh
+bench_args 3 "${@:3}"
 cases=("nlos:configs/nlos_confocal.yaml --set nlos.sensor_grid=[16,16]"
        "nlos_single:configs/nlos_single.yaml"
        "sequence:configs/moving_block.yaml --set sequence.count=4")
-echo "commit: $(git rev-parse --short HEAD), $(nproc) CPUs, load: $(cut -d' ' -f1-3 /proc/loadavg)"
-echo "| run | variant | render s | process wall s | process CPU s | max RSS MB |"
-echo "|---|---|---|---|---|---|"
+runs_header
 for ((r = 1; r <= runs; ++r)); do
   for c in "${cases[@]}"; do
     name=${c%%:*}
@@ -35,9 +31,7 @@ for ((r = 1; r <= runs; ++r)); do
     done
   done
 done
-echo
-echo "| variant | median render s | ratio | median process wall s | ratio | median process CPU s | ratio |"
-echo "|---|---|---|---|---|---|---|"
+medians_header
 for c in "${cases[@]}"; do
   name=${c%%:*}
   ratio_row "$name-before" "$name-before"

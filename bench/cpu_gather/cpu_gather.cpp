@@ -22,6 +22,8 @@
 #include "tofsim/gl/Context.h"
 #include "tofsim/render/GlBackend.h"
 
+#include "../BenchArgs.h"
+
 namespace {
 
 using namespace tofsim;
@@ -83,17 +85,17 @@ GatherTimes gatherSeconds(const capture::RenderJob& job, ir::IrBackend& backend,
 }  // namespace
 
 int main(int argc, char** argv) {
-  const int threads = argc > 1 ? std::atoi(argv[1]) : 2;
-  const int side = argc > 2 ? std::atoi(argv[2]) : 128;
-  const int rsm = argc > 3 ? std::atoi(argv[3]) : 32;
-  const bool footprint = argc > 4 ? std::atoi(argv[4]) != 0 : true;
+  const int threads = bench::arg(argc, argv, 1, 2);
+  const int side = bench::arg(argc, argv, 2, 128);
+  const int rsm = bench::arg(argc, argv, 3, 32);
+  const bool footprint = bench::arg(argc, argv, 4, 1) != 0;
   test::CornerJob corner(side);
   corner.job.settings.indirect.rsm_resolution = rsm;
   corner.job.settings.pixel_footprint = footprint;
   std::printf("corner %dx%d, rsm %d, %d threads, pixel_footprint %s\n", side, side, rsm, threads,
               footprint ? "true" : "false");
-  const bool cpuOnly = argc > 5 && std::atoi(argv[5]) != 0;
-  if (argc > 6 && std::atoi(argv[6]) != 0) {
+  const bool cpuOnly = bench::arg(argc, argv, 5, 0) != 0;
+  if (bench::arg(argc, argv, 6, 0) != 0) {
     corner.job.settings.medium.sigma_a_per_m = glm::vec3(0.1f);
     std::printf("in an absorbing medium, sigma_a 0.1/m\n");
   }

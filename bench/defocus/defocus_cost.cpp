@@ -20,6 +20,8 @@
 #include "tofsim/ir/IrRenderer.h"
 #include "tofsim/scene/GltfLoader.h"
 
+#include "../BenchArgs.h"
+
 namespace {
 
 using namespace tofsim;
@@ -37,10 +39,10 @@ struct Samples {
 }  // namespace
 
 int main(int argc, char** argv) {
-  const int side = argc > 1 ? std::atoi(argv[1]) : 48;
-  const int runs = argc > 2 ? std::atoi(argv[2]) : 3;
-  const int threads = argc > 3 ? std::atoi(argv[3]) : 2;
-  const int bins = argc > 4 ? std::atoi(argv[4]) : 256;
+  const int side = bench::arg(argc, argv, 1, 48);
+  const int runs = bench::arg(argc, argv, 2, 3);
+  const int threads = bench::arg(argc, argv, 3, 2);
+  const int bins = bench::arg(argc, argv, 4, 256);
   const scene::Scene box = scene::loadGltf(TOFSIM_SOURCE_DIR "/configs/scenes/cornell_box.gltf");
   capture::RenderJob job = test::cornellBoxJob(box, side, bins, 0.01);
   job.settings.indirect.rsm_resolution = 16;

@@ -37,6 +37,8 @@
 #include "tofsim/scene/GltfLoader.h"
 #include "tofsim/volume/PhysicalConstants.h"
 
+#include "../BenchArgs.h"
+
 namespace {
 
 using namespace tofsim;
@@ -160,10 +162,10 @@ int main(int argc, char** argv) {
                  "usage: equal_error SCENE.gltf [resolution] [gl|cpu] [point|box] [bounces]\n");
     return 2;
   }
-  const int resolution = argc > 2 ? std::atoi(argv[2]) : 64;
+  const int resolution = bench::arg(argc, argv, 2, 64);
   const scene::Scene scene = scene::loadGltf(argv[1]);
   const bool multiBounce = argc > 5;
-  const int bounces = multiBounce ? std::atoi(argv[5]) : 1;
+  const int bounces = bench::arg(argc, argv, 5, 1);
   if (bounces < 1 || bounces > 8) {
     std::fprintf(stderr, "equal_error: bounces must be in [1, 8]\n");
     return 2;

@@ -19,6 +19,8 @@
 #include "tofsim/sensors/Random.h"
 #include "tofsim/sensors/TimeKernel.h"
 
+#include "../BenchArgs.h"
+
 using namespace tofsim;
 using namespace tofsim::sensors;
 using namespace tofsim::sensors::detail;
@@ -40,7 +42,7 @@ double microsecondsPerPixel(const std::vector<std::vector<double>>& hs, auto&& s
 }  // namespace
 
 int main(int argc, char** argv) {
-  const int pixels = argc > 1 ? std::atoi(argv[1]) : 2000;
+  const int pixels = bench::arg(argc, argv, 1, 2000);
   std::printf("%6s %8s %9s %10s %12s %12s %12s %8s\n", "bins", "irf_ps", "photons", "fit_us",
               "flim_us", "estim_us", "tau_ns", "iters");
   for (const int bins : {256, 1024, 4096}) {

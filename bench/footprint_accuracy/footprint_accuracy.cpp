@@ -22,6 +22,8 @@
 #include "tofsim/scene/GltfLoader.h"
 #include "tofsim/volume/PhysicalConstants.h"
 
+#include "../BenchArgs.h"
+
 namespace {
 
 using namespace tofsim;
@@ -105,9 +107,9 @@ void compareScene(const char* title, capture::RenderJob job, int spp) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  const int spp = argc > 1 ? std::atoi(argv[1]) : 16384;
-  const int cornerSide = argc > 2 ? std::atoi(argv[2]) : 16;
-  const int cornellSide = argc > 3 ? std::atoi(argv[3]) : 24;
+  const int spp = bench::arg(argc, argv, 1, 16384);
+  const int cornerSide = bench::arg(argc, argv, 2, 16);
+  const int cornellSide = bench::arg(argc, argv, 3, 24);
   test::CornerJob corner(cornerSide);
   corner.job.settings.time = TimeAxis{0.0, kBin_s, 334};  // 0 .. 10 m, as CornerJob's axis
   compareScene("corner", corner.job, spp);

@@ -8,23 +8,10 @@
 # pixel_footprint false. Usage: bench/footprint_cost/run.sh [RUNS=5] [OUTDIR]
 set -euo pipefail
 cd "$(dirname "$0")/../.."
-runs=${1:-5}
-out=${2:-$(mktemp -d)}
-mkdir -p "$out"
 source bench/timed_renders.sh
-variants=("fp_true_vpl_true:true:true" "fp_true_vpl_false:true:false" "fp_false:false:false")
-echo "commit: $(git rev-parse --short HEAD), $(nproc) CPUs, load: $(cut -d' ' -f1-3 /proc/loadavg)"
-echo "| run | variant | render s (stats.seconds) | process wall s | process CPU s | max RSS MB |"
-echo "|---|---|---|---|---|---|"
-for ((r = 1; r <= runs; ++r)); do
-  for v in "${variants[@]}"; do
-    IFS=: read -r name fp vpl <<<"$v"
-    timed_render "$r" "$name" "$out/$name.$r" configs/cornell_box.yaml --backend cpu \
-      --set output.video=false --set 'sensors=[]' \
-      --set render.pixel_footprint=$fp --set render.indirect.vpl_footprint=$vpl
-  done
-done
-echo
-echo "| variant | median render s | ratio | median process wall s | ratio | median process CPU s | ratio |"
-echo "|---|---|---|---|---|---|---|"
-for v in "${variants[@]}"; do ratio_row "${v%%:*}" fp_false; done
+bench_args 5 "$@"
+fp() { echo "--set render.pixel_footprint=$1 --set render.indirect.vpl_footprint=$2"; }
+variants=("fp_true_vpl_true:$(fp true true)" "fp_true_vpl_false:$(fp true false)"
+          "fp_false:$(fp false false)")
+time_variants fp_false configs/cornell_box.yaml --backend cpu --set output.video=false \
+  --set 'sensors=[]'

@@ -37,6 +37,8 @@
 #include "tofsim/scene/GltfLoader.h"
 #include "tofsim/util/ParallelFor.h"
 
+#include "../BenchArgs.h"
+
 namespace {
 
 using namespace tofsim;
@@ -219,9 +221,9 @@ void printByAngle(const Setup& s, const Verdicts& v) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  const int side = argc > 1 ? std::atoi(argv[1]) : 64;
-  const int rsm = argc > 2 ? std::atoi(argv[2]) : 32;
-  const int threads = argc > 3 ? std::atoi(argv[3]) : 2;
+  const int side = bench::arg(argc, argv, 1, 64);
+  const int rsm = bench::arg(argc, argv, 2, 32);
+  const int threads = bench::arg(argc, argv, 3, 2);
   const scene::Scene scene = scene::loadGltf(TOFSIM_SOURCE_DIR "/configs/scenes/cornell_box.gltf");
   Setup s;
   s.job = test::cornellBoxJob(scene, side, 371, 0.006);

@@ -16,23 +16,8 @@
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 backend=${1:-cpu}
-runs=${2:-3}
-out=${3:-$(mktemp -d)}
-mkdir -p "$out"
 source bench/timed_renders.sh
+bench_args 3 "${@:2}"
+echo "backend: $backend"
 variants=("fog:" "fog_albedo0:--set medium.albedo=0" "fog_no_vpls:--set render.indirect.enabled=false")
-echo "commit: $(git rev-parse --short HEAD), $(nproc) CPUs, backend $backend, load: $(cut -d' ' -f1-3 /proc/loadavg)"
-echo "| run | variant | render s (stats.seconds) | process wall s | process CPU s | max RSS MB |"
-echo "|---|---|---|---|---|---|"
-for ((r = 1; r <= runs; ++r)); do
-  for v in "${variants[@]}"; do
-    IFS=: read -r name extra <<<"$v"
-    # shellcheck disable=SC2086
-    timed_render "$r" "$name" "$out/$name.$r" configs/fog_lidar.yaml --backend "$backend" \
-      --set 'sensors=[]' $extra
-  done
-done
-echo
-echo "| variant | median render s | ratio | median process wall s | ratio | median process CPU s | ratio |"
-echo "|---|---|---|---|---|---|---|"
-for v in "${variants[@]}"; do ratio_row "${v%%:*}" fog_albedo0; done
+time_variants fog_albedo0 configs/fog_lidar.yaml --backend "$backend" --set 'sensors=[]'

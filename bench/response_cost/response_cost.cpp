@@ -26,6 +26,8 @@
 #include "tofsim/physics/FootprintBuffer.h"
 #include "tofsim/physics/TemporalResponse.h"
 
+#include "../BenchArgs.h"
+
 namespace {
 
 using namespace tofsim;
@@ -112,10 +114,10 @@ double depositSeconds(int32_t bins, std::size_t count, bool delayed) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  const int threads = argc > 1 ? std::atoi(argv[1]) : 2;
-  const int side = argc > 2 ? std::atoi(argv[2]) : 128;
-  const int rsm = argc > 3 ? std::atoi(argv[3]) : 32;
-  const int repeats = argc > 4 ? std::atoi(argv[4]) : 3;
+  const int threads = bench::arg(argc, argv, 1, 2);
+  const int side = bench::arg(argc, argv, 2, 128);
+  const int rsm = bench::arg(argc, argv, 3, 32);
+  const int repeats = bench::arg(argc, argv, 4, 3);
   test::CornerJob corner(side);
   corner.job.settings.indirect.rsm_resolution = rsm;
   corner.job.settings.pixel_footprint = true;

@@ -16,10 +16,8 @@ set -euo pipefail
 before=$(realpath "$1")
 after=$(realpath "$2")
 cd "$(dirname "$0")/../.."
-runs=${3:-3}
-out=${4:-$(mktemp -d)}
-mkdir -p "$out"
 source bench/timed_renders.sh
+bench_args 3 "${@:3}"
 base="configs/cornell_box.yaml --set render.backend=cpu"
 delay() {  # delay MATERIAL KEY=VALUE...: --set arguments of one material's delay
   local m=$1
@@ -41,9 +39,7 @@ for f in transient.npy direct.npy indirect.npy; do
 done
 rm -rf "$out/bytes-before" "$out/bytes-after"
 
-echo "commit: $(git rev-parse --short HEAD), $(nproc) CPUs, load: $(cut -d' ' -f1-3 /proc/loadavg)"
-echo "| run | variant | render s | process wall s | process CPU s | max RSS MB |"
-echo "|---|---|---|---|---|---|"
+runs_header
 for ((r = 1; r <= runs; ++r)); do
   for c in "${cases[@]}"; do
     IFS=: read -r name binary args <<<"$c"
@@ -51,7 +47,5 @@ for ((r = 1; r <= runs; ++r)); do
     TOFSIM=$binary timed_render "$r" "$name" "$out/$name.$r" "${argv[@]}"
   done
 done
-echo
-echo "| variant | median render s | ratio | median process wall s | ratio | median process CPU s | ratio |"
-echo "|---|---|---|---|---|---|---|"
+medians_header
 for c in "${cases[@]}"; do ratio_row "${c%%:*}" none; done

@@ -26,6 +26,8 @@
 
 #include "tofsim/sensors/Spad.h"
 
+#include "../BenchArgs.h"
+
 namespace {
 
 using namespace tofsim;
@@ -96,12 +98,12 @@ Timed run(const TransientVolume& v, const SpadParams& p, int threads) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  const int side = argc > 1 ? std::atoi(argv[1]) : 128;
-  const int bins = argc > 2 ? std::atoi(argv[2]) : 1000;
-  const long long cycles = argc > 3 ? std::atoll(argv[3]) : 100000;
-  const int threads = argc > 4 ? std::atoi(argv[4]) : 2;
+  const int side = bench::arg(argc, argv, 1, 128);
+  const int bins = bench::arg(argc, argv, 2, 1000);
+  const long long cycles = bench::arg<long long>(argc, argv, 3, 100000);
+  const int threads = bench::arg(argc, argv, 4, 2);
   const std::string modes = argc > 5 ? argv[5] : "both";
-  const double crosstalk = argc > 6 ? std::atof(argv[6]) : 0.0;
+  const double crosstalk = bench::arg(argc, argv, 6, 0.0);
   const std::string effects = argc > 7 ? argv[7] : "none";
   const std::string engine = argc > 8 ? argv[8] : "auto";
   const TransientVolume v = syntheticVolume(side, bins);

@@ -33,6 +33,8 @@
 #include "tofsim/scene/GltfLoader.h"
 #include "tofsim/volume/PhysicalConstants.h"
 
+#include "../BenchArgs.h"
+
 namespace {
 
 using namespace tofsim;
@@ -126,8 +128,8 @@ void printRow(const char* name, int rsm, const Render& n, const Render& ref) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  const int side = argc > 1 ? std::atoi(argv[1]) : 32;
-  const int referenceRsm = argc > 2 ? std::atoi(argv[2]) : 256;
+  const int side = bench::arg(argc, argv, 1, 32);
+  const int referenceRsm = bench::arg(argc, argv, 2, 256);
   const scene::Scene box = scene::loadGltf(TOFSIM_SOURCE_DIR "/configs/scenes/cornell_box.gltf");
   capture::RenderJob job = test::cornellBoxJob(box, side, 640, kBin_s * kSpeedOfLight_m_per_s);
   job.settings.indirect.visibility = capture::Visibility::Exact;

@@ -141,5 +141,83 @@ TEST_F(BatchSharedRenderGLTest, AResumedBatchKeepsEachRunsStateAndItsTable) {
   EXPECT_EQ(stateOf(again.output, "run0002_read_noise-9"), "done") << again.output;
 }
 
+// Issue 44 item 7's own sweep: the kinect-v2 preset's frequencies swept
+// over a render that saves no volume (output.transient: false) and has a
+// lens PSF, which the CW-ToF sensor applies to its raws (PsfPath::Raws).
+// The batch saves the light before the PSF for the other run (a hidden
+// folder, gone at the end); that run's sensors apply the PSF to their raws
+// as a render does: one render, and the bytes of a separate render.
+TEST_F(BatchSharedRenderGLTest, AKinectV2FrequencySweepWithALensPsfAndNoSavedVolumeRendersOnce) {
+  const std::string set =
+      "set:\n"
+      "  camera.resolution: [8, 8]\n"
+      "  camera.psf: {core_sigma: 0.6, halo_weight: 0.04, halo_profile: exponential, "
+      "halo_radius: 3}\n"
+      "  time.bins: 40\n"
+      "  time.bin_width: 50 ps\n"
+      "  render.shadow_map_resolution: 64\n"
+      "  render.indirect.rsm_resolution: 4\n"
+      "  render.indirect.points_per_vpl: 100\n"
+      "  output: {transient: false, components: [], video: false}\n"
+      "  sensors: [{type: cwtof, name: kinect, preset: kinect-v2, channel: 0}]\n";
+  const std::string batch = test::writeBatchFile(
+      dir_, test::kCornellConfig,
+      set + "sweep:\n  product:\n    sensors.0.frequencies: [40 MHz, [20 MHz, 100 MHz]]\n");
+  const CommandResult r = runCli("batch " + batch + " -q");
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  const std::string runs[] = {"run0000_frequencies-40MHz", "run0001_frequencies-20MHz,100MHz"};
+  // One render: only the first run's log says its renderer was made.
+  int renders = 0;
+  for (const std::string& run : runs) {
+    EXPECT_EQ(renderFrom(run), runs[0]) << run;
+    const std::string log = test::fileBytes((dir_ / "out" / run / "log.txt").string());
+    renders += log.find("renderer made") != std::string::npos ? 1 : 0;
+  }
+  EXPECT_EQ(renders, 1);
+  // The saved volume is the batch's, not a run's: gone with the batch.
+  for (const auto& e : fs::directory_iterator(dir_ / "out")) {
+    EXPECT_EQ(e.path().filename().string().rfind(".shared-volumes", 0), std::string::npos)
+        << e.path();
+  }
+  EXPECT_FALSE(fs::exists(dir_ / "out" / runs[1] / "transient.npy"));
+
+  const CommandResult alone = runCli(
+      "render " + test::kCornellConfig +
+      " --set camera.resolution=[8,8] --set 'camera.psf={core_sigma: 0.6, halo_weight: 0.04, "
+      "halo_profile: exponential, halo_radius: 3}' --set time.bins=40 --set 'time.bin_width=50 "
+      "ps' --set render.shadow_map_resolution=64 --set render.indirect.rsm_resolution=4 --set "
+      "render.indirect.points_per_vpl=100 --set 'output={transient: false, components: [], "
+      "video: false}' --set 'sensors=[{type: cwtof, name: kinect, preset: kinect-v2, channel: "
+      "0, frequencies: [20 MHz, 100 MHz]}]' -q -o " +
+      (dir_ / "alone").string());
+  ASSERT_EQ(alone.exitCode, 0) << alone.output;
+  const fs::path shared = dir_ / "out" / runs[1];
+  std::vector<std::string> files = test::visibleFiles(shared);
+  std::erase_if(files, [](const std::string& f) { return f == "manifest.json" || f == "log.txt"; });
+  EXPECT_EQ(files, test::visibleFiles(dir_ / "alone"));
+  EXPECT_GT(files.size(), 40u);  // the raws, the maps with cwtof_psf_error, their pictures
+  for (const std::string& f : files) {
+    EXPECT_TRUE(test::fileBytes((shared / f).string()) ==
+                test::fileBytes((dir_ / "alone" / f).string()))
+        << f;
+  }
+}
+
+// A lidar's runs save waveforms.npy, not the camera volume a shared render's
+// sensors read: a sweep over its sensors renders each run (on 05d73fe the
+// second run took the first's render and failed on a missing transient.json).
+TEST_F(BatchSharedRenderGLTest, ALidarsSensorSweepRendersEachRun) {
+  const std::string batch = test::writeBatchFile(
+      dir_, std::string(TOFSIM_SOURCE_DIR) + "/configs/lidar_street.yaml",
+      "set:\n"
+      "  lidar.azimuth: {start: 0, end: 40, step: 2}\n"
+      "  lidar.plot_beams: []\n"
+      "  sensors: [{type: spad, name: s}]\n"
+      "sweep:\n  product:\n    sensors.0.jitter_fwhm: [30 ps, 60 ps]\n");
+  const CommandResult r = runCli("batch " + batch + " -q");
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  EXPECT_EQ(renderFrom("run0001_jitter_fwhm-60ps"), "run0001_jitter_fwhm-60ps");
+}
+
 }  // namespace
 }  // namespace tofsim

@@ -1,7 +1,8 @@
 // The batch's order of runs that share a render (SharedRenders.h): a run
 // waits while a run of its render key renders, takes the render once that
 // one is done, renders itself when it failed; a run done before is a source
-// from the start; a run that cannot share never waits.
+// from the start, unless its key shares through the batch's saved volume
+// (gone with the batch that saved it); a run that cannot share never waits.
 
 #include "SharedRenders.h"
 
@@ -20,7 +21,7 @@ TEST(SharedRendersTest, RunsOfOneKeyWaitForItsRenderAndTakeIt) {
   const std::vector<RunContentKey> keys = {keyed("a"), keyed("a"), keyed("b"), keyed("a")};
   const std::vector<bool> shareable = {true, true, true, false};
   const std::vector<BatchRunResult> runs(4);
-  SharedRenders shared(keys, shareable, runs);
+  SharedRenders shared(keys, shareable, {false, false, false, false}, runs);
   std::deque<std::size_t> pending = {0, 1, 2, 3};
   auto n = shared.next(pending);  // run 0 renders key a
   ASSERT_TRUE(n);
@@ -46,7 +47,7 @@ TEST(SharedRendersTest, AFailedRenderLetsTheNextRunRenderAndADoneRunServesAtOnce
   const std::vector<RunContentKey> keys = {keyed("a"), keyed("a"), keyed("c"), keyed("c")};
   std::vector<BatchRunResult> runs(4);
   runs[2].status = BatchRunStatus::Skipped;  // done before this batch
-  SharedRenders shared(keys, {true, true, true, true}, runs);
+  SharedRenders shared(keys, {true, true, true, true}, {false, false, false, false}, runs);
   std::deque<std::size_t> pending = {0, 1, 3};
   auto n = shared.next(pending);
   EXPECT_EQ(n->run, 0u);
@@ -56,6 +57,26 @@ TEST(SharedRendersTest, AFailedRenderLetsTheNextRunRenderAndADoneRunServesAtOnce
   shared.ended(0, true, false);  // run 0 failed
   n = shared.next(pending);
   EXPECT_EQ(n->run, 1u);
+  EXPECT_TRUE(n->renders);
+  EXPECT_FALSE(n->source);
+}
+
+// Runs that save no volume share through the batch's saved one: a run done
+// before saved none for this batch, so the first pending run of its key
+// renders, as does a run found done by another batch meanwhile.
+TEST(SharedRendersTest, ARunDoneBeforeServesNoRunSharingThroughTheBatch) {
+  const std::vector<RunContentKey> keys = {keyed("k"), keyed("k"), keyed("k")};
+  std::vector<BatchRunResult> runs(3);
+  runs[0].status = BatchRunStatus::Skipped;  // done before this batch
+  SharedRenders shared(keys, {true, true, true}, {true, true, true}, runs);
+  std::deque<std::size_t> pending = {1, 2};
+  auto n = shared.next(pending);
+  EXPECT_EQ(n->run, 1u);
+  EXPECT_TRUE(n->renders);
+  EXPECT_FALSE(n->source);
+  shared.doneElsewhere(1, true);  // another batch finished it: it saved no volume here
+  n = shared.next(pending);
+  EXPECT_EQ(n->run, 2u);
   EXPECT_TRUE(n->renders);
   EXPECT_FALSE(n->source);
 }

@@ -10,6 +10,7 @@
 #include "tofsim/pipeline/Capture.h"
 #include "tofsim/sensors/WindowLoss.h"
 #include "tofsim/util/Error.h"
+#include "tofsim/volume/PhysicalConstants.h"
 
 namespace tofsim::pipeline {
 
@@ -46,7 +47,11 @@ std::string suggestAxis(const TimeAxis& axis, const capture::ArrivalBounds& boun
                          : (after ? std::max(axis.end_s(), bounds.longest_s()) : axis.end_s());
   const double bins = std::ceil((end - start) / w - 1e-9);
   std::string keys;
-  if (start != axis.start_s) keys = "time.start: " + ns(start);
+  // In both of the forms a config writes a start in (a user who wrote "8 m"
+  // is not left to convert nanoseconds): c t is the optical path.
+  if (start != axis.start_s) {
+    keys = "time.start: " + ns(start) + format(" (%.4g m)", start * kSpeedOfLight_m_per_s);
+  }
   if (bins != axis.bins) {
     keys += (keys.empty() ? "" : ", ") + std::string("time.bins: ") + format("%.0f", bins);
   }

@@ -87,11 +87,10 @@ json runRow(const config::BatchConfig& batch, const BatchRunResult& r) {
               {"sensors", json::object()}};
   const bool finished = r.status == BatchRunStatus::Done || r.status == BatchRunStatus::Skipped;
   if (!finished) return row;
-  if (const std::optional<json> manifest = readJson(r.directory / kManifestName)) {
-    const auto render = manifest->find("render");
-    row["render_from"] = render != manifest->end() && render->contains("from")
-                             ? (*render)["from"]
-                             : json(r.name);
+  try {
+    const ManifestRecord manifest = readManifest(r.directory);
+    row["render_from"] = manifest.renderFrom.empty() ? r.name : manifest.renderFrom;
+  } catch (const InputError&) {  // no readable manifest: no render to name
   }
   try {
     row["sensors"] = sensorSummaries(r.directory);

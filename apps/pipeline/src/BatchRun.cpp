@@ -70,12 +70,17 @@ fs::path lockFile(const BatchRunResult& r) {
   return r.directory.parent_path() / ("." + r.name + ".lock");
 }
 
-// The content key of every run of the shard, and whether it can take its
-// render from another run of its render key (SharedRender.h); the scene
+// Whether each run of the shard can take its render from another run of its
+// render key, and whether through the batch's saved volume (SharedRender.h).
+struct Sharing {
+  std::vector<bool> shareable;
+  std::vector<bool> throughTheBatch;
+};
+
+// The content key of every run of the shard and its Sharing; the scene
 // digest once per scene file, as a sweep usually renders one scene many times.
 std::vector<RunContentKey> runKeys(const config::BatchConfig& batch, const fs::path& base,
-                                   const std::vector<BatchRunResult>& runs,
-                                   std::vector<bool>& shareable,
+                                   const std::vector<BatchRunResult>& runs, Sharing& sharing,
                                    const std::function<void(std::size_t, std::size_t)>& visited) {
   std::map<fs::path, std::string> sceneDigests;
   std::vector<RunContentKey> keys;
@@ -84,7 +89,9 @@ std::vector<RunContentKey> runKeys(const config::BatchConfig& batch, const fs::p
     std::string& scene = sceneDigests[fs::absolute(config.scene_file).lexically_normal()];
     if (scene.empty()) scene = sceneInputsDigest(config.scene_file);
     keys.push_back(runContentKey(config, scene));
-    shareable.push_back(sharedRenderObstacle(config).empty());
+    const bool shareable = sharedRenderObstacle(config).empty();
+    sharing.shareable.push_back(shareable);
+    sharing.throughTheBatch.push_back(shareable && sharesThroughTheBatch(config));
     visited(keys.size(), runs.size());
   }
   return keys;
@@ -211,7 +218,8 @@ namespace {
 // In the worker: the run rendered as `tofsim render <base> --set ... -o <dir>
 // --batch-run <name>` renders it, through the worker's renderer.
 int renderRun(const fs::path& base, const config::BatchRun& run, const BatchRunResult& r,
-              const BatchRunResult* source, PreparedRenderer& prepared) {
+              const BatchRunResult* source, const fs::path& sharedVolume,
+              PreparedRenderer& prepared) {
   return exitCodeOf([&] {
     const config::RunConfig config = config::loadRunConfig(base, run.overrides);
     RunOptions options;
@@ -219,6 +227,7 @@ int renderRun(const fs::path& base, const config::BatchRun& run, const BatchRunR
     options.eglPlatform = gl::eglPlatformFromEnvironment();
     // The key from the config this render loaded: the manifest records what was rendered.
     options.batchManifest = {r.name, runContentKey(config), source ? source->name : ""};
+    options.sharedVolume = sharedVolume;
     if (source) {
       const RunSummary summary = senseFromSavedRender(config, source->directory, prepared, options);
       std::fprintf(stderr, "batch: run '%s' took the render of run '%s'; wrote %zu file(s) to %s\n",
@@ -238,16 +247,17 @@ int renderRun(const fs::path& base, const config::BatchRun& run, const BatchRunR
 }
 
 void runPending(const BatchOptions& options, const config::BatchConfig& batch, const fs::path& base,
-                const std::vector<RunContentKey>& keys, const std::vector<bool>& shareable,
+                const std::vector<RunContentKey>& keys, const Sharing& sharing,
                 std::deque<std::size_t> pending, const Progress& progress,
                 BatchSummary& summary) {
+  const SharedVolumes volumes(batch.output_root, keys, sharing.throughTheBatch, pending);
   const WorkerTask task{
       [&](std::size_t run) { return summary.runs[run].directory / kRunLogName; },
       [&](std::size_t run, std::optional<std::size_t> source, PreparedRenderer& prepared) {
         return renderRun(base, batch.run(summary.runs[run].index), summary.runs[run],
-                         source ? &summary.runs[*source] : nullptr, prepared);
+                         source ? &summary.runs[*source] : nullptr, volumes.folder(run), prepared);
       }};
-  SharedRenders shared(keys, shareable, summary.runs);
+  SharedRenders shared(keys, sharing.shareable, sharing.throughTheBatch, summary.runs);
   std::vector<WorkerSlot> slots(static_cast<std::size_t>(options.jobs));
   // Runs another batch is rendering: asked again when this batch has nothing
   // else to start, so that both batches end with every run done.
@@ -273,7 +283,7 @@ void runPending(const BatchOptions& options, const config::BatchConfig& batch, c
           waiting.push_back(next->run);
           retryAt = Clock::now() + std::chrono::milliseconds(250);
         } else if (!slot.run) {  // skipped: another batch finished it
-          shared.ended(next->run, next->renders, true);
+          shared.doneElsewhere(next->run, next->renders);
         } else {
           slot.rendersKey = next->renders;
         }
@@ -344,9 +354,9 @@ BatchSummary runBatch(const BatchOptions& options) {
     for (const config::Override& o : run.varied) r.message += o.keyPath + "=" + o.value + "  ";
     summary.runs.push_back(std::move(r));
   }
-  std::vector<bool> shareable;
+  Sharing sharing;
   const std::vector<RunContentKey> keys =
-      runKeys(batch, base, summary.runs, shareable, pass("runs keyed"));
+      runKeys(batch, base, summary.runs, sharing, pass("runs keyed"));
   const auto assessed = pass("runs assessed");
   std::deque<std::size_t> pending;
   for (std::size_t i = 0; i < summary.runs.size(); ++i) {
@@ -365,7 +375,7 @@ BatchSummary runBatch(const BatchOptions& options) {
     summary.interruptSignal = pendingInterrupt();  // one that came after the last check
   } else {
     const Progress progress("batch", options.quiet);
-    runPending(options, batch, base, keys, shareable, std::move(pending), progress, summary);
+    runPending(options, batch, base, keys, sharing, std::move(pending), progress, summary);
     try {
       writeBatchResults(batch, options, summary);
     } catch (const std::exception& e) {  // the runs' own outputs stand: a note, not a failure

@@ -342,9 +342,7 @@ std::vector<std::string> writeLidarFiles(const config::RunConfig& config, const 
   listed.push_back("config.effective.yaml");
   writeFileAtomically(dir / "lidar.json", metadataJson(config, frame, listed));
   files.push_back("lidar.json");
-  writeFileAtomically(dir / "config.effective.yaml", config::effectiveConfigYaml(config));
-  files.push_back("config.effective.yaml");
-  return files;
+  return files;  // the effective config follows (RunFolder::finish)
 }
 
 }  // namespace tofsim::pipeline

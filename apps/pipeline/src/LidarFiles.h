@@ -22,7 +22,8 @@ struct LidarFrame {
   int threads = 1;
 };
 
-/// Writes the frame's files into `dir`; returns their names (relative).
+/// Writes the frame's files into `dir`; returns their names (relative). lidar.json
+/// lists config.effective.yaml, which the run writes next (RunFolder::finish).
 std::vector<std::string> writeLidarFiles(const config::RunConfig& config, const LidarFrame& frame,
                                          const std::filesystem::path& dir,
                                          const Progress& progress);

@@ -2,16 +2,14 @@
 
 #include <chrono>
 
-#include "KeptAcrossRenders.h"
 #include "LidarFiles.h"
 #include "LidarSequence.h"
-#include "StagedOutput.h"
+#include "RunFolder.h"
 #include "tofsim/pipeline/AxisReport.h"
 #include "tofsim/config/LidarConfig.h"
 #include "tofsim/ir/IrBackend.h"
 #include "tofsim/ir/MaterialVertex.h"
 #include "tofsim/lidar/MultipathWaveforms.h"
-#include "tofsim/pipeline/Manifest.h"
 #include "tofsim/pipeline/PreparedRenderer.h"
 #include "tofsim/pipeline/Progress.h"
 #include "tofsim/lidar/ZoneWaveforms.h"
@@ -92,12 +90,9 @@ RunSummary runLidarRender(const config::RunConfig& config, PreparedRenderer& pre
   Progress progress("render", options.quiet);
   prepared.prepare(config);
   const scene::Scene& scene = prepared.scene();
+  RunFolder folder(config, options, lidarOutputs(config), progress);
   RunSummary summary;
-  summary.outputDirectory =
-      options.outputDirectory.empty() ? config.output.directory : options.outputDirectory;
-  StagedFolder folder(summary.outputDirectory, keptAcrossRenders);
-  noteLinkedOutput(folder, progress);
-  checkOutputsFit(lidarOutputs(config), config, folder.staging());
+  summary.outputDirectory = folder.path();
 
   const auto start = std::chrono::steady_clock::now();
   const int threads = resolveThreads(config.cpu_threads);
@@ -131,13 +126,7 @@ RunSummary runLidarRender(const config::RunConfig& config, PreparedRenderer& pre
   throwIfInterrupted();
   const LidarFrame frame{&waveforms, &returns, seconds, threads};
   summary.files = writeLidarFiles(config, frame, folder.staging(), progress);
-  if (options.batchManifest) {  // last: it exists only once the files it lists do
-    writeManifest(folder.staging(), options.batchManifest->runName, summary.files,
-                  options.batchManifest->inputs);
-    summary.files.push_back(kManifestName);
-  }
-  throwIfInterrupted();
-  commitOutput(folder, progress);
+  folder.finish(config, options, summary.files);
   return summary;
 }
 

@@ -4,19 +4,17 @@
 #include <cstdio>
 #include <nlohmann/json.hpp>
 
-#include "KeptAcrossRenders.h"
+#include "RunFolder.h"
 #include "LidarFiles.h"
 #include "LidarRun.h"
 #include "SequenceFrame.h"
 #include "SequenceRun.h"
-#include "StagedOutput.h"
 #include "tofsim/config/LidarConfig.h"
 #include "tofsim/ir/IrBackend.h"
 #include "tofsim/ir/MaterialVertex.h"
 #include "tofsim/lidar/LidarReturns.h"
 #include "tofsim/lidar/RollingScan.h"
 #include "tofsim/pipeline/ConfiguredScene.h"
-#include "tofsim/pipeline/Manifest.h"
 #include "tofsim/rays/RayScene.h"
 #include "tofsim/scene/AnimatedScene.h"
 #include "tofsim/util/AtomicFile.h"
@@ -49,12 +47,9 @@ RunSummary runLidarSequence(const config::RunConfig& config, const RunOptions& o
   scene::Scene rest = animated.restScene();
   configureScene(config, rest, report);
 
+  RunFolder folder(config, options, lidarOutputs(config), progress);
   RunSummary summary;
-  summary.outputDirectory =
-      options.outputDirectory.empty() ? config.output.directory : options.outputDirectory;
-  StagedFolder folder(summary.outputDirectory, keptAcrossRenders);
-  noteLinkedOutput(folder, progress);
-  checkOutputsFit(lidarOutputs(config), config, folder.staging());
+  summary.outputDirectory = folder.path();
 
   const int threads = resolveThreads(config.cpu_threads);
   std::vector<physics::ScatterVertex> materials =
@@ -100,18 +95,10 @@ RunSummary runLidarSequence(const config::RunConfig& config, const RunOptions& o
                     {"animation_end_s", animated.end_s()}};
   writeFileAtomically(folder.staging() / "sequence.json", doc.dump(2) + "\n");
   summary.files.push_back("sequence.json");
-  writeFileAtomically(folder.staging() / "config.effective.yaml",
-                      config::effectiveConfigYaml(config));
-  summary.files.push_back("config.effective.yaml");
-  if (options.batchManifest) {
-    writeManifest(folder.staging(), options.batchManifest->runName, summary.files,
-                  options.batchManifest->inputs);
-    summary.files.push_back(kManifestName);
-  }
   summary.backend = "cpu";
   summary.device = "CPU (" + std::to_string(threads) + " threads, Embree)";
   throwIfInterrupted();
-  commitOutput(folder, progress);
+  folder.finish(config, options, summary.files);
   return summary;
 }
 

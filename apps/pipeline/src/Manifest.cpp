@@ -1,10 +1,11 @@
 #include "tofsim/pipeline/Manifest.h"
 
 #include <algorithm>
-#include <fstream>
 #include <nlohmann/json.hpp>
 
+#include "tofsim/io/FileBytes.h"
 #include "tofsim/util/AtomicFile.h"
+#include "tofsim/util/Error.h"
 #include "tofsim/util/Hash.h"
 
 namespace tofsim::pipeline {
@@ -23,29 +24,35 @@ bool isOutput(const std::string& relative) {
   return true;
 }
 
-std::string staleReason(const nlohmann::json& doc, const RunContentKey& expected) {
+// The manifest's inputs, each "" when it is not a string (it then differs).
+std::optional<RunContentKey> readInputs(const nlohmann::json& doc) {
   const auto inputs = doc.find("inputs");
-  if (inputs == doc.end() || !inputs->is_object()) return "stale (no inputs recorded)";
-  const auto differs = [&](const char* key, const std::string& want) {
+  if (inputs == doc.end() || !inputs->is_object()) return std::nullopt;
+  const auto text = [&](const char* key) {
     const auto it = inputs->find(key);
-    return it == inputs->end() || !it->is_string() || it->get<std::string>() != want;
+    return it != inputs->end() && it->is_string() ? it->get<std::string>() : std::string();
   };
-  if (differs("config", expected.config)) return "stale (config changed)";
-  if (differs("scene", expected.scene)) return "stale (scene changed)";
-  if (differs("version", expected.version)) return "stale (version changed)";
+  return RunContentKey{text("config"), text("scene"), text("version"), text("render"),
+                       text("sense")};
+}
+
+std::string staleReason(const ManifestRecord& manifest, const RunContentKey& expected) {
+  if (!manifest.inputs) return "stale (no inputs recorded)";
+  if (manifest.inputs->config != expected.config) return "stale (config changed)";
+  if (manifest.inputs->scene != expected.scene) return "stale (scene changed)";
+  if (manifest.inputs->version != expected.version) return "stale (version changed)";
   return "";
 }
 
 // "" when every listed file is there with its size (and checksum).
-std::string missingOutput(const nlohmann::json& doc, const fs::path& directory, bool verify) {
-  for (const auto& f : doc.at("files")) {
-    const std::string name = f.at("path").get<std::string>();
+std::string missingOutput(const ManifestRecord& manifest, const fs::path& directory, bool verify) {
+  for (const ManifestEntry& f : manifest.files) {
     std::error_code ec;
-    const std::uintmax_t size = fs::file_size(directory / name, ec);
-    if (ec) return "missing " + name;
-    if (size != f.at("bytes").get<std::uintmax_t>()) return "size changed: " + name;
-    if (verify && hex64(fnv1a64File(directory / name)) != f.at("fnv1a64").get<std::string>()) {
-      return "checksum changed: " + name;
+    const std::uintmax_t size = fs::file_size(directory / f.path, ec);
+    if (ec) return "missing " + f.path;
+    if (size != f.bytes) return "size changed: " + f.path;
+    if (verify && hex64(fnv1a64File(directory / f.path)) != f.fnv1a64) {
+      return "checksum changed: " + f.path;
     }
   }
   return "";
@@ -89,6 +96,30 @@ std::vector<ManifestEntry> writeManifest(const fs::path& directory, const std::s
   return entries;
 }
 
+ManifestRecord readManifest(const fs::path& directory) {
+  const fs::path file = directory / kManifestName;
+  // A manifest lists each file in about 100 bytes: far more files than a run writes.
+  constexpr std::size_t kMaxManifestBytes = std::size_t{256} << 20;
+  const std::string text = io::readFileNoFollow(file, kMaxManifestBytes);
+  try {
+    const nlohmann::json doc = nlohmann::json::parse(text);
+    ManifestRecord manifest;
+    manifest.inputs = readInputs(doc);
+    if (const auto render = doc.find("render"); render != doc.end() && render->is_object()) {
+      manifest.renderKey = render->value("key", "");
+      manifest.renderFrom = render->value("from", "");
+    }
+    for (const auto& f : doc.at("files")) {
+      manifest.files.push_back({f.at("path").get<std::string>(),
+                                f.at("bytes").get<std::uintmax_t>(),
+                                f.at("fnv1a64").get<std::string>()});
+    }
+    return manifest;
+  } catch (const nlohmann::json::exception& e) {
+    throw InputError(file.string() + ": not a tofsim manifest: " + e.what());
+  }
+}
+
 RunAssessment assessRun(const fs::path& directory, const RunContentKey& expected,
                         bool verifyChecksums) {
   std::error_code ec;
@@ -98,12 +129,11 @@ RunAssessment assessRun(const fs::path& directory, const RunContentKey& expected
     return {RunState::Missing, "missing"};
   }
   try {
-    std::ifstream in(directory / kManifestName);
-    const nlohmann::json doc = nlohmann::json::parse(in);
-    if (const std::string stale = staleReason(doc, expected); !stale.empty()) {
+    const ManifestRecord manifest = readManifest(directory);
+    if (const std::string stale = staleReason(manifest, expected); !stale.empty()) {
       return {RunState::Stale, stale};
     }
-    if (const std::string why = missingOutput(doc, directory, verifyChecksums); !why.empty()) {
+    if (const std::string why = missingOutput(manifest, directory, verifyChecksums); !why.empty()) {
       return {RunState::Incomplete, "incomplete (" + why + ")"};
     }
   } catch (const std::exception& e) {

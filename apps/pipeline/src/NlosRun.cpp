@@ -2,16 +2,14 @@
 
 #include <nlohmann/json.hpp>
 
-#include "KeptAcrossRenders.h"
 #include "NlosFirstBounce.h"
 #include "NlosPictures.h"
 #include "NlosSensors.h"
 #include "NlosTalFile.h"
 #include "RenderStatsJson.h"
+#include "RunFolder.h"
 #include "SensorParametersJson.h"
-#include "StagedOutput.h"
 #include "tofsim/io/Npy.h"
-#include "tofsim/pipeline/Manifest.h"
 #include "tofsim/pipeline/NlosEstimate.h"
 #include "tofsim/pipeline/NlosRender.h"
 #include "tofsim/pipeline/NlosScan.h"
@@ -21,7 +19,6 @@
 #include "tofsim/pipeline/Version.h"
 #include "tofsim/util/AtomicFile.h"
 #include "tofsim/util/Error.h"
-#include "tofsim/util/Interrupt.h"
 
 namespace tofsim::pipeline {
 
@@ -88,7 +85,7 @@ std::string nlosMetadataJson(const config::RunConfig& config, const NlosScanGeom
 
 void writeOutputs(const config::RunConfig& config, const NlosScanGeometry& scan,
                   const NlosVolume& volume, const std::vector<float>& firstBounce,
-                  const RunOptions& options, const std::filesystem::path& dir,
+                  const std::filesystem::path& dir,
                   const Progress& progress, RunSummary& summary) {
   const auto grid = [](const std::array<int32_t, 2>& g) {
     return io::NpyShape{std::size_t(g[0]), std::size_t(g[1]), 3};
@@ -117,12 +114,6 @@ void writeOutputs(const config::RunConfig& config, const NlosScanGeometry& scan,
   listed.push_back("config.effective.yaml");
   writeFileAtomically(dir / "H.json", nlosMetadataJson(config, scan, volume, listed));
   files.push_back("H.json");
-  writeFileAtomically(dir / "config.effective.yaml", config::effectiveConfigYaml(config));
-  files.push_back("config.effective.yaml");
-  if (options.batchManifest) {  // last: it exists only once the files it lists do
-    writeManifest(dir, options.batchManifest->runName, files, options.batchManifest->inputs);
-    files.push_back(kManifestName);
-  }
 }
 
 }  // namespace
@@ -134,12 +125,9 @@ RunSummary runNlosRender(const config::RunConfig& config, PreparedRenderer& prep
   prepared.prepare(config);
   const scene::Scene& scene = prepared.scene();
   const NlosScanGeometry scan = planNlosScan(config, scene);
+  RunFolder folder(config, options, nlosOutputs(config), progress);
   RunSummary summary;
-  summary.outputDirectory =
-      options.outputDirectory.empty() ? config.output.directory : options.outputDirectory;
-  StagedFolder folder(summary.outputDirectory, keptAcrossRenders);
-  noteLinkedOutput(folder, progress);
-  checkOutputsFit(nlosOutputs(config), config, folder.staging());
+  summary.outputDirectory = folder.path();
   const NlosVolume volume =
       renderNlosScan(config, scene, scan, prepared,
                      [&](std::size_t done, std::size_t total, const std::string& what) {
@@ -152,9 +140,8 @@ RunSummary runNlosRender(const config::RunConfig& config, PreparedRenderer& prep
   progress.message("nlos: " + std::to_string(volume.captures) + " laser position(s), " +
                    std::to_string(volume.scenePreparations) + " scene preparation(s)");
   const std::vector<float> firstBounce = nlosFirstBounce(config, scan, scene, volume.axis);
-  writeOutputs(config, scan, volume, firstBounce, options, folder.staging(), progress, summary);
-  throwIfInterrupted();
-  commitOutput(folder, progress);
+  writeOutputs(config, scan, volume, firstBounce, folder.staging(), progress, summary);
+  folder.finish(config, options, summary.files);  // the effective config H.json lists, last
   return summary;
 }
 

@@ -4,6 +4,7 @@
 
 #include "tofsim/capture/Imager.h"
 #include "tofsim/capture/SegmentSink.h"
+#include "tofsim/pipeline/FiniteSegments.h"
 #include "tofsim/pipeline/OutputFileNames.h"
 
 namespace tofsim::pipeline {
@@ -38,6 +39,7 @@ std::vector<int32_t> bouncesRead(const config::OutputConfig& out, int32_t sensor
 OutputStreams::OutputStreams(const config::RunConfig& config, const capture::RenderJob& job,
                              const std::filesystem::path& dir,
                              const std::vector<OutputProduct>& products, bool psfOnTransient,
+                             const std::filesystem::path& sharedVolume,
                              const Progress& progress) {
   const config::OutputConfig& out = config.output;
   const int32_t width = capture::imageWidth(job.imager), height = capture::imageHeight(job.imager);
@@ -67,6 +69,14 @@ OutputStreams::OutputStreams(const config::RunConfig& config, const capture::Ren
     }
     volumeFiles_.push_back(std::make_unique<VolumeFileSink>(dir / p.files.at(0), p.component,
                                                             width, height, job.settings.time));
+    consumers_.sinks.push_back(volumeFiles_.back().get());
+  }
+  // What the sensors see (no PSF on the transient here: SharedRender.h),
+  // for the batch runs that take this render.
+  if (!sharedVolume.empty()) {
+    std::filesystem::create_directories(sharedVolume);
+    volumeFiles_.push_back(std::make_unique<VolumeFileSink>(
+        sharedVolume / files::kTransient, kTotal, width, height, job.settings.time));
     consumers_.sinks.push_back(volumeFiles_.back().get());
   }
   if (sensorStreams_ || spill_) {

@@ -28,10 +28,12 @@ namespace tofsim::pipeline {
 class OutputStreams {
  public:
   /// Into the staging folder `dir`, for the products' Writer::Volume files;
-  /// `psfOnTransient`: RunOptions::psfOnTransient.
+  /// `psfOnTransient`: RunOptions::psfOnTransient; `sharedVolume`: where the
+  /// total volume is saved too (RunOptions::sharedVolume; empty: nowhere).
   OutputStreams(const config::RunConfig& config, const capture::RenderJob& job,
                 const std::filesystem::path& dir, const std::vector<OutputProduct>& products,
-                bool psfOnTransient, const Progress& progress);
+                bool psfOnTransient, const std::filesystem::path& sharedVolume,
+                const Progress& progress);
   OutputStreams(const OutputStreams&) = delete;
   OutputStreams& operator=(const OutputStreams&) = delete;
 

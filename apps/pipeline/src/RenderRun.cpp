@@ -6,18 +6,18 @@
 #include <memory>
 #include <optional>
 
-#include "KeptAcrossRenders.h"
 #include "LidarRun.h"
 #include "NlosRun.h"
 #include "OutputStreams.h"
 #include "ProductWriters.h"
+#include "RunFolder.h"
 #include "RunRecord.h"
 #include "SensorPasses.h"
 #include "SequenceFrame.h"
 #include "SequenceRun.h"
-#include "StagedOutput.h"
 #include "tofsim/imaging/Video.h"
 #include "tofsim/pipeline/CaptureLoop.h"
+#include "tofsim/pipeline/Metadata.h"
 #include "tofsim/pipeline/OutputEstimate.h"
 #include "tofsim/pipeline/OutputProducts.h"
 #include "tofsim/pipeline/PlotRanges.h"
@@ -25,8 +25,8 @@
 #include "tofsim/pipeline/Progress.h"
 #include "tofsim/pipeline/RenderCapture.h"
 #include "tofsim/scene/GltfLoader.h"
+#include "tofsim/util/AtomicFile.h"
 #include "tofsim/util/Error.h"
-#include "tofsim/util/Interrupt.h"
 
 namespace tofsim::pipeline {
 
@@ -114,17 +114,17 @@ class OutputSink : public CaptureSink {
         progress_(progress),
         summary_(summary),
         frame_(frame) {
-    summary.outputDirectory =
-        options.outputDirectory.empty() ? config.output.directory : options.outputDirectory;
-    folder_.emplace(summary.outputDirectory, keptAcrossRenders);
-    noteLinkedOutput(*folder_, progress);
-    checkOutputsFit(estimateOutputs(config), config, folder_->staging());
+    OutputEstimate outputs = estimateOutputs(config);
+    if (!options.sharedVolume.empty()) outputs.temporaryBytes += volumeBytes(config);
+    folder_.emplace(config, options, outputs, progress);
+    summary.outputDirectory = folder_->path();
     products_ = renderProducts(config);
     // Its encoder loaded before the render, not found missing after it.
     if (config.output.video || (config.sequence && config.sequence->video)) {
       imaging::requireVideoEncoder();
     }
-    streams_.emplace(config, job, folder_->staging(), products_, options.psfOnTransient, progress);
+    streams_.emplace(config, job, folder_->staging(), products_, options.psfOnTransient,
+                     options.sharedVolume, progress);
     SensorStreams* sensors = streams_->sensors();
     if (frame && sensors) {
       renderSensorPasses(config, *frame, *sensors, streams_->consumers(), streams_->bounces(),
@@ -149,8 +149,7 @@ class OutputSink : public CaptureSink {
     // A signal that came during the last step still means "stop": the
     // earlier results stay rather than being replaced by a run the user
     // abandoned.
-    throwIfInterrupted();
-    commitOutput(*folder_, progress_);
+    folder_->commit();
   }
 
  private:
@@ -162,7 +161,7 @@ class OutputSink : public CaptureSink {
   Progress& progress_;
   RunSummary& summary_;
   const SequenceFrame* frame_;
-  std::optional<StagedFolder> folder_;
+  std::optional<RunFolder> folder_;
   std::vector<OutputProduct> products_;
   std::optional<OutputStreams> streams_;
   std::optional<CaptureChain> chain_;
@@ -179,6 +178,11 @@ void OutputSink::writeOutputs(const Image& steady) {
   for (const OutputProduct& p : products_) {
     writeProduct(p, config_, job_, dir, steady, summary_, streams, ranges, progress_);
     summary_.files.insert(summary_.files.end(), p.files.begin(), p.files.end());
+  }
+  if (!options_.sharedVolume.empty()) {  // its axis, for the runs that take it
+    writeFileAtomically(options_.sharedVolume / files::kMetadata,
+                        transientMetadataJson(config_, job_, summary_.result, summary_.backend,
+                                              summary_.device));
   }
   CaptureFile* capture = streams.capture();
   if (sensors) {

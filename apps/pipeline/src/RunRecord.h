@@ -12,9 +12,12 @@
 
 namespace tofsim::pipeline {
 
-/// config.effective.yaml (with the camera the job used) and, with
-/// options.batchManifest, manifest.json listing `files` and itself last;
-/// both added to `files`.
+/// config.effective.yaml and, with options.batchManifest, manifest.json
+/// listing `files` and itself last; both added to `files`.
+void writeRecord(const config::RunConfig& config, const RunOptions& options,
+                 const std::filesystem::path& dir, std::vector<std::string>& files);
+/// The same with the camera the job used (a glTF camera's pose, not the
+/// config's defaults).
 void writeRecord(const config::RunConfig& config, const capture::RenderJob& job,
                  const RunOptions& options, const std::filesystem::path& dir,
                  std::vector<std::string>& files);

@@ -138,7 +138,7 @@ std::vector<std::string> runConfiguredSensors(const config::RunConfig& config,
                                               SavedVolumeStream& saved,
                                               const std::vector<std::string>& components,
                                               const std::filesystem::path& outputDirectory,
-                                              const Progress& progress) {
+                                              const Progress& progress, PsfPath psf) {
   // Run by run, as a render's sensors are fed segment by segment: the same
   // code, and so the same bytes (the per-pixel random streams do not see
   // where the runs are cut).
@@ -148,7 +148,7 @@ std::vector<std::string> runConfiguredSensors(const config::RunConfig& config,
   if (sensorBounces(config)) bounces = static_cast<int32_t>(components.size()) - 1;
   const std::optional<capture::Camera> camera = senseCamera(config, saved.shape(), progress);
   SensorStreams streams(config, saved.shape(), withDirect, bounces, outputDirectory,
-                        camera ? &*camera : nullptr);
+                        camera ? &*camera : nullptr, psf);
   const std::size_t run = pixelsPerRun(config, saved, components);
   while (const std::size_t pixels = saved.read(run)) {
     throwIfInterrupted();

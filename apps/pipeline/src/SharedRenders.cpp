@@ -4,10 +4,11 @@ namespace tofsim::pipeline {
 
 SharedRenders::SharedRenders(const std::vector<RunContentKey>& keys,
                              const std::vector<bool>& shareable,
+                             const std::vector<bool>& throughTheBatch,
                              const std::vector<BatchRunResult>& runs)
-    : keys_(keys), shareable_(shareable) {
+    : keys_(keys), shareable_(shareable), throughTheBatch_(throughTheBatch) {
   for (std::size_t i = 0; i < runs.size(); ++i) {
-    if (shareable_[i] && runs[i].status == BatchRunStatus::Skipped) {
+    if (shareable_[i] && !throughTheBatch_[i] && runs[i].status == BatchRunStatus::Skipped) {
       sources_.emplace(keys_[i].render, i);
     }
   }

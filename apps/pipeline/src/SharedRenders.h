@@ -5,7 +5,9 @@
 // its render key (done before, or in this batch); while another run of its
 // key is rendering, it waits for it; else it renders, and the runs of its key
 // wait for it. A run that cannot share renders as before. When the render a
-// run waits for fails, the next run of the key renders instead.
+// run waits for fails, the next run of the key renders instead. A run that
+// shares through the batch's saved volume (`throughTheBatch`, SharedRender.h)
+// takes only a render of this batch: a run done before left no volume.
 
 #include <cstddef>
 #include <deque>
@@ -22,9 +24,10 @@ namespace tofsim::pipeline {
 
 class SharedRenders {
  public:
-  /// The runs skipped as done (finished before) are sources from the start.
+  /// The runs skipped as done (finished before) are sources from the start,
+  /// but those that share through the batch.
   SharedRenders(const std::vector<RunContentKey>& keys, const std::vector<bool>& shareable,
-                const std::vector<BatchRunResult>& runs);
+                const std::vector<bool>& throughTheBatch, const std::vector<BatchRunResult>& runs);
 
   struct Next {
     std::size_t run = 0;
@@ -37,12 +40,17 @@ class SharedRenders {
   /// Run `run` ended (or was not started: `done` false); `renders` as next()
   /// said. A done shareable run is a source for its key from now on.
   void ended(std::size_t run, bool renders, bool done);
+  /// Run `run` was found done by another batch instead of started.
+  void doneElsewhere(std::size_t run, bool renders) {
+    ended(run, renders, !throughTheBatch_[run]);
+  }
   /// No run is going: nothing is being rendered for anyone.
   void noneRendering() { rendering_.clear(); }
 
  private:
   std::vector<RunContentKey> keys_;  // copies: callers may pass temporaries
   std::vector<bool> shareable_;
+  std::vector<bool> throughTheBatch_;
   std::map<std::string, std::size_t> sources_;  ///< render key -> a finished run
   std::set<std::string> rendering_;             ///< render keys being rendered
 };

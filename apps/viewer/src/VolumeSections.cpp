@@ -3,6 +3,8 @@
 // (with its range and intensity images).
 
 #include <algorithm>
+#include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -100,6 +102,56 @@ nlohmann::json volumeEntry(const VolumeReducer& reducer, const nlohmann::json& t
   return v;
 }
 
+namespace {
+
+// What a volume section shows beside its reduced values.
+struct VolumeSection {
+  const char* kind;                   // the page's kind: "camera", "nlos", "lidar"
+  std::string label;                  // the volume's name on the page
+  std::vector<std::string> axes;      // its image's rows and columns
+  std::string source;                 // the file it was read from
+  std::vector<std::string> channels;  // one name each
+  std::string imageLabel;             // the image: the volume summed over time
+  std::string reduced;                // "The transient", "H", ...: in the reduction note
+};
+
+// The section's volume, its image and the note of what was merged, into the page.
+void setVolume(const VolumeReducer& reducer, const nlohmann::json& meta, const nlohmann::json& time,
+               std::size_t bins, const VolumeSection& section, nlohmann::json& page) {
+  nlohmann::json volume = volumeEntry(reducer, time, bins, section.channels);
+  volume["label"] = section.label;
+  volume["unit"] = textOf(meta, "value_unit");
+  volume["axes"] = section.axes;
+  volume["source"] = section.source;
+  page["kind"] = section.kind;
+  page["volume"] = std::move(volume);
+  page["image"] = imageEntry(reducer, section.channels.size(), section.imageLabel);
+  noteReduction(reducer, section.reduced, page);
+}
+
+// An NLOS or lidar capture: its metadata `json` (with the time axis) and the
+// array `npy` beside it; none when the folder has no `json`.
+struct SavedArray {
+  nlohmann::json meta;
+  nlohmann::json time;
+  std::filesystem::path path;  // of the array
+  io::NpyArray array;
+};
+
+std::optional<SavedArray> readSavedArray(const std::filesystem::path& folder, const char* json,
+                                         const char* npy) {
+  const std::filesystem::path metaPath = folder / json;
+  if (!isFile(metaPath)) return std::nullopt;
+  SavedArray saved;
+  saved.meta = readJsonFile(metaPath);
+  saved.time = timeOf(saved.meta, metaPath);
+  saved.path = folder / npy;
+  saved.array = io::readNpy(saved.path);
+  return saved;
+}
+
+}  // namespace
+
 bool addCameraVolume(const std::filesystem::path& folder, nlohmann::json& page) {
   const std::filesystem::path metaPath = folder / pipeline::files::kMetadata;
   if (!isFile(metaPath)) return false;
@@ -121,27 +173,19 @@ bool addCameraVolume(const std::filesystem::path& folder, nlohmann::json& page) 
   }
   std::vector<std::string> names = stringList(meta, "channels");
   names.resize(channels);
-  nlohmann::json volume = volumeEntry(reducer, time, bins, names);
-  volume["label"] = "transient";
-  volume["unit"] = textOf(meta, "value_unit");
-  volume["axes"] = {"y", "x"};
-  volume["source"] = pipeline::savedComponentName(folder, "transient");
-  page["kind"] = "camera";
-  page["volume"] = std::move(volume);
-  page["image"] = imageEntry(reducer, channels, "steady (the transient summed over time)");
-  noteReduction(reducer, "The transient", page);
+  setVolume(reducer, meta, time, bins,
+            {"camera", "transient", {"y", "x"}, pipeline::savedComponentName(folder, "transient"),
+             names, "steady (the transient summed over time)", "The transient"},
+            page);
   return true;
 }
 
 bool addNlosVolume(const std::filesystem::path& folder, nlohmann::json& page) {
-  const std::filesystem::path metaPath = folder / "H.json";
-  if (!isFile(metaPath)) return false;
-  const nlohmann::json meta = readJsonFile(metaPath);
-  const nlohmann::json& time = timeOf(meta, metaPath);
-  const std::filesystem::path hPath = folder / "H.npy";
-  const io::NpyArray h = io::readNpy(hPath);
+  const std::optional<SavedArray> saved = readSavedArray(folder, "H.json", "H.npy");
+  if (!saved) return false;
+  const io::NpyArray& h = saved->array;
   if (h.shape.size() != 3 && h.shape.size() != 5) {
-    throw InputError(FileLoc{hPath.string()}, "",
+    throw InputError(FileLoc{saved->path.string()}, "",
                      "H has " + std::to_string(h.shape.size()) +
                          " axes; an NLOS capture's has 3 (t, sx, sy) or 5 (t, lx, ly, sx, sy)");
   }
@@ -159,27 +203,19 @@ bool addNlosVolume(const std::filesystem::path& folder, nlohmann::json& page) {
       reducer.addPixel(x, y, histogram.data());
     }
   }
-  nlohmann::json volume = volumeEntry(reducer, time, bins, {"H"});
-  volume["label"] = lasers > 1 ? "H (the laser points summed)" : "H";
-  volume["unit"] = textOf(meta, "value_unit");
-  volume["axes"] = {"sx", "sy"};
-  volume["source"] = "H.npy";
-  page["kind"] = "nlos";
-  page["volume"] = std::move(volume);
-  page["image"] = imageEntry(reducer, 1, "H summed over time (rows sx, columns sy)");
-  noteReduction(reducer, "H", page);
+  setVolume(reducer, saved->meta, saved->time, bins,
+            {"nlos", lasers > 1 ? "H (the laser points summed)" : "H", {"sx", "sy"}, "H.npy",
+             {"H"}, "H summed over time (rows sx, columns sy)", "H"},
+            page);
   return true;
 }
 
 bool addLidarVolume(const std::filesystem::path& folder, nlohmann::json& page) {
-  const std::filesystem::path metaPath = folder / "lidar.json";
-  if (!isFile(metaPath)) return false;
-  const nlohmann::json meta = readJsonFile(metaPath);
-  const nlohmann::json& time = timeOf(meta, metaPath);
-  const std::filesystem::path wavePath = folder / "waveforms.npy";
-  const io::NpyArray w = io::readNpy(wavePath);
+  const std::optional<SavedArray> saved = readSavedArray(folder, "lidar.json", "waveforms.npy");
+  if (!saved) return false;
+  const io::NpyArray& w = saved->array;
   if (w.shape.size() != 3) {
-    throw InputError(FileLoc{wavePath.string()}, "",
+    throw InputError(FileLoc{saved->path.string()}, "",
                      "a lidar's waveforms have 3 axes (rings, azimuths, t), not " +
                          std::to_string(w.shape.size()));
   }
@@ -190,19 +226,13 @@ bool addLidarVolume(const std::filesystem::path& folder, nlohmann::json& page) {
       reducer.addPixel(r, a, w.data.data() + (r * azimuths + a) * bins);
     }
   }
-  nlohmann::json volume = volumeEntry(reducer, time, bins, {"waveform"});
-  volume["label"] = "waveforms";
-  volume["unit"] = textOf(meta, "value_unit");
-  volume["axes"] = {"ring", "azimuth"};
-  volume["source"] = "waveforms.npy";
-  page["kind"] = "lidar";
-  page["volume"] = std::move(volume);
-  page["image"] =
-      imageEntry(reducer, 1, "the waveforms summed over time (rows rings, columns azimuths)");
-  noteReduction(reducer, "The waveforms", page);
+  setVolume(reducer, saved->meta, saved->time, bins,
+            {"lidar", "waveforms", {"ring", "azimuth"}, "waveforms.npy", {"waveform"},
+             "the waveforms summed over time (rows rings, columns azimuths)", "The waveforms"},
+            page);
   addLidarMap(folder, "range", "m", "the first return's range (0: none)", page);
-  addLidarMap(folder, "intensity", textOf(meta, "value_unit"), "the first return's intensity",
-              page);
+  addLidarMap(folder, "intensity", textOf(saved->meta, "value_unit"),
+              "the first return's intensity", page);
   addLidarMap(folder, "zone_distance", "m",
               "a multizone sensor's own per-zone distance (its on-chip estimate; 0: no light)",
               page);

@@ -10,6 +10,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -38,6 +39,19 @@ std::vector<ManifestEntry> writeManifest(const std::filesystem::path& directory,
                                          const std::vector<std::string>& files,
                                          const RunContentKey& inputs,
                                          const std::string& renderFrom = "");
+
+/// A manifest as read back: what writeManifest wrote.
+struct ManifestRecord {
+  std::optional<RunContentKey> inputs;  ///< none: a manifest of an older tofsim
+  std::string renderKey;                ///< "render": {"key"}; "" when absent
+  std::string renderFrom;               ///< "render": {"from"}; "" when absent
+  std::vector<ManifestEntry> files;
+};
+
+/// The one reader of `directory`'s manifest.json, opened without following a
+/// link (io::readFileNoFollow). Throws InputError naming the file when it is
+/// missing, a link, or not a manifest.
+ManifestRecord readManifest(const std::filesystem::path& directory);
 
 /// Where a run folder stands against the key its config has now.
 enum class RunState { Done, Missing, Stale, Incomplete };

@@ -31,6 +31,12 @@ struct RunOptions {
   /// Internal: camera.psf on the transient even where the CW-ToF raws would
   /// do (PsfPath.h), so that the tests can compare the two paths.
   bool psfOnTransient = false;
+  /// Internal, for `tofsim batch` (SharedRender.h): a folder where a render
+  /// that saves no transient.npy of its own also saves the volume its
+  /// sensors see (transient.npy and transient.json: the light before a
+  /// camera.psf applied on the raws), for the runs that take its render.
+  /// Empty: none.
+  std::filesystem::path sharedVolume;
 };
 
 struct RunSummary {

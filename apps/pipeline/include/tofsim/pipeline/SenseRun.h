@@ -13,6 +13,7 @@
 
 #include "tofsim/config/RunConfig.h"
 #include "tofsim/pipeline/Progress.h"
+#include "tofsim/pipeline/PsfPath.h"
 #include "tofsim/pipeline/SavedVolume.h"
 
 namespace tofsim::pipeline {
@@ -25,12 +26,15 @@ namespace tofsim::pipeline {
 /// outputDirectory ("sensors/spad/spad_counts.npy", ...). A sensor that does
 /// not fit the volume (a row outside the image, ...) throws an InputError
 /// naming the config file and the sensor; so does a sensor window that drops
-/// light under --strict, after the last run.
+/// light under --strict, after the last run. `psf`: PsfPath::Raws when the
+/// volume is the light before the config's camera.psf, which the CW-ToF
+/// sensors then apply to their raws as the render did (SharedRender.h).
 std::vector<std::string> runConfiguredSensors(const config::RunConfig& config,
                                               SavedVolumeStream& saved,
                                               const std::vector<std::string>& components,
                                               const std::filesystem::path& outputDirectory,
-                                              const Progress& progress);
+                                              const Progress& progress,
+                                              PsfPath psf = PsfPath::None);
 
 struct SenseOptions {
   std::filesystem::path volumeDirectory;  ///< holds transient.npy and transient.json
