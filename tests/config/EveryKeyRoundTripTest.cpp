@@ -151,6 +151,7 @@ lidar:
   rotation_rate: 20 Hz
   returns: {mode: all, max: 4, threshold: 1e-6, separation: 5 cm}
   plot_beams: [[1, 40]]
+  backscatter: {overlap: 0.5 m, phase_at_pi: 0.05}
 time: {bins: 64}
 )";
 

@@ -205,6 +205,22 @@ void parseScan(const ConfigNode& n) {
   if (scan != "spinning") n.failKey("scan", "must be spinning (got '" + scan + "')");
 }
 
+// `backscatter: {overlap, phase_at_pi}`: the medium's light along the beams
+// (core/lidar BeamBackscatter.h); apd43's block.
+void parseBackscatter(const ConfigNode& lidarNode, lidar::BackscatterSettings& b) {
+  if (!lidarNode.has("backscatter")) return;
+  const ConfigNode n = lidarNode.child("backscatter");
+  if (!n.isMap()) n.fail("expected {overlap, phase_at_pi}");
+  b.overlap_m = n.getLength_m("overlap", b.overlap_m);
+  if (!(b.overlap_m > 0.0 && std::isfinite(b.overlap_m))) {
+    n.failKey("overlap", "must be a length > 0 (the backscatter's 1 / r^2 diverges at the lidar)");
+  }
+  b.phase_at_pi_per_sr = n.getDouble("phase_at_pi", b.phase_at_pi_per_sr);
+  if (!(b.phase_at_pi_per_sr >= 0.0 && std::isfinite(b.phase_at_pi_per_sr))) {
+    n.failKey("phase_at_pi", "must be >= 0 (1/sr; 0: the medium's phase function)");
+  }
+}
+
 }  // namespace
 
 void parseLidarView(const ConfigNode& root, RunConfig& config) {
@@ -234,6 +250,7 @@ void parseLidarView(const ConfigNode& root, RunConfig& config) {
     n.failKey("rotation_rate", "must be > 0 Hz");
   }
   parseReturns(n, out->spec.returns);
+  parseBackscatter(n, out->spec.backscatter);
   parsePlotBeams(n, *out);
   config.camera.camera.width = out->spec.azimuths();
   config.camera.camera.height = out->spec.channels();
@@ -303,6 +320,8 @@ YAML::Node lidarNode(const LidarConfig& c) {
   }
   beams.SetStyle(YAML::EmitterStyle::Flow);
   n["plot_beams"] = beams;
+  n["backscatter"]["overlap"] = shortest(s.backscatter.overlap_m) + " m";
+  n["backscatter"]["phase_at_pi"] = shortest(s.backscatter.phase_at_pi_per_sr);
   return n;
 }
 

@@ -9,6 +9,7 @@
 #include "tofsim/config/LidarConfig.h"
 #include "tofsim/ir/IrBackend.h"
 #include "tofsim/ir/MaterialVertex.h"
+#include "tofsim/lidar/BeamBackscatter.h"
 #include "tofsim/pipeline/Manifest.h"
 #include "tofsim/pipeline/PreparedRenderer.h"
 #include "tofsim/pipeline/Progress.h"
@@ -30,6 +31,9 @@ OutputEstimate lidarOutputs(const config::RunConfig& config) {
   e.items.push_back({"range, intensity, beam_directions (npy, exr)", beams * 4 * 8, keys});
   e.items.push_back({"points.ply, points.pcd", beams * s.returns.max * 27 * 2,
                      keys + " x lidar.returns.max"});
+  if (config.render.medium.scatters()) {  // the medium's false returns alone
+    e.items.push_back({"fog_points.ply", beams * s.returns.max * 27, keys + " x lidar.returns.max"});
+  }
   for (const sensors::SensorSpec& spec : config.sensors) {
     // Bounded as a camera's: its bins and a few arrays per beam.
     e.items.push_back({"sensors/" + spec.name, beams * config.render.time.bins * 4 * 2,
@@ -77,10 +81,14 @@ RunSummary runLidarRender(const config::RunConfig& config, PreparedRenderer& pre
   lidar::WaveformScene traced{&rays,
                               ir::materialVertices(scene, ir::vertexModelOf(config.render.materials)),
                               config.render.medium};
-  const lidar::LidarWaveforms waveforms =
+  lidar::LidarWaveforms waveforms =
       lidar::renderDirectWaveforms(config.lidar->spec, traced, config.render.time, threads);
+  // The medium's backscatter (BeamBackscatter.h): nothing without a scattering medium.
+  const lidar::BeamSurfaces surfaces = lidar::addBackscatter(
+      config.lidar->spec, traced, config.render.time, threads, waveforms);
   const lidar::LidarReturns returns =
       lidar::lidarReturns(config.lidar->spec, waveforms.volume, config.lidar->rotation_rate_Hz);
+  const std::vector<uint8_t> fog = lidar::fogReturnFlags(config.lidar->spec, waveforms.volume, surfaces);
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   summary.backend = "cpu";
@@ -91,7 +99,8 @@ RunSummary runLidarRender(const config::RunConfig& config, PreparedRenderer& pre
                    std::to_string(returns.points.size()) + " returns");
   warnLightOffTheAxis(waveforms, progress);
   throwIfInterrupted();
-  const LidarFrame frame{&waveforms, &returns, seconds, threads};
+  LidarFrame frame{&waveforms, &returns, seconds, threads};
+  frame.fogReturns = surfaces.bins.empty() ? nullptr : &fog;
   summary.files = writeLidarFiles(config, frame, folder.staging(), progress);
   if (options.batchManifest) {  // last: it exists only once the files it lists do
     writeManifest(folder.staging(), options.batchManifest->runName, summary.files,
