@@ -184,7 +184,8 @@ void writeWaveformPlot(const config::RunConfig& config, const TransientVolume& v
   plot.xUnit = "m";
   plot.xLabel = "range";
   plot.yLabel = "irradiance per bin [uW m^-2]";
-  plot.title = "lidar waveforms (direct light)";
+  plot.title = config.render.medium.scatters() ? "lidar waveforms (direct light, the medium's backscatter)"
+                                              : "lidar waveforms (direct light)";
   imaging::writeLinePlotPng(dir / "waveforms.png", plot);
   files.push_back("waveforms.png");
 }

@@ -30,8 +30,11 @@ struct BackscatterBins {
   std::vector<double> whole;            // a whole bin's light
   double legsEta = 2.0, start_m = 0.0, width_m = 1.0;
 
+  bool grey = false;  // every channel alike (fog): one integral for the three
+
   double light(double a, double b) const {
     if (!(b > a)) return 0.0;
+    if (grey) return 3.0 * weight[0] * backscatterIntegral(sigmaT[0], a, b);
     double sum = 0.0;
     for (int c = 0; c < 3; ++c) {
       if (weight[c] != 0.0) sum += weight[c] * backscatterIntegral(sigmaT[c], a, b);
@@ -54,6 +57,8 @@ BackscatterBins backscatterBins(const LidarSpec& spec, const capture::Medium& me
                        : physics::phaseFunction(medium.phase, medium.g, -1.0f);
   b.sigmaT = glm::dvec3(medium.sigmaT());
   b.weight = glm::dvec3(medium.sigma_s_per_m) * (spec.power_W * p / 3.0);
+  b.grey = b.sigmaT.x == b.sigmaT.y && b.sigmaT.y == b.sigmaT.z && b.weight.x == b.weight.y &&
+           b.weight.y == b.weight.z;
   b.edges_m.resize(static_cast<std::size_t>(axis.bins) + 1);
   for (int32_t k = 0; k <= axis.bins; ++k) {
     b.edges_m[k] = std::max(overlap, (b.start_m + k * b.width_m) / b.legsEta);
