@@ -179,4 +179,32 @@ std::vector<TimeKernelUse> SensorType<CwTofParams>::timeKernels(const CwTofParam
   return {};
 }
 
+// --- apd -----------------------------------------------------------------------
+std::unique_ptr<SensorStream> SensorType<ApdParams>::open(const ApdParams& p,
+                                                          const VolumeShape& shape,
+                                                          const StreamOptions& options) {
+  checkTimeKernels(p, shape.axis);
+  return openApd(p, shape, options);
+}
+std::vector<std::string> SensorType<ApdParams>::warnings(const ApdParams&, const VolumeShape&,
+                                                         const Image*) {
+  return {};
+}
+std::uintmax_t SensorType<ApdParams>::outputBytes(const ApdParams& p, int32_t width,
+                                                  int32_t height, const TimeAxis& render) {
+  const auto pixels = static_cast<std::uintmax_t>(width) * static_cast<std::uintmax_t>(height);
+  const std::uintmax_t bins = p.output_waveforms ? resolveBins(p.bins, render).bins : 0;
+  return pixels * (bins + 2 * static_cast<std::uintmax_t>(p.max_returns)) * 4 +
+         imageBytes(width, height);
+}
+std::optional<InstrumentWindow> SensorType<ApdParams>::window(const ApdParams& p) {
+  return InstrumentWindow{p.common, p.bins, {}};
+}
+std::vector<TimeKernelUse> SensorType<ApdParams>::timeKernels(const ApdParams& p,
+                                                              const TimeAxis& render) {
+  const double dt = resolveBins(p.bins, render).bin_width_s;
+  return {{"pulse_fwhm", gaussianTailSupport(fwhmToSigma(p.pulse_fwhm_s), 0.0, 0.0), dt, "s"},
+          {"bandwidth", gaussianTailSupport(apdFilterSigma_s(p.bandwidth_Hz), 0.0, 0.0), dt, "s"}};
+}
+
 }  // namespace tofsim::sensors

@@ -100,7 +100,8 @@ TEST(ConfigKeysTest, SensorsReadmeTablesMatchTheDeclaredKeys) {
         {"Instrument bins (streak and SPAD)", "bins"},
         {"Streak camera", "streak"},
         {"SPAD", "spad"},
-        {"Continuous-wave ToF", "cwtof"}};
+        {"Continuous-wave ToF", "cwtof"},
+        {"Linear-mode APD", "apd"}};
     const auto it = sections.find(heading);
     return it == sections.end() ? nullptr : it->second;
   };

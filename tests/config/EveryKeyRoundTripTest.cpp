@@ -152,6 +152,7 @@ lidar:
   returns: {mode: all, max: 4, threshold: 1e-6, separation: 5 cm}
   plot_beams: [[1, 40]]
   multipath: {bounces: 2, spot_rays: 5, receiver_rays: 9, receiver_fov: 10 deg, vpls_per_bounce: 3}
+  backscatter: {overlap: 0.5 m, phase_at_pi: 0.05}
 time: {bins: 64}
 )";
 

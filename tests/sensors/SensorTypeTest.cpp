@@ -82,11 +82,13 @@ TEST(SensorTypeTest, NamesAreUniqueAndDispatchReachesEachModel) {
   addName(StreakParams{});
   addName(SpadParams{});
   addName(CwTofParams{});
-  EXPECT_EQ(names, (std::set<std::string>{"streak", "spad", "cwtof"}));
+  addName(ApdParams{});
+  EXPECT_EQ(names, (std::set<std::string>{"streak", "spad", "cwtof", "apd"}));
   const TransientVolume v = test::makeVolume(4, 3, 0.0, 10e-12, 16);
   expectRunsAsItsType<StreakParams>(v);
   expectRunsAsItsType<SpadParams>(v);
   expectRunsAsItsType<CwTofParams>(v);
+  expectRunsAsItsType<ApdParams>(v);
 }
 
 TEST(SensorTypeTest, OutputBytesAndWindowLossComeFromTheModel) {

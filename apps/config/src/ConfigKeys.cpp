@@ -80,6 +80,12 @@ const ConfigKey kRunConfigKeys[] = {
      "a bin is part of an echo above it (0: any light)"},
     {"lidar.returns.separation", "length >= 0", "", "0.3 m", "m",
      "runs of bins closer than this (in range) are one echo"},
+    {"lidar.backscatter", "mapping", "", "defaults", "-",
+     "`{overlap, phase_at_pi}`: a scattering medium's light along each beam (the fog's false returns), see Backscatter above"},
+    {"lidar.backscatter.overlap", "length > 0", "", "1 m", "m",
+     "the receiver sees the laser's cone whole from this range on; nearer scattering does not reach it"},
+    {"lidar.backscatter.phase_at_pi", "number >= 0", "", "0", "1/sr",
+     "the medium's phase function at pi as the lidar sees it (fog's Mie backscatter: 0.052); 0: the medium's own"},
     {"lidar.plot_beams", "list of [ring, azimuth]", "", "[]", "-",
      "beams (ring, azimuth in degrees: the nearest) whose waveforms `waveforms.png` draws"},
     {"lidar.scan", "string", "", "spinning", "-",
@@ -167,7 +173,7 @@ const ConfigKey kRunConfigKeys[] = {
 // other sensor key's row comes from its parameter table (SensorFields.h).
 const ConfigKey kSensorEntryKeys[] = {
     {"common.type", "string", "", "required", "-",
-     "`streak`, `spad` or `cwtof`"},
+     "`streak`, `spad`, `cwtof` or `apd`"},
     {"common.name", "string", "", "the type", "-",
      "label of this sensor"},
     {"common.channel", "int", ">= 0", "none", "-",
@@ -207,6 +213,7 @@ std::span<const ConfigKey> sensorConfigKeys() {
     addDocRows<sensors::StreakParams>(r, "streak", sensors::kStreakFields);
     addDocRows<sensors::SpadParams>(r, "spad", sensors::kSpadFields);
     addDocRows<sensors::CwTofParams>(r, "cwtof", sensors::kCwTofFields);
+    addDocRows<sensors::ApdParams>(r, "apd", sensors::kApdFields);
     return r;
   }();
   return rows.keys;

@@ -248,6 +248,22 @@ void parseMultipath(const ConfigNode& lidarNode, LidarConfig& out) {
   }
 }
 
+// `backscatter: {overlap, phase_at_pi}`: the medium's light along the beams
+// (core/lidar BeamBackscatter.h); apd43's block.
+void parseBackscatter(const ConfigNode& lidarNode, lidar::BackscatterSettings& b) {
+  if (!lidarNode.has("backscatter")) return;
+  const ConfigNode n = lidarNode.child("backscatter");
+  if (!n.isMap()) n.fail("expected {overlap, phase_at_pi}");
+  b.overlap_m = n.getLength_m("overlap", b.overlap_m);
+  if (!(b.overlap_m > 0.0 && std::isfinite(b.overlap_m))) {
+    n.failKey("overlap", "must be a length > 0 (the backscatter's 1 / r^2 diverges at the lidar)");
+  }
+  b.phase_at_pi_per_sr = n.getDouble("phase_at_pi", b.phase_at_pi_per_sr);
+  if (!(b.phase_at_pi_per_sr >= 0.0 && std::isfinite(b.phase_at_pi_per_sr))) {
+    n.failKey("phase_at_pi", "must be >= 0 (1/sr; 0: the medium's phase function)");
+  }
+}
+
 }  // namespace
 
 void parseLidarView(const ConfigNode& root, RunConfig& config) {
@@ -280,6 +296,7 @@ void parseLidarView(const ConfigNode& root, RunConfig& config) {
     n.failKey("rotation_rate", "must be > 0 Hz");
   }
   parseReturns(n, out->spec.returns);
+  parseBackscatter(n, out->spec.backscatter);
   parsePlotBeams(n, *out);
   parseMultipath(n, *out);
   config.camera.camera.width = out->spec.azimuths();
@@ -297,9 +314,11 @@ void checkLidarSequence(const ConfigNode& root) {
   if (!seq) return;
   const ConfigNode lidarNode = root.child("lidar");
   const std::string scan = lidarNode.getString("scan", "spinning");
-  if (scan != "spinning" || lidarNode.has("multipath")) {
+  if (scan != "spinning" || lidarNode.has("multipath") || root.has("medium")) {
     root.failKey("sequence", "a lidar's sequence is a rolling scan of a spinning lidar without "
-                             "multipath: remove `sequence`, `lidar.multipath` or the grid scan");
+                             "multipath or a medium (their light is not in the rolling "
+                             "waveforms yet): remove `sequence`, `lidar.multipath`, `medium` "
+                             "or the grid scan");
   }
   for (const char* key : {"video", "exposure_samples"}) {
     if (seq->has(key)) {
@@ -396,6 +415,8 @@ YAML::Node lidarNode(const LidarConfig& c) {
         shortest(m.receiver_fov_rad > 0.0 ? m.receiver_fov_rad : s.divergence_rad) + " rad";
     n["multipath"]["vpls_per_bounce"] = m.vpls_per_bounce;
   }
+  n["backscatter"]["overlap"] = shortest(s.backscatter.overlap_m) + " m";
+  n["backscatter"]["phase_at_pi"] = shortest(s.backscatter.phase_at_pi_per_sr);
   return n;
 }
 

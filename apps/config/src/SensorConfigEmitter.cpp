@@ -128,4 +128,10 @@ YAML::Node sensorsToYaml(const std::vector<SensorSpec>& specs) {
   return list;
 }
 
+void SensorConfigType<ApdParams>::emit(YAML::Node& n, const ApdParams& p) {
+  emitCommon(n, p.common);
+  emitFields(n, kBinsFields, p.bins);
+  emitFields(n, kApdFields, p);
+}
+
 }  // namespace tofsim::config

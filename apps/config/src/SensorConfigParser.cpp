@@ -34,8 +34,8 @@ int32_t intElement(const ConfigNode& e) {
   return static_cast<int32_t>(v);
 }
 
-SensorCommon parseCommon(const ConfigNode& n) {
-  SensorCommon c;
+// `c`: the model's defaults (an APD's radiometry is not a camera's).
+SensorCommon parseCommon(const ConfigNode& n, SensorCommon c = {}) {
   // `channel` or `channel_weights`: one choice of two keys, by hand.
   // Neither given: the sum of the channels (ChannelSelection's default).
   if (n.has("channel")) {
@@ -351,6 +351,21 @@ void SensorConfigType<CwTofParams>::checkImage(const ConfigNode& n, const CwTofP
                                                const capture::Camera& camera) {
   checkCwTofMapsFitImage(n, p, camera);
 }
+
+// --- apd ------------------------------------------------------------------------
+ApdParams SensorConfigType<ApdParams>::parse(const ConfigNode& n) {
+  ApdParams p;
+  p.common = parseCommon(n, p.common);
+  p.bins = parseBins(n);
+  parseFields(n, kApdFields, p);
+  if (p.threshold_mode == ApdThreshold::Fixed && !n.has("threshold")) {
+    n.failKey("threshold_mode", "`fixed` needs `threshold` (a current, A)");
+  }
+  return p;
+}
+
+void SensorConfigType<ApdParams>::checkImage(const ConfigNode&, const ApdParams&,
+                                             const capture::Camera&) {}
 
 namespace {
 // The `type:` names in variant order, for the error that lists them.

@@ -44,6 +44,7 @@ concept ConfiguredSensor = requires(const ConfigNode& node, YAML::Node& yaml, co
 TOFSIM_SENSOR_CONFIG_TYPE(StreakParams);
 TOFSIM_SENSOR_CONFIG_TYPE(SpadParams);
 TOFSIM_SENSOR_CONFIG_TYPE(CwTofParams);
+TOFSIM_SENSOR_CONFIG_TYPE(ApdParams);
 #undef TOFSIM_SENSOR_CONFIG_TYPE
 
 namespace detail {

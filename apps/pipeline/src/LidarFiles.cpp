@@ -174,8 +174,9 @@ std::string metadataJson(const config::RunConfig& config, const LidarFrame& fram
   if (config.render.medium.present()) {
     const glm::vec3 t = config.render.medium.sigmaT();
     j["medium"] = {{"sigma_t_per_m", vec(t)},
-                   {"doc", "attenuates every ray both ways; the medium's own backscatter is not "
-                           "in the waveforms yet"}};
+                   {"doc", "attenuates every ray both ways; a scattering medium's single "
+                           "scattering along each beam (from backscatter.overlap on, "
+                           "BeamBackscatter.h) is in the waveforms"}};
   }
   const double beams = double(s.channels()) * s.azimuths();
   const double raysPerBeam =
@@ -191,6 +192,14 @@ std::string metadataJson(const config::RunConfig& config, const LidarFrame& fram
                 {"points", frame.returns->points.size()},
                 {"lost_before_axis", frame.waveforms->lost.before},
                 {"lost_after_axis", frame.waveforms->lost.after}};
+  if (frame.fogReturns) {
+    std::size_t fog = 0;
+    for (uint8_t f : *frame.fogReturns) fog += f;
+    j["stats"]["fog_returns"] = fog;
+    j["fog_returns_doc"] =
+        "returns whose bins hold no receiver ray's surface: the medium's false returns "
+        "(fog_points.ply holds them alone; points.ply holds every return)";
+  }
   return j.dump(2) + "\n";
 }
 
@@ -245,8 +254,11 @@ void writeWaveformPlot(const config::RunConfig& config, const lidar::LidarWavefo
   plot.xUnit = "m";
   plot.xLabel = "range";
   plot.yLabel = "irradiance per bin [uW m^-2]";
-  plot.title = config.lidar->multipath.enabled() ? "lidar waveforms (direct light + multipath)"
-                                                 : "lidar waveforms (direct light)";
+  const bool backscatter = config.render.medium.scatters() &&
+                           config.lidar->spec.scan != lidar::ScanPattern::Zones;
+  plot.title = std::string("lidar waveforms (direct light") +
+               (config.lidar->multipath.enabled() ? ", multipath" : "") +
+               (backscatter ? ", the medium's backscatter" : "") + ")";
   imaging::writeLinePlotPng(dir / "waveforms.png", plot);
   files.push_back("waveforms.png");
 }
@@ -335,6 +347,14 @@ std::vector<std::string> writeLidarFiles(const config::RunConfig& config, const 
   lidar::writePly(dir / "points.ply", frame.returns->points, "tofsim lidar returns");
   lidar::writePcd(dir / "points.pcd", frame.returns->points);
   files.insert(files.end(), {"points.ply", "points.pcd"});
+  if (frame.fogReturns) {  // the medium's false returns alone
+    std::vector<lidar::LidarPoint> fog;
+    for (std::size_t i = 0; i < frame.fogReturns->size(); ++i) {
+      if ((*frame.fogReturns)[i]) fog.push_back(frame.returns->points[i]);
+    }
+    lidar::writePly(dir / "fog_points.ply", fog, "tofsim lidar: the medium's false returns");
+    files.push_back("fog_points.ply");
+  }
   writeWaveformPlot(config, *frame.waveforms, dir, files);
   if (!config.sensors.empty()) writeSensors(config, volume, dir, ranges, progress, files);
   warnUntakenPlotRanges(ranges.untaken(""));

@@ -4,6 +4,7 @@
 // images (npy, EXR, PNG), beam_directions.npy, points.ply and points.pcd,
 // the sensors' files on the waveforms, lidar.json.
 
+#include <cstdint>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -20,6 +21,9 @@ struct LidarFrame {
   const lidar::LidarReturns* returns = nullptr;
   double seconds = 0.0;  ///< the waveforms' render
   int threads = 1;
+  /// With a scattering medium: per point of `returns`, 1 where it is the
+  /// medium's (a false return: BeamBackscatter.h); nullptr without one.
+  const std::vector<uint8_t>* fogReturns = nullptr;
 };
 
 /// Writes the frame's files into `dir`; returns their names (relative). lidar.json

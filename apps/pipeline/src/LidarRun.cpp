@@ -9,6 +9,7 @@
 #include "tofsim/config/LidarConfig.h"
 #include "tofsim/ir/IrBackend.h"
 #include "tofsim/ir/MaterialVertex.h"
+#include "tofsim/lidar/BeamBackscatter.h"
 #include "tofsim/lidar/MultipathWaveforms.h"
 #include "tofsim/pipeline/PreparedRenderer.h"
 #include "tofsim/pipeline/Progress.h"
@@ -31,6 +32,9 @@ OutputEstimate lidarOutputs(const config::RunConfig& config) {
   e.items.push_back({"range, intensity, beam_directions (npy, exr)", beams * 4 * 8, keys});
   e.items.push_back({"points.ply, points.pcd", beams * s.returns.max * 27 * 2,
                      keys + " x lidar.returns.max"});
+  if (config.render.medium.scatters()) {  // the medium's false returns alone
+    e.items.push_back({"fog_points.ply", beams * s.returns.max * 27, keys + " x lidar.returns.max"});
+  }
   for (const sensors::SensorSpec& spec : config.sensors) {
     // Bounded as a camera's: its bins and a few arrays per beam.
     e.items.push_back({"sensors/" + spec.name, beams * config.render.time.bins * 4 * 2,
@@ -101,19 +105,33 @@ RunSummary runLidarRender(const config::RunConfig& config, PreparedRenderer& pre
                               ir::materialVertices(scene, ir::vertexModelOf(config.render.materials)),
                               config.render.medium};
   // The dense volume only where something reads or adds to it: the sensors,
-  // the multipath (added after the render) and the zones (ZoneWaveforms.h:
-  // the flood's light over each zone's solid angle, always dense). Else
-  // waveforms.npy is streamed from the beams' nonzero bins and the returns
-  // found on them (LidarWaveforms::beamWaveform, lidarReturns).
+  // the multipath and the medium's backscatter (added after the render) and
+  // the zones (ZoneWaveforms.h: the flood's light over each zone's solid
+  // angle, always dense). Else waveforms.npy is streamed from the beams'
+  // nonzero bins and the returns found on them (LidarWaveforms::beamWaveform,
+  // lidarReturns).
   const lidar::LidarSpec& spec = config.lidar->spec;
-  const bool keepVolume = !config.sensors.empty() || config.lidar->multipath.enabled();
+  const bool zones = spec.scan == lidar::ScanPattern::Zones;
+  const bool backscatter = config.render.medium.scatters() && !zones;
+  const bool keepVolume =
+      !config.sensors.empty() || config.lidar->multipath.enabled() || backscatter;
   lidar::LidarWaveforms waveforms =
-      spec.scan == lidar::ScanPattern::Zones
-          ? lidar::renderZoneWaveforms(spec, traced, config.render.time, threads)
-          : lidar::renderDirectWaveforms(spec, traced, config.render.time, threads, keepVolume);
+      zones ? lidar::renderZoneWaveforms(spec, traced, config.render.time, threads)
+            : lidar::renderDirectWaveforms(spec, traced, config.render.time, threads, keepVolume);
   addLidarMultipath(config, traced, threads, waveforms);
+  // The medium's backscatter along each beam (BeamBackscatter.h): nothing
+  // without a scattering medium; a zone's flood has no beam (not built).
+  const lidar::BeamSurfaces surfaces =
+      backscatter ? lidar::addBackscatter(spec, traced, config.render.time, threads, waveforms)
+                  : lidar::BeamSurfaces{};
+  if (zones && config.render.medium.scatters()) {
+    progress.message("warning: a zone scan's histograms hold the medium's attenuation, not its "
+                     "backscatter (not built for a flood emitter)");
+  }
   const lidar::LidarReturns returns =
-      lidar::lidarReturns(config.lidar->spec, waveforms, config.lidar->rotation_rate_Hz, threads);
+      lidar::lidarReturns(spec, waveforms, config.lidar->rotation_rate_Hz, threads);
+  const std::vector<uint8_t> fog =
+      backscatter ? lidar::fogReturnFlags(spec, waveforms.volume, surfaces) : std::vector<uint8_t>{};
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   summary.backend = "cpu";
@@ -124,7 +142,8 @@ RunSummary runLidarRender(const config::RunConfig& config, PreparedRenderer& pre
                    std::to_string(returns.points.size()) + " returns");
   warnLightOffTheAxis(waveforms, progress);
   throwIfInterrupted();
-  const LidarFrame frame{&waveforms, &returns, seconds, threads};
+  LidarFrame frame{&waveforms, &returns, seconds, threads};
+  frame.fogReturns = surfaces.bins.empty() ? nullptr : &fog;
   summary.files = writeLidarFiles(config, frame, folder.staging(), progress);
   folder.finish(config, options, summary.files);
   return summary;

@@ -50,6 +50,7 @@ std::string axisDoc(const std::string& axis) {
            "frequency's unambiguous range";
   if (axis == "gate")
     return "gate position k: the gate moved by k sensor.parameters.gate_step_s from gate_start_s";
+  if (axis == "return") return "echo index of an APD pixel, in time order (NaN: no echo)";
   TOFSIM_CHECK_MSG(false, "undocumented sensor output axis " + axis);
   return "";
 }

@@ -213,6 +213,22 @@ json modelJson(const CwTofParams& p, const TimeAxis& render) {
   j["colormap"] = p.colormap;
   return j;
 }
+json modelJson(const ApdParams& p, const TimeAxis& render) {
+  json j = binsJson(p.bins, render);
+  fieldsJson(j, kApdFields, p);
+  // Derived: what a datasheet quotes, and the receiver on this axis.
+  const ApdReceiver rx = apdReceiver(p, render);
+  if (p.common.radiometry.wavelength_m > 0.0) {
+    j["responsivity_A_per_W"] = apdResponsivity_A_per_W(p.common.radiometry);
+    j["responsivity_at_gain_A_per_W"] = apdResponsivity_A_per_W(p.common.radiometry) * p.gain;
+  }
+  j["excess_noise_factor"] = rx.excessNoise;
+  j["noise_bandwidth_Hz"] = rx.noiseBandwidth_Hz;
+  j["background_mean_A"] = rx.backgroundMean_A;
+  j["background_sigma_A"] = rx.backgroundSigma_A;
+  j["threshold_resolved_A"] = rx.threshold_A;
+  return j;
+}
 }  // namespace
 
 json sensorParametersJson(const SensorParams& params, const TimeAxis& render) {

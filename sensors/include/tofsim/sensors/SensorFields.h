@@ -9,6 +9,7 @@
 #include <array>
 #include <tuple>
 
+#include "tofsim/sensors/Apd.h"
 #include "tofsim/sensors/Common.h"
 #include "tofsim/sensors/CwTof.h"
 #include "tofsim/sensors/ParamField.h"
@@ -236,6 +237,45 @@ inline constexpr auto kCwTofFields = std::tuple{
     Field{"noise_model", &CwTofParams::noise_model, Choice<CwTofNoiseModel>{kCwTofNoiseModelNames},
           {.json = "noise_model", .doc = "`poisson_read` (`shot_noise`, `read_noise`) or `table`: an empirical conditional noise table (`noise_table`) in place of both"}},
     Custom{"noise_table", "file", "", "none", "e-", "`noise_model: table`: rows (integer noise-free raw, measured raw), a two-column .csv or a float32 .npy (n, 2); a raw whose noise-free value rounds to a listed mean becomes one of its samples, drawn uniformly; elsewhere it is noise-free"},
+};
+inline constexpr std::array<Name<ApdThreshold>, 2> kApdThresholdNames{
+    {{"cfar", ApdThreshold::Cfar}, {"fixed", ApdThreshold::Fixed}}};
+
+/// The linear-mode APD (Apd.h). Defaults: a 905 nm Si APD receiver
+/// (sensors/README.md, "Linear-mode APD", lists each value's source).
+inline constexpr auto kApdFields = std::tuple{
+    Field{"gain", &ApdParams::gain, Number{Range{.min = 1.0}},
+          {.json = "gain", .doc = "mean avalanche gain M"}},
+    Field{"ionization_ratio", &ApdParams::ionization_ratio, Number{kFraction},
+          {.json = "ionization_ratio", .doc = "k, hole / electron ionisation ratio: excess noise F(M) = k M + (1 - k)(2 - 1/M) (McIntyre)"}},
+    Field{"background_rate", &ApdParams::background_rate, Rate{kNonNegative},
+          {.unit = "photo-electrons / s", .json = "background_rate_per_s", .doc = "ambient light's primary photo-electrons (sunlight through the filter), multiplied with the signal"}},
+    Field{"dark_current_bulk", &ApdParams::dark_current_bulk_A, Number{kNonNegative},
+          {.unit = "A", .json = "dark_current_bulk_A", .doc = "primary bulk dark current, multiplied (M x it at the output)"}},
+    Field{"dark_current_surface", &ApdParams::dark_current_surface_A, Number{kNonNegative},
+          {.unit = "A", .json = "dark_current_surface_A", .doc = "surface dark current, not multiplied"}},
+    Field{"tia_noise", &ApdParams::tia_noise_A_per_rtHz, Number{kNonNegative},
+          {.unit = "A / sqrt(Hz)", .json = "tia_noise_A_per_rtHz", .doc = "transimpedance amplifier's input-referred current noise density (thermal)"}},
+    Field{"bandwidth", &ApdParams::bandwidth_Hz, Rate{kNonNegative},
+          {.unit = "Hz", .json = "bandwidth_Hz", .doc = "receiver's -3 dB bandwidth, a Gaussian low-pass filter on the current and its noise; 0: none (white samples)"}},
+    Field{"pulse_fwhm", &ApdParams::pulse_fwhm_s, Duration{kNonNegative},
+          {.json = "pulse_fwhm_s", .doc = "the laser pulse's FWHM (Gaussian), on the signal"}},
+    Field{"adc_bits", &ApdParams::adc_bits, IntegerIn{0, 24},
+          {.json = "adc_bits", .doc = "ADC depth: samples round to adc_full_scale / 2^bits, clipped to [0, full scale); 0: none"}},
+    Field{"adc_full_scale", &ApdParams::adc_full_scale_A, Number{kPositive},
+          {.unit = "A", .json = "adc_full_scale_A", .doc = "the ADC's range in input current"}},
+    Field{"threshold_mode", &ApdParams::threshold_mode, Choice<ApdThreshold>{kApdThresholdNames},
+          {.json = "threshold_mode", .doc = "`cfar`: the threshold the background noise crosses with `false_alarm` per sample (its mean + z sigma); `fixed`: `threshold`"}},
+    Field{"threshold", &ApdParams::threshold_A, Number{kAnyValue},
+          {.unit = "A", .json = "threshold_A", .doc = "`threshold_mode: fixed`: an echo is a run of samples above this current"}},
+    Field{"false_alarm", &ApdParams::false_alarm, Number{Range{.min = 0.0, .max = 0.5, .minExclusive = true}},
+          {.json = "false_alarm", .doc = "`threshold_mode: cfar`: the probability that a sample of background alone is above the threshold"}},
+    Field{"max_returns", &ApdParams::max_returns, Integer{.max = 64},
+          {.json = "max_returns", .doc = "echoes kept per pixel (beam), in time order"}},
+    Field{"output_waveforms", &ApdParams::output_waveforms, Flag{},
+          {.json = "output_waveforms", .doc = "write `apd_waveforms` (H, W, T), the noisy digitised current"}},
+    Field{"colormap", &ApdParams::colormap, Text{},
+          {.json = "colormap", .doc = "colormap of the PNGs"}},
 };
 // clang-format on
 

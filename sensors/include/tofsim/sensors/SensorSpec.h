@@ -10,7 +10,7 @@ namespace tofsim::sensors {
 
 /// Every model, once. A new alternative needs a SensorType<> specialisation
 /// (checked here) and a config descriptor (checked in apps/config).
-using SensorParams = std::variant<StreakParams, SpadParams, CwTofParams>;
+using SensorParams = std::variant<StreakParams, SpadParams, CwTofParams, ApdParams>;
 
 namespace detail {
 template <typename... P>
@@ -26,7 +26,7 @@ struct SensorSpec {
   SensorParams params;
 };
 
-/// The model's SensorType<>::name: "streak", "spad" or "cwtof".
+/// The model's SensorType<>::name: "streak", "spad", "cwtof" or "apd".
 const char* sensorTypeName(const SensorParams& params);
 
 /// Upper estimate of the bytes a sensor's files take (SensorType<>::outputBytes).

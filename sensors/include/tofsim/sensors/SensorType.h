@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "tofsim/sensors/Apd.h"
 #include "tofsim/sensors/CwTof.h"
 #include "tofsim/sensors/SensorInputs.h"
 #include "tofsim/sensors/SensorOutput.h"
@@ -113,6 +114,19 @@ struct SensorType<CwTofParams> {
   /// CW-ToF integrates every render bin: it has no window to lose light from.
   static std::optional<InstrumentWindow> window(const CwTofParams& p);
   static std::vector<TimeKernelUse> timeKernels(const CwTofParams& p, const TimeAxis& render);
+};
+
+template <>
+struct SensorType<ApdParams> {
+  static constexpr const char* name = "apd";
+  static std::unique_ptr<SensorStream> open(const ApdParams& p, const VolumeShape& shape,
+                                            const StreamOptions& options);
+  static std::vector<std::string> warnings(const ApdParams& p, const VolumeShape& shape,
+                                           const Image* groundTruthDepth_m);
+  static std::uintmax_t outputBytes(const ApdParams& p, int32_t width, int32_t height,
+                                    const TimeAxis& render);
+  static std::optional<InstrumentWindow> window(const ApdParams& p);
+  static std::vector<TimeKernelUse> timeKernels(const ApdParams& p, const TimeAxis& render);
 };
 
 }  // namespace tofsim::sensors

@@ -61,6 +61,18 @@ struct ReturnSettings {
   double separation_m = 0.3;
 };
 
+/// The medium's single scattering along each beam (BeamBackscatter.h).
+struct BackscatterSettings {
+  /// The range from which the receiver sees the laser's cone whole (a
+  /// coaxial receiver's overlap; [HAH]'s ramps to 1 over 0.9 - 1.0 m):
+  /// nothing nearer reaches the detector. > 0 (the 1 / r^2 diverges at 0).
+  double overlap_m = 1.0;
+  /// The medium's phase function at pi as the lidar sees it, 1/sr (fog's
+  /// Mie backscatter, which Henyey-Greenstein underestimates 15x:
+  /// shared/research/media-delays-lidar.md 2.2); 0: the medium's own.
+  double phase_at_pi_per_sr = 0.0;
+};
+
 struct LidarSpec {
   glm::vec3 position_world{0.0f};
   /// Unit. Spinning: normal to up, azimuth 0; raster and zones: the look
@@ -80,6 +92,7 @@ struct LidarSpec {
   int32_t beam_rays = 16;
   double power_W = 1.0;  ///< the laser's power per beam, per unit pulse
   ReturnSettings returns;
+  BackscatterSettings backscatter;
 
   bool gridScan() const { return scan != ScanPattern::Spinning; }
   /// The waveforms' rows: channels (spinning) or the grid's rows.
