@@ -365,7 +365,7 @@ const int MEDIUM_VPL_RAY_SAMPLES = 2;
 // The threshold keeps about MEDIUM_VPL_RAY_PAIRS pairs a ray where the
 // VPLs' estimates sum as they would at the scene's scale
 // (ir::mediumRayThreshold); fewer VPLs than that are all kept.
-const float MEDIUM_VPL_RAY_PAIRS = 256.0f;
+const float MEDIUM_VPL_RAY_PAIRS = 4096.0f;
 
 // A VPL's importance for the roulette: its mean flux, a medium VPL's over
 // 4 pi (an isotropic phase's intensity per unit flux; a surface VPL's flux is
