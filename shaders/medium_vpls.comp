@@ -40,7 +40,7 @@ uniform uint uVplCount;     // VPLs in this dispatch
 uniform uint uIsmFirstVpl;  // first VPL whose ISM is at the start of the ISM buffer
 uniform float uVplRadius;   // mediumVplRadius of render.indirect's geometry clamp, m
 uniform float uMediumRayThreshold;  // the pairs' roulette (ir::mediumRayThreshold)
-uniform uint uMediumRaySeed;        // the pairs' draws (CpuMediumVpls.cpp's seed)
+uniform uint uMediumRaySeed;        // the pairs' draws (ir::mediumRaySeed)
 #include "camera_end.glsl"
 #include "vpl_visibility.glsl"
 

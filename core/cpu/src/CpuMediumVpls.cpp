@@ -20,6 +20,7 @@
 #include "VplArrays.h"
 #include "tofsim/capture/ThinLens.h"
 #include "tofsim/cpu/CpuBackend.h"
+#include "tofsim/ir/MediumRayVpls.h"
 #include "tofsim/ir/SurfaceImage.h"
 #include "tofsim/physics/ScatterVertex.h"
 #include "tofsim/physics/ShaderRandom.h"
@@ -30,9 +31,8 @@ namespace tofsim::cpu {
 
 namespace {
 
-/// Sets the pairs' draws apart from the seed's other uses (the ISMs' points).
-constexpr uint32_t kMediumRaySeedSalt = 0x6d656469u;
-/// A pixel's samples' draws: the seed plus the sample's index times this.
+/// A pixel's samples' draws: the seed plus the sample's index times this
+/// (ir::mediumRaySeed; medium_vpls.comp's).
 constexpr uint32_t kSampleStride = 0x9e3779b9u;
 
 /// What the job fixes for every VPL's medium light.
@@ -46,7 +46,7 @@ struct VplMediumTerms {
   bool exact = false;       ///< exact visibility rays, else the ISMs (or none)
   float eps = 0.0f;         ///< the exact rays' start offset, m (as the gather's)
   float threshold = 0.0f;   ///< the pairs' roulette (mediumRayThreshold_)
-  uint32_t seed = 0;        ///< the pairs' draws: render.seed's
+  uint32_t seed = 0;        ///< the pairs' draws (ir::mediumRaySeed)
 };
 
 }  // namespace
@@ -65,7 +65,7 @@ void CpuBackend::gatherMediumIndirect(std::size_t firstVpl, std::size_t count) {
   t.exact = indirectVisibility_ && s.indirect.visibility == capture::Visibility::Exact;
   t.eps = 1e-4f * sceneScale_m_;  // as the surface gather's exact visibility
   t.threshold = mediumRayThreshold_;
-  t.seed = physics::pcgHash(static_cast<uint32_t>(s.seed ^ (s.seed >> 32)) ^ kMediumRaySeedSalt);
+  t.seed = ir::mediumRaySeed(s.seed);
   const CpuIsm* ism = t.exact || !indirectVisibility_ ? nullptr : ism_.get();
   const VplArrays& v = *vpls_;
   const capture::PrimaryRays rays(job_.imager);
@@ -125,8 +125,9 @@ void CpuBackend::gatherMediumIndirect(std::size_t firstVpl, std::size_t count) {
           const float q = physics::mediumRayVplSurvival(
               physics::mediumRayVplEstimate(ray, importance), t.threshold);
           if (!(physics::unitFloat(bits) < q)) continue;
-          addSampledMediumRayLight(axis, ray, r.weight / q, physics::unitFloat(physics::pcgHash(bits)),
-                                   into, mediumOutside_[i], nodeLight);
+          const float offset = physics::unitFloat(physics::pcgHash(bits));
+          addSampledMediumRayLight(axis, ray, r.weight / q, offset, into, mediumOutside_[i],
+                                   nodeLight);
         }
         if (cls == 0) continue;
         // A delayed class's light goes to its buffer, bin by bin.

@@ -12,7 +12,6 @@
 #include "tofsim/ir/MediumRayVpls.h"
 #include "tofsim/ir/MediumVpl.h"
 #include "tofsim/physics/MediumPhysics.h"
-#include "tofsim/physics/ShaderRandom.h"
 #include "tofsim/util/Interrupt.h"
 
 namespace tofsim::render {
@@ -22,8 +21,6 @@ namespace {
 /// VPLs a dispatch: most of a ray's pairs are left by the roulette, and a
 /// kept one is a few nodes; the shader's guard checks the loop trips.
 constexpr std::size_t kVplsPerDispatch = 16;
-/// The pairs' draws apart from the seed's other uses (CpuMediumVpls.cpp's).
-constexpr uint32_t kMediumRaySeedSalt = 0x6d656469u;
 
 }  // namespace
 
@@ -44,8 +41,7 @@ MediumVpls::MediumVpls(const capture::RenderJob& job, const std::vector<ir::Vpl>
   const float sceneScale_m = std::max(glm::length(extent), 1e-6f);
   program_.set("uSceneScale_m", sceneScale_m);  // as the gather's
   program_.set("uMediumRayThreshold", ir::mediumRayThreshold(vpls, sceneScale_m));
-  program_.set("uMediumRaySeed", physics::pcgHash(static_cast<uint32_t>(s.seed ^ (s.seed >> 32)) ^
-                                                  kMediumRaySeedSalt));
+  program_.set("uMediumRaySeed", ir::mediumRaySeed(s.seed));
   program_.set("uVplRadius", physics::mediumVplRadius(
                                  static_cast<float>(s.indirect.geometry_term_clamp_per_m2)));
   setVplBrdfClamp(program_, s);

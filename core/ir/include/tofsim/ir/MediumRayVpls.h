@@ -6,10 +6,12 @@
 // is the render's, from all its VPLs, so that a pair's draw does not depend
 // on how the batches split them.
 
+#include <cstdint>
 #include <vector>
 
 #include "tofsim/ir/IrBackend.h"
 #include "tofsim/physics/MediumPhysics.h"
+#include "tofsim/physics/ShaderRandom.h"
 
 namespace tofsim::ir {
 
@@ -25,6 +27,13 @@ inline float mediumRayThreshold(const std::vector<Vpl>& vpls, float sceneScale_m
   }
   const double perPair = physics::PI / (0.25 * static_cast<double>(sceneScale_m));
   return static_cast<float>(sum * perPair / physics::MEDIUM_VPL_RAY_PAIRS);
+}
+
+/// The pairs' draws' seed from render.seed (folded to 32 bits as the ISMs'
+/// uSeed, then set apart from its other uses): both backends hash (VPL
+/// index, pixel, this + the sample's index x 0x9e3779b9).
+inline uint32_t mediumRaySeed(uint64_t seed) {
+  return physics::pcgHash(static_cast<uint32_t>(seed ^ (seed >> 32)) ^ 0x6d656469u);
 }
 
 }  // namespace tofsim::ir
