@@ -269,7 +269,7 @@ TOFSIM_PHYSICS_FN vec2 mediumBinSpan(MediumRay ray, int branch, vec2 span, int k
 // An interval of s in the substitution's angle: the tangent where it starts,
 // its width (phi1 - phi0, computed without the cancellation of two angles
 // near pi/2) and its angle steps of `nodes` Gauss-Legendre nodes each
-// (MEDIUM_GAUSS_NODES; a VPL's bounded intervals fewer: mediumVplInterval).
+// (MEDIUM_GAUSS_NODES; a VPL's sampled span: mediumSampledInterval).
 struct MediumInterval {
   float tan0;
   float width;
@@ -295,20 +295,6 @@ TOFSIM_PHYSICS_FN MediumInterval mediumInterval(MediumRay ray, vec2 part) {
   return iv;
 }
 
-// A VPL emitter's interval (issue 42, item 4; medium_vpl_scattering.md): the
-// same steps with fewer nodes where the interval is bounded, since nearly
-// every bin's interval is far narrower than the integrand's angular scale
-// (a Henyey-Greenstein lobe of g = 0.845 is ~0.15 rad wide in phi) and the
-// VPLs' cost is the nodes of every bin of every ray: one node (the midpoint)
-// up to MEDIUM_VPL_MIDPOINT_WIDTH, two above (exact for cubics); an interval
-// to infinity keeps its MEDIUM_GAUSS_NODES (the transmittance's tail).
-const float MEDIUM_VPL_MIDPOINT_WIDTH = PI / 1024.0f;
-TOFSIM_PHYSICS_FN MediumInterval mediumVplInterval(MediumRay ray, vec2 part) {
-  MediumInterval iv = mediumInterval(ray, part);
-  if (part.y >= 0.0f) iv.nodes = iv.width <= MEDIUM_VPL_MIDPOINT_WIDTH ? 1 : 2;
-  return iv;
-}
-
 // Node j of the n-node Gauss-Legendre rule on [0, 1] (n = 1, 2 or 4):
 // (position, weight).
 TOFSIM_PHYSICS_FN vec2 mediumGaussNode(int n, int j) {
@@ -331,11 +317,12 @@ struct MediumNode {
   float weight;    // 0: a node at s = infinity (nothing arrives)
 };
 
-// Node k of interval iv, k in [0, steps x nodes).
-TOFSIM_PHYSICS_FN MediumNode mediumNode(MediumRay ray, MediumInterval iv, int k) {
+// The node of angle step `step` of interval iv at gauss = (position in the
+// step, 0 .. 1; weight in the step: a Gauss-Legendre node's, or 1 for a
+// sample).
+TOFSIM_PHYSICS_FN MediumNode mediumNodeAt(MediumRay ray, MediumInterval iv, int step,
+                                          vec2 gauss) {
   MediumNode n;
-  int step = k / iv.nodes;
-  vec2 gauss = mediumGaussNode(iv.nodes, k - step * iv.nodes);
   float stepWidth = iv.width / float(iv.steps);
   // tan(phi0 + offset) by the addition formula: precise where phi0 is near
   // +-pi/2, where phi0 itself has lost the digits s needs. It holds for
@@ -355,6 +342,57 @@ TOFSIM_PHYSICS_FN MediumNode mediumNode(MediumRay ray, MediumInterval iv, int k)
   n.cosTheta = clamp(-d / n.r, -1.0f, 1.0f);
   n.weight = den != 0.0f ? gauss.y * stepWidth / ray.height : 0.0f;
   return n;
+}
+
+// Node k of interval iv, k in [0, steps x nodes).
+TOFSIM_PHYSICS_FN MediumNode mediumNode(MediumRay ray, MediumInterval iv, int k) {
+  int step = k / iv.nodes;
+  return mediumNodeAt(ray, iv, step, mediumGaussNode(iv.nodes, k - step * iv.nodes));
+}
+
+// A VPL's light along a camera ray, sampled (issue 42, item 4;
+// medium_vpl_scattering.md, "Sampled"): the pass's cost was a quadrature
+// node per bin per (ray, VPL) pair. Instead a pair is kept with probability
+// q = min(1, e / threshold), e = mediumRayVplEstimate (the VPL's importance
+// times the integral of its bounded 1/(r^2 + R^2) over the ray, width /
+// height: what the pair can bring, within its transmittance and phase), and
+// weighed 1 / q; a kept pair's integral is estimated by
+// MEDIUM_VPL_RAY_SAMPLES points of the substitution's angle, one in each of
+// as many equal steps, all at the same offset in their step (one uniform
+// draw: systematic sampling), each deposited in the bin of its own path.
+// Both are unbiased: the expected light of every bin is the integral's.
+const int MEDIUM_VPL_RAY_SAMPLES = 2;
+// The threshold keeps about MEDIUM_VPL_RAY_PAIRS pairs a ray where the
+// VPLs' estimates sum as they would at the scene's scale
+// (ir::mediumRayThreshold); fewer VPLs than that are all kept.
+const float MEDIUM_VPL_RAY_PAIRS = 4096.0f;
+
+// A VPL's importance for the roulette: its mean flux, a medium VPL's over
+// 4 pi (an isotropic phase's intensity per unit flux; a surface VPL's flux is
+// its cosine emitter's peak). Only the roulette's variance depends on it.
+TOFSIM_PHYSICS_FN float mediumRayVplImportance(vec3 flux, vec3 normal) {
+  float mean = (flux.x + flux.y + flux.z) / 3.0f;
+  return normal == vec3(0.0f) ? mean / (4.0f * PI) : mean;
+}
+
+// What a (ray, VPL) pair can bring, for the roulette: the importance times
+// the angle the ray's span (camera to surface) subtends, over the height.
+TOFSIM_PHYSICS_FN float mediumRayVplEstimate(MediumRay ray, float importance) {
+  return importance * mediumInterval(ray, vec2(0.0f, ray.surface)).width / ray.height;
+}
+
+// The pair's probability of being kept.
+TOFSIM_PHYSICS_FN float mediumRayVplSurvival(float estimate, float threshold) {
+  return threshold > 0.0f ? min(estimate / threshold, 1.0f) : 1.0f;
+}
+
+// The sampled interval of a branch's whole span: MEDIUM_VPL_RAY_SAMPLES
+// steps of one node, mediumNodeAt(ray, iv, j, vec2(offset, 1)).
+TOFSIM_PHYSICS_FN MediumInterval mediumSampledInterval(MediumRay ray, vec2 span) {
+  MediumInterval iv = mediumInterval(ray, span);
+  iv.steps = MEDIUM_VPL_RAY_SAMPLES;
+  iv.nodes = 1;
+  return iv;
 }
 
 // A node's radiance toward the camera, its weight included, before the

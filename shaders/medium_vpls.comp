@@ -15,6 +15,7 @@
 layout(local_size_x = TOFSIM_WORK_GROUP_SIZE) in;
 
 #include "transient_physics.glsl"
+#include "random.glsl"
 #include "vpl.glsl"
 #include "surface_samples.glsl"
 #include "medium_uniforms.glsl"
@@ -38,6 +39,8 @@ uniform uint uFirstVpl;     // first VPL of this dispatch
 uniform uint uVplCount;     // VPLs in this dispatch
 uniform uint uIsmFirstVpl;  // first VPL whose ISM is at the start of the ISM buffer
 uniform float uVplRadius;   // mediumVplRadius of render.indirect's geometry clamp, m
+uniform float uMediumRayThreshold;  // the pairs' roulette (ir::mediumRayThreshold)
+uniform uint uMediumRaySeed;        // the pairs' draws (ir::mediumRaySeed)
 #include "camera_end.glsl"
 #include "vpl_visibility.glsl"
 
@@ -70,39 +73,26 @@ vec3 vplNodeIntensity(Vpl vpl, uint ismIndex, MediumNode n) {
   return intensity;
 }
 
-// The light of bin k's part of the ray (k: -1 before the axis, uBins after),
-// the time axis starting at `start_m` (the axis' less the VPL's path).
-vec3 vplBinLight(Vpl vpl, uint ismIndex, MediumRay ray, int branch, vec2 span, int k,
-                 float start_m) {
-  MediumInterval iv = mediumVplInterval(
-      ray, mediumBinSpan(ray, branch, span, k, uIndexOfRefraction, start_m, uBinWidth_m, uBins));
-  vec3 sum = vec3(0.0);
-  for (int node = 0; node < iv.steps * iv.nodes; ++node) {
-    ++gIterations;
-    MediumNode n = mediumNode(ray, iv, node);
-    if (n.weight == 0.0) continue;
-    sum += mediumNodeRadiance(n, uMediumSigmaS, uMediumSigmaT, uMediumPhase, uMediumG,
-                              vplNodeIntensity(vpl, ismIndex, n), 1.0);
-  }
-  return sum;
-}
-
-// Adds VPL vpl's light along a ray, times `weight`, into pixel `local`'s bins.
-void gatherRay(uint local, Vpl vpl, uint ismIndex, MediumRay ray, float weight,
+// Adds VPL vpl's sampled light along a ray (medium.glsl's
+// mediumSampledInterval: its points at `offset` in their steps), times
+// `weight`, into pixel `local`'s bins.
+void gatherRay(uint local, Vpl vpl, uint ismIndex, MediumRay ray, float weight, float offset,
                inout float lostBefore, inout float lostAfter) {
   float start_m = uStart_m - vpl.positionPath.w;  // its light starts at its path
   ivec2 branches = mediumBranches(uCameraUnwarp != 0);
   for (int branch = branches.x; branch <= branches.y; ++branch) {
     vec2 span = mediumSpan(ray, branch);
     if (mediumSpanEmpty(span)) continue;
-    ivec2 bins = mediumBinRange(ray, branch, span, uIndexOfRefraction, start_m, uBinWidth_m,
-                                uBins);
-    int step = bins.y >= bins.x ? 1 : -1;
-    for (int k = bins.x;; k += step) {
+    MediumInterval iv = mediumSampledInterval(ray, span);
+    for (int step = 0; step < iv.steps; ++step) {
       ++gIterations;
-      depositInBin(local, k, 1.0, vplBinLight(vpl, ismIndex, ray, branch, span, k, start_m) * weight,
-                   lostBefore, lostAfter);
-      if (k == bins.y) break;
+      MediumNode n = mediumNodeAt(ray, iv, step, vec2(offset, 1.0));
+      if (n.weight == 0.0) continue;
+      int k = mediumBinOf(ray, mediumPathAt(ray, branch, n.s), uIndexOfRefraction, start_m,
+                          uBinWidth_m, uBins);
+      vec3 light = mediumNodeRadiance(n, uMediumSigmaS, uMediumSigmaT, uMediumPhase, uMediumG,
+                                      vplNodeIntensity(vpl, ismIndex, n), 1.0);
+      depositInBin(local, k, 1.0, light * weight, lostBefore, lostAfter);
     }
   }
 }
@@ -116,12 +106,19 @@ void main() {
   float lostAfter = outside[2u * local + 1u];
   int samples = samplesOfPixel(pixel);
   for (uint k = 0u; k < uVplCount; ++k) {
+    ++gIterations;
     Vpl vpl = vpls[uFirstVpl + k];
     uint ismIndex = uFirstVpl - uIsmFirstVpl + k;
+    float importance = mediumRayVplImportance(vpl.flux.rgb, vpl.normal.xyz);
     for (int s = 0; s < samples; ++s) {
       float weight;
       MediumRay ray = mediumSampleRay(xy, samples, s, vpl.positionPath.xyz, uVplRadius, weight);
-      gatherRay(local, vpl, ismIndex, ray, weight, lostBefore, lostAfter);
+      // The pair's draws (CpuMediumVpls.cpp's): kept or not, its points' offset.
+      uint bits = hash3(uFirstVpl + k, pixel, uMediumRaySeed + uint(s) * 0x9e3779b9u);
+      float q = mediumRayVplSurvival(mediumRayVplEstimate(ray, importance), uMediumRayThreshold);
+      if (!(unitFloat(bits) < q)) continue;
+      gatherRay(local, vpl, ismIndex, ray, weight / q, unitFloat(pcgHash(bits)), lostBefore,
+                lostAfter);
     }
   }
   outside[2u * local] = lostBefore;

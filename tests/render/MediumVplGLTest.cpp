@@ -3,11 +3,16 @@
 // gather alone (ir::IrBackend: prepareSurfaces, setVpls, gatherIndirect,
 // readSegment): hand-made VPLs (a Lambertian surface VPL, medium VPLs with an
 // isotropic and a Henyey-Greenstein phase function) beside a camera ray that
-// sees no surface, each bin of the indirect volume against the integral
+// sees no surface, against the integral per bin
 //   sigma_s p(cos) I_vpl(u) / (r^2 + R^2) exp(-sigma_t (r + s)) ds
 // over the bin's interval of s (path: the VPL's + r + s), computed here in
-// double by dense Simpson rules, R = 1 / sqrt(render.indirect.geometry_clamp);
-// the VPL's path shifts its light by whole bins; GL against CPU.
+// double by dense Simpson rules, R = 1 / sqrt(render.indirect.geometry_clamp).
+// The pass samples each (ray, VPL) pair (two points of the angle at one
+// offset u, each in the bin of its path; a roulette above
+// MEDIUM_VPL_RAY_PAIRS VPLs): the pair's mean over u is the dense integral;
+// a backend's sum over many copies of the VPL is within a few standard
+// deviations of it (the pair's variance over u, computed here); the VPL's
+// path shifts its light by whole bins; GL against CPU.
 
 #include <gtest/gtest.h>
 
@@ -16,10 +21,12 @@
 #include <functional>
 #include <memory>
 
+#include "CpuMediumRays.h"
 #include "support/AnalyticScenes.h"
 #include "support/BackendScene.h"
 #include "support/Simpson.h"
 #include "support/TestBackends.h"
+#include "tofsim/ir/MediumRayVpls.h"
 #include "tofsim/ir/MediumVpl.h"
 #include "tofsim/physics/MediumPhysics.h"
 #include "tofsim/volume/PhysicalConstants.h"
@@ -152,48 +159,188 @@ std::vector<glm::dvec3> expectedBins(const VplMediumScene& s, const ir::Vpl& v) 
   return bins;
 }
 
-// Every bin within 5e-4 of itself (plus 1e-6 of the peak; measured: 6e-5 at
-// most), and at least
-// `tail` (bin, channel)s above 1e-4 of the peak compared.
-void expectBins(const std::vector<float>& got, const std::vector<glm::dvec3>& expected,
-                int tail) {
-  double peak = 0.0;
-  for (const glm::dvec3& e : expected) peak = std::max({peak, e.x, e.y, e.z});
-  ASSERT_GT(peak, 0.0);
-  int lit = 0;
-  for (std::size_t k = 0; k < expected.size(); ++k) {
-    for (int c = 0; c < 3; ++c) {
-      const double e = expected[k][c];
-      EXPECT_NEAR(got[k * 3 + c], e, 5e-4 * e + 1e-6 * peak) << "bin " << k << " channel " << c;
-      lit += e > 1e-4 * peak;
+// One (ray, VPL) pair's sampled light per bin as a function of its offset u
+// (the CPU pass's addSampledMediumRayLight, weight 1, the VPL's intensity
+// this file's double one), over u in [0, 1) by a grid of kOffsets midpoints:
+// per bin its mean and mean square, the same of the cumulative light (bins
+// up to k), its largest light and the share of u that lights it. A bin's
+// light is a step function of u where one of the two points crosses one of
+// its ends: the grid's mean is off by at most half a step per crossing,
+// 4 x (its largest light) / (2 kOffsets).
+constexpr int kOffsets = 1 << 16;
+struct PairMoments {
+  std::vector<glm::dvec3> mean, meanSquare, cumulative, cumulativeSquare, largest;
+  std::vector<double> lit;
+};
+
+PairMoments pairMoments(const VplMediumScene& s, const ir::Vpl& v) {
+  const capture::RenderSettings& set = s.job.settings;
+  const int bins = set.time.bins;
+  const cpu::MediumAxis axis{static_cast<float>(set.time.start_m()) - v.positionPath.w,
+                             static_cast<float>(set.time.bin_width_m()),
+                             static_cast<float>(set.time.index_of_refraction), bins, false};
+  const physics::MediumRay ray = physics::mediumEmitterRay(
+      glm::vec3(0.0f), glm::vec3(0.0f, 0.0f, -1.0f), glm::vec3(v.positionPath),
+      physics::mediumVplRadius(static_cast<float>(set.indirect.geometry_term_clamp_per_m2)),
+      physics::MEDIUM_UNBOUNDED, 0.0f);
+  const auto nodeLight = [&](const physics::MediumNode& n) {
+    const glm::vec3 intensity(expectedIntensity(v, set.medium, glm::dvec3(n.fromLight)));
+    return physics::mediumNodeRadiance(n, set.medium.sigma_s_per_m, set.medium.sigmaT(),
+                                       set.medium.phase, set.medium.g, intensity, 1.0f);
+  };
+  const std::vector<glm::dvec3> zero(bins, glm::dvec3(0.0));
+  PairMoments m{zero, zero, zero, zero, zero, std::vector<double>(bins, 0.0)};
+  std::vector<float> light(static_cast<std::size_t>(bins) * 3);
+  for (int i = 0; i < kOffsets; ++i) {
+    std::fill(light.begin(), light.end(), 0.0f);
+    physics::OffAxisSums lost;
+    cpu::addSampledMediumRayLight(axis, ray, 1.0f, (i + 0.5f) / kOffsets, light.data(), lost,
+                                  nodeLight);
+    glm::dvec3 sum(0.0);
+    for (int k = 0; k < bins; ++k) {
+      const glm::dvec3 e(light[k * 3], light[k * 3 + 1], light[k * 3 + 2]);
+      sum += e;
+      m.mean[k] += e / double(kOffsets);
+      m.meanSquare[k] += e * e / double(kOffsets);
+      m.cumulative[k] += sum / double(kOffsets);
+      m.cumulativeSquare[k] += sum * sum / double(kOffsets);
+      m.largest[k] = glm::max(m.largest[k], e);
+      m.lit[k] += e != glm::dvec3(0.0) ? 1.0 / kOffsets : 0.0;
     }
   }
-  EXPECT_GE(lit, tail);
+  return m;
+}
+
+double peakOf(const std::vector<glm::dvec3>& bins) {
+  double peak = 0.0;
+  for (const glm::dvec3& e : bins) peak = std::max({peak, e.x, e.y, e.z});
+  return peak;
+}
+
+// The three VPLs of the tests below, in their scenes.
+struct VplCase {
+  const char* name;
+  VplMediumScene scene;
+  ir::Vpl vpl;
+  int tail;  ///< (bin, channel)s above 1e-4 of the peak at least
+};
+
+std::vector<VplCase> vplCases() {
+  std::vector<VplCase> cases(3);
+  cases[0].name = "surface";
+  cases[0].vpl = surfaceVpl();
+  cases[0].tail = 150;
+  cases[1].name = "isotropic medium";
+  cases[1].vpl = mediumVplAt(cases[1].scene);
+  cases[1].tail = 180;
+  cases[2].name = "Henyey-Greenstein medium";
+  cases[2].scene.job.settings.medium.phase = physics::PHASE_HENYEY_GREENSTEIN;
+  cases[2].scene.job.settings.medium.g = 0.6f;
+  cases[2].vpl = mediumVplAt(cases[2].scene);
+  cases[2].tail = 50;
+  return cases;
+}
+
+// The sampled pair is unbiased: its mean over the offset is each bin's
+// dense integral, within the grid's error (PairMoments) plus 2e-4 of itself
+// (float rounding) and 1e-6 of the peak. Fails with R = 1 mm (each case).
+TEST(MediumVplSampledPairTest, ItsMeanOverTheOffsetIsTheDenseIntegral) {
+  for (const VplCase& c : vplCases()) {
+    const std::vector<glm::dvec3> expected = expectedBins(c.scene, c.vpl);
+    const PairMoments m = pairMoments(c.scene, c.vpl);
+    const double peak = peakOf(expected);
+    ASSERT_GT(peak, 0.0);
+    int lit = 0;
+    for (std::size_t k = 0; k < expected.size(); ++k) {
+      for (int ch = 0; ch < 3; ++ch) {
+        const double e = expected[k][ch];
+        EXPECT_NEAR(m.mean[k][ch], e, 2.0 * m.largest[k][ch] / kOffsets + 2e-4 * e + 1e-6 * peak)
+            << c.name << " bin " << k << " channel " << ch;
+        lit += e > 1e-4 * peak;
+      }
+    }
+    EXPECT_GE(lit, c.tail) << c.name;
+  }
+}
+
+// A backend's light of `copies` copies of `v` (each of 1 / copies of its
+// flux: each pair its own draws) against the dense integral, within 5
+// standard deviations of the copies' mean (a kept pair's light over u,
+// weighed 1 / q: variance (E[c^2] / q - E[c]^2) / copies) plus the grid's
+// error, 2e-4 of itself and 1e-6 of the peak: the cumulative light up to
+// every bin (each point counts in every sum from its bin on: the whole
+// distribution along the ray), and each bin that at least 25 kept copies
+// light on average (below, a bin's few points are not near normal; the
+// 512 points spread over ~160 bins leave `minBins` such, near the VPL).
+// With at most MEDIUM_VPL_RAY_PAIRS copies every pair is kept (q = 1);
+// above, q is the roulette's for this ray.
+void expectCopiesAsTheIntegral(test::TestBackend backend, const VplCase& c, int copies,
+                               int minBins) {
+  ir::Vpl v = c.vpl;
+  v.flux = glm::vec4(glm::vec3(v.flux) / float(copies), v.flux.w);
+  const std::vector<ir::Vpl> vpls(copies, v);
+  const glm::vec3 extent = c.scene.scene.bounds().max - c.scene.scene.bounds().min;
+  const float threshold = ir::mediumRayThreshold(vpls, std::max(glm::length(extent), 1e-6f));
+  const physics::MediumRay ray = physics::mediumEmitterRay(
+      glm::vec3(0.0f), glm::vec3(0.0f, 0.0f, -1.0f), glm::vec3(v.positionPath),
+      physics::mediumVplRadius(
+          static_cast<float>(c.scene.job.settings.indirect.geometry_term_clamp_per_m2)),
+      physics::MEDIUM_UNBOUNDED, 0.0f);
+  const double q = physics::mediumRayVplSurvival(
+      physics::mediumRayVplEstimate(
+          ray, physics::mediumRayVplImportance(glm::vec3(v.flux), glm::vec3(v.normal))),
+      threshold);
+  EXPECT_EQ(q == 1.0, copies <= physics::MEDIUM_VPL_RAY_PAIRS) << "q " << q;
+  const auto b = makeBackend(backend);
+  const std::vector<float> got = gatherVpls(*b, c.scene, vpls);
+  const std::vector<glm::dvec3> expected = expectedBins(c.scene, c.vpl);
+  const PairMoments m = pairMoments(c.scene, c.vpl);
+  const double peak = peakOf(expected);
+  const auto allowance = [&](double e, double mean, double meanSquare, double largest) {
+    const double variance = std::max(meanSquare / q - mean * mean, 0.0) / copies;
+    return 5.0 * std::sqrt(variance) + 2.0 * largest / kOffsets + 2e-4 * e + 1e-6 * peak;
+  };
+  glm::dvec3 expectedSum(0.0), gotSum(0.0), largestPoint(0.0);
+  for (const glm::dvec3& e : m.largest) largestPoint = glm::max(largestPoint, e);
+  int compared = 0;
+  for (std::size_t k = 0; k < expected.size(); ++k) {
+    const bool dense = m.lit[k] * q * copies >= 25.0;
+    compared += dense;
+    for (int ch = 0; ch < 3; ++ch) {
+      const double e = expected[k][ch];
+      expectedSum[ch] += e;
+      gotSum[ch] += got[k * 3 + ch];
+      EXPECT_NEAR(gotSum[ch], expectedSum[ch],
+                  allowance(expectedSum[ch], m.cumulative[k][ch], m.cumulativeSquare[k][ch],
+                            2.0 * largestPoint[ch]))  // the sum steps where a point leaves it
+          << c.name << " up to bin " << k << " channel " << ch;
+      if (!dense) continue;
+      EXPECT_NEAR(got[k * 3 + ch], e,
+                  allowance(e, m.mean[k][ch], m.meanSquare[k][ch], m.largest[k][ch]))
+          << c.name << " bin " << k << " channel " << ch;
+    }
+  }
+  EXPECT_GE(compared, minBins) << c.name;
 }
 
 class MediumVplGLTest : public test::BackendTest {};
 
 TEST_P(MediumVplGLTest, SurfaceVplLightsTheRayAsTheDenseIntegral) {
-  VplMediumScene s;
-  const ir::Vpl v = surfaceVpl();
-  const auto backend = makeBackend(GetParam());
-  expectBins(gatherVpls(*backend, s, {v}), expectedBins(s, v), 150);
+  expectCopiesAsTheIntegral(GetParam(), vplCases()[0], 256, 4);
 }
 
 TEST_P(MediumVplGLTest, IsotropicMediumVplLightsTheRayAsTheDenseIntegral) {
-  VplMediumScene s;
-  const ir::Vpl v = mediumVplAt(s);
-  const auto backend = makeBackend(GetParam());
-  expectBins(gatherVpls(*backend, s, {v}), expectedBins(s, v), 180);
+  expectCopiesAsTheIntegral(GetParam(), vplCases()[1], 256, 4);
 }
 
 TEST_P(MediumVplGLTest, HenyeyGreensteinMediumVplLightsTheRayAsTheDenseIntegral) {
-  VplMediumScene s;
-  s.job.settings.medium.phase = physics::PHASE_HENYEY_GREENSTEIN;
-  s.job.settings.medium.g = 0.6f;
-  const ir::Vpl v = mediumVplAt(s);
-  const auto backend = makeBackend(GetParam());
-  expectBins(gatherVpls(*backend, s, {v}), expectedBins(s, v), 50);
+  expectCopiesAsTheIntegral(GetParam(), vplCases()[2], 256, 4);
+}
+
+// Above MEDIUM_VPL_RAY_PAIRS VPLs the roulette keeps a share of the pairs,
+// weighed by its inverse: still the integral.
+TEST_P(MediumVplGLTest, TheRouletteKeepsTheIntegral) {
+  expectCopiesAsTheIntegral(GetParam(), vplCases()[1], 8192, 3);
 }
 
 // The VPL's own path delays its light: 0.5 m more (10 bins) moves every bin

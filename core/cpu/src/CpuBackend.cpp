@@ -17,6 +17,7 @@
 #include "VplArrays.h"
 #include "tofsim/capture/SegmentSink.h"
 #include "tofsim/capture/ThinLens.h"
+#include "tofsim/ir/MediumRayVpls.h"
 #include "tofsim/ir/MediumVpl.h"
 #include "tofsim/ir/SurfaceImage.h"
 #include "tofsim/physics/FootprintBuffer.h"
@@ -169,6 +170,7 @@ std::vector<ir::Vpl> CpuBackend::generateVpls(const capture::RenderJob& job) {
 void CpuBackend::setVpls(const std::vector<ir::Vpl>& vpls) {
   vpls_ = std::make_unique<VplArrays>(vpls);
   mediumVpls_ = !vpls.empty() && job_.settings.vplsLightCameraRays();
+  mediumRayThreshold_ = ir::mediumRayThreshold(vpls, sceneScale_m_);
   ism_.reset();
   if (indirectVisibility_ && job_.settings.indirect.visibility == capture::Visibility::Ism &&
       !vpls.empty()) {

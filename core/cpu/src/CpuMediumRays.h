@@ -1,10 +1,10 @@
 #pragma once
 // What the CPU backend's two medium passes share (issue 42): the light's
-// single scattering along the camera rays (CpuMediumDirect.cpp) and every
-// VPL's (CpuMediumVpls.cpp) walk the same bins and quadrature nodes of
-// shaders/medium.glsl along each pixel sample's ray; only the emitter differs
-// (its position, radius, start path and what it sends toward a node, its
-// visibility included), which the caller's node functor gives.
+// single scattering along the camera rays (CpuMediumDirect.cpp: the bins'
+// quadrature nodes) and every VPL's (CpuMediumVpls.cpp: sampled points) use
+// shaders/medium.glsl's substitution along each pixel sample's ray; only the
+// emitter differs (its position, radius, start path and what it sends toward
+// a node, its visibility included), which the caller's node functor gives.
 
 #include <cstdint>
 #include <glm/glm.hpp>
@@ -29,7 +29,6 @@ struct MediumAxis {
   float start_m = 0.0f, width_m = 1.0f, eta = 1.0f;
   int32_t bins = 0;
   bool unwarp = false;  ///< the camera leg untimed (CpuBackend::dropLastLeg_)
-  bool vpl = false;     ///< a VPL emitter: mediumVplInterval's nodes
 };
 
 /// The light of bin k's part of a branch's span (k: -1 before the axis, bins
@@ -40,8 +39,7 @@ glm::vec3 mediumBinLight(const MediumAxis& a, const physics::MediumRay& ray, int
                          glm::vec2 span, int k, const NodeLight& nodeLight) {
   const glm::vec2 part =
       physics::mediumBinSpan(ray, branch, span, k, a.eta, a.start_m, a.width_m, a.bins);
-  const physics::MediumInterval iv =
-      a.vpl ? physics::mediumVplInterval(ray, part) : physics::mediumInterval(ray, part);
+  const physics::MediumInterval iv = physics::mediumInterval(ray, part);
   glm::vec3 sum(0.0f);
   for (int node = 0; node < iv.steps * iv.nodes; ++node) {
     const physics::MediumNode n = physics::mediumNode(ray, iv, node);
@@ -67,6 +65,28 @@ void addMediumRayLight(const MediumAxis& a, const physics::MediumRay& ray, float
       const glm::vec3 light = mediumBinLight(a, ray, branch, span, k, nodeLight);
       physics::depositInBin(histogram, a.bins, k, 1.0f, light * weight, lost);
       if (k == bins.y) break;
+    }
+  }
+}
+
+/// A VPL's sampled light along a ray (medium.glsl, mediumSampledInterval):
+/// per branch, MEDIUM_VPL_RAY_SAMPLES points of the angle at `offset` in
+/// their steps, each times `weight` into the bin of its own path.
+template <class NodeLight>
+void addSampledMediumRayLight(const MediumAxis& a, const physics::MediumRay& ray, float weight,
+                              float offset, float* histogram, physics::OffAxisSums& lost,
+                              const NodeLight& nodeLight) {
+  const glm::ivec2 branches = physics::mediumBranches(a.unwarp);
+  for (int branch = branches.x; branch <= branches.y; ++branch) {
+    const glm::vec2 span = physics::mediumSpan(ray, branch);
+    if (physics::mediumSpanEmpty(span)) continue;
+    const physics::MediumInterval iv = physics::mediumSampledInterval(ray, span);
+    for (int step = 0; step < iv.steps; ++step) {
+      const physics::MediumNode n = physics::mediumNodeAt(ray, iv, step, glm::vec2(offset, 1.0f));
+      if (n.weight == 0.0f) continue;
+      const int k = physics::mediumBinOf(ray, physics::mediumPathAt(ray, branch, n.s), a.eta,
+                                         a.start_m, a.width_m, a.bins);
+      physics::depositInBin(histogram, a.bins, k, 1.0f, nodeLight(n) * weight, lost);
     }
   }
 }

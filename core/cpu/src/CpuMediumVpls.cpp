@@ -20,14 +20,20 @@
 #include "VplArrays.h"
 #include "tofsim/capture/ThinLens.h"
 #include "tofsim/cpu/CpuBackend.h"
+#include "tofsim/ir/MediumRayVpls.h"
 #include "tofsim/ir/SurfaceImage.h"
 #include "tofsim/physics/ScatterVertex.h"
+#include "tofsim/physics/ShaderRandom.h"
 #include "tofsim/rays/RayScene.h"
 #include "tofsim/util/Error.h"
 
 namespace tofsim::cpu {
 
 namespace {
+
+/// A pixel's samples' draws: the seed plus the sample's index times this
+/// (ir::mediumRaySeed; medium_vpls.comp's).
+constexpr uint32_t kSampleStride = 0x9e3779b9u;
 
 /// What the job fixes for every VPL's medium light.
 struct VplMediumTerms {
@@ -39,6 +45,8 @@ struct VplMediumTerms {
   float brdfClamp = 0.0f;   ///< render.indirect.vpl_brdf_clamp, 1/sr
   bool exact = false;       ///< exact visibility rays, else the ISMs (or none)
   float eps = 0.0f;         ///< the exact rays' start offset, m (as the gather's)
+  float threshold = 0.0f;   ///< the pairs' roulette (mediumRayThreshold_)
+  uint32_t seed = 0;        ///< the pairs' draws (ir::mediumRaySeed)
 };
 
 }  // namespace
@@ -47,7 +55,7 @@ void CpuBackend::gatherMediumIndirect(std::size_t firstVpl, std::size_t count) {
   const capture::RenderSettings& s = job_.settings;
   VplMediumTerms t;
   t.axis = {static_cast<float>(s.time.start_m()), static_cast<float>(s.time.bin_width_m()),
-            static_cast<float>(s.time.index_of_refraction), s.time.bins, dropLastLeg_, true};
+            static_cast<float>(s.time.index_of_refraction), s.time.bins, dropLastLeg_};
   t.sigmaS = s.medium.sigma_s_per_m;
   t.sigmaT = s.medium.sigmaT();
   t.phase = s.medium.phase;
@@ -56,12 +64,15 @@ void CpuBackend::gatherMediumIndirect(std::size_t firstVpl, std::size_t count) {
   t.brdfClamp = static_cast<float>(s.indirect.vpl_brdf_clamp_per_sr);
   t.exact = indirectVisibility_ && s.indirect.visibility == capture::Visibility::Exact;
   t.eps = 1e-4f * sceneScale_m_;  // as the surface gather's exact visibility
+  t.threshold = mediumRayThreshold_;
+  t.seed = ir::mediumRaySeed(s.seed);
   const CpuIsm* ism = t.exact || !indirectVisibility_ ? nullptr : ism_.get();
   const VplArrays& v = *vpls_;
   const capture::PrimaryRays rays(job_.imager);
   std::optional<capture::ThinLens> lens;
   if (apertureSamples_ > 1) lens.emplace(*capture::cameraOf(job_.imager));
   const bool delayed = !responses_->empty();
+  const std::size_t pixel0 = firstPixel_;
   const std::size_t tiles = (pixelCount_ + kTilePixels - 1) / kTilePixels;
   parallelFor(tiles, threads_, [&](std::size_t tile) {
     std::vector<MediumSampleRay> samples;
@@ -102,10 +113,21 @@ void CpuBackend::gatherMediumIndirect(std::size_t firstVpl, std::size_t count) {
             delayed ? responseClasses_.then(v.responseClass.empty() ? 0u : v.responseClass[k], 0u)
                     : 0u;
         float* into = cls != 0 ? classLight.data() : histogram;
-        for (const MediumSampleRay& r : samples) {
+        const float importance = physics::mediumRayVplImportance(flux, normal);
+        for (std::size_t j = 0; j < samples.size(); ++j) {
+          const MediumSampleRay& r = samples[j];
           const physics::MediumRay ray = physics::mediumEmitterRay(r.origin, r.direction, at,
                                                                    t.radius, r.surface, r.lensPath);
-          addMediumRayLight(axis, ray, r.weight, into, mediumOutside_[i], nodeLight);
+          // The pair's draws: kept or not, and its points' offset.
+          const uint32_t bits =
+              physics::hash3(static_cast<uint32_t>(k), static_cast<uint32_t>(pixel0 + i),
+                             t.seed + static_cast<uint32_t>(j) * kSampleStride);
+          const float q = physics::mediumRayVplSurvival(
+              physics::mediumRayVplEstimate(ray, importance), t.threshold);
+          if (!(physics::unitFloat(bits) < q)) continue;
+          const float offset = physics::unitFloat(physics::pcgHash(bits));
+          addSampledMediumRayLight(axis, ray, r.weight / q, offset, into, mediumOutside_[i],
+                                   nodeLight);
         }
         if (cls == 0) continue;
         // A delayed class's light goes to its buffer, bin by bin.

@@ -330,7 +330,7 @@ void GlBackend::setVpls(const std::vector<ir::Vpl>& vpls) {
   configureIndirectGather(p.indirectLight->gatherProgram(), p.job);
   p.mediumVpls.reset();
   if (p.job.settings.vplsLightCameraRays()) {
-    p.mediumVpls = std::make_unique<MediumVpls>(p.job, *p.mediumDirect);
+    p.mediumVpls = std::make_unique<MediumVpls>(p.job, vpls, *p.mediumDirect);
   }
 }
 

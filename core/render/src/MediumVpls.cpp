@@ -9,13 +9,23 @@
 #include "MediumDirect.h"
 #include "tofsim/gl/Check.h"
 #include "tofsim/gl/Compute.h"
+#include "tofsim/ir/MediumRayVpls.h"
 #include "tofsim/ir/MediumVpl.h"
 #include "tofsim/physics/MediumPhysics.h"
 #include "tofsim/util/Interrupt.h"
 
 namespace tofsim::render {
 
-MediumVpls::MediumVpls(const capture::RenderJob& job, const MediumDirect& direct)
+namespace {
+
+/// VPLs a dispatch: most of a ray's pairs are left by the roulette, and a
+/// kept one is a few nodes; the shader's guard checks the loop trips.
+constexpr std::size_t kVplsPerDispatch = 16;
+
+}  // namespace
+
+MediumVpls::MediumVpls(const capture::RenderJob& job, const std::vector<ir::Vpl>& vpls,
+                       const MediumDirect& direct)
     : direct_(direct),
       floatsPerPixel_(static_cast<std::size_t>(job.settings.time.bins) * gpu::kChannels) {
   const capture::RenderSettings& s = job.settings;
@@ -28,7 +38,10 @@ MediumVpls::MediumVpls(const capture::RenderJob& job, const MediumDirect& direct
   program_ = gpu::makeProgram({{GL_COMPUTE_SHADER, "medium_vpls.comp"}}, defines);
   configureMediumPass(program_, job);
   const glm::vec3 extent = job.scene->bounds().max - job.scene->bounds().min;
-  program_.set("uSceneScale_m", std::max(glm::length(extent), 1e-6f));  // as the gather's
+  const float sceneScale_m = std::max(glm::length(extent), 1e-6f);
+  program_.set("uSceneScale_m", sceneScale_m);  // as the gather's
+  program_.set("uMediumRayThreshold", ir::mediumRayThreshold(vpls, sceneScale_m));
+  program_.set("uMediumRaySeed", ir::mediumRaySeed(s.seed));
   program_.set("uVplRadius", physics::mediumVplRadius(
                                  static_cast<float>(s.indirect.geometry_term_clamp_per_m2)));
   setVplBrdfClamp(program_, s);
@@ -52,11 +65,10 @@ void MediumVpls::gather(const IndirectLight& vpls, std::size_t firstVpl, std::si
   outside_.bindBase(GL_SHADER_STORAGE_BUFFER, gpu::kMediumVplOutside);
   program_.set("uFirstPixel", static_cast<unsigned>(firstPixel));
   program_.set("uPixelCount", static_cast<unsigned>(pixels));
-  // One VPL a dispatch: one VPL's bins and nodes along a ray are already
-  // thousands of loop trips (the shader's guard checks the rest).
-  for (std::size_t k = firstVpl; k < firstVpl + count; ++k) {
+  for (std::size_t k = firstVpl; k < firstVpl + count; k += kVplsPerDispatch) {
     program_.set("uFirstVpl", static_cast<unsigned>(k));
-    program_.set("uVplCount", 1u);
+    program_.set("uVplCount",
+                 static_cast<unsigned>(std::min(kVplsPerDispatch, firstVpl + count - k)));
     gl::dispatchThreads(pixels, gpu::kWorkGroupSize);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
     throwIfInterrupted();

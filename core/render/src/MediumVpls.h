@@ -8,10 +8,12 @@
 // physics: core/physics/medium_vpl_scattering.md.
 
 #include <cstddef>
+#include <vector>
 
 #include "tofsim/capture/RenderJob.h"
 #include "tofsim/gl/Buffer.h"
 #include "tofsim/gl/Program.h"
+#include "tofsim/ir/IrBackend.h"
 
 namespace tofsim::render {
 
@@ -20,8 +22,10 @@ class MediumDirect;
 
 class MediumVpls {
  public:
-  /// For `job`; `direct` holds the samples' rays.
-  MediumVpls(const capture::RenderJob& job, const MediumDirect& direct);
+  /// For `job` and its `vpls` (the pairs' roulette threshold); `direct`
+  /// holds the samples' rays.
+  MediumVpls(const capture::RenderJob& job, const std::vector<ir::Vpl>& vpls,
+             const MediumDirect& direct);
 
   /// Zeroes the volume and sums of a segment of `pixels` pixels (made or
   /// grown here: the plan counted them, ir::MemoryPlan's otherBytes).

@@ -213,6 +213,8 @@ class CpuBackend : public ir::IrBackend {
   util::ZeroedBuffer<float> mediumIndirect_;
   std::vector<physics::OffAxisSums> mediumOutside_;
   bool mediumVpls_ = false;
+  /// The (ray, VPL) pairs' roulette threshold (ir::mediumRayThreshold).
+  float mediumRayThreshold_ = 0.0f;
   /// direct_, indirect_ and footprint_ hold zeros (after allocate and readSegment).
   bool accumulatorsZero_ = false;
   std::vector<physics::OffAxisSums> outside_;  ///< per pixel of the segment: light off the axis
