@@ -4,13 +4,16 @@
 // scene too (config::applyMaterialDelays: names checked against the scene's,
 // the glTF extras read). A config with `medium:` reloads from its effective
 // config to the same medium (issue 42: the content key and the batch resume
-// rest on it).
+// rest on it). A config with `media:` has its regions taken out of its scene
+// and checked (scene::takeRegionMesh, regionMeshProblem, as
+// pipeline::takeMediumRegions does) and reloads to the same media.
 #include <filesystem>
 
 #include "FuzzFile.h"
 #include "tofsim/config/MaterialDelays.h"
 #include "tofsim/config/RunConfig.h"
 #include "tofsim/scene/GltfLoader.h"
+#include "tofsim/scene/RegionMeshes.h"
 #include "tofsim/util/Error.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
@@ -32,6 +35,26 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
           a.phase != b.phase || a.g != b.g ||
           config.render.time.index_of_refraction != again.render.time.index_of_refraction) {
         __builtin_trap();
+      }
+    }
+    if (!config.render.media.empty()) {
+      tofsim::scene::Scene scene = tofsim::scene::loadGltf(config.scene_file);
+      for (const tofsim::capture::RegionMedium& m : config.render.media) {
+        if (const auto region = tofsim::scene::takeRegionMesh(scene, m.region)) {
+          (void)tofsim::scene::regionMeshProblem(*region);
+        }
+      }
+      const tofsim::config::RunConfig again =
+          tofsim::config::loadRunConfigText(tofsim::config::effectiveConfigYaml(config), path);
+      if (again.render.media.size() != config.render.media.size()) __builtin_trap();
+      for (std::size_t i = 0; i < config.render.media.size(); ++i) {
+        const tofsim::capture::RegionMedium& a = config.render.media[i];
+        const tofsim::capture::RegionMedium& b = again.render.media[i];
+        if (a.region != b.region || a.medium.sigma_a_per_m != b.medium.sigma_a_per_m ||
+            a.medium.sigma_s_per_m != b.medium.sigma_s_per_m || a.medium.phase != b.medium.phase ||
+            a.medium.g != b.medium.g || a.index_of_refraction != b.index_of_refraction) {
+          __builtin_trap();
+        }
       }
     }
   } catch (const tofsim::InputError&) {

@@ -40,6 +40,17 @@ out("fuzz_config", "medium_fog.yaml", "scene: scenes/cornell_box.gltf\ncamera: {
     "time: {bins: 16, bin_width: 1 m, index_of_refraction: 1}\n"
     "medium: {visibility: 50 m, albedo: [0.9, 0.95, 1], phase: rayleigh}\n")
 out("fuzz_config", "fog_lidar.yaml", open(os.path.join(src, "configs/fog_lidar.yaml")).read())
+# config: per-region media (issue 42's `media:`): the shipped water tank, an
+# absorbing region on the CPU backend, and an open mesh named as a region
+out("fuzz_config", "water_tank.yaml", open(os.path.join(src, "configs/water_tank.yaml")).read())
+out("fuzz_config", "media_cpu.yaml", "scene: scenes/water_tank.gltf\ncamera: {gltf_camera: lidar_camera, "
+    "resolution: [8, 8]}\nlight: {type: point, position: [0, 0.35, 0.8]}\n"
+    "time: {bins: 16, bin_width: 1 m}\nrender: {backend: cpu}\n"
+    "media:\n  - {region: water_tank, sigma_a: [0.3, 0.05, 0.02 /m], index_of_refraction: 1.33}\n")
+out("fuzz_config", "media_open_region.yaml", "scene: scenes/water_tank.gltf\ncamera: {gltf_camera: lidar_camera, "
+    "resolution: [8, 8]}\nlight: {type: point, position: [0, 0.35, 0.8]}\n"
+    "time: {bins: 16, bin_width: 1 m}\nrender: {renderer: reference}\n"
+    "media:\n  - {region: floor, visibility: 5 m}\n")
 
 # config: a lidar (issue 43): the shipped street, elevations as a list with
 # every optional key, and the keys it refuses (a preset, a raster scan)

@@ -206,6 +206,11 @@ TEST_F(ConfigKeysWriterTest, EffectiveConfigWritesEveryDeclaredKey) {
                                     << medium << "\n";
     leafPaths(YAML::Load(effectiveConfigYaml(loadRunConfig(dir_ / "md.yaml"))), "", written);
   }
+  // Per-region media (a list: its entries' keys are documented in their own
+  // section), on the CPU backend.
+  std::ofstream(dir_ / "me.yaml") << "scene: scene.gltf\ncamera: {}\nlight: {}\ntime: {}\n"
+                                     "render: {backend: cpu}\nmedia: [{region: tank, sigma_a: 0.1}]\n";
+  leafPaths(YAML::Load(effectiveConfigYaml(loadRunConfig(dir_ / "me.yaml"))), "", written);
   // A lidar in place of the camera and the light (channels as a count).
   std::ofstream(dir_ / "li.yaml") << "scene: scene.gltf\nlidar: {position: [0, 0, 1], "
                                      "orientation: {look_at: [1, 0, 1]}, channels: {count: 2, "

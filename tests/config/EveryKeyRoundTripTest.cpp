@@ -191,6 +191,9 @@ TEST_F(EveryKeyRoundTripTest, EveryDeclaredKeyIsNonDefaultAndSurvivesTheRoundTri
   for (const ConfigKey& key : runConfigKeys()) {
     const std::string type = key.type;
     if (type == "mapping" || std::string(key.path) == "sensors") continue;
+    // Refused on the default GL backend and with `medium:` (in every.yaml):
+    // MediaCliTest.ARegionRendersAndItsEffectiveConfigRendersAgain.
+    if (std::string(key.path) == "media") continue;
     if (std::string(key.path).rfind("nlos.", 0) == 0) continue;  // NlosKeysSurviveTheRoundTrip
     if (std::string(key.path).rfind("lidar.", 0) == 0) continue;  // LidarKeysSurvive...
     // Instead of camera: RayListConfigTest.TheEffectiveConfigRoundTrips.

@@ -5,8 +5,8 @@
 // time axis's, the effective config reloads to the same medium, and bad
 // input is a located error at its line: negative coefficients, |g| >= 1, an
 // unknown phase model, a visibility <= 0, a list of the wrong length,
-// per-region `media:` (not built yet) and captures the renderers do not
-// build a medium into (nlos, rays).
+// per-region `media:` on GL or with `medium:` (MediaCliTest has the rest)
+// and captures the renderers do not build a medium into (nlos, rays).
 
 #include <gtest/gtest.h>
 
@@ -165,7 +165,7 @@ TEST_F(MediumConfigTest, BadInputIsALocatedError) {
       {"medium:\n  sigma_s: 1\n  albedo: 0.9\n", 7, "medium.albedo", "visibility"},
       {"medium:\n  sigma_s: 1\n  sigma_x: 1\n", 7, "medium.sigma_x", ""},
       {"medium: [0.1]\n", 5, "medium", "mapping"},
-      {"media:\n  - {region: tank, sigma_a: 0.3}\n", 6, "media", "not built yet"},
+      {"media:\n  - {region: tank, sigma_a: 0.3}\n", 6, "media", "render.backend: cpu"},
   };
   for (const Case& c : cases) {
     const Failure f = errorOf(c.body);
@@ -176,9 +176,13 @@ TEST_F(MediumConfigTest, BadInputIsALocatedError) {
 }
 
 TEST_F(MediumConfigTest, PerRegionMediaSayWhatIsBuilt) {
-  const Failure f = errorOf("media:\n  - {region: tank, sigma_a: 0.3}\n");
-  EXPECT_NE(f.what.find("per-region media"), std::string::npos) << f.what;
-  EXPECT_NE(f.what.find("homogeneous `medium:`"), std::string::npos) << f.what;
+  Failure f = errorOf("media:\n  - {region: tank, sigma_a: 0.3}\n");
+  EXPECT_NE(f.what.find("per-region media are built on the CPU backend"), std::string::npos)
+      << f.what;
+  f = errorOf("medium: {sigma_a: 0.1}\nmedia:\n  - {region: tank, sigma_a: 0.3}\n");
+  EXPECT_NE(f.what.find("per-region media together are not built"), std::string::npos) << f.what;
+  f = errorOf("render: {backend: cpu}\nmedia:\n  - {region: tank, sigma_s: 0.3}\n");
+  EXPECT_NE(f.what.find("built in the reference only"), std::string::npos) << f.what;
 }
 
 TEST_F(MediumConfigTest, CapturesWithoutAMediumAreRefused) {

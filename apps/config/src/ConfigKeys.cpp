@@ -146,6 +146,8 @@ const ConfigKey kRunConfigKeys[] = {
      "`henyey_greenstein` only: the asymmetry, the mean cosine of the scattering angle (> 0: forward)"},
     {"medium.index_of_refraction", "number", ">= 1", "time's", "-",
      "sets `time.index_of_refraction` (light covers c / eta per second on every leg); given in both, they must agree"},
+    {"media", "list", "", "none", "-",
+     "per-region media: each a homogeneous medium inside a closed glTF mesh, see `media` below; not with `medium`, `nlos`, `rays`, `lidar` or `sequence`"},
     {"materials", "mapping", "", "none", "-",
      "per glTF material name, its settings (a scattering delay), see below"},
     {"materials.<name>", "mapping", "", "none", "-",

@@ -229,6 +229,7 @@ std::string effectiveConfigYaml(const RunConfig& config) {
   // Only when given: a config without a medium keeps its effective bytes
   // (and its run content key).
   if (config.medium) root["medium"] = mediumNode(config);
+  if (!config.render.media.empty()) root["media"] = mediaNode(config);
   root["render"] = renderNode(config);
   YAML::Node output = outputNode(config.output);
   if (config.nlos || config.lidar) {  // the keys they read (checkNlosRun, checkLidarRun)

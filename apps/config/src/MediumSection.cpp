@@ -165,12 +165,103 @@ const char* phaseModelName(int32_t phase) {
   return "unknown";
 }
 
-void parseMedium(const ConfigNode& root, RunConfig& config) {
-  if (root.has("media")) {
-    root.failKey("media",
-                 "per-region media (a medium inside a closed glTF mesh) are not built yet; a "
-                 "homogeneous `medium:` that fills the scene is (configs/README.md, `medium`)");
+namespace {
+
+// sigma_a, sigma_s (or visibility and albedo) and the phase function of a
+// `medium:` or a `media:` entry.
+capture::Medium parseCoefficients(const ConfigNode& n, MediumConfig& form) {
+  capture::Medium m;
+  if (n.has("visibility")) {
+    parseVisibility(n, m, form);
+  } else {
+    if (n.has("albedo")) {
+      n.failKey("albedo",
+                "goes with `visibility` (fog); with sigma_a and sigma_s the albedo is "
+                "sigma_s / (sigma_a + sigma_s)");
+    }
+    if (n.has("sigma_a")) m.sigma_a_per_m = perChannel(n, "sigma_a", true);
+    if (n.has("sigma_s")) m.sigma_s_per_m = perChannel(n, "sigma_s", true);
   }
+  if (n.has("phase")) parsePhase(n, m);
+  return m;
+}
+
+// What a region's medium is not built into: a located error at the entry.
+void refuseUnbuiltRegionCaptures(const ConfigNode& e, const RunConfig& config) {
+  if (config.nlos || config.rays || config.lidar || config.sequence) {
+    e.fail(std::string("per-region media in ") +
+           (config.nlos       ? "an nlos capture"
+            : config.rays     ? "a ray-list capture"
+            : config.lidar    ? "a lidar capture"
+                              : "a capture sequence") +
+           " are not built yet: use one `camera` capture, or remove `media`");
+  }
+  if (config.renderer != RendererKind::InstantRadiosity) return;
+  if (config.backend != IrBackendKind::Cpu) {
+    e.fail("per-region media are built on the CPU backend and the reference only, not on GL: "
+           "set `render.backend: cpu` (or `render.renderer: reference`)");
+  }
+}
+
+// What instant radiosity does not build into a region's medium yet.
+void refuseUnbuiltRegionLight(const ConfigNode& e, const capture::Medium& m,
+                              const RunConfig& config) {
+  if (config.renderer != RendererKind::InstantRadiosity) return;
+  if (m.scatters()) {
+    e.failKey(e.has("visibility") ? "visibility" : "sigma_s",
+              "a scattering region (sigma_s > 0) is built in the reference only (its single "
+              "scattering and medium VPLs are not, in instant radiosity): set "
+              "`render.renderer: reference`, or sigma_s: 0");
+  }
+  if (config.render.indirect.enabled && config.render.indirect.bounces > 1) {
+    e.fail("per-region media attenuate instant radiosity's first indirect bounce only: set "
+           "render.indirect.bounces: 1 (or `render.renderer: reference`)");
+  }
+}
+
+// One `media:` entry: {region, sigma_a, sigma_s, phase, index_of_refraction}.
+void parseRegionMedium(const ConfigNode& e, RunConfig& config) {
+  if (!e.isMap()) {
+    e.fail("expected a mapping {region, sigma_a, sigma_s, phase, index_of_refraction}");
+  }
+  capture::RegionMedium r;
+  r.region = e.requireString("region");
+  for (const capture::RegionMedium& earlier : config.render.media) {
+    if (earlier.region == r.region) {
+      e.failKey("region", "names '" + r.region + "' twice: one medium per region");
+    }
+  }
+  MediumConfig form;
+  r.medium = parseCoefficients(e, form);
+  r.index_of_refraction = e.getDouble("index_of_refraction", 1.0);
+  if (!(r.index_of_refraction >= 1.0) || !std::isfinite(r.index_of_refraction)) {
+    e.failKey("index_of_refraction",
+              "must be >= 1 (got " + e.child("index_of_refraction").asString() + ")");
+  }
+  refuseUnbuiltRegionCaptures(e, config);
+  refuseUnbuiltRegionLight(e, r.medium, config);
+  config.render.media.push_back(r);
+  config.media.push_back({e.location(), e.locationOf("region")});
+}
+
+// `media:`, a list of region media; not with `medium:`.
+void parseMedia(const ConfigNode& root, RunConfig& config) {
+  const ConfigNode list = root.child("media");
+  if (root.has("medium")) {
+    root.failKey("media",
+                 "a medium filling the scene (`medium`) and per-region media together are not "
+                 "built yet: give one of them");
+  }
+  if (!list.isSequence() || list.yaml().size() == 0) {
+    list.fail("expected a list of {region, sigma_a, sigma_s, phase, index_of_refraction}");
+  }
+  for (const ConfigNode& e : list.elements()) parseRegionMedium(e, config);
+}
+
+}  // namespace
+
+void parseMedium(const ConfigNode& root, RunConfig& config) {
+  if (root.has("media")) parseMedia(root, config);
   const auto n = root.optionalChild("medium");
   if (!n) return;
   if (!n->isMap()) {
@@ -179,19 +270,7 @@ void parseMedium(const ConfigNode& root, RunConfig& config) {
   }
   MediumConfig form;
   form.at = n->location();
-  capture::Medium m;
-  if (n->has("visibility")) {
-    parseVisibility(*n, m, form);
-  } else {
-    if (n->has("albedo")) {
-      n->failKey("albedo",
-                 "goes with `visibility` (fog); with sigma_a and sigma_s the albedo is "
-                 "sigma_s / (sigma_a + sigma_s)");
-    }
-    if (n->has("sigma_a")) m.sigma_a_per_m = perChannel(*n, "sigma_a", true);
-    if (n->has("sigma_s")) m.sigma_s_per_m = perChannel(*n, "sigma_s", true);
-  }
-  if (n->has("phase")) parsePhase(*n, m);
+  const capture::Medium m = parseCoefficients(*n, form);
   parseIndex(root, *n, config.render.time);
   if (m.present()) refuseUnbuiltCaptures(*n, m, config);
   config.render.medium = m;
@@ -216,6 +295,24 @@ YAML::Node mediumNode(const RunConfig& config) {
   n["phase"] = phase;
   n["index_of_refraction"] = shortest(config.render.time.index_of_refraction);
   return n;
+}
+
+YAML::Node mediaNode(const RunConfig& config) {
+  YAML::Node list(YAML::NodeType::Sequence);
+  for (const capture::RegionMedium& r : config.render.media) {
+    YAML::Node n;
+    n["region"] = r.region;
+    n["sigma_a"] = channelsNode(r.medium.sigma_a_per_m);
+    n["sigma_s"] = channelsNode(r.medium.sigma_s_per_m);
+    YAML::Node phase;
+    phase["model"] = phaseModelName(r.medium.phase);
+    if (r.medium.phase == physics::PHASE_HENYEY_GREENSTEIN) phase["g"] = shortest(r.medium.g);
+    phase.SetStyle(YAML::EmitterStyle::Flow);
+    n["phase"] = phase;
+    n["index_of_refraction"] = shortest(r.index_of_refraction);
+    list.push_back(n);
+  }
+  return list;
 }
 
 }  // namespace tofsim::config

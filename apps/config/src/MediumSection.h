@@ -5,8 +5,12 @@
 //   medium: {sigma_a: 0.01, sigma_s: [0.04, 0.05, 0.06],
 //            phase: {model: henyey_greenstein, g: 0.6}, index_of_refraction: 1.33}
 //   medium: {visibility: 50 m}   (fog: Koschmieder, albedo and g of fog droplets)
-// Per-region media (`media:`, inside closed glTF meshes) are refused: not
-// built yet.
+// Per-region media, each inside a closed glTF mesh, into RunConfig::
+// render.media (and RunConfig::media, their locations):
+//   media: [{region: water_tank, sigma_a: [0.3, 0.05, 0.02], sigma_s: 0.1,
+//            index_of_refraction: 1.33}]
+// (the meshes are resolved and checked once the scene is read:
+// pipeline::configureScene).
 
 #include <yaml-cpp/yaml.h>
 
@@ -30,11 +34,15 @@ inline constexpr float kFogG = 0.845f;
 
 /// The root's `medium:` into config.render.medium and config.medium (the
 /// view and the time axis read before it; its index of refraction sets
-/// time.index_of_refraction), and `media:` refused.
+/// time.index_of_refraction), and `media:` into config.render.media.
 void parseMedium(const ConfigNode& root, RunConfig& config);
 
 /// The effective config's `medium:` (config.medium set), in the form it was
 /// written: `visibility` and `albedo`, or `sigma_a` and `sigma_s`.
 YAML::Node mediumNode(const RunConfig& config);
+
+/// The effective config's `media:` (config.render.media not empty), each
+/// entry with sigma_a and sigma_s (a `visibility` written as its values).
+YAML::Node mediaNode(const RunConfig& config);
 
 }  // namespace tofsim::config

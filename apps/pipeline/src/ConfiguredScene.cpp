@@ -8,6 +8,7 @@
 #include "tofsim/ir/VplClasses.h"
 #include "tofsim/physics/ResponseClassTable.h"
 #include "tofsim/pipeline/NlosScan.h"
+#include "tofsim/scene/RegionMeshes.h"
 #include "tofsim/util/Error.h"
 
 namespace tofsim::pipeline {
@@ -20,9 +21,51 @@ scene::Scene loadConfiguredScene(const config::RunConfig& config, scene::LoadRep
   return scene;
 }
 
+namespace {
+
+bool boxesOverlap(const scene::Bounds& a, const scene::Bounds& b) {
+  return glm::all(glm::lessThan(a.min, b.max)) && glm::all(glm::lessThan(b.min, a.max));
+}
+
+}  // namespace
+
+void takeMediumRegions(const config::RunConfig& config, scene::Scene& scene) {
+  scene.regions.clear();
+  for (std::size_t i = 0; i < config.render.media.size(); ++i) {
+    const std::string& name = config.render.media[i].region;
+    const FileLoc& at = config.media[i].region_at;
+    const std::string key = "media[" + std::to_string(i) + "].region";
+    std::optional<scene::RegionMesh> region = scene::takeRegionMesh(scene, name);
+    if (!region) {
+      throw InputError(at, key,
+                       "the scene (" + config.scene_file.string() + ") has no mesh or node named '" +
+                           name + "'");
+    }
+    const std::string problem = scene::regionMeshProblem(*region);
+    if (!problem.empty()) {
+      throw InputError(at, key,
+                       "the mesh '" + name + "' " + problem +
+                           ": a medium's region must be a closed, consistently wound mesh");
+    }
+    // Regions neither overlap nor nest (a segment's passage is a sum over
+    // them): their boxes must be apart, which is stricter but checkable.
+    for (std::size_t j = 0; j < scene.regions.size(); ++j) {
+      if (boxesOverlap(scene::regionBounds(*region), scene::regionBounds(scene.regions[j]))) {
+        throw InputError(at, key,
+                         "the region '" + name + "' overlaps the region '" + scene.regions[j].name +
+                             "' (" + config.media[j].region_at.toString() +
+                             "): media's regions must not overlap nor nest (their bounding "
+                             "boxes must be apart)");
+      }
+    }
+    scene.regions.push_back(std::move(*region));
+  }
+}
+
 void configureScene(const config::RunConfig& config, scene::Scene& scene,
                     const scene::LoadReport& report) {
   config::applyMaterialDelays(config, scene, report.materialExtras);
+  takeMediumRegions(config, scene);
   checkResponseClasses(config, scene);
 }
 

@@ -136,6 +136,28 @@ nlohmann::json mediumJson(const capture::Medium& m, const config::MediumConfig& 
   return j;
 }
 
+// Per-region media (`media:`): each region's medium and index.
+nlohmann::json mediaJson(const std::vector<capture::RegionMedium>& media) {
+  nlohmann::json list = nlohmann::json::array();
+  for (const capture::RegionMedium& r : media) {
+    nlohmann::json j = {
+        {"region", r.region},
+        {"model",
+         "homogeneous inside the closed mesh `region` (an interface, not a surface): each leg "
+         "attenuated by exp(-sigma_t x its length inside), slowed to c / index_of_refraction "
+         "there"},
+        {"sigma_a_per_m", vec(r.medium.sigma_a_per_m)},
+        {"sigma_s_per_m", vec(r.medium.sigma_s_per_m)},
+        {"sigma_t_per_m", vec(r.medium.sigmaT())},
+        {"albedo", vec(r.medium.albedo())},
+        {"phase", config::phaseModelName(r.medium.phase)},
+        {"index_of_refraction", r.index_of_refraction}};
+    if (r.medium.phase == physics::PHASE_HENYEY_GREENSTEIN) j["g"] = r.medium.g;
+    list.push_back(j);
+  }
+  return list;
+}
+
 }  // namespace
 
 std::string transientMetadataJson(const config::RunConfig& config, const capture::RenderJob& job,
@@ -162,6 +184,7 @@ std::string transientMetadataJson(const config::RunConfig& config, const capture
   if (job.settings.medium.present() && config.medium) {
     j["medium"] = mediumJson(job.settings.medium, *config.medium, axis);
   }
+  if (!job.settings.media.empty()) j["media"] = mediaJson(job.settings.media);
   j["renderer"] = config.renderer == config::RendererKind::Reference ? "reference" : "ir";
   j["backend"] = backend;
   j["device"] = device;

@@ -39,6 +39,14 @@ std::vector<std::optional<physics::ResponseKernel>> PreparedRenderer::delaysOf(
   return delays;
 }
 
+bool PreparedRenderer::regionsDiffer(const config::RunConfig& config, const scene::Scene& scene) {
+  if (config.render.media.size() != scene.regions.size()) return true;
+  for (std::size_t i = 0; i < scene.regions.size(); ++i) {
+    if (config.render.media[i].region != scene.regions[i].name) return true;
+  }
+  return false;
+}
+
 RendererSpec PreparedRenderer::specFor(const config::RunConfig& config) const {
   if (config.renderer == config::RendererKind::InstantRadiosity &&
       config.backend == config::IrBackendKind::Auto && !autoBackend_) {
@@ -54,6 +62,9 @@ SetupChange PreparedRenderer::changeFor(const config::RunConfig& config) const {
     change.what = sceneKey_ && sceneKey_->file == sceneKey(config.scene_file).file
                       ? "the scene file's contents (" + config.scene_file.string() + ")"
                       : "the scene (" + config.scene_file.string() + ")";
+  } else if (regionsDiffer(config, *scene_)) {
+    change.scene = true;
+    change.what = "the media's regions (media:)";
   } else if (config::materialDelays(config, *scene_, report_.materialExtras) != delaysOf(*scene_)) {
     change.scene = true;
     change.what = "the materials' scattering delays (materials:)";
@@ -80,7 +91,9 @@ SetupChange PreparedRenderer::prepare(const config::RunConfig& config) {
     renderer_ = {};
     spec_.reset();
   }
-  const bool sameFile = sceneKey_ && sceneKey(config.scene_file) == *sceneKey_;
+  // A region taken out of the scene's surfaces needs the file read again.
+  const bool sameFile = sceneKey_ && sceneKey(config.scene_file) == *sceneKey_ &&
+                        !regionsDiffer(config, *scene_);
   if (change.scene && sameFile) {
     // Only the delays changed: a copy with the new ones, not a reload.
     auto scene = std::make_unique<scene::Scene>(*scene_);

@@ -38,9 +38,19 @@ DirectLightView directLightView(const RenderJob& job, const FirstSurface& firstS
   // A medium filling the scene attenuates the light -> camera leg.
   const Medium& medium = job.settings.medium;
   if (medium.present()) view.radiance *= physics::mediumTransmittance(medium.sigmaT(), d);
+  // Per-region media: the same leg through their regions.
+  double extra_m = 0.0;
+  if (!job.settings.media.empty() && job.scene != nullptr) {
+    const RegionPassage leg =
+        MediumRegions(job.settings.media, *job.scene, job.settings.time.index_of_refraction)
+            .passage(glm::dvec3(job.light.position_world), glm::dvec3(camera.position_world));
+    view.radiance *= glm::vec3(leg.transmittance());
+    extra_m = leg.extraPath_m;
+  }
   // Unwarped time is the time at the scene point; the source itself emits at 0.
-  const double path_m =
-      job.settings.time.camera_unwarp ? 0.0 : job.settings.time.index_of_refraction * d;
+  const double path_m = job.settings.time.camera_unwarp
+                            ? 0.0
+                            : job.settings.time.index_of_refraction * (d + extra_m);
   view.bin = job.settings.time.binOf(path_m / kSpeedOfLight_m_per_s);
   return view;
 }

@@ -19,6 +19,7 @@
 #include "tofsim/capture/ThinLens.h"
 #include "tofsim/ir/MediumRayVpls.h"
 #include "tofsim/ir/MediumVpl.h"
+#include "tofsim/ir/RsmTexels.h"
 #include "tofsim/ir/SurfaceImage.h"
 #include "tofsim/physics/FootprintBuffer.h"
 #include "tofsim/physics/ScatterVertex.h"
@@ -88,6 +89,8 @@ ir::CentreSurfaces CpuBackend::prepareSurfaces(const capture::RenderJob& job) {
   TOFSIM_CHECK(job.scene != nullptr);
   TOFSIM_CHECK_MSG(scene_ != nullptr, "setScene must come first");
   job_ = job;
+  regions_ = capture::MediumRegions(job.settings.media, *job.scene,
+                                    job.settings.time.index_of_refraction);
   dropLastLeg_ = job.settings.time.camera_unwarp || !capture::lastLegCounts(job.imager);
   vpls_.reset();  // a new render: nothing of the previous one survives
   mediumVpls_ = false;
@@ -161,10 +164,13 @@ std::vector<ir::Vpl> CpuBackend::generateVpls(const capture::RenderJob& job) {
   finishSurfaces();
   const capture::IndirectSettings& s = job.settings.indirect;
   if (!s.enabled) return {};
-  return traceRsmVpls(*scene_, job.light, s.rsm_resolution, s.rsm_edge_samples,
-                      job.settings.time.index_of_refraction,
-                      ir::vertexModelOf(job.settings.materials), threads_,
-                      litBounds_->of(job.light), &responseClasses_, job.settings.medium);
+  std::vector<ir::Vpl> vpls = traceRsmVpls(
+      *scene_, job.light, s.rsm_resolution, s.rsm_edge_samples,
+      job.settings.time.index_of_refraction, ir::vertexModelOf(job.settings.materials), threads_,
+      litBounds_->of(job.light), &responseClasses_, job.settings.medium);
+  ir::attenuateLightLegs(vpls, regions_, job.light.position_world,
+                         job.settings.time.index_of_refraction);
+  return vpls;
 }
 
 void CpuBackend::setVpls(const std::vector<ir::Vpl>& vpls) {
@@ -288,6 +294,14 @@ void CpuBackend::fillSurface(std::size_t i, float weight, const capture::PixelSt
   surface.cameraLeg_m = glm::length(surface.x - viewpoint);
   surface.cameraPath_m = physics::cameraPathLength(
       dropLastLeg_, eta, glm::length(surface.x - viewpoint) + surface.lensPath_m);
+  if (!regions_.empty()) {  // the camera leg through the media's regions
+    const capture::RegionPassage leg = regions_.passage(glm::dvec3(surface.x), glm::dvec3(viewpoint));
+    surface.regionCameraT = glm::vec3(leg.transmittance());
+    surface.regionCameraExtra_m = static_cast<float>(leg.extraPath_m);
+    surface.cameraPath_m = physics::cameraPathLength(
+        dropLastLeg_, eta,
+        glm::length(surface.x - viewpoint) + surface.lensPath_m + surface.regionCameraExtra_m);
+  }
   // On a surface its tangent plane; at a medium point the ray's cross-section.
   const capture::FootprintSteps footprint = steps.at(
       surface.x, physics::footprintPlaneNormal(surface.vertex, surface.n, -surface.toCamera),
@@ -326,6 +340,7 @@ CpuBackend::IndirectConstants CpuBackend::indirectConstants() const {
   c.bins = s.time.bins;
   c.medium = s.medium.present();
   c.sigmaT = s.medium.sigmaT();
+  c.regions = regions_.empty() ? nullptr : &regions_;
   ic.exact = indirectVisibility_ && s.indirect.visibility == capture::Visibility::Exact;
   ic.eps = 1e-4f * sceneScale_m_;  // as indirect_gather.comp's exact visibility
   ic.delayed = !responses_->empty();

@@ -77,7 +77,15 @@ CpuBackend::DirectConstants CpuBackend::directConstants() const {
   if (c.medium) {
     out.radiance *= physics::mediumTransmittance(c.sigmaT, dLight + surface.cameraLeg_m);
   }
-  const float dCamera = dropLastLeg_ ? 0.0f : glm::length(x - surface.camera) + surface.lensPath_m;
+  float dCamera = dropLastLeg_ ? 0.0f : glm::length(x - surface.camera) + surface.lensPath_m;
+  if (!regions_.empty()) {  // the light and camera legs through the media's regions
+    const capture::RegionPassage leg = regions_.passage(glm::dvec3(c.light_world), glm::dvec3(x));
+    out.radiance *= glm::vec3(leg.transmittance()) * surface.regionCameraT;
+    if (!dropLastLeg_) dCamera += surface.regionCameraExtra_m;
+    out.path_m =
+        physics::directPathLength(c.eta, dLight + static_cast<float>(leg.extraPath_m), dCamera);
+    return true;
+  }
   out.path_m = physics::directPathLength(c.eta, dLight, dCamera);
   return true;
 }

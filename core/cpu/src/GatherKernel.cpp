@@ -202,6 +202,29 @@ void attenuateLanes(const PixelSurface& s, std::size_t n, const GatherConstants&
   }
 }
 
+// Per-region media: each lit lane's VPL -> x leg through the regions (its
+// transmittance and the time it adds: the lane's bin again) and x's camera
+// leg's transmittance. The footprint kernel (vplKernels) is centred on the
+// leg's path without the regions' delay: renders with media take
+// render.pixel_footprint: false for exact times of indirect light.
+void regionLanes(const PixelSurface& s, const VplArrays& v, std::size_t first, std::size_t n,
+                 const GatherConstants& c, VplTerms& terms) {
+  for (std::size_t i = 0; i < n; ++i) {
+    if (terms.bin[i] == kNoLight) continue;
+    const std::size_t k = first + i;
+    const capture::RegionPassage leg =
+        c.regions->passage(glm::dvec3(v.px[k], v.py[k], v.pz[k]), glm::dvec3(s.x));
+    const glm::vec3 t = glm::vec3(leg.transmittance()) * s.regionCameraT;
+    terms.r[i] *= t.r;
+    terms.g[i] *= t.g;
+    terms.b[i] *= t.b;
+    const float path_m = physics::vplPathLength(
+        v.path[k], c.indexOfRefraction, terms.dist[i] + static_cast<float>(leg.extraPath_m),
+        s.cameraPath_m);
+    terms.bin[i] = physics::binOfPath(path_m, c.start_m, c.binWidth_m);
+  }
+}
+
 }  // namespace
 
 // target_clones: an AVX2 build and a baseline one of the same source, picked
@@ -264,6 +287,7 @@ __attribute__((target_clones("avx2", "default"))) void vplTerms(const PixelSurfa
   }
   // Tested once per block: without a medium the terms are those of before.
   if (c.medium) attenuateLanes(s, n, c, terms);
+  if (c.regions != nullptr) regionLanes(s, v, first, n, c, terms);
   if (c.footprint) vplKernels(s, v, first, n, c, terms);
 }
 

@@ -15,6 +15,7 @@
 #include <glm/glm.hpp>
 
 #include "VplArrays.h"
+#include "tofsim/capture/MediumRegions.h"
 #include "tofsim/physics/FootprintKernel.h"
 #include "tofsim/physics/ScatterVertex.h"
 
@@ -49,6 +50,11 @@ struct PixelSurface {
   glm::vec3 dxdv{0.0f};
   physics::ScatterVertex vertex{};  ///< what x scatters (physics::scatter)
   glm::vec3 toCamera{0.0f};         ///< unit, x -> camera
+  /// Per-region media (GatherConstants::regions): the camera leg's
+  /// transmittance through their regions and the path it adds to the time
+  /// (capture::RegionPassage::extraPath_m, in cameraPath_m already).
+  glm::vec3 regionCameraT{1.0f};
+  float regionCameraExtra_m = 0.0f;
   float weight = 1.0f;              ///< the sample's share of the pixel, 1 / N^2
 };
 
@@ -67,6 +73,8 @@ struct GatherConstants {
   /// attenuated over its VPL -> x and x -> camera legs by sigmaT.
   bool medium = false;
   glm::vec3 sigmaT{0.0f};  ///< 1/m, per channel
+  /// Per-region media (issue 42's `media:`); null without.
+  const capture::MediumRegions* regions = nullptr;
 };
 
 /// Per-VPL terms of one block: bin (kNoLight when the VPL does not face the

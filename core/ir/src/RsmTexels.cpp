@@ -100,6 +100,17 @@ std::optional<Vpl> rsmTexelVpl(const capture::Light& light, const RsmView& view,
   return vpl;
 }
 
+void attenuateLightLegs(std::vector<Vpl>& vpls, const capture::MediumRegions& regions,
+                        const glm::vec3& light_world, double indexOfRefraction) {
+  if (regions.empty()) return;
+  for (Vpl& v : vpls) {
+    const capture::RegionPassage leg =
+        regions.passage(glm::dvec3(light_world), glm::dvec3(v.positionPath));
+    v.flux = glm::vec4(glm::vec3(v.flux) * glm::vec3(leg.transmittance()), v.flux.w);
+    v.positionPath.w += static_cast<float>(indexOfRefraction * leg.extraPath_m);
+  }
+}
+
 void attenuateLightLegs(std::vector<Vpl>& vpls, const capture::Medium& medium,
                         double indexOfRefraction) {
   if (!medium.present()) return;

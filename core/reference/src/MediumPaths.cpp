@@ -51,7 +51,8 @@ void PathIntegrator::traceMediumPath(const glm::vec3& eye, const glm::vec3& dire
     // In float, as the vacuum paths measure their legs (the same bins).
     const double toSurface_m =
         next ? glm::length(next->position_world - position) : FreeFlight::kNone;
-    const double flight_m = flight_.sample(rng);
+    const LegFlight leg = legFlight(position, dir, toSurface_m);
+    const double flight_m = leg.sample(rng);
     double* histogram = vertex == 1 ? pixel.direct : pixel.indirect;
     // The light the medium scatters towards the path along this leg, by two
     // strategies (balance heuristic): the free flight's event below, and an
@@ -60,34 +61,40 @@ void PathIntegrator::traceMediumPath(const glm::vec3& eye, const glm::vec3& dire
     // Only the free flight continues the path.
     Equiangular towardsLight(glm::dvec3(position), glm::dvec3(dir), toSurface_m,
                              glm::dvec3(job_.light.position_world), angles_);
-    if (flight_.scatters() && towardsLight.usable()) {
+    if (leg.scatters() && towardsLight.usable()) {
       const double t = towardsLight.sample(rng.nextDouble());
       if (t < toSurface_m) {
-        const double pdf = towardsLight.pdf(t) + flight_.pdf(t);
+        const double pdf = towardsLight.pdf(t) + leg.pdf(t);
         const glm::vec3 p(glm::dvec3(position) + glm::dvec3(dir) * t);
-        addMediumLight(p, -dir, state, flight_.scattered(t) / pdf,
-                       path_m + (vertex == 1 ? lastLeg_m(t) : t), histogram, outside);
+        const double timed = t + leg.extraPath_m(t);
+        addMediumLight(p, -dir, state, leg.scattered(t) / pdf,
+                       path_m + (vertex == 1 ? lastLeg_m(timed) : timed), histogram, outside,
+                       leg.mediumAt(t));
       }
     }
     if (flight_m < toSurface_m) {
       // A medium event: the light it scatters towards the path, then on.
-      const double pdf = flight_.pdf(flight_m);
+      const double pdf = leg.pdf(flight_m);
       const double mis = pdf / (pdf + towardsLight.pdf(flight_m));
+      const capture::Medium* here = leg.mediumAt(flight_m);
       position = glm::vec3(glm::dvec3(position) + glm::dvec3(dir) * flight_m);
-      path_m += vertex == 1 ? lastLeg_m(flight_m) : flight_m;
-      addMediumLight(position, -dir, state, flight_.scatterWeight(flight_m) * mis, path_m,
-                     histogram, outside);
-      state.weight.scale(flight_.scatterWeight(flight_m));
+      const double timed = flight_m + leg.extraPath_m(flight_m);
+      path_m += vertex == 1 ? lastLeg_m(timed) : timed;
+      addMediumLight(position, -dir, state, leg.scatterWeight(flight_m) * mis, path_m,
+                     histogram, outside, here);
+      state.weight.scale(leg.scatterWeight(flight_m));
       surface.reset();
       const float u1 = rng.nextFloat();
       const float u2 = rng.nextFloat();
-      dir = glm::normalize(physics::samplePhaseDirection(phase_, g_, dir, u1, u2));
+      dir = glm::normalize(physics::samplePhaseDirection(here ? here->phase : phase_,
+                                                         here ? here->g : g_, dir, u1, u2));
       continue;
     }
     if (!next) break;  // the path leaves the scene
-    state.weight.scale(flight_.passWeight(toSurface_m));
+    state.weight.scale(leg.passWeight(toSurface_m));
     delays_.atVertex(responseAt(*next), pixel.delays, state);
-    path_m += vertex == 1 ? lastLeg_m(toSurface_m) : toSurface_m;
+    const double timed = toSurface_m + leg.extraPath_m(toSurface_m);
+    path_m += vertex == 1 ? lastLeg_m(timed) : timed;
     const glm::vec3 toViewer = -dir;
     const Radiance reflected = lightReflectedAt(*next, toViewer);
     if (reflected.valid) {
@@ -111,7 +118,8 @@ void PathIntegrator::traceMediumPath(const glm::vec3& eye, const glm::vec3& dire
 
 void PathIntegrator::addMediumLight(const glm::vec3& p, const glm::vec3& toViewer,
                                     const PathState& state, const glm::dvec3& weight,
-                                    double path_m, double* histogram, AxisLoss& outside) const {
+                                    double path_m, double* histogram, AxisLoss& outside,
+                                    const capture::Medium* medium) const {
   const capture::Light& light = job_.light;
   const glm::dvec3 toLight = glm::dvec3(light.position_world) - glm::dvec3(p);
   const double d = glm::length(toLight);
@@ -121,11 +129,19 @@ void PathIntegrator::addMediumLight(const glm::vec3& p, const glm::vec3& toViewe
   if (profile <= 0.0f) return;
   if (scene_.occluded(p, light.position_world)) return;
   // The light travels along -w and leaves towards the viewer.
-  const double phase = physics::phaseFunction(phase_, g_, glm::dot(-w, toViewer));
-  const glm::dvec3 value = glm::dvec3(light.intensity_W_per_sr) *
-                           (phase * static_cast<double>(profile) / (d * d)) *
-                           flight_.transmittance(d) * weight;
-  deposit(state.seen(value), d + path_m, state.delay_s, histogram, outside);
+  const double phase = physics::phaseFunction(medium ? medium->phase : phase_,
+                                              medium ? medium->g : g_, glm::dot(-w, toViewer));
+  glm::dvec3 value = glm::dvec3(light.intensity_W_per_sr) *
+                     (phase * static_cast<double>(profile) / (d * d)) * flight_.transmittance(d) *
+                     weight;
+  double extra_m = 0.0;
+  if (!regions_.empty()) {  // the light leg through the media's regions
+    const capture::RegionPassage leg =
+        regions_.passage(glm::dvec3(p), glm::dvec3(light.position_world));
+    value *= leg.transmittance();
+    extra_m = leg.extraPath_m;
+  }
+  deposit(state.seen(value), d + extra_m + path_m, state.delay_s, histogram, outside);
 }
 
 }  // namespace tofsim::reference

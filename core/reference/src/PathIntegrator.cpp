@@ -24,6 +24,15 @@ constexpr int kChannels = 3;
 PixelFilter effectiveFilter(const capture::Imager& imager, PixelFilter requested) {
   return capture::pointPixels(imager) ? PixelFilter::Point : requested;
 }
+// The medium whose phase function the equiangular points are drawn for: the
+// one filling the scene, else the first scattering region's (any is
+// unbiased: each point's light is its own region's).
+const capture::Medium& equiangularMedium(const capture::RenderSettings& s) {
+  for (const capture::RegionMedium& r : s.media) {
+    if (r.medium.scatters()) return r.medium;
+  }
+  return s.medium;
+}
 }  // namespace
 
 PathIntegrator::PathIntegrator(const RayScene& scene, const capture::RenderJob& job,
@@ -41,11 +50,12 @@ PathIntegrator::PathIntegrator(const RayScene& scene, const capture::RenderJob& 
       materials_(ir::materialVertices(scene.scene(), physics::VERTEX_GLTF)),
       sampling_(sampling),
       delays_(ir::materialResponses(scene.scene()).kernels),
-      inMedium_(job.settings.medium.present()),
+      regions_(job.settings.media, scene.scene(), job.settings.time.index_of_refraction),
+      inMedium_(job.settings.medium.present() || !regions_.empty()),
       flight_(job.settings.medium),
-      phase_(job.settings.medium.phase),
-      g_(job.settings.medium.g),
-      angles_(job.settings.medium.phase, job.settings.medium.g),
+      phase_(equiangularMedium(job.settings).phase),
+      g_(equiangularMedium(job.settings).g),
+      angles_(phase_, g_),
       lightResponse_(static_cast<int32_t>(
           ir::lightResponse(ir::materialResponses(scene.scene()), job.light))) {}
 
@@ -76,6 +86,12 @@ PathIntegrator::Radiance PathIntegrator::lightReflectedAt(const SurfaceHit& hit,
     out.value = glm::dvec3(albedo) * glm::dvec3(light.intensity_W_per_sr) * scale;
   }
   out.path_m = d;
+  if (!regions_.empty()) {  // the light leg through the media's regions
+    const capture::RegionPassage p =
+        regions_.passage(glm::dvec3(light.position_world), glm::dvec3(hit.position_world));
+    out.value *= p.transmittance();
+    out.path_m += p.extraPath_m;
+  }
   out.valid = true;
   return out;
 }

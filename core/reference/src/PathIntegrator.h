@@ -12,6 +12,7 @@
 #include "tofsim/reference/ReferenceRenderer.h"
 #include "tofsim/util/Random.h"
 #include "FreeFlight.h"
+#include "LegFlight.h"
 #include "tofsim/reference/Equiangular.h"
 #include "VertexDelay.h"
 
@@ -140,9 +141,15 @@ class PathIntegrator {
   /// transmittance, one shadow ray) x `weight` (the point's T sigma_s over
   /// its sampling density, MIS-weighted), seen through `state`, at the path
   /// length path_m (viewpoint -> p, as timed) + d.
+  /// `medium`: p's phase function (nullptr: the medium filling the scene).
   void addMediumLight(const glm::vec3& p, const glm::vec3& toViewer, const PathState& state,
                       const glm::dvec3& weight, double path_m, double* histogram,
-                      AxisLoss& outside) const;
+                      AxisLoss& outside, const capture::Medium* medium = nullptr) const;
+  /// The flights along a leg from `origin` (unit dir, up to length_m).
+  LegFlight legFlight(const glm::vec3& origin, const glm::vec3& dir, double length_m) const {
+    return regions_.empty() ? LegFlight(flight_)
+                            : LegFlight(regions_, glm::dvec3(origin), glm::dvec3(dir), length_m);
+  }
 
   /// Length of the last leg (surface -> viewpoint, metres) that counts in
   /// the time: 0 with camera_unwarp or a point set that drops it.
@@ -167,7 +174,10 @@ class PathIntegrator {
   ContinuationSampling sampling_;
   /// The scene's delay kernels (ir::materialResponses), by base id.
   VertexDelays delays_;
-  /// RenderSettings::medium: present, its flights; phase model and g.
+  /// RenderSettings::media joined with the scene's regions (empty: none).
+  capture::MediumRegions regions_;
+  /// RenderSettings::medium present or media; the medium's flights (none
+  /// with media); the equiangular points' phase model and g.
   bool inMedium_;
   FreeFlight flight_;
   int32_t phase_;

@@ -62,6 +62,7 @@ void validate(const ReferenceSettings& s, const RenderJob& job) {
     throw InputError("time axis needs bins >= 1 and bin_width > 0");
   }
   validateMedium(job.settings.medium);  // also one that present() calls absent (negative)
+  for (const capture::RegionMedium& r : job.settings.media) validateMedium(r.medium);
   // Its paths start at the camera's position: an aperture would be ignored.
   if (const Camera* camera = cameraOf(job.imager); camera != nullptr && camera->defocused()) {
     throw InputError("camera.aperture " + std::to_string(camera->aperture_m) +

@@ -199,6 +199,13 @@ ir::CentreSurfaces GlBackend::prepareSurfaces(const RenderJob& job) {
   passes_.reset();  // the previous render's GL objects go first
   TOFSIM_CHECK_MSG(sceneObjects_ != nullptr && &sceneObjects_->scene == job.scene,
                    "setScene with the job's scene must come first");
+  // Per-region media (`media:`) are built on the CPU backend (the config
+  // refuses them here first; this keeps a library caller from a silent
+  // vacuum).
+  if (!job.settings.media.empty()) {
+    throw InputError("per-region media (`media`) are not built on the GL backend yet: use "
+                     "render.backend: cpu");
+  }
   const int32_t n = job.settings.pixel_samples;
   const int32_t width = imageWidth(job.imager), height = imageHeight(job.imager);
   const int32_t maxSide = context_.limits().maxTextureSize;

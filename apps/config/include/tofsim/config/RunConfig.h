@@ -179,6 +179,12 @@ struct MediumConfig {
   /// Where `medium:` is, for the errors found later.
   FileLoc at;
 };
+/// One `media:` entry as written (its medium is render.media's entry of the
+/// same index): where it is, for the errors found once the scene is read.
+struct RegionMediumConfig {
+  FileLoc at;         ///< the entry
+  FileLoc region_at;  ///< its `region` key
+};
 /// A medium's phase model (capture::Medium::phase) as `medium.phase.model`
 /// writes it: "isotropic", "henyey_greenstein" or "rayleigh".
 const char* phaseModelName(int32_t phase);
@@ -222,6 +228,8 @@ struct RunConfig {
   FileLoc materials_at;
   /// `medium:` as written; unset without one (render.medium then has none).
   std::optional<MediumConfig> medium;
+  /// `media:` entries, in order (render.media holds their media).
+  std::vector<RegionMediumConfig> media;
 };
 
 /// One `--set key.path=value` override, applied before validation.

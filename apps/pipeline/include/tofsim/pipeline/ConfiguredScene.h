@@ -17,10 +17,16 @@ scene::Scene loadConfiguredScene(const config::RunConfig& config,
                                  scene::LoadReport* report = nullptr);
 
 /// On a scene read from config.scene_file with the loader's `report`:
-/// config::applyMaterialDelays (the extras from the report), then
-/// checkResponseClasses.
+/// config::applyMaterialDelays (the extras from the report),
+/// takeMediumRegions, then checkResponseClasses.
 void configureScene(const config::RunConfig& config, scene::Scene& scene,
                     const scene::LoadReport& report);
+
+/// The meshes of `media:`'s regions taken out of scene.meshes into
+/// scene.regions (scene::takeRegionMesh), in order; an InputError located at
+/// the entry's `region` for a name the scene lacks, a mesh that is not
+/// closed (scene::regionMeshProblem) or regions whose boxes overlap.
+void takeMediumRegions(const config::RunConfig& config, scene::Scene& scene);
 
 /// The IR renderer's classes of `scene`'s delays (physics::ResponseClassTable
 /// of its distinct kernels, ir::materialResponses, on paths of up to

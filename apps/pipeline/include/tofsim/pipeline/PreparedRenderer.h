@@ -80,6 +80,8 @@ class PreparedRenderer {
     bool operator==(const SceneKey&) const = default;
   };
   static SceneKey sceneKey(const std::filesystem::path& file);
+  /// Whether config's `media:` regions are not the ones taken out of `scene`.
+  static bool regionsDiffer(const config::RunConfig& config, const scene::Scene& scene);
   static std::vector<std::optional<physics::ResponseKernel>> delaysOf(const scene::Scene& scene);
 
   gl::EglPlatform eglPlatform_;

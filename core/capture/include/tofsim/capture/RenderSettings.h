@@ -6,6 +6,7 @@
 #include <cstdint>
 
 #include "tofsim/capture/Medium.h"
+#include "tofsim/capture/MediumRegions.h"
 #include "tofsim/volume/TimeAxis.h"
 
 namespace tofsim::capture {
@@ -106,6 +107,9 @@ struct RenderSettings {
   /// The homogeneous medium filling the scene (issue 42); none by default.
   /// Its index of refraction is time.index_of_refraction.
   Medium medium;
+  /// Media inside closed meshes (issue 42's `media:`; MediumRegions.h), in
+  /// place of `medium`; their meshes are the scene's regions.
+  std::vector<RegionMedium> media;
 
   /// Whether the VPLs' light scatters into the camera rays (a scattering
   /// medium and indirect.medium_camera_rays): the backends' medium VPL pass.

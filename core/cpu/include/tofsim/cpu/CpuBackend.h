@@ -177,6 +177,8 @@ class CpuBackend : public ir::IrBackend {
   int threads_ = 1;
   bool indirectVisibility_ = true;
   capture::RenderJob job_;
+  /// job_'s per-region media joined with their meshes (empty: none).
+  capture::MediumRegions regions_;
   /// The last leg is not timed: render.camera_unwarp, or an imager whose
   /// last leg does not count (capture::lastLegCounts).
   bool dropLastLeg_ = false;

@@ -10,6 +10,7 @@
 
 #include "tofsim/capture/Light.h"
 #include "tofsim/capture/Medium.h"
+#include "tofsim/capture/MediumRegions.h"
 #include "tofsim/ir/IrBackend.h"
 
 namespace tofsim::ir {
@@ -51,6 +52,12 @@ struct RsmTexelSurface {
 std::optional<Vpl> rsmTexelVpl(const capture::Light& light, const RsmView& view, int resolution,
                                int x, int y, const RsmTexelSurface& surface,
                                double indexOfRefraction);
+
+/// Per-region media (`media:`): each VPL's flux times the transmittance of
+/// its light -> VPL leg through the regions, its path (positionPath.w, eta
+/// included) plus the time that leg spends in them.
+void attenuateLightLegs(std::vector<Vpl>& vpls, const capture::MediumRegions& regions,
+                        const glm::vec3& light_world, double indexOfRefraction);
 
 /// In a medium filling the scene (Medium::present) the RSM VPLs' flux times
 /// the light -> VPL leg's transmittance, exp(-sigma_t path / eta) from each

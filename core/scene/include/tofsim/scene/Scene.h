@@ -63,6 +63,16 @@ struct SceneCamera {
   float aspect = 0.0f;  ///< width / height, 0 when the file does not say
 };
 
+/// The closed mesh a participating medium fills (`media:`, issue 42): taken
+/// out of the surfaces by scene::takeRegionMesh, an interface that no
+/// renderer draws, reflects at or is shadowed by (index matched: nothing
+/// reflects or refracts there). World space, 3 vertices per triangle, wound
+/// so that each triangle's normal (b - a) x (c - a) points out.
+struct RegionMesh {
+  std::string name;  ///< the `media:` entry's `region`: a glTF mesh or node name
+  std::vector<glm::vec3> triangles_world;
+};
+
 struct Bounds {
   glm::vec3 min{0.0f};
   glm::vec3 max{0.0f};
@@ -77,6 +87,8 @@ struct Scene {
   /// triangles has area: a name asked for later (a relay wall) is then
   /// "has no area", not "missing".
   std::vector<std::string> arealess;
+  /// The media's regions (RegionMeshes.h), in `media:` order; empty without.
+  std::vector<RegionMesh> regions;
 
   std::size_t triangleCount() const;
   /// Axis-aligned box of all referenced vertices, metres; zero box when empty.
