@@ -23,6 +23,7 @@
 #include "tofsim/lidar/LidarReturns.h"
 #include "tofsim/scene/GltfLoader.h"
 #include "tofsim/util/ParallelFor.h"
+#include "../BenchArgs.h"
 
 using namespace tofsim;
 
@@ -35,9 +36,7 @@ double seconds(std::chrono::steady_clock::time_point since) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  const auto arg = [&](int i, long long fallback) {
-    return argc > i ? std::atoll(argv[i]) : fallback;
-  };
+  const auto arg = [&](int i, long long fallback) { return bench::arg(argc, argv, i, fallback); };
   const auto channels = static_cast<int>(arg(1, 16));
   const auto azimuths = static_cast<int>(arg(2, 1800));
   const auto bins = static_cast<int32_t>(arg(3, 1000));

@@ -19,6 +19,7 @@
 #include "tofsim/lidar/MultipathWaveforms.h"
 #include "tofsim/scene/GltfLoader.h"
 #include "tofsim/util/ParallelFor.h"
+#include "../BenchArgs.h"
 
 using namespace tofsim;
 
@@ -31,7 +32,7 @@ double seconds(std::chrono::steady_clock::time_point since) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  const auto arg = [&](int i, double fallback) { return argc > i ? std::atof(argv[i]) : fallback; };
+  const auto arg = [&](int i, double fallback) { return bench::arg(argc, argv, i, fallback); };
   const auto channels = static_cast<int>(arg(1, 16));
   const auto azimuths = static_cast<int>(arg(2, 1800));
   lidar::MultipathSettings settings;

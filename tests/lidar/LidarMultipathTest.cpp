@@ -20,6 +20,7 @@
 #include <cstring>
 
 #include "support/AnalyticScenes.h"
+#include "support/TracedScene.h"
 #include "tofsim/capture/VolumeCollector.h"
 #include "tofsim/ir/MaterialVertex.h"
 #include "tofsim/lidar/MultipathWaveforms.h"
@@ -30,15 +31,7 @@ namespace {
 
 constexpr double kPi = M_PI;
 
-struct Traced {
-  explicit Traced(scene::Scene s) : scene(std::move(s)), rays(scene, 1) {
-    traced.rays = &rays;
-    traced.materials = ir::materialVertices(scene, physics::VERTEX_LAMBERTIAN);
-  }
-  scene::Scene scene;
-  rays::RayScene rays;
-  WaveformScene traced;
-};
+using Traced = test::TracedScene;
 
 // A UV sphere of radius r about the origin, normals facing in, `rings`
 // rings of 2 x rings segments.

@@ -12,6 +12,7 @@
 #include <limits>
 
 #include "support/AnalyticScenes.h"
+#include "support/TracedScene.h"
 #include "tofsim/ir/IrBackend.h"
 #include "tofsim/ir/MaterialVertex.h"
 #include "tofsim/lidar/BeamPattern.h"
@@ -32,15 +33,7 @@ LidarSpec spinning(const glm::vec3& position, std::vector<double> elevations, do
   return s;
 }
 
-struct Traced {
-  explicit Traced(scene::Scene s) : scene(std::move(s)), rays(scene, 1) {
-    traced.rays = &rays;
-    traced.materials = ir::materialVertices(scene, physics::VERTEX_LAMBERTIAN);
-  }
-  scene::Scene scene;
-  rays::RayScene rays;
-  WaveformScene traced;
-};
+using Traced = test::TracedScene;
 
 // 1.5 mm of range per bin.
 TimeAxis axisTo(double range_m) {
