@@ -12,7 +12,12 @@ The hidden scene is read from any glTF (indexed or not, any node transforms:
 gltf_triangles.py). python/tests/test_nlos_ytal_script.py tests the mesh
 reading and the setup without y-tal.
 
-Usage: python nlos_reconstruct_ytal.py CAPTURE.hdf5 SCENE.gltf OUT.png [--wall NAME]
+Usage: python nlos_reconstruct_ytal.py CAPTURE.hdf5 SCENE.gltf OUT.png [--wall NAME] [--step M]
+
+The volume's step is the wall grid's spacing, coarsened to at most
+MAX_VOXELS voxels: y-tal's back-projection holds ~85 kB a voxel, and the
+64 x 64 wall of configs/nlos_confocal.yaml at its own spacing ran out of
+24 GB.
 """
 
 import argparse
@@ -28,6 +33,12 @@ import gltf_triangles  # noqa: E402
 # The light that counts as arriving: bins whose summed H is at least this
 # fraction of the fullest bin's.
 SIGNAL_FRACTION = 1e-3
+
+# y-tal's back-projection holds some 85 kB a voxel (nlos_confocal's 64 x 64
+# wall at its own spacing, 287,000 voxels, ran out of 24 GB): the default
+# volume is coarsened to at most this many voxels (about 3 GB; 146 s on two
+# shared cores). --step sets the step yourself.
+MAX_VOXELS = 40_000
 
 
 def hidden_triangles(gltf_path, wall):
@@ -62,6 +73,16 @@ def reconstruction_setup(H, sensor_grid_xyz, t_start, delta_t, legs_m=0.0):
     return lo, hi, spacing, wavelength
 
 
+def volume_step(lo, hi, step, max_voxels=MAX_VOXELS):
+    """The smallest whole multiple of `step` whose volume lo..hi holds at
+    most max_voxels voxels (y-tal's memory grows with them)."""
+    extent = np.maximum(np.asarray(hi, float) - np.asarray(lo, float), 0.0)
+    factor = 1
+    while np.prod(np.floor(extent / (step * factor)) + 1) > max_voxels:
+        factor += 1
+    return step * factor
+
+
 def main():
     import matplotlib
 
@@ -75,6 +96,9 @@ def main():
     ap.add_argument("scene")
     ap.add_argument("out")
     ap.add_argument("--wall", default="wall")
+    ap.add_argument("--step", type=float, default=None,
+                    help="voxel size in metres (default: the wall grid's spacing, coarsened "
+                         "to at most %d voxels)" % MAX_VOXELS)
     a = ap.parse_args()
 
     d = tal.io.read_capture(a.capture)
@@ -86,6 +110,7 @@ def main():
         legs = (np.linalg.norm(np.asarray(d.laser_grid_xyz, float).reshape(-1, 3) - d.laser_xyz,
                                axis=1).min() + np.linalg.norm(grid - d.sensor_xyz, axis=1).min())
     lo, hi, step, wl = reconstruction_setup(H, d.sensor_grid_xyz, d.t_start, d.delta_t, legs)
+    step = a.step if a.step else volume_step(lo, hi, step)
     print("volume", lo, "..", hi, "step %.4g m, wavelength %.4g m" % (step, wl))
     tal.reconstruct.compensate_laser_cos_dsqr(d)
     vol = tal.reconstruct.get_volume_min_max_resolution(lo, hi, step)

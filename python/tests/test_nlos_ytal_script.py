@@ -126,6 +126,18 @@ def test_the_volume_and_wavelength_come_from_the_capture():
     assert script.reconstruction_setup(H, grid, 0.1, 0.02, legs_m=0.5)[1][2] == pytest.approx(0.4)
 
 
+def test_the_volume_is_coarsened_to_what_y_tal_can_hold():
+    # A 64 x 64 wall 1 m wide at its own spacing, 1.08 m deep: 287,000 voxels.
+    lo, hi, step = np.array([-0.49, -0.49, 0.0156]), np.array([0.49, 0.49, 1.095]), 0.015625
+    coarse = script.volume_step(lo, hi, step)
+    assert coarse == pytest.approx(2 * step)  # 32 x 32 x 35 voxels
+    voxels = np.prod(np.floor((hi - lo) / coarse) + 1)
+    assert voxels <= script.MAX_VOXELS
+    assert np.prod(np.floor((hi - lo) / step) + 1) > script.MAX_VOXELS
+    # A small volume keeps its step.
+    assert script.volume_step(lo, lo + 0.1, step) == step
+
+
 def test_y_tal_reconstructs_a_tofsim_capture(tmp_path):
     pytest.importorskip("tal", reason="y-tal (pip install y-tal) runs the reconstruction")
     tofsim = pytest.importorskip("tofsim")
