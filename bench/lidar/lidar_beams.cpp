@@ -24,16 +24,9 @@
 #include "tofsim/scene/GltfLoader.h"
 #include "tofsim/util/ParallelFor.h"
 #include "../BenchArgs.h"
+#include "StreetFrame.h"
 
 using namespace tofsim;
-
-namespace {
-
-double seconds(std::chrono::steady_clock::time_point since) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - since).count();
-}
-
-}  // namespace
 
 int main(int argc, char** argv) {
   const auto arg = [&](int i, long long fallback) { return bench::arg(argc, argv, i, fallback); };
@@ -49,18 +42,8 @@ int main(int argc, char** argv) {
   const scene::Scene scene = scene::loadGltf(scenePath);
   const rays::RayScene rayScene(scene, threads);
   lidar::WaveformScene traced{&rayScene, ir::materialVertices(scene, physics::VERTEX_LAMBERTIAN), {}};
-  lidar::LidarSpec spec;
-  spec.position_world = {0.0f, 1.8f, 0.0f};
-  spec.up_world = {0.0f, 1.0f, 0.0f};
-  spec.forward_world = {1.0f, 0.0f, 0.0f};
-  for (int c = 0; c < channels; ++c) {
-    spec.elevations_deg.push_back(channels == 1 ? 0.0 : -15.0 + 30.0 * c / (channels - 1));
-  }
-  spec.azimuth_step_deg = 360.0 / azimuths;
+  auto [spec, axis] = bench::streetFrame(channels, azimuths, bins);
   spec.beam_rays = rays;
-  TimeAxis axis;
-  axis.bin_width_s = 300e-12;  // 4.5 cm of range; 1000 bins reach 45 m
-  axis.bins = bins;
 
   // The rays alone (Embree's closest hits, nothing done with them): what
   // the waveforms cost beyond tracing.
@@ -116,13 +99,13 @@ int main(int argc, char** argv) {
   for (int r = 0; r < repeats; ++r) {
     const auto start = std::chrono::steady_clock::now();
     (void)traceAll();
-    bestTrace = std::min(bestTrace, seconds(start));
+    bestTrace = std::min(bestTrace, bench::seconds(start));
   }
   double bestPackets = 1e300;
   for (int r = 0; r < repeats; ++r) {
     const auto start = std::chrono::steady_clock::now();
     (void)tracePackets();
-    bestPackets = std::min(bestPackets, seconds(start));
+    bestPackets = std::min(bestPackets, bench::seconds(start));
   }
   double best = 1e300, bestReturns = 1e300;
   double bestSparse = 1e300, bestSparseReturns = 1e300, bestFrame = 1e300;
@@ -130,20 +113,20 @@ int main(int argc, char** argv) {
   for (int r = 0; r < repeats; ++r) {
     const auto start = std::chrono::steady_clock::now();
     const lidar::LidarWaveforms w = lidar::renderDirectWaveforms(spec, traced, axis, threads);
-    best = std::min(best, seconds(start));
+    best = std::min(best, bench::seconds(start));
     const auto returnsStart = std::chrono::steady_clock::now();
     points = lidar::lidarReturns(spec, w.volume, 10.0).points.size();
-    bestReturns = std::min(bestReturns, seconds(returnsStart));
+    bestReturns = std::min(bestReturns, bench::seconds(returnsStart));
   }
   for (int r = 0; r < repeats; ++r) {
     const auto start = std::chrono::steady_clock::now();
     const lidar::LidarWaveforms w =
         lidar::renderDirectWaveforms(spec, traced, axis, threads, false);
-    bestSparse = std::min(bestSparse, seconds(start));
+    bestSparse = std::min(bestSparse, bench::seconds(start));
     const auto returnsStart = std::chrono::steady_clock::now();
     sparsePoints = lidar::lidarReturns(spec, w, 10.0, threads).points.size();
-    bestSparseReturns = std::min(bestSparseReturns, seconds(returnsStart));
-    bestFrame = std::min(bestFrame, seconds(start));
+    bestSparseReturns = std::min(bestSparseReturns, bench::seconds(returnsStart));
+    bestFrame = std::min(bestFrame, bench::seconds(start));
   }
   const double beams = double(channels) * azimuths;
   std::printf("scene %s, %d x %d beams, %d bins, %d rays per beam, %d threads\n", scenePath.c_str(),

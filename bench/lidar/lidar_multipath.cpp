@@ -20,16 +20,9 @@
 #include "tofsim/scene/GltfLoader.h"
 #include "tofsim/util/ParallelFor.h"
 #include "../BenchArgs.h"
+#include "StreetFrame.h"
 
 using namespace tofsim;
-
-namespace {
-
-double seconds(std::chrono::steady_clock::time_point since) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - since).count();
-}
-
-}  // namespace
 
 int main(int argc, char** argv) {
   const auto arg = [&](int i, double fallback) { return bench::arg(argc, argv, i, fallback); };
@@ -49,28 +42,19 @@ int main(int argc, char** argv) {
   const rays::RayScene rayScene(scene, threads);
   lidar::WaveformScene traced{
       &rayScene, ir::materialVertices(scene, physics::VERTEX_LAMBERTIAN), {}};
-  lidar::LidarSpec spec;
-  spec.position_world = {0.0f, 1.8f, 0.0f};
-  spec.up_world = {0.0f, 1.0f, 0.0f};
-  spec.forward_world = {1.0f, 0.0f, 0.0f};
-  for (int c = 0; c < channels; ++c) {
-    spec.elevations_deg.push_back(channels == 1 ? 0.0 : -15.0 + 30.0 * c / (channels - 1));
-  }
-  spec.azimuth_step_deg = 360.0 / azimuths;
-  TimeAxis axis;
-  axis.bin_width_s = 300e-12;  // 4.5 cm of range; 1000 bins reach 45 m
-  axis.bins = static_cast<int32_t>(arg(3, 1000));
+  const auto [spec, axis] =
+      bench::streetFrame(channels, azimuths, static_cast<int32_t>(arg(3, 1000)));
 
   double bestDirect = 1e300, bestMultipath = 1e300, direct = 0.0, multipath = 0.0;
   for (int r = 0; r < repeats; ++r) {
     const auto start = std::chrono::steady_clock::now();
     lidar::LidarWaveforms w = lidar::renderDirectWaveforms(spec, traced, axis, threads);
-    bestDirect = std::min(bestDirect, seconds(start));
+    bestDirect = std::min(bestDirect, bench::seconds(start));
     direct = 0.0;
     for (float v : w.volume.values()) direct += v;
     const auto mpStart = std::chrono::steady_clock::now();
     lidar::addMultipathWaveforms(spec, settings, traced, axis, threads, w);
-    bestMultipath = std::min(bestMultipath, seconds(mpStart));
+    bestMultipath = std::min(bestMultipath, bench::seconds(mpStart));
     multipath = -direct;
     for (float v : w.volume.values()) multipath += v;
   }
