@@ -41,12 +41,30 @@ std::string smallLidar(const std::string& extra = "") {
          extra + "time: {bin_width: 300 ps, bins: 400}\n";
 }
 
+struct BadLidar {
+  const char* name;
+  std::string yaml;
+  const char* where;  ///< "file:line" and the key the error names
+};
+
 class LidarRunTest : public test::TempDirTest {
  protected:
   fs::path writeConfig(const std::string& yaml) {
     const fs::path path = dir_ / "c.yaml";
     std::ofstream(path) << yaml;
     return path;
+  }
+  /// Each config through the CLI: exit 1, the error at its line, no output.
+  void expectLocatedFailures(const std::vector<BadLidar>& cases) {
+    for (const BadLidar& bad : cases) {
+      const fs::path config = writeConfig(bad.yaml);
+      const test::CommandResult r =
+          test::runCli("render " + config.string() + " -o " + (dir_ / "out").string());
+      EXPECT_EQ(r.exitCode, 1) << bad.name << ": " << r.output;
+      EXPECT_NE(r.output.find("c.yaml" + std::string(bad.where)), std::string::npos)
+          << bad.name << ": " << r.output;
+      EXPECT_FALSE(fs::exists(dir_ / "out")) << bad.name;
+    }
   }
 };
 
@@ -144,12 +162,6 @@ TEST_F(LidarRunTest, ARollingSequenceSeesEachColumnAtItsOwnTime) {
   EXPECT_EQ(again.sequence->times_s, c.sequence->times_s);
 }
 
-struct BadLidar {
-  const char* name;
-  std::string yaml;
-  const char* where;  ///< "file:line" and the key the error names
-};
-
 TEST_F(LidarRunTest, BadInputIsALocatedErrorAndWritesNothing) {
   const std::string base = smallLidar();
   const auto replace = [&](const std::string& from, const std::string& to) {
@@ -173,15 +185,7 @@ TEST_F(LidarRunTest, BadInputIsALocatedErrorAndWritesNothing) {
       {"a sequence's exposure samples", base + "sequence: {times: [0 s], exposure_samples: 2}\n",
        ":10:"},
   };
-  for (const BadLidar& bad : cases) {
-    const fs::path config = writeConfig(bad.yaml);
-    const test::CommandResult r =
-        test::runCli("render " + config.string() + " -o " + (dir_ / "out").string());
-    EXPECT_EQ(r.exitCode, 1) << bad.name << ": " << r.output;
-    EXPECT_NE(r.output.find("c.yaml" + std::string(bad.where)), std::string::npos)
-        << bad.name << ": " << r.output;
-    EXPECT_FALSE(fs::exists(dir_ / "out")) << bad.name;
-  }
+  expectLocatedFailures(cases);
 }
 
 // lidar.multipath through the config: the waveforms gain the multipath
@@ -223,15 +227,7 @@ TEST_F(LidarRunTest, MultipathAddsToTheWaveformsAndBadKeysAreLocated) {
       {"no spot rays", smallLidar("  multipath: {bounces: 1, spot_rays: 0}\n"), ":9:"},
       {"a typo", smallLidar("  multipath: {bounce: 1}\n"), ":9:"},
   };
-  for (const BadLidar& bad : cases) {
-    const fs::path config = writeConfig(bad.yaml);
-    const test::CommandResult r =
-        test::runCli("render " + config.string() + " -o " + (dir_ / "out").string());
-    EXPECT_EQ(r.exitCode, 1) << bad.name << ": " << r.output;
-    EXPECT_NE(r.output.find("c.yaml" + std::string(bad.where)), std::string::npos)
-        << bad.name << ": " << r.output;
-    EXPECT_FALSE(fs::exists(dir_ / "out")) << bad.name;
-  }
+  expectLocatedFailures(cases);
 }
 
 }  // namespace
