@@ -13,6 +13,7 @@
 #include <regex>
 #include <string>
 
+#include "pipeline/CliRefusal.h"
 #include "pipeline/CliRun.h"
 #include "support/TempDir.h"
 
@@ -95,15 +96,7 @@ TEST_F(MaterialsCliTest, BadDelaysExitOneAndWriteNothing) {
                 "render.indirect.bounces"},
        }) {
     SCOPED_TRACE(c.extra);
-    const std::string config = writeConfig(c.extra);
-    const test::CommandResult v = test::runCli("validate " + config);
-    EXPECT_EQ(v.exitCode, 1) << v.output;
-    EXPECT_NE(v.output.find(c.message), std::string::npos) << v.output;
-    const fs::path out = dir_ / "out";
-    const test::CommandResult r = test::runCli("render -q " + config + " -o " + out.string());
-    EXPECT_EQ(r.exitCode, 1) << r.output;
-    EXPECT_NE(r.output.find(c.message), std::string::npos) << r.output;
-    EXPECT_FALSE(fs::exists(out)) << "render wrote " << out;
+    test::expectValidateAndRenderRefuse(writeConfig(c.extra), dir_ / "out", c.message);
   }
 }
 

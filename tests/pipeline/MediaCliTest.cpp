@@ -10,6 +10,7 @@
 #include <fstream>
 #include <string>
 
+#include "pipeline/CliRefusal.h"
 #include "pipeline/CliRun.h"
 #include "support/TempDir.h"
 
@@ -60,16 +61,9 @@ TEST_F(MediaCliTest, BadRegionsAndCoefficientsExitOneAndWriteNothing) {
            Case{"  - {region: water_tank, sigma_a: 0.1, sigma_b: 1}\n", "c.yaml:7:", "sigma_b"},
        }) {
     SCOPED_TRACE(c.media);
-    const std::string config = writeConfig(c.media);
-    const test::CommandResult v = test::runCli("validate " + config);
-    EXPECT_EQ(v.exitCode, 1) << v.output;
+    const test::CommandResult v =
+        test::expectValidateAndRenderRefuse(writeConfig(c.media), dir_ / "out", c.message);
     EXPECT_NE(v.output.find(c.line), std::string::npos) << v.output;
-    EXPECT_NE(v.output.find(c.message), std::string::npos) << v.output;
-    const fs::path out = dir_ / "out";
-    const test::CommandResult r = test::runCli("render -q " + config + " -o " + out.string());
-    EXPECT_EQ(r.exitCode, 1) << r.output;
-    EXPECT_NE(r.output.find(c.message), std::string::npos) << r.output;
-    EXPECT_FALSE(fs::exists(out)) << "render wrote " << out;
   }
 }
 
