@@ -174,9 +174,13 @@ std::string metadataJson(const config::RunConfig& config, const LidarFrame& fram
   if (config.render.medium.present()) {
     const glm::vec3 t = config.render.medium.sigmaT();
     j["medium"] = {{"sigma_t_per_m", vec(t)},
-                   {"doc", "attenuates every ray both ways; a scattering medium's single "
-                           "scattering along each beam (from backscatter.overlap on, "
-                           "BeamBackscatter.h) is in the waveforms"}};
+                   {"doc", hasBeamBackscatter(config)
+                               ? "attenuates every ray both ways; a scattering medium's single "
+                                 "scattering along each beam (from backscatter.overlap on, "
+                                 "BeamBackscatter.h) is in the waveforms"
+                               : "attenuates every ray both ways; no backscatter in the "
+                                 "waveforms (a medium that does not scatter, or a zone scan's "
+                                 "flood)"}};
   }
   const double beams = double(s.channels()) * s.azimuths();
   const double raysPerBeam =
@@ -254,8 +258,7 @@ void writeWaveformPlot(const config::RunConfig& config, const lidar::LidarWavefo
   plot.xUnit = "m";
   plot.xLabel = "range";
   plot.yLabel = "irradiance per bin [uW m^-2]";
-  const bool backscatter = config.render.medium.scatters() &&
-                           config.lidar->spec.scan != lidar::ScanPattern::Zones;
+  const bool backscatter = hasBeamBackscatter(config);
   plot.title = std::string("lidar waveforms (direct light") +
                (config.lidar->multipath.enabled() ? ", multipath" : "") +
                (backscatter ? ", the medium's backscatter" : "") + ")";
@@ -324,6 +327,11 @@ void writeWaveformsNpy(const lidar::LidarSpec& s, const lidar::LidarWaveforms& w
 }
 
 }  // namespace
+
+bool hasBeamBackscatter(const config::RunConfig& config) {
+  return config.render.medium.scatters() &&
+         config.lidar->spec.scan != lidar::ScanPattern::Zones;
+}
 
 std::vector<std::string> writeLidarFiles(const config::RunConfig& config, const LidarFrame& frame,
                                          const std::filesystem::path& dir,

@@ -26,6 +26,11 @@ struct LidarFrame {
   const std::vector<uint8_t>* fogReturns = nullptr;
 };
 
+/// Whether the run adds a scattering medium's backscatter to the beams'
+/// waveforms (BeamBackscatter.h): every scan but a zone scan's flood, which
+/// has no beam (not built; its histograms hold the attenuation alone).
+bool hasBeamBackscatter(const config::RunConfig& config);
+
 /// Writes the frame's files into `dir`; returns their names (relative). lidar.json
 /// lists config.effective.yaml, which the run writes next (RunFolder::finish).
 std::vector<std::string> writeLidarFiles(const config::RunConfig& config, const LidarFrame& frame,

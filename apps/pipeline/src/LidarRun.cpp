@@ -32,7 +32,7 @@ OutputEstimate lidarOutputs(const config::RunConfig& config) {
   e.items.push_back({"range, intensity, beam_directions (npy, exr)", beams * 4 * 8, keys});
   e.items.push_back({"points.ply, points.pcd", beams * s.returns.max * 27 * 2,
                      keys + " x lidar.returns.max"});
-  if (config.render.medium.scatters()) {  // the medium's false returns alone
+  if (hasBeamBackscatter(config)) {  // the medium's false returns alone
     e.items.push_back({"fog_points.ply", beams * s.returns.max * 27, keys + " x lidar.returns.max"});
   }
   for (const sensors::SensorSpec& spec : config.sensors) {
@@ -112,7 +112,7 @@ RunSummary runLidarRender(const config::RunConfig& config, PreparedRenderer& pre
   // lidarReturns).
   const lidar::LidarSpec& spec = config.lidar->spec;
   const bool zones = spec.scan == lidar::ScanPattern::Zones;
-  const bool backscatter = config.render.medium.scatters() && !zones;
+  const bool backscatter = hasBeamBackscatter(config);
   const bool keepVolume =
       !config.sensors.empty() || config.lidar->multipath.enabled() || backscatter;
   lidar::LidarWaveforms waveforms =
