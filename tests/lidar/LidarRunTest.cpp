@@ -154,6 +154,11 @@ TEST_F(LidarRunTest, ARollingSequenceSeesEachColumnAtItsOwnTime) {
       const double want = (5.0 + 30.0 * t) / std::cos(azimuth * M_PI / 180.0);
       EXPECT_NEAR(range.data[a], want, 0.01) << "frame " << k << ", azimuth " << azimuth;
     }
+    // Every file the frame's lidar.json lists is in the frame's folder.
+    const nlohmann::json meta = nlohmann::json::parse(std::ifstream(frame / "lidar.json"));
+    for (const auto& f : meta["files"]) {
+      EXPECT_TRUE(fs::exists(frame / f.get<std::string>())) << f;
+    }
   }
   // The effective config is the same run again.
   const config::RunConfig again = config::loadRunConfig(out / "config.effective.yaml");

@@ -5,6 +5,7 @@
 #include <nlohmann/json.hpp>
 
 #include "RunFolder.h"
+#include "RunRecord.h"
 #include "LidarFiles.h"
 #include "LidarRun.h"
 #include "SequenceFrame.h"
@@ -78,10 +79,11 @@ RunSummary runLidarSequence(const config::RunConfig& config, const RunOptions& o
     const std::string name = frameFolder(k);
     fs::create_directory(folder.staging() / name);
     const LidarFrame frame{&waveforms, &returns, seconds, threads};
-    for (const std::string& f :
-         writeLidarFiles(frameConfig, frame, folder.staging() / name, progress)) {
-      summary.files.push_back(name + "/" + f);
-    }
+    std::vector<std::string> frameFiles =
+        writeLidarFiles(frameConfig, frame, folder.staging() / name, progress);
+    // The frame's own effective config (its seed), which its lidar.json lists.
+    writeRecord(frameConfig, RunOptions{}, folder.staging() / name, frameFiles);
+    for (const std::string& f : frameFiles) summary.files.push_back(name + "/" + f);
     frames.push_back(
         {{"index", k}, {"time_s", t}, {"seed", frameConfig.render.seed}, {"folder", name}});
   }
