@@ -42,6 +42,7 @@ __attribute__((target_clones("avx2", "default"))) void vplKernels(const PixelSur
   const glm::vec3 x = s.x, dxdu = s.dxdu, dxdv = s.dxdv, camera = s.camera;
   const float cameraPath = s.cameraPath_m, start = c.start_m, width = c.binWidth_m;
   const bool unwarp = c.cameraUnwarp;
+  const bool regions = c.regions != nullptr;
   const int bins = c.bins;
   for (std::size_t i = 0; i < n; ++i) {
     const glm::vec2 pixel = physics::pathStepsAcrossPixel(
@@ -53,7 +54,10 @@ __attribute__((target_clones("avx2", "default"))) void vplKernels(const PixelSur
     const glm::vec2 patch =
         vplFootprint * physics::vplPatchPathSteps(glm::vec4(ux[i], uy[i], uz[i], uw[i]),
                                                   glm::vec4(vx[i], vy[i], vz[i], vw[i]), d, eta);
-    const float path_m = physics::vplPathLength(path[i], eta, terms.dist[i], cameraPath);
+    // Centred on the path regionLanes binned (the regions' delay on the
+    // VPL -> x leg; its other legs' are in path and cameraPath).
+    const float leg_m = regions ? terms.dist[i] + terms.regionExtra_m[i] : terms.dist[i];
+    const float path_m = physics::vplPathLength(path[i], eta, leg_m, cameraPath);
     const glm::vec3 kernel =
         physics::footprintKernel(path_m, glm::vec4(pixel, patch), start, width);
     terms.centre[i] = kernel.x, terms.wide[i] = kernel.y, terms.narrow[i] = kernel.z;
@@ -203,13 +207,12 @@ void attenuateLanes(const PixelSurface& s, std::size_t n, const GatherConstants&
 }
 
 // Per-region media: each lit lane's VPL -> x leg through the regions (its
-// transmittance and the time it adds: the lane's bin again) and x's camera
-// leg's transmittance. The footprint kernel (vplKernels) is centred on the
-// leg's path without the regions' delay: renders with media take
-// render.pixel_footprint: false for exact times of indirect light.
+// transmittance and the time it adds: the lane's bin again, and the centre of
+// its footprint kernel, vplKernels) and x's camera leg's transmittance.
 void regionLanes(const PixelSurface& s, const VplArrays& v, std::size_t first, std::size_t n,
                  const GatherConstants& c, VplTerms& terms) {
   for (std::size_t i = 0; i < n; ++i) {
+    terms.regionExtra_m[i] = 0.0f;
     if (terms.bin[i] == kNoLight) continue;
     const std::size_t k = first + i;
     const capture::RegionPassage leg =
@@ -218,9 +221,9 @@ void regionLanes(const PixelSurface& s, const VplArrays& v, std::size_t first, s
     terms.r[i] *= t.r;
     terms.g[i] *= t.g;
     terms.b[i] *= t.b;
+    terms.regionExtra_m[i] = static_cast<float>(leg.extraPath_m);
     const float path_m = physics::vplPathLength(
-        v.path[k], c.indexOfRefraction, terms.dist[i] + static_cast<float>(leg.extraPath_m),
-        s.cameraPath_m);
+        v.path[k], c.indexOfRefraction, terms.dist[i] + terms.regionExtra_m[i], s.cameraPath_m);
     terms.bin[i] = physics::binOfPath(path_m, c.start_m, c.binWidth_m);
   }
 }

@@ -90,6 +90,10 @@ struct VplTerms {
   alignas(64) int32_t first[kVplBlock], count[kVplBlock];
   alignas(64) float r[kVplBlock], g[kVplBlock], b[kVplBlock];
   alignas(64) float dx[kVplBlock], dy[kVplBlock], dz[kVplBlock], dist[kVplBlock];
+  /// Per-region media only (GatherConstants::regions): the path the VPL -> x
+  /// leg's regions add (capture::RegionPassage::extraPath_m), for the
+  /// footprint kernel's centre; 0 for a dark lane.
+  alignas(64) float regionExtra_m[kVplBlock];
   /// Whether the pixel lies in the VPL's near field (physics::vplInNearField),
   /// where its geometry term is the patch's integral.
   alignas(64) int32_t nearField[kVplBlock];
