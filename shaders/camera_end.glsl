@@ -3,8 +3,7 @@
 // or with SAMPLE_CAMERA_ENDS each given sample's own (ir::SurfaceImage::
 // aperture, the CPU backend's SurfaceImage::cameraOf and lensPathOf): a ray
 // list's ray origins. The buffer holds one vec4 (xyz end, w lens path) per
-// sample, pixel p's N x N samples at p N^2 + s, then with ADAPTIVE_SAMPLES
-// one per pixel for the pixel-centre samples (surface_samples.glsl).
+// sample, at surface_samples.glsl's sampleRecordIndex.
 // The including gather declares uImageWidth.
 #ifndef TOFSIM_CAMERA_END_GLSL
 #define TOFSIM_CAMERA_END_GLSL
@@ -14,7 +13,6 @@ uniform vec3 uCameraPosition_world;
 layout(std430, binding = TOFSIM_SSBO_SAMPLE_CAMERA_ENDS) readonly buffer SampleCameraEnds {
   vec4 sampleCameraEnds[];
 };
-uniform uint uImagePixels;  // width x height: where the centre samples' ends start
 #endif
 
 struct CameraEnd {
@@ -27,11 +25,7 @@ struct CameraEnd {
 CameraEnd cameraEndOf(ivec2 xy, int samples, int s) {
   CameraEnd o;
 #ifdef SAMPLE_CAMERA_ENDS
-  uint pixel = uint(xy.y * uImageWidth + xy.x);
-  uint i = pixel * uint(PIXEL_SAMPLES * PIXEL_SAMPLES) + uint(s);
-#if defined(ADAPTIVE_SAMPLES) && PIXEL_SAMPLES > 1
-  if (samples == 1) i = uImagePixels * uint(PIXEL_SAMPLES * PIXEL_SAMPLES) + pixel;
-#endif
+  uint i = sampleRecordIndex(uint(xy.y * uImageWidth + xy.x), samples, s);
   o.position = sampleCameraEnds[i].xyz;
   o.lensPath_m = sampleCameraEnds[i].w;
 #else

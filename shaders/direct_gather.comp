@@ -10,7 +10,10 @@
 // spread instead over that path's distribution across the sample's footprint
 // (its sub-pixel, or the whole pixel for a centre sample;
 // footprint_deposit.glsl). With MEDIUM (a medium filling the scene) the
-// radiance is attenuated over both legs (medium_uniforms.glsl). Each bin
+// radiance is attenuated over both legs (medium_uniforms.glsl); with
+// MEDIUM_REGIONS (per-region media) over both legs' passages through the
+// regions, whose index adds their time (region_legs.comp found them: the
+// footprint is centred on the delayed path). Each bin
 // has this thread as its only writer, so the result does not depend on
 // scheduling. With RESPONSE_CLASSES (a render with
 // scattering delays) the light of a delayed surface goes to its class's
@@ -22,6 +25,7 @@ layout(local_size_x = TOFSIM_WORK_GROUP_SIZE) in;
 #include "surface_samples.glsl"
 #include "light.glsl"
 #include "medium_uniforms.glsl"
+#include "region_sample_legs.glsl"
 
 layout(std430, binding = TOFSIM_SSBO_DIRECT_VOLUME) buffer DirectVolume { float direct[]; };
 layout(std430, binding = TOFSIM_SSBO_OUTSIDE_AXIS) buffer OutsideAxis { float outside[]; };  // [2 * pixel]: before, [2 * pixel + 1]: after
@@ -45,10 +49,13 @@ uniform int uCameraUnwarp;
 #include "response_classes.glsl"
 #endif
 
-// Adds sample g of pixel `local`, whose camera leg ends at `end`.
-void gatherSample(uint local, SurfaceSample g, CameraEnd end, inout float lostBefore,
+// Adds sample s of pixel `local` (image pixel `pixel` at xy, which takes
+// `samples`).
+void gatherSample(uint local, uint pixel, ivec2 xy, int samples, int s, inout float lostBefore,
                   inout float lostAfter) {
+  SurfaceSample g = pixelSample(xy, samples, s);
   if (g.position.w == 0.0) return;
+  CameraEnd end = cameraEndOf(xy, samples, s);
   vec3 x = g.position.xyz;
   vec3 n = g.normal;
 
@@ -66,7 +73,16 @@ void gatherSample(uint local, SurfaceSample g, CameraEnd end, inout float lostBe
 #else
   float dCamera = uCameraUnwarp != 0 ? 0.0 : length(x - camera);
 #endif
+#ifdef MEDIUM_REGIONS
+  // Both legs through the regions (CpuDirectGather's directLight): their
+  // transmittance, and the time inside them (the camera leg's unless unwarped).
+  SampleLegs legs = sampleLegs(pixel, samples, s);
+  radiance *= legs.lightT * legs.cameraT;
+  float path_m = directPathLength(uIndexOfRefraction, dLight + legs.lightExtra_m,
+                                  uCameraUnwarp != 0 ? dCamera : dCamera + legs.cameraExtra_m);
+#else
   float path_m = directPathLength(uIndexOfRefraction, dLight, dCamera);
+#endif
 #ifdef MEDIUM
   // The light -> x and x -> camera legs, the latter whatever the unwarp
   // (the lens's path is inside the camera).
@@ -119,12 +135,11 @@ void main() {
   float lostBefore = outside[2u * local];
   float lostAfter = outside[2u * local + 1u];
 #if PIXEL_SAMPLES == 1
-  gatherSample(local, pixelSample(xy, 1, 0), cameraEndOf(xy, 1, 0), lostBefore, lostAfter);
+  gatherSample(local, pixel, xy, 1, 0, lostBefore, lostAfter);
 #else
   int samples = samplesOfPixel(pixel);
   for (int s = 0; s < samples; ++s) {
-    gatherSample(local, pixelSample(xy, samples, s), cameraEndOf(xy, samples, s), lostBefore,
-                 lostAfter);
+    gatherSample(local, pixel, xy, samples, s, lostBefore, lostAfter);
   }
 #endif
   outside[2u * local] = lostBefore;

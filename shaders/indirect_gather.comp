@@ -14,7 +14,11 @@
 // a contribution of a delayed class (the VPL's, then the sample's vertex)
 // goes to its class's buffer instead (response_classes.glsl). With MEDIUM
 // (a medium filling the scene) each contribution is attenuated over its
-// VPL -> x and x -> camera legs (medium_uniforms.glsl).
+// VPL -> x and x -> camera legs (medium_uniforms.glsl); with MEDIUM_REGIONS
+// (per-region media) over those legs' passages through the regions, whose
+// index adds their time (the VPL -> x leg's found here, medium_regions.glsl;
+// the camera leg's by region_legs.comp; the light -> VPL leg's is in the
+// VPL's flux and path): the footprint is centred on the delayed path.
 // Both ends of a contribution scatter (scatter_vertex.glsl): the VPL toward x
 // (vplScatterToward: 1 where its flux holds it), and x toward the camera for
 // the direction to the VPL (scatter()).
@@ -26,6 +30,8 @@ layout(local_size_x = TOFSIM_WORK_GROUP_SIZE) in;
 
 #include "surface_samples.glsl"
 #include "medium_uniforms.glsl"
+#include "medium_regions.glsl"
+#include "region_sample_legs.glsl"
 
 layout(std430, binding = TOFSIM_SSBO_INDIRECT_VOLUME) buffer IndirectVolume { float indirect[]; };
 layout(std430, binding = TOFSIM_SSBO_OUTSIDE_AXIS) buffer OutsideAxis { float outside[]; };  // [2 * pixel]: before, [2 * pixel + 1]: after
@@ -59,7 +65,8 @@ uniform float uGeometryClamp;  // <= 0: no clamping
 // the shadow rays per VPL: IndirectLight::vplsPerDispatch, for a pixel of
 // PIXEL_SAMPLES^2 samples, the most any takes); an invocation that still
 // comes within a factor of two raises this flag so the render fails loudly
-// instead of losing light.
+// instead of losing light. With MEDIUM_REGIONS a leg that crosses a region's
+// surface more often than the shader keeps raises 2 (medium_regions.glsl).
 const uint kLoopTripLimit = 30000u;
 layout(std430, binding = TOFSIM_SSBO_LOOP_GUARD) buffer LoopGuard { uint loopLimitHit; };
 
@@ -75,6 +82,9 @@ struct Sample {
   vec3 toCamera;         // unit, x -> camera
   float weight;          // the sample's share of the pixel (1 with one point sample)
   float cameraPath;   // eta |x - c|, or 0 when unwarped
+#ifdef MEDIUM_REGIONS
+  vec3 cameraT;       // the camera leg's transmittance through the regions
+#endif
 #ifdef PIXEL_FOOTPRINT
   vec3 dxdu, dxdv;    // the surface's steps across the sample's footprint
 #endif
@@ -96,7 +106,14 @@ Sample loadSample(ivec2 xy, int samples, int s) {
 #else
   o.weight = 1.0;
 #endif
-#ifdef SAMPLE_CAMERA_ENDS
+#if defined(MEDIUM_REGIONS)
+  // The camera leg through the regions (CpuBackend::fillSurface): its
+  // transmittance, and the time inside them.
+  SampleLegs legs = sampleLegs(uint(xy.y * uImageWidth + xy.x), samples, s);
+  o.cameraT = legs.cameraT;
+  o.cameraPath = cameraPathLength(uCameraUnwarp != 0, uIndexOfRefraction,
+                                  length(o.x - o.camera) + end.lensPath_m + legs.cameraExtra_m);
+#elif defined(SAMPLE_CAMERA_ENDS)
   o.cameraPath = cameraPathLength(uCameraUnwarp != 0, uIndexOfRefraction,
                                   length(o.x - o.camera) + end.lensPath_m);
 #else
@@ -134,7 +151,17 @@ void gatherVpl(uint local, Sample at, uint k, Vpl vpl, inout float lostBefore,
   // flux), the latter whatever the unwarp.
   radiance *= mediumLegsTransmittance(dist + length(at.x - at.camera));
 #endif
+#ifdef MEDIUM_REGIONS
+  // The VPL -> x leg through the regions (the CPU's GatherKernel regionLanes).
+  bool overflow = false;
+  RegionPassage leg = regionPassage(vpl.positionPath.xyz, at.x, iterations, overflow);
+  if (overflow) atomicOr(loopLimitHit, 2u);
+  radiance *= regionTransmittance(leg) * at.cameraT;
+  float path_m = vplPathLength(vpl.positionPath.w, uIndexOfRefraction, dist + leg.extraPath_m,
+                               at.cameraPath);
+#else
   float path_m = vplPathLength(vpl.positionPath.w, uIndexOfRefraction, dist, at.cameraPath);
+#endif
 #ifdef RESPONSE_CLASSES
   // The VPL's class (its history, in flux.w) then the sample's vertex:
   // delayed light into its class's buffer, whatever the footprint setting.

@@ -51,6 +51,22 @@ layout(std430, binding = TOFSIM_SSBO_SAMPLED_PIXELS) readonly buffer SampledPixe
 };
 #endif
 
+#if defined(SAMPLE_CAMERA_ENDS) || defined(MEDIUM_REGIONS)
+uniform uint uImagePixels;  // width x height: where the centre samples' records start
+
+// Where sample s of image pixel `pixel` (which takes `samples`:
+// samplesOfPixel) is in a buffer of one record per sample: pixel p's N x N
+// samples at p N^2 + s, then with ADAPTIVE_SAMPLES one per pixel for the
+// pixel-centre samples (camera_end.glsl's ends, region_legs.comp's legs).
+uint sampleRecordIndex(uint pixel, int samples, int s) {
+  uint i = pixel * uint(kSamplesPerPixel) + uint(s);
+#if defined(ADAPTIVE_SAMPLES) && PIXEL_SAMPLES > 1
+  if (samples == 1) i = uImagePixels * uint(kSamplesPerPixel) + pixel;
+#endif
+  return i;
+}
+#endif
+
 // G-buffer texel of sample s of the pixel at image position pixelXy.
 ivec2 sampleTexel(ivec2 pixelXy, int s) {
   return pixelXy * PIXEL_SAMPLES + ivec2(s % PIXEL_SAMPLES, s / PIXEL_SAMPLES);

@@ -5,7 +5,7 @@
 // time axis's, the effective config reloads to the same medium, and bad
 // input is a located error at its line: negative coefficients, |g| >= 1, an
 // unknown phase model, a visibility <= 0, a list of the wrong length,
-// per-region `media:` on GL or with `medium:` (MediaCliTest has the rest)
+// per-region `media:` scattering on GL or with `medium:` (MediaCliTest has the rest)
 // and captures the renderers do not build a medium into (nlos, rays).
 
 #include <gtest/gtest.h>
@@ -165,7 +165,7 @@ TEST_F(MediumConfigTest, BadInputIsALocatedError) {
       {"medium:\n  sigma_s: 1\n  albedo: 0.9\n", 7, "medium.albedo", "visibility"},
       {"medium:\n  sigma_s: 1\n  sigma_x: 1\n", 7, "medium.sigma_x", ""},
       {"medium: [0.1]\n", 5, "medium", "mapping"},
-      {"media:\n  - {region: tank, sigma_a: 0.3}\n", 6, "media", "render.backend: cpu"},
+      {"media:\n  - {region: tank, sigma_s: 0.3}\n", 6, "media[0].sigma_s", "render.backend: cpu"},
   };
   for (const Case& c : cases) {
     const Failure f = errorOf(c.body);
@@ -176,10 +176,24 @@ TEST_F(MediumConfigTest, BadInputIsALocatedError) {
 }
 
 TEST_F(MediumConfigTest, PerRegionMediaSayWhatIsBuilt) {
-  Failure f = errorOf("media:\n  - {region: tank, sigma_a: 0.3}\n");
-  EXPECT_NE(f.what.find("per-region media are built on the CPU backend"), std::string::npos)
-      << f.what;
-  f = errorOf("medium: {sigma_a: 0.1}\nmedia:\n  - {region: tank, sigma_a: 0.3}\n");
+  // An absorbing region is built on every backend; a scattering one not on GL
+  // (nor with auto, which may pick GL), whatever the CPU backend builds.
+  for (const char* backend : {"auto", "gl", "cpu"}) {
+    EXPECT_EQ(errorOf("render: {backend: " + std::string(backend) +
+                      "}\nmedia:\n  - {region: tank, sigma_a: 0.3}\n")
+                  .what,
+              "no error")
+        << backend;
+  }
+  for (const char* backend : {"auto", "gl"}) {
+    const Failure gl = errorOf("render: {backend: " + std::string(backend) +
+                               "}\nmedia:\n  - {region: tank, sigma_s: 0.3}\n");
+    EXPECT_EQ(gl.line, 7) << gl.what;
+    EXPECT_NE(gl.what.find("a scattering region (sigma_s > 0) is not built on the GL backend"),
+              std::string::npos)
+        << gl.what;
+  }
+  Failure f = errorOf("medium: {sigma_a: 0.1}\nmedia:\n  - {region: tank, sigma_a: 0.3}\n");
   EXPECT_NE(f.what.find("per-region media together are not built"), std::string::npos) << f.what;
   f = errorOf("render: {backend: cpu}\nmedia:\n  - {region: tank, sigma_s: 0.3}\n");
   EXPECT_NE(f.what.find("built in the reference only"), std::string::npos) << f.what;

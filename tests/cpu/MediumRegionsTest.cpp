@@ -1,12 +1,9 @@
 // Issue 42's per-region media (`media:`): homogeneous media inside closed
-// meshes, on the CPU backend and in the reference. A cube region 0.5 m thick
-// between a camera (the light at its pinhole) and a plane: a pixel whose ray
-// crosses the cube's top and bottom faces sees the plane's vacuum return
-// times exp(-sigma_a x 2 x 0.5 / cos theta) (light and camera legs), delayed
-// by (eta - 1) x that length (index_of_refraction); a pixel that misses the
-// cube sees the vacuum's bytes. Single scattering in a slab region is the
-// lidar equation restricted to the slab. Closed forms at pixel centres
-// (render.pixel_footprint: false).
+// meshes, on the CPU backend and in the reference: the cube region's closed
+// forms (support/RegionTank.h; tests/gl/MediumRegionsGLTest.cpp runs them on
+// GL), region meshes' checks, a leg's passage, and single scattering in a
+// slab region, the lidar equation restricted to the slab. Closed forms at
+// pixel centres (render.pixel_footprint: false).
 
 #include <gtest/gtest.h>
 
@@ -16,6 +13,7 @@
 #include <cstdio>
 
 #include "support/CpuRender.h"
+#include "support/RegionTank.h"
 #include "support/Simpson.h"
 #include "support/TestJobs.h"
 #include "tofsim/capture/MediumRegions.h"
@@ -29,116 +27,11 @@ namespace tofsim::cpu {
 namespace {
 
 using capture::RegionMedium;
-
-// A box mesh named `name` with 8 shared corners, wound outwards (or inwards).
-void addBox(scene::Scene& scene, const std::string& name, glm::vec3 lo, glm::vec3 hi,
-            bool inwards = false) {
-  scene::Mesh m;
-  m.name = name;
-  for (int i = 0; i < 8; ++i) {
-    m.positions_world.emplace_back(i & 1 ? hi.x : lo.x, i & 2 ? hi.y : lo.y, i & 4 ? hi.z : lo.z);
-    m.normals_world.emplace_back(0.0f, 0.0f, 1.0f);
-  }
-  const glm::vec3 centre = 0.5f * (lo + hi);
-  // Each face's 4 corners in order around it.
-  const int faces[6][4] = {{0, 1, 3, 2}, {4, 5, 7, 6}, {0, 1, 5, 4},
-                           {2, 3, 7, 6}, {0, 2, 6, 4}, {1, 3, 7, 5}};
-  for (const auto& f : faces) {
-    for (const auto& t : {std::array<int, 3>{f[0], f[1], f[2]}, std::array<int, 3>{f[0], f[2], f[3]}}) {
-      const glm::vec3 a = m.positions_world[t[0]], b = m.positions_world[t[1]],
-                      c = m.positions_world[t[2]];
-      const bool out = glm::dot(glm::cross(b - a, c - a), (a + b + c) / 3.0f - centre) > 0.0f;
-      const bool flip = out == inwards;
-      m.indices.insert(m.indices.end(), {static_cast<uint32_t>(t[0]),
-                                         static_cast<uint32_t>(flip ? t[2] : t[1]),
-                                         static_cast<uint32_t>(flip ? t[1] : t[2])});
-    }
-  }
-  scene.meshes.push_back(std::move(m));
-}
-
-constexpr float kTop = 1.0f, kBottom = 0.5f, kHalf = 0.25f;  // the cube over the plane
-
-// The plane job with the cube region `tank` (sigma_a, eta) taken out of its
-// surfaces, centre pixels, no indirect light.
-struct TankJob {
-  test::PlaneJob plane;
-  TankJob(glm::vec3 sigmaA, double eta, bool withMedia = true) {
-    addBox(plane.scene, "tank", {-kHalf, -kHalf, kBottom}, {kHalf, kHalf, kTop});
-    auto region = scene::takeRegionMesh(plane.scene, "tank");
-    EXPECT_TRUE(region.has_value());
-    EXPECT_EQ(scene::regionMeshProblem(*region), "");
-    plane.scene.regions.push_back(*region);
-    capture::RenderJob& job = plane.job;
-    job.camera().look_at_world = {0.0f, 0.0f, 0.0f};
-    job.settings.pixel_footprint = false;
-    job.settings.indirect.enabled = false;
-    if (!withMedia) return;
-    RegionMedium m;
-    m.region = "tank";
-    m.medium.sigma_a_per_m = sigmaA;
-    m.index_of_refraction = eta;
-    job.settings.media.push_back(m);
-  }
-};
-
-// The length of pixel (x, y)'s centre ray inside the cube, or -1 where it
-// crosses a side face (neither all in nor all out).
-double insideLength(const capture::RenderJob& job, int x, int y) {
-  const capture::PrimaryRay r = capture::PrimaryRays(job.imager).ray(x, y);
-  const glm::dvec3 o(r.origin), d(glm::normalize(glm::dvec3(r.direction)));
-  const auto within = [&](double z) {
-    const glm::dvec3 p = o + d * ((z - o.z) / d.z);
-    return std::abs(p.x) < kHalf && std::abs(p.y) < kHalf;
-  };
-  const bool top = within(kTop), bottom = within(kBottom);
-  if (top && bottom) return (kTop - kBottom) / -d.z;
-  return !top && !bottom ? 0.0 : -1.0;
-}
-
-double pixelSum(const TransientVolume& v, int x, int y, int c) {
-  double sum = 0.0;
-  for (int b = 0; b < v.bins(); ++b) sum += v.at(y, x, b, c);
-  return sum;
-}
-
-int peakBin(const TransientVolume& v, int x, int y) {
-  int best = 0;
-  for (int b = 1; b < v.bins(); ++b) best = v.at(y, x, b, 0) > v.at(y, x, best, 0) ? b : best;
-  return best;
-}
-
-capture::VolumeCollector renderReference(const capture::RenderJob& job, int32_t bounces,
-                                         int32_t samples) {
-  reference::ReferenceSettings s;
-  s.pixel_filter = reference::PixelFilter::Point;
-  s.bounces = bounces;
-  s.samples_per_pixel = samples;
-  s.threads = 2;
-  capture::VolumeCollector out(job.camera().width, job.camera().height, job.settings.time, 3);
-  reference::ReferenceRenderer(s).render(job, out);
-  return out;
-}
-
-// Pixels through the cube: vacuum x exp(-sigma_a 2 L) per channel; the
-// others the vacuum's values.
-void expectAbsorbedByTheCube(const TransientVolume& tank, const TransientVolume& vacuum,
-                             const capture::RenderJob& job, glm::vec3 sigmaA) {
-  int through = 0;
-  for (int y = 0; y < vacuum.height(); ++y) {
-    for (int x = 0; x < vacuum.width(); ++x) {
-      const double inside = insideLength(job, x, y);
-      if (inside < 0.0) continue;
-      through += inside > 0.0;
-      for (int c = 0; c < 3; ++c) {
-        const double expected = pixelSum(vacuum, x, y, c) * std::exp(-2.0 * sigmaA[c] * inside);
-        ASSERT_NEAR(pixelSum(tank, x, y, c), expected, 2e-6 * expected + 1e-12)
-            << x << ", " << y << " channel " << c;
-      }
-    }
-  }
-  EXPECT_GT(through, 20);  // the closed form is tested where it matters
-}
+using test::addBox;
+using test::expectAbsorbedByTheCube;
+using test::expectDelayedByTheCube;
+using test::renderReference;
+using test::TankJob;
 
 const glm::vec3 kSigmaA(1.0f, 0.5f, 0.2f);
 
@@ -200,29 +93,6 @@ TEST(MediumRegionsTest, AnAbsorbingCubeAttenuatesThePlanesReturnInTheReference) 
   expectAbsorbedByTheCube(withCube.direct, without.direct, tank.plane.job, kSigmaA);
 }
 
-// eta 1.33 and no absorption: each through-pixel's peak moves by
-// (eta - 1) x 2 L of path, in whole bins of the axis.
-void expectDelayedByTheCube(const TransientVolume& tank, const TransientVolume& vacuum,
-                            const capture::RenderJob& job) {
-  const TimeAxis& axis = job.settings.time;
-  const double eta = job.settings.media.front().index_of_refraction;
-  int moved = 0;
-  for (int y = 0; y < vacuum.height(); y += 3) {
-    for (int x = 0; x < vacuum.width(); x += 3) {
-      const double inside = insideLength(job, x, y);
-      if (inside < 0.0) continue;
-      const capture::PrimaryRay r = capture::PrimaryRays(job.imager).ray(x, y);
-      const double vacuumPath = 2.0 * 1.5 / -glm::normalize(glm::dvec3(r.direction)).z;
-      const double binOf = (vacuumPath + (eta - 1.0) * 2.0 * inside - axis.start_m()) /
-                           axis.bin_width_m();
-      if (std::abs(binOf - std::round(binOf)) < 0.01) continue;  // too near an edge to tell
-      EXPECT_EQ(peakBin(tank, x, y), static_cast<int>(std::floor(binOf))) << x << ", " << y;
-      moved += inside > 0.0;
-    }
-  }
-  EXPECT_GT(moved, 2);
-}
-
 TEST(MediumRegionsTest, ARegionsIndexDelaysThePlanesPeakOnTheCpuBackend) {
   const TankJob tank(glm::vec3(0.0f), 1.33), vacuum(glm::vec3(0.0f), 1.0, false);
   expectDelayedByTheCube(test::renderOnCpu(tank.plane.job).volume.direct,
@@ -236,41 +106,11 @@ TEST(MediumRegionsTest, ARegionsIndexDelaysThePlanesPeakInTheReference) {
 }
 
 
-double energy(const TransientVolume& v) {
-  double sum = 0.0;
-  for (const float x : v.values()) sum += x;
-  return sum;
-}
-
-// The corner (floor and wall) with an absorbing cube region in the light's
-// and the camera's way: instant radiosity on the CPU backend against the
-// reference, direct light and one indirect bounce. The direct light is exact
-// in both (point pixels): the same energy to float rounding. The indirect
-// light's absorption by the cube (its energy with the region over without)
-// is the same within the reference's noise and the VPLs' bias, which both
-// cancel mostly in the ratio.
+// The corner with an absorbing cube (test::expectIrMatchesReferenceThroughACube)
+// on the CPU backend.
 TEST(MediumRegionsTest, InstantRadiosityMatchesTheReferenceThroughAnAbsorbingCube) {
-  test::CornerJob corner(16);
-  addBox(corner.scene, "cube", {-0.4f, 0.2f, -0.6f}, {0.4f, 0.8f, 0.2f});
-  corner.scene.regions.push_back(*scene::takeRegionMesh(corner.scene, "cube"));
-  capture::RenderJob vacuum = corner.job;
-  vacuum.settings.pixel_footprint = false;
-  vacuum.settings.indirect.rsm_resolution = 64;
-  capture::RenderJob cube = vacuum;
-  cube.settings.media.push_back({"cube", {}, 1.2});
-  cube.settings.media.back().medium.sigma_a_per_m = {1.5f, 0.8f, 0.3f};
-  const test::CpuRender irCube = test::renderOnCpu(cube), irVacuum = test::renderOnCpu(vacuum);
-  const capture::VolumeCollector refCube = renderReference(cube, 2, 256),
-                                 refVacuum = renderReference(vacuum, 2, 256);
-  const double directIr = energy(irCube.volume.direct), directRef = energy(refCube.direct);
-  EXPECT_NEAR(directIr, directRef, 1e-5 * directRef);
-  EXPECT_LT(directIr, 0.95 * energy(irVacuum.volume.direct));  // the cube is in the way
-  const double ratioIr = energy(irCube.volume.indirect) / energy(irVacuum.volume.indirect);
-  const double ratioRef = energy(refCube.indirect) / energy(refVacuum.indirect);
-  std::printf("indirect with the cube over without: IR %.4f, reference %.4f\n", ratioIr,
-              ratioRef);
-  EXPECT_LT(ratioIr, 0.95);
-  EXPECT_NEAR(ratioIr, ratioRef, 0.02 * ratioRef);
+  test::expectIrMatchesReferenceThroughACube(
+      [](const capture::RenderJob& job) { return test::renderOnCpu(job).volume; }, 1e-5);
 }
 
 // A camera with the light at its pinhole looking along +z through a slab

@@ -1,8 +1,9 @@
 // Issue 42's per-region media (`media:`) through the CLI (no GL): bad
 // regions and coefficients end `validate` and `render` with a located error
-// (file:line, the key), exit 1 and nothing written; a good entry renders on
-// the CPU backend (an absorbing region) and in the reference (a scattering
-// one), and configs/water_tank.yaml validates.
+// (file:line, the key), exit 1 and nothing written (on GL also a scattering
+// region, and regions of more triangles than its shaders take); a good entry
+// renders on the CPU backend (an absorbing region) and in the reference (a
+// scattering one), and configs/water_tank.yaml validates.
 
 #include <gtest/gtest.h>
 
@@ -69,9 +70,27 @@ TEST_F(MediaCliTest, BadRegionsAndCoefficientsExitOneAndWriteNothing) {
 
 TEST_F(MediaCliTest, GlAndAFilledSceneAreRefusedWithWhatToDo) {
   const std::string media = "  - {region: water_tank, sigma_a: 0.1}\n";
+  // An absorbing region is built on GL; a scattering one is not.
   const test::CommandResult gl = test::runCli("validate " + writeConfig(media, "gl"));
-  EXPECT_EQ(gl.exitCode, 1) << gl.output;
-  EXPECT_NE(gl.output.find("render.backend: cpu"), std::string::npos) << gl.output;
+  EXPECT_EQ(gl.exitCode, 0) << gl.output;
+  const test::CommandResult scattering =
+      test::runCli("validate " + writeConfig("  - {region: water_tank, sigma_s: 0.1}\n", "gl"));
+  EXPECT_EQ(scattering.exitCode, 1) << scattering.output;
+  EXPECT_NE(scattering.output.find("c.yaml:7:"), std::string::npos) << scattering.output;
+  EXPECT_NE(scattering.output.find("not built on the GL backend"), std::string::npos)
+      << scattering.output;
+  EXPECT_NE(scattering.output.find("render.backend: cpu"), std::string::npos) << scattering.output;
+  // The tank's 12 triangles are more than GL's shaders take at 16 x 16 pixel
+  // samples (render/GlRegionLimits.h): located at the region, the limit said.
+  const test::CommandResult large =
+      test::runCli("validate " + writeConfig(media, "gl, pixel_samples: 16"));
+  EXPECT_EQ(large.exitCode, 1) << large.output;
+  EXPECT_NE(large.output.find("c.yaml:7:"), std::string::npos) << large.output;
+  EXPECT_NE(large.output.find("media[0].region: the media's regions have 12 triangles with the "
+                              "mesh 'water_tank': the GL backend takes at most 0 with "
+                              "render.pixel_samples 16"),
+            std::string::npos)
+      << large.output;
   const test::CommandResult both =
       test::runCli("validate " + writeConfig(media + "medium: {sigma_a: 0.1}\n"));
   EXPECT_EQ(both.exitCode, 1) << both.output;

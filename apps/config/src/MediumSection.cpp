@@ -196,10 +196,21 @@ void refuseUnbuiltRegionCaptures(const ConfigNode& e, const RunConfig& config) {
                               : "a capture sequence") +
            " are not built yet: use one `camera` capture, or remove `media`");
   }
-  if (config.renderer != RendererKind::InstantRadiosity) return;
-  if (config.backend != IrBackendKind::Cpu) {
-    e.fail("per-region media are built on the CPU backend and the reference only, not on GL: "
-           "set `render.backend: cpu` (or `render.renderer: reference`)");
+}
+
+// What the GL backend does not build into a region's medium: scattering
+// (its single scattering and medium VPLs are the CPU backend's, if any). An
+// absorbing region (its attenuation and its index's delay) is built on both.
+void refuseUnbuiltRegionOnGl(const ConfigNode& e, const capture::Medium& m,
+                             const RunConfig& config) {
+  if (config.renderer != RendererKind::InstantRadiosity || config.backend == IrBackendKind::Cpu) {
+    return;
+  }
+  if (m.scatters()) {
+    e.failKey(e.has("visibility") ? "visibility" : "sigma_s",
+              "a scattering region (sigma_s > 0) is not built on the GL backend (render.backend: " +
+                  std::string(config.backend == IrBackendKind::Gl ? "gl" : "auto, which may pick gl") +
+                  "): set `render.backend: cpu` (or `render.renderer: reference`), or sigma_s: 0");
   }
 }
 
@@ -239,6 +250,7 @@ void parseRegionMedium(const ConfigNode& e, RunConfig& config) {
               "must be >= 1 (got " + e.child("index_of_refraction").asString() + ")");
   }
   refuseUnbuiltRegionCaptures(e, config);
+  refuseUnbuiltRegionOnGl(e, r.medium, config);
   refuseUnbuiltRegionLight(e, r.medium, config);
   config.render.media.push_back(r);
   config.media.push_back({e.location(), e.locationOf("region")});

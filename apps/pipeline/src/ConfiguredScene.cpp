@@ -8,6 +8,7 @@
 #include "tofsim/ir/VplClasses.h"
 #include "tofsim/physics/ResponseClassTable.h"
 #include "tofsim/pipeline/NlosScan.h"
+#include "tofsim/render/GlRegionLimits.h"
 #include "tofsim/scene/RegionMeshes.h"
 #include "tofsim/util/Error.h"
 
@@ -25,6 +26,29 @@ namespace {
 
 bool boxesOverlap(const scene::Bounds& a, const scene::Bounds& b) {
   return glm::all(glm::lessThan(a.min, b.max)) && glm::all(glm::lessThan(b.min, a.max));
+}
+
+// On GL every leg walks the regions' triangles in the shaders (their loop
+// trips bounded: render/GlRegionLimits.h): more are refused at the region
+// that passes the limit. With render.backend: auto the backend refuses them
+// if it is GL.
+void refuseRegionsTooLargeForGl(const config::RunConfig& config, const scene::Scene& scene,
+                                const FileLoc& at, const std::string& key) {
+  if (config.renderer != config::RendererKind::InstantRadiosity ||
+      config.backend != config::IrBackendKind::Gl) {
+    return;
+  }
+  std::size_t triangles = 0;
+  for (const scene::RegionMesh& r : scene.regions) triangles += r.triangles_world.size() / 3;
+  const std::size_t limit = render::glRegionTriangleLimit(config.render.pixel_samples);
+  if (triangles <= limit) return;
+  throw InputError(at, key,
+                   "the media's regions have " + std::to_string(triangles) +
+                       " triangles with the mesh '" + scene.regions.back().name +
+                       "': the GL backend takes at most " + std::to_string(limit) +
+                       " with render.pixel_samples " + std::to_string(config.render.pixel_samples) +
+                       " (each leg walks them all in the shaders): set `render.backend: cpu`, "
+                       "fewer pixel samples, or a mesh of fewer triangles");
 }
 
 }  // namespace
@@ -59,6 +83,7 @@ void takeMediumRegions(const config::RunConfig& config, scene::Scene& scene) {
       }
     }
     scene.regions.push_back(std::move(*region));
+    refuseRegionsTooLargeForGl(config, scene, at, key);
   }
 }
 

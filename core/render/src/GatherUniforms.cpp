@@ -15,7 +15,7 @@ using namespace capture;  // the job description types
 
 // Uniforms shared by the direct and indirect gathers: image, time axis,
 // imager (its viewpoint, whether its last leg counts, its footprint steps),
-// the medium.
+// the medium (per-region media's regions: RegionLegs::setUniforms).
 void configureGather(const gl::Program& program, const RenderJob& job) {
   const TimeAxis& axis = job.settings.time;
   program.set("uImageWidth", imageWidth(job.imager));
@@ -29,9 +29,10 @@ void configureGather(const gl::Program& program, const RenderJob& job) {
   const RenderSettings& s = job.settings;
   if (s.medium.present()) setMediumExtinction(program, s.medium);  // compiled with MEDIUM
   // Each sample's own camera end, or the viewpoint for all (camera_end.glsl).
-  if (raysShareOrigin(job.imager)) {
-    program.set("uCameraPosition_world", viewpoint(job.imager));
-  } else if (gpu::adaptiveSamples(s)) {
+  // Where the centre samples' records start: their camera ends' and their
+  // legs through per-region media's (surface_samples.glsl's sampleRecordIndex).
+  if (raysShareOrigin(job.imager)) program.set("uCameraPosition_world", viewpoint(job.imager));
+  if (gpu::adaptiveSamples(s) && (!raysShareOrigin(job.imager) || !s.media.empty())) {
     program.set("uImagePixels", static_cast<unsigned>(imageWidth(job.imager) * imageHeight(job.imager)));
   }
   const int32_t n = s.pixel_samples;

@@ -13,6 +13,7 @@
 #include "MediumVpls.h"
 #include "MediumUniforms.h"
 #include "PixelFootprint.h"
+#include "RegionLegs.h"
 #include "SampleBuffers.h"
 #include "SurfaceMaps.h"
 #include "Vpls.h"
@@ -22,6 +23,7 @@
 #include "tofsim/gl/Context.h"
 #include "tofsim/ir/MaterialVertex.h"
 #include "tofsim/ir/MediumVpl.h"
+#include "tofsim/ir/RsmTexels.h"
 #include "tofsim/ir/SurfaceImage.h"
 #include "tofsim/physics/FootprintKernel.h"
 #include "tofsim/ir/VplClasses.h"
@@ -113,6 +115,7 @@ struct GlBackend::Passes {
       sampleCameraEnds.bindBase(GL_SHADER_STORAGE_BUFFER, gpu::kSampleCameraEnds);
     }
     responseClasses.bind();
+    if (regionLegs) regionLegs->bind();
     if (!centres) return;
     centres->position.bindUnit(gpu::kCentrePosition);
     centres->normal.bindUnit(gpu::kCentreNormal);
@@ -151,6 +154,10 @@ struct GlBackend::Passes {
   std::unique_ptr<IndirectLight> indirectLight;  ///< null without VPLs
   std::unique_ptr<MediumDirect> mediumDirect;    ///< null without a scattering medium
   std::unique_ptr<MediumVpls> mediumVpls;  ///< null without VPLs and a scattering medium
+  /// Per-region media (`media:`) only: the regions on the device and the
+  /// samples' legs through them; on the host for the VPLs' light legs.
+  std::unique_ptr<RegionLegs> regionLegs;
+  capture::MediumRegions regions;
   gl::Buffer directVolume, indirectVolume;
   gl::Buffer outsideAxis;                     ///< per pixel: light before the axis, light after it
   std::unique_ptr<PixelFootprint> footprint;  ///< null without render.pixel_footprint
@@ -199,12 +206,13 @@ ir::CentreSurfaces GlBackend::prepareSurfaces(const RenderJob& job) {
   passes_.reset();  // the previous render's GL objects go first
   TOFSIM_CHECK_MSG(sceneObjects_ != nullptr && &sceneObjects_->scene == job.scene,
                    "setScene with the job's scene must come first");
-  // Per-region media (`media:`) are built on the CPU backend (the config
-  // refuses them here first; this keeps a library caller from a silent
-  // vacuum).
-  if (!job.settings.media.empty()) {
-    throw InputError("per-region media (`media`) are not built on the GL backend yet: use "
-                     "render.backend: cpu");
+  // Scattering regions are built on the CPU backend only (the config refuses
+  // them here first; this keeps a library caller from a silently absorbing
+  // region).
+  if (std::any_of(job.settings.media.begin(), job.settings.media.end(),
+                  [](const RegionMedium& m) { return m.medium.scatters(); })) {
+    throw InputError("scattering regions (`media` with sigma_s > 0) are not built on the GL "
+                     "backend: use render.backend: cpu");
   }
   const int32_t n = job.settings.pixel_samples;
   const int32_t width = imageWidth(job.imager), height = imageHeight(job.imager);
@@ -249,6 +257,14 @@ ir::CentreSurfaces GlBackend::prepareSurfaces(const RenderJob& job) {
   // An absorbing medium scatters nothing into the rays (it only attenuates).
   if (job.settings.medium.scatters()) {
     p.mediumDirect = std::make_unique<MediumDirect>(job, p.foldModel);
+  }
+  // Per-region media: every sample's camera and light legs through the
+  // regions, once, for the gathers.
+  if (!job.settings.media.empty()) {
+    p.regions = MediumRegions(job.settings.media, *job.scene, job.settings.time.index_of_refraction);
+    p.regionLegs = std::make_unique<RegionLegs>(job, p.foldModel);
+    p.bindSurfaces();
+    p.regionLegs->compute();
   }
   return surfaces;
 }
@@ -322,6 +338,9 @@ std::vector<ir::Vpl> GlBackend::generateVpls(const RenderJob& job) {
       job.settings.time.index_of_refraction, p.bounds.lo, p.bounds.hi,
       ir::vertexModelOf(job.settings.materials), job.settings.medium);
   ir::setFirstBounceClasses(vpls, responseClasses_);
+  // Per-region media: each VPL's light -> VPL leg (the CPU backend's call).
+  ir::attenuateLightLegs(vpls, p.regions, job.light.position_world,
+                         job.settings.time.index_of_refraction);
   return vpls;
 }
 
@@ -335,6 +354,7 @@ void GlBackend::setVpls(const std::vector<ir::Vpl>& vpls) {
   p.indirectLight = std::make_unique<IndirectLight>(
       sceneObjects_->soup(), vpls, p.job, foldModel, p.responseClasses.defines());
   configureIndirectGather(p.indirectLight->gatherProgram(), p.job);
+  if (p.regionLegs) p.regionLegs->setUniforms(p.indirectLight->gatherProgram());
   p.mediumVpls.reset();
   if (p.job.settings.vplsLightCameraRays()) {
     p.mediumVpls = std::make_unique<MediumVpls>(p.job, vpls, *p.mediumDirect);
@@ -355,6 +375,7 @@ std::size_t GlBackend::fixedBytes() const {
                       p.vertexTable.size() + p.sampleCameraEnds.size() +
                       p.responseClasses.bytes();
   if (p.mediumDirect) bytes += p.mediumDirect->bytes();
+  if (p.regionLegs) bytes += p.regionLegs->bytes();
   if (p.indirectLight) bytes += p.indirectLight->fixedBytes();
   return bytes;
 }

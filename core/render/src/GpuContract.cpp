@@ -2,6 +2,7 @@
 
 #include "tofsim/ir/IrBackend.h"
 #include "tofsim/ir/MediumVpl.h"
+#include "tofsim/render/GlRegionLimits.h"
 
 namespace tofsim::render::gpu {
 
@@ -32,6 +33,10 @@ std::vector<std::pair<std::string, std::string>> shaderDefines() {
       {"TOFSIM_SSBO_MEDIUM_RAYS", n(kMediumRays)},
       {"TOFSIM_SSBO_MEDIUM_VPL_VOLUME", n(kMediumVplVolume)},
       {"TOFSIM_SSBO_MEDIUM_VPL_OUTSIDE", n(kMediumVplOutside)},
+      {"TOFSIM_SSBO_REGIONS", n(kRegions)},
+      {"TOFSIM_SSBO_REGION_CORNERS", n(kRegionCorners)},
+      {"TOFSIM_SSBO_REGION_LEGS", n(kRegionLegs)},
+      {"TOFSIM_REGION_CROSSINGS", n(kGlRegionCrossings)},
       {"TOFSIM_UNIT_G_POSITION", n(kGPosition)},
       {"TOFSIM_UNIT_G_NORMAL", n(kGNormal)},
       {"TOFSIM_UNIT_G_ALBEDO", n(kGAlbedo)},
@@ -83,6 +88,8 @@ std::vector<std::pair<std::string, std::string>> gatherDefines(const capture::Re
   // A medium filling the scene (medium_uniforms.glsl); without one the
   // gathers of before.
   if (s.medium.present()) defines.emplace_back("MEDIUM", "1");
+  // Per-region media (medium_regions.glsl); without them the gathers of before.
+  if (!s.media.empty()) defines.emplace_back("MEDIUM_REGIONS", "1");
   return defines;
 }
 

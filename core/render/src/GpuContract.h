@@ -50,6 +50,9 @@ enum StorageBinding : uint32_t {
   kMediumRays,        ///< vec4 per sample: its ray direction (medium_direct.comp, issue 42)
   kMediumVplVolume,   ///< segment's VPL light scattered into the camera rays (medium_vpls.comp)
   kMediumVplOutside,  ///< its two floats per pixel off the axis
+  kRegions,           ///< per-region media: struct Region[] (medium_regions.glsl, issue 42)
+  kRegionCorners,     ///< their triangles' corners, vec4, 3 per triangle
+  kRegionLegs,        ///< two vec4 per sample: its camera and light legs' passage (region_legs.comp)
 };
 
 /// Texture units (TOFSIM_UNIT_...).
@@ -88,6 +91,8 @@ std::vector<std::pair<std::string, std::string>> shaderDefines();
 /// defines, so that render.pixel_footprint: false compiles the point-sampling
 /// shader of before, render.materials: lambertian the Lambertian one, and a
 /// render without adaptive samples the shader that reads no per-pixel mask.
+/// MEDIUM_REGIONS (per-region media, `media:`: the legs through their
+/// regions, medium_regions.glsl).
 /// SCATTER_MODEL (the model every vertex has, render.materials') unless
 /// !foldModel: vertices of other models (given medium samples) are read.
 std::vector<std::pair<std::string, std::string>> gatherDefines(const capture::RenderJob& job,

@@ -4,6 +4,8 @@
 #include <cstring>
 
 #include "GpuContract.h"
+#include "LoopGuard.h"
+#include "tofsim/render/GlRegionLimits.h"
 #include "tofsim/gl/Check.h"
 #include "tofsim/gl/Compute.h"
 #include "tofsim/ir/MediumVpl.h"
@@ -52,7 +54,15 @@ gl::Buffer vplBufferOf(const std::vector<ir::Vpl>& vpls, bool whole) {
 IndirectLight::IndirectLight(const TriangleSoup& soup, const std::vector<ir::Vpl>& vpls,
                              const capture::RenderJob& job, bool foldModel,
                              const std::vector<std::pair<std::string, std::string>>& responseDefines)
-    : IndirectLight(soup, vpls, job.settings, gatherDefines(job, foldModel, responseDefines)) {}
+    : IndirectLight(soup, vpls, job.settings, gatherDefines(job, foldModel, responseDefines)) {
+  // Per-region media: each VPL -> sample leg walks the regions' triangles
+  // (medium_regions.glsl), whose regions the scene holds.
+  if (!job.settings.media.empty()) {
+    std::size_t triangles = 0;
+    for (const scene::RegionMesh& r : job.scene->regions) triangles += r.triangles_world.size() / 3;
+    regionTripsPerLeg_ = glRegionTripsPerLeg(job.scene->regions.size(), triangles);
+  }
+}
 
 IndirectLight::IndirectLight(const TriangleSoup& soup, const std::vector<ir::Vpl>& vpls,
                              const capture::RenderSettings& settings,
@@ -116,9 +126,10 @@ std::size_t IndirectLight::vplsPerDispatch() const {
   // with one sample: no loop) and a shadow ray's; the footprint's deposits
   // are straight-line code (footprint_deposit.glsl) and cost none. With
   // adaptive samples a masked-out pixel loops over one sample, not N^2: the
-  // N^2 pixels stay the worst case this counts.
+  // N^2 pixels stay the worst case this counts. Per-region media add a leg's
+  // passage through the regions per sample.
   const std::size_t shadowRay = shadowRays_ ? tripsPerShadowRay_ : 0;
-  const std::size_t perSample = (samplesPerPixel_ > 1 ? 1 : 0) + shadowRay;
+  const std::size_t perSample = (samplesPerPixel_ > 1 ? 1 : 0) + shadowRay + regionTripsPerLeg_;
   const std::size_t tripsPerVpl = 1 + samplesPerPixel_ * perSample;
   return std::max<std::size_t>(1, kTripsPerDispatch / tripsPerVpl);
 }
@@ -191,12 +202,7 @@ void IndirectLight::gather(std::size_t first, std::size_t count, std::size_t fir
 void IndirectLight::checkLoopGuard() const {
   uint32_t loopLimitHit = 0;
   loopGuard_.download(0, sizeof loopLimitHit, &loopLimitHit);
-  if (loopLimitHit != 0) {
-    throw InputError(
-        "a gather invocation came near the GL implementation's loop-trip limit "
-        "(llvmpipe: 65535), so light could be lost; use visibility: ism or a "
-        "smaller scene for exact visibility");
-  }
+  throwIfGuardRaised(loopLimitHit, "a gather invocation");
 }
 
 }  // namespace tofsim::render

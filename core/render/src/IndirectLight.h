@@ -68,6 +68,8 @@ class IndirectLight {
   std::size_t vplCount_ = 0;
   std::size_t triangleCount_ = 0;
   std::size_t tripsPerShadowRay_ = 0;
+  /// Per-region media: loop trips of a VPL -> sample leg's passage (0 without).
+  std::size_t regionTripsPerLeg_ = 0;
   /// Whether a gather may trace shadow rays: exact visibility, or medium
   /// VPLs (exact whatever the visibility, indirect_gather.comp's visible).
   bool shadowRays_ = false;
