@@ -8,7 +8,7 @@ grey under them, so what lies above the grey is the multipath.
 
 Each beam's waveform is drawn against range (depth_start_m + (t + 1/2)
 depth_bin_width_m) in decades below the highest bin of all the beams drawn;
-the y ticks are decades (1, 1e-1, ...), the x ticks every 5 m.
+the y ticks are decades (1, 1e-1, ...), the x ticks every 5, 1 or 0.5 m.
 
 Standard library only (struct, zlib, json).
 Usage: python3 scripts/plot_lidar_multipath.py OUT/waveforms.npy picture.png
@@ -36,6 +36,7 @@ GLYPHS = {
     "8": ["111", "101", "111", "101", "111"], "9": ["111", "101", "111", "001", "111"],
     "e": ["000", "111", "111", "100", "111"], "-": ["000", "000", "111", "000", "000"],
     "m": ["000", "110", "111", "101", "101"], " ": ["000", "000", "000", "000", "000"],
+    ".": ["000", "000", "000", "000", "010"],
 }
 
 
@@ -155,11 +156,13 @@ def main():
         y = py(10.0 ** d)
         c.line(left, y, right, y, (225, 225, 225))
         c.text(8, y - 5, "1" if d == 0 else "1e%d" % d)
-    r = math.ceil(lo_r / 5.0) * 5.0
-    while r <= hi_r:
+    step = 5.0 if hi_r - lo_r > 10.0 else 1.0 if hi_r - lo_r > 3.0 else 0.5
+    k = math.ceil(lo_r / step)
+    while k * step <= hi_r:
+        r = k * step
         c.line(px(r), top, px(r), bottom, (225, 225, 225))
-        c.text(px(r) - 8, bottom + 8, "%dm" % r)
-        r += 5.0
+        c.text(px(r) - 8, bottom + 8, "%gm" % r)
+        k += 1
     c.line(left, bottom, right, bottom, (0, 0, 0))
     c.line(left, top, left, bottom, (0, 0, 0))
 
