@@ -12,8 +12,8 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
+#include "RollingPlate.h"
 #include "pipeline/CliRun.h"
-#include "scene/AnimatedGltfFiles.h"
 #include "support/TempDir.h"
 #include "tofsim/config/LidarConfig.h"
 #include "tofsim/config/RunConfig.h"
@@ -117,11 +117,7 @@ TEST_F(LidarRunTest, ARunWritesItsFilesAndASpadCountsItsBeams) {
 // LidarRollingScanTest, here through the config, the scene's animation and
 // the files).
 TEST_F(LidarRunTest, ARollingSequenceSeesEachColumnAtItsOwnTime) {
-  test::AnimatedGltf plate;
-  plate.addChannel(0, "translation", {0, 1}, {-20, -20, 5, -20, -20, 35}, "LINEAR");
-  const fs::path scene = test::writeText(
-      dir_ / "plate.gltf",
-      plate.json(R"([{"mesh": 0, "scale": [60, 60, 1], "translation": [-20, -20, 5]}])", "[0]"));
+  const fs::path scene = test::writeMovingPlate(dir_);
   const config::RunConfig c = config::loadRunConfig(writeConfig(
       "scene: " + scene.string() +
       "\n"
@@ -175,11 +171,7 @@ TEST_F(LidarRunTest, ARollingSequenceSeesEachColumnAtItsOwnTime) {
 // frame_rate, line by line from the top): every cell's range the plate's at
 // its own firing time.
 TEST_F(LidarRunTest, ARollingSequenceInFogWithMultipathAndARollingRaster) {
-  test::AnimatedGltf plate;
-  plate.addChannel(0, "translation", {0, 1}, {-20, -20, 5, -20, -20, 35}, "LINEAR");
-  const fs::path scene = test::writeText(
-      dir_ / "plate.gltf",
-      plate.json(R"([{"mesh": 0, "scale": [60, 60, 1], "translation": [-20, -20, 5]}])", "[0]"));
+  const fs::path scene = test::writeMovingPlate(dir_);
   const std::string head = "scene: " + scene.string() +
                            "\n"
                            "lidar:\n"

@@ -25,7 +25,8 @@ constexpr double kRollRate_Hz = 10.0;
 /// The plate's z at scene time t_s.
 inline double plateZ_m(double t_s) { return kPlateZ0_m + kPlateSpeed_m_per_s * t_s; }
 
-inline scene::AnimatedScene movingPlate(const std::filesystem::path& dir, bool wall = false) {
+/// The scene's glTF file in `dir` (plate.gltf).
+inline std::filesystem::path writeMovingPlate(const std::filesystem::path& dir, bool wall = false) {
   AnimatedGltf f;
   f.addChannel(0, "translation", {0, 1}, {-20, -20, 5, -20, -20, 35}, "LINEAR");
   // The wall: the triangle turned -90 degrees about y into the plane x = 0
@@ -35,8 +36,11 @@ inline scene::AnimatedScene movingPlate(const std::filesystem::path& dir, bool w
                  {"mesh": 0, "scale": [60, 60, 1], "rotation": [0, -0.70710678, 0, 0.70710678],
                   "translation": [6, -20, -20]}])"
            : R"([{"mesh": 0, "scale": [60, 60, 1], "translation": [-20, -20, 5]}])";
-  const auto path = writeText(dir / "plate.gltf", f.json(nodes, wall ? "[0, 1]" : "[0]"));
-  return scene::AnimatedScene::load(path);
+  return writeText(dir / "plate.gltf", f.json(nodes, wall ? "[0, 1]" : "[0]"));
+}
+
+inline scene::AnimatedScene movingPlate(const std::filesystem::path& dir, bool wall = false) {
+  return scene::AnimatedScene::load(writeMovingPlate(dir, wall));
 }
 
 /// The scene at any time, as the pipeline traces it (Lambertian, in `medium`).
