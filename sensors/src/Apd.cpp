@@ -103,7 +103,9 @@ class ApdStream final : public SensorStream {
       float* w = waveforms_.data() + px * static_cast<std::size_t>(rx_.axis.bins);
       for (std::size_t t = 0; t < samples.size(); ++t) w[t] = static_cast<float>(samples[t]);
     }
-    const std::vector<detail::ApdEcho> echoes = detail::apdEchoes(samples, rx_, p_.max_returns);
+    apdThresholds(p_, rx_, samples, scratch.threshold);
+    const std::vector<detail::ApdEcho> echoes =
+        detail::apdEchoes(samples, scratch.threshold, rx_, p_.max_returns);
     const std::size_t base = px * static_cast<std::size_t>(p_.max_returns);
     for (std::size_t e = 0; e < echoes.size(); ++e) {
       range_[base + e] = static_cast<float>(echoes[e].range_m);

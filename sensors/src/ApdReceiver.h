@@ -12,7 +12,7 @@ namespace tofsim::sensors::detail {
 
 /// Scratch a pixel reuses (one per thread's block).
 struct ApdScratch {
-  std::vector<double> pulsed, current;
+  std::vector<double> pulsed, current, threshold;
 };
 
 /// `signal_e` (rx.axis.bins expected primary photo-electrons per sample,
@@ -30,13 +30,14 @@ struct ApdEcho {
   double amplitude_A = 0.0;
 };
 
-/// The echoes of `samples_A`: each run of samples above rx.threshold_A is
-/// one: its time the current-weighted mean of the run's sample times (as
+/// The echoes of `samples_A`: each run of samples above their thresholds
+/// (`thresholds_A`, apdThresholds) is one: its time the current-weighted mean of the run's sample times (as
 /// core/lidar's Echoes: unbiased for a symmetric pulse, and it averages the
 /// noise of every sample), its range that time's depth (TimeAxis::depthOf_m),
 /// its amplitude the run's highest sample; the first `maxReturns` in time
 /// order.
-std::vector<ApdEcho> apdEchoes(const std::vector<double>& samples_A, const ApdReceiver& rx,
+std::vector<ApdEcho> apdEchoes(const std::vector<double>& samples_A,
+                               const std::vector<double>& thresholds_A, const ApdReceiver& rx,
                                int32_t maxReturns);
 
 }  // namespace tofsim::sensors::detail

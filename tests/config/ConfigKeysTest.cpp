@@ -227,6 +227,11 @@ TEST_F(ConfigKeysWriterTest, EffectiveConfigWritesEveryDeclaredKey) {
                                      "position: [0, 0, 1], orientation: {look_at: [1, 0, 1]}}\n"
                                      "time: {}\n";
   leafPaths(YAML::Load(effectiveConfigYaml(loadRunConfig(dir_ / "mz.yaml"))), "", written);
+  // A raster (its frame rate).
+  std::ofstream(dir_ / "ra.yaml") << "scene: scene.gltf\nlidar: {scan: raster, position: [0, 0, 1], "
+                                     "orientation: {look_at: [1, 0, 1]}, grid: {rows: 2, columns: 2}, "
+                                     "field_of_view: {horizontal: 10, vertical: 10}}\ntime: {}\n";
+  leafPaths(YAML::Load(effectiveConfigYaml(loadRunConfig(dir_ / "ra.yaml"))), "", written);
   written.erase("");
   std::set<std::string> declared;
   for (const ConfigKey& k : runConfigKeys()) declared.insert(k.path);

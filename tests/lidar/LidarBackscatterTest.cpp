@@ -13,19 +13,22 @@
 #include "tofsim/ir/MaterialVertex.h"
 #include "tofsim/lidar/BeamBackscatter.h"
 #include "tofsim/lidar/LidarReturns.h"
+#include "tofsim/lidar/ScanGrid.h"
+#include "tofsim/lidar/ZoneWaveforms.h"
 #include "tofsim/physics/MediumPhysics.h"
 
 namespace tofsim::lidar {
 namespace {
 
 struct Wall {
-  explicit Wall(float distance_m) : scene(make(distance_m)), rays(scene, 1) {
+  explicit Wall(float distance_m, float size_m = 40.0f)
+      : scene(make(distance_m, size_m)), rays(scene, 1) {
     traced.rays = &rays;
     traced.materials = ir::materialVertices(scene, physics::VERTEX_LAMBERTIAN);
   }
-  static scene::Scene make(float d) {
+  static scene::Scene make(float d, float size) {
     scene::Scene s;
-    test::addQuad(s, glm::vec3(d, 0.0f, 0.0f), glm::vec3(-1, 0, 0), 40.0f, glm::vec3(0.5f));
+    test::addQuad(s, glm::vec3(d, 0.0f, 0.0f), glm::vec3(-1, 0, 0), size, glm::vec3(0.5f));
     return s;
   }
   scene::Scene scene;
@@ -138,6 +141,63 @@ TEST(LidarBackscatterTest, TheSameBytesOnAnyThreadCount) {
   EXPECT_EQ(one.volume.values(), two.volume.values());
   EXPECT_EQ(a.bins, b.bins);
   EXPECT_EQ(one.lost.after, two.lost.after);
+}
+
+// A zone scan's flood (ScanGrid.h, BeamBackscatter.h): the flood's
+// intensity power / Omega_fov in every direction, so a zone's receiver ray of
+// solid angle Omega_ray collects power (Omega_ray / Omega_fov) sigma_s p(pi)
+// exp(-2 sigma_t s) / s^2 ds: each bin of a zone is the lidar equation
+// (Simpson) times the zone's share of the field, and that share is the
+// zone's exact solid angle (a rectangle on the image plane) over the
+// field's, within the sub-cells' midpoint rule.
+TEST(LidarBackscatterTest, AZoneScansFloodBackscatterIsTheLidarEquationOverEachZone) {
+  Wall wall(100.0f, 400.0f);  // past the axis: every zone ray in the fog throughout
+  capture::Medium& m = wall.traced.medium;
+  m.sigma_s_per_m = glm::vec3(0.05f);
+  m.sigma_a_per_m = glm::vec3(0.01f);  // isotropic: p(pi) = 1 / (4 pi)
+  LidarSpec spec;
+  spec.scan = ScanPattern::Zones;
+  spec.grid = {3, 4, 40.0, 30.0, 4};
+  spec.power_W = 2.0;
+  const TimeAxis axis = axisOf(100e-12, 1000);  // 1.5 cm a bin, to 15 m
+  LidarWaveforms w = renderZoneWaveforms(spec, wall.traced, axis, 1);
+  const std::vector<float> direct = w.volume.values();
+  const BeamSurfaces surfaces = addBackscatter(spec, wall.traced, axis, 2, w);
+  EXPECT_EQ(surfaces.raysPerBeam, 16);
+  // The solid angle of [u0, u1] x [v0, v1] on the image plane at unit distance.
+  const auto corner = [](double u, double v) { return std::atan(u * v / std::sqrt(1 + u * u + v * v)); };
+  const auto rectangle = [&](double u0, double u1, double v0, double v1) {
+    return corner(u1, v1) - corner(u0, v1) - corner(u1, v0) + corner(u0, v0);
+  };
+  const double tu = std::tan(glm::radians(20.0)), tv = std::tan(glm::radians(15.0));
+  const double field = rectangle(-tu, tu, -tv, tv);
+  const double p = 1.0 / (4.0 * M_PI), sigmaS = 0.05, sigmaT = 0.06;
+  const double binRange = axis.bin_width_m() / 2.0, overlap = spec.backscatter.overlap_m;
+  double worst = 0.0, shares = 0.0;
+  for (int32_t row = 0; row < 3; ++row) {
+    for (int32_t column = 0; column < 4; ++column) {
+      double share = 0.0;
+      for (const BeamRay& r : zoneRays(spec, row, column, fieldSolidAngle_sr(spec))) share += r.share;
+      shares += share;
+      const double exact = rectangle(tu * (column / 2.0 - 1.0), tu * ((column + 1) / 2.0 - 1.0),
+                                     tv * (2.0 * row / 3.0 - 1.0), tv * (2.0 * (row + 1) / 3.0 - 1.0));
+      EXPECT_NEAR(share, exact / field, 2e-3 * share) << "zone " << row << ", " << column;
+      for (int32_t k = 0; k < axis.bins; ++k) {
+        const double a = std::max(k * binRange, overlap), b = (k + 1) * binRange;
+        const float got = w.volume.at(row, column, k, 0) - direct[w.volume.index(row, column, k, 0)];
+        if (b <= a) {
+          EXPECT_EQ(got, 0.0f) << "bin " << k;
+          continue;
+        }
+        const double expected =
+            share * spec.power_W * sigmaS * p *
+            test::simpson([&](double s) { return std::exp(-2.0 * sigmaT * s) / (s * s); }, a, b, 64);
+        worst = std::max(worst, std::fabs(got / expected - 1.0));
+      }
+    }
+  }
+  EXPECT_NEAR(shares, 1.0, 1e-6);  // the flood's whole power over the zones
+  EXPECT_LT(worst, 2e-6);
 }
 
 }  // namespace

@@ -106,7 +106,8 @@ TEST_F(LidarPresetTest, ExplicitKeysWin) {
 TEST_F(LidarPresetTest, GridScansAndPresetsRoundTrip) {
   for (const std::string& keys :
        {std::string("  scan: raster\n  grid: {rows: 3, columns: 5}\n  field_of_view: "
-                    "{horizontal: 30, vertical: 10}\n  beam_rays: 4\n  plot_beams: [[1, 4]]\n"),
+                    "{horizontal: 30, vertical: 10}\n  beam_rays: 4\n  plot_beams: [[1, 4]]\n"
+                    "  frame_rate: 25 Hz\n"),
         std::string("  scan: zones\n  grid: {rows: 2, columns: 6}\n  field_of_view: "
                     "{horizontal: 60, vertical: 20}\n  zone_rays: 5\n"),
         std::string("  preset: multizone-8x8\n"), std::string("  preset: spinning-64\n")}) {
@@ -118,7 +119,12 @@ TEST_F(LidarPresetTest, GridScansAndPresetsRoundTrip) {
     EXPECT_EQ(config::effectiveConfigYaml(d), written) << keys;
     EXPECT_EQ(d.lidar->spec.grid.zone_rays, c.lidar->spec.grid.zone_rays);
     EXPECT_EQ(d.lidar->spec.forward_world, c.lidar->spec.forward_world);
+    EXPECT_EQ(d.lidar->scanRate_Hz(), c.lidar->scanRate_Hz());
   }
+  EXPECT_EQ(load("  scan: raster\n  grid: {rows: 3, columns: 5}\n  field_of_view: {horizontal: 30, "
+                 "vertical: 10}\n  frame_rate: 25 Hz\n")
+                .lidar->scanRate_Hz(),
+            25.0);
 }
 
 TEST_F(LidarPresetTest, PresetsCommandListsEachValueAndItsSource) {
@@ -168,6 +174,10 @@ TEST_F(LidarPresetTest, BadInputIsALocatedErrorAndWritesNothing) {
       {"an unknown scan", "  scan: flash\n", "c.yaml:5:", "spinning, raster or zones"},
       {"zones with multipath", zones + "  multipath: {bounces: 1}\n", "c.yaml:8:",
        "flood emitter has no spot"},
+      {"a zone scan's sequence", zones + "sequence: {times: [0 s]}\n", "c.yaml:8:",
+       "no firing order"},
+      {"zones with a frame rate", zones + "  frame_rate: 10 Hz\n", "c.yaml:8:",
+       "lights every zone at once"},
   };
   for (const Bad& bad : cases) {
     const fs::path config = write(bad.keys, "time: {bins: 64}\n");

@@ -13,72 +13,35 @@
 #include <cstring>
 #include <optional>
 
-#include "scene/AnimatedGltfFiles.h"
+#include "RollingPlate.h"
 #include "support/TempDir.h"
-#include "tofsim/ir/IrBackend.h"
-#include "tofsim/ir/MaterialVertex.h"
+#include "tofsim/lidar/BeamPattern.h"
 #include "tofsim/lidar/LidarReturns.h"
-#include "tofsim/lidar/RollingScan.h"
 #include "tofsim/rays/RayScene.h"
-#include "tofsim/scene/AnimatedScene.h"
 
 namespace tofsim::lidar {
 namespace {
 
-constexpr double kSpeed_m_per_s = 30.0;  // the plate: z = 5 m + 30 m/s t
-constexpr double kZ0_m = 5.0;
-constexpr double kStart_s = 0.2;  // the turn starts with the plate at 11 m
-constexpr double kRate_Hz = 10.0;
-
-// The plate at any time, as the pipeline traces it.
-struct Plate : AnimatedWaveformScene {
-  explicit Plate(const scene::AnimatedScene& animated)
-      : AnimatedWaveformScene(
-            animated, animated.restScene(),
-            ir::materialVertices(animated.restScene(), physics::VERTEX_LAMBERTIAN), {}, 1) {}
-};
+using test::kRollRate_Hz;
+using test::kRollStart_s;
+using test::PlateAtTime;
 
 class LidarRollingScanTest : public test::TempDirTest {
  protected:
-  // A triangle 60 m on its sides in the plane z(t), normal to the beams
-  // (the lidar at the origin looks along +z), LINEAR from 5 m at t = 0 to
-  // 35 m at t = 1 s.
-  scene::AnimatedScene movingPlate() {
-    test::AnimatedGltf f;
-    f.addChannel(0, "translation", {0, 1}, {-20, -20, 5, -20, -20, 35}, "LINEAR");
-    const auto path = test::writeText(
-        dir_ / "plate.gltf",
-        f.json(R"([{"mesh": 0, "scale": [60, 60, 1], "translation": [-20, -20, 5]}])", "[0]"));
-    return scene::AnimatedScene::load(path);
-  }
-  // One channel at elevation 0, azimuths -20 .. 20 degrees by 1 (up +y,
-  // azimuth 0 along +z, positive azimuths towards +x).
-  static LidarSpec lidar() {
-    LidarSpec s;
-    s.up_world = {0.0f, 1.0f, 0.0f};
-    s.forward_world = {0.0f, 0.0f, 1.0f};
-    s.elevations_deg = {0.0};
-    s.azimuth_start_deg = -20.0;
-    s.azimuth_end_deg = 20.0;
-    s.azimuth_step_deg = 1.0;
-    s.returns.mode = ReturnMode::First;
-    s.returns.max = 1;
-    return s;
-  }
-  static TimeAxis axis() {  // 1.5 mm of range per bin, to 15 m
-    TimeAxis a;
-    a.bin_width_s = 10e-12;
-    a.bins = 10000;
-    return a;
-  }
+  scene::AnimatedScene movingPlate() { return test::movingPlate(dir_); }
+  static LidarSpec lidar() { return test::rollingLidar(); }
+  static TimeAxis axis() { return test::rollingAxis(); }
   // The largest |range - the plate's range at the beam's firing time|.
   static double worstError(const LidarSpec& spec, const LidarReturns& r) {
     double worst = 0.0;
-    for (int32_t a = 0; a < spec.azimuths(); ++a) {
-      const double t = kStart_s + firingOffset_s(spec, a, kRate_Hz);
-      const double want = (kZ0_m + kSpeed_m_per_s * t) / std::cos(glm::radians(spec.azimuthOf_deg(a)));
-      EXPECT_GT(r.range_m.at(0, a, 0), 0.0f) << "azimuth " << a;
-      worst = std::max(worst, std::abs(double(r.range_m.at(0, a, 0)) - want));
+    for (int32_t ring = 0; ring < spec.channels(); ++ring) {
+      for (int32_t a = 0; a < spec.azimuths(); ++a) {
+        const double t = kRollStart_s + beamFiringOffset_s(spec, ring, a, kRollRate_Hz);
+        const glm::vec3 d = beamDirection(spec, ring, a);
+        const double want = test::plateZ_m(t) / d.z;
+        EXPECT_GT(r.range_m.at(ring, a, 0), 0.0f) << "beam " << ring << ", " << a;
+        worst = std::max(worst, std::abs(double(r.range_m.at(ring, a, 0)) - want));
+      }
     }
     return worst;
   }
@@ -86,41 +49,84 @@ class LidarRollingScanTest : public test::TempDirTest {
 
 TEST_F(LidarRollingScanTest, EachBeamsRangeIsThePlatesAtItsOwnFiringTime) {
   const scene::AnimatedScene animated = movingPlate();
-  Plate plate(animated);
+  PlateAtTime plate(animated);
   const LidarSpec spec = lidar();
   const LidarWaveforms w = renderRollingWaveforms(
-      spec, [&](double t) -> const WaveformScene& { return plate.at(t); }, axis(), kStart_s,
-      kRate_Hz, 2, false);
-  EXPECT_LT(worstError(spec, lidarReturns(spec, w, kRate_Hz)), 0.01);
+      spec, [&](double t) -> const WaveformScene& { return plate.at(t); }, axis(), kRollStart_s,
+      kRollRate_Hz, 2, false);
+  EXPECT_LT(worstError(spec, lidarReturns(spec, w, kRollRate_Hz)), 0.01);
 
   // The effect off: every column sees the plate where it was at the start.
-  Plate still(animated);
+  PlateAtTime still(animated);
   const LidarWaveforms held = renderRollingWaveforms(
-      spec, [&](double) -> const WaveformScene& { return still.at(kStart_s); }, axis(), kStart_s,
-      kRate_Hz, 2, false);
-  EXPECT_GT(worstError(spec, lidarReturns(spec, held, kRate_Hz)), 0.3);
+      spec, [&](double) -> const WaveformScene& { return still.at(kRollStart_s); }, axis(), kRollStart_s,
+      kRollRate_Hz, 2, false);
+  EXPECT_GT(worstError(spec, lidarReturns(spec, held, kRollRate_Hz)), 0.3);
 }
 
 TEST_F(LidarRollingScanTest, TheBytesDoNotDependOnTheThreadsAndAStillSceneIsTheStaticRender) {
   const scene::AnimatedScene animated = movingPlate();
   LidarSpec spec = lidar();
   spec.elevations_deg = {-3.0, 0.0, 3.0};
-  Plate plate(animated);
+  PlateAtTime plate(animated);
   const auto at = [&](double t) -> const WaveformScene& { return plate.at(t); };
-  const LidarWaveforms one = renderRollingWaveforms(spec, at, axis(), kStart_s, kRate_Hz, 1, true);
-  const LidarWaveforms two = renderRollingWaveforms(spec, at, axis(), kStart_s, kRate_Hz, 2, true);
+  const LidarWaveforms one = renderRollingWaveforms(spec, at, axis(), kRollStart_s, kRollRate_Hz, 1, true);
+  const LidarWaveforms two = renderRollingWaveforms(spec, at, axis(), kRollStart_s, kRollRate_Hz, 2, true);
   ASSERT_EQ(one.volume.size(), two.volume.size());
   EXPECT_EQ(0, std::memcmp(one.volume.data(), two.volume.data(), one.volume.size() * 4));
   EXPECT_EQ(one.lost.after, two.lost.after);
 
   // Held at one time, the rolling scan is renderDirectWaveforms' frame.
-  const WaveformScene& still = plate.at(kStart_s);
+  const WaveformScene& still = plate.at(kRollStart_s);
   const LidarWaveforms direct = renderDirectWaveforms(spec, still, axis(), 2, true);
-  Plate held(animated);
+  PlateAtTime held(animated);
   const LidarWaveforms rolling = renderRollingWaveforms(
-      spec, [&](double) -> const WaveformScene& { return held.at(kStart_s); }, axis(), kStart_s,
-      kRate_Hz, 2, true);
+      spec, [&](double) -> const WaveformScene& { return held.at(kRollStart_s); }, axis(), kRollStart_s,
+      kRollRate_Hz, 2, true);
   EXPECT_EQ(0, std::memcmp(direct.volume.data(), rolling.volume.data(), direct.volume.size() * 4));
+}
+
+// A raster (an assumed MEMS timing, RollingScan.h): its cells fire line by
+// line from the top row, each left to right, evenly over the frame; each
+// cell's range is the plate's at its own firing time, and its points carry
+// that time.
+TEST_F(LidarRollingScanTest, ARastersCellsFireLineByLineEachAtItsOwnTime) {
+  LidarSpec spec = lidar();
+  spec.scan = ScanPattern::Raster;
+  spec.grid.rows = 4;
+  spec.grid.columns = 6;
+  spec.grid.fov_horizontal_deg = 30.0;
+  spec.grid.fov_vertical_deg = 20.0;
+  const double frame_s = 1.0 / kRollRate_Hz, cell_s = frame_s / 24.0;
+  EXPECT_DOUBLE_EQ(beamFiringOffset_s(spec, 3, 0, kRollRate_Hz), 0.0);  // top left first
+  EXPECT_DOUBLE_EQ(beamFiringOffset_s(spec, 3, 1, kRollRate_Hz), cell_s);
+  EXPECT_DOUBLE_EQ(beamFiringOffset_s(spec, 2, 0, kRollRate_Hz), 6.0 * cell_s);
+  EXPECT_DOUBLE_EQ(beamFiringOffset_s(spec, 0, 5, kRollRate_Hz), 23.0 * cell_s);
+  const std::vector<FiringGroup> groups = firingGroups(spec, kRollRate_Hz);
+  ASSERT_EQ(groups.size(), 24u);
+  for (std::size_t g = 0; g < groups.size(); ++g) {
+    ASSERT_EQ(groups[g].beams.size(), 1u);
+    EXPECT_DOUBLE_EQ(groups[g].offset_s, g * cell_s);
+  }
+
+  const scene::AnimatedScene animated = movingPlate();
+  PlateAtTime plate(animated);
+  const LidarWaveforms w = renderRollingWaveforms(
+      spec, [&](double t) -> const WaveformScene& { return plate.at(t); }, axis(), kRollStart_s,
+      kRollRate_Hz, 2, false);
+  const LidarReturns r = lidarReturns(spec, w, kRollRate_Hz);
+  EXPECT_LT(worstError(spec, r), 0.01);
+  ASSERT_EQ(r.points.size(), 24u);
+  for (const LidarPoint& p : r.points) {  // ring-major: point i is cell (i / 6, i % 6)
+    const auto i = static_cast<int32_t>(&p - r.points.data());
+    EXPECT_FLOAT_EQ(p.time_offset_s, float(beamFiringOffset_s(spec, i / 6, i % 6, kRollRate_Hz)));
+  }
+  // The effect off: the frame at its start (the plate then 2.9 m nearer than its last cell's).
+  PlateAtTime still(animated);
+  const LidarWaveforms held = renderRollingWaveforms(
+      spec, [&](double) -> const WaveformScene& { return still.at(kRollStart_s); }, axis(),
+      kRollStart_s, kRollRate_Hz, 2, false);
+  EXPECT_GT(worstError(spec, lidarReturns(spec, held, kRollRate_Hz)), 1.0);
 }
 
 }  // namespace

@@ -12,8 +12,8 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
+#include "RollingPlate.h"
 #include "pipeline/CliRun.h"
-#include "scene/AnimatedGltfFiles.h"
 #include "support/TempDir.h"
 #include "tofsim/config/LidarConfig.h"
 #include "tofsim/config/RunConfig.h"
@@ -117,11 +117,7 @@ TEST_F(LidarRunTest, ARunWritesItsFilesAndASpadCountsItsBeams) {
 // LidarRollingScanTest, here through the config, the scene's animation and
 // the files).
 TEST_F(LidarRunTest, ARollingSequenceSeesEachColumnAtItsOwnTime) {
-  test::AnimatedGltf plate;
-  plate.addChannel(0, "translation", {0, 1}, {-20, -20, 5, -20, -20, 35}, "LINEAR");
-  const fs::path scene = test::writeText(
-      dir_ / "plate.gltf",
-      plate.json(R"([{"mesh": 0, "scale": [60, 60, 1], "translation": [-20, -20, 5]}])", "[0]"));
+  const fs::path scene = test::writeMovingPlate(dir_);
   const config::RunConfig c = config::loadRunConfig(writeConfig(
       "scene: " + scene.string() +
       "\n"
@@ -167,6 +163,84 @@ TEST_F(LidarRunTest, ARollingSequenceSeesEachColumnAtItsOwnTime) {
   EXPECT_EQ(again.sequence->times_s, c.sequence->times_s);
 }
 
+// Rolling scans with the rest of a lidar (RollingScan.h's addRollingLight)
+// through the pipeline: the same plate in fog (50 m visibility) with
+// one-bounce multipath, two frames; every column's last return is the
+// plate's at its firing time, the fog is in the waveforms before it and its
+// false returns are written apart. And a raster (rows x columns cells at
+// frame_rate, line by line from the top): every cell's range the plate's at
+// its own firing time.
+TEST_F(LidarRunTest, ARollingSequenceInFogWithMultipathAndARollingRaster) {
+  const fs::path scene = test::writeMovingPlate(dir_);
+  const std::string head = "scene: " + scene.string() +
+                           "\n"
+                           "lidar:\n"
+                           "  position: [0, 0, 0]\n"
+                           "  orientation: {look_at: [0, 0, 1], up: [0, 1, 0]}\n";
+  const std::string tail =
+      "  returns: {mode: last, max: 1, threshold: 1.0e-5}\n"
+      "time: {bin_width: 10 ps, bins: 10000}\n"
+      "sequence: {times: [0.1 s, 0.2 s]}\n";
+  const auto render = [&](const std::string& yaml, const std::string& name) {
+    pipeline::RunOptions options;
+    options.outputDirectory = dir_ / name;
+    options.quiet = true;
+    pipeline::runRender(config::loadRunConfig(writeConfig(yaml)), options);
+    return nlohmann::json::parse(std::ifstream(dir_ / name / "sequence.json"));
+  };
+  // The plate's range along beam direction d at time t (|d| = 1).
+  const auto plateRange = [](double t, const std::vector<float>& d) { return (5.0 + 30.0 * t) / d[2]; };
+
+  const nlohmann::json fog = render(head +
+                                        "  channels: [0]\n"
+                                        "  azimuth: {start: -20, end: 20, step: 4}\n"
+                                        "  rotation_rate: 10 Hz\n"
+                                        "  multipath: {bounces: 1, receiver_fov: 30 mrad}\n"
+                                        "  backscatter: {phase_at_pi: 0.052}\n" +
+                                        tail + "medium: {visibility: 50 m}\n",
+                                    "fog");
+  for (std::size_t k = 0; k < 2; ++k) {
+    const double start = fog["frames"][k]["time_s"].get<double>();
+    const fs::path frame = dir_ / "fog" / fog["frames"][k]["folder"].get<std::string>();
+    const io::NpyArray range = io::readNpy(frame / "range.npy");
+    const io::NpyArray directions = io::readNpy(frame / "beam_directions.npy");
+    const io::NpyArray waveforms = io::readNpy(frame / "waveforms.npy");
+    ASSERT_EQ(range.shape, (std::vector<std::size_t>{1, 10}));
+    for (std::size_t a = 0; a < 10; ++a) {
+      const double t = start + 4.0 * a / 360.0 / 10.0;
+      const std::vector<float> d(directions.data.begin() + 3 * a, directions.data.begin() + 3 * a + 3);
+      EXPECT_NEAR(range.data[a], plateRange(t, d), 0.01) << "frame " << k << ", azimuth " << a;
+      EXPECT_GT(waveforms.data[a * 10000 + 1000], 0.0f) << "the fog at 1.5 m";
+    }
+    EXPECT_TRUE(fs::exists(frame / "fog_points.ply"));
+    const nlohmann::json meta = nlohmann::json::parse(std::ifstream(frame / "lidar.json"));
+    EXPECT_TRUE(meta["stats"].contains("fog_returns"));
+  }
+
+  const nlohmann::json raster = render(head +
+                                           "  scan: raster\n"
+                                           "  grid: {rows: 2, columns: 3}\n"
+                                           "  field_of_view: {horizontal: 20, vertical: 10}\n"
+                                           "  frame_rate: 10 Hz\n" +
+                                           tail,
+                                       "raster");
+  EXPECT_EQ(raster["frame_rate_Hz"].get<double>(), 10.0);
+  for (std::size_t k = 0; k < 2; ++k) {
+    const double start = raster["frames"][k]["time_s"].get<double>();
+    const fs::path frame = dir_ / "raster" / raster["frames"][k]["folder"].get<std::string>();
+    const io::NpyArray range = io::readNpy(frame / "range.npy");
+    const io::NpyArray directions = io::readNpy(frame / "beam_directions.npy");
+    ASSERT_EQ(range.shape, (std::vector<std::size_t>{2, 3}));
+    for (std::size_t cell = 0; cell < 6; ++cell) {  // row-major, row 0 the lowest: fired last
+      const std::size_t row = cell / 3, column = cell % 3;
+      const double t = start + ((1 - row) * 3.0 + column) / (6.0 * 10.0);
+      const std::vector<float> d(directions.data.begin() + 3 * cell,
+                                 directions.data.begin() + 3 * cell + 3);
+      EXPECT_NEAR(range.data[cell], plateRange(t, d), 0.01) << "frame " << k << ", cell " << cell;
+    }
+  }
+}
+
 TEST_F(LidarRunTest, BadInputIsALocatedErrorAndWritesNothing) {
   const std::string base = smallLidar();
   const auto replace = [&](const std::string& from, const std::string& to) {
@@ -189,6 +263,8 @@ TEST_F(LidarRunTest, BadInputIsALocatedErrorAndWritesNothing) {
       {"a sequence's video", base + "sequence: {times: [0 s], video: false}\n", ":10:"},
       {"a sequence's exposure samples", base + "sequence: {times: [0 s], exposure_samples: 2}\n",
        ":10:"},
+      {"a spinning lidar's frame rate", replace("  beam_divergence", "  frame_rate: 10 Hz\n  beam_divergence"),
+       ":7:"},
   };
   expectLocatedFailures(cases);
 }

@@ -80,13 +80,17 @@ void parseLidarScan(const ConfigNode& n, lidar::LidarSpec& s) {
   };
   if (!s.gridScan()) {
     refuse({"grid", "field_of_view", "zone_rays"}, "they lay out a raster's or zones' grid");
+    refuse({"frame_rate"}, "a spinning lidar's timing is its `rotation_rate`");
     return;
   }
   refuse({"channels", "azimuth", "rotation_rate"},
-         "its beams are `grid` over `field_of_view`, all fired at once");
+         s.scan == lidar::ScanPattern::Zones
+             ? "its zones are `grid` over `field_of_view`, all lit at once by its flood"
+             : "its beams are `grid` over `field_of_view`, fired line by line at `frame_rate`");
   if (s.scan == lidar::ScanPattern::Zones) {
     refuse({"beam_divergence", "beam_profile", "beam_rays"},
            "a zone's receiver is its whole solid angle (`zone_rays` a side)");
+    refuse({"frame_rate"}, "its flood lights every zone at once (no firing order)");
   } else {
     refuse({"zone_rays"}, "a raster beam's receiver is its divergence cone (`beam_rays`)");
   }

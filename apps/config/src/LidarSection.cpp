@@ -295,6 +295,10 @@ void parseLidarView(const ConfigNode& root, RunConfig& config) {
   if (!(out->rotation_rate_Hz > 0.0 && std::isfinite(out->rotation_rate_Hz))) {
     n.failKey("rotation_rate", "must be > 0 Hz");
   }
+  out->frame_rate_Hz = n.getFrequency_Hz("frame_rate", out->frame_rate_Hz);
+  if (!(out->frame_rate_Hz > 0.0 && std::isfinite(out->frame_rate_Hz))) {
+    n.failKey("frame_rate", "must be > 0 Hz");
+  }
   parseReturns(n, out->spec.returns);
   parseBackscatter(n, out->spec.backscatter);
   parsePlotBeams(n, *out);
@@ -306,19 +310,17 @@ void parseLidarView(const ConfigNode& root, RunConfig& config) {
 
 namespace {
 
-// A lidar's `sequence` (rolling scans, beams43): frame k is the turn from
-// t_k, each column at its own time; a camera's video and exposure samples
-// do not apply.
-void checkLidarSequence(const ConfigNode& root) {
+// A lidar's `sequence` (rolling scans, core/lidar RollingScan.h): frame k
+// is the scan from t_k, each beam at its own firing time (a spinning
+// lidar's columns, a raster's cells; the multipath and the medium's
+// backscatter too); a camera's video and exposure samples do not apply.
+void checkLidarSequence(const ConfigNode& root, const LidarConfig& lidarConfig) {
   const auto seq = root.optionalChild("sequence");
   if (!seq) return;
-  const ConfigNode lidarNode = root.child("lidar");
-  const std::string scan = lidarNode.getString("scan", "spinning");
-  if (scan != "spinning" || lidarNode.has("multipath") || root.has("medium")) {
-    root.failKey("sequence", "a lidar's sequence is a rolling scan of a spinning lidar without "
-                             "multipath or a medium (their light is not in the rolling "
-                             "waveforms yet): remove `sequence`, `lidar.multipath`, `medium` "
-                             "or the grid scan");
+  if (lidarConfig.spec.scan == lidar::ScanPattern::Zones) {
+    root.failKey("sequence", "a zone scan's flood lights every zone in one exposure: it has no "
+                             "firing order to roll (a rolling scan is a spinning lidar's or a "
+                             "raster's); remove `sequence` or use `scan: raster`");
   }
   for (const char* key : {"video", "exposure_samples"}) {
     if (seq->has(key)) {
@@ -331,8 +333,8 @@ void checkLidarSequence(const ConfigNode& root) {
 
 }  // namespace
 
-void checkLidarRun(const ConfigNode& root) {
-  checkLidarSequence(root);
+void checkLidarRun(const ConfigNode& root, const LidarConfig& lidarConfig) {
+  checkLidarSequence(root, lidarConfig);
   if (const auto output = root.optionalChild("output")) {
     for (const char* key : {"steady", "depth", "frames", "video", "frame_pngs", "components",
                             "video_tone_map", "video_stride", "video_window", "video_fps",
@@ -388,6 +390,7 @@ YAML::Node lidarNode(const LidarConfig& c) {
   }
   n["power"] = shortest(s.power_W);
   if (!s.gridScan()) n["rotation_rate"] = shortest(c.rotation_rate_Hz) + " Hz";
+  if (s.scan == lidar::ScanPattern::Raster) n["frame_rate"] = shortest(c.frame_rate_Hz) + " Hz";
   n["returns"]["mode"] = returnModeName(s.returns.mode);
   n["returns"]["max"] = s.returns.max;
   n["returns"]["threshold"] = shortest(s.returns.threshold);

@@ -18,7 +18,7 @@ namespace tofsim::config {
 void parseLidarView(const ConfigNode& root, RunConfig& config);
 
 /// The `output:` and `sequence:` keys a lidar capture does not take.
-void checkLidarRun(const ConfigNode& root);
+void checkLidarRun(const ConfigNode& root, const LidarConfig& lidarConfig);
 
 /// The effective config's `lidar:`.
 YAML::Node lidarNode(const LidarConfig& lidar);

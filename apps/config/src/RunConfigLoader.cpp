@@ -52,7 +52,7 @@ void parseScene(const ConfigNode& root, RunConfig& config) {
 void parseView(const ConfigNode& root, RunConfig& config) {
   if (root.has("lidar")) {
     parseLidarView(root, config);
-    checkLidarRun(root);
+    checkLidarRun(root, *config.lidar);
     return;
   }
   const auto nlos = root.optionalChild("nlos");

@@ -70,7 +70,7 @@ std::vector<float> beamDirections(const lidar::LidarSpec& s) {
 }
 
 // A raster's or zones' layout (ScanGrid.h) into lidar.json's settings.
-void gridJson(const lidar::LidarSpec& s, nlohmann::ordered_json& j) {
+void gridJson(const lidar::LidarSpec& s, double frame_rate_Hz, nlohmann::ordered_json& j) {
   const lidar::GridFrame f = lidar::gridFrame(s);
   j["right"] = vec(glm::vec3(f.right));
   j["grid"] = {{"rows", s.grid.rows}, {"columns", s.grid.columns}};
@@ -96,6 +96,11 @@ void gridJson(const lidar::LidarSpec& s, nlohmann::ordered_json& j) {
     j["beam_divergence_rad"] = s.divergence_rad;
     j["beam_profile"] = config::beamProfileName(s.profile);
     j["beam_rays"] = s.beam_rays;
+    j["frame_rate_Hz"] = frame_rate_Hz;
+    j["firing_doc"] =
+        "cell (r, c) fires at ((rows - 1 - r) columns + c) / (rows columns frame_rate_Hz) after "
+        "the frame's start (the points' time_offset): line by line from the top row, each left "
+        "to right, evenly over the frame (an assumed MEMS raster timing, core/lidar RollingScan.h)";
   }
   j["power_W"] = s.power_W;
   j["returns"] = {{"mode", config::returnModeName(s.returns.mode)},
@@ -113,7 +118,7 @@ nlohmann::ordered_json settingsJson(const config::LidarConfig& c) {
   j["forward"] = vec(s.forward_world);
   j["up"] = vec(s.up_world);
   if (s.gridScan()) {
-    gridJson(s, j);
+    gridJson(s, c.frame_rate_Hz, j);
     return j;
   }
   j["elevations_deg"] = s.elevations_deg;
@@ -176,11 +181,10 @@ std::string metadataJson(const config::RunConfig& config, const LidarFrame& fram
     j["medium"] = {{"sigma_t_per_m", vec(t)},
                    {"doc", hasBeamBackscatter(config)
                                ? "attenuates every ray both ways; a scattering medium's single "
-                                 "scattering along each beam (from backscatter.overlap on, "
-                                 "BeamBackscatter.h) is in the waveforms"
+                                 "scattering along each beam's or zone's receiver rays (from "
+                                 "backscatter.overlap on, BeamBackscatter.h) is in the waveforms"
                                : "attenuates every ray both ways; no backscatter in the "
-                                 "waveforms (a medium that does not scatter, or a zone scan's "
-                                 "flood)"}};
+                                 "waveforms (the medium does not scatter)"}};
   }
   const double beams = double(s.channels()) * s.azimuths();
   const double raysPerBeam =
@@ -329,8 +333,7 @@ void writeWaveformsNpy(const lidar::LidarSpec& s, const lidar::LidarWaveforms& w
 }  // namespace
 
 bool hasBeamBackscatter(const config::RunConfig& config) {
-  return config.render.medium.scatters() &&
-         config.lidar->spec.scan != lidar::ScanPattern::Zones;
+  return config.render.medium.scatters();
 }
 
 std::vector<std::string> writeLidarFiles(const config::RunConfig& config, const LidarFrame& frame,

@@ -27,8 +27,8 @@ struct LidarFrame {
 };
 
 /// Whether the run adds a scattering medium's backscatter to the beams'
-/// waveforms (BeamBackscatter.h): every scan but a zone scan's flood, which
-/// has no beam (not built; its histograms hold the attenuation alone).
+/// waveforms (BeamBackscatter.h): with a scattering medium, every scan (a
+/// zone scan's flood along each zone's receiver rays).
 bool hasBeamBackscatter(const config::RunConfig& config);
 
 /// Writes the frame's files into `dir`; returns their names (relative). lidar.json

@@ -49,6 +49,15 @@ OutputEstimate lidarOutputs(const config::RunConfig& config) {
   return e;
 }
 
+lidar::MultipathSettings lidarMultipath(const config::RunConfig& config) {
+  lidar::MultipathSettings m = config.lidar->multipath;
+  m.geometry_clamp_per_m2 = config.render.indirect.geometry_term_clamp_per_m2;
+  m.brdf_clamp_per_sr = config.render.indirect.vpl_brdf_clamp_per_sr;
+  m.vertex_model = ir::vertexModelOf(config.render.materials);
+  m.seed = config.render.seed;
+  return m;
+}
+
 namespace {
 
 // As a camera render's check after it (AxisReport.h), for the beams.
@@ -70,20 +79,6 @@ void warnLightOffTheAxis(const lidar::LidarWaveforms& w, const Progress& progres
     progress.message("warning: " + percent(w.lost.before) +
                      " of the lidar's light arrives before the first bin: lower time.start");
   }
-}
-
-// lidar.multipath (off by default): each beam's light that bounces before
-// it returns, with the render's clamps, materials and seed.
-void addLidarMultipath(const config::RunConfig& config, const lidar::WaveformScene& traced,
-                       int threads, lidar::LidarWaveforms& waveforms) {
-  lidar::MultipathSettings m = config.lidar->multipath;
-  if (!m.enabled()) return;
-  m.geometry_clamp_per_m2 = config.render.indirect.geometry_term_clamp_per_m2;
-  m.brdf_clamp_per_sr = config.render.indirect.vpl_brdf_clamp_per_sr;
-  m.vertex_model = ir::vertexModelOf(config.render.materials);
-  m.seed = config.render.seed;
-  lidar::addMultipathWaveforms(config.lidar->spec, m, traced, config.render.time, threads,
-                               waveforms);
 }
 
 }  // namespace
@@ -118,18 +113,15 @@ RunSummary runLidarRender(const config::RunConfig& config, PreparedRenderer& pre
   lidar::LidarWaveforms waveforms =
       zones ? lidar::renderZoneWaveforms(spec, traced, config.render.time, threads)
             : lidar::renderDirectWaveforms(spec, traced, config.render.time, threads, keepVolume);
-  addLidarMultipath(config, traced, threads, waveforms);
-  // The medium's backscatter along each beam (BeamBackscatter.h): nothing
-  // without a scattering medium; a zone's flood has no beam (not built).
+  lidar::addMultipathWaveforms(spec, lidarMultipath(config), traced, config.render.time, threads,
+                               waveforms);
+  // The medium's backscatter along each beam's (zone's) receiver rays
+  // (BeamBackscatter.h): nothing without a scattering medium.
   const lidar::BeamSurfaces surfaces =
       backscatter ? lidar::addBackscatter(spec, traced, config.render.time, threads, waveforms)
                   : lidar::BeamSurfaces{};
-  if (zones && config.render.medium.scatters()) {
-    progress.message("warning: a zone scan's histograms hold the medium's attenuation, not its "
-                     "backscatter (not built for a flood emitter)");
-  }
   const lidar::LidarReturns returns =
-      lidar::lidarReturns(spec, waveforms, config.lidar->rotation_rate_Hz, threads);
+      lidar::lidarReturns(spec, waveforms, config.lidar->scanRate_Hz(), threads);
   const std::vector<uint8_t> fog =
       backscatter ? lidar::fogReturnFlags(spec, waveforms.volume, surfaces) : std::vector<uint8_t>{};
   const double seconds =

@@ -4,6 +4,7 @@
 // files (LidarFiles.h), through the same staged folder as a camera render
 // (nothing half-written on failure).
 
+#include "tofsim/lidar/MultipathSettings.h"
 #include "tofsim/pipeline/OutputEstimate.h"
 #include "tofsim/pipeline/RenderRun.h"
 
@@ -13,6 +14,10 @@ namespace tofsim::pipeline {
 /// worker); rays traced on render.threads threads.
 RunSummary runLidarRender(const config::RunConfig& config, PreparedRenderer& prepared,
                           const RunOptions& options);
+
+/// lidar.multipath with the render's clamps, materials and seed (off unless
+/// asked for): a still frame's and a rolling frame's.
+lidar::MultipathSettings lidarMultipath(const config::RunConfig& config);
 
 /// The files a lidar run writes and their sizes, from the config alone.
 OutputEstimate lidarOutputs(const config::RunConfig& config);

@@ -13,6 +13,7 @@
 #include "tofsim/config/LidarConfig.h"
 #include "tofsim/ir/IrBackend.h"
 #include "tofsim/ir/MaterialVertex.h"
+#include "tofsim/lidar/BeamBackscatter.h"
 #include "tofsim/lidar/LidarReturns.h"
 #include "tofsim/lidar/RollingScan.h"
 #include "tofsim/pipeline/ConfiguredScene.h"
@@ -60,17 +61,28 @@ RunSummary runLidarSequence(const config::RunConfig& config, const RunOptions& o
   const lidar::SceneAtTime sceneAt = [&](double t_s) -> const lidar::WaveformScene& {
     return moving.at(t_s);
   };
+  // As a still frame (LidarRun.cpp): the dense volume where something reads
+  // or adds to it.
+  const double rate_Hz = lidar.scanRate_Hz();
+  const lidar::MultipathSettings multipath = lidarMultipath(config);
+  const bool backscatter = hasBeamBackscatter(config);
+  const bool keepVolume = !config.sensors.empty() || multipath.enabled() || backscatter;
   json frames = json::array();
   for (std::size_t k = 0; k < seq.times_s.size(); ++k) {
     const double t = seq.times_s[k];
     progress.message("frame " + std::to_string(k + 1) + "/" + std::to_string(seq.times_s.size()) +
                      ": the turn from t = " + std::to_string(t) + " s");
     const auto start = std::chrono::steady_clock::now();
-    const lidar::LidarWaveforms waveforms =
-        lidar::renderRollingWaveforms(lidar.spec, sceneAt, config.render.time, t,
-                                      lidar.rotation_rate_Hz, threads, !config.sensors.empty());
+    lidar::LidarWaveforms waveforms = lidar::renderRollingWaveforms(
+        lidar.spec, sceneAt, config.render.time, t, rate_Hz, threads, keepVolume);
+    // The multipath and the medium's backscatter, each beam's at its own time.
+    const lidar::BeamSurfaces surfaces = lidar::addRollingLight(
+        lidar.spec, multipath, sceneAt, config.render.time, t, rate_Hz, threads, waveforms);
     const lidar::LidarReturns returns =
-        lidar::lidarReturns(lidar.spec, waveforms, lidar.rotation_rate_Hz, threads);
+        lidar::lidarReturns(lidar.spec, waveforms, rate_Hz, threads);
+    const std::vector<uint8_t> fog =
+        backscatter ? lidar::fogReturnFlags(lidar.spec, waveforms.volume, surfaces)
+                    : std::vector<uint8_t>{};
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     throwIfInterrupted();
@@ -78,7 +90,8 @@ RunSummary runLidarSequence(const config::RunConfig& config, const RunOptions& o
     frameConfig.render.seed = sequenceFrameSeed(config.render.seed, k);
     const std::string name = frameFolder(k);
     fs::create_directory(folder.staging() / name);
-    const LidarFrame frame{&waveforms, &returns, seconds, threads};
+    LidarFrame frame{&waveforms, &returns, seconds, threads};
+    frame.fogReturns = surfaces.bins.empty() ? nullptr : &fog;
     std::vector<std::string> frameFiles =
         writeLidarFiles(frameConfig, frame, folder.staging() / name, progress);
     // The frame's own effective config (its seed), which its lidar.json lists.
@@ -87,12 +100,17 @@ RunSummary runLidarSequence(const config::RunConfig& config, const RunOptions& o
     frames.push_back(
         {{"index", k}, {"time_s", t}, {"seed", frameConfig.render.seed}, {"folder", name}});
   }
+  const bool raster = lidar.spec.scan == lidar::ScanPattern::Raster;
   const json doc = {{"frames", frames},
                     {"count", seq.times_s.size()},
-                    {"rotation_rate_Hz", lidar.rotation_rate_Hz},
-                    {"doc", "frame k: the lidar's turn from time_s, azimuth column a fired at "
-                            "time_s + (azimuth_a - azimuth_start) / 360 / rotation_rate_Hz "
-                            "against the scene there (the points' time_offset)"},
+                    {raster ? "frame_rate_Hz" : "rotation_rate_Hz", rate_Hz},
+                    {"doc", raster ? "frame k: the raster's frame from time_s, cell (row, column) "
+                                  "fired at time_s + ((rows - 1 - row) columns + column) / "
+                                  "(rows columns frame_rate_Hz) against the scene there (the "
+                                  "points' time_offset)"
+                                : "frame k: the lidar's turn from time_s, azimuth column a fired "
+                                  "at time_s + (azimuth_a - azimuth_start) / 360 / rotation_rate_Hz "
+                                  "against the scene there (the points' time_offset)"},
                     {"animation_start_s", animated.start_s()},
                     {"animation_end_s", animated.end_s()}};
   writeFileAtomically(folder.staging() / "sequence.json", doc.dump(2) + "\n");

@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "tofsim/lidar/Echoes.h"
+#include "tofsim/lidar/ScanGrid.h"
 #include "tofsim/physics/MediumPhysics.h"
 #include "tofsim/util/ParallelFor.h"
 
@@ -21,73 +22,75 @@ double antiderivative(double sigmaT, double s) {
   return -std::exp(-x) / s + (x > 0.0 ? 2.0 * sigmaT * -std::expint(-x) : 0.0);
 }
 
-// The medium per channel as the lidar sees it, and the range each bin
-// covers: its edges from the overlap on, and the per-bin backscatter of a
-// whole bin (power x the channels' mean of sigma_s p(pi) x the integral).
-struct BackscatterBins {
-  glm::dvec3 sigmaT{0.0}, weight{0.0};  // weight = power x sigma_s p(pi) / channels
-  std::vector<double> edges_m;          // bins + 1 range edges, each >= the overlap
-  std::vector<double> whole;            // a whole bin's light
-  double legsEta = 2.0, start_m = 0.0, width_m = 1.0;
+}  // namespace
 
-  bool grey = false;  // every channel alike (fog): one integral for the three
-
-  double light(double a, double b) const {
-    if (!(b > a)) return 0.0;
-    if (grey) return 3.0 * weight[0] * backscatterIntegral(sigmaT[0], a, b);
-    double sum = 0.0;
-    for (int c = 0; c < 3; ++c) {
-      if (weight[c] != 0.0) sum += weight[c] * backscatterIntegral(sigmaT[c], a, b);
-    }
-    return sum;
+BackscatterLight::BackscatterLight(const LidarSpec& spec, const capture::Medium& medium,
+                                   const TimeAxis& axis)
+    : spec_(spec) {
+  if (spec.scan == ScanPattern::Zones) {
+    field_sr_ = fieldSolidAngle_sr(spec);
+  } else {
+    beamRays_ = beamRays(spec.beam_rays, spec.divergence_rad, spec.profile);
   }
-  // DirectWaveforms' bin of a surface at range r.
-  double binOf(double r) const { return std::floor((legsEta * r - start_m) / width_m); }
-};
-
-BackscatterBins backscatterBins(const LidarSpec& spec, const capture::Medium& medium,
-                                const TimeAxis& axis) {
-  BackscatterBins b;
-  b.legsEta = (axis.camera_unwarp ? 1.0 : 2.0) * axis.index_of_refraction;
-  b.start_m = axis.start_m();
-  b.width_m = axis.bin_width_m();
+  legsEta_ = (axis.camera_unwarp ? 1.0 : 2.0) * axis.index_of_refraction;
+  start_m_ = axis.start_m();
+  width_m_ = axis.bin_width_m();
   const double overlap = spec.backscatter.overlap_m;
   const double p = spec.backscatter.phase_at_pi_per_sr > 0.0
                        ? spec.backscatter.phase_at_pi_per_sr
                        : physics::phaseFunction(medium.phase, medium.g, -1.0f);
-  b.sigmaT = glm::dvec3(medium.sigmaT());
-  b.weight = glm::dvec3(medium.sigma_s_per_m) * (spec.power_W * p / 3.0);
-  b.grey = b.sigmaT.x == b.sigmaT.y && b.sigmaT.y == b.sigmaT.z && b.weight.x == b.weight.y &&
-           b.weight.y == b.weight.z;
-  b.edges_m.resize(static_cast<std::size_t>(axis.bins) + 1);
+  sigmaT_ = glm::dvec3(medium.sigmaT());
+  weight_ = glm::dvec3(medium.sigma_s_per_m) * (spec.power_W * p / 3.0);
+  grey_ = sigmaT_.x == sigmaT_.y && sigmaT_.y == sigmaT_.z && weight_.x == weight_.y &&
+          weight_.y == weight_.z;
+  edges_m_.resize(static_cast<std::size_t>(axis.bins) + 1);
   for (int32_t k = 0; k <= axis.bins; ++k) {
-    b.edges_m[k] = std::max(overlap, (b.start_m + k * b.width_m) / b.legsEta);
+    edges_m_[k] = std::max(overlap, (start_m_ + k * width_m_) / legsEta_);
   }
-  b.whole.resize(axis.bins);
-  for (int32_t k = 0; k < axis.bins; ++k) b.whole[k] = b.light(b.edges_m[k], b.edges_m[k + 1]);
-  return b;
+  whole_.resize(axis.bins);
+  for (int32_t k = 0; k < axis.bins; ++k) whole_[k] = light(edges_m_[k], edges_m_[k + 1]);
+}
+
+int32_t BackscatterLight::raysPerBeam() const {
+  return spec_.scan == ScanPattern::Zones ? spec_.grid.zone_rays * spec_.grid.zone_rays
+                                          : static_cast<int32_t>(beamRays_.size());
+}
+
+double BackscatterLight::light(double a, double b) const {
+  if (!(b > a)) return 0.0;
+  if (grey_) return 3.0 * weight_[0] * backscatterIntegral(sigmaT_[0], a, b);
+  double sum = 0.0;
+  for (int c = 0; c < 3; ++c) {
+    if (weight_[c] != 0.0) sum += weight_[c] * backscatterIntegral(sigmaT_[c], a, b);
+  }
+  return sum;
+}
+
+double BackscatterLight::binOf(double r) const {
+  return std::floor((legsEta_ * r - start_m_) / width_m_);
 }
 
 // One beam: its rays' surfaces (into `surfaceBins`), and its backscatter
 // added to `waveform` bin by bin with the share of the beam still in the
-// medium (`cover`, bins + 1 values of scratch).
-WaveformLoss addBeam(const LidarSpec& spec, const std::vector<BeamRay>& rays,
-                     const WaveformScene& scene, const BackscatterBins& b, int32_t ring,
-                     int32_t azimuth, float* waveform, int32_t* surfaceBins,
-                     std::vector<double>& cover) {
-  const auto bins = static_cast<int32_t>(b.whole.size());
-  const double overlap = spec.backscatter.overlap_m;
-  const BeamFrame frame = beamFrame(beamDirection(spec, ring, azimuth), spec.up_world);
-  std::fill(cover.begin(), cover.end(), 0.0);
+// medium (`cover`).
+WaveformLoss BackscatterLight::addBeam(const rays::RayScene& scene, int32_t ring, int32_t azimuth,
+                                       float* waveform, int32_t* surfaceBins) const {
+  const std::vector<BeamRay> zone =
+      beamRays_.empty() ? zoneRays(spec_, ring, azimuth, field_sr_) : std::vector<BeamRay>{};
+  const std::vector<BeamRay>& rays = beamRays_.empty() ? zone : beamRays_;
+  const auto bins = static_cast<int32_t>(whole_.size());
+  const double overlap = spec_.backscatter.overlap_m;
+  const BeamFrame frame = beamFrame(beamDirection(spec_, ring, azimuth), spec_.up_world);
+  std::vector<double> cover(whole_.size() + 1, 0.0);
   WaveformLoss lost;
   for (std::size_t i = 0; i < rays.size(); ++i) {
     const glm::vec3 d = rayDirection(frame, rays[i].offset_rad);
-    const std::optional<rays::SurfaceHit> hit = scene.rays->intersect(spec.position_world, d);
+    const std::optional<rays::SurfaceHit> hit = scene.intersect(spec_.position_world, d);
     const double D = hit && hit->distance_m > 0.0f ? double(hit->distance_m) : kInfinity;
-    const double k = D == kInfinity ? double(bins) : b.binOf(D);
+    const double k = D == kInfinity ? double(bins) : binOf(D);
     surfaceBins[i] = D != kInfinity && k >= 0.0 && k < bins ? static_cast<int32_t>(k) : -1;
     const double share = rays[i].share;
-    lost.before += share * b.light(overlap, std::min(D, b.edges_m.front()));
+    lost.before += share * light(overlap, std::min(D, edges_m_.front()));
     if (k < 0.0) continue;
     // Whole bins [0, k): cover[0] += share, cover[k] -= share; then the bin
     // holding the surface up to it, or past the axis' end.
@@ -95,20 +98,18 @@ WaveformLoss addBeam(const LidarSpec& spec, const std::vector<BeamRay>& rays,
     cover[0] += share;
     cover[full] -= share;
     if (k < bins) {
-      waveform[full] += static_cast<float>(share * b.light(b.edges_m[full], D));
+      waveform[full] += static_cast<float>(share * light(edges_m_[full], D));
     } else {
-      lost.after += share * b.light(b.edges_m.back(), D);
+      lost.after += share * light(edges_m_.back(), D);
     }
   }
   double share = 0.0;
   for (int32_t k = 0; k < bins; ++k) {
     share += cover[k];
-    if (share > 0.0) waveform[k] += static_cast<float>(share * b.whole[k]);
+    if (share > 0.0) waveform[k] += static_cast<float>(share * whole_[k]);
   }
   return lost;
 }
-
-}  // namespace
 
 double backscatterIntegral(double sigmaT, double a, double b) {
   if (!(b > a)) return 0.0;
@@ -117,29 +118,27 @@ double backscatterIntegral(double sigmaT, double a, double b) {
 
 BeamSurfaces addBackscatter(const LidarSpec& spec, const WaveformScene& scene,
                             const TimeAxis& axis, int threads, LidarWaveforms& waveforms) {
-  const std::vector<BeamRay> rays = beamRays(spec.beam_rays, spec.divergence_rad, spec.profile);
+  if (!scene.medium.scatters()) return {};
+  const BackscatterLight light(spec, scene.medium, axis);
   const int32_t azimuths = spec.azimuths();
   const auto beams = static_cast<std::size_t>(spec.channels()) * static_cast<std::size_t>(azimuths);
-  BeamSurfaces surfaces{static_cast<int32_t>(rays.size()), {}};
-  if (!scene.medium.scatters()) return surfaces;
-  surfaces.bins.assign(beams * rays.size(), -1);
-  const BackscatterBins b = backscatterBins(spec, scene.medium, axis);
-  constexpr std::size_t kBlock = 256;
-  std::vector<WaveformLoss> lost((beams + kBlock - 1) / kBlock);
+  const auto R = static_cast<std::size_t>(light.raysPerBeam());
+  BeamSurfaces surfaces{light.raysPerBeam(), std::vector<int32_t>(beams * R, -1)};
+  std::vector<WaveformLoss> lost((beams + kBackscatterBlock - 1) / kBackscatterBlock);
   float* data = waveforms.volume.data();
   const std::size_t stride = waveforms.volume.pixelStride();
-  parallelForBlocks(beams, kBlock, resolveThreads(threads), [&](std::size_t begin, std::size_t end) {
-    std::vector<double> cover(b.whole.size() + 1);
-    WaveformLoss& l = lost[begin / kBlock];
-    for (std::size_t i = begin; i < end; ++i) {
-      const WaveformLoss beam =
-          addBeam(spec, rays, scene, b, static_cast<int32_t>(i / azimuths),
-                  static_cast<int32_t>(i % azimuths), data + i * stride,
-                  surfaces.bins.data() + i * rays.size(), cover);
-      l.before += beam.before;
-      l.after += beam.after;
-    }
-  });
+  parallelForBlocks(beams, kBackscatterBlock, resolveThreads(threads),
+                    [&](std::size_t begin, std::size_t end) {
+                      WaveformLoss& l = lost[begin / kBackscatterBlock];
+                      for (std::size_t i = begin; i < end; ++i) {
+                        const WaveformLoss beam = light.addBeam(
+                            *scene.rays, static_cast<int32_t>(i / azimuths),
+                            static_cast<int32_t>(i % azimuths), data + i * stride,
+                            surfaces.bins.data() + i * R);
+                        l.before += beam.before;
+                        l.after += beam.after;
+                      }
+                    });
   for (const WaveformLoss& l : lost) {  // in block order: the same sum for any thread count
     waveforms.lost.before += l.before;
     waveforms.lost.after += l.after;

@@ -15,9 +15,9 @@ void addBeamPoints(const LidarSpec& spec, int32_t ring, int32_t a, const std::ve
                    double rotation_rate_Hz, LidarReturns& out) {
   ++out.beamsWithReturns;
   const glm::vec3 d = beamDirection(spec, ring, a);
-  // A grid scan's beams all fire at the frame's start (a flash, a multizone
-  // sensor); its points' azimuth is the column's angle.
-  const double fired_s = spec.gridScan() ? 0.0 : firingOffset_s(spec, a, rotation_rate_Hz);
+  // A beam's firing time in the scan (RollingScan.h: a zone scan's flood at
+  // the frame's start); a grid scan's points' azimuth is the column's angle.
+  const double fired_s = beamFiringOffset_s(spec, ring, a, rotation_rate_Hz);
   const double azimuth_deg = spec.gridScan() ? gridAzimuth_deg(spec, a) : spec.azimuthOf_deg(a);
   for (std::size_t k = 0; k < kept.size(); ++k) {
     LidarPoint p;

@@ -169,13 +169,12 @@ void addMultipathWaveforms(const LidarSpec& spec, const MultipathSettings& setti
   const int32_t azimuths = spec.azimuths();
   const auto beams = static_cast<std::size_t>(spec.channels()) * static_cast<std::size_t>(azimuths);
   const MultipathRays rays = multipathRays(spec, settings);
-  constexpr std::size_t kBlock = 64;
-  std::vector<WaveformLoss> lost((beams + kBlock - 1) / kBlock);
+  std::vector<WaveformLoss> lost((beams + kMultipathBlock - 1) / kMultipathBlock);
   float* data = waveforms.volume.data();
   const std::size_t stride = waveforms.volume.pixelStride();
   parallelForBlocks(
-      beams, kBlock, resolveThreads(threads), [&](std::size_t begin, std::size_t end) {
-        WaveformLoss& l = lost[begin / kBlock];
+      beams, kMultipathBlock, resolveThreads(threads), [&](std::size_t begin, std::size_t end) {
+        WaveformLoss& l = lost[begin / kMultipathBlock];
         for (std::size_t b = begin; b < end; ++b) {
           const auto ring = static_cast<int32_t>(b / static_cast<std::size_t>(azimuths));
           const auto azimuth = static_cast<int32_t>(b % static_cast<std::size_t>(azimuths));

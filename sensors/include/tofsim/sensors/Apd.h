@@ -7,13 +7,16 @@
 // signal, background and bulk dark current through the gain, the surface dark
 // current's (not multiplied), a transimpedance amplifier's input noise, the
 // receiver's electrical bandwidth (a Gaussian low-pass filter) and an optional
-// ADC, sampled on the instrument bins; then a threshold detector (fixed, or a
-// constant false-alarm rate) finds up to `max_returns` echoes per pixel (a
-// lidar's beam). Parameters and outputs: sensors/README.md, "Linear-mode APD".
+// ADC, sampled on the instrument bins; then a threshold detector (fixed, a
+// constant false-alarm rate on the receiver's noise, or a cell-averaging
+// CFAR whose threshold follows the local mean of the signal: a fog's
+// backscatter, a sloped background) finds up to `max_returns` echoes per
+// pixel (a lidar's beam). Parameters and outputs: sensors/README.md, "Linear-mode APD".
 
 #include <cstdint>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "tofsim/sensors/Common.h"
 #include "tofsim/sensors/SensorOutput.h"
@@ -23,7 +26,10 @@
 
 namespace tofsim::sensors {
 
-enum class ApdThreshold { Fixed, Cfar };
+/// Fixed: threshold_A. Cfar: the background's mean + z sigma (its noise
+/// alone, known to the receiver). CaCfar: cell-averaging CFAR, per sample
+/// the mean of its training cells + z kappa sigma(that mean) (apdThresholds).
+enum class ApdThreshold { Fixed, Cfar, CaCfar };
 
 /// A 905 nm silicon APD's radiometry: the volume's light as energy (the
 /// wavelength converts it to photons), a quantum efficiency of 0.8
@@ -50,7 +56,9 @@ struct ApdParams {
   double adc_full_scale_A = 1e-4;   ///< ADC range [0, full scale) in input current
   ApdThreshold threshold_mode = ApdThreshold::Cfar;
   double threshold_A = 1e-6;        ///< fixed threshold, A
-  double false_alarm = 1e-5;        ///< CFAR: false alarms per sample
+  double false_alarm = 1e-5;        ///< CFAR, CA-CFAR: false alarms per sample
+  int32_t cfar_guard_cells = 4;     ///< CA-CFAR: samples left out each side of the one tested
+  int32_t cfar_training_cells = 16; ///< CA-CFAR: samples averaged each side, beyond the guard
   int32_t max_returns = 3;          ///< echoes kept per pixel (time order)
   bool output_waveforms = true;     ///< apd_waveforms (H, W, T)
   std::string colormap = "turbo";
@@ -78,9 +86,36 @@ struct ApdReceiver {
   double noiseBandwidth_Hz = 0.0;
   /// Per sample without signal: mean current and its standard deviation, A.
   double backgroundMean_A = 0.0, backgroundSigma_A = 0.0;
-  double threshold_A = 0.0;  ///< the detector's threshold
+  double threshold_A = 0.0;  ///< the detector's threshold (CA-CFAR: on the background)
+  /// The noise model at any mean current m (apdNoiseSigma_A): sigma(m)^2 =
+  /// floorVariance_A2 + electronVariance_A2 x electrons(m), electrons(m) =
+  /// (m - surfaceMean_A) / electronCurrent_A the multiplied primaries a
+  /// sample's mean holds.
+  double electronCurrent_A = 0.0, electronVariance_A2 = 0.0, floorVariance_A2 = 0.0,
+         surfaceMean_A = 0.0;
+  /// CA-CFAR: z with P(N(0, 1) > z) = false_alarm, and per sample kappa,
+  /// the standard deviation of (sample - its training cells' mean) over a
+  /// sample's sigma, from the filter's correlation (sqrt(1 + 1 / (2 N)) for
+  /// white samples and N cells a side; one-sided near the axis' ends).
+  double cfarZ = 0.0;
+  std::vector<double> cfarKappa;
 };
 ApdReceiver apdReceiver(const ApdParams& p, const TimeAxis& render);
+
+/// The receiver's noise sigma (A, per filtered sample) at mean current m:
+/// the shot noise of the primaries m holds through the gain, the surface
+/// dark current's and the TIA's.
+double apdNoiseSigma_A(const ApdReceiver& rx, double meanCurrent_A);
+
+/// Each sample's threshold (rx.axis.bins): rx.threshold_A, or with
+/// `threshold_mode: ca_cfar` the mean m_t of the training cells t - G - N ..
+/// t - G - 1 and t + G + 1 .. t + G + N (those on the axis) plus rx.cfarZ x
+/// rx.cfarKappa[t] x apdNoiseSigma_A(m_t). For Gaussian noise on a linear
+/// background the false-alarm rate is then false_alarm exactly: the two
+/// windows' mean is the background's at t, and (sample - m_t) is normal of
+/// variance kappa^2 sigma^2 (sensors/README.md, "CA-CFAR").
+void apdThresholds(const ApdParams& p, const ApdReceiver& rx, const std::vector<double>& samples_A,
+                   std::vector<double>& out_A);
 
 /// z with P(N(0, 1) > z) = p, for 0 < p < 1.
 double normalUpperQuantile(double p);

@@ -238,8 +238,8 @@ inline constexpr auto kCwTofFields = std::tuple{
           {.json = "noise_model", .doc = "`poisson_read` (`shot_noise`, `read_noise`) or `table`: an empirical conditional noise table (`noise_table`) in place of both"}},
     Custom{"noise_table", "file", "", "none", "e-", "`noise_model: table`: rows (integer noise-free raw, measured raw), a two-column .csv or a float32 .npy (n, 2); a raw whose noise-free value rounds to a listed mean becomes one of its samples, drawn uniformly; elsewhere it is noise-free"},
 };
-inline constexpr std::array<Name<ApdThreshold>, 2> kApdThresholdNames{
-    {{"cfar", ApdThreshold::Cfar}, {"fixed", ApdThreshold::Fixed}}};
+inline constexpr std::array<Name<ApdThreshold>, 3> kApdThresholdNames{
+    {{"cfar", ApdThreshold::Cfar}, {"fixed", ApdThreshold::Fixed}, {"ca_cfar", ApdThreshold::CaCfar}}};
 
 /// The linear-mode APD (Apd.h). Defaults: a 905 nm Si APD receiver
 /// (sensors/README.md, "Linear-mode APD", lists each value's source).
@@ -265,11 +265,15 @@ inline constexpr auto kApdFields = std::tuple{
     Field{"adc_full_scale", &ApdParams::adc_full_scale_A, Number{kPositive},
           {.unit = "A", .json = "adc_full_scale_A", .doc = "the ADC's range in input current"}},
     Field{"threshold_mode", &ApdParams::threshold_mode, Choice<ApdThreshold>{kApdThresholdNames},
-          {.json = "threshold_mode", .doc = "`cfar`: the threshold the background noise crosses with `false_alarm` per sample (its mean + z sigma); `fixed`: `threshold`"}},
+          {.json = "threshold_mode", .doc = "`cfar`: the threshold the background noise crosses with `false_alarm` per sample (its mean + z sigma); `ca_cfar`: cell-averaging CFAR, per sample its training cells' mean + z kappa sigma(that mean), `false_alarm` per sample on a linear background (see CA-CFAR below); `fixed`: `threshold`"}},
     Field{"threshold", &ApdParams::threshold_A, Number{kAnyValue},
           {.unit = "A", .json = "threshold_A", .doc = "`threshold_mode: fixed`: an echo is a run of samples above this current"}},
     Field{"false_alarm", &ApdParams::false_alarm, Number{Range{.min = 0.0, .max = 0.5, .minExclusive = true}},
-          {.json = "false_alarm", .doc = "`threshold_mode: cfar`: the probability that a sample of background alone is above the threshold"}},
+          {.json = "false_alarm", .doc = "`threshold_mode: cfar` or `ca_cfar`: the probability that a sample of background alone is above the threshold"}},
+    Field{"guard_cells", &ApdParams::cfar_guard_cells, IntegerIn{0, 1024},
+          {.json = "cfar_guard_cells", .doc = "`threshold_mode: ca_cfar`: samples left out on each side of the sample tested (an echo's own width)"}},
+    Field{"training_cells", &ApdParams::cfar_training_cells, IntegerIn{1, 4096},
+          {.json = "cfar_training_cells", .doc = "`threshold_mode: ca_cfar`: samples averaged on each side beyond the guard cells (fewer at the axis' ends)"}},
     Field{"max_returns", &ApdParams::max_returns, Integer{.max = 64},
           {.json = "max_returns", .doc = "echoes kept per pixel (beam), in time order"}},
     Field{"output_waveforms", &ApdParams::output_waveforms, Flag{},

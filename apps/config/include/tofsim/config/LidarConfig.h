@@ -28,6 +28,15 @@ struct LidarConfig {
   /// rotation_rate: turns per second; a beam fires at its azimuth's time
   /// (the point clouds' time_offset). The scene is captured at rest.
   double rotation_rate_Hz = 10.0;
+  /// frame_rate (scan: raster): frames per second; the cells fire line by
+  /// line over the frame (core/lidar RollingScan.h): the points'
+  /// time_offset, and with `sequence` each cell's firing time.
+  double frame_rate_Hz = 10.0;
+  /// The rate the beams' firing times follow: turns (spinning) or frames
+  /// (raster) per second (a zone scan's flood fires once).
+  double scanRate_Hz() const {
+    return spec.scan == lidar::ScanPattern::Raster ? frame_rate_Hz : rotation_rate_Hz;
+  }
   /// plot_beams: the beams (ring, azimuth index) whose waveforms
   /// waveforms.png draws, as [ring, azimuth in degrees] pairs resolved to
   /// the nearest azimuth.

@@ -22,16 +22,17 @@ struct LidarReturns {
 };
 
 /// The returns of `waveforms` (renderDirectWaveforms' volume); a beam fires
-/// at (azimuth - start) / 360 / rotation_rate_Hz after the scan's start.
+/// beamFiringOffset_s (RollingScan.h) after the scan's start: `rate_Hz` is
+/// the turns (spinning) or frames (raster) per second.
 LidarReturns lidarReturns(const LidarSpec& spec, const TransientVolume& waveforms,
-                          double rotation_rate_Hz);
+                          double rate_Hz);
 /// The same of the beams' nonzero bins (the same returns to the bit), on
 /// `threads` threads (0: all; the same bytes on any count).
 LidarReturns lidarReturns(const LidarSpec& spec, const SparseWaveforms& waveforms,
-                          const TimeAxis& axis, double rotation_rate_Hz, int threads = 1);
+                          const TimeAxis& axis, double rate_Hz, int threads = 1);
 /// Of a render's waveforms: its volume where kept (what was added to it
 /// included), else its nonzero bins.
 LidarReturns lidarReturns(const LidarSpec& spec, const LidarWaveforms& waveforms,
-                          double rotation_rate_Hz, int threads = 1);
+                          double rate_Hz, int threads = 1);
 
 }  // namespace tofsim::lidar

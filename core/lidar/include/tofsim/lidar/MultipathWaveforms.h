@@ -34,6 +34,7 @@
 // sees the whole spot); the receiver field of view is what widens what the
 // multipath collects.
 
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
@@ -60,6 +61,10 @@ WaveformLoss addBeamMultipath(const LidarSpec& spec, const MultipathSettings& se
                               const MultipathRays& rays, const WaveformScene& scene,
                               const TimeAxis& axis, const glm::vec3& beamAxis, uint64_t beam,
                               float* waveform);
+
+/// Beams added per task by addMultipathWaveforms (their losses summed per
+/// block, then the blocks in order): a rolling scan sums its losses the same way.
+constexpr std::size_t kMultipathBlock = 64;
 
 /// Adds every beam's multipath to `waveforms` (renderDirectWaveforms'
 /// volume and losses), on `threads` threads over fixed blocks of beams:
