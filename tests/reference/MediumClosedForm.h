@@ -70,6 +70,32 @@ inline Moments lidarReturn(const capture::Medium& m, int c, double phaseBack, do
   return out;
 }
 
+/// The same return averaged over the channels, (1/3) sum_c of channel c's,
+/// and its estimator's second moment: a path's one free flight serves every
+/// channel (spectral MIS), so its three channels' estimates are one draw's,
+/// strongly correlated; their mean's second moment is int (mean_c f_c)^2 / p,
+/// not a sum of the channels' own. A chi-square over bins of this mean has
+/// one degree of freedom per bin.
+inline Moments lidarReturnOfMean(const capture::Medium& m, double phaseBack,
+                                 const glm::dvec3& intensity, double s0, double s1) {
+  Moments out;
+  if (!(s1 > s0)) return out;
+  constexpr int kSteps = 2000;  // even
+  const double h = (s1 - s0) / kSteps;
+  const glm::dvec3 sigmaT(m.sigmaT()), sigmaS(m.sigma_s_per_m);
+  for (int i = 0; i <= kSteps; ++i) {
+    const double s = s0 + i * h;
+    const double w = (i == 0 || i == kSteps) ? 1.0 : (i % 2 == 1 ? 4.0 : 2.0);
+    const glm::dvec3 fc = sigmaS * phaseBack * intensity * glm::exp(-2.0 * sigmaT * s) / (s * s);
+    const double f = (fc.x + fc.y + fc.z) / 3.0;
+    out.mean += w * f;
+    out.second += w * f * f / mixturePdf(m, s);
+  }
+  out.mean *= h / 3.0;
+  out.second *= h / 3.0;
+  return out;
+}
+
 /// A surface at r whose return in vacuum is `vacuum` (channel c): the
 /// medium's is vacuum x T(r)^2, reached with probability P(r).
 inline Moments surfaceReturn(const capture::Medium& m, int c, double vacuum, double r) {
