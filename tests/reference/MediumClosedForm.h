@@ -70,15 +70,31 @@ inline Moments lidarReturn(const capture::Medium& m, int c, double phaseBack, do
   return out;
 }
 
-/// The same return averaged over the channels, (1/3) sum_c of channel c's,
-/// and its estimator's second moment: a path's one free flight serves every
-/// channel (spectral MIS), so its three channels' estimates are one draw's,
-/// strongly correlated; their mean's second moment is int (mean_c f_c)^2 / p,
-/// not a sum of the channels' own. A chi-square over bins of this mean has
-/// one degree of freedom per bin.
-inline Moments lidarReturnOfMean(const capture::Medium& m, double phaseBack,
-                                 const glm::dvec3& intensity, double s0, double s1) {
-  Moments out;
+/// Mean and second-moment matrix of one path's estimates in one bin, the
+/// three channels together: a path's one free flight serves every channel
+/// (spectral MIS), so its channels' estimates are one draw's, strongly
+/// correlated; their covariance (second - mean mean^T) is not diagonal.
+struct ChannelMoments {
+  glm::dvec3 mean{0.0};
+  glm::dmat3 second{0.0};
+  /// The covariance of the mean of n independent paths.
+  glm::dmat3 covariance(double n) const {
+    return (second - glm::outerProduct(mean, mean)) / n;
+  }
+  /// d^T covariance^-1 d for a difference d of the mean of n paths.
+  double mahalanobis(const glm::dvec3& d, double n) const {
+    return glm::dot(d, glm::inverse(covariance(n)) * d);
+  }
+  /// The mean v of n paths against this: a chi-square of 3 degrees of freedom.
+  double chiSquare(const glm::dvec3& v, double n) const { return mahalanobis(v - mean, n); }
+};
+
+/// The single-scattered (lidar) return of the three channels from one-way
+/// distances [s0, s1], as lidarReturn, with the estimator's second-moment
+/// matrix int f f^T / p.
+inline ChannelMoments lidarReturnChannels(const capture::Medium& m, double phaseBack,
+                                          const glm::dvec3& intensity, double s0, double s1) {
+  ChannelMoments out;
   if (!(s1 > s0)) return out;
   constexpr int kSteps = 2000;  // even
   const double h = (s1 - s0) / kSteps;
@@ -86,10 +102,9 @@ inline Moments lidarReturnOfMean(const capture::Medium& m, double phaseBack,
   for (int i = 0; i <= kSteps; ++i) {
     const double s = s0 + i * h;
     const double w = (i == 0 || i == kSteps) ? 1.0 : (i % 2 == 1 ? 4.0 : 2.0);
-    const glm::dvec3 fc = sigmaS * phaseBack * intensity * glm::exp(-2.0 * sigmaT * s) / (s * s);
-    const double f = (fc.x + fc.y + fc.z) / 3.0;
+    const glm::dvec3 f = sigmaS * phaseBack * intensity * glm::exp(-2.0 * sigmaT * s) / (s * s);
     out.mean += w * f;
-    out.second += w * f * f / mixturePdf(m, s);
+    out.second += glm::outerProduct(f, f) * (w / mixturePdf(m, s));
   }
   out.mean *= h / 3.0;
   out.second *= h / 3.0;

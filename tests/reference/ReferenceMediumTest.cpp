@@ -121,27 +121,25 @@ ReferenceSettings singleScattering(int32_t samples) {
   return s;
 }
 
-// Sum over the bins of z^2 of the image-mean of the channels' mean against
-// the lidar equation of `truth` (pixels pooled: they all see the same
-// medium). The channels are not independent: one free flight serves all
-// three (spectral MIS), so their estimates are one draw's and nearly
-// proportional; a chi-square over bins x channels would count each bin
-// about three times. The channels' mean, with its own second moment
-// (MediumClosedForm.h), is one degree of freedom per bin.
+// Sum over the bins of the image-mean's chi-square against the lidar
+// equation of `truth` (pixels pooled: they all see the same medium), the
+// three channels together through their covariance: one free flight serves
+// all three (spectral MIS), so their estimates are one draw's and nearly
+// proportional; counted as independent, each bin would count about three
+// times. 3 degrees of freedom a bin.
 double lidarChiSquare(const TransientVolume& v, const Medium& truth, double phaseBack,
                       const glm::dvec3& intensity, double pathsPerPixel) {
   const int pixels = v.width() * v.height();
   double chi2 = 0.0;
   for (int b = 0; b < v.bins(); ++b) {
-    double mean = 0.0;
+    glm::dvec3 mean(0.0);
     for (int y = 0; y < v.height(); ++y)
       for (int x = 0; x < v.width(); ++x)
-        for (int c = 0; c < 3; ++c) mean += v.at(y, x, b, c) / (3.0 * pixels);
+        for (int c = 0; c < 3; ++c) mean[c] += v.at(y, x, b, c) / pixels;
     const double s0 = LidarJob::kS0 + b * LidarJob::kBin;
-    const test::Moments m =
-        test::lidarReturnOfMean(truth, phaseBack, intensity, s0, s0 + LidarJob::kBin);
-    const double z = (mean - m.mean) / m.standardError(pathsPerPixel * pixels);
-    chi2 += z * z;
+    const test::ChannelMoments m =
+        test::lidarReturnChannels(truth, phaseBack, intensity, s0, s0 + LidarJob::kBin);
+    chi2 += m.chiSquare(mean, pathsPerPixel * pixels);
   }
   return chi2;
 }
@@ -152,7 +150,7 @@ TEST(ReferenceMediumTest, SingleScatteringFollowsTheLidarEquationPerBin) {
     float g;
   };
   constexpr int kPaths = 4096;
-  const double df = 16;  // bins (the channels' mean: one draw serves the three channels)
+  const double df = 16 * 3;  // bins x channels, through the channels' covariance
   const double critical = df + 5.0 * std::sqrt(2.0 * df);  // chi-square, far tail
   for (const Case k : {Case{physics::PHASE_ISOTROPIC, 0.0f},
                        Case{physics::PHASE_HENYEY_GREENSTEIN, 0.5f},
@@ -173,7 +171,7 @@ TEST(ReferenceMediumTest, SingleScatteringFollowsTheLidarEquationPerBin) {
     off.sigma_s_per_m *= 1.1f;
     const double chi2Off = lidarChiSquare(out.direct, off, back, intensity, kPaths);
     EXPECT_GT(chi2Off, critical);
-    std::printf("phase %d: chi-square %.1f (16 bins, channels' mean; critical %.1f), "
+    std::printf("phase %d: chi-square %.1f (16 bins x 3 channels' covariance; critical %.1f), "
                 "sigma_t +10%%: %.0f\n",
                 k.phase, chi2, critical, chi2Off);
     if (k.phase != physics::PHASE_ISOTROPIC) {
@@ -209,12 +207,13 @@ TEST(ReferenceMediumTest, BistaticSingleScatteringIsTheIntegralAlongThePixelRay)
       const glm::dvec3 o(ray.origin), dir(ray.direction);
       const PhaseAngleTable angles(m.phase, m.g);
       const Equiangular towardsLight(o, dir, std::numeric_limits<double>::infinity(), light, angles);
-      // Per bin, of the channels' mean (one free flight and one equiangular
-      // point serve the three channels, whose estimates are thus one draw's:
-      // one degree of freedom per pixel and bin): mean, E[A^2] + E[B^2],
-      // E[A], E[B]; and the mean a free flight alone would see without the
-      // equiangular share.
-      std::vector<double> mean(16), second(16), meanA(16), meanB(16);
+      // Per bin, the three channels together (one free flight and one
+      // equiangular point serve them, so their estimates are one draw's:
+      // a chi-square through their covariance, 3 degrees of freedom a pixel
+      // and bin): the mean, E[A A^T] + E[B B^T], E[A], E[B]; and the mean a
+      // free flight alone would see without the equiangular share.
+      std::vector<test::ChannelMoments> moments(16);
+      std::vector<glm::dvec3> meanA(16), meanB(16);
       constexpr double kStep = 2e-5;
       for (double t = 0.5 * kStep; t < kL0 + 16 * kWidth; t += kStep) {
         const glm::dvec3 p = o + dir * t;
@@ -223,29 +222,28 @@ TEST(ReferenceMediumTest, BistaticSingleScatteringIsTheIntegralAlongThePixelRay)
         if (b < 0 || b >= 16) continue;
         const double phase = physics::phaseFunction(
             m.phase, m.g, static_cast<float>(glm::dot((p - light) / d, -dir)));
-        const glm::dvec3 fc = sigmaS * glm::exp(-sigmaT * (t + d)) * intensity * (phase / (d * d));
-        const double f = (fc.x + fc.y + fc.z) / 3.0;
+        const glm::dvec3 f = sigmaS * glm::exp(-sigmaT * (t + d)) * intensity * (phase / (d * d));
         const double pa = test::mixturePdf(m, t), pb = towardsLight.pdf(t);
-        const double w = f / (pa + pb);
-        mean[b] += f * kStep;
-        second[b] += (pa + pb) * w * w * kStep;
+        const glm::dvec3 w = f / (pa + pb);
+        moments[b].mean += f * kStep;
+        moments[b].second += glm::outerProduct(w, w) * ((pa + pb) * kStep);
         meanA[b] += pa * w * kStep;
         meanB[b] += pb * w * kStep;
       }
       for (int b = 0; b < 16; ++b) {
-        const double m2 = second[b] + 2.0 * meanA[b] * meanB[b];
-        const double se = std::sqrt(std::max(0.0, m2 - mean[b] * mean[b]) / kPaths);
-        double v = 0.0;
-        for (int c = 0; c < 3; ++c) v += out.direct.at(y, x, b, c) / 3.0;
-        chi2 += (v - mean[b]) * (v - mean[b]) / (se * se);
+        test::ChannelMoments& mb = moments[b];
+        mb.second += glm::outerProduct(meanA[b], meanB[b]) + glm::outerProduct(meanB[b], meanA[b]);
+        const glm::dvec3 v(out.direct.at(y, x, b, 0), out.direct.at(y, x, b, 1),
+                           out.direct.at(y, x, b, 2));
+        chi2 += mb.chiSquare(v, kPaths);
         // Counting only one strategy's share (no MIS) is rejected.
-        chi2NoMis += (v - meanA[b]) * (v - meanA[b]) / (se * se);
-        ++dof;
+        chi2NoMis += mb.mahalanobis(v - meanA[b], kPaths);
+        dof += 3;
       }
     }
   }
   const double critical = dof + 5.0 * std::sqrt(2.0 * dof);
-  std::printf("bistatic: chi-square %.1f over %d pixel-bins, channels' mean (critical %.1f), "
+  std::printf("bistatic: chi-square %.1f over %d pixel-bin-channels, their covariance (critical %.1f), "
               "free-flight share alone %.0f\n", chi2, dof, critical, chi2NoMis);
   EXPECT_LT(chi2, critical);
   EXPECT_GT(chi2NoMis, critical);
