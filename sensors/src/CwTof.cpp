@@ -385,13 +385,15 @@ std::vector<SensorOutput> CwTofStream::finish(const Image* gt) {
     outs[outs.size() - 2].point_cloud = SensorOutput::PointCloud{"cwtof_amplitude_" + label, ""};
     if (gt) {
       addImage(outs, "cwtof_multipath_error_" + label, H, W, plane(mpiGtPerFrequency_, f), "m",
-               "CW-ToF multipath error" + at + " (noise-free, truth wrapped into range)", cmap,
+               "CW-ToF depth error" + at + " alone (noise-free wrapped depth - ground truth)",
+               cmap,
                {wrapped.attributes, true});
     }
   }
   if (gt) {
     addImage(outs, "cwtof_mpi_error", H, W, std::move(mpiGt_), "m",
-             "CW-ToF depth error against the ground truth (noise-free)", cmap, combinedError);
+             "CW-ToF depth error (noise-free depth, frequencies combined - ground truth)",
+             cmap, combinedError);
     addImage(outs, "cwtof_wiggling_error_map", H, W, std::move(wigglingMap_), "m",
              "CW-ToF wiggling error at each pixel's true depth: a noise-free single return there "
              "(multipath excluded)",
@@ -399,7 +401,8 @@ std::vector<SensorOutput> CwTofStream::finish(const Image* gt) {
   }
   if (withDirect_) {
     addImage(outs, "cwtof_mpi_error_direct", H, W, std::move(mpiDirect_), "m",
-             "CW-ToF depth error against the direct-only depth (noise-free)", cmap, combinedError);
+             "CW-ToF multipath error alone (noise-free depth - that of the direct light)", cmap,
+             combinedError);
   }
   if (psfError_) {
     addImage(outs, "cwtof_psf_error", H, W, psfError_->errors(cleanDepth_, depthRange_), "m",

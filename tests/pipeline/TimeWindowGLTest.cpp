@@ -82,6 +82,9 @@ TEST_F(TimeWindowGLTest, ValidatePredictsTheCutAndStrictFailsOnAProvenOne) {
   EXPECT_NE(r.output.find("tofsim: note: the time axis 5.003 ns .. 7.003 ns may cut light off"),
             std::string::npos)
       << r.output;
+  // A note (a loose bound), which names the warning render gives a measured cut.
+  EXPECT_NE(r.output.find("(render measures the cut and warns above 0.1 %)"), std::string::npos)
+      << r.output;
   // The shipped axis ends a little before the (loose) bound: a note at most.
   r = test::runCli("validate " + kSpad);
   EXPECT_EQ(r.exitCode, 0) << r.output;

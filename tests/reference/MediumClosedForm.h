@@ -70,6 +70,47 @@ inline Moments lidarReturn(const capture::Medium& m, int c, double phaseBack, do
   return out;
 }
 
+/// Mean and second-moment matrix of one path's estimates in one bin, the
+/// three channels together: a path's one free flight serves every channel
+/// (spectral MIS), so its channels' estimates are one draw's, strongly
+/// correlated; their covariance (second - mean mean^T) is not diagonal.
+struct ChannelMoments {
+  glm::dvec3 mean{0.0};
+  glm::dmat3 second{0.0};
+  /// The covariance of the mean of n independent paths.
+  glm::dmat3 covariance(double n) const {
+    return (second - glm::outerProduct(mean, mean)) / n;
+  }
+  /// d^T covariance^-1 d for a difference d of the mean of n paths.
+  double mahalanobis(const glm::dvec3& d, double n) const {
+    return glm::dot(d, glm::inverse(covariance(n)) * d);
+  }
+  /// The mean v of n paths against this: a chi-square of 3 degrees of freedom.
+  double chiSquare(const glm::dvec3& v, double n) const { return mahalanobis(v - mean, n); }
+};
+
+/// The single-scattered (lidar) return of the three channels from one-way
+/// distances [s0, s1], as lidarReturn, with the estimator's second-moment
+/// matrix int f f^T / p.
+inline ChannelMoments lidarReturnChannels(const capture::Medium& m, double phaseBack,
+                                          const glm::dvec3& intensity, double s0, double s1) {
+  ChannelMoments out;
+  if (!(s1 > s0)) return out;
+  constexpr int kSteps = 2000;  // even
+  const double h = (s1 - s0) / kSteps;
+  const glm::dvec3 sigmaT(m.sigmaT()), sigmaS(m.sigma_s_per_m);
+  for (int i = 0; i <= kSteps; ++i) {
+    const double s = s0 + i * h;
+    const double w = (i == 0 || i == kSteps) ? 1.0 : (i % 2 == 1 ? 4.0 : 2.0);
+    const glm::dvec3 f = sigmaS * phaseBack * intensity * glm::exp(-2.0 * sigmaT * s) / (s * s);
+    out.mean += w * f;
+    out.second += glm::outerProduct(f, f) * (w / mixturePdf(m, s));
+  }
+  out.mean *= h / 3.0;
+  out.second *= h / 3.0;
+  return out;
+}
+
 /// A surface at r whose return in vacuum is `vacuum` (channel c): the
 /// medium's is vacuum x T(r)^2, reached with probability P(r).
 inline Moments surfaceReturn(const capture::Medium& m, int c, double vacuum, double r) {

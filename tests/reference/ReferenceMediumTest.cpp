@@ -121,23 +121,25 @@ ReferenceSettings singleScattering(int32_t samples) {
   return s;
 }
 
-// Sum over the bins and channels of z^2 of the image-mean against the lidar
-// equation of `truth` (pixels pooled: they all see the same medium).
+// Sum over the bins of the image-mean's chi-square against the lidar
+// equation of `truth` (pixels pooled: they all see the same medium), the
+// three channels together through their covariance: one free flight serves
+// all three (spectral MIS), so their estimates are one draw's and nearly
+// proportional; counted as independent, each bin would count about three
+// times. 3 degrees of freedom a bin.
 double lidarChiSquare(const TransientVolume& v, const Medium& truth, double phaseBack,
                       const glm::dvec3& intensity, double pathsPerPixel) {
   const int pixels = v.width() * v.height();
   double chi2 = 0.0;
   for (int b = 0; b < v.bins(); ++b) {
-    for (int c = 0; c < 3; ++c) {
-      double mean = 0.0;
-      for (int y = 0; y < v.height(); ++y)
-        for (int x = 0; x < v.width(); ++x) mean += v.at(y, x, b, c) / pixels;
-      const double s0 = LidarJob::kS0 + b * LidarJob::kBin;
-      const test::Moments m =
-          test::lidarReturn(truth, c, phaseBack, intensity[c], s0, s0 + LidarJob::kBin);
-      const double z = (mean - m.mean) / m.standardError(pathsPerPixel * pixels);
-      chi2 += z * z;
-    }
+    glm::dvec3 mean(0.0);
+    for (int y = 0; y < v.height(); ++y)
+      for (int x = 0; x < v.width(); ++x)
+        for (int c = 0; c < 3; ++c) mean[c] += v.at(y, x, b, c) / pixels;
+    const double s0 = LidarJob::kS0 + b * LidarJob::kBin;
+    const test::ChannelMoments m =
+        test::lidarReturnChannels(truth, phaseBack, intensity, s0, s0 + LidarJob::kBin);
+    chi2 += m.chiSquare(mean, pathsPerPixel * pixels);
   }
   return chi2;
 }
@@ -148,7 +150,7 @@ TEST(ReferenceMediumTest, SingleScatteringFollowsTheLidarEquationPerBin) {
     float g;
   };
   constexpr int kPaths = 4096;
-  const double df = 16 * 3;
+  const double df = 16 * 3;  // bins x channels, through the channels' covariance
   const double critical = df + 5.0 * std::sqrt(2.0 * df);  // chi-square, far tail
   for (const Case k : {Case{physics::PHASE_ISOTROPIC, 0.0f},
                        Case{physics::PHASE_HENYEY_GREENSTEIN, 0.5f},
@@ -169,7 +171,8 @@ TEST(ReferenceMediumTest, SingleScatteringFollowsTheLidarEquationPerBin) {
     off.sigma_s_per_m *= 1.1f;
     const double chi2Off = lidarChiSquare(out.direct, off, back, intensity, kPaths);
     EXPECT_GT(chi2Off, critical);
-    std::printf("phase %d: chi-square %.1f (48 bins x channels, critical %.1f), sigma_t +10%%: %.0f\n",
+    std::printf("phase %d: chi-square %.1f (16 bins x 3 channels' covariance; critical %.1f), "
+                "sigma_t +10%%: %.0f\n",
                 k.phase, chi2, critical, chi2Off);
     if (k.phase != physics::PHASE_ISOTROPIC) {
       EXPECT_GT(lidarChiSquare(out.direct, m, 1.0 / (4.0 * M_PI), intensity, kPaths), critical);
@@ -204,9 +207,13 @@ TEST(ReferenceMediumTest, BistaticSingleScatteringIsTheIntegralAlongThePixelRay)
       const glm::dvec3 o(ray.origin), dir(ray.direction);
       const PhaseAngleTable angles(m.phase, m.g);
       const Equiangular towardsLight(o, dir, std::numeric_limits<double>::infinity(), light, angles);
-      // Per bin and channel: mean, E[A^2] + E[B^2], E[A], E[B]; and the
-      // mean a free flight alone would see without the equiangular share.
-      std::vector<glm::dvec3> mean(16), second(16), meanA(16), meanB(16);
+      // Per bin, the three channels together (one free flight and one
+      // equiangular point serve them, so their estimates are one draw's:
+      // a chi-square through their covariance, 3 degrees of freedom a pixel
+      // and bin): the mean, E[A A^T] + E[B B^T], E[A], E[B]; and the mean a
+      // free flight alone would see without the equiangular share.
+      std::vector<test::ChannelMoments> moments(16);
+      std::vector<glm::dvec3> meanA(16), meanB(16);
       constexpr double kStep = 2e-5;
       for (double t = 0.5 * kStep; t < kL0 + 16 * kWidth; t += kStep) {
         const glm::dvec3 p = o + dir * t;
@@ -218,26 +225,25 @@ TEST(ReferenceMediumTest, BistaticSingleScatteringIsTheIntegralAlongThePixelRay)
         const glm::dvec3 f = sigmaS * glm::exp(-sigmaT * (t + d)) * intensity * (phase / (d * d));
         const double pa = test::mixturePdf(m, t), pb = towardsLight.pdf(t);
         const glm::dvec3 w = f / (pa + pb);
-        mean[b] += f * kStep;
-        second[b] += (pa + pb) * w * w * kStep;
+        moments[b].mean += f * kStep;
+        moments[b].second += glm::outerProduct(w, w) * ((pa + pb) * kStep);
         meanA[b] += pa * w * kStep;
         meanB[b] += pb * w * kStep;
       }
       for (int b = 0; b < 16; ++b) {
-        for (int c = 0; c < 3; ++c) {
-          const double m2 = second[b][c] + 2.0 * meanA[b][c] * meanB[b][c];
-          const double se = std::sqrt(std::max(0.0, m2 - mean[b][c] * mean[b][c]) / kPaths);
-          const double v = out.direct.at(y, x, b, c);
-          chi2 += (v - mean[b][c]) * (v - mean[b][c]) / (se * se);
-          // Counting only one strategy's share (no MIS) is rejected.
-          chi2NoMis += (v - meanA[b][c]) * (v - meanA[b][c]) / (se * se);
-          ++dof;
-        }
+        test::ChannelMoments& mb = moments[b];
+        mb.second += glm::outerProduct(meanA[b], meanB[b]) + glm::outerProduct(meanB[b], meanA[b]);
+        const glm::dvec3 v(out.direct.at(y, x, b, 0), out.direct.at(y, x, b, 1),
+                           out.direct.at(y, x, b, 2));
+        chi2 += mb.chiSquare(v, kPaths);
+        // Counting only one strategy's share (no MIS) is rejected.
+        chi2NoMis += mb.mahalanobis(v - meanA[b], kPaths);
+        dof += 3;
       }
     }
   }
   const double critical = dof + 5.0 * std::sqrt(2.0 * dof);
-  std::printf("bistatic: chi-square %.1f over %d pixel-bin-channels (critical %.1f), "
+  std::printf("bistatic: chi-square %.1f over %d pixel-bin-channels, their covariance (critical %.1f), "
               "free-flight share alone %.0f\n", chi2, dof, critical, chi2NoMis);
   EXPECT_LT(chi2, critical);
   EXPECT_GT(chi2NoMis, critical);

@@ -15,8 +15,9 @@
 // estimation to the point light, which a path only reaches by passing within
 // about a mean free path of it, so the noise grows steeply with rho / l* and
 // with g (at g 0.5 and these 65 536 paths a 1 cm bin is 20-40 % noise);
-// rho = 5 l* is the largest a test of a few seconds resolves. There the
-// early light (the peak, c t ~ 10 l*) is not diffusive: with 8x the paths
+// rho = 5 l* is the largest a test of a few seconds resolves (farther and
+// later, with a source outside the medium: ReferenceDiffusionSpreadTest).
+// There the early light (the peak, c t ~ 10 l*) is not diffusive: with 8x the paths
 // the reference's peak comes 15 % after the closed form's, its mean path
 // 10 % after, its level is 0.86 of the P1 radiance (diffusion's faults near
 // a source and a boundary; Kienle and Patterson 1997 fit diffusion to Monte

@@ -1,6 +1,7 @@
 #include "AnalyticScenes.h"
 
 #include <cmath>
+#include <cstdint>
 
 namespace tofsim::test {
 
@@ -21,6 +22,29 @@ void addQuad(scene::Scene& scene, const glm::vec3& center, const glm::vec3& norm
   mesh.indices = {0, 1, 2, 0, 2, 3};
   mesh.material = static_cast<int32_t>(scene.materials.size() - 1);
   scene.meshes.push_back(mesh);
+}
+
+void addRegionBox(scene::Scene& scene, const std::string& name, const glm::vec3& lo,
+                  const glm::vec3& hi) {
+  scene::Mesh mesh;
+  mesh.name = name;
+  for (int i = 0; i < 8; ++i) {  // corner i: bit 0 picks x, bit 1 y, bit 2 z
+    mesh.positions_world.emplace_back(i & 1 ? hi.x : lo.x, i & 2 ? hi.y : lo.y, i & 4 ? hi.z : lo.z);
+    mesh.normals_world.emplace_back(0.0f, 0.0f, 1.0f);  // an interface: never shaded
+  }
+  const glm::vec3 centre = 0.5f * (lo + hi);
+  const uint32_t faces[6][4] = {{0, 1, 3, 2}, {4, 5, 7, 6}, {0, 1, 5, 4},
+                                {2, 3, 7, 6}, {0, 2, 6, 4}, {1, 3, 7, 5}};  // each around its face
+  for (const auto& f : faces) {
+    const glm::vec3 a = mesh.positions_world[f[0]], b = mesh.positions_world[f[1]],
+                    c = mesh.positions_world[f[2]];
+    const bool outwards = glm::dot(glm::cross(b - a, c - a), a - centre) > 0.0f;
+    for (const uint32_t k : {1u, 2u}) {  // the quad's two triangles, (0, k, k + 1)
+      mesh.indices.insert(mesh.indices.end(),
+                          {f[0], outwards ? f[k] : f[k + 1], outwards ? f[k + 1] : f[k]});
+    }
+  }
+  scene.meshes.push_back(std::move(mesh));
 }
 
 scene::Scene makePlane(float size_m, const glm::vec3& albedo) {

@@ -1,6 +1,8 @@
 #pragma once
 // Small scenes with closed-form answers, built in code.
 
+#include <string>
+
 #include <glm/glm.hpp>
 
 #include "tofsim/scene/Scene.h"
@@ -10,6 +12,12 @@ namespace tofsim::test {
 /// Adds a square of side `size_m` centred at `center`, facing `normal`.
 void addQuad(scene::Scene& scene, const glm::vec3& center, const glm::vec3& normal, float size_m,
              const glm::vec3& albedo);
+
+/// Adds one closed mesh `name`, the box [lo, hi] (12 triangles wound
+/// outwards, no material): a medium region's interface once
+/// scene::takeRegionMesh takes it out of the scene's surfaces.
+void addRegionBox(scene::Scene& scene, const std::string& name, const glm::vec3& lo,
+                  const glm::vec3& hi);
 
 /// One diffuse square facing +z at z = 0, `size_m` wide.
 scene::Scene makePlane(float size_m, const glm::vec3& albedo = glm::vec3(0.5f));

@@ -153,7 +153,11 @@ void checkAxisBeforeRender(const config::RunConfig& config, const capture::Rende
   const AxisPrediction p = predictAxisCut(config, job);
   if (p.verdict == AxisPrediction::Verdict::Cuts) warnOrThrow(config, "time", p.message);
   if (p.verdict == AxisPrediction::Verdict::MayCut && notes) {
-    std::fprintf(stderr, "tofsim: note: %s\n", p.message.c_str());
+    // A note, not a warning: the bounds are loose, most axes that end
+    // inside them lose nothing. What is lost is measured by render, which
+    // warns (the word of every cut) when it is more than kWindowLossWarning.
+    std::fprintf(stderr, "tofsim: note: %s (render measures the cut and warns above %g %%)\n",
+                 p.message.c_str(), 100.0 * kWindowLossWarning);
   }
 }
 
