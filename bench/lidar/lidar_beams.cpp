@@ -49,8 +49,9 @@ int main(int argc, char** argv) {
   // the waveforms cost beyond tracing.
   const std::vector<lidar::BeamRay> beamRays =
       lidar::beamRays(spec.beam_rays, spec.divergence_rad, spec.profile);
-  // The same rays as Embree packets, a beam's rays traced together.
-  const auto tracePackets = [&] {
+  // The same rays as packets, a beam's rays traced together: as one bundle
+  // (RayScene::intersectPacket) or as Embree's packets (rtcIntersect8).
+  const auto tracePackets = [&](bool embree) {
     std::vector<double> sums(static_cast<std::size_t>(channels) * azimuths / 256 + 1, 0.0);
     parallelForBlocks(static_cast<std::size_t>(channels) * azimuths, 256, threads,
                       [&](std::size_t begin, std::size_t end) {
@@ -68,7 +69,11 @@ int main(int argc, char** argv) {
                             for (int i = 0; i < n; ++i) {
                               d[i] = lidar::rayDirection(f, beamRays[first + i].offset_rad);
                             }
-                            rayScene.intersectPacket(spec.position_world, d, n, hits);
+                            if (embree) {
+                              rayScene.intersectEmbreePacket(spec.position_world, d, n, hits);
+                            } else {
+                              rayScene.intersectPacket(spec.position_world, d, n, hits);
+                            }
                             for (int i = 0; i < n; ++i) {
                               if (hits[i]) sums[begin / 256] += hits[i]->distance_m;
                             }
@@ -101,11 +106,14 @@ int main(int argc, char** argv) {
     (void)traceAll();
     bestTrace = std::min(bestTrace, bench::seconds(start));
   }
-  double bestPackets = 1e300;
+  double bestPackets = 1e300, bestEmbreePackets = 1e300;
   for (int r = 0; r < repeats; ++r) {
-    const auto start = std::chrono::steady_clock::now();
-    (void)tracePackets();
+    auto start = std::chrono::steady_clock::now();
+    (void)tracePackets(false);
     bestPackets = std::min(bestPackets, bench::seconds(start));
+    start = std::chrono::steady_clock::now();
+    (void)tracePackets(true);
+    bestEmbreePackets = std::min(bestEmbreePackets, bench::seconds(start));
   }
   double best = 1e300, bestReturns = 1e300;
   double bestSparse = 1e300, bestSparseReturns = 1e300, bestFrame = 1e300;
@@ -138,6 +146,8 @@ int main(int argc, char** argv) {
               best, beams / best, beams * rays / best, bestReturns, beams / bestReturns, points);
   std::printf("rays alone, packets: %.3f s = %.0f beams/s (%.0f rays/s)\n", bestPackets,
               beams / bestPackets, beams * rays / bestPackets);
+  std::printf("rays alone, Embree packets: %.3f s = %.0f beams/s (%.0f rays/s)\n",
+              bestEmbreePackets, beams / bestEmbreePackets, beams * rays / bestEmbreePackets);
   std::printf("waveforms, no volume: %.3f s = %.0f beams/s; returns: %.3f s; waveforms and "
               "returns: %.3f s = %.0f beams/s; %zu points\n",
               bestSparse, beams / bestSparse, bestSparseReturns, bestFrame, beams / bestFrame,

@@ -5,6 +5,7 @@
 #include <limits>
 #include <string>
 
+#include "BeamBvh.h"
 #include "tofsim/scene/TextureSampling.h"
 #include "tofsim/util/Error.h"
 
@@ -35,8 +36,10 @@ glm::vec3 surfacePoint(const scene::Scene& scene, uint32_t mesh, uint32_t triang
          v * m.positions_world[tri[2]];
 }
 
-RayScene::RayScene(const scene::Scene& scene, int threads) : scene_(scene) {
-  const std::string config = threads > 0 ? "threads=" + std::to_string(threads) : std::string();
+RayScene::RayScene(const scene::Scene& scene, int threads, const std::string& isa)
+    : scene_(scene), isa_(isa) {
+  std::string config = threads > 0 ? "threads=" + std::to_string(threads) : std::string();
+  if (!isa.empty()) config += (config.empty() ? "isa=" : ",isa=") + isa;
   device_ = rtcNewDevice(config.c_str());
   if (device_ == nullptr) throw InputError("embree: cannot create a device");
   rtcScene_ = rtcNewScene(device_);
@@ -96,7 +99,41 @@ bool RayScene::updateMeshes(const std::vector<std::size_t>& moved) {
   }
   rtcCommitScene(rtcScene_);
   throwIfDeviceError(device_, "BVH update");
+#if defined(TOFSIM_RAYS_BUNDLES)
+  if (beamBvh_) beamBvh_->refit(bundleTriangles());
+#endif
   return true;
+}
+
+std::vector<detail::BundleTriangle> RayScene::bundleTriangles() const {
+  std::vector<detail::BundleTriangle> out;
+  for (std::size_t m = 0; m < scene_.meshes.size(); ++m) {
+    const scene::Mesh& mesh = scene_.meshes[m];
+    for (std::size_t t = 0; t < mesh.triangleCount(); ++t) {
+      detail::BundleTriangle tri;
+      float* corners[3] = {tri.v0, tri.v1, tri.v2};
+      for (int k = 0; k < 3; ++k) {
+        const glm::vec3& p = mesh.positions_world[mesh.indices[3 * t + k]];
+        for (int c = 0; c < 3; ++c) corners[k][c] = p[c];
+      }
+      tri.mesh = static_cast<uint32_t>(m);
+      tri.triangle = static_cast<uint32_t>(t);
+      out.push_back(tri);
+    }
+  }
+  return out;
+}
+
+const detail::BeamBvh* RayScene::beamBvh() const {
+#if defined(TOFSIM_RAYS_BUNDLES)
+  std::call_once(beamOnce_, [this] {
+    const detail::BundleIsa isa = detail::bundleIsaFor(isa_.c_str());
+    if (isa != detail::BundleIsa::None) {
+      beamBvh_ = std::make_unique<detail::BeamBvh>(bundleTriangles(), isa);
+    }
+  });
+#endif
+  return beamBvh_.get();
 }
 
 RayScene::~RayScene() {
@@ -125,9 +162,59 @@ std::optional<SurfaceHit> RayScene::intersect(const glm::vec3& origin, const glm
   return completeHit(direction, rh.ray.tfar, rh.hit.geomID, rh.hit.primID, {rh.hit.u, rh.hit.v});
 }
 
-void RayScene::intersectPacket(const glm::vec3& origin, const glm::vec3* directions, int count,
-                               std::optional<SurfaceHit>* hits) const {
+int RayScene::intersectPacket(const glm::vec3& origin, const glm::vec3* directions, int count,
+                              std::optional<SurfaceHit>* hits) const {
   TOFSIM_CHECK(count >= 0 && count <= kPacketSize);
+  static_assert(kPacketSize == detail::kBundleLanes);
+  if (const detail::BeamBvh* bvh = count > 0 ? beamBvh() : nullptr) {
+    detail::BundleRays rays;
+    rays.ox = origin.x;
+    rays.oy = origin.y;
+    rays.oz = origin.z;
+    for (int i = 0; i < kPacketSize; ++i) {
+      const glm::vec3 d = i < count ? directions[i] : directions[0];
+      rays.dx[i] = d.x;
+      rays.dy[i] = d.y;
+      rays.dz[i] = d.z;
+      rays.active[i] = i < count ? -1 : 0;
+    }
+#if defined(TOFSIM_RAYS_BUNDLES)
+    if (bvh->trace(rays)) {
+      int bundled = 0;
+      for (int i = 0; i < count; ++i) {
+        // Where Embree's own order or boxes decide (two triangles at the
+        // same t, a hit within rounding of an edge), Embree answers.
+        const bool edge = rays.edgeT[i] <= rays.t[i] && std::isfinite(rays.edgeT[i]);
+        if (rays.tie[i] != 0 || edge) {
+          hits[i] = intersect(origin, directions[i]);
+        } else if (rays.hit[i] < 0) {
+          hits[i].reset();
+          ++bundled;
+        } else {
+          const detail::BundleTriangle& tri = bvh->triangle(rays.hit[i]);
+          hits[i] = completeHit(directions[i], rays.t[i], tri.mesh, tri.triangle,
+                                {rays.u[i], rays.v[i]});
+          ++bundled;
+        }
+      }
+      return bundled;
+    }
+#endif
+  }
+  intersectEmbreePacket(origin, directions, count, hits);
+  return 0;
+}
+
+void RayScene::intersectEmbreePacket(const glm::vec3& origin, const glm::vec3* directions,
+                                     int count, std::optional<SurfaceHit>* hits) const {
+  TOFSIM_CHECK(count >= 0 && count <= kPacketSize);
+  constexpr int kEmbreePacket = 8;  // rtcIntersect8: AVX2's width
+  if (count > kEmbreePacket) {
+    intersectEmbreePacket(origin, directions, kEmbreePacket, hits);
+    intersectEmbreePacket(origin, directions + kEmbreePacket, count - kEmbreePacket,
+                          hits + kEmbreePacket);
+    return;
+  }
   if (!packets_) {  // an Embree built without ray packets: one ray at a time
     for (int i = 0; i < count; ++i) hits[i] = intersect(origin, directions[i]);
     return;
@@ -137,9 +224,9 @@ void RayScene::intersectPacket(const glm::vec3& origin, const glm::vec3* directi
   // Not RTC_INTERSECT_CONTEXT_FLAG_COHERENT: its frustum traversal drops
   // rays whose direction's signs differ from the packet's (a beam straight
   // along an axis has both), which lidar_street's azimuth 0 showed.
-  alignas(32) int valid[kPacketSize];
+  alignas(32) int valid[kEmbreePacket];
   alignas(32) RTCRayHit8 rh;
-  for (int i = 0; i < kPacketSize; ++i) {
+  for (int i = 0; i < kEmbreePacket; ++i) {
     const bool on = i < count;
     valid[i] = on ? -1 : 0;
     const glm::vec3 d = on ? directions[i] : glm::vec3(0.0f, 0.0f, 1.0f);
