@@ -17,6 +17,9 @@ constexpr int kBundleLanes = 16;
 struct BundleTriangle {
   float v0[3], v1[3], v2[3];
   uint32_t mesh = 0, triangle = 0;
+  /// Its unit normal as RayScene::completeHit works it out (not read by
+  /// the kernels): worked out once, not once per hit.
+  float normal[3] = {0.0f, 0.0f, 0.0f};
 };
 
 /// The rays of a bundle and, per ray, the closest hit found so far in

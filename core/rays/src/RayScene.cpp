@@ -118,6 +118,8 @@ std::vector<detail::BundleTriangle> RayScene::bundleTriangles() const {
       }
       tri.mesh = static_cast<uint32_t>(m);
       tri.triangle = static_cast<uint32_t>(t);
+      const glm::vec3 n = triangleNormal(tri.mesh, tri.triangle);
+      for (int c = 0; c < 3; ++c) tri.normal[c] = n[c];
       out.push_back(tri);
     }
   }
@@ -166,7 +168,10 @@ int RayScene::intersectPacket(const glm::vec3& origin, const glm::vec3* directio
                               std::optional<SurfaceHit>* hits) const {
   TOFSIM_CHECK(count >= 0 && count <= kPacketSize);
   static_assert(kPacketSize == detail::kBundleLanes);
-  if (const detail::BeamBvh* bvh = count > 0 ? beamBvh() : nullptr) {
+  // A bundle's traversal costs about what Embree's single rays do for a
+  // few rays (measured: one ray a bundle is 3-6x slower): few rays go to Embree.
+  constexpr int kFewestBundled = 4;
+  if (const detail::BeamBvh* bvh = count >= kFewestBundled ? beamBvh() : nullptr) {
     detail::BundleRays rays;
     rays.ox = origin.x;
     rays.oy = origin.y;
@@ -192,8 +197,9 @@ int RayScene::intersectPacket(const glm::vec3& origin, const glm::vec3* directio
           ++bundled;
         } else {
           const detail::BundleTriangle& tri = bvh->triangle(rays.hit[i]);
+          const glm::vec3 normal(tri.normal[0], tri.normal[1], tri.normal[2]);
           hits[i] = completeHit(directions[i], rays.t[i], tri.mesh, tri.triangle,
-                                {rays.u[i], rays.v[i]});
+                                {rays.u[i], rays.v[i]}, &normal);
           ++bundled;
         }
       }
@@ -256,8 +262,18 @@ void RayScene::intersectEmbreePacket(const glm::vec3& origin, const glm::vec3* d
   }
 }
 
+glm::vec3 RayScene::triangleNormal(uint32_t geomID, uint32_t primID) const {
+  const scene::Mesh& mesh = scene_.meshes[geomID];
+  const uint32_t* tri = &mesh.indices[static_cast<std::size_t>(primID) * 3];
+  const glm::vec3& p0 = mesh.positions_world[tri[0]];
+  const glm::vec3& p1 = mesh.positions_world[tri[1]];
+  const glm::vec3& p2 = mesh.positions_world[tri[2]];
+  return glm::normalize(glm::cross(p1 - p0, p2 - p0));
+}
+
 SurfaceHit RayScene::completeHit(const glm::vec3& direction, float distance_m, uint32_t geomID,
-                                 uint32_t primID, glm::vec2 barycentric) const {
+                                 uint32_t primID, glm::vec2 barycentric,
+                                 const glm::vec3* unitNormal) const {
   const scene::Mesh& mesh = scene_.meshes[geomID];
   const uint32_t* tri = &mesh.indices[static_cast<std::size_t>(primID) * 3];
   const float u = barycentric.x, v = barycentric.y, w = 1.0f - u - v;
@@ -269,11 +285,9 @@ SurfaceHit RayScene::completeHit(const glm::vec3& direction, float distance_m, u
   // Barycentric interpolation, like the rasterizer's G-buffer, rather than
   // origin + t * direction: it lies on the triangle to float precision.
   hit.position_world = surfacePoint(scene_, hit.mesh, hit.triangle, hit.barycentric);
-  const glm::vec3& p0 = mesh.positions_world[tri[0]];
-  const glm::vec3& p1 = mesh.positions_world[tri[1]];
-  const glm::vec3& p2 = mesh.positions_world[tri[2]];
   const glm::vec3 back = -direction;
-  hit.geometric_world = faceTowards(glm::normalize(glm::cross(p1 - p0, p2 - p0)), back);
+  hit.geometric_world =
+      faceTowards(unitNormal != nullptr ? *unitNormal : triangleNormal(geomID, primID), back);
   glm::vec3 n = hit.geometric_world;
   if (mesh.normals_world.size() == mesh.positions_world.size()) {
     const glm::vec3 interpolated = w * mesh.normals_world[tri[0]] + u * mesh.normals_world[tri[1]] +

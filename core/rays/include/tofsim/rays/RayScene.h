@@ -97,8 +97,11 @@ class RayScene {
   float epsilon_m() const { return epsilon_m_; }
 
  private:
+  /// unitNormal: the triangle's unit normal (triangleNormal), where known.
   SurfaceHit completeHit(const glm::vec3& direction, float distance_m, uint32_t geomID,
-                         uint32_t primID, glm::vec2 barycentric) const;
+                         uint32_t primID, glm::vec2 barycentric,
+                         const glm::vec3* unitNormal = nullptr) const;
+  glm::vec3 triangleNormal(uint32_t geomID, uint32_t primID) const;
   /// The scene's triangles as Embree holds them, mesh by mesh.
   std::vector<detail::BundleTriangle> bundleTriangles() const;
   /// The bundles' BVH, built on first use (null: Embree traces packets).
