@@ -65,9 +65,9 @@ FrameComparison compareFrame(const rays::RayScene& scene, const LidarSpec& spec,
           << (alone ? std::to_string(alone->triangle) + " at " + std::to_string(alone->distance_m)
                     : std::string("nothing"))
           << ", packet "
-          << (hits[i] ? std::to_string(hits[i]->triangle) + " at " +
-                            std::to_string(hits[i]->distance_m)
-                      : std::string("nothing"));
+          << (hits[i]
+                  ? std::to_string(hits[i]->triangle) + " at " + std::to_string(hits[i]->distance_m)
+                  : std::string("nothing"));
         out.first = s.str();
       }
     }
@@ -87,8 +87,8 @@ FrameComparison compareFrame(const rays::RayScene& scene, const LidarSpec& spec,
 }
 
 TEST(LidarBundleTest, BundlesHitWhatEachRayHitsAlone) {
-  const scene::Scene street = scene::loadGltf(std::string(TOFSIM_SOURCE_DIR) +
-                                              "/configs/scenes/lidar_street.gltf");
+  const scene::Scene street =
+      scene::loadGltf(std::string(TOFSIM_SOURCE_DIR) + "/configs/scenes/lidar_street.gltf");
   if (!__builtin_cpu_supports("avx2") || !__builtin_cpu_supports("fma")) {
     GTEST_SKIP() << "no AVX2 here: Embree traces every packet";
   }

@@ -1,12 +1,12 @@
 #include "BeamBvh.h"
 
+#include <emmintrin.h>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstring>
 #include <limits>
-
-#include <emmintrin.h>
 
 namespace tofsim::rays::detail {
 
@@ -17,7 +17,8 @@ BundleIsa bundleIsaFor(const char* embreeIsa) {
   const bool avx2 = __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma") &&
                     __builtin_cpu_supports("bmi2");
   const char* isa = embreeIsa == nullptr ? "" : embreeIsa;
-  if (std::strcmp(isa, "") == 0) return avx512 ? BundleIsa::Avx512 : avx2 ? BundleIsa::Avx2 : BundleIsa::None;
+  if (std::strcmp(isa, "") == 0)
+    return avx512 ? BundleIsa::Avx512 : avx2 ? BundleIsa::Avx2 : BundleIsa::None;
   if (std::strcmp(isa, "avx512") == 0 && avx512) return BundleIsa::Avx512;
   if (std::strcmp(isa, "avx2") == 0 && avx2) return BundleIsa::Avx2;
   return BundleIsa::None;  // an older instruction set: Embree traces
@@ -32,7 +33,9 @@ V3 operator-(V3 a, V3 b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
 V3 operator+(V3 a, V3 b) { return {a.x + b.x, a.y + b.y, a.z + b.z}; }
 V3 operator*(float s, V3 a) { return {s * a.x, s * a.y, s * a.z}; }
 float dot(V3 a, V3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
-V3 cross(V3 a, V3 b) { return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x}; }
+V3 cross(V3 a, V3 b) {
+  return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
+}
 V3 normalize(V3 a) { return (1.0f / std::sqrt(dot(a, a))) * a; }
 V3 absv(V3 a) { return {std::fabs(a.x), std::fabs(a.y), std::fabs(a.z)}; }
 float sum(V3 a) { return a.x + a.y + a.z; }
@@ -45,16 +48,17 @@ V3 vertex(const float* p) { return {p[0], p[1], p[2]}; }
 // its distance (and a box by 1e-5 of its distance and size).
 struct Pyramid {
   V3 origin;
-  __m128 nx, ny, nz;  // the planes' normals
-  __m128 ax, ay, az;  // their absolute values
+  __m128 nx, ny, nz;                        // the planes' normals
+  __m128 ax, ay, az;                        // their absolute values
   bool outside(V3 centre, V3 half) const {  // a box: centre and half extents
     const V3 c = centre - origin;
     const float margin = 1e-5f * (sum(absv(c)) + sum(half));
     const __m128 s = _mm_add_ps(
         _mm_add_ps(_mm_add_ps(_mm_mul_ps(nx, _mm_set1_ps(c.x)), _mm_mul_ps(ny, _mm_set1_ps(c.y))),
                    _mm_mul_ps(nz, _mm_set1_ps(c.z))),
-        _mm_add_ps(_mm_add_ps(_mm_mul_ps(ax, _mm_set1_ps(half.x)), _mm_mul_ps(ay, _mm_set1_ps(half.y))),
-                   _mm_mul_ps(az, _mm_set1_ps(half.z))));
+        _mm_add_ps(
+            _mm_add_ps(_mm_mul_ps(ax, _mm_set1_ps(half.x)), _mm_mul_ps(ay, _mm_set1_ps(half.y))),
+            _mm_mul_ps(az, _mm_set1_ps(half.z))));
     return _mm_movemask_ps(_mm_cmplt_ps(s, _mm_set1_ps(-margin))) != 0;
   }
   // All three vertices outside one plane.
@@ -62,9 +66,9 @@ struct Pyramid {
     __m128 all = _mm_castsi128_ps(_mm_set1_epi32(-1));
     for (const float* v : {t.v0, t.v1, t.v2}) {
       const V3 q = vertex(v) - origin;
-      const __m128 s = _mm_add_ps(
-          _mm_add_ps(_mm_mul_ps(nx, _mm_set1_ps(q.x)), _mm_mul_ps(ny, _mm_set1_ps(q.y))),
-          _mm_mul_ps(nz, _mm_set1_ps(q.z)));
+      const __m128 s =
+          _mm_add_ps(_mm_add_ps(_mm_mul_ps(nx, _mm_set1_ps(q.x)), _mm_mul_ps(ny, _mm_set1_ps(q.y))),
+                     _mm_mul_ps(nz, _mm_set1_ps(q.z)));
       all = _mm_and_ps(all, _mm_cmplt_ps(s, _mm_set1_ps(-1e-5f * sum(absv(q)))));
     }
     return _mm_movemask_ps(all) != 0;
@@ -110,8 +114,7 @@ BeamBvh::BeamBvh(std::vector<BundleTriangle> triangles, BundleIsa isa) {
 // Binned SAH over the triangles' box centres; leaves of kLeafTriangles at
 // most (a median split where the bins cannot separate them, and below
 // depth kSahDepth: the traversal's stack holds the tree's depth).
-void BeamBvh::build(std::vector<Item>& items, int32_t node, int32_t begin, int32_t end,
-                    int depth) {
+void BeamBvh::build(std::vector<Item>& items, int32_t node, int32_t begin, int32_t end, int depth) {
   constexpr int kSahDepth = 48;
   const int32_t count = end - begin;
   if (count <= kLeafTriangles) {
@@ -207,7 +210,7 @@ void BeamBvh::refit(const std::vector<BundleTriangle>& triangles) {
 
 void BeamBvh::refitBoxes() {
   constexpr float kMax = std::numeric_limits<float>::max();
-  std::vector<std::array<V3, 2>> boxes(nodes_.size());  // lo, hi
+  std::vector<std::array<V3, 2>> boxes(nodes_.size());                   // lo, hi
   for (auto n = static_cast<int64_t>(nodes_.size()) - 1; n >= 0; --n) {  // children first
     Node& node = nodes_[n];
     V3 lo{kMax, kMax, kMax}, hi{-kMax, -kMax, -kMax};
@@ -293,7 +296,8 @@ bool BeamBvh::trace(BundleRays& rays) const {
     const Node& node = nodes_[stack[--top]];
     if (node.count == 0) {
       float d2[2];
-      const bool in[2] = {touches(nodes_[node.first], d2[0]), touches(nodes_[node.first + 1], d2[1])};
+      const bool in[2] = {touches(nodes_[node.first], d2[0]),
+                          touches(nodes_[node.first + 1], d2[1])};
       const int nearer = d2[1] < d2[0] ? 1 : 0;
       if (in[1 - nearer]) stack[top++] = node.first + 1 - nearer;  // the farther, later
       if (in[nearer]) stack[top++] = node.first + nearer;

@@ -29,12 +29,12 @@ struct alignas(64) BundleRays {
   float dx[kBundleLanes], dy[kBundleLanes], dz[kBundleLanes];
   float t[kBundleLanes];  ///< the closest hit's distance; +inf: none yet
   float U[kBundleLanes], V[kBundleLanes], UVW[kBundleLanes];
-  int32_t hit[kBundleLanes];     ///< the closest hit's triangle (its index in `triangles`), -1: none
-  int32_t tie[kBundleLanes];     ///< nonzero: another triangle gave the same t (Embree decides)
+  int32_t hit[kBundleLanes];  ///< the closest hit's triangle (its index in `triangles`), -1: none
+  int32_t tie[kBundleLanes];  ///< nonzero: another triangle gave the same t (Embree decides)
   /// The nearest t at which a triangle was accepted within rounding of its
   /// edge (+inf: none): where that is not beyond the closest hit, Embree decides.
   float edgeT[kBundleLanes];
-  int32_t active[kBundleLanes];  ///< -1: a ray, 0: an empty lane
+  int32_t active[kBundleLanes];            ///< -1: a ray, 0: an empty lane
   float u[kBundleLanes], v[kBundleLanes];  ///< Embree's barycentrics, after finish
   float ox = 0.0f, oy = 0.0f, oz = 0.0f;
 };

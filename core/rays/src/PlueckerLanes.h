@@ -76,8 +76,7 @@ void intersectLanes(BundleRays& rays, const BundleTriangle* triangles, const int
     const Vec v1 = sub(Vec{tri.v1[0], tri.v1[1], tri.v1[2]}, origin);
     const Vec v2 = sub(Vec{tri.v2[0], tri.v2[1], tri.v2[2]}, origin);
     const Vec e0 = sub(v2, v0), e1 = sub(v0, v1), e2 = sub(v1, v2);
-    const Vec c0 = cross(e0, add(v2, v0)), c1 = cross(e1, add(v0, v1)),
-              c2 = cross(e2, add(v1, v2));
+    const Vec c0 = cross(e0, add(v2, v0)), c1 = cross(e1, add(v0, v1)), c2 = cross(e2, add(v1, v2));
     const Vec ng = stableNormal(e0, e1, e2);
     const float dotT = dot(v0, ng);
     // Within how much of 0 U, V and W are uncertain (kEdgeBand of the size
@@ -96,9 +95,9 @@ void intersectLanes(BundleRays& rays, const BundleTriangle* triangles, const int
       const F W = dotLanes<L>(c2, dx, dy, dz);
       const F UVW = L::add(L::add(U, V), W);
       const F eps = L::mul(L::set(FLT_EPSILON), L::abs(UVW));
-      M valid = L::andm(L::loadMask(rays.active + g),
-                        L::orm(L::ge(L::min(L::min(U, V), W), L::neg(eps)),
-                               L::le(L::max(L::max(U, V), W), eps)));
+      M valid = L::andm(
+          L::loadMask(rays.active + g),
+          L::orm(L::ge(L::min(L::min(U, V), W), L::neg(eps)), L::le(L::max(L::max(U, V), W), eps)));
       if (!L::any(valid)) continue;
       const F d = dotLanes<L>(ng, dx, dy, dz);
       const F den = L::add(d, d);  // twice(dot(Ng, D))
@@ -111,8 +110,8 @@ void intersectLanes(BundleRays& rays, const BundleTriangle* triangles, const int
       const M same = L::andm(L::andm(valid, L::eq(t, best)), L::loadHitMask(rays.hit + g));
       const M edge = L::andm(valid, L::orm(L::orm(L::lt(L::abs(U), bandU), L::lt(L::abs(V), bandV)),
                                            L::lt(L::abs(W), bandW)));
-      L::store(rays.edgeT + g, L::blend(edge, L::min(t, L::load(rays.edgeT + g)),
-                                        L::load(rays.edgeT + g)));
+      L::store(rays.edgeT + g,
+               L::blend(edge, L::min(t, L::load(rays.edgeT + g)), L::load(rays.edgeT + g)));
       L::store(rays.t + g, L::blend(closer, t, best));
       L::store(rays.U + g, L::blend(closer, U, L::load(rays.U + g)));
       L::store(rays.V + g, L::blend(closer, V, L::load(rays.V + g)));

@@ -171,7 +171,7 @@ int RayScene::intersectPacket(const glm::vec3& origin, const glm::vec3* directio
   // A bundle's traversal costs about what Embree's single rays do for a
   // few rays (measured: one ray a bundle is 3-6x slower): few rays go to Embree.
   constexpr int kFewestBundled = 4;
-  if (const detail::BeamBvh* bvh = count >= kFewestBundled ? beamBvh() : nullptr) {
+  if (const detail::BeamBvh* bvh = bundles_ && count >= kFewestBundled ? beamBvh() : nullptr) {
     detail::BundleRays rays;
     rays.ox = origin.x;
     rays.oy = origin.y;

@@ -71,7 +71,10 @@ class RayScene {
   /// first call; a wide packet, or a CPU without AVX2, goes to Embree.
   /// Returns how many of the rays the bundle answered (the others Embree).
   int intersectPacket(const glm::vec3& origin, const glm::vec3* directions, int count,
-                       std::optional<SurfaceHit>* hits) const;
+                      std::optional<SurfaceHit>* hits) const;
+  /// Whether intersectPacket traces bundles (the default) or gives every
+  /// packet to intersectEmbreePacket: benches time the one against the other.
+  void setBundles(bool on) { bundles_ = on; }
   /// intersectPacket through Embree alone (rtcIntersect8 packets): what
   /// the bundles are checked and timed against.
   void intersectEmbreePacket(const glm::vec3& origin, const glm::vec3* directions, int count,
@@ -113,6 +116,7 @@ class RayScene {
   float epsilon_m_ = 1e-5f;
   bool packets_ = false;  ///< the device traces 8-wide packets natively
   std::string isa_;
+  bool bundles_ = true;
   mutable std::once_flag beamOnce_;
   mutable std::unique_ptr<detail::BeamBvh> beamBvh_;
   std::vector<std::size_t> builtVertices_;  ///< per mesh slot: vertices built (0: none)
