@@ -131,11 +131,72 @@ const detail::BeamBvh* RayScene::beamBvh() const {
   std::call_once(beamOnce_, [this] {
     const detail::BundleIsa isa = detail::bundleIsaFor(isa_.c_str());
     if (isa != detail::BundleIsa::None) {
-      beamBvh_ = std::make_unique<detail::BeamBvh>(bundleTriangles(), isa);
+      auto bvh = std::make_unique<detail::BeamBvh>(bundleTriangles(), isa);
+      if (bundlesAgree(*bvh)) beamBvh_ = std::move(bvh);  // else Embree traces every packet
     }
   });
 #endif
   return beamBvh_.get();
+}
+
+bool RayScene::bundlesAgree(const detail::BeamBvh& bvh) const {
+#if defined(TOFSIM_RAYS_BUNDLES)
+  // Up to 64 triangles spread over the scene, each seen from a point off
+  // its plane by 16 rays through points across it (near its edges too).
+  const std::vector<detail::BundleTriangle> triangles = bundleTriangles();
+  const std::size_t step = std::max<std::size_t>(1, triangles.size() / 64);
+  for (std::size_t k = 0; k < triangles.size(); k += step) {
+    const detail::BundleTriangle& tri = triangles[k];
+    const glm::vec3 p0(tri.v0[0], tri.v0[1], tri.v0[2]), p1(tri.v1[0], tri.v1[1], tri.v1[2]),
+        p2(tri.v2[0], tri.v2[1], tri.v2[2]);
+    const glm::vec3 centre = (p0 + p1 + p2) / 3.0f;
+    const glm::vec3 normal(tri.normal[0], tri.normal[1], tri.normal[2]);
+    const float size = glm::length(p1 - p0) + glm::length(p2 - p0);
+    if (!(size > 0.0f) || !(glm::dot(normal, normal) > 0.5f)) continue;
+    const glm::vec3 origin = centre + normal * size + (p1 - p0) * 0.1f;
+    detail::BundleRays rays;
+    rays.ox = origin.x;
+    rays.oy = origin.y;
+    rays.oz = origin.z;
+    for (int i = 0; i < detail::kBundleLanes; ++i) {
+      const float a = 0.06f * float(i % 4) + 0.02f, b = 0.2f * float(i / 4) + 0.05f;
+      const glm::vec3 d = glm::normalize(p0 + a * (p1 - p0) + b * (p2 - p0) - origin);
+      rays.dx[i] = d.x;
+      rays.dy[i] = d.y;
+      rays.dz[i] = d.z;
+      rays.active[i] = -1;
+    }
+    if (!bvh.trace(rays)) continue;
+    for (int i = 0; i < detail::kBundleLanes; ++i) {
+      if (rays.tie[i] != 0 || (std::isfinite(rays.edgeT[i]) && rays.edgeT[i] <= rays.t[i]))
+        continue;
+      RTCIntersectContext context;
+      rtcInitIntersectContext(&context);
+      RTCRayHit rh{};
+      rh.ray.org_x = origin.x;
+      rh.ray.org_y = origin.y;
+      rh.ray.org_z = origin.z;
+      rh.ray.dir_x = rays.dx[i];
+      rh.ray.dir_y = rays.dy[i];
+      rh.ray.dir_z = rays.dz[i];
+      rh.ray.tfar = std::numeric_limits<float>::infinity();
+      rh.ray.mask = 0xFFFFFFFFu;
+      rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+      rtcIntersect1(rtcScene_, &context, &rh);
+      const bool embreeHit = rh.hit.geomID != RTC_INVALID_GEOMETRY_ID;
+      if (embreeHit != (rays.hit[i] >= 0)) return false;
+      if (!embreeHit) continue;
+      const detail::BundleTriangle& hit = bvh.triangle(rays.hit[i]);
+      if (hit.mesh != rh.hit.geomID || hit.triangle != rh.hit.primID || rays.t[i] != rh.ray.tfar ||
+          rays.u[i] != rh.hit.u || rays.v[i] != rh.hit.v) {
+        return false;
+      }
+    }
+  }
+#else
+  (void)bvh;
+#endif
+  return true;
 }
 
 RayScene::~RayScene() {

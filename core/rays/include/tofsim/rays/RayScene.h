@@ -109,6 +109,10 @@ class RayScene {
   std::vector<detail::BundleTriangle> bundleTriangles() const;
   /// The bundles' BVH, built on first use (null: Embree traces packets).
   const detail::BeamBvh* beamBvh() const;
+  /// Whether `bvh`'s bundles hit what rtcIntersect1 hits, bit for bit, on
+  /// probe rays through the scene's triangles: the kernels copy Embree
+  /// 3.13.5's arithmetic, and another Embree build or version may differ.
+  bool bundlesAgree(const detail::BeamBvh& bvh) const;
 
   const scene::Scene& scene_;
   RTCDevice device_ = nullptr;
