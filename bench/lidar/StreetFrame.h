@@ -7,6 +7,7 @@
 
 #include <chrono>
 #include <cstdint>
+#include <ctime>
 
 #include "tofsim/lidar/LidarSpec.h"
 #include "tofsim/volume/TransientVolume.h"
@@ -34,6 +35,13 @@ inline StreetFrame streetFrame(int channels, int azimuths, int32_t bins) {
 
 inline double seconds(std::chrono::steady_clock::time_point since) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - since).count();
+}
+
+/// The CPU time the process has used, all its threads (s).
+inline double cpuSeconds() {
+  timespec t{};
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+  return double(t.tv_sec) + 1e-9 * double(t.tv_nsec);
 }
 
 }  // namespace tofsim::bench

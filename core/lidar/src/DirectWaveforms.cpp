@@ -72,10 +72,10 @@ void addRayLight(const LidarSpec& spec, float share, const std::optional<rays::S
 }
 
 // Traces the receiver rays of beams i in [0, count) (beamAt(i): its ring and
-// azimuth) as Embree packets of kPacketSize rays from the lidar's position,
-// filled across beams where a beam has fewer rays (one origin, neighbouring
-// directions: coherent), and calls light(i, ray, hit, direction) for every
-// ray, in beam then ray order.
+// azimuth) as packets of kPacketSize rays from the lidar's position (each
+// one bundle: RayScene::intersectPacket), filled across beams where a beam
+// has fewer rays (one origin, neighbouring directions: coherent), and calls
+// light(i, ray, hit, direction) for every ray, in beam then ray order.
 template <typename BeamAt, typename Light>
 void tracePacked(const LidarSpec& spec, const ReceiverRays& receiver, const WaveformScene& scene,
                  std::size_t count, const BeamAt& beamAt, const Light& light) {

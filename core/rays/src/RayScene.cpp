@@ -5,6 +5,7 @@
 #include <limits>
 #include <string>
 
+#include "BeamBvh.h"
 #include "tofsim/scene/TextureSampling.h"
 #include "tofsim/util/Error.h"
 
@@ -35,8 +36,10 @@ glm::vec3 surfacePoint(const scene::Scene& scene, uint32_t mesh, uint32_t triang
          v * m.positions_world[tri[2]];
 }
 
-RayScene::RayScene(const scene::Scene& scene, int threads) : scene_(scene) {
-  const std::string config = threads > 0 ? "threads=" + std::to_string(threads) : std::string();
+RayScene::RayScene(const scene::Scene& scene, int threads, const std::string& isa)
+    : scene_(scene), isa_(isa) {
+  std::string config = threads > 0 ? "threads=" + std::to_string(threads) : std::string();
+  if (!isa.empty()) config += (config.empty() ? "isa=" : ",isa=") + isa;
   device_ = rtcNewDevice(config.c_str());
   if (device_ == nullptr) throw InputError("embree: cannot create a device");
   rtcScene_ = rtcNewScene(device_);
@@ -96,6 +99,103 @@ bool RayScene::updateMeshes(const std::vector<std::size_t>& moved) {
   }
   rtcCommitScene(rtcScene_);
   throwIfDeviceError(device_, "BVH update");
+#if defined(TOFSIM_RAYS_BUNDLES)
+  if (beamBvh_) beamBvh_->refit(bundleTriangles());
+#endif
+  return true;
+}
+
+std::vector<detail::BundleTriangle> RayScene::bundleTriangles() const {
+  std::vector<detail::BundleTriangle> out;
+  for (std::size_t m = 0; m < scene_.meshes.size(); ++m) {
+    const scene::Mesh& mesh = scene_.meshes[m];
+    for (std::size_t t = 0; t < mesh.triangleCount(); ++t) {
+      detail::BundleTriangle tri;
+      float* corners[3] = {tri.v0, tri.v1, tri.v2};
+      for (int k = 0; k < 3; ++k) {
+        const glm::vec3& p = mesh.positions_world[mesh.indices[3 * t + k]];
+        for (int c = 0; c < 3; ++c) corners[k][c] = p[c];
+      }
+      tri.mesh = static_cast<uint32_t>(m);
+      tri.triangle = static_cast<uint32_t>(t);
+      const glm::vec3 n = triangleNormal(tri.mesh, tri.triangle);
+      for (int c = 0; c < 3; ++c) tri.normal[c] = n[c];
+      out.push_back(tri);
+    }
+  }
+  return out;
+}
+
+const detail::BeamBvh* RayScene::beamBvh() const {
+#if defined(TOFSIM_RAYS_BUNDLES)
+  std::call_once(beamOnce_, [this] {
+    const detail::BundleIsa isa = detail::bundleIsaFor(isa_.c_str());
+    if (isa != detail::BundleIsa::None) {
+      auto bvh = std::make_unique<detail::BeamBvh>(bundleTriangles(), isa);
+      if (bundlesAgree(*bvh)) beamBvh_ = std::move(bvh);  // else Embree traces every packet
+    }
+  });
+#endif
+  return beamBvh_.get();
+}
+
+bool RayScene::bundlesAgree(const detail::BeamBvh& bvh) const {
+#if defined(TOFSIM_RAYS_BUNDLES)
+  // Up to 64 triangles spread over the scene, each seen from a point off
+  // its plane by 16 rays through points across it (near its edges too).
+  const std::vector<detail::BundleTriangle> triangles = bundleTriangles();
+  const std::size_t step = std::max<std::size_t>(1, triangles.size() / 64);
+  for (std::size_t k = 0; k < triangles.size(); k += step) {
+    const detail::BundleTriangle& tri = triangles[k];
+    const glm::vec3 p0(tri.v0[0], tri.v0[1], tri.v0[2]), p1(tri.v1[0], tri.v1[1], tri.v1[2]),
+        p2(tri.v2[0], tri.v2[1], tri.v2[2]);
+    const glm::vec3 centre = (p0 + p1 + p2) / 3.0f;
+    const glm::vec3 normal(tri.normal[0], tri.normal[1], tri.normal[2]);
+    const float size = glm::length(p1 - p0) + glm::length(p2 - p0);
+    if (!(size > 0.0f) || !(glm::dot(normal, normal) > 0.5f)) continue;
+    const glm::vec3 origin = centre + normal * size + (p1 - p0) * 0.1f;
+    detail::BundleRays rays;
+    rays.ox = origin.x;
+    rays.oy = origin.y;
+    rays.oz = origin.z;
+    for (int i = 0; i < detail::kBundleLanes; ++i) {
+      const float a = 0.06f * float(i % 4) + 0.02f, b = 0.2f * float(i / 4) + 0.05f;
+      const glm::vec3 d = glm::normalize(p0 + a * (p1 - p0) + b * (p2 - p0) - origin);
+      rays.dx[i] = d.x;
+      rays.dy[i] = d.y;
+      rays.dz[i] = d.z;
+      rays.active[i] = -1;
+    }
+    if (!bvh.trace(rays)) continue;
+    for (int i = 0; i < detail::kBundleLanes; ++i) {
+      if (rays.tie[i] != 0 || (std::isfinite(rays.edgeT[i]) && rays.edgeT[i] <= rays.t[i]))
+        continue;
+      RTCIntersectContext context;
+      rtcInitIntersectContext(&context);
+      RTCRayHit rh{};
+      rh.ray.org_x = origin.x;
+      rh.ray.org_y = origin.y;
+      rh.ray.org_z = origin.z;
+      rh.ray.dir_x = rays.dx[i];
+      rh.ray.dir_y = rays.dy[i];
+      rh.ray.dir_z = rays.dz[i];
+      rh.ray.tfar = std::numeric_limits<float>::infinity();
+      rh.ray.mask = 0xFFFFFFFFu;
+      rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+      rtcIntersect1(rtcScene_, &context, &rh);
+      const bool embreeHit = rh.hit.geomID != RTC_INVALID_GEOMETRY_ID;
+      if (embreeHit != (rays.hit[i] >= 0)) return false;
+      if (!embreeHit) continue;
+      const detail::BundleTriangle& hit = bvh.triangle(rays.hit[i]);
+      if (hit.mesh != rh.hit.geomID || hit.triangle != rh.hit.primID || rays.t[i] != rh.ray.tfar ||
+          rays.u[i] != rh.hit.u || rays.v[i] != rh.hit.v) {
+        return false;
+      }
+    }
+  }
+#else
+  (void)bvh;
+#endif
   return true;
 }
 
@@ -125,9 +225,63 @@ std::optional<SurfaceHit> RayScene::intersect(const glm::vec3& origin, const glm
   return completeHit(direction, rh.ray.tfar, rh.hit.geomID, rh.hit.primID, {rh.hit.u, rh.hit.v});
 }
 
-void RayScene::intersectPacket(const glm::vec3& origin, const glm::vec3* directions, int count,
-                               std::optional<SurfaceHit>* hits) const {
+int RayScene::intersectPacket(const glm::vec3& origin, const glm::vec3* directions, int count,
+                              std::optional<SurfaceHit>* hits) const {
   TOFSIM_CHECK(count >= 0 && count <= kPacketSize);
+  static_assert(kPacketSize == detail::kBundleLanes);
+  // A bundle's traversal costs about what Embree's single rays do for a
+  // few rays (measured: one ray a bundle is 3-6x slower): few rays go to Embree.
+  constexpr int kFewestBundled = 4;
+  if (const detail::BeamBvh* bvh = bundles_ && count >= kFewestBundled ? beamBvh() : nullptr) {
+    detail::BundleRays rays;
+    rays.ox = origin.x;
+    rays.oy = origin.y;
+    rays.oz = origin.z;
+    for (int i = 0; i < kPacketSize; ++i) {
+      const glm::vec3 d = i < count ? directions[i] : directions[0];
+      rays.dx[i] = d.x;
+      rays.dy[i] = d.y;
+      rays.dz[i] = d.z;
+      rays.active[i] = i < count ? -1 : 0;
+    }
+#if defined(TOFSIM_RAYS_BUNDLES)
+    if (bvh->trace(rays)) {
+      int bundled = 0;
+      for (int i = 0; i < count; ++i) {
+        // Where Embree's own order or boxes decide (two triangles at the
+        // same t, a hit within rounding of an edge), Embree answers.
+        const bool edge = rays.edgeT[i] <= rays.t[i] && std::isfinite(rays.edgeT[i]);
+        if (rays.tie[i] != 0 || edge) {
+          hits[i] = intersect(origin, directions[i]);
+        } else if (rays.hit[i] < 0) {
+          hits[i].reset();
+          ++bundled;
+        } else {
+          const detail::BundleTriangle& tri = bvh->triangle(rays.hit[i]);
+          const glm::vec3 normal(tri.normal[0], tri.normal[1], tri.normal[2]);
+          hits[i] = completeHit(directions[i], rays.t[i], tri.mesh, tri.triangle,
+                                {rays.u[i], rays.v[i]}, &normal);
+          ++bundled;
+        }
+      }
+      return bundled;
+    }
+#endif
+  }
+  intersectEmbreePacket(origin, directions, count, hits);
+  return 0;
+}
+
+void RayScene::intersectEmbreePacket(const glm::vec3& origin, const glm::vec3* directions,
+                                     int count, std::optional<SurfaceHit>* hits) const {
+  TOFSIM_CHECK(count >= 0 && count <= kPacketSize);
+  constexpr int kEmbreePacket = 8;  // rtcIntersect8: AVX2's width
+  if (count > kEmbreePacket) {
+    intersectEmbreePacket(origin, directions, kEmbreePacket, hits);
+    intersectEmbreePacket(origin, directions + kEmbreePacket, count - kEmbreePacket,
+                          hits + kEmbreePacket);
+    return;
+  }
   if (!packets_) {  // an Embree built without ray packets: one ray at a time
     for (int i = 0; i < count; ++i) hits[i] = intersect(origin, directions[i]);
     return;
@@ -137,9 +291,9 @@ void RayScene::intersectPacket(const glm::vec3& origin, const glm::vec3* directi
   // Not RTC_INTERSECT_CONTEXT_FLAG_COHERENT: its frustum traversal drops
   // rays whose direction's signs differ from the packet's (a beam straight
   // along an axis has both), which lidar_street's azimuth 0 showed.
-  alignas(32) int valid[kPacketSize];
+  alignas(32) int valid[kEmbreePacket];
   alignas(32) RTCRayHit8 rh;
-  for (int i = 0; i < kPacketSize; ++i) {
+  for (int i = 0; i < kEmbreePacket; ++i) {
     const bool on = i < count;
     valid[i] = on ? -1 : 0;
     const glm::vec3 d = on ? directions[i] : glm::vec3(0.0f, 0.0f, 1.0f);
@@ -169,8 +323,18 @@ void RayScene::intersectPacket(const glm::vec3& origin, const glm::vec3* directi
   }
 }
 
+glm::vec3 RayScene::triangleNormal(uint32_t geomID, uint32_t primID) const {
+  const scene::Mesh& mesh = scene_.meshes[geomID];
+  const uint32_t* tri = &mesh.indices[static_cast<std::size_t>(primID) * 3];
+  const glm::vec3& p0 = mesh.positions_world[tri[0]];
+  const glm::vec3& p1 = mesh.positions_world[tri[1]];
+  const glm::vec3& p2 = mesh.positions_world[tri[2]];
+  return glm::normalize(glm::cross(p1 - p0, p2 - p0));
+}
+
 SurfaceHit RayScene::completeHit(const glm::vec3& direction, float distance_m, uint32_t geomID,
-                                 uint32_t primID, glm::vec2 barycentric) const {
+                                 uint32_t primID, glm::vec2 barycentric,
+                                 const glm::vec3* unitNormal) const {
   const scene::Mesh& mesh = scene_.meshes[geomID];
   const uint32_t* tri = &mesh.indices[static_cast<std::size_t>(primID) * 3];
   const float u = barycentric.x, v = barycentric.y, w = 1.0f - u - v;
@@ -182,11 +346,9 @@ SurfaceHit RayScene::completeHit(const glm::vec3& direction, float distance_m, u
   // Barycentric interpolation, like the rasterizer's G-buffer, rather than
   // origin + t * direction: it lies on the triangle to float precision.
   hit.position_world = surfacePoint(scene_, hit.mesh, hit.triangle, hit.barycentric);
-  const glm::vec3& p0 = mesh.positions_world[tri[0]];
-  const glm::vec3& p1 = mesh.positions_world[tri[1]];
-  const glm::vec3& p2 = mesh.positions_world[tri[2]];
   const glm::vec3 back = -direction;
-  hit.geometric_world = faceTowards(glm::normalize(glm::cross(p1 - p0, p2 - p0)), back);
+  hit.geometric_world =
+      faceTowards(unitNormal != nullptr ? *unitNormal : triangleNormal(geomID, primID), back);
   glm::vec3 n = hit.geometric_world;
   if (mesh.normals_world.size() == mesh.positions_world.size()) {
     const glm::vec3 interpolated = w * mesh.normals_world[tri[0]] + u * mesh.normals_world[tri[1]] +

@@ -56,8 +56,9 @@ struct ReceiverRays {
 };
 
 /// Beam (ring, azimuth)'s rays' direct light, each ray's (bin, value) in
-/// ray order appended to `out` (its rays traced as Embree packets from the
-/// lidar's position); what fell off the axis added to `lost`.
+/// ray order appended to `out` (its rays traced as one packet from the
+/// lidar's position: RayScene::intersectPacket's bundle); what fell off the
+/// axis added to `lost`.
 void beamRayBins(const LidarSpec& spec, const ReceiverRays& rays,
                  const WaveformScene& scene, const TimeAxis& axis, int32_t ring, int32_t azimuth,
                  std::vector<WaveformBin>& out, WaveformLoss& lost);

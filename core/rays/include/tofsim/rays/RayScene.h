@@ -7,7 +7,10 @@
 
 #include <cstdint>
 #include <glm/glm.hpp>
+#include <memory>
+#include <mutex>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "tofsim/scene/Scene.h"
@@ -39,10 +42,17 @@ struct SurfaceHit {
 glm::vec3 surfacePoint(const scene::Scene& scene, uint32_t mesh, uint32_t triangle,
                        glm::vec2 barycentric);
 
+namespace detail {
+class BeamBvh;
+struct BundleTriangle;
+}  // namespace detail
+
 class RayScene {
  public:
-  /// threads: Embree's build threads, 0 = all.
-  RayScene(const scene::Scene& scene, int threads);
+  /// threads: Embree's build threads, 0 = all. isa: the instruction set
+  /// Embree runs (its device config's isa=, such as "avx2"; empty: the
+  /// CPU's best), which intersectPacket's own kernels follow: tests pin it.
+  RayScene(const scene::Scene& scene, int threads, const std::string& isa = {});
   ~RayScene();
   RayScene(const RayScene&) = delete;
   RayScene& operator=(const RayScene&) = delete;
@@ -50,13 +60,25 @@ class RayScene {
   /// Closest hit along origin + t * direction (direction unit), t in (tNear, inf).
   std::optional<SurfaceHit> intersect(const glm::vec3& origin, const glm::vec3& direction,
                                       float tNear = 0.0f) const;
-  /// Rays in a packet (Embree's rtcIntersect8: AVX2's width).
-  static constexpr int kPacketSize = 8;
+  /// Rays in a packet: a lidar beam's 16 receiver rays, or 16 beams' one.
+  static constexpr int kPacketSize = 16;
   /// The closest hits of `count` (<= kPacketSize) rays from one origin, as
-  /// intersect(origin, directions[i]) gives them, traced together as one
-  /// coherent packet (a lidar beam's receiver rays): hits[i] for ray i.
-  void intersectPacket(const glm::vec3& origin, const glm::vec3* directions, int count,
-                       std::optional<SurfaceHit>* hits) const;
+  /// intersect(origin, directions[i]) gives them, bit for bit: hits[i] for
+  /// ray i. Rays within a narrow cone (a lidar beam's receiver rays,
+  /// neighbouring beams) are traced together through a BVH of the scene's
+  /// own (BeamBvh.h: each node tested once for all of them, each triangle
+  /// against every ray at once, in Embree's own arithmetic), built on the
+  /// first call; a wide packet, or a CPU without AVX2, goes to Embree.
+  /// Returns how many of the rays the bundle answered (the others Embree).
+  int intersectPacket(const glm::vec3& origin, const glm::vec3* directions, int count,
+                      std::optional<SurfaceHit>* hits) const;
+  /// Whether intersectPacket traces bundles (the default) or gives every
+  /// packet to intersectEmbreePacket: benches time the one against the other.
+  void setBundles(bool on) { bundles_ = on; }
+  /// intersectPacket through Embree alone (rtcIntersect8 packets): what
+  /// the bundles are checked and timed against.
+  void intersectEmbreePacket(const glm::vec3& origin, const glm::vec3* directions, int count,
+                             std::optional<SurfaceHit>* hits) const;
   /// After the scene's meshes `moved` were re-baked in place (same vertex
   /// and triangle counts: scene::AnimatedScene::updateScene), their vertices
   /// copied again and the BVH rebuilt on the same device: the hits of a
@@ -78,14 +100,29 @@ class RayScene {
   float epsilon_m() const { return epsilon_m_; }
 
  private:
+  /// unitNormal: the triangle's unit normal (triangleNormal), where known.
   SurfaceHit completeHit(const glm::vec3& direction, float distance_m, uint32_t geomID,
-                         uint32_t primID, glm::vec2 barycentric) const;
+                         uint32_t primID, glm::vec2 barycentric,
+                         const glm::vec3* unitNormal = nullptr) const;
+  glm::vec3 triangleNormal(uint32_t geomID, uint32_t primID) const;
+  /// The scene's triangles as Embree holds them, mesh by mesh.
+  std::vector<detail::BundleTriangle> bundleTriangles() const;
+  /// The bundles' BVH, built on first use (null: Embree traces packets).
+  const detail::BeamBvh* beamBvh() const;
+  /// Whether `bvh`'s bundles hit what rtcIntersect1 hits, bit for bit, on
+  /// probe rays through the scene's triangles: the kernels copy Embree
+  /// 3.13.5's arithmetic, and another Embree build or version may differ.
+  bool bundlesAgree(const detail::BeamBvh& bvh) const;
 
   const scene::Scene& scene_;
   RTCDevice device_ = nullptr;
   RTCScene rtcScene_ = nullptr;
   float epsilon_m_ = 1e-5f;
   bool packets_ = false;  ///< the device traces 8-wide packets natively
+  std::string isa_;
+  bool bundles_ = true;
+  mutable std::once_flag beamOnce_;
+  mutable std::unique_ptr<detail::BeamBvh> beamBvh_;
   std::vector<std::size_t> builtVertices_;  ///< per mesh slot: vertices built (0: none)
 };
 
