@@ -234,6 +234,10 @@ RenderResult IrRenderer::render(const RenderJob& job, SegmentSink& sink,
     throw InputError("render.indirect.merge_pixel_samples runs on render.backend: cpu; the " +
                      backend.description() + " backend gathers every pixel sample");
   }
+  if (need.scattering_regions && !backend.capabilities().scattering_regions) {
+    throw InputError("a scattering region (media: sigma_s > 0) runs on render.backend: cpu; the " +
+                     backend.description() + " backend does not scatter light in regions");
+  }
   RenderResult result;
 
   PassClock clock;
@@ -272,8 +276,7 @@ RenderResult IrRenderer::render(const RenderJob& job, SegmentSink& sink,
   // both backends gather the same VPLs of every bounce; bounced.firstOfBounce
   // keeps which VPLs are of which bounce (for bounce-resolved output).
   const capture::IndirectSettings& indirect = job.settings.indirect;
-  const BouncedVpls bounced = indirect.bounces > 1 || (indirect.enabled && indirect.medium_vpls > 0 &&
-                                                        job.settings.medium.scatters())
+  const BouncedVpls bounced = indirect.bounces > 1 || lightMediumVplsWanted(job.settings)
                                   ? withLaterBounces(job, rays(), backend.generateVpls(job), &classes)
                                   : withLaterBounces(job, backend.generateVpls(job), &classes);
   const std::vector<Vpl>& vpls = bounced.vpls;
