@@ -8,6 +8,7 @@
 #include "JobValidation.h"
 #include "MemoryPlan.h"
 #include "tofsim/capture/DirectLightView.h"
+#include "tofsim/capture/RegionScattering.h"
 #include "tofsim/capture/SegmentStream.h"
 #include "tofsim/ir/BounceVpls.h"
 #include "tofsim/ir/LitPixels.h"
@@ -234,7 +235,9 @@ RenderResult IrRenderer::render(const RenderJob& job, SegmentSink& sink,
     throw InputError("render.indirect.merge_pixel_samples runs on render.backend: cpu; the " +
                      backend.description() + " backend gathers every pixel sample");
   }
-  if (need.scattering_regions && !backend.capabilities().scattering_regions) {
+  // A scattering region's passes trace a ray per node along the camera rays
+  // (shadow rays, the regions' passages): the backend that traces rays.
+  if (regionsScatter(job.settings) && !backend.tracesRays()) {
     throw InputError("a scattering region (media: sigma_s > 0) runs on render.backend: cpu; the " +
                      backend.description() + " backend does not scatter light in regions");
   }

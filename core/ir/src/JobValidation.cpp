@@ -3,6 +3,7 @@
 #include <string>
 
 #include "tofsim/capture/Imager.h"
+#include "tofsim/capture/RegionScattering.h"
 #include "tofsim/capture/SegmentSink.h"
 #include "tofsim/util/Error.h"
 
@@ -49,7 +50,7 @@ void validateJob(const RenderJob& job, const DeviceLimits& limits) {
   }
   // A scattering region's light is binned along the camera ray by its path,
   // which grows with s only while the camera leg is timed.
-  if (job.settings.regionsScatter() &&
+  if (regionsScatter(job.settings) &&
       (job.settings.time.camera_unwarp || !lastLegCounts(job.imager))) {
     throw InputError(
         "a scattering region (media: sigma_s > 0) with the camera leg untimed "

@@ -14,30 +14,24 @@ struct IrCapabilities {
   bool defocus = false;
   /// render.indirect.merge_pixel_samples with pixel_samples > 1.
   bool merged_pixel_samples = false;
-  /// Per-region media that scatter (RenderSettings::media, sigma_s > 0):
-  /// their single scattering along the camera rays.
-  bool scattering_regions = false;
 };
 
 /// The GL backend (core/render): what every backend gathers, nothing more.
 inline constexpr IrCapabilities kGlCapabilities{};
 /// The CPU backend (core/cpu).
-inline constexpr IrCapabilities kCpuCapabilities{
-    .defocus = true, .merged_pixel_samples = true, .scattering_regions = true};
+inline constexpr IrCapabilities kCpuCapabilities{.defocus = true, .merged_pixel_samples = true};
 
 /// What a render needs: `camera` null for an imager that is not a camera.
 inline IrCapabilities irNeeds(const Camera* camera, const RenderSettings& settings) {
   return {
       .defocus = camera != nullptr && camera->defocused(),
-      .merged_pixel_samples = settings.indirect.merge_pixel_samples && settings.pixel_samples > 1,
-      .scattering_regions = settings.regionsScatter()};
+      .merged_pixel_samples = settings.indirect.merge_pixel_samples && settings.pixel_samples > 1};
 }
 
 /// Whether a backend with `have` gathers everything `need` asks for.
 constexpr bool covers(const IrCapabilities& have, const IrCapabilities& need) {
   return (have.defocus || !need.defocus) &&
-         (have.merged_pixel_samples || !need.merged_pixel_samples) &&
-         (have.scattering_regions || !need.scattering_regions);
+         (have.merged_pixel_samples || !need.merged_pixel_samples);
 }
 
 }  // namespace tofsim::capture

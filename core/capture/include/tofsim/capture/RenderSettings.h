@@ -112,18 +112,8 @@ struct RenderSettings {
   std::vector<RegionMedium> media;
 
   /// Whether the VPLs' light scatters into the camera rays (a scattering
-  /// medium or region and indirect.medium_camera_rays): the backends' medium
-  /// VPL pass.
-  bool vplsLightCameraRays() const {
-    return (medium.scatters() || regionsScatter()) && indirect.medium_camera_rays;
-  }
-  /// Whether some region's medium scatters (sigma_s > 0 in a channel).
-  bool regionsScatter() const {
-    for (const RegionMedium& r : media) {
-      if (r.medium.scatters()) return true;
-    }
-    return false;
-  }
+  /// medium and indirect.medium_camera_rays): the backends' medium VPL pass.
+  bool vplsLightCameraRays() const { return medium.scatters() && indirect.medium_camera_rays; }
 };
 
 }  // namespace tofsim::capture

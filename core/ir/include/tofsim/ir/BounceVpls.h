@@ -12,6 +12,7 @@
 
 #include "tofsim/capture/Medium.h"
 #include "tofsim/capture/MediumRegions.h"
+#include "tofsim/capture/RegionScattering.h"
 #include "tofsim/capture/RenderJob.h"
 #include "tofsim/ir/IrBackend.h"
 #include "tofsim/physics/ResponseClassTable.h"
@@ -98,7 +99,7 @@ std::vector<Vpl> traceBounce(const rays::RayScene& scene, const std::vector<Vpl>
 /// render.indirect.medium_vpls > 0 and a scattering medium or region).
 inline bool lightMediumVplsWanted(const capture::RenderSettings& s) {
   return s.indirect.enabled && s.indirect.medium_vpls > 0 &&
-         (s.medium.scatters() || s.regionsScatter());
+         (s.medium.scatters() || capture::regionsScatter(s));
 }
 
 /// Bounce 1 (`firstBounce`, the backend's RSM VPLs, then with a scattering
