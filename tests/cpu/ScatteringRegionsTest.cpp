@@ -155,7 +155,7 @@ struct ScatteringCornerJob {
 // IR's direct light (the surfaces' through the region, the region's single
 // scattering) against the reference's first vertex (the same light by free
 // flights and equiangular points through the region), over the image: the
-// energy within 1 % and the mean path within 2 mm (the reference's noise at
+// energy within 1 % and the mean path within 1 mm (the reference's noise at
 // 2048 paths a pixel: ~0.3 % and ~0.5 mm). Without the region's single
 // scattering IR has 0.64 of the energy; without its delay the mean path is
 // 3 cm short.
@@ -170,7 +170,7 @@ TEST(ScatteringRegionsTest, DirectLightThroughAScatteringCubeMatchesTheReference
               "path IR %.5f m, reference %.5f m\n",
               eIr, eRef, eIr / eRef, pIr, pRef);
   EXPECT_NEAR(eIr, eRef, 0.01 * eRef);
-  EXPECT_NEAR(pIr, pRef, 0.002);
+  EXPECT_NEAR(pIr, pRef, 0.001);
 }
 
 // The scattering cube's multiple scattering, one indirect bounce (the
@@ -183,7 +183,7 @@ TEST(ScatteringRegionsTest, DirectLightThroughAScatteringCubeMatchesTheReference
 // against the reference's (the VPLs' bias cancels mostly in the ratio) within
 // 3 % (measured: 1.2370 against 1.2526, the vacuums 7.161 and 7.127), its
 // mean path within 1.5 cm (5.1035 against 5.0969 m). Without the medium VPLs
-// IR's ratio is 0.80, without the camera rays' pass 0.95 (at 8192 rays).
+// IR's ratio is 0.69, without the camera rays' pass 0.81.
 TEST(ScatteringRegionsTest, OneBounceThroughAScatteringCubeMatchesTheReference) {
   ScatteringCornerJob s, vacuum(false);
   for (capture::RenderJob* job : {&s.job, &vacuum.job}) {
@@ -227,20 +227,47 @@ TEST(ScatteringRegionsTest, LaterBouncesThroughAnAbsorbingCubeMatchTheReference)
   capture::RenderJob cube = vacuum;
   cube.settings.media.push_back({"cube", {}, 1.2});
   cube.settings.media.back().medium.sigma_a_per_m = {1.5f, 0.8f, 0.3f};
+  // Energy and energy x path (the axis' metres) of bounces 2 + 3.
+  struct Later {
+    double energy = 0.0, weighted = 0.0;
+    void add(const TransientVolume& v, const TimeAxis& axis, double sign) {
+      for (int y = 0; y < v.height(); ++y) {
+        for (int x = 0; x < v.width(); ++x) {
+          for (int b = 0; b < v.bins(); ++b) {
+            const double e =
+                static_cast<double>(v.at(y, x, b, 0)) + v.at(y, x, b, 1) + v.at(y, x, b, 2);
+            energy += sign * e;
+            weighted += sign * e * (axis.start_m() + (b + 0.5) * axis.bin_width_m());
+          }
+        }
+      }
+    }
+  };
   const auto laterIr = [](const capture::RenderJob& job) {
     capture::VolumeCollector out(job.camera().width, job.camera().height, job.settings.time,
                                  capture::kChannels, 3);
-    ir::IrRenderer(std::make_unique<CpuBackend>(CpuBackendOptions{2, true})).render(job, out);
-    return energy(out.bounces[1]) + energy(out.bounces[2]);
+    // Nothing in the corner hides a surface from another (the cube is no
+    // surface): every VPL sees every point, the visibility test is skipped.
+    ir::IrRenderer(std::make_unique<CpuBackend>(CpuBackendOptions{2, false})).render(job, out);
+    Later l;
+    for (int k = 1; k < 3; ++k) l.add(out.bounces[k], job.settings.time, 1.0);
+    return l;
   };
   const auto laterRef = [](const capture::RenderJob& job) {
-    return energy(renderReference(job, 4, 512).indirect) -
-           energy(renderReference(job, 2, 512).indirect);
+    Later l;
+    l.add(renderReference(job, 4, 512).indirect, job.settings.time, 1.0);
+    l.add(renderReference(job, 2, 512).indirect, job.settings.time, -1.0);
+    return l;
   };
-  const double ratioIr = laterIr(cube) / laterIr(vacuum);
-  const double ratioRef = laterRef(cube) / laterRef(vacuum);
-  std::printf("bounces 2 + 3 with the cube over without: IR %.4f, reference %.4f\n", ratioIr,
-              ratioRef);
+  const Later irCube = laterIr(cube), refCube = laterRef(cube);
+  const double ratioIr = irCube.energy / laterIr(vacuum).energy;
+  const double ratioRef = refCube.energy / laterRef(vacuum).energy;
+  const double pathIr = irCube.weighted / irCube.energy, pathRef = refCube.weighted / refCube.energy;
+  // (The later legs' delay in the cube moves IR's mean path by 1.5 cm, within
+  // the reference's noise here: printed, not asserted.)
+  std::printf("bounces 2 + 3 with the cube over without: IR %.4f, reference %.4f; mean path with "
+              "the cube IR %.4f m, reference %.4f m\n",
+              ratioIr, ratioRef, pathIr, pathRef);
   EXPECT_LT(ratioIr, 0.9);
   EXPECT_NEAR(ratioIr, ratioRef, 0.03 * ratioRef);
 }
