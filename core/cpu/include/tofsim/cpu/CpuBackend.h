@@ -126,7 +126,8 @@ class CpuBackend : public ir::IrBackend {
                         std::size_t i, std::vector<MediumSampleRay>& out) const;
   /// VPLs [firstVpl, + count)'s light scattered once by the medium into
   /// every sample's camera ray (CpuMediumVpls.cpp), into mediumIndirect_:
-  /// with a scattering medium only.
+  /// with a scattering medium only (with per-region media it hands over to
+  /// gatherRegionIndirect).
   void gatherMediumIndirect(std::size_t firstVpl, std::size_t count);
   /// The same in scattering regions, along the camera rays' stretches inside
   /// them (CpuRegionVpls.cpp), into mediumIndirect_.
