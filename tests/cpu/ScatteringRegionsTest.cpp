@@ -277,8 +277,9 @@ bool sameBytes(const TransientVolume& a, const TransientVolume& b) {
          std::memcmp(a.values().data(), b.values().data(), a.values().size() * sizeof(float)) == 0;
 }
 
-// A scattering region's single scattering and an absorbing region's later
-// bounces: each pixel is one thread's, each VPL's legs its own ray's.
+// A scattering region's single scattering, an absorbing region's later
+// bounces, a scattering region's medium VPLs and later flights: each pixel is
+// one thread's, each VPL's legs its own ray's (its own generator).
 TEST(ScatteringRegionsTest, RegionsRenderTheSameBytesOnAnyThreadCount) {
   const ScatteringCornerJob s;
   capture::RenderJob bounced = s.job;
@@ -286,7 +287,14 @@ TEST(ScatteringRegionsTest, RegionsRenderTheSameBytesOnAnyThreadCount) {
   bounced.settings.indirect.enabled = true;
   bounced.settings.indirect.bounces = 3;
   bounced.settings.indirect.rsm_resolution = 24;
-  const capture::RenderJob* jobs[] = {&s.job, &bounced};
+  // The scattering cube's medium VPLs, their light in the camera rays, a
+  // later bounce's free flights.
+  capture::RenderJob scattered = s.job;
+  scattered.settings.indirect.enabled = true;
+  scattered.settings.indirect.bounces = 2;
+  scattered.settings.indirect.rsm_resolution = 24;
+  scattered.settings.indirect.medium_vpls = 2048;
+  const capture::RenderJob* jobs[] = {&s.job, &bounced, &scattered};
   for (const capture::RenderJob* job : jobs) {
     const test::CpuRender one = test::renderOnCpu(*job, {1, true});
     const test::CpuRender three = test::renderOnCpu(*job, {3, true});
