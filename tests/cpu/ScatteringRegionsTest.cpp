@@ -1,10 +1,12 @@
 // Issue 42's per-region media in instant radiosity beyond absorption and one
 // bounce (CPU backend): a scattering region's single scattering along the
 // camera rays (CpuRegionDirect.cpp) against the lidar equation restricted to
-// the ray's segment inside a cube, and against the reference on a corner; the
-// later bounces' VPL legs through an absorbing region (ir::traceBounce)
-// against the reference's bounces 2 and 3; the same bytes on any thread
-// count. Closed forms at pixel centres (render.pixel_footprint: false).
+// the ray's segment inside a cube, and against the reference on a corner; its
+// medium VPLs and their light in the camera rays against the reference's
+// second vertex; the later bounces' VPL legs through an absorbing region
+// (ir::traceBounce) against a slab's closed form and the reference's bounces
+// 2 and 3; the same bytes on any thread count. Closed forms at pixel centres
+// (render.pixel_footprint: false).
 
 #include <gtest/gtest.h>
 
@@ -16,7 +18,10 @@
 #include "support/CpuRender.h"
 #include "support/Simpson.h"
 #include "support/TestJobs.h"
+#include "tofsim/ir/BounceVpls.h"
 #include "tofsim/physics/MediumPhysics.h"
+#include "tofsim/physics/ScatterVertex.h"
+#include "tofsim/rays/RayScene.h"
 #include "tofsim/scene/RegionMeshes.h"
 #include "tofsim/volume/PhysicalConstants.h"
 
@@ -270,6 +275,54 @@ TEST(ScatteringRegionsTest, LaterBouncesThroughAnAbsorbingCubeMatchTheReference)
               ratioIr, ratioRef, pathIr, pathRef);
   EXPECT_LT(ratioIr, 0.9);
   EXPECT_NEAR(ratioIr, ratioRef, 0.03 * ratioRef);
+}
+
+// A later bounce's leg through an absorbing slab region (z in [0.4, 0.6] m)
+// between a floor VPL and a ceiling at z = 1: each child on the ceiling is
+// its vacuum twin (the same ray: an absorbing region draws nothing) with its
+// flux times exp(-sigma_a 0.2 / cos) and its path plus eta (eta_r - 1)
+// 0.2 / cos, cos the ray's angle to the slab's normal (closed form, per child).
+TEST(ScatteringRegionsTest, ALaterBouncesLegThroughASlabIsAttenuatedAndDelayed) {
+  scene::Scene scene = test::makePlane(100.0f, glm::vec3(0.5f));  // the floor, z = 0
+  test::addQuad(scene, glm::vec3(0.0f, 0.0f, 1.0f), glm::vec3(0.0f, 0.0f, -1.0f), 100.0f,
+                glm::vec3(0.5f));
+  addBox(scene, "slab", {-50.0f, -50.0f, 0.4f}, {50.0f, 50.0f, 0.6f});
+  scene.regions.push_back(*scene::takeRegionMesh(scene, "slab"));
+  const rays::RayScene rays(scene, 1);
+  capture::RegionMedium slab{"slab", {}, 1.5};
+  slab.medium.sigma_a_per_m = {2.0f, 1.0f, 0.5f};
+  const double axisIndex = 1.2;  // the time axis' index: the slab adds eta_r / eta_axis - 1
+  const capture::MediumRegions regions({slab}, scene, axisIndex);
+  ir::Vpl parent;
+  parent.positionPath = glm::vec4(0.1f, -0.2f, 0.0f, 2.0f);
+  parent.normal = glm::vec4(0.0f, 0.0f, 1.0f, 0.0f);
+  parent.flux = glm::vec4(glm::vec3(0.3f), 0.0f);
+  parent.vertex = physics::scatterVertex(physics::VERTEX_LAMBERTIAN, glm::vec3(0.5f), 0.0f, 1.0f);
+  ir::BounceTracing through;
+  through.regions = &regions;
+  const std::vector<ir::Vpl> air = ir::traceBounce(rays, {parent}, 256, 2, 7, axisIndex);
+  const std::vector<ir::Vpl> inSlab =
+      ir::traceBounce(rays, {parent}, 256, 2, 7, axisIndex, through);
+  ASSERT_EQ(air.size(), inSlab.size());
+  int onCeiling = 0;
+  for (std::size_t i = 0; i < air.size(); ++i) {
+    ASSERT_EQ(glm::vec3(air[i].positionPath), glm::vec3(inSlab[i].positionPath));
+    // The ray left the floor lifted by the scene's epsilon along its normal:
+    // its direction is the hit's from there.
+    const glm::dvec3 leg = glm::dvec3(glm::vec3(air[i].positionPath)) -
+                           glm::dvec3(glm::vec3(parent.positionPath)) -
+                           glm::dvec3(0.0, 0.0, rays.epsilon_m());
+    if (std::abs(glm::vec3(air[i].positionPath).z - 1.0f) > 1e-4f) continue;  // not on the ceiling
+    ++onCeiling;
+    const double inside = 0.2 * glm::length(leg) / leg.z;
+    for (int c = 0; c < 3; ++c) {
+      const double expected = air[i].flux[c] * std::exp(-slab.medium.sigma_a_per_m[c] * inside);
+      EXPECT_NEAR(inSlab[i].flux[c], expected, 1e-5 * expected) << "child " << i;
+    }
+    const double delay = axisIndex * (1.5 / axisIndex - 1.0) * inside;
+    EXPECT_NEAR(inSlab[i].positionPath.w - air[i].positionPath.w, delay, 2e-5) << "child " << i;
+  }
+  EXPECT_GT(onCeiling, 200);
 }
 
 bool sameBytes(const TransientVolume& a, const TransientVolume& b) {
