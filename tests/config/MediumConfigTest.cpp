@@ -195,8 +195,12 @@ TEST_F(MediumConfigTest, PerRegionMediaSayWhatIsBuilt) {
   }
   Failure f = errorOf("medium: {sigma_a: 0.1}\nmedia:\n  - {region: tank, sigma_a: 0.3}\n");
   EXPECT_NE(f.what.find("per-region media together are not built"), std::string::npos) << f.what;
-  f = errorOf("render: {backend: cpu}\nmedia:\n  - {region: tank, sigma_s: 0.3}\n");
-  EXPECT_NE(f.what.find("built in the reference only"), std::string::npos) << f.what;
+  f = errorOf("render: {backend: cpu}\nmedia:\n  - {region: tank, sigma_s: 0.3}\n",
+              "scene: scene.gltf\ncamera: {}\nlight: {}\ntime: {camera_unwarp: true}\n");
+  EXPECT_NE(f.what.find("media[0].sigma_s: a scattering region (sigma_s > 0) with "
+                        "time.camera_unwarp is not built in instant radiosity"),
+            std::string::npos)
+      << f.what;
 }
 
 TEST_F(MediumConfigTest, CapturesWithoutAMediumAreRefused) {

@@ -18,21 +18,7 @@
 namespace tofsim::pipeline {
 namespace {
 
-// A closed box mesh named `name` (8 shared corners, 12 triangles).
-void addBox(scene::Scene& scene, const std::string& name, glm::vec3 lo, glm::vec3 hi) {
-  scene::Mesh m;
-  m.name = name;
-  for (int i = 0; i < 8; ++i) {
-    m.positions_world.emplace_back(i & 1 ? hi.x : lo.x, i & 2 ? hi.y : lo.y, i & 4 ? hi.z : lo.z);
-    m.normals_world.emplace_back(0.0f, 0.0f, 1.0f);
-  }
-  // Outward winding of each face (checked by takeRegionMesh's volume sign and
-  // regionMeshProblem; a box wound inwards throughout would be turned).
-  const uint32_t tris[12][3] = {{0, 2, 1}, {1, 2, 3}, {4, 5, 6}, {5, 7, 6}, {0, 1, 4}, {1, 5, 4},
-                                {2, 6, 3}, {3, 6, 7}, {0, 4, 2}, {2, 4, 6}, {1, 3, 5}, {3, 7, 5}};
-  for (const auto& t : tris) m.indices.insert(m.indices.end(), {t[0], t[1], t[2]});
-  scene.meshes.push_back(std::move(m));
-}
+using test::addBox;
 
 config::RunConfig withRegions(std::initializer_list<const char*> names) {
   config::RunConfig c;

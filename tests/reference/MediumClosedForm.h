@@ -4,7 +4,7 @@
 // follow from the sample count: a camera with a point light at its pinhole
 // (the lidar equation's geometry), render.indirect bounces 1, pixel centres.
 // A path draws a free flight t from the spectral-MIS mixture
-// p(t) = mean_c sigma_t,c exp(-sigma_t,c t) (FreeFlight.h): if it scatters at
+// p(t) = mean_c sigma_t,c exp(-sigma_t,c t) (tofsim/ir/SpectralFlight.h): if it scatters at
 // t its estimate in channel c is T_c(t) sigma_s,c / p(t) x p(pi) I_c T_c(t) / t^2
 // (deposited at round trip 2 t); if it reaches a surface at r, whose vacuum
 // return is v_c, T_c(r) / P(r) x v_c T_c(r), P(r) = mean_c T_c(r). A light

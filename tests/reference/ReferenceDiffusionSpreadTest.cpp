@@ -116,7 +116,7 @@ std::vector<double> closedForm(double radius, double muSPrime) {
 // disk of radius `radius` lit.
 std::vector<std::vector<double>> render(double radius) {
   scene::Scene scene;
-  test::addRegionBox(scene, "slab", {-1.0f, -1.0f, -0.5f}, {1.0f, 1.0f, 0.0f});  // 100 x 50 l*
+  test::addBox(scene, "slab", {-1.0f, -1.0f, -0.5f}, {1.0f, 1.0f, 0.0f});  // 100 x 50 l*
   scene.regions.push_back(*scene::takeRegionMesh(scene, "slab"));
   // A black square high above keeps a surface in the scene; paths that reach it end.
   test::addQuad(scene, glm::vec3(0.0f, 0.0f, 20.0f), glm::vec3(0, 0, -1), 1.0f, glm::vec3(0.0f));

@@ -24,27 +24,30 @@ void addQuad(scene::Scene& scene, const glm::vec3& center, const glm::vec3& norm
   scene.meshes.push_back(mesh);
 }
 
-void addRegionBox(scene::Scene& scene, const std::string& name, const glm::vec3& lo,
-                  const glm::vec3& hi) {
-  scene::Mesh mesh;
-  mesh.name = name;
-  for (int i = 0; i < 8; ++i) {  // corner i: bit 0 picks x, bit 1 y, bit 2 z
-    mesh.positions_world.emplace_back(i & 1 ? hi.x : lo.x, i & 2 ? hi.y : lo.y, i & 4 ? hi.z : lo.z);
-    mesh.normals_world.emplace_back(0.0f, 0.0f, 1.0f);  // an interface: never shaded
+void addBox(scene::Scene& scene, const std::string& name, glm::vec3 lo, glm::vec3 hi,
+            bool inwards) {
+  scene::Mesh m;
+  m.name = name;
+  for (int i = 0; i < 8; ++i) {
+    m.positions_world.emplace_back(i & 1 ? hi.x : lo.x, i & 2 ? hi.y : lo.y, i & 4 ? hi.z : lo.z);
+    m.normals_world.emplace_back(0.0f, 0.0f, 1.0f);
   }
   const glm::vec3 centre = 0.5f * (lo + hi);
-  const uint32_t faces[6][4] = {{0, 1, 3, 2}, {4, 5, 7, 6}, {0, 1, 5, 4},
-                                {2, 3, 7, 6}, {0, 2, 6, 4}, {1, 3, 7, 5}};  // each around its face
+  // Each face's 4 corners in order around it.
+  const int faces[6][4] = {{0, 1, 3, 2}, {4, 5, 7, 6}, {0, 1, 5, 4},
+                           {2, 3, 7, 6}, {0, 2, 6, 4}, {1, 3, 7, 5}};
   for (const auto& f : faces) {
-    const glm::vec3 a = mesh.positions_world[f[0]], b = mesh.positions_world[f[1]],
-                    c = mesh.positions_world[f[2]];
-    const bool outwards = glm::dot(glm::cross(b - a, c - a), a - centre) > 0.0f;
-    for (const uint32_t k : {1u, 2u}) {  // the quad's two triangles, (0, k, k + 1)
-      mesh.indices.insert(mesh.indices.end(),
-                          {f[0], outwards ? f[k] : f[k + 1], outwards ? f[k + 1] : f[k]});
+    for (const auto& t : {std::array<int, 3>{f[0], f[1], f[2]}, std::array<int, 3>{f[0], f[2], f[3]}}) {
+      const glm::vec3 a = m.positions_world[t[0]], b = m.positions_world[t[1]],
+                      c = m.positions_world[t[2]];
+      const bool out = glm::dot(glm::cross(b - a, c - a), (a + b + c) / 3.0f - centre) > 0.0f;
+      const bool flip = out == inwards;
+      m.indices.insert(m.indices.end(), {static_cast<uint32_t>(t[0]),
+                                         static_cast<uint32_t>(flip ? t[2] : t[1]),
+                                         static_cast<uint32_t>(flip ? t[1] : t[2])});
     }
   }
-  scene.meshes.push_back(std::move(mesh));
+  scene.meshes.push_back(std::move(m));
 }
 
 scene::Scene makePlane(float size_m, const glm::vec3& albedo) {

@@ -13,11 +13,11 @@ namespace tofsim::test {
 void addQuad(scene::Scene& scene, const glm::vec3& center, const glm::vec3& normal, float size_m,
              const glm::vec3& albedo);
 
-/// Adds one closed mesh `name`, the box [lo, hi] (12 triangles wound
-/// outwards, no material): a medium region's interface once
-/// scene::takeRegionMesh takes it out of the scene's surfaces.
-void addRegionBox(scene::Scene& scene, const std::string& name, const glm::vec3& lo,
-                  const glm::vec3& hi);
+/// Adds one closed mesh `name`, the box [lo, hi] (8 shared corners, 12
+/// triangles wound outwards, or inwards; no material): a medium region's
+/// interface once scene::takeRegionMesh takes it out of the scene's surfaces.
+void addBox(scene::Scene& scene, const std::string& name, glm::vec3 lo, glm::vec3 hi,
+            bool inwards = false);
 
 /// One diffuse square facing +z at z = 0, `size_m` wide.
 scene::Scene makePlane(float size_m, const glm::vec3& albedo = glm::vec3(0.5f));

@@ -19,6 +19,7 @@
 #include <string>
 
 #include "support/ClosedForm.h"
+#include "support/RegionScenes.h"
 #include "support/TestJobs.h"
 #include "tofsim/capture/Imager.h"
 #include "tofsim/capture/MediumRegions.h"
@@ -29,33 +30,6 @@
 namespace tofsim::test {
 
 using capture::RegionMedium;
-
-// A box mesh named `name` with 8 shared corners, wound outwards (or inwards).
-inline void addBox(scene::Scene& scene, const std::string& name, glm::vec3 lo, glm::vec3 hi,
-                   bool inwards = false) {
-  scene::Mesh m;
-  m.name = name;
-  for (int i = 0; i < 8; ++i) {
-    m.positions_world.emplace_back(i & 1 ? hi.x : lo.x, i & 2 ? hi.y : lo.y, i & 4 ? hi.z : lo.z);
-    m.normals_world.emplace_back(0.0f, 0.0f, 1.0f);
-  }
-  const glm::vec3 centre = 0.5f * (lo + hi);
-  // Each face's 4 corners in order around it.
-  const int faces[6][4] = {{0, 1, 3, 2}, {4, 5, 7, 6}, {0, 1, 5, 4},
-                           {2, 3, 7, 6}, {0, 2, 6, 4}, {1, 3, 7, 5}};
-  for (const auto& f : faces) {
-    for (const auto& t : {std::array<int, 3>{f[0], f[1], f[2]}, std::array<int, 3>{f[0], f[2], f[3]}}) {
-      const glm::vec3 a = m.positions_world[t[0]], b = m.positions_world[t[1]],
-                      c = m.positions_world[t[2]];
-      const bool out = glm::dot(glm::cross(b - a, c - a), (a + b + c) / 3.0f - centre) > 0.0f;
-      const bool flip = out == inwards;
-      m.indices.insert(m.indices.end(), {static_cast<uint32_t>(t[0]),
-                                         static_cast<uint32_t>(flip ? t[2] : t[1]),
-                                         static_cast<uint32_t>(flip ? t[1] : t[2])});
-    }
-  }
-  scene.meshes.push_back(std::move(m));
-}
 
 constexpr float kTop = 1.0f, kBottom = 0.5f, kHalf = 0.25f;  // the cube over the plane
 
@@ -102,17 +76,6 @@ inline double pixelSum(const TransientVolume& v, int x, int y, int c) {
   return sum;
 }
 
-inline capture::VolumeCollector renderReference(const capture::RenderJob& job, int32_t bounces,
-                                                int32_t samples) {
-  reference::ReferenceSettings s;
-  s.pixel_filter = reference::PixelFilter::Point;
-  s.bounces = bounces;
-  s.samples_per_pixel = samples;
-  s.threads = 2;
-  capture::VolumeCollector out(job.camera().width, job.camera().height, job.settings.time, 3);
-  reference::ReferenceRenderer(s).render(job, out);
-  return out;
-}
 
 // Pixels through the cube: vacuum x exp(-sigma_a 2 L) per channel (to `tol`,
 // relative); the others the vacuum's values.
@@ -158,11 +121,6 @@ inline void expectDelayedByTheCube(const TransientVolume& tank, const TransientV
   EXPECT_GT(moved, 2);
 }
 
-inline double energy(const TransientVolume& v) {
-  double sum = 0.0;
-  for (const float x : v.values()) sum += x;
-  return sum;
-}
 
 // The corner (floor and wall) with an absorbing cube region in the light's
 // and the camera's way: instant radiosity (`renderIr`: the backend's volumes)

@@ -217,16 +217,19 @@ void refuseUnbuiltRegionOnGl(const ConfigNode& e, const capture::Medium& m,
 // What instant radiosity does not build into a region's medium yet.
 void refuseUnbuiltRegionLight(const ConfigNode& e, const capture::Medium& m,
                               const RunConfig& config) {
-  if (config.renderer != RendererKind::InstantRadiosity) return;
-  if (m.scatters()) {
-    e.failKey(e.has("visibility") ? "visibility" : "sigma_s",
-              "a scattering region (sigma_s > 0) is built in the reference only (its single "
-              "scattering and medium VPLs are not, in instant radiosity): set "
-              "`render.renderer: reference`, or sigma_s: 0");
+  if (config.renderer != RendererKind::InstantRadiosity || !m.scatters()) return;
+  const char* key = e.has("visibility") ? "visibility" : "sigma_s";
+  if (config.backend != IrBackendKind::Cpu) {
+    e.failKey(key,
+              "a scattering region (sigma_s > 0) is built on render.backend: cpu and in the "
+              "reference only: set `render.backend: cpu` (or `render.renderer: reference`)");
   }
-  if (config.render.indirect.enabled && config.render.indirect.bounces > 1) {
-    e.fail("per-region media attenuate instant radiosity's first indirect bounce only: set "
-           "render.indirect.bounces: 1 (or `render.renderer: reference`)");
+  if (config.render.time.camera_unwarp) {
+    e.failKey(key,
+              "a scattering region (sigma_s > 0) with time.camera_unwarp is not built in instant "
+              "radiosity (its light is binned along the camera ray by a path that grows with "
+              "the ray only when the camera leg is timed): set time.camera_unwarp: false, or "
+              "`render.renderer: reference`");
   }
 }
 

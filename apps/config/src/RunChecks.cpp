@@ -3,6 +3,7 @@
 #include <string>
 
 #include "tofsim/capture/IrCapabilities.h"
+#include "tofsim/capture/RegionScattering.h"
 
 namespace tofsim::config {
 
@@ -24,7 +25,7 @@ void checkVplCount(const ConfigNode& root, const RunConfig& config) {
                                                                                        : 6;
   const long long side = s.rsm_resolution;
   // A scattering medium's VPLs from the light join the first bounce.
-  const long long medium = config.render.medium.scatters() ? s.medium_vpls : 0;
+  const long long medium = config.render.medium.scatters() || capture::regionsScatter(config.render) ? s.medium_vpls : 0;
   const long long first = faces * side * side + medium;
   // Every later bounce traces vpls_per_bounce (0: as many as the first) VPLs.
   const long long later = (s.bounces - 1) * (s.vpls_per_bounce > 0 ? s.vpls_per_bounce : first);

@@ -175,7 +175,7 @@ std::vector<ir::Vpl> CpuBackend::generateVpls(const capture::RenderJob& job) {
 
 void CpuBackend::setVpls(const std::vector<ir::Vpl>& vpls) {
   vpls_ = std::make_unique<VplArrays>(vpls);
-  mediumVpls_ = !vpls.empty() && job_.settings.vplsLightCameraRays();
+  mediumVpls_ = !vpls.empty() && ir::vplsLightCameraRays(job_.settings);
   mediumRayThreshold_ = ir::mediumRayThreshold(vpls, sceneScale_m_);
   ism_.reset();
   if (indirectVisibility_ && job_.settings.indirect.visibility == capture::Visibility::Ism &&

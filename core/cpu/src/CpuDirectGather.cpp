@@ -26,6 +26,7 @@ void CpuBackend::gatherDirect() {
   parallelFor(tiles, threads_, [&](std::size_t tile) { gatherDirectTile(tile); });
   // An absorbing medium scatters nothing into the rays (it only attenuates).
   if (job_.settings.medium.scatters()) gatherMediumDirect();
+  if (regions_.scatters()) gatherRegionDirect();
 }
 
 /// One sample's direct light, before its share of the pixel.

@@ -52,6 +52,8 @@ struct VplMediumTerms {
 }  // namespace
 
 void CpuBackend::gatherMediumIndirect(std::size_t firstVpl, std::size_t count) {
+  // Per-region media: along the rays' stretches inside them (CpuRegionVpls.cpp).
+  if (!regions_.empty()) return gatherRegionIndirect(firstVpl, count);
   const capture::RenderSettings& s = job_.settings;
   VplMediumTerms t;
   t.axis = {static_cast<float>(s.time.start_m()), static_cast<float>(s.time.bin_width_m()),

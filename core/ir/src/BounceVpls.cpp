@@ -7,6 +7,7 @@
 #include <thread>
 
 #include "tofsim/ir/HitVertex.h"
+#include "tofsim/ir/LegFlight.h"
 #include "tofsim/ir/MaterialVertex.h"
 #include "tofsim/ir/MediumVpl.h"
 #include "tofsim/ir/MediumVpls.h"
@@ -92,9 +93,35 @@ std::optional<Vpl> shootChild(const rays::RayScene& scene, const Vpl& parent,
                               hit ? static_cast<double>(glm::length(hit->position_world - p)) : kNoHit,
                               false, rng.nextDouble());
   }
+  // Per-region media: the leg's free flight through them (LegFlight's
+  // spectral MIS, the reference's; no draw where the leg crosses no
+  // scattering region, where it is the transmittance exactly).
+  std::optional<LegFlight> regionLeg;
+  double regionEvent_m = SpectralFlight::kNone;
+  if (tracing.regions != nullptr && !tracing.regions->empty()) {
+    regionLeg.emplace(*tracing.regions, glm::dvec3(p), glm::dvec3(w),
+                      hit ? static_cast<double>(glm::length(hit->position_world - p)) : kNoHit);
+    regionEvent_m = regionLeg->sample(rng);
+  }
   std::optional<Vpl> child;
   physics::ScatterVertex vertex;
-  if (flight && flight->inMedium) {
+  // (The event's region: none where rounding put it on the region's far face.)
+  const capture::Medium* eventRegion =
+      regionEvent_m < SpectralFlight::kNone ? regionLeg->mediumAt(regionEvent_m) : nullptr;
+  if (eventRegion != nullptr) {
+    // A medium child in the region where the ray scatters: the power
+    // extinguished there over the event's density, the region's phase.
+    const double t = regionEvent_m;
+    const capture::Medium& region = *eventRegion;
+    vertex = physics::mediumVertex(region.albedo(), region.phase, region.g);
+    const glm::vec3 flux = childFlux(parent.vertex, vertex, share, continuation.weight) *
+                           glm::vec3(regionLeg->extinguished(t) / regionLeg->pdf(t));
+    const double path_m = parent.positionPath.w + eta * (t + regionLeg->extraPath_m(t));
+    if (flux.r + flux.g + flux.b > 0.0f) {
+      child = mediumVpl(p + w * static_cast<float>(t), static_cast<float>(path_m), flux, -w, region,
+                        0.0f);
+    }
+  } else if (flight && flight->inMedium) {
     const auto t = static_cast<float>(flight->t_m);
     const physics::ScatterVertex mediumVertex =
         physics::mediumVertex(tracing.medium.albedo(), tracing.medium.phase, tracing.medium.g);
@@ -106,7 +133,7 @@ std::optional<Vpl> shootChild(const rays::RayScene& scene, const Vpl& parent,
     vertex = mediumVertex;
   } else {
     if (!hit) return std::nullopt;  // the light leaves the scene
-    const float path_m = parent.positionPath.w + eta * glm::length(hit->position_world - p);
+    float path_m = parent.positionPath.w + eta * glm::length(hit->position_world - p);
     // The child receives the parent's share times the continuation's weight
     // and carries the hit's vertex (and, where its flux does not hold its
     // scatter, the direction its light came from, -w).
@@ -117,6 +144,14 @@ std::optional<Vpl> shootChild(const rays::RayScene& scene, const Vpl& parent,
     } else if (tracing.medium.present()) {
       flux *= physics::mediumTransmittance(tracing.medium.sigmaT(),
                                            glm::length(hit->position_world - p));
+    }
+    if (regionLeg) {
+      // Through the regions to the hit: T / P(reaching it), the transmittance
+      // itself where the leg crosses no scattering region (as the first
+      // bounce's light legs), and the time it spends in them.
+      const double d = glm::length(hit->position_world - p);
+      flux *= glm::vec3(regionLeg->passWeight(d));
+      path_m += static_cast<float>(static_cast<double>(eta) * regionLeg->extraPath_m(d));
     }
     if (flux.r + flux.g + flux.b > 0.0f) {
       child = Vpl{glm::vec4(hit->position_world, path_m), glm::vec4(hit->normal_world, 0.0f),
@@ -209,12 +244,23 @@ BouncedVpls traceLaterBounces(const capture::RenderJob& job, const rays::RayScen
       classes != nullptr && classes->delayed() ? classes : nullptr;
   BouncedVpls out;
   out.vpls = std::move(firstBounce);
+  // Per-region media: every later leg through the regions (joined with the
+  // scene's region meshes here, once per render).
+  const capture::MediumRegions regions =
+      job.settings.media.empty() ? capture::MediumRegions()
+                                 : capture::MediumRegions(job.settings.media, *job.scene,
+                                                          job.settings.time.index_of_refraction);
   // A scattering medium: the light's paths that scatter in it before any
-  // surface, after the RSM's VPLs (bounce 1: one scattering event).
-  if (s.enabled && s.medium_vpls > 0 && job.settings.medium.scatters()) {
-    const std::vector<Vpl> medium = lightMediumVpls(
-        scene(), job.light, job.settings.medium, static_cast<std::size_t>(s.medium_vpls),
-        job.settings.seed, job.settings.time.index_of_refraction, s.trace_threads, delayed);
+  // surface, after the RSM's VPLs (bounce 1: one scattering event); the
+  // same in scattering regions.
+  if (lightMediumVplsWanted(job.settings)) {
+    const auto rays = static_cast<std::size_t>(s.medium_vpls);
+    const std::vector<Vpl> medium =
+        job.settings.medium.scatters()
+            ? lightMediumVpls(scene(), job.light, job.settings.medium, rays, job.settings.seed,
+                              job.settings.time.index_of_refraction, s.trace_threads, delayed)
+            : lightRegionVpls(scene(), job.light, regions, rays, job.settings.seed,
+                              job.settings.time.index_of_refraction, s.trace_threads, delayed);
     out.vpls.insert(out.vpls.end(), medium.begin(), medium.end());
   }
   out.firstOfBounce = {0, out.vpls.size()};
@@ -224,7 +270,7 @@ BouncedVpls traceLaterBounces(const capture::RenderJob& job, const rays::RayScen
   }
   const std::size_t count =
       s.vpls_per_bounce > 0 ? static_cast<std::size_t>(s.vpls_per_bounce) : out.vpls.size();
-  const BounceTracing tracing{s.russian_roulette, s.trace_threads, job.settings.medium};
+  const BounceTracing tracing{s.russian_roulette, s.trace_threads, job.settings.medium, &regions};
   const BounceMaterials materials{vertexModelOf(job.settings.materials),
                                   static_cast<float>(s.vpl_brdf_clamp_per_sr), delayed};
   std::vector<Vpl> parents(out.vpls);

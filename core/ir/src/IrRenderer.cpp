@@ -8,6 +8,7 @@
 #include "JobValidation.h"
 #include "MemoryPlan.h"
 #include "tofsim/capture/DirectLightView.h"
+#include "tofsim/capture/RegionScattering.h"
 #include "tofsim/capture/SegmentStream.h"
 #include "tofsim/ir/BounceVpls.h"
 #include "tofsim/ir/LitPixels.h"
@@ -234,6 +235,12 @@ RenderResult IrRenderer::render(const RenderJob& job, SegmentSink& sink,
     throw InputError("render.indirect.merge_pixel_samples runs on render.backend: cpu; the " +
                      backend.description() + " backend gathers every pixel sample");
   }
+  // A scattering region's passes trace a ray per node along the camera rays
+  // (shadow rays, the regions' passages): the backend that traces rays.
+  if (regionsScatter(job.settings) && !backend.tracesRays()) {
+    throw InputError("a scattering region (media: sigma_s > 0) runs on render.backend: cpu; the " +
+                     backend.description() + " backend does not scatter light in regions");
+  }
   RenderResult result;
 
   PassClock clock;
@@ -272,8 +279,7 @@ RenderResult IrRenderer::render(const RenderJob& job, SegmentSink& sink,
   // both backends gather the same VPLs of every bounce; bounced.firstOfBounce
   // keeps which VPLs are of which bounce (for bounce-resolved output).
   const capture::IndirectSettings& indirect = job.settings.indirect;
-  const BouncedVpls bounced = indirect.bounces > 1 || (indirect.enabled && indirect.medium_vpls > 0 &&
-                                                        job.settings.medium.scatters())
+  const BouncedVpls bounced = indirect.bounces > 1 || lightMediumVplsWanted(job.settings)
                                   ? withLaterBounces(job, rays(), backend.generateVpls(job), &classes)
                                   : withLaterBounces(job, backend.generateVpls(job), &classes);
   const std::vector<Vpl>& vpls = bounced.vpls;

@@ -2,6 +2,8 @@
 
 #include <string>
 
+#include "tofsim/capture/Imager.h"
+#include "tofsim/capture/RegionScattering.h"
 #include "tofsim/capture/SegmentSink.h"
 #include "tofsim/util/Error.h"
 
@@ -45,6 +47,15 @@ void validateJob(const RenderJob& job, const DeviceLimits& limits) {
   if (s.bounces < 1 || s.bounces > 8 || s.vpls_per_bounce < 0) {
     throw InputError("render.indirect.bounces must be in [1, 8] (got " + std::to_string(s.bounces) +
                      ") and vpls_per_bounce >= 0 (got " + std::to_string(s.vpls_per_bounce) + ")");
+  }
+  // A scattering region's light is binned along the camera ray by its path,
+  // which grows with s only while the camera leg is timed.
+  if (regionsScatter(job.settings) &&
+      (job.settings.time.camera_unwarp || !lastLegCounts(job.imager))) {
+    throw InputError(
+        "a scattering region (media: sigma_s > 0) with the camera leg untimed "
+        "(time.camera_unwarp) is not built in instant radiosity: set time.camera_unwarp: "
+        "false, or render.renderer: reference");
   }
   // One ISM (without its pull-push pyramid) is one buffer.
   const std::size_t ismBytes = std::size_t(s.ism_resolution) * s.ism_resolution * sizeof(float);

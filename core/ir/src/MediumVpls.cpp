@@ -4,6 +4,7 @@
 #include <cmath>
 #include <optional>
 
+#include "tofsim/ir/LegFlight.h"
 #include "tofsim/ir/MediumVpl.h"
 #include "tofsim/ir/VplClasses.h"
 #include "tofsim/physics/HemisphereSampling.h"
@@ -51,6 +52,29 @@ LightRay sampleLightRay(const capture::Light& light, float u1, float u2) {
   return {w, light.intensity_W_per_sr * (profile * solidAngle)};
 }
 
+// `count` rays of the light, each with its own generator (seed, its index:
+// the bytes do not depend on `threads`), in fixed runs; `vplOf(rng)` is a
+// ray's VPL or none. The VPLs in ray order.
+template <class VplOf>
+std::vector<Vpl> lightRayVpls(std::size_t count, uint64_t seed, int32_t threads,
+                              const VplOf& vplOf) {
+  std::vector<std::optional<Vpl>> slots(count);
+  const std::size_t tasks = (count + kRaysPerTask - 1) / kRaysPerTask;
+  parallelFor(tasks, resolveThreads(threads), [&](std::size_t task) {
+    const std::size_t end = std::min(count, (task + 1) * kRaysPerTask);
+    for (std::size_t j = task * kRaysPerTask; j < end; ++j) {
+      Pcg32 rng = Pcg32::forUnit(seed, kLightRayUnit | static_cast<uint64_t>(j));
+      slots[j] = vplOf(rng);
+    }
+  });
+  std::vector<Vpl> vpls;
+  vpls.reserve(count);
+  for (const std::optional<Vpl>& v : slots) {
+    if (v) vpls.push_back(*v);
+  }
+  return vpls;
+}
+
 }  // namespace
 
 FreeFlight sampleFreeFlight(const capture::Medium& medium, double hit_m, bool truncated, double u) {
@@ -78,38 +102,53 @@ std::vector<Vpl> lightMediumVpls(const rays::RayScene& scene, const capture::Lig
                                  const capture::Medium& medium, std::size_t count, uint64_t seed,
                                  double indexOfRefraction, int32_t threads,
                                  const physics::ResponseClassTable* classes) {
-  std::vector<Vpl> vpls;
-  if (count == 0 || !medium.scatters()) return vpls;
+  if (count == 0 || !medium.scatters()) return {};
   const float perRay = 1.0f / static_cast<float>(count);
   const auto eta = static_cast<float>(indexOfRefraction);
   const bool delayed = classes != nullptr && classes->delayed();
-  std::vector<std::optional<Vpl>> slots(count);
-  const std::size_t tasks = (count + kRaysPerTask - 1) / kRaysPerTask;
-  parallelFor(tasks, resolveThreads(threads), [&](std::size_t task) {
-    const std::size_t end = std::min(count, (task + 1) * kRaysPerTask);
-    for (std::size_t j = task * kRaysPerTask; j < end; ++j) {
-      Pcg32 rng = Pcg32::forUnit(seed, kLightRayUnit | static_cast<uint64_t>(j));
-      const float u1 = rng.nextFloat();
-      const float u2 = rng.nextFloat();
-      const LightRay ray = sampleLightRay(light, u1, u2);
-      if (!(ray.power_W.r + ray.power_W.g + ray.power_W.b > 0.0f)) continue;
-      const auto hit = scene.intersect(light.position_world, ray.direction);
-      const FreeFlight f =
-          sampleFreeFlight(medium, hit ? static_cast<double>(hit->distance_m) : kNoHit, true,
-                           rng.nextDouble());
-      if (!f.inMedium) continue;
-      const auto t = static_cast<float>(f.t_m);
-      Vpl v = mediumVpl(light.position_world + ray.direction * t, eta * t,
-                        ray.power_W * perRay * f.weight, -ray.direction, medium, 0.0f);
-      if (delayed) v.flux.w = vplClassAfter(*classes, 0, v.vertex);
-      slots[j] = v;
-    }
+  return lightRayVpls(count, seed, threads, [&](Pcg32& rng) -> std::optional<Vpl> {
+    const float u1 = rng.nextFloat();
+    const float u2 = rng.nextFloat();
+    const LightRay ray = sampleLightRay(light, u1, u2);
+    if (!(ray.power_W.r + ray.power_W.g + ray.power_W.b > 0.0f)) return std::nullopt;
+    const auto hit = scene.intersect(light.position_world, ray.direction);
+    const FreeFlight f = sampleFreeFlight(
+        medium, hit ? static_cast<double>(hit->distance_m) : kNoHit, true, rng.nextDouble());
+    if (!f.inMedium) return std::nullopt;
+    const auto t = static_cast<float>(f.t_m);
+    Vpl v = mediumVpl(light.position_world + ray.direction * t, eta * t,
+                      ray.power_W * perRay * f.weight, -ray.direction, medium, 0.0f);
+    if (delayed) v.flux.w = vplClassAfter(*classes, 0, v.vertex);
+    return v;
   });
-  vpls.reserve(count);
-  for (const std::optional<Vpl>& v : slots) {
-    if (v) vpls.push_back(*v);
-  }
-  return vpls;
+}
+
+std::vector<Vpl> lightRegionVpls(const rays::RayScene& scene, const capture::Light& light,
+                                 const capture::MediumRegions& regions, std::size_t count,
+                                 uint64_t seed, double indexOfRefraction, int32_t threads,
+                                 const physics::ResponseClassTable* classes) {
+  if (count == 0 || !regions.scatters()) return {};
+  const float perRay = 1.0f / static_cast<float>(count);
+  const bool delayed = classes != nullptr && classes->delayed();
+  return lightRayVpls(count, seed, threads, [&](Pcg32& rng) -> std::optional<Vpl> {
+    const float u1 = rng.nextFloat();
+    const float u2 = rng.nextFloat();
+    const LightRay ray = sampleLightRay(light, u1, u2);
+    if (!(ray.power_W.r + ray.power_W.g + ray.power_W.b > 0.0f)) return std::nullopt;
+    const auto hit = scene.intersect(light.position_world, ray.direction);
+    const LegFlight leg(regions, glm::dvec3(light.position_world), glm::dvec3(ray.direction),
+                        hit ? static_cast<double>(hit->distance_m) : kNoHit);
+    const double t = leg.sampleBeforeEnd(rng);
+    const capture::Medium* region = t < kNoHit ? leg.mediumAt(t) : nullptr;
+    if (region == nullptr || !region->scatters()) return std::nullopt;
+    const glm::vec3 weight(leg.extinguished(t) / leg.pdfBeforeEnd(t));
+    const double path_m = indexOfRefraction * (t + leg.extraPath_m(t));
+    Vpl v = mediumVpl(light.position_world + ray.direction * static_cast<float>(t),
+                      static_cast<float>(path_m),
+                      ray.power_W * perRay * weight, -ray.direction, *region, 0.0f);
+    if (delayed) v.flux.w = vplClassAfter(*classes, 0, v.vertex);
+    return v;
+  });
 }
 
 }  // namespace tofsim::ir

@@ -4,6 +4,7 @@
 #include <string>
 
 #include "tofsim/capture/SegmentSink.h"
+#include "tofsim/ir/MediumRayVpls.h"
 #include "tofsim/ir/MediumVpl.h"
 #include "tofsim/util/Error.h"
 
@@ -64,9 +65,9 @@ MemoryPlan planMemory(const capture::RenderJob& job, const DeviceLimits& limits,
   if (responseBuffers > 0) {
     pixel.otherBytes = 16 * sizeof(double) + responseBuffers * sizeof(int32_t);
   }
-  // A scattering medium's VPL light along the camera rays: its own histogram
-  // and off-axis sums per pixel (the backends' medium VPL pass).
-  if (vplCount > 0 && job.settings.vplsLightCameraRays()) {
+  // A scattering medium's (or region's) VPL light along the camera rays: its
+  // own histogram and off-axis sums per pixel (the backends' medium VPL pass).
+  if (vplCount > 0 && vplsLightCameraRays(job.settings)) {
     pixel.otherBytes += pixel.floatsPerPixel * sizeof(float) + 2 * sizeof(float);
   }
   plan.segments =

@@ -1,7 +1,7 @@
 // The reference path tracer in the homogeneous medium that fills the scene
 // (issue 42; core/reference/README.md, "In a medium"). A path's vertices are
 // surfaces or medium events: along each leg a free flight is drawn
-// (FreeFlight: spectral MIS over the channels' sigma_t); if it ends before
+// (SpectralFlight, LegFlight: spectral MIS over the channels' sigma_t); if it ends before
 // the next surface the path scatters there (throughput T sigma_s / p, a new
 // direction drawn from the phase function, whose weight phase / pdf is 1),
 // else it reaches the surface (throughput T / P) and continues as in vacuum.
@@ -50,7 +50,7 @@ void PathIntegrator::traceMediumPath(const glm::vec3& eye, const glm::vec3& dire
     const std::optional<SurfaceHit> next = scene_.intersect(origin, dir);
     // In float, as the vacuum paths measure their legs (the same bins).
     const double toSurface_m =
-        next ? glm::length(next->position_world - position) : FreeFlight::kNone;
+        next ? glm::length(next->position_world - position) : SpectralFlight::kNone;
     const LegFlight leg = legFlight(position, dir, toSurface_m);
     const double flight_m = leg.sample(rng);
     double* histogram = vertex == 1 ? pixel.direct : pixel.indirect;

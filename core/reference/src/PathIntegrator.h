@@ -11,14 +11,18 @@
 #include "tofsim/rays/RayScene.h"
 #include "tofsim/reference/ReferenceRenderer.h"
 #include "tofsim/util/Random.h"
-#include "FreeFlight.h"
-#include "LegFlight.h"
+#include "tofsim/ir/LegFlight.h"
+#include "tofsim/ir/SpectralFlight.h"
 #include "tofsim/reference/Equiangular.h"
 #include "VertexDelay.h"
 
 namespace tofsim::reference {
 
 using rays::SurfaceHit;
+// Free flights by spectral MIS (tofsim/ir/LegFlight.h, shared with IR's
+// region VPLs).
+using ir::LegFlight;
+using ir::SpectralFlight;
 
 struct PixelOutput {
   float* direct = nullptr;    ///< T * 3 floats, zeroed by the caller
@@ -179,7 +183,7 @@ class PathIntegrator {
   /// RenderSettings::medium present or media; the medium's flights (none
   /// with media); the equiangular points' phase model and g.
   bool inMedium_;
-  FreeFlight flight_;
+  SpectralFlight flight_;
   int32_t phase_;
   float g_;
   PhaseAngleTable angles_;  ///< the phase's scattering angles, for the equiangular points

@@ -116,6 +116,9 @@ class CpuBackend : public ir::IrBackend {
   /// The medium's single scattering along every sample's camera ray into
   /// direct_ (CpuMediumDirect.cpp): with a medium only.
   void gatherMediumDirect();
+  /// The scattering regions' single scattering along every sample's camera
+  /// ray into direct_ (CpuRegionDirect.cpp): with a scattering region only.
+  void gatherRegionDirect();
   /// Segment pixel i's samples' camera rays, as the medium passes integrate
   /// along them (CpuMediumDirect.cpp): `rays` of the job's imager, `lens`
   /// its thin lens with aperture samples (null without).
@@ -123,8 +126,12 @@ class CpuBackend : public ir::IrBackend {
                         std::size_t i, std::vector<MediumSampleRay>& out) const;
   /// VPLs [firstVpl, + count)'s light scattered once by the medium into
   /// every sample's camera ray (CpuMediumVpls.cpp), into mediumIndirect_:
-  /// with a scattering medium only.
+  /// with a scattering medium only (with per-region media it hands over to
+  /// gatherRegionIndirect).
   void gatherMediumIndirect(std::size_t firstVpl, std::size_t count);
+  /// The same in scattering regions, along the camera rays' stretches inside
+  /// them (CpuRegionVpls.cpp), into mediumIndirect_.
+  void gatherRegionIndirect(std::size_t firstVpl, std::size_t count);
   /// VPLs [firstVpl, + count) into indirect_ for the segment's pixels in `tile`.
   void gatherTile(std::size_t tile, std::size_t firstVpl, std::size_t count);
   IndirectConstants indirectConstants() const;

@@ -11,6 +11,8 @@
 #include <vector>
 
 #include "tofsim/capture/Medium.h"
+#include "tofsim/capture/MediumRegions.h"
+#include "tofsim/capture/RegionScattering.h"
 #include "tofsim/capture/RenderJob.h"
 #include "tofsim/ir/IrBackend.h"
 #include "tofsim/physics/ResponseClassTable.h"
@@ -46,6 +48,12 @@ struct BounceTracing {
   /// (ir::sampleFreeFlight): the child may be a medium VPL where the ray
   /// scatters before its hit (core/physics/medium_vpls.md).
   capture::Medium medium{};
+  /// Per-region media (RenderSettings::media joined with the scene; null or
+  /// empty: none): a child's parent -> child leg through them is attenuated
+  /// by its transmittance and delayed by the time it spends in them
+  /// (capture::RegionPassage), as the RSM VPLs' light legs are
+  /// (ir::attenuateLightLegs).
+  const capture::MediumRegions* regions = nullptr;
 };
 
 /// How later bounces reflect (render.materials, render.indirect.vpl_brdf_clamp).
@@ -87,9 +95,17 @@ std::vector<Vpl> traceBounce(const rays::RayScene& scene, const std::vector<Vpl>
                              double indexOfRefraction, const BounceTracing& tracing = {},
                              const BounceMaterials& materials = {});
 
+/// Whether a render traces the light's medium VPLs (indirect light,
+/// render.indirect.medium_vpls > 0 and a scattering medium or region).
+inline bool lightMediumVplsWanted(const capture::RenderSettings& s) {
+  return s.indirect.enabled && s.indirect.medium_vpls > 0 &&
+         (s.medium.scatters() || capture::regionsScatter(s));
+}
+
 /// Bounce 1 (`firstBounce`, the backend's RSM VPLs, then with a scattering
 /// medium render.indirect.medium_vpls of the light's medium VPLs,
-/// ir::lightMediumVpls) followed by bounces
+/// ir::lightMediumVpls, or with scattering regions ir::lightRegionVpls)
+/// followed by bounces
 /// 2..job.settings.indirect.bounces, traced through `scene` (the driver's
 /// RayScene of job.scene), on indirect.trace_threads threads. Bounce 2 traces vpls_per_bounce rays
 /// (0: as many as bounce 1 has VPLs), and so does every later bounce, or with russian_roulette as

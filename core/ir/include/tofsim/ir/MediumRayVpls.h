@@ -9,11 +9,21 @@
 #include <cstdint>
 #include <vector>
 
+#include "tofsim/capture/RegionScattering.h"
 #include "tofsim/ir/IrBackend.h"
 #include "tofsim/physics/MediumPhysics.h"
 #include "tofsim/physics/ShaderRandom.h"
 
 namespace tofsim::ir {
+
+/// Whether the VPLs' light scatters into the camera rays: a scattering medium
+/// (RenderSettings::vplsLightCameraRays) or, on the CPU backend, a
+/// scattering region (along the rays' stretches inside it), with
+/// render.indirect.medium_camera_rays.
+inline bool vplsLightCameraRays(const capture::RenderSettings& settings) {
+  return settings.vplsLightCameraRays() ||
+         (capture::regionsScatter(settings) && settings.indirect.medium_camera_rays);
+}
 
 /// The threshold for `vpls` in a scene of diagonal `sceneScale_m`: the sum of
 /// their estimates for a ray passing each at a quarter of the scene's scale

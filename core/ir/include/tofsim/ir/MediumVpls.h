@@ -13,6 +13,7 @@
 
 #include "tofsim/capture/Light.h"
 #include "tofsim/capture/Medium.h"
+#include "tofsim/capture/MediumRegions.h"
 #include "tofsim/ir/IrBackend.h"
 #include "tofsim/physics/ResponseClassTable.h"
 
@@ -59,6 +60,20 @@ FreeFlight sampleFreeFlight(const capture::Medium& medium, double hit_m, bool tr
 std::vector<Vpl> lightMediumVpls(const rays::RayScene& scene, const capture::Light& light,
                                  const capture::Medium& medium, std::size_t count, uint64_t seed,
                                  double indexOfRefraction, int32_t threads = 1,
+                                 const physics::ResponseClassTable* classes = nullptr);
+
+/// The first bounce's medium VPLs in per-region media (`media:`): `count`
+/// rays from `light` as lightMediumVpls', each through the regions to its
+/// first surface (LegFlight); a ray that crosses a scattering region makes
+/// one medium VPL at an event drawn before that surface
+/// (LegFlight::sampleBeforeEnd: always in a region), its flux the power
+/// extinguished there over the event's density, its vertex its region's
+/// (albedo, phase function), its path eta (t + the time spent in regions).
+/// The RSM's VPLs stand for the light that reaches the surfaces (attenuated
+/// by attenuateLightLegs). Empty unless some region scatters.
+std::vector<Vpl> lightRegionVpls(const rays::RayScene& scene, const capture::Light& light,
+                                 const capture::MediumRegions& regions, std::size_t count,
+                                 uint64_t seed, double indexOfRefraction, int32_t threads = 1,
                                  const physics::ResponseClassTable* classes = nullptr);
 
 }  // namespace tofsim::ir

@@ -1,6 +1,9 @@
 #pragma once
 // Free-flight distance sampling in the homogeneous medium that fills the
-// scene (capture::Medium, per-channel sigma_t), for the reference path tracer.
+// scene (capture::Medium, per-channel sigma_t), for the reference path tracer
+// (its legs through per-region media: LegFlight.h, which IR's region VPLs
+// share). IR's medium VPLs in that medium draw theirs by the mean sigma_t
+// instead (ir::sampleFreeFlight, MediumVpls.h): the bytes of its fog renders.
 //
 // Spectral MIS (one-sample, balance heuristic over the three channels; as in
 // pbrt-v3's VolPathIntegrator and Miller, Georgiev and Jarosz 2019): a
@@ -25,11 +28,11 @@
 #include "tofsim/capture/Medium.h"
 #include "tofsim/util/Random.h"
 
-namespace tofsim::reference {
+namespace tofsim::ir {
 
-class FreeFlight {
+class SpectralFlight {
  public:
-  explicit FreeFlight(const capture::Medium& medium)
+  explicit SpectralFlight(const capture::Medium& medium)
       : sigmaT_(medium.sigmaT()),
         sigmaS_(medium.sigma_s_per_m),
         scatters_(glm::any(glm::greaterThan(medium.sigma_s_per_m, glm::vec3(0.0f)))) {}
@@ -85,4 +88,4 @@ class FreeFlight {
   bool scatters_;
 };
 
-}  // namespace tofsim::reference
+}  // namespace tofsim::ir
