@@ -234,6 +234,10 @@ RenderResult IrRenderer::render(const RenderJob& job, SegmentSink& sink,
     throw InputError("render.indirect.merge_pixel_samples runs on render.backend: cpu; the " +
                      backend.description() + " backend gathers every pixel sample");
   }
+  if (need.sampled_gather && !backend.capabilities().sampled_gather) {
+    throw InputError("render.indirect.gather_pairs runs on render.backend: cpu; the " +
+                     backend.description() + " backend gathers every (pixel, VPL) pair");
+  }
   RenderResult result;
 
   PassClock clock;
