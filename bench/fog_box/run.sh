@@ -19,14 +19,14 @@
 # the same folder after a change to IR costs only the sweep and IR (SPPS ""
 # skips the sweep, keeping OUTDIR/table.txt's reference rows).
 # Usage: bench/fog_box/run.sh [RES=32] [TRUTH_SPP=32768] [SPPS="16 64 256 1024 4096"]
-#        [BACKENDS="cpu gl"] [OUTDIR]   (PYTHON: a python3 with numpy, /usr/bin/python3;
+#        [BACKENDS=cpu] [OUTDIR]   (PYTHON: a python3 with numpy, /usr/bin/python3;
 #        IR_SETTINGS: e.g. "--set render.indirect.vpls_per_bounce=2048"; NICE: a nice level)
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 res=${1:-32}
 truth_spp=${2:-32768}
 spps=${3-"16 64 256 1024 4096"}  # "" (given): no sweep, table.txt kept
-backends=${4-"cpu gl"}  # "" (given): no IR, the reference rows only
+backends=${4-cpu}  # "" (given): no IR; gl needs IR_SETTINGS="--set render.indirect.gather_pairs=0"
 out=${5:-$(mktemp -d)}
 py=${PYTHON:-/usr/bin/python3}
 tofsim=${TOFSIM:-./build/apps/cli/tofsim}
