@@ -8,7 +8,9 @@
 // geometry clamp (mediumVplRadius), its light starting at its own optical
 // path, its visibility the batch's (exact rays or the ISMs, as the surface
 // gather's). The physics: core/physics/medium_vpl_scattering.md;
-// shaders/medium_vpls.comp is the GL twin.
+// shaders/medium_vpls.comp is the GL twin. The pairs' roulette is decided a
+// block of VPLs at a time by MediumPairFilter.h's bound first (no
+// arctangents), then exactly for the pairs it lets through: the same pairs.
 #include <algorithm>
 #include <array>
 #include <optional>
