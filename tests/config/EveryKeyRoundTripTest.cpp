@@ -72,6 +72,7 @@ render:
     rsm_resolution: 8
     medium_vpls: 300
     medium_camera_rays: false
+    gather_pairs: 500
     rsm_edge_samples: 3
     merge_pixel_samples: true
     ism_resolution: 16

@@ -51,7 +51,7 @@ TEST_F(RunConfigFieldsTest, TableDocumentedDefaultsReadBackAsTheStructDefaults) 
       ++checked;
     }
   }
-  EXPECT_EQ(checked, 15 + 6);
+  EXPECT_EQ(checked, 16 + 6);
 }
 
 TEST_F(RunConfigFieldsTest, OutputFormatIsNpyOrHdf5WithALocatedError) {
@@ -79,6 +79,21 @@ TEST_F(RunConfigFieldsTest, MergedPixelSamplesOnTheGlBackendAreALocatedError) {
   ASSERT_FALSE(what.empty()) << "merge_pixel_samples on the gl backend was accepted";
   EXPECT_NE(what.find("c.yaml:9:"), std::string::npos) << what;
   EXPECT_NE(what.find("render.indirect.merge_pixel_samples"), std::string::npos) << what;
+  EXPECT_NE(what.find("backend: cpu"), std::string::npos) << what;
+}
+
+// render.indirect.gather_pairs is the CPU backend's too: with the gl backend
+// a located error; auto and cpu take it, and 0 (every pair) runs anywhere.
+TEST_F(RunConfigFieldsTest, SampledGatherOnTheGlBackendIsALocatedError) {
+  const std::string sampled = "  indirect:\n    gather_pairs: 512\n";
+  EXPECT_NE(effective("render:\n  backend: cpu\n" + sampled).find("gather_pairs: 512"),
+            std::string::npos);
+  EXPECT_NO_THROW(effective("render:\n" + sampled));
+  EXPECT_NO_THROW(effective("render:\n  backend: gl\n  indirect:\n    gather_pairs: 0\n"));
+  const std::string what = errorOf("render:\n  backend: gl\n" + sampled);
+  ASSERT_FALSE(what.empty()) << "gather_pairs on the gl backend was accepted";
+  EXPECT_NE(what.find("c.yaml:8:"), std::string::npos) << what;
+  EXPECT_NE(what.find("render.indirect.gather_pairs"), std::string::npos) << what;
   EXPECT_NE(what.find("backend: cpu"), std::string::npos) << what;
 }
 

@@ -1,5 +1,6 @@
 #include "AnalyticScenes.h"
 
+#include <array>
 #include <cmath>
 #include <cstdint>
 

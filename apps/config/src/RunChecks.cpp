@@ -68,6 +68,12 @@ void checkBackendCapabilities(const ConfigNode& root, const RunConfig& config) {
             "merge_pixel_samples",
             "runs on render.backend: cpu (or auto); the gl backend gathers every pixel sample");
   }
+  if (need.sampled_gather && !gl.sampled_gather) {
+    root.child("render").child("indirect").failKey(
+        "gather_pairs",
+        "runs on render.backend: cpu (or auto); the gl backend gathers every (pixel, VPL) pair "
+        "(set 0)");
+  }
 }
 
 // sequence.mp4 is made of the frames' steady.exr: without them there is no

@@ -8,6 +8,7 @@
 #include "CpuIsm.h"
 #include "FootprintDeposit.h"
 #include "GatherKernel.h"
+#include "GatherRoulette.h"
 #include "GatherTiles.h"
 #include "LitBounds.h"
 #include "MergedSamples.h"
@@ -177,6 +178,8 @@ void CpuBackend::setVpls(const std::vector<ir::Vpl>& vpls) {
   vpls_ = std::make_unique<VplArrays>(vpls);
   mediumVpls_ = !vpls.empty() && ir::vplsLightCameraRays(job_.settings);
   mediumRayThreshold_ = ir::mediumRayThreshold(vpls, sceneScale_m_);
+  gatherImportance_.clear();
+  if (job_.settings.indirect.gather_pairs > 0) gatherImportance_ = gatherImportance(*vpls_);
   ism_.reset();
   if (indirectVisibility_ && job_.settings.indirect.visibility == capture::Visibility::Ism &&
       !vpls.empty()) {
@@ -235,6 +238,11 @@ void CpuBackend::beginSegment(std::size_t firstPixel, std::size_t count) {
     for (std::size_t i = segmentFirstSample_[pixel]; i < segmentFirstSample_[pixel + 1]; ++i) {
       fillSurface(i, weight, steps, eta);
     }
+  }
+  if (!gatherImportance_.empty()) {  // render.indirect.gather_pairs
+    setGatherThresholds(segmentSurfaces_.data(), segmentLit_.data(), segmentFirstSample_[count],
+                        firstSample_, *vpls_, gatherImportance_.data(),
+                        s.indirect.gather_pairs, threads_);
   }
   mergeSegmentSamples(count);
 }
@@ -341,6 +349,8 @@ CpuBackend::IndirectConstants CpuBackend::indirectConstants() const {
   c.medium = s.medium.present();
   c.sigmaT = s.medium.sigmaT();
   c.regions = regions_.empty() ? nullptr : &regions_;
+  c.rouletteImportance = gatherImportance_.empty() ? nullptr : gatherImportance_.data();
+  c.rouletteSeed = gatherRouletteSeed(s.seed);
   ic.exact = indirectVisibility_ && s.indirect.visibility == capture::Visibility::Exact;
   ic.eps = 1e-4f * sceneScale_m_;  // as indirect_gather.comp's exact visibility
   ic.delayed = !responses_->empty();

@@ -1,5 +1,7 @@
 #include "GatherKernel.h"
 
+#include "GatherRoulette.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -283,6 +285,10 @@ __attribute__((target_clones("avx2", "default"))) void vplTerms(const PixelSurfa
     terms.nearField[i] = near;
     anyNear |= near;
   }
+  // The roulette before the lanes' scalar work (their scattered radiance,
+  // near field, visibility and deposit run for the kept lanes only).
+  const bool roulette = c.rouletteImportance != nullptr && s.rouletteThreshold > 0.0f;
+  if (roulette) roulettePairs(s, c.rouletteImportance, c.rouletteSeed, first, n, terms);
   if (v.scattering || !physics::scatterIsConstant(s.vertex)) {
     scatteredRadiance(s, v, first, n, c, terms);
   } else if (anyNear) {
@@ -291,6 +297,7 @@ __attribute__((target_clones("avx2", "default"))) void vplTerms(const PixelSurfa
   // Tested once per block: without a medium the terms are those of before.
   if (c.medium) attenuateLanes(s, n, c, terms);
   if (c.regions != nullptr) regionLanes(s, v, first, n, c, terms);
+  if (roulette) weighKeptPairs(n, terms);
   if (c.footprint) vplKernels(s, v, first, n, c, terms);
 }
 

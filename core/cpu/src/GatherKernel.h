@@ -56,6 +56,10 @@ struct PixelSurface {
   glm::vec3 regionCameraT{1.0f};
   float regionCameraExtra_m = 0.0f;
   float weight = 1.0f;              ///< the sample's share of the pixel, 1 / N^2
+  /// render.indirect.gather_pairs (GatherRoulette.h): the sample's roulette
+  /// threshold (0: every pair kept) and its index in the render (its draws).
+  float rouletteThreshold = 0.0f;
+  uint32_t rouletteSample = 0;
 };
 
 /// What the time axis and the job fix for every contribution.
@@ -75,6 +79,10 @@ struct GatherConstants {
   glm::vec3 sigmaT{0.0f};  ///< 1/m, per channel
   /// Per-region media (issue 42's `media:`); null without.
   const capture::MediumRegions* regions = nullptr;
+  /// render.indirect.gather_pairs (GatherRoulette.h): each VPL's roulette
+  /// importance and the draws' seed; null: every pair gathered.
+  const float* rouletteImportance = nullptr;
+  uint32_t rouletteSeed = 0;
 };
 
 /// Per-VPL terms of one block: bin (kNoLight when the VPL does not face the
@@ -100,6 +108,8 @@ struct VplTerms {
   /// With the footprint, each lane's NarrowShape (a narrow kernel's values
   /// for its deposit), computed eight lanes per instruction with the kernel.
   alignas(64) float frac[kVplBlock], last[kVplBlock], perRamps[kVplBlock], perWide[kVplBlock];
+  /// With render.indirect.gather_pairs: a kept lane's weight 1 / q (0 dropped).
+  alignas(64) float kept[kVplBlock];
 };
 
 /// What a narrow footprint kernel's bin masses need besides the kernel

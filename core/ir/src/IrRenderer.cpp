@@ -241,6 +241,10 @@ RenderResult IrRenderer::render(const RenderJob& job, SegmentSink& sink,
     throw InputError("a scattering region (media: sigma_s > 0) runs on render.backend: cpu; the " +
                      backend.description() + " backend does not scatter light in regions");
   }
+  if (need.sampled_gather && !backend.capabilities().sampled_gather) {
+    throw InputError("render.indirect.gather_pairs runs on render.backend: cpu; the " +
+                     backend.description() + " backend gathers every (pixel, VPL) pair");
+  }
   RenderResult result;
 
   PassClock clock;

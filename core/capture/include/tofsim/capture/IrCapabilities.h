@@ -14,24 +14,29 @@ struct IrCapabilities {
   bool defocus = false;
   /// render.indirect.merge_pixel_samples with pixel_samples > 1.
   bool merged_pixel_samples = false;
+  /// render.indirect.gather_pairs > 0: the surface gather's pair roulette.
+  bool sampled_gather = false;
 };
 
 /// The GL backend (core/render): what every backend gathers, nothing more.
 inline constexpr IrCapabilities kGlCapabilities{};
 /// The CPU backend (core/cpu).
-inline constexpr IrCapabilities kCpuCapabilities{.defocus = true, .merged_pixel_samples = true};
+inline constexpr IrCapabilities kCpuCapabilities{.defocus = true, .merged_pixel_samples = true,
+                                                   .sampled_gather = true};
 
 /// What a render needs: `camera` null for an imager that is not a camera.
 inline IrCapabilities irNeeds(const Camera* camera, const RenderSettings& settings) {
   return {
       .defocus = camera != nullptr && camera->defocused(),
-      .merged_pixel_samples = settings.indirect.merge_pixel_samples && settings.pixel_samples > 1};
+      .merged_pixel_samples = settings.indirect.merge_pixel_samples && settings.pixel_samples > 1,
+      .sampled_gather = settings.indirect.enabled && settings.indirect.gather_pairs > 0};
 }
 
 /// Whether a backend with `have` gathers everything `need` asks for.
 constexpr bool covers(const IrCapabilities& have, const IrCapabilities& need) {
   return (have.defocus || !need.defocus) &&
-         (have.merged_pixel_samples || !need.merged_pixel_samples);
+         (have.merged_pixel_samples || !need.merged_pixel_samples) &&
+         (have.sampled_gather || !need.sampled_gather);
 }
 
 }  // namespace tofsim::capture

@@ -34,6 +34,11 @@ struct IndirectSettings {
   /// (fog_lidar: 2.0 CPU-s without, 3.9 with); off, the camera rays see the
   /// light source's single scattering only.
   bool medium_camera_rays = true;
+  /// N > 0: the CPU surface gather keeps about N (pixel sample, VPL) pairs a
+  /// sample, each with probability min(1, e / threshold) and its light
+  /// weighed by the inverse (cpu GatherRoulette.h; core/physics/
+  /// medium_vpl_scattering.md, "The surface gather sampled"); 0 = every pair.
+  int32_t gather_pairs = 0;
   /// N: a texel at an edge of the RSM is traced at N x N sub-texels, one
   /// VPL per flat surface among them (ir::rsmViewVpls); 1 = none.
   int32_t rsm_edge_samples = 4;

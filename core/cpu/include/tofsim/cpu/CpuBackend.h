@@ -224,6 +224,9 @@ class CpuBackend : public ir::IrBackend {
   bool mediumVpls_ = false;
   /// The (ray, VPL) pairs' roulette threshold (ir::mediumRayThreshold).
   float mediumRayThreshold_ = 0.0f;
+  /// render.indirect.gather_pairs: each VPL's importance for the surface
+  /// gather's roulette (GatherRoulette.h); empty: every pair gathered.
+  std::vector<float> gatherImportance_;
   /// direct_, indirect_ and footprint_ hold zeros (after allocate and readSegment).
   bool accumulatorsZero_ = false;
   std::vector<physics::OffAxisSums> outside_;  ///< per pixel of the segment: light off the axis
