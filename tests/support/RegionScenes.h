@@ -2,7 +2,8 @@
 // What the per-region media tests share (issue 42's `media:`;
 // MediumRegionsTest, ScatteringRegionsTest, RegionTank.h): the box mesh to
 // take out of the surfaces as a region (support/AnalyticScenes.h's addBox),
-// the reference's render of a job at point pixels, a volume's energy.
+// the reference's render of a job at point pixels (and
+// reference/RenderReference.h's volume energy).
 
 #include "reference/RenderReference.h"
 #include "support/AnalyticScenes.h"
@@ -16,13 +17,6 @@ namespace tofsim::test {
 inline capture::VolumeCollector renderReference(const capture::RenderJob& job, int32_t bounces,
                                                 int32_t samples) {
   return renderReference(job, bounces, samples, reference::PixelFilter::Point);
-}
-
-/// The sum of every value of a volume.
-inline double energy(const TransientVolume& v) {
-  double sum = 0.0;
-  for (const float x : v.values()) sum += x;
-  return sum;
 }
 
 }  // namespace tofsim::test
