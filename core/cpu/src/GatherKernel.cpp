@@ -236,11 +236,16 @@ void regionLanes(const PixelSurface& s, const VplArrays& v, std::size_t first, s
 // at load time. -ffp-contract=off (CMakeLists.txt) keeps fused multiply-adds
 // out, and -fno-math-errno only lets sqrt vectorise, so both clones compute
 // the same correctly rounded IEEE operations and give the same bytes.
-__attribute__((target_clones("avx2", "default"))) void vplTerms(const PixelSurface& s,
-                                                                const VplArrays& v,
-                                                                std::size_t first, std::size_t n,
-                                                                const GatherConstants& c,
-                                                                VplTerms& __restrict terms) {
+namespace {
+
+// vplTerms' lanes, eight per instruction: each VPL's direction, distance,
+// geometry term, bin and near field at x; whether any lane is in its VPL's
+// near field. Its own function: with the roulette's calls after it in one
+// body (GatherRoulette.cpp: another translation unit, `terms` passed out),
+// GCC left this loop scalar.
+__attribute__((target_clones("avx2", "default"), noinline)) int32_t vplDistances(
+    const PixelSurface& s, const VplArrays& v, std::size_t first, std::size_t n,
+    const GatherConstants& c, VplTerms& __restrict terms) {
   const float* __restrict px = v.px.data() + first;
   const float* __restrict py = v.py.data() + first;
   const float* __restrict pz = v.pz.data() + first;
@@ -285,6 +290,17 @@ __attribute__((target_clones("avx2", "default"))) void vplTerms(const PixelSurfa
     terms.nearField[i] = near;
     anyNear |= near;
   }
+  return anyNear;
+}
+
+}  // namespace
+
+__attribute__((target_clones("avx2", "default"))) void vplTerms(const PixelSurface& s,
+                                                                const VplArrays& v,
+                                                                std::size_t first, std::size_t n,
+                                                                const GatherConstants& c,
+                                                                VplTerms& __restrict terms) {
+  const int32_t anyNear = vplDistances(s, v, first, n, c, terms);
   // The roulette before the lanes' scalar work (their scattered radiance,
   // near field, visibility and deposit run for the kept lanes only).
   const bool roulette = c.rouletteImportance != nullptr && s.rouletteThreshold > 0.0f;

@@ -206,14 +206,6 @@ ir::CentreSurfaces GlBackend::prepareSurfaces(const RenderJob& job) {
   passes_.reset();  // the previous render's GL objects go first
   TOFSIM_CHECK_MSG(sceneObjects_ != nullptr && &sceneObjects_->scene == job.scene,
                    "setScene with the job's scene must come first");
-  // Scattering regions are built on the CPU backend only (the config refuses
-  // them here first; this keeps a library caller from a silently absorbing
-  // region).
-  if (std::any_of(job.settings.media.begin(), job.settings.media.end(),
-                  [](const RegionMedium& m) { return m.medium.scatters(); })) {
-    throw InputError("scattering regions (`media` with sigma_s > 0) are not built on the GL "
-                     "backend: use render.backend: cpu");
-  }
   const int32_t n = job.settings.pixel_samples;
   const int32_t width = imageWidth(job.imager), height = imageHeight(job.imager);
   const int32_t maxSide = context_.limits().maxTextureSize;
