@@ -14,6 +14,11 @@
 
 namespace tofsim::cpu {
 
+/// The VPLs' pass's draws for a pixel's sample j: the pass's seed plus j
+/// times this (ir::mediumRaySeed; medium_vpls.comp's), in the scene medium
+/// (CpuMediumVpls.cpp) and in regions (CpuRegionVpls.cpp).
+constexpr uint32_t kMediumSampleStride = 0x9e3779b9u;
+
 /// A pixel sample's camera ray as the medium passes integrate along it: the
 /// ray traced for the sample (ir::sampleRay), its first surface and weight.
 struct MediumSampleRay {

@@ -36,10 +36,6 @@ namespace tofsim::cpu {
 
 namespace {
 
-/// A pixel's samples' draws: the seed plus the sample's index times this
-/// (ir::mediumRaySeed; medium_vpls.comp's).
-constexpr uint32_t kSampleStride = 0x9e3779b9u;
-
 /// What the job fixes for every VPL's medium light.
 struct VplMediumTerms {
   MediumAxis axis;  ///< start_m: the time axis'; each VPL's path is taken off it
@@ -105,7 +101,7 @@ void CpuBackend::gatherMediumIndirect(std::size_t firstVpl, std::size_t count) {
         for (std::size_t j = 0; j < samples.size(); ++j) {
           const PairFilterRay filter{samples[j].origin, samples[j].direction, t.radius,
                                      t.threshold, static_cast<uint32_t>(pixel0 + i),
-                                     t.seed + static_cast<uint32_t>(j) * kSampleStride};
+                                     t.seed + static_cast<uint32_t>(j) * kMediumSampleStride};
           filterMediumPairs(filter, v.px.data(), v.py.data(), v.pz.data(), importance.data(),
                             first, n, maybe[j].data(), draws[j].data());
         }

@@ -29,13 +29,6 @@
 
 namespace tofsim::cpu {
 
-namespace {
-
-/// A pixel's samples' draws: as CpuMediumVpls.cpp's (ir::mediumRaySeed).
-constexpr uint32_t kSampleStride = 0x9e3779b9u;
-
-}  // namespace
-
 void CpuBackend::gatherRegionIndirect(std::size_t firstVpl, std::size_t count) {
   const capture::RenderSettings& s = job_.settings;
   const MediumAxis axis{static_cast<float>(s.time.start_m()),
@@ -97,7 +90,7 @@ void CpuBackend::gatherRegionIndirect(std::size_t firstVpl, std::size_t count) {
           // The pair's draws: kept or not, and its points' offset.
           const uint32_t bits =
               physics::hash3(static_cast<uint32_t>(k), static_cast<uint32_t>(pixel0 + i),
-                             seed + static_cast<uint32_t>(j) * kSampleStride);
+                             seed + static_cast<uint32_t>(j) * kMediumSampleStride);
           const float q = physics::mediumRayVplSurvival(
               physics::mediumRayVplEstimate(ray, importance), mediumRayThreshold_);
           if (!(physics::unitFloat(bits) < q)) continue;
