@@ -170,25 +170,15 @@ bool RayScene::bundlesAgree(const detail::BeamBvh& bvh) const {
     for (int i = 0; i < detail::kBundleLanes; ++i) {
       if (rays.tie[i] != 0 || (std::isfinite(rays.edgeT[i]) && rays.edgeT[i] <= rays.t[i]))
         continue;
-      RTCIntersectContext context;
-      rtcInitIntersectContext(&context);
-      RTCRayHit rh{};
-      rh.ray.org_x = origin.x;
-      rh.ray.org_y = origin.y;
-      rh.ray.org_z = origin.z;
-      rh.ray.dir_x = rays.dx[i];
-      rh.ray.dir_y = rays.dy[i];
-      rh.ray.dir_z = rays.dz[i];
-      rh.ray.tfar = std::numeric_limits<float>::infinity();
-      rh.ray.mask = 0xFFFFFFFFu;
-      rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
-      rtcIntersect1(rtcScene_, &context, &rh);
-      const bool embreeHit = rh.hit.geomID != RTC_INVALID_GEOMETRY_ID;
-      if (embreeHit != (rays.hit[i] >= 0)) return false;
-      if (!embreeHit) continue;
+      // intersect() is rtcIntersect1's hit as every other caller gets it.
+      const std::optional<SurfaceHit> single =
+          intersect(origin, glm::vec3(rays.dx[i], rays.dy[i], rays.dz[i]));
+      if (single.has_value() != (rays.hit[i] >= 0)) return false;
+      if (!single) continue;
       const detail::BundleTriangle& hit = bvh.triangle(rays.hit[i]);
-      if (hit.mesh != rh.hit.geomID || hit.triangle != rh.hit.primID || rays.t[i] != rh.ray.tfar ||
-          rays.u[i] != rh.hit.u || rays.v[i] != rh.hit.v) {
+      if (hit.mesh != single->mesh || hit.triangle != single->triangle ||
+          rays.t[i] != single->distance_m || rays.u[i] != single->barycentric.x ||
+          rays.v[i] != single->barycentric.y) {
         return false;
       }
     }
