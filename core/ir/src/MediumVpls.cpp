@@ -53,10 +53,13 @@ LightRay sampleLightRay(const capture::Light& light, float u1, float u2) {
 }
 
 // `count` rays of the light, each with its own generator (seed, its index:
-// the bytes do not depend on `threads`), in fixed runs; `vplOf(rng)` is a
-// ray's VPL or none. The VPLs in ray order.
+// the bytes do not depend on `threads`), in fixed runs: each ray drawn from
+// the light's emission (its first two draws), dark ones skipped, traced to
+// its first surface; `vplOf(rng, ray, hit_m)` (hit_m kNoHit when it leaves
+// the scene) is its VPL or none. The VPLs in ray order.
 template <class VplOf>
-std::vector<Vpl> lightRayVpls(std::size_t count, uint64_t seed, int32_t threads,
+std::vector<Vpl> lightRayVpls(const rays::RayScene& scene, const capture::Light& light,
+                              std::size_t count, uint64_t seed, int32_t threads,
                               const VplOf& vplOf) {
   std::vector<std::optional<Vpl>> slots(count);
   const std::size_t tasks = (count + kRaysPerTask - 1) / kRaysPerTask;
@@ -64,7 +67,12 @@ std::vector<Vpl> lightRayVpls(std::size_t count, uint64_t seed, int32_t threads,
     const std::size_t end = std::min(count, (task + 1) * kRaysPerTask);
     for (std::size_t j = task * kRaysPerTask; j < end; ++j) {
       Pcg32 rng = Pcg32::forUnit(seed, kLightRayUnit | static_cast<uint64_t>(j));
-      slots[j] = vplOf(rng);
+      const float u1 = rng.nextFloat();
+      const float u2 = rng.nextFloat();
+      const LightRay ray = sampleLightRay(light, u1, u2);
+      if (!(ray.power_W.r + ray.power_W.g + ray.power_W.b > 0.0f)) continue;
+      const auto hit = scene.intersect(light.position_world, ray.direction);
+      slots[j] = vplOf(rng, ray, hit ? static_cast<double>(hit->distance_m) : kNoHit);
     }
   });
   std::vector<Vpl> vpls;
@@ -106,14 +114,9 @@ std::vector<Vpl> lightMediumVpls(const rays::RayScene& scene, const capture::Lig
   const float perRay = 1.0f / static_cast<float>(count);
   const auto eta = static_cast<float>(indexOfRefraction);
   const bool delayed = classes != nullptr && classes->delayed();
-  return lightRayVpls(count, seed, threads, [&](Pcg32& rng) -> std::optional<Vpl> {
-    const float u1 = rng.nextFloat();
-    const float u2 = rng.nextFloat();
-    const LightRay ray = sampleLightRay(light, u1, u2);
-    if (!(ray.power_W.r + ray.power_W.g + ray.power_W.b > 0.0f)) return std::nullopt;
-    const auto hit = scene.intersect(light.position_world, ray.direction);
-    const FreeFlight f = sampleFreeFlight(
-        medium, hit ? static_cast<double>(hit->distance_m) : kNoHit, true, rng.nextDouble());
+  return lightRayVpls(scene, light, count, seed, threads,
+                      [&](Pcg32& rng, const LightRay& ray, double hit_m) -> std::optional<Vpl> {
+    const FreeFlight f = sampleFreeFlight(medium, hit_m, true, rng.nextDouble());
     if (!f.inMedium) return std::nullopt;
     const auto t = static_cast<float>(f.t_m);
     Vpl v = mediumVpl(light.position_world + ray.direction * t, eta * t,
@@ -130,14 +133,9 @@ std::vector<Vpl> lightRegionVpls(const rays::RayScene& scene, const capture::Lig
   if (count == 0 || !regions.scatters()) return {};
   const float perRay = 1.0f / static_cast<float>(count);
   const bool delayed = classes != nullptr && classes->delayed();
-  return lightRayVpls(count, seed, threads, [&](Pcg32& rng) -> std::optional<Vpl> {
-    const float u1 = rng.nextFloat();
-    const float u2 = rng.nextFloat();
-    const LightRay ray = sampleLightRay(light, u1, u2);
-    if (!(ray.power_W.r + ray.power_W.g + ray.power_W.b > 0.0f)) return std::nullopt;
-    const auto hit = scene.intersect(light.position_world, ray.direction);
-    const LegFlight leg(regions, glm::dvec3(light.position_world), glm::dvec3(ray.direction),
-                        hit ? static_cast<double>(hit->distance_m) : kNoHit);
+  return lightRayVpls(scene, light, count, seed, threads,
+                      [&](Pcg32& rng, const LightRay& ray, double hit_m) -> std::optional<Vpl> {
+    const LegFlight leg(regions, glm::dvec3(light.position_world), glm::dvec3(ray.direction), hit_m);
     const double t = leg.sampleBeforeEnd(rng);
     const capture::Medium* region = t < kNoHit ? leg.mediumAt(t) : nullptr;
     if (region == nullptr || !region->scatters()) return std::nullopt;
