@@ -72,4 +72,19 @@ struct SemiInfinite {
   }
 };
 
+/// The mean of cos theta over a square image of `fovDeg` (box pixels:
+/// uniform on the image plane), by a `cells` x `cells` midpoint rule: the
+/// closed forms' radiance seen through the camera's pixels.
+inline double meanImageCosine(double fovDeg, int cells) {
+  const double a = std::tan(fovDeg * kPi / 360.0);
+  double s = 0.0;
+  for (int i = 0; i < cells; ++i) {
+    for (int j = 0; j < cells; ++j) {
+      const double u = a * (2.0 * (i + 0.5) / cells - 1.0), v = a * (2.0 * (j + 0.5) / cells - 1.0);
+      s += 1.0 / std::sqrt(1.0 + u * u + v * v);
+    }
+  }
+  return s / (static_cast<double>(cells) * cells);
+}
+
 }  // namespace tofsim::test::diffusion

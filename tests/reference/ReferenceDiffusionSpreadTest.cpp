@@ -67,20 +67,6 @@ TimeAxis axis() {
   return a;
 }
 
-// The mean cosine of the pixels' rays to the face's normal (box pixels).
-double meanCosine() {
-  const double a = std::tan(kFovDeg * dif::kPi / 360.0);
-  constexpr int kCells = 128;
-  double s = 0.0;
-  for (int i = 0; i < kCells; ++i) {
-    for (int j = 0; j < kCells; ++j) {
-      const double u = a * (2.0 * (i + 0.5) / kCells - 1.0), v = a * (2.0 * (j + 0.5) / kCells - 1.0);
-      s += 1.0 / std::sqrt(1.0 + u * u + v * v);
-    }
-  }
-  return s / (kCells * kCells);
-}
-
 // The closed form's bins for the disk of radius `radius` lit by the spot
 // (intensity 1, irradiance H / (H^2 + r^2)^(3/2) at r): every entry point a
 // source at depth z0 = 1 / mu_s' of the power entering there (diffusion's
@@ -88,7 +74,7 @@ double meanCosine() {
 // vacuum leg sqrt(H^2 + r^2)), seen at the detector as the P1 radiance.
 std::vector<double> closedForm(double radius, double muSPrime) {
   const dif::SemiInfinite unit{kMuA, muSPrime, 0.0, 1.0 / muSPrime, 2.0 / (3.0 * muSPrime)};
-  const double cosine = meanCosine();
+  const double cosine = dif::meanImageCosine(kFovDeg, 128);
   const TimeAxis a = axis();
   constexpr int kRings = 120;
   std::vector<double> h(kBins, 0.0);

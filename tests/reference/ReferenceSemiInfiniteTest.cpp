@@ -99,25 +99,10 @@ double shapeL1(const std::vector<double>& a, const std::vector<double>& b) {
   return l1;
 }
 
-// The mean of cos theta over the image (box pixels: uniform on the image
-// plane of a square field of view).
-double meanCosine() {
-  const double a = std::tan(kFovDeg * dif::kPi / 360.0);
-  constexpr int kCells = 256;
-  double s = 0.0;
-  for (int i = 0; i < kCells; ++i) {
-    for (int j = 0; j < kCells; ++j) {
-      const double u = a * (2.0 * (i + 0.5) / kCells - 1.0), v = a * (2.0 * (j + 0.5) / kCells - 1.0);
-      s += 1.0 / std::sqrt(1.0 + u * u + v * v);
-    }
-  }
-  return s / (kCells * kCells);
-}
-
 // The closed form's bins (radiance at the image's mean cosine, intensity 1).
 std::vector<double> closedForm(double muA, double muSPrime) {
   const dif::SemiInfinite m{muA, muSPrime, kRho, kZ0, 2.0 / (3.0 * muSPrime)};
-  const double cosine = meanCosine();
+  const double cosine = dif::meanImageCosine(kFovDeg, 256);
   std::vector<double> h(kBins);
   for (int b = 0; b < kBins; ++b) {
     h[static_cast<std::size_t>(b)] = dif::simpson(
