@@ -49,6 +49,17 @@ struct CornerJob {
   }
 };
 
+/// The corner with a glossy floor (a rough metal) and a glossy dielectric
+/// wall, its materials used (render.materials: gltf).
+inline CornerJob glossyCorner(int32_t side) {
+  CornerJob s(side);
+  s.scene.materials.at(0).metallic = 0.8f;
+  s.scene.materials.at(0).roughness = 0.35f;
+  s.scene.materials.at(1).roughness = 0.5f;
+  s.job.settings.materials = capture::MaterialModel::Gltf;
+  return s;
+}
+
 /// The published Cornell camera (0.278, 0.273, -0.8) m, 39.3 degrees, with a
 /// 28-degree spot light 5 cm to its right aimed into the box, as a ToF
 /// illuminator. `bins` of `binWidth_m` optical path from 1.5 m.
